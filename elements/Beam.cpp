@@ -1,0 +1,343 @@
+#include "elements/Beam.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace beamrotor {
+
+namespace {
+
+using Matrix4 = Eigen::Matrix4d;
+using Matrix12 = Beam::Matrix12;
+using Vector12 = Beam::Vector12;
+
+// Local dof positions: u v w rx ry rz at the start (0..5) and at the end (6..11).
+constexpr std::array<int, 4> kPlaneXY{1, 5, 7, 11};   // v, rz: bending about local z
+constexpr std::array<int, 4> kPlaneXZ{2, 4, 8, 10};   // w, ry: bending about local y
+constexpr std::array<int, 2> kAxial{0, 6};
+constexpr std::array<int, 2> kTorsion{3, 9};
+
+bool isLinear(BeamTheory t) {
+  return t == BeamTheory::timoshenkoLinearFullIntegration ||
+         t == BeamTheory::timoshenkoLinearReducedIntegration;
+}
+
+/// Bending stiffness in one plane, dofs (v1, theta1, v2, theta2) with theta = dv/dx for a
+/// shear-rigid beam. Interdependent-interpolation Timoshenko element: Przemieniecki (1968);
+/// Phi = 0 gives Euler-Bernoulli.
+Matrix4 hermiteStiffness(double EI, double Phi, double L) {
+  Matrix4 k;
+  const double L2 = L * L;
+  k << 12, 6 * L, -12, 6 * L,                            //
+      6 * L, (4 + Phi) * L2, -6 * L, (2 - Phi) * L2,     //
+      -12, -6 * L, 12, -6 * L,                           //
+      6 * L, (2 - Phi) * L2, -6 * L, (4 + Phi) * L2;
+  return EI / ((1 + Phi) * L2 * L) * k;
+}
+
+/// Linear deflection and rotation; shear stiffness kGA integrated at the given Gauss points.
+Matrix4 linearStiffness(double EI, double kGA, double L, bool reduced) {
+  Matrix4 k = Matrix4::Zero();
+  k(1, 1) = k(3, 3) = EI / L;
+  k(1, 3) = k(3, 1) = -EI / L;
+  const double g = 0.5 / std::sqrt(3.0);
+  const std::array<double, 2> full{0.5 - g, 0.5 + g};
+  const int points = reduced ? 1 : 2;
+  for (int p = 0; p < points; ++p) {
+    const double xi = reduced ? 0.5 : full[p];
+    const double weight = L / points;
+    Eigen::Vector4d B(-1 / L, -(1 - xi), 1 / L, -xi);  // shear strain v' - theta
+    k += kGA * weight * B * B.transpose();
+  }
+  return k;
+}
+
+/// Consistent translational and rotary mass of the interdependent-interpolation element:
+/// Friedman and Kosmatka, Computers & Structures 47 (1993); Phi = 0 gives the cubic Hermite
+/// mass of Euler-Bernoulli.
+Matrix4 hermiteMass(double rhoA, double rhoI, double Phi, double L) {
+  const double P = Phi, P2 = Phi * Phi, L2 = L * L;
+  Matrix4 t;
+  const double a = 13.0 / 35 + 7 * P / 10 + P2 / 3, b = (11.0 / 210 + 11 * P / 120 + P2 / 24) * L,
+               c = 9.0 / 70 + 3 * P / 10 + P2 / 6, d = (13.0 / 420 + 3 * P / 40 + P2 / 24) * L,
+               e = (1.0 / 105 + P / 60 + P2 / 120) * L2, f = (1.0 / 140 + P / 60 + P2 / 120) * L2;
+  t << a, b, c, -d,  //
+      b, e, d, -f,   //
+      c, d, a, -b,   //
+      -d, -f, -b, e;
+  Matrix4 r;
+  const double g = 6.0 / 5, h = (1.0 / 10 - P / 2) * L, i = (2.0 / 15 + P / 6 + P2 / 3) * L2,
+               j = (-1.0 / 30 - P / 6 + P2 / 6) * L2;
+  r << g, h, -g, h,  //
+      h, i, -h, j,   //
+      -g, -h, g, -h, //
+      h, j, -h, i;
+  const double s = (1 + P) * (1 + P);
+  return rhoA * L / s * t + rhoI / (s * L) * r;
+}
+
+Matrix4 linearMass(double rhoA, double rhoI, double L) {
+  Matrix4 m = Matrix4::Zero();
+  for (int a : {0, 2})
+    for (int b : {0, 2}) m(a, b) = rhoA * L / 6 * (a == b ? 2 : 1);
+  for (int a : {1, 3})
+    for (int b : {1, 3}) m(a, b) = rhoI * L / 6 * (a == b ? 2 : 1);
+  return m;
+}
+
+/// Bending about local y uses theta = -ry = dw/dx: flip the rotation signs.
+Matrix4 flipRotations(const Matrix4& m) {
+  const Eigen::Vector4d s(1, -1, 1, -1);
+  return s.asDiagonal() * m * s.asDiagonal();
+}
+
+template <std::size_t N, class M>
+void place(Matrix12& K, const std::array<int, N>& at, const M& block) {
+  for (std::size_t a = 0; a < N; ++a)
+    for (std::size_t b = 0; b < N; ++b) K(at[a], at[b]) += block(a, b);
+}
+
+Eigen::Matrix2d twoNode(double k) {
+  Eigen::Matrix2d m;
+  m << k, -k, -k, k;
+  return m;
+}
+
+Eigen::Matrix2d twoNodeMass(double m, bool lumped) {
+  Eigen::Matrix2d r;
+  if (lumped)
+    r << m / 2, 0, 0, m / 2;
+  else
+    r << m / 3, m / 6, m / 6, m / 3;
+  return r;
+}
+
+/// T^T A T with T = diag(R, R, R, R), done block by block.
+Matrix12 toGlobal(const Matrix12& A, const Eigen::Matrix3d& R) {
+  Matrix12 G;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      G.block<3, 3>(3 * i, 3 * j) = R.transpose() * A.block<3, 3>(3 * i, 3 * j) * R;
+  return G;
+}
+
+}  // namespace
+
+Beam::Beam(int n1, const Eigen::Vector3d& x1, int n2, const Eigen::Vector3d& x2,
+           std::shared_ptr<const Section> section, DofSet carried, BeamOptions options,
+           const Eigen::Vector3d& zHint)
+    : nodes_{n1, n2}, section_(std::move(section)), carried_(carried), options_(options) {
+  const Eigen::Vector3d axis = x2 - x1;
+  L_ = axis.norm();
+  if (!(L_ > 0)) throw std::invalid_argument("beam element of zero length");
+  if (!section_) throw std::invalid_argument("beam element without a section");
+  const Eigen::Vector3d ex = axis / L_;
+  Eigen::Vector3d hint = zHint;
+  if (std::abs(ex.dot(hint.normalized())) > 1 - 1e-9) hint = Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d ez = (hint - hint.dot(ex) * ex).normalized();
+  const Eigen::Vector3d ey = ez.cross(ex);
+  R_.row(0) = ex;
+  R_.row(1) = ey;
+  R_.row(2) = ez;
+  // The carried dofs must not couple to the dropped ones.
+  if (carried_ == DofSet::planar() && (std::abs(ex.z()) > 1e-12 || ez.z() < 1 - 1e-12))
+    throw std::invalid_argument("a planar beam must lie in the x-y plane");
+  if (carried_ == DofSet::lateral() && ex.x() < 1 - 1e-12)
+    throw std::invalid_argument("a rotor shaft element must lie along the x axis");
+  buildDofs();
+}
+
+void Beam::buildDofs() {
+  count_ = 0;
+  for (int end = 0; end < 2; ++end)
+    for (Dof d : kAllDofs) {
+      if (!carried_.contains(d)) continue;
+      // A released rotation whose local axis is a global axis is not touched at all, so a
+      // node where every element is hinged about it does not get that dof.
+      bool dropped = false;
+      for (int r : released_) {
+        const int axis = r % 6 - 3;
+        if (r / 6 == end && isRotation(d) &&
+            std::abs(R_(axis, dofIndex(d) - 3)) > 1 - 1e-12)
+          dropped = true;
+      }
+      if (dropped) continue;
+      dofs_[count_] = {nodes_[end], d};
+      globalIndex_[count_] = 6 * end + dofIndex(d);
+      ++count_;
+    }
+}
+
+void Beam::release(int end, Dof rotation) {
+  if ((end != 0 && end != 1) || !isRotation(rotation))
+    throw std::invalid_argument("a beam end release needs end 0 or 1 and a rotation rx, ry, rz");
+  const int local = 6 * end + dofIndex(rotation);
+  if (std::find(released_.begin(), released_.end(), local) == released_.end())
+    released_.push_back(local);
+  buildDofs();
+}
+
+void Beam::setDistributedLoad(const Eigen::Vector3d& q) { qLocal_ = R_ * q; }
+
+std::string Beam::kind() const {
+  switch (options_.theory) {
+    case BeamTheory::eulerBernoulli: return "beam-eb";
+    case BeamTheory::timoshenko: return "beam-timoshenko";
+    case BeamTheory::timoshenkoLinearFullIntegration: return "beam-timoshenko-linear-full";
+    case BeamTheory::timoshenkoLinearReducedIntegration: return "beam-timoshenko-linear-reduced";
+  }
+  return "beam";
+}
+
+Matrix12 Beam::localStiffness() const {
+  const Section& s = *section_;
+  const double L = L_, G = s.material.G;
+  Matrix12 K = Matrix12::Zero();
+  place(K, kAxial, twoNode(s.EA() / L));
+  place(K, kTorsion, twoNode(s.GJ() / L));
+  const BeamTheory t = options_.theory;
+  if (isLinear(t)) {
+    const bool reduced = t == BeamTheory::timoshenkoLinearReducedIntegration;
+    if (s.kappaY <= 0 || s.kappaZ <= 0)
+      throw std::invalid_argument("the linear Timoshenko element needs shear coefficients");
+    place(K, kPlaneXY, linearStiffness(s.EIz(), s.kappaY * G * s.A, L, reduced));
+    place(K, kPlaneXZ, flipRotations(linearStiffness(s.EIy(), s.kappaZ * G * s.A, L, reduced)));
+  } else {
+    const bool shear = t == BeamTheory::timoshenko;
+    const double phiY = shear && s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * G * s.A * L * L) : 0;
+    const double phiZ = shear && s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * G * s.A * L * L) : 0;
+    place(K, kPlaneXY, hermiteStiffness(s.EIz(), phiY, L));
+    place(K, kPlaneXZ, flipRotations(hermiteStiffness(s.EIy(), phiZ, L)));
+  }
+  return K;
+}
+
+Matrix12 Beam::localMass() const {
+  const Section& s = *section_;
+  const double L = L_, rho = s.material.rho, rhoA = s.rhoA();
+  const bool lumped = options_.mass == MassModel::lumped;
+  const double rhoIz = options_.rotaryInertia ? rho * s.Iz : 0;
+  const double rhoIy = options_.rotaryInertia ? rho * s.Iy : 0;
+  Matrix12 M = Matrix12::Zero();
+  place(M, kAxial, twoNodeMass(rhoA * L, lumped));
+  place(M, kTorsion, twoNodeMass(rho * s.Ip() * L, lumped));
+  if (lumped) {
+    for (int i : {1, 2, 7, 8}) M(i, i) = rhoA * L / 2;
+    for (int i : {5, 11}) M(i, i) = rhoIz * L / 2;
+    for (int i : {4, 10}) M(i, i) = rhoIy * L / 2;
+    return M;
+  }
+  const BeamTheory t = options_.theory;
+  if (isLinear(t)) {
+    place(M, kPlaneXY, linearMass(rhoA, rhoIz, L));
+    place(M, kPlaneXZ, linearMass(rhoA, rhoIy, L));
+  } else {
+    const bool shear = t == BeamTheory::timoshenko;
+    const double G = s.material.G;
+    const double phiY = shear && s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * G * s.A * L * L) : 0;
+    const double phiZ = shear && s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * G * s.A * L * L) : 0;
+    place(M, kPlaneXY, hermiteMass(rhoA, rhoIz, phiY, L));
+    place(M, kPlaneXZ, flipRotations(hermiteMass(rhoA, rhoIy, phiZ, L)));
+  }
+  return M;
+}
+
+Vector12 Beam::localLoad() const {
+  const double L = L_;
+  const Eigen::Vector3d& q = qLocal_;
+  Vector12 f = Vector12::Zero();
+  f[0] = f[6] = q.x() * L / 2;
+  f[1] = f[7] = q.y() * L / 2;
+  f[2] = f[8] = q.z() * L / 2;
+  if (!isLinear(options_.theory)) {
+    // Fixed-end moments q L^2 / 12, the same for Euler-Bernoulli and Timoshenko beams.
+    f[5] = q.y() * L * L / 12;
+    f[11] = -f[5];
+    f[4] = -q.z() * L * L / 12;
+    f[10] = -f[4];
+  }
+  return f;
+}
+
+void Beam::condense(Matrix12* K, Matrix12* M, Vector12* f) const {
+  if (released_.empty()) return;
+  // Kept dofs a, released dofs b: u_b = Kbb^-1 (f_b - Kba u_a), so with T = [I; -Kbb^-1 Kba]
+  // the condensed matrices are T^T K T (= Kaa - Kab Kbb^-1 Kba), T^T M T and T^T f.
+  const int nb = int(released_.size());
+  Eigen::MatrixXd Kbb(nb, nb), Kba(nb, 12);
+  for (int i = 0; i < nb; ++i) {
+    Kba.row(i) = K->row(released_[i]);
+    for (int j = 0; j < nb; ++j) Kbb(i, j) = (*K)(released_[i], released_[j]);
+  }
+  Eigen::MatrixXd X = Kbb.ldlt().solve(Kba);  // Kbb^-1 Kba (released columns give identity)
+  Matrix12 T = Matrix12::Identity();
+  for (int i = 0; i < nb; ++i) T.row(released_[i]) = -X.row(i);
+  for (int i = 0; i < nb; ++i) T(released_[i], released_[i]) = 0;
+  // Rows of T for released dofs express them through the kept ones; their own columns vanish.
+  for (int i = 0; i < nb; ++i) T.col(released_[i]).setZero();
+  if (K) *K = T.transpose() * (*K) * T;
+  if (M) *M = T.transpose() * (*M) * T;
+  if (f) *f = T.transpose() * (*f);
+}
+
+ElementMatrix Beam::toCarried(const Matrix12& global) const {
+  ElementMatrix out(count_, count_);
+  for (int a = 0; a < count_; ++a)
+    for (int b = 0; b < count_; ++b) out(a, b) = global(globalIndex_[a], globalIndex_[b]);
+  return out;
+}
+
+ElementMatrix Beam::stiffness() const {
+  Matrix12 K = localStiffness();
+  condense(&K, nullptr, nullptr);
+  return toCarried(toGlobal(K, R_));
+}
+
+ElementMatrix Beam::mass() const {
+  Matrix12 M = localMass();
+  if (!released_.empty()) {
+    Matrix12 K = localStiffness();
+    condense(&K, &M, nullptr);
+  }
+  return toCarried(toGlobal(M, R_));
+}
+
+ElementVector Beam::load() const {
+  if (qLocal_.isZero()) return {};
+  Matrix12 K = localStiffness();
+  Vector12 f = localLoad();
+  condense(&K, nullptr, &f);
+  Vector12 g;
+  for (int i = 0; i < 4; ++i) g.segment<3>(3 * i) = R_.transpose() * f.segment<3>(3 * i);
+  ElementVector out(count_);
+  for (int a = 0; a < count_; ++a) out[a] = g[globalIndex_[a]];
+  return out;
+}
+
+Vector12 Beam::toLocal(const ElementVector& u) const {
+  Vector12 g = Vector12::Zero();
+  for (int a = 0; a < count_; ++a) g[globalIndex_[a]] = u[a];
+  Vector12 l;
+  for (int i = 0; i < 4; ++i) l.segment<3>(3 * i) = R_ * g.segment<3>(3 * i);
+  return l;
+}
+
+SectionForces Beam::sectionForces(const ElementVector& u, double s) const {
+  // Forces the nodes exert on the element (local frame), then equilibrium of the part [0, x].
+  Matrix12 K = localStiffness();
+  Vector12 f = localLoad();
+  condense(&K, nullptr, &f);
+  const Vector12 F = K * toLocal(u) - f;
+  const double x = s * L_;
+  const Eigen::Vector3d& q = qLocal_;
+  SectionForces r;
+  r.N = -(F[0] + q.x() * x);
+  r.Vy = -(F[1] + q.y() * x);
+  r.Vz = -(F[2] + q.z() * x);
+  r.T = -F[3];
+  r.My = -(F[4] + x * F[2] + q.z() * x * x / 2);
+  r.Mz = -F[5] + x * F[1] + q.y() * x * x / 2;
+  return r;
+}
+
+}  // namespace beamrotor

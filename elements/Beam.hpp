@@ -1,0 +1,94 @@
+// Two-node straight beam: Euler-Bernoulli, Timoshenko (interdependent interpolation, free of
+// shear locking) and the naive equal-order linear Timoshenko element kept to show locking.
+// One class serves planar frames (ux, uy, rz), 3D frames (all six) and lateral rotor models
+// (uy, uz, ry, rz): the 12 x 12 local matrices are built once and only the dofs the model
+// carries are kept, which is exact because those dofs do not couple to the others.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "fem/LineElement.hpp"
+
+namespace beamrotor {
+
+enum class BeamTheory {
+  /// Cubic Hermite bending, no shear strain.
+  eulerBernoulli,
+  /// Interdependent interpolation (cubic deflection, quadratic rotation tied to it through the
+  /// shear parameter Phi = 12 E I / (kappa G A L^2)); exact for end-loaded static beams.
+  timoshenko,
+  /// Linear deflection and rotation, shear integrated exactly (2 Gauss points): the textbook
+  /// element that LOCKS as the beam gets slender. For demonstrations and tests only.
+  timoshenkoLinearFullIntegration,
+  /// The same element with 1-point shear integration: the classical remedy for locking.
+  timoshenkoLinearReducedIntegration,
+};
+
+enum class MassModel { consistent, lumped };
+
+struct BeamOptions {
+  BeamTheory theory = BeamTheory::eulerBernoulli;
+  MassModel mass = MassModel::consistent;
+  /// Include the rotary inertia of the cross-sections (rho I per length) in bending.
+  bool rotaryInertia = false;
+};
+
+class Beam : public LineElement {
+ public:
+  /// Beam from node n1 at x1 to node n2 at x2 carrying the dofs of `carried`.
+  /// zHint: a global direction in the local x-z plane (default global z, so a beam in the
+  /// x-y plane bends in that plane about local z = global z).
+  Beam(int n1, const Eigen::Vector3d& x1, int n2, const Eigen::Vector3d& x2,
+       std::shared_ptr<const Section> section, DofSet carried, BeamOptions options = {},
+       const Eigen::Vector3d& zHint = Eigen::Vector3d::UnitZ());
+
+  /// Hinge: the moment about local rotation axis `rotation` (rx, ry or rz) vanishes at end
+  /// 0 (start) or 1 (end). The released rotation is condensed out of the element.
+  void release(int end, Dof rotation);
+  /// Uniform load per length (N/m), global frame; replaces any earlier one.
+  void setDistributedLoad(const Eigen::Vector3d& q);
+
+  std::span<const NodeDof> dofs() const override { return {dofs_.data(), std::size_t(count_)}; }
+  ElementMatrix stiffness() const override;
+  ElementMatrix mass() const override;
+  ElementVector load() const override;
+  std::string kind() const override;
+
+  std::array<int, 2> endNodes() const override { return nodes_; }
+  double length() const override { return L_; }
+  const Section& section() const override { return *section_; }
+  Eigen::Matrix3d localAxes() const override { return R_; }
+  SectionForces sectionForces(const ElementVector& u, double s) const override;
+  const BeamOptions& options() const { return options_; }
+
+  using Matrix12 = Eigen::Matrix<double, 12, 12>;
+  using Vector12 = Eigen::Matrix<double, 12, 1>;
+  /// Local-frame matrices before releases (local dofs u v w rx ry rz at each end).
+  Matrix12 localStiffness() const;
+  Matrix12 localMass() const;
+  Vector12 localLoad() const;
+
+ private:
+  /// Applies the end releases to local K, M and load (static condensation).
+  void condense(Matrix12* K, Matrix12* M, Vector12* f) const;
+  /// Global 12 x 12 -> the carried dofs only.
+  ElementMatrix toCarried(const Matrix12& local) const;
+  Vector12 toLocal(const ElementVector& u) const;
+  void buildDofs();
+
+  std::array<int, 2> nodes_;
+  std::shared_ptr<const Section> section_;
+  DofSet carried_;
+  BeamOptions options_;
+  double L_ = 0;
+  Eigen::Matrix3d R_;                       // rows: local axes in global coordinates
+  Eigen::Vector3d qLocal_ = Eigen::Vector3d::Zero();
+  std::vector<int> released_;               // local indices 0..11 of released rotations
+  std::array<NodeDof, 12> dofs_{};
+  std::array<int, 12> globalIndex_{};       // position of each carried dof in the 12 globals
+  int count_ = 0;
+};
+
+}  // namespace beamrotor

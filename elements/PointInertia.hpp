@@ -1,0 +1,34 @@
+// A rigid body lumped at a node: mass m on the translations and the inertia tensor of a body
+// symmetric about `axis` (polar moment Jp about it, transverse moment Jd about any
+// perpendicular axis through the node) on the rotations. A point mass is Jp = Jd = 0.
+#pragma once
+
+#include <vector>
+
+#include "fem/Element.hpp"
+
+namespace beamrotor {
+
+class PointInertia : public Element {
+ public:
+  /// m in kg, Jp and Jd in kg m^2 about the node; axis in global coordinates.
+  PointInertia(int node, DofSet carried, double m, double Jp = 0, double Jd = 0,
+               const Eigen::Vector3d& axis = Eigen::Vector3d::UnitX());
+
+  std::span<const NodeDof> dofs() const override { return dofs_; }
+  ElementMatrix stiffness() const override;
+  ElementMatrix mass() const override;
+  std::string kind() const override { return "inertia"; }
+
+  double m() const { return m_; }
+  double Jp() const { return Jp_; }
+  double Jd() const { return Jd_; }
+  const Eigen::Vector3d& axis() const { return axis_; }
+
+ private:
+  std::vector<NodeDof> dofs_;
+  double m_, Jp_, Jd_;
+  Eigen::Vector3d axis_;
+};
+
+}  // namespace beamrotor

@@ -1,0 +1,147 @@
+#include "fem/Assembly.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "fem/Model.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Node adjacency (each node lists itself and every node it shares an element with), as
+/// compressed rows with sorted, unique entries.
+void nodeAdjacency(const Model& model, std::vector<int>& start, std::vector<int>& adj) {
+  const int n = model.nodeCount();
+  std::vector<int> count(n + 1, 0);
+  std::array<int, kMaxElementDofs> nodes{};
+  auto elementNodes = [&](const Element& e) {
+    int k = 0;
+    for (const NodeDof& d : e.dofs())
+      if (std::find(nodes.begin(), nodes.begin() + k, d.node) == nodes.begin() + k)
+        nodes[k++] = d.node;
+    return k;
+  };
+  for (const auto& e : model.elements()) {
+    const int k = elementNodes(*e);
+    for (int a = 0; a < k; ++a) count[nodes[a] + 1] += k;
+  }
+  for (int i = 0; i < n; ++i) count[i + 1] += count[i] + 1;  // +1: the node itself
+  std::vector<int> fill(count.begin(), count.end() - 1);
+  adj.assign(count[n], 0);
+  for (int i = 0; i < n; ++i) adj[fill[i]++] = i;
+  for (const auto& e : model.elements()) {
+    const int k = elementNodes(*e);
+    for (int a = 0; a < k; ++a)
+      for (int b = 0; b < k; ++b) adj[fill[nodes[a]]++] = nodes[b];
+  }
+  // Sort and deduplicate each node's list in place, compacting as we go.
+  start.assign(n + 1, 0);
+  int out = 0;
+  for (int i = 0; i < n; ++i) {
+    auto first = adj.begin() + count[i], last = adj.begin() + count[i + 1];
+    std::sort(first, last);
+    last = std::unique(first, last);
+    start[i] = out;
+    out = int(std::copy(first, last, adj.begin() + out) - adj.begin());
+  }
+  start[n] = out;
+  adj.resize(out);
+}
+
+}  // namespace
+
+SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
+    : model_(model), dofs_(dofs) {
+  std::vector<int> start, adj;
+  nodeAdjacency(model, start, adj);
+  // Free equations are numbered node by node, so walking a column's neighbour nodes in
+  // ascending order yields ascending row numbers.
+  const int nf = dofs.freeCount();
+  colStart_.assign(nf + 1, 0);
+  rows_.clear();
+  for (int col = 0; col < nf; ++col) {
+    colStart_[col] = int(rows_.size());
+    const int node = dofs.dofOf(col).node;
+    for (int k = start[node]; k < start[node + 1]; ++k)
+      for (Dof d : kAllDofs) {
+        const int row = dofs.equation(adj[k], d);
+        if (dofs.isFree(row)) rows_.push_back(row);
+      }
+  }
+  colStart_[nf] = int(rows_.size());
+}
+
+int SparseAssembler::slot(int row, int col) const {
+  const auto first = rows_.begin() + colStart_[col], last = rows_.begin() + colStart_[col + 1];
+  const auto it = std::lower_bound(first, last, row);
+  return int(it - rows_.begin());
+}
+
+ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {
+  switch (kind) {
+    case MatrixKind::stiffness: return e.stiffness();
+    case MatrixKind::mass: return e.mass();
+    case MatrixKind::damping: return e.damping();
+    case MatrixKind::gyroscopic: return e.gyroscopic();
+  }
+  return {};
+}
+
+SparseMatrix SparseAssembler::assemble(MatrixKind kind) const {
+  const int nf = dofs_.freeCount();
+  std::vector<double> values(rows_.size(), 0.0);
+  std::array<int, kMaxElementDofs> eq{};
+  for (const auto& e : model_.elements()) {
+    const ElementMatrix ke = elementMatrix(*e, kind);
+    if (ke.size() == 0) continue;
+    const auto d = e->dofs();
+    const int n = int(d.size());
+    for (int a = 0; a < n; ++a) eq[a] = dofs_.equation(d[a]);
+    for (int b = 0; b < n; ++b) {
+      if (!dofs_.isFree(eq[b])) continue;
+      for (int a = 0; a < n; ++a)
+        if (dofs_.isFree(eq[a]) && ke(a, b) != 0.0) values[slot(eq[a], eq[b])] += ke(a, b);
+    }
+  }
+  Eigen::Map<const SparseMatrix> view(nf, nf, int(rows_.size()), colStart_.data(), rows_.data(),
+                                      values.data());
+  return SparseMatrix(view);
+}
+
+ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u) {
+  const auto d = e.dofs();
+  ElementVector ue(d.size());
+  for (int a = 0; a < int(d.size()); ++a) ue[a] = u[dofs.equation(d[a])];
+  return ue;
+}
+
+Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.size());
+  for (const NodalLoad& l : model.loads()) {
+    const int eq = dofs.equation(l.node, l.dof);
+    if (eq < 0)
+      throw std::invalid_argument("a load acts on " + model.describe({l.node, l.dof}) +
+                                  ", which no element carries");
+    f[eq] += l.value;
+  }
+  for (const auto& e : model.elements()) {
+    const ElementVector fe = e->load();
+    if (fe.size() == 0) continue;
+    const auto d = e->dofs();
+    for (int a = 0; a < int(d.size()); ++a) f[dofs.equation(d[a])] += fe[a];
+  }
+  return f;
+}
+
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
+  for (const auto& e : model.elements()) {
+    const ElementVector fe = e->endForces(gather(*e, dofs, u));
+    const auto d = e->dofs();
+    for (int a = 0; a < int(d.size()); ++a) r[dofs.equation(d[a])] += fe[a];
+  }
+  return r;
+}
+
+}  // namespace beamrotor

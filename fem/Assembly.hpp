@@ -1,0 +1,51 @@
+// Sparse assembly of the free-free block of K, M, C or G, with the sparsity pattern computed
+// once from the connectivity and reused for every matrix (and every re-assembly in a sweep).
+#pragma once
+
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "fem/DofMap.hpp"
+#include "fem/Element.hpp"
+
+namespace beamrotor {
+
+class Model;
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+enum class MatrixKind { stiffness, mass, damping, gyroscopic };
+
+class SparseAssembler {
+ public:
+  /// Computes the pattern of the free-free block: dof pairs of nodes that share an element.
+  SparseAssembler(const Model& model, const DofMap& dofs);
+
+  /// The free-free block of one global matrix (freeCount x freeCount, compressed).
+  SparseMatrix assemble(MatrixKind kind) const;
+  /// Number of stored entries of the pattern.
+  long long patternSize() const { return (long long)rows_.size(); }
+
+ private:
+  /// Position of (row, col) in the pattern's value array.
+  int slot(int row, int col) const;
+
+  const Model& model_;
+  const DofMap& dofs_;
+  std::vector<int> colStart_;  // compressed-column pattern of the free-free block
+  std::vector<int> rows_;
+};
+
+/// The element matrix of one kind (empty when the element has none).
+ElementMatrix elementMatrix(const Element& e, MatrixKind kind);
+
+/// Gathers an element's dof values from a full-length vector (ordered as DofMap).
+ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u);
+
+/// Full-length vector of applied loads: nodal loads plus element equivalent loads.
+Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs);
+
+/// Full-length vector of the element forces K u - f_elem for a full-length displacement u;
+/// at a constrained dof, this minus the nodal loads there is the support reaction.
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u);
+
+}  // namespace beamrotor

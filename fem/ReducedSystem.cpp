@@ -1,0 +1,59 @@
+#include "fem/ReducedSystem.hpp"
+
+#include <stdexcept>
+
+#include "fem/Model.hpp"
+
+namespace beamrotor {
+
+Eigen::VectorXd prescribedValues(const Model& model, const DofMap& dofs) {
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs.size());
+  for (const Support& s : model.supports())
+    for (const PrescribedDof& p : s.dofs) u[dofs.equation(s.node, p.dof)] = p.value;
+  return u;
+}
+
+Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs,
+                                     const Eigen::VectorXd& f,
+                                     const Eigen::VectorXd& uPrescribed) {
+  Eigen::VectorXd rhs = f.head(dofs.freeCount());
+  if (uPrescribed.tail(dofs.constrainedCount()).any()) {
+    // K u_C computed element by element (element loads excluded: they are already in f).
+    Eigen::VectorXd push = Eigen::VectorXd::Zero(dofs.size());
+    for (const auto& e : model.elements()) {
+      const ElementVector ue = gather(*e, dofs, uPrescribed);
+      if (!ue.any()) continue;
+      const ElementVector fe = e->stiffness() * ue;
+      const auto d = e->dofs();
+      for (int a = 0; a < int(d.size()); ++a) push[dofs.equation(d[a])] += fe[a];
+    }
+    rhs -= push.head(dofs.freeCount());
+  }
+  return rhs;
+}
+
+NodalField toNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+  NodalField field = NodalField::Zero(model.nodeCount(), kDofKinds);
+  for (int eq = 0; eq < dofs.size(); ++eq) {
+    const NodeDof& d = dofs.dofOf(eq);
+    field(d.node, dofIndex(d.dof)) = u[eq];
+  }
+  return field;
+}
+
+NodalField freeToNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& uf) {
+  NodalField field = NodalField::Zero(model.nodeCount(), kDofKinds);
+  for (int eq = 0; eq < dofs.freeCount(); ++eq) {
+    const NodeDof& d = dofs.dofOf(eq);
+    field(d.node, dofIndex(d.dof)) = uf[eq];
+  }
+  return field;
+}
+
+SystemSize systemSize(const Model& model, const DofMap& dofs, const SparseMatrix& Kff,
+                      double factorEntries) {
+  return SystemSize{model.nodeCount(), int(model.elements().size()), dofs.size(),
+                    dofs.freeCount(), Kff.nonZeros(), factorEntries};
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,75 @@
+// Results of the analyses as plain values; writers read these plus the model's nodes.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "fem/Dof.hpp"
+
+namespace beamrotor {
+
+/// One value per node and dof kind (rows: nodes; columns: ux uy uz rx ry rz, global frame).
+/// Dofs the model does not carry are zero.
+using NodalField = Eigen::Matrix<double, Eigen::Dynamic, kDofKinds, Eigen::RowMajor>;
+
+/// Wall-clock seconds spent in each stage of a linear solve.
+struct SolveTimings {
+  double assembly = 0;   ///< assembling K (and M) and the load vector
+  double factor = 0;     ///< sparse factorisation (symbolic + numeric)
+  double solve = 0;      ///< triangular solves / eigen iterations
+  double total = 0;      ///< everything, including recovery
+};
+
+/// Size of the discrete system.
+struct SystemSize {
+  int nodes = 0;
+  int elements = 0;
+  int dofs = 0;          ///< all dofs, free and constrained
+  int freeDofs = 0;
+  long long nonzeros = 0;  ///< stored entries of the free-free stiffness block
+  double factorEntries = 0;  ///< entries of the LU factors (fill-in)
+};
+
+/// One reaction component of a named support (N or N m, global frame).
+struct ReactionComponent {
+  std::string support;
+  int node = -1;
+  Dof dof = Dof::ux;
+  double value = 0;
+};
+
+struct StaticResult {
+  NodalField displacement;                  ///< m and rad
+  std::vector<ReactionComponent> reactions; ///< every constrained dof, in support order
+  double rcond = 0;                         ///< UMFPACK's reciprocal condition estimate
+  SystemSize size;
+  SolveTimings time;
+
+  /// Sum of the reaction components of one support along one dof kind.
+  double reaction(const std::string& support, Dof d) const;
+};
+
+/// One vibration mode.
+struct Mode {
+  double eigenvalue = 0;     ///< omega^2 (rad^2/s^2)
+  double frequencyHz = 0;    ///< sqrt(eigenvalue) / (2 pi); 0 for rigid-body modes
+  NodalField shape;          ///< mass-normalised (phi^T M phi = 1)
+  /// Effective modal mass (kg) for rigid translation along ux, uy, uz.
+  std::array<double, 3> effectiveMass{};
+  /// Share of the mode's kinetic energy carried by each dof kind (sums to 1).
+  std::array<double, kDofKinds> energyShare{};
+  /// A few words to recognise the mode by, e.g. "bending uy", "axial ux", "torsion rx".
+  std::string description;
+};
+
+struct ModalResult {
+  std::vector<Mode> modes;   ///< ascending frequency
+  double shift = 0;          ///< the shift used (rad^2/s^2)
+  /// Mass (kg) moving with a rigid translation along ux, uy, uz, for effective-mass ratios.
+  std::array<double, 3> totalMass{};
+  SystemSize size;
+  SolveTimings time;
+};
+
+}  // namespace beamrotor

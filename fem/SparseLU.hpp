@@ -1,0 +1,29 @@
+// UMFPACK through Eigen's wrapper, plus what the wrapper keeps to itself: UMFPACK's
+// reciprocal condition estimate (min |U_ii| / max |U_ii| after scaling), which tells a
+// singular or nearly singular matrix apart from a healthy one before its solution is trusted.
+#pragma once
+
+#include <Eigen/UmfPackSupport>
+
+#include "fem/Assembly.hpp"
+
+namespace beamrotor {
+
+class SparseLU : public Eigen::UmfPackLU<SparseMatrix> {
+ public:
+  /// UMFPACK's cheap reciprocal condition estimate of the last numeric factorisation
+  /// (0 for an exactly singular matrix).
+  double rcond() const { return m_umfpackInfo[UMFPACK_RCOND]; }
+  /// True when the factorisation succeeded and rcond is above tol.
+  bool healthy(double tol) const { return info() == Eigen::Success && rcond() > tol; }
+  /// Fill-in: entries in L plus U.
+  double factorEntries() const {
+    return m_umfpackInfo[UMFPACK_LNZ] + m_umfpackInfo[UMFPACK_UNZ];
+  }
+};
+
+/// rcond below this means the matrix is singular to working precision: its pivots span more
+/// than the ~15 decimal digits a double carries, so a solve returns round-off, not an answer.
+inline constexpr double kSingularRcond = 1e-14;
+
+}  // namespace beamrotor

@@ -1,0 +1,19 @@
+// Linear statics: K u = f with supports eliminated (prescribed values moved to the right-hand
+// side), solved by UMFPACK; reactions recovered at every constrained dof.
+#pragma once
+
+#include "fem/Model.hpp"
+#include "fem/Results.hpp"
+
+namespace beamrotor {
+
+struct StaticOptions {
+  /// Reject the solve when UMFPACK's rcond falls below this (see kSingularRcond).
+  double singularRcond = 1e-14;
+};
+
+/// Solves model's statics. Throws UnsupportedStructure naming the dofs that can move freely,
+/// or SolveError for a system that is singular for another reason.
+StaticResult solveStatic(const Model& model, const StaticOptions& options = {});
+
+}  // namespace beamrotor

@@ -1,0 +1,22 @@
+// Wall-clock timing of analysis stages.
+#pragma once
+
+#include <chrono>
+
+namespace beamrotor {
+
+class Stopwatch {
+ public:
+  /// Seconds since construction or the last lap(), and restarts.
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace beamrotor

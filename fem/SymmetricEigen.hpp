@@ -1,0 +1,26 @@
+// Eigenpairs of the generalised symmetric problem K x = lambda M x nearest a shift sigma:
+// ARPACK's implicitly restarted Lanczos (dsaupd/dseupd) in shift-invert mode 3, with
+// K - sigma M factorised once by UMFPACK. Small problems go to a dense solver instead, since
+// ARPACK needs more Lanczos vectors than wanted eigenpairs.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "fem/Assembly.hpp"
+
+namespace beamrotor {
+
+struct EigenPairs {
+  Eigen::VectorXd values;   ///< ascending
+  Eigen::MatrixXd vectors;  ///< M-orthonormal columns
+  double factorEntries = 0; ///< LU fill of K - sigma M (0 for the dense path)
+};
+
+/// The `count` eigenpairs nearest sigma (for sigma below the spectrum: the lowest ones).
+/// K symmetric, M symmetric positive semi-definite. Throws SolveError when K - sigma M is
+/// singular (sigma equals an eigenvalue, e.g. sigma = 0 with rigid-body modes) or when ARPACK
+/// does not converge.
+EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count,
+                               double sigma);
+
+}  // namespace beamrotor
