@@ -28,6 +28,17 @@ DofMap::DofMap(const Model& model) {
       slot = kConstrained;
     }
 
+  for (const ContactConstraint& c : model.contacts()) {
+    const int slot = slots_.at(c.node)[dofIndex(c.dof)];
+    if (slot == kAbsent)
+      throw std::invalid_argument("contact '" + c.name + "' acts on " +
+                                  model.describe({c.node, c.dof}) + ", which no element carries");
+    if (slot == kConstrained)
+      throw std::invalid_argument("contact '" + c.name + "' acts on " +
+                                  model.describe({c.node, c.dof}) +
+                                  ", which a support already holds");
+  }
+
   // 2. Number free dofs node by node, then constrained ones.
   for (int pass = 0; pass < 2; ++pass) {
     const int wanted = pass == 0 ? kPresent : kConstrained;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -24,6 +25,17 @@ struct Support {
   std::string name;
   int node = -1;
   std::vector<PrescribedDof> dofs;
+};
+
+/// A one-dof contact with the fixed frame: the dof's value must stay within [lower, upper]
+/// (m or rad; either bound may be infinite). A rotation stop is both bounds on a rotation,
+/// a unilateral support one bound at 0 on a translation, a gap one bound at the gap.
+struct ContactConstraint {
+  std::string name;
+  int node = -1;
+  Dof dof = Dof::uy;
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
 };
 
 /// A concentrated force (N) or moment (N m) at a node, global frame.
@@ -54,11 +66,13 @@ class Model {
   void addElement(std::unique_ptr<Element> e) { elements_.push_back(std::move(e)); }
   void addSupport(Support s) { supports_.push_back(std::move(s)); }
   void addLoad(const NodalLoad& l) { loads_.push_back(l); }
+  void addContact(ContactConstraint c) { contacts_.push_back(std::move(c)); }
 
   const std::vector<Eigen::Vector3d>& nodes() const { return nodes_; }
   const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
   const std::vector<Support>& supports() const { return supports_; }
   const std::vector<NodalLoad>& loads() const { return loads_; }
+  const std::vector<ContactConstraint>& contacts() const { return contacts_; }
   const std::map<std::string, int>& namedNodes() const { return names_; }
   int nodeCount() const { return int(nodes_.size()); }
 
@@ -70,6 +84,7 @@ class Model {
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Support> supports_;
   std::vector<NodalLoad> loads_;
+  std::vector<ContactConstraint> contacts_;
   std::map<std::string, int> names_;
 };
 

@@ -39,9 +39,23 @@ struct ReactionComponent {
   double value = 0;
 };
 
+/// The settled state of one contact constraint.
+struct ContactState {
+  std::string name;
+  int node = -1;
+  Dof dof = Dof::uy;
+  bool active = false;   ///< the dof rests on a bound
+  double value = 0;      ///< the dof's value (m or rad)
+  double bound = 0;      ///< the bound it rests on, or the nearest one when open
+  double gap = 0;        ///< distance to the nearest bound (0 when active)
+  double force = 0;      ///< force or moment the stop exerts (N or N m; 0 when open)
+};
+
 struct StaticResult {
   NodalField displacement;                  ///< m and rad
   std::vector<ReactionComponent> reactions; ///< every constrained dof, in support order
+  std::vector<ContactState> contacts;       ///< settled contact states, in model order
+  int activeSetIterations = 0;              ///< linear solves the contact loop needed
   double rcond = 0;                         ///< UMFPACK's reciprocal condition estimate
   SystemSize size;
   SolveTimings time;

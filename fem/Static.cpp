@@ -1,14 +1,9 @@
 #include "fem/Static.hpp"
 
-#include <cmath>
-#include <sstream>
-
-#include "fem/Assembly.hpp"
-#include "fem/Errors.hpp"
+#include "fem/ActiveSet.hpp"
+#include "fem/LinearStatics.hpp"
 #include "fem/ReducedSystem.hpp"
-#include "fem/SparseLU.hpp"
 #include "fem/Stopwatch.hpp"
-#include "fem/SupportCheck.hpp"
 
 namespace beamrotor {
 
@@ -16,44 +11,33 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
   Stopwatch clock, total;
   StaticResult result;
 
-  // 1. Number the dofs and assemble the free-free stiffness and the reduced right-hand side.
-  const DofMap dofs(model);
-  const SparseAssembler assembler(model, dofs);
-  const SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
-  const Eigen::VectorXd f = loadVector(model, dofs);
-  Eigen::VectorXd u = prescribedValues(model, dofs);
-  const Eigen::VectorXd rhs = reducedRightHandSide(model, dofs, f, u);
+  // 1. Number the dofs, assemble K and the reduced right-hand side.
+  LinearStatics system(model);
   result.time.assembly = clock.lap();
 
-  // 2. Factorise; a singular matrix means a mechanism: name its dofs instead of solving.
-  const int nf = dofs.freeCount();
-  if (nf > 0) {
-    SparseLU lu;
-    lu.compute(K);
-    result.rcond = lu.rcond();
-    result.size.factorEntries = lu.factorEntries();
-    if (!lu.healthy(options.singularRcond)) {
-      const auto moving = zeroEnergyDofs(K, dofs);
-      if (!moving.empty()) throwUnsupported(model, moving, "static analysis");
-      std::ostringstream msg;
-      msg << "static analysis: the stiffness matrix is singular to working precision (UMFPACK "
-             "rcond = " << lu.rcond() << "); look for extremely stiff springs next to soft "
-             "members, or a mesh refined far past what double precision resolves";
-      throw SolveError(msg.str());
-    }
-    result.time.factor = clock.lap();
-    u.head(nf) = lu.solve(rhs);
-    if (!u.allFinite()) throw SolveError("static analysis: the solution is not finite");
-    result.time.solve = clock.lap();
+  // 2. Solve: once, or until the contact set settles.
+  Eigen::VectorXd u;
+  if (model.contacts().empty()) {
+    u = system.solve({}, options.singularRcond);
+    result.activeSetIterations = 1;
+  } else {
+    ActiveSetSolution s = solveWithContacts(model, system, options.singularRcond);
+    u = std::move(s.displacement);
+    result.contacts = std::move(s.contacts);
+    result.activeSetIterations = s.iterations;
   }
+  result.time.factor = system.factorSeconds();
+  result.time.solve = system.solveSeconds();
 
-  // 3. Recover reactions (element forces minus applied loads at constrained dofs).
-  const Eigen::VectorXd r = elementForces(model, dofs, u) - f;
+  // 3. Recover reactions: what each support exerts, K u - f at its dofs.
+  const DofMap& dofs = system.dofs();
+  const Eigen::VectorXd r = system.residual(u);
   for (const Support& s : model.supports())
     for (const PrescribedDof& p : s.dofs)
       result.reactions.push_back({s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof)]});
   result.displacement = toNodalField(model, dofs, u);
-  result.size = systemSize(model, dofs, K, result.size.factorEntries);
+  result.rcond = system.rcond();
+  result.size = systemSize(model, dofs, system.stiffness(), system.factorEntries());
   result.time.total = total.lap();
   return result;
 }

@@ -1,0 +1,54 @@
+// The linear static system of a model with supports eliminated, factorised so that it can be
+// solved again with some free dofs held at given values (active contacts) without a new
+// symbolic analysis: held dofs keep their place in the matrix, their rows and columns are
+// replaced by the diagonal, so the sparsity pattern never changes.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "fem/Assembly.hpp"
+#include "fem/Model.hpp"
+#include "fem/Results.hpp"
+#include "fem/SparseLU.hpp"
+
+namespace beamrotor {
+
+/// A free equation held at a value (m or rad).
+struct HeldDof {
+  int equation = -1;
+  double value = 0;
+};
+
+class LinearStatics {
+ public:
+  /// Numbers the dofs and assembles K (free-free), the loads and the prescribed values.
+  explicit LinearStatics(const Model& model);
+
+  /// Full-length displacement with the supports at their prescribed values and the held dofs
+  /// at theirs. Throws UnsupportedStructure or SolveError for a singular system.
+  Eigen::VectorXd solve(const std::vector<HeldDof>& held, double singularRcond);
+
+  /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
+  Eigen::VectorXd residual(const Eigen::VectorXd& u) const;
+
+  const DofMap& dofs() const { return dofs_; }
+  const SparseMatrix& stiffness() const { return K_; }
+  double rcond() const { return rcond_; }
+  double factorEntries() const { return lu_.factorEntries(); }
+  /// Seconds spent factorising and solving so far.
+  double factorSeconds() const { return factorSeconds_; }
+  double solveSeconds() const { return solveSeconds_; }
+
+ private:
+  const Model& model_;
+  DofMap dofs_;
+  SparseAssembler assembler_;
+  SparseMatrix K_;
+  Eigen::VectorXd f_, uPrescribed_, rhs_;
+  SparseLU lu_;
+  bool analysed_ = false;
+  double rcond_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;
+};
+
+}  // namespace beamrotor
