@@ -48,7 +48,21 @@ ActiveSetSolution solveWithContacts(const Model& model, LinearStatics& system,
     std::vector<HeldDof> held;
     for (int i = 0; i < n; ++i)
       if (state.side[i] != Side::open) held.push_back({eq[i], boundOf(i, state.side[i])});
-    const Eigen::VectorXd u = system.solve(held, singularRcond);
+    Eigen::VectorXd u;
+    try {
+      u = system.solve(held, singularRcond);
+    } catch (const UnsupportedStructure&) {
+      // A structure that stands only on its stops (a beam resting on unilateral supports)
+      // is a mechanism while they are open: start again from all stops closed.
+      if (out.iterations > 1 || n == 0) throw;
+      for (int i = 0; i < n; ++i)
+        state.side[i] = std::isfinite(contacts[i].lower) &&
+                                (!std::isfinite(contacts[i].upper) ||
+                                 std::abs(contacts[i].lower) <= std::abs(contacts[i].upper))
+                            ? Side::lower
+                            : Side::upper;
+      continue;
+    }
     const Eigen::VectorXd r = system.residual(u);
     const double uTol = kRelativeTolerance * scale(u), fTol = kRelativeTolerance * scale(r);
 
