@@ -56,26 +56,36 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
   std::vector<int> start, adj;
   nodeAdjacency(model, start, adj);
   // Free equations are numbered node by node, so walking a column's neighbour nodes in
-  // ascending order yields ascending row numbers.
+  // ascending order yields ascending row numbers. Count first, then fill in place.
   const int nf = dofs.freeCount();
-  colStart_.assign(nf + 1, 0);
-  rows_.clear();
-  for (int col = 0; col < nf; ++col) {
-    colStart_[col] = int(rows_.size());
+  auto forEachRow = [&](int col, auto&& visit) {
     const int node = dofs.dofOf(col).node;
     for (int k = start[node]; k < start[node + 1]; ++k)
       for (Dof d : kAllDofs) {
         const int row = dofs.equation(adj[k], d);
-        if (dofs.isFree(row)) rows_.push_back(row);
+        if (dofs.isFree(row)) visit(row);
       }
+  };
+  long long nnz = 0;
+  for (int col = 0; col < nf; ++col) forEachRow(col, [&](int) { ++nnz; });
+  pattern_.resize(nf, nf);
+  pattern_.resizeNonZeros(Eigen::Index(nnz));
+  int* colStart = pattern_.outerIndexPtr();
+  int* rows = pattern_.innerIndexPtr();
+  int next = 0;
+  for (int col = 0; col < nf; ++col) {
+    colStart[col] = next;
+    forEachRow(col, [&](int row) { rows[next++] = row; });
   }
-  colStart_[nf] = int(rows_.size());
+  colStart[nf] = next;
+  std::fill_n(pattern_.valuePtr(), nnz, 0.0);
 }
 
 int SparseAssembler::slot(int row, int col) const {
-  const auto first = rows_.begin() + colStart_[col], last = rows_.begin() + colStart_[col + 1];
-  const auto it = std::lower_bound(first, last, row);
-  return int(it - rows_.begin());
+  const int* rows = pattern_.innerIndexPtr();
+  const int* first = rows + pattern_.outerIndexPtr()[col];
+  const int* last = rows + pattern_.outerIndexPtr()[col + 1];
+  return int(std::lower_bound(first, last, row) - rows);
 }
 
 ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {
@@ -89,8 +99,8 @@ ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {
 }
 
 SparseMatrix SparseAssembler::assemble(MatrixKind kind) const {
-  const int nf = dofs_.freeCount();
-  std::vector<double> values(rows_.size(), 0.0);
+  SparseMatrix A = pattern_;
+  double* values = A.valuePtr();
   std::array<int, kMaxElementDofs> eq{};
   for (const auto& e : model_.elements()) {
     const ElementMatrix ke = elementMatrix(*e, kind);
@@ -104,9 +114,7 @@ SparseMatrix SparseAssembler::assemble(MatrixKind kind) const {
         if (dofs_.isFree(eq[a]) && ke(a, b) != 0.0) values[slot(eq[a], eq[b])] += ke(a, b);
     }
   }
-  Eigen::Map<const SparseMatrix> view(nf, nf, int(rows_.size()), colStart_.data(), rows_.data(),
-                                      values.data());
-  return SparseMatrix(view);
+  return A;
 }
 
 ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u) {

@@ -23,7 +23,7 @@ class SparseAssembler {
   /// The free-free block of one global matrix (freeCount x freeCount, compressed).
   SparseMatrix assemble(MatrixKind kind) const;
   /// Number of stored entries of the pattern.
-  long long patternSize() const { return (long long)rows_.size(); }
+  long long patternSize() const { return pattern_.nonZeros(); }
 
  private:
   /// Position of (row, col) in the pattern's value array.
@@ -31,8 +31,7 @@ class SparseAssembler {
 
   const Model& model_;
   const DofMap& dofs_;
-  std::vector<int> colStart_;  // compressed-column pattern of the free-free block
-  std::vector<int> rows_;
+  SparseMatrix pattern_;  // compressed free-free block with every value zero
 };
 
 /// The element matrix of one kind (empty when the element has none).

@@ -39,7 +39,9 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   if (nf == 0) return u;
 
   // 1. Factorise (symbolic analysis once, numeric every time).
-  const SparseMatrix A = held.empty() ? K_ : holdDofs(K_, held);
+  SparseMatrix heldMatrix;
+  if (!held.empty()) heldMatrix = holdDofs(K_, held);
+  const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
   if (!analysed_) {
     lu_.analyzePattern(A);
     analysed_ = true;
