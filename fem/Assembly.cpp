@@ -124,7 +124,7 @@ ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd
   return ue;
 }
 
-Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
+Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.size());
   for (const NodalLoad& l : model.loads()) {
     const int eq = dofs.equation(l.node, l.dof);
@@ -133,6 +133,11 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
                                   ", which no element carries");
     f[eq] += l.value;
   }
+  return f;
+}
+
+Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
+  Eigen::VectorXd f = nodalLoadVector(model, dofs);
   for (const auto& e : model.elements()) {
     const ElementVector fe = e->load();
     if (fe.size() == 0) continue;

@@ -40,6 +40,9 @@ ElementMatrix elementMatrix(const Element& e, MatrixKind kind);
 /// Gathers an element's dof values from a full-length vector (ordered as DofMap).
 ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u);
 
+/// Full-length vector of the concentrated nodal loads alone.
+Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs);
+
 /// Full-length vector of applied loads: nodal loads plus element equivalent loads.
 Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs);
 

@@ -27,9 +27,9 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
 LinearStatics::LinearStatics(const Model& model)
     : model_(model), dofs_(model), assembler_(model, dofs_) {
   K_ = assembler_.assemble(MatrixKind::stiffness);
-  f_ = loadVector(model, dofs_);
+  nodalLoads_ = nodalLoadVector(model, dofs_);
   uPrescribed_ = prescribedValues(model, dofs_);
-  rhs_ = reducedRightHandSide(model, dofs_, f_, uPrescribed_);
+  rhs_ = reducedRightHandSide(model, dofs_, loadVector(model, dofs_), uPrescribed_);
 }
 
 Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double singularRcond) {
@@ -74,7 +74,8 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
 }
 
 Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u) const {
-  return elementForces(model_, dofs_, u) - f_;
+  // Element forces already net out the loads the elements carry.
+  return elementForces(model_, dofs_, u) - nodalLoads_;
 }
 
 }  // namespace beamrotor

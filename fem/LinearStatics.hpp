@@ -45,7 +45,7 @@ class LinearStatics {
   DofMap dofs_;
   SparseAssembler assembler_;
   SparseMatrix K_;
-  Eigen::VectorXd f_, uPrescribed_, rhs_;
+  Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
   SparseLU lu_;
   bool analysed_ = false;
   double rcond_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;

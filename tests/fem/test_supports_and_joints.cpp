@@ -118,3 +118,19 @@ TEST_SUITE("supports and joints") {
     CHECK(relError(rot.dot(axis), T * 3.0 / s->GJ()) < kExact);
   }
 }
+
+TEST_SUITE("supports and joints") {
+  TEST_CASE("distributed load: reactions q L / 2 and the fixed-end moments q L^2 / 12") {
+    const double L = 3.0, q = -2000.0;
+    Model m;
+    const Line line = uniformBeam(m, L, steelCircle(0.06), 6);
+    for (Beam* b : line.beams) b->setDistributedLoad({0, q, 0});
+    clamp(m, "left", line.nodes.front(), DofSet::planar());
+    clamp(m, "right", line.nodes.back(), DofSet::planar());
+    const StaticResult r = solveStatic(m);
+    CHECK(relError(r.reaction("left", Dof::uy), -q * L / 2) < kExact);
+    CHECK(relError(r.reaction("right", Dof::uy), -q * L / 2) < kExact);
+    CHECK(relError(r.reaction("left", Dof::rz), -q * L * L / 12) < kExact);
+    CHECK(relError(r.reaction("right", Dof::rz), q * L * L / 12) < kExact);
+  }
+}
