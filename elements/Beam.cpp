@@ -85,6 +85,18 @@ Matrix4 linearMass(double rhoA, double rhoI, double L) {
   return m;
 }
 
+/// Section rotation theta(xi) = N(xi) . (v1, theta1, v2, theta2) at xi = x / L in one
+/// bending plane. Interdependent interpolation: Friedman and Kosmatka (1993), the shapes behind
+/// hermiteMass (Phi = 0: the derivatives of the Hermite cubics); the linear elements
+/// interpolate theta linearly.
+Eigen::RowVector4d rotationShape(BeamTheory t, double Phi, double L, double xi) {
+  if (isLinear(t)) return {0, 1 - xi, 0, xi};
+  const double a = 6 * (xi * xi - xi) / L;
+  return Eigen::RowVector4d(a, 3 * xi * xi - (4 + Phi) * xi + 1 + Phi, -a,
+                            3 * xi * xi - (2 - Phi) * xi) /
+         (1 + Phi);
+}
+
 /// Bending about local y uses theta = -ry = dw/dx: flip the rotation signs.
 Matrix4 flipRotations(const Matrix4& m) {
   const Eigen::Vector4d s(1, -1, 1, -1);
@@ -300,6 +312,61 @@ ElementMatrix Beam::mass() const {
     condense(&K, &M, nullptr);
   }
   return toCarried(toGlobal(M, R_));
+}
+
+Matrix12 Beam::localGyroscopic() const {
+  // A cross-section spinning at Omega about its tilted normal carries the angular momentum
+  // rho Ip Omega per length; its rate under tilt rates gives moments coupling the section
+  // rotations ry, rz (Nelson and McVaugh 1976; with shear, Nelson 1980):
+  //   G = rho Ip int (Ny^T Nz - Nz^T Ny) dx,
+  // Ny, Nz interpolating ry and rz from the element dofs. Sign: for a rigid body this is
+  // Jp [0 1; -1 0] on (ry, rz), which makes forward whirl stiffen with speed.
+  Matrix12 G = Matrix12::Zero();
+  if (!options_.rotaryInertia) return G;
+  const Section& s = *section_;
+  const double rhoIp = s.material.rho * s.Ip(), L = L_;
+  if (options_.mass == MassModel::lumped) {
+    for (int end : {0, 6}) {
+      G(end + 4, end + 5) = rhoIp * L / 2;
+      G(end + 5, end + 4) = -rhoIp * L / 2;
+    }
+    return G;
+  }
+  const BeamTheory t = options_.theory;
+  const bool shear = t == BeamTheory::timoshenko;
+  const double Gm = s.material.G;
+  const double phiY = shear && s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * Gm * s.A * L * L) : 0;
+  const double phiZ = shear && s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * Gm * s.A * L * L) : 0;
+  // rz = Nz (v1, rz1, v2, rz2); the x-z plane interpolates theta = -ry from (w1, -ry1, w2,
+  // -ry2), so ry = -N (w1, -ry1, w2, -ry2). Rotation shapes are quadratic: 3 Gauss points
+  // integrate the products exactly.
+  const Eigen::Vector4d flip(1, -1, 1, -1);
+  const double g = std::sqrt(0.15);
+  const std::array<double, 3> xi{0.5 - g, 0.5, 0.5 + g}, w{5.0 / 18, 8.0 / 18, 5.0 / 18};
+  Matrix4 B = Matrix4::Zero();  // int Ny^T Nz dx: rows (w1, ry1, w2, ry2), cols (v1, rz1, v2, rz2)
+  for (int p = 0; p < 3; ++p) {
+    const Eigen::RowVector4d Nz = rotationShape(t, phiY, L, xi[p]);
+    const Eigen::RowVector4d Ny = -rotationShape(t, phiZ, L, xi[p]) * flip.asDiagonal();
+    B += w[p] * L * Ny.transpose() * Nz;
+  }
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      G(kPlaneXZ[a], kPlaneXY[b]) += rhoIp * B(a, b);
+      G(kPlaneXY[b], kPlaneXZ[a]) -= rhoIp * B(a, b);
+    }
+  return G;
+}
+
+ElementMatrix Beam::gyroscopic() const {
+  if (!options_.rotaryInertia || !carried_.contains(Dof::ry) || !carried_.contains(Dof::rz))
+    return {};
+  Matrix12 G = localGyroscopic();
+  if (!released_.empty()) {
+    // Released rotations follow the kept dofs as in the mass matrix: G -> T^T G T.
+    Matrix12 K = localStiffness();
+    condense(&K, &G, nullptr);
+  }
+  return toCarried(toGlobal(G, R_));
 }
 
 ElementVector Beam::load() const {

@@ -53,6 +53,11 @@ class Beam : public LineElement {
   std::span<const NodeDof> dofs() const override { return {dofs_.data(), std::size_t(count_)}; }
   ElementMatrix stiffness() const override;
   ElementMatrix mass() const override;
+  /// Gyroscopic matrix per unit spin speed (kg m^2: N m per rad/s of spin and rad/s of tilt
+  /// rate), global frame, ordered as dofs(), for spin about the local +x axis. Comes from the
+  /// same rho I as the rotary inertia, so a beam without rotary inertia (or one that carries
+  /// only one bending rotation, e.g. a planar beam) has none: empty matrix.
+  ElementMatrix gyroscopic() const override;
   ElementVector load() const override;
   std::string kind() const override;
 
@@ -68,6 +73,9 @@ class Beam : public LineElement {
   /// Local-frame matrices before releases (local dofs u v w rx ry rz at each end).
   Matrix12 localStiffness() const;
   Matrix12 localMass() const;
+  /// Local gyroscopic matrix (skew-symmetric), local dofs as localMass(); zero without
+  /// rotary inertia.
+  Matrix12 localGyroscopic() const;
   Vector12 localLoad() const;
 
  private:

@@ -35,4 +35,23 @@ ElementMatrix PointInertia::mass() const {
   return M;
 }
 
+ElementMatrix PointInertia::gyroscopic() const {
+  // A body spinning at Omega about its axis a carries H = Jp Omega a; a small rotation theta
+  // turns a into a + theta x a, so dH/dt = Jp Omega theta' x a = -Jp Omega [a]x theta': the
+  // moment needed is G theta' with G = -Jp [a]x (Lalanne and Ferraris, Rotordynamics
+  // Prediction in Engineering, 1998, ch. 2, in vector form).
+  const Eigen::Matrix3d G = -Jp_ * (Eigen::Matrix3d() << 0, -axis_.z(), axis_.y(),  //
+                                    axis_.z(), 0, -axis_.x(),                        //
+                                    -axis_.y(), axis_.x(), 0)
+                                       .finished();
+  const int n = int(dofs_.size());
+  ElementMatrix out = ElementMatrix::Zero(n, n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      if (isRotation(dofs_[a].dof) && isRotation(dofs_[b].dof))
+        out(a, b) = G(dofIndex(dofs_[a].dof) - 3, dofIndex(dofs_[b].dof) - 3);
+  if (out.isZero(0)) return {};
+  return out;
+}
+
 }  // namespace beamrotor

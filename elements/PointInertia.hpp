@@ -18,6 +18,10 @@ class PointInertia : public Element {
   std::span<const NodeDof> dofs() const override { return dofs_; }
   ElementMatrix stiffness() const override;
   ElementMatrix mass() const override;
+  /// Gyroscopic matrix per unit spin speed about `axis` (kg m^2), on the carried rotations:
+  /// -Jp [axis]x, i.e. Jp [0 1; -1 0] on (ry, rz) for axis x. Empty when Jp = 0 or fewer than
+  /// two rotations are carried.
+  ElementMatrix gyroscopic() const override;
   std::string kind() const override { return "inertia"; }
 
   double m() const { return m_; }

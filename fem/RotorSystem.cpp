@@ -65,7 +65,9 @@ SparseMatrix RotorSystem::atSpeed(const SparseMatrix& A, double speed, bool stif
   return out;
 }
 
-SparseMatrix RotorSystem::stiffness(double speed) const { return atSpeed(K0_, speed, true); }
+SparseMatrix RotorSystem::stiffness(double speed) const {
+  return atSpeed(K0_, speed, true);
+}
 
 SparseMatrix RotorSystem::damping(double speed) const {
   SparseMatrix C = atSpeed(C0_, speed, false);

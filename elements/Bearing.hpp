@@ -1,0 +1,50 @@
+// A bearing: one shaft node tied to the fixed frame in the two lateral directions by
+// stiffness and damping coefficients, constant or tabulated against spin speed.
+//
+// Frame: a shaft along global x; the bearing's own transverse axes (x_b, y_b), in which
+// bearing data are usually printed as kxx, kxy, kyx, kyy, map to global (y, z):
+// kxx -> kyy, kxy -> kyz, kyx -> kzy, kyy -> kzz (likewise for c). The force the bearing
+// exerts on the journal is
+//   F = -[kyy kyz; kzy kzz] (uy, uz) - [cyy cyz; czy czz] (uy', uz')   (N; m, m/s).
+// Cross-coupled coefficients make K and C non-symmetric.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "fem/RotorElement.hpp"
+
+namespace beamrotor {
+
+/// Bearing coefficients at one speed, global axes: N/m and N s/m.
+struct BearingCoefficients {
+  double kyy = 0, kyz = 0, kzy = 0, kzz = 0;
+  double cyy = 0, cyz = 0, czy = 0, czz = 0;
+
+  /// Isotropic bearing: k on both directions, no cross-coupling.
+  static BearingCoefficients isotropic(double k, double c = 0) { return {k, 0, 0, k, c, 0, 0, c}; }
+};
+
+class Bearing : public SpeedDependentElement {
+ public:
+  /// Constant coefficients at `node` (dofs uy, uz).
+  Bearing(int node, const BearingCoefficients& c);
+  /// Coefficients tabulated at strictly ascending speeds (rad/s); linear interpolation
+  /// between rows, the end rows held beyond the table (bearing data are not extrapolated).
+  Bearing(int node, std::vector<double> speeds, std::vector<BearingCoefficients> table);
+
+  std::span<const NodeDof> dofs() const override { return dofs_; }
+  ElementMatrix stiffnessAt(double speed) const override;
+  ElementMatrix dampingAt(double speed) const override;
+  std::string kind() const override { return "bearing"; }
+
+  /// The interpolated coefficients at spin speed Omega (rad/s).
+  BearingCoefficients coefficientsAt(double speed) const;
+
+ private:
+  std::array<NodeDof, 2> dofs_;
+  std::vector<double> speeds_;
+  std::vector<BearingCoefficients> table_;
+};
+
+}  // namespace beamrotor
