@@ -28,3 +28,17 @@ test: build
 
 clean:
 	rm -rf $(BUILD) out
+
+# Fuzz the deck reader (clang-14 + libFuzzer, ASan, UBSan): seeds are the shipped decks and the
+# malformed fixtures; new inputs collect in $(FUZZ_BUILD)/corpus, crashes in $(FUZZ_BUILD)/.
+FUZZ_BUILD   := build-fuzz
+FUZZ_SECONDS ?= 600
+.PHONY: fuzz
+fuzz:
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 \
+	      -DBEAMROTOR_FUZZ=ON >/dev/null
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_deck
+	mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds
+	cp problems/*.yaml tests/problems/malformed/*.yaml $(FUZZ_BUILD)/seeds/
+	cd $(FUZZ_BUILD) && ./fuzz_deck corpus seeds -dict=../tests/problems/fuzz_deck.dict \
+	      -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=2048

@@ -21,6 +21,7 @@ struct Check {
   double computed = 0;
   double reference = 0;
   double tolerance = 0;  ///< on the relative error
+  std::string quantity;  ///< what was measured, in deck syntax, e.g. "reaction left rz"
   double relError() const {
     return reference != 0 ? std::abs(computed - reference) / std::abs(reference)
                           : std::abs(computed);
@@ -45,6 +46,7 @@ struct RunResult {
   std::string dimension;                                  ///< "planar" or "3d"
   std::vector<AnalysisOutcome> analyses;
   std::vector<Check> checks;
+  std::vector<std::string> skippedChecks;  ///< names of checks whose `when:` is false here
   double seconds = 0;                                     ///< wall time to build and solve
 };
 

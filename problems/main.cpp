@@ -1,7 +1,9 @@
-// beamrotor command line (placeholder until the deck-driven command line lands).
+// The beamrotor executable: `beamrotor solve DECK`, `beamrotor check DECK`, `--help`,
+// `--version`. Everything lives in problems/cli; this only connects it to the process.
 #include <iostream>
 
+#include "problems/cli/App.hpp"
+
 int main(int argc, char** argv) {
-  std::cout << "beamrotor " << BEAMROTOR_VERSION << "\n";
-  return 0;
+  return beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
 }

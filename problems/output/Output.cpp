@@ -1,14 +1,167 @@
-// Placeholder: replaced by the real writers.
+// Ties the writers together. Each run is first prepared in memory (checked for NaN and
+// infinity, sampled along the line, its JSON and tables built), so that every error a result
+// can cause is raised before the first byte is written; then the files are written into a
+// temporary directory that replaces the output directory only when complete.
 #include "problems/output/Output.hpp"
+
+#include <optional>
+#include <stdexcept>
+
+#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/Charts.hpp"
+#include "problems/output/FileNames.hpp"
+#include "problems/output/FiniteCheck.hpp"
+#include "problems/output/JsonWriter.hpp"
+#include "problems/output/LineSampling.hpp"
+#include "problems/output/SweepTable.hpp"
+#include "problems/output/Tables.hpp"
+#include "problems/output/VtkWriter.hpp"
 
 namespace beamrotor {
 
-void writeRunOutputs(const RunResult&, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
+namespace {
+
+namespace fs = std::filesystem;
+
+/// What one analysis writes, computed before writing.
+struct PreparedAnalysis {
+  const AnalysisOutcome* outcome = nullptr;
+  std::string stem;
+  std::vector<StaticStation> stations;  ///< statics only
+  std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
+  std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
+  std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
+};
+
+struct PreparedRun {
+  const RunResult* run = nullptr;
+  std::vector<PreparedAnalysis> analyses;
+  Json doc;  ///< results.json
+};
+
+PreparedRun prepare(const RunResult& run) {
+  // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
+  requireFinite(run);
+  requireDistinctFileStems(run.analyses);
+  const Model& model = *run.model;
+
+  // 2. Sample the statics along the line and build every table.
+  PreparedRun prepared{&run, {}, {}};
+  std::vector<std::vector<StaticStation>> stations;
+  for (const AnalysisOutcome& a : run.analyses) {
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}};
+    if (a.statics) {
+      p.stations = sampleStatics(model, a.statics->displacement);
+      p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
+    }
+    if (a.modal) {
+      p.modes = modesTable(modesCsv(p.stem), *a.modal);
+      p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
+    }
+    stations.push_back(p.stations);
+    prepared.analyses.push_back(std::move(p));
+  }
+
+  // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
+  prepared.doc = runJson(run, stations);
+  requireFiniteNumbers(prepared.doc, kResultsJson);
+  return prepared;
 }
 
-void writeSweepOutputs(const SweepResult&, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
+/// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts.
+std::string caption(const RunResult& run, const std::string& analysis) {
+  std::string text = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis;
+  for (std::size_t i = 0; i < run.parameters.size(); ++i)
+    text += (i ? ", " : " (") + run.parameters[i].first + " = " +
+            exactDecimal(run.parameters[i].second) + (i + 1 == run.parameters.size() ? ")" : "");
+  return text;
+}
+
+void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
+  const RunResult& run = *prepared.run;
+  const Model& model = *run.model;
+  writeJson(prepared.doc, dir / kResultsJson);
+  for (const PreparedAnalysis& p : prepared.analyses) {
+    const AnalysisOutcome& a = *p.outcome;
+    if (a.statics) {
+      p.fields->write(dir / fieldsCsv(p.stem));
+      writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);
+      if (charts && !p.stations.empty())
+        drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem), *p.fields,
+                                      fieldsCsv(p.stem), namedPointMarkers(model)));
+    }
+    if (a.modal) {
+      p.modes->write(dir / modesCsv(p.stem));
+      p.shapes->write(dir / shapesCsv(p.stem));
+      std::vector<PvdEntry> entries;
+      for (std::size_t m = 0; m < a.modal->modes.size(); ++m) {
+        const int number = int(m) + 1;
+        writeModeVtu(dir / modeVtu(p.stem, number), model, a.modal->modes[m], number);
+        // Mode numbers as time steps: rigid-body modes share frequency 0, numbers never tie.
+        entries.push_back({double(number), modeVtu(p.stem, number)});
+      }
+      writePvd(dir / collectionPvd(p.stem), entries);
+      if (charts && p.shapes->rowCount() > 0)
+        drawChart(dir, modeShapesChart(caption(run, a.name), shapesChart(p.stem), model, *a.modal,
+                                       *p.shapes, shapesCsv(p.stem)));
+    }
+  }
+}
+
+}  // namespace
+
+void writeRunOutputs(const RunResult& run, const fs::path& dir) {
+  const PreparedRun prepared = prepare(run);
+  writeDirectoryAtomically(
+      dir, [&](const fs::path& temporary) { writeRunFiles(prepared, temporary, /*charts=*/true); });
+}
+
+void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
+  // 1. Prepare every value and the sweep's own tables before writing anything.
+  if (sweep.values.empty()) throw std::invalid_argument("a sweep needs at least one value");
+  if (sweep.runs.size() != sweep.values.size())
+    throw std::invalid_argument("sweep over '" + sweep.parameter + "' has " +
+                                std::to_string(sweep.values.size()) + " values but " +
+                                std::to_string(sweep.runs.size()) + " runs");
+  std::vector<PreparedRun> prepared;
+  std::vector<Json> docs;
+  std::vector<std::string> directories;
+  for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
+    prepared.push_back(prepare(sweep.runs[i]));
+    docs.push_back(prepared.back().doc);
+    directories.push_back(sweepValueDirectory(i, sweep.runs.size()));
+  }
+  const Json sweepDoc = sweepJson(sweep, docs, directories);
+  requireFiniteNumbers(sweepDoc, kSweepJson);
+  const std::vector<SweepQuantity> quantities = sweepQuantities(docs.front());
+  const CsvTable table = sweepTable(kSweepCsv, sweep, docs, quantities);
+
+  // 2. Per value its own results (no charts: they would dominate the time of a long sweep),
+  // then the sweep's JSON, CSV, a .pvd series per static analysis, and the sweep charts.
+  writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
+    for (std::size_t i = 0; i < prepared.size(); ++i) {
+      fs::create_directory(temporary / directories[i]);
+      writeRunFiles(prepared[i], temporary / directories[i], /*charts=*/false);
+    }
+    writeJson(sweepDoc, temporary / kSweepJson);
+    table.write(temporary / kSweepCsv);
+    const RunResult& first = sweep.runs.front();
+    for (const AnalysisOutcome& a : first.analyses) {
+      const std::string stem = fileStem(a.name);
+      if (a.statics) {
+        std::vector<PvdEntry> series;
+        for (std::size_t i = 0; i < sweep.values.size(); ++i)
+          series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
+        writePvd(temporary / collectionPvd(stem), series);
+      }
+      std::vector<SweepQuantity> own;
+      for (const SweepQuantity& q : quantities)
+        if (q.analysis == a.name) own.push_back(q);
+      if (!own.empty())
+        drawChart(temporary, sweepChart(first.deckName + ": " + a.name + " over " + sweep.parameter,
+                                        sweepChart(stem), sweep.parameter, own, table, kSweepCsv));
+    }
+  });
 }
 
 }  // namespace beamrotor

@@ -1,0 +1,72 @@
+#include "problems/cli/App.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include "problems/cli/Commands.hpp"
+#include "problems/cli/ExitCodes.hpp"
+
+namespace beamrotor::cli {
+
+namespace {
+
+constexpr const char* kDescription =
+    "beamrotor: finite-element beams and rotors.\n"
+    "Solves the engineering scenes described by YAML decks (see problems/*.yaml).\n"
+    "Exit codes: 0 ok, 1 an analysis failed, 2 bad input, 3 a check failed (check).";
+
+/// The options every deck-reading subcommand shares.
+void addDeckOptions(CLI::App& sub, StudyRequest& request) {
+  sub.add_option("deck", request.deckPath, "the deck to solve, e.g. problems/pump_rod.yaml")
+      ->required();
+  sub.add_option("--set", request.sets,
+                 "override a deck parameter (repeatable), e.g. --set eta=0.2; the value may be "
+                 "an expression of constants")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+  sub.add_option("--sweep", request.sweep,
+                 "solve once per value of a parameter, replacing the deck's own sweep: "
+                 "NAME=FROM:TO:STEPS (STEPS intervals) or NAME=V1,V2,...")
+      ->type_name("SPEC");
+  sub.add_flag("--no-sweep", request.noSweep,
+               "solve the parameters' own values once even if the deck has a sweep");
+}
+
+}  // namespace
+
+int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{kDescription, "beamrotor"};
+  app.set_version_flag("--version", std::string("beamrotor ") + BEAMROTOR_VERSION);
+  app.require_subcommand(1);
+
+  SolveOptions solve;
+  CLI::App* solveCmd = app.add_subcommand(
+      "solve", "Solve every analysis of a deck, write results.json, CSV, VTK and charts, and "
+               "print a summary with the deck's checks.");
+  addDeckOptions(*solveCmd, solve.study);
+  solveCmd->add_option("--out,-o", solve.outDir,
+                       "output directory (default: out/<deck name>/); replaced as a whole")
+      ->type_name("DIR");
+
+  StudyRequest check;
+  CLI::App* checkCmd = app.add_subcommand(
+      "check", "Solve a deck and compare it with its closed forms; exits 3 if any check fails.");
+  addDeckOptions(*checkCmd, check);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // Help and version are "errors" that succeed; real parse errors are input errors.
+    const int code = app.exit(e, out, err);
+    return code == 0 ? int(kOk) : int(kInputError);
+  }
+
+  try {
+    if (solveCmd->parsed()) return solveCommand(solve, out, err);
+    return checkCommand(check, out, err);
+  } catch (const std::exception& e) {
+    err << "beamrotor: internal error: " << e.what() << "\n";
+    return kSolveFailure;
+  }
+}
+
+}  // namespace beamrotor::cli

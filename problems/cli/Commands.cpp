@@ -1,0 +1,129 @@
+#include "problems/cli/Commands.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "fem/Stopwatch.hpp"
+#include "problems/cli/ExitCodes.hpp"
+#include "problems/cli/Progress.hpp"
+#include "problems/cli/Summary.hpp"
+#include "problems/deck/DeckError.hpp"
+#include "problems/output/Output.hpp"
+
+namespace beamrotor::cli {
+
+namespace {
+
+/// Runs `body`, turning the deck's diagnostics into one line on `err` and an exit code.
+template <class Body>
+int guarded(std::ostream& err, Body&& body) {
+  try {
+    return body();
+  } catch (const DeckError& e) {
+    err << e.what() << "\n";
+    return kInputError;
+  } catch (const DeckSolveError& e) {
+    err << e.what() << "\n";
+    return kSolveFailure;
+  }
+}
+
+Study solveWithProgress(const StudyRequest& request, std::ostream& err) {
+  std::unique_ptr<ProgressBar> shown;
+  return solveStudy(request, [&](int done, int total) {
+    if (!shown) shown = std::make_unique<ProgressBar>(err, ProgressBar::wanted(total));
+    shown->update(done, total);
+  });
+}
+
+/// The runs of a study with a label each ("eta = 0.4" in a sweep, empty otherwise).
+std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(const Study& s) {
+  std::vector<const RunResult*> runs;
+  std::vector<std::string> labels;
+  if (s.run) {
+    runs.push_back(&*s.run);
+    labels.emplace_back();
+  } else {
+    for (std::size_t i = 0; i < s.sweep->runs.size(); ++i) {
+      runs.push_back(&s.sweep->runs[i]);
+      labels.push_back(s.sweep->parameter + " = " + formatValue(s.sweep->values[i]));
+    }
+  }
+  return {runs, labels};
+}
+
+void printHeader(std::ostream& out, const Study& s) {
+  out << "beamrotor " << BEAMROTOR_VERSION << ": " << s.deck.path;
+  if (!s.deck.title.empty()) out << " (" << s.deck.title << ")";
+  out << "\n";
+  out << "parameters:";
+  if (s.deck.parameters.empty()) out << " (none)";
+  const char* separator = " ";
+  for (const auto& [name, value] : s.deck.parameters) {
+    const bool swept = s.sweep && s.sweep->parameter == name;
+    out << separator << name << " = " << (swept ? "swept" : formatValue(value));
+    separator = ", ";
+  }
+  out << "\n";
+}
+
+}  // namespace
+
+int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& err) {
+  return guarded(err, [&] {
+    Stopwatch clock;
+    // 1. Read and solve everything before writing anything: a failure leaves no output.
+    const Study s = solveWithProgress(options.study, err);
+    const double solveSeconds = clock.lap();
+
+    // 2. Write the outputs.
+    const std::filesystem::path dir =
+        options.outDir.empty() ? std::filesystem::path("out") / s.deck.stem
+                               : std::filesystem::path(options.outDir);
+    std::string writeError;
+    try {
+      if (s.run)
+        writeRunOutputs(*s.run, dir);
+      else
+        writeSweepOutputs(*s.sweep, dir);
+    } catch (const std::exception& e) {
+      writeError = e.what();
+    }
+    const double writeSeconds = clock.lap();
+
+    // 3. The summary.
+    printHeader(out, s);
+    if (s.run)
+      printRunResults(out, s.deck, *s.run);
+    else
+      printSweepResults(out, s.deck, *s.sweep);
+    const auto [runs, labels] = runsOf(s);
+    const int failed = printChecks(out, s.deck, runs, labels);
+    char times[96];
+    std::snprintf(times, sizeof times, "time: %.3f s (solve %.3f s, write %.3f s)\n",
+                  solveSeconds + writeSeconds, solveSeconds, writeSeconds);
+    out << times;
+    if (failed > 0)
+      out << "warning: " << failed << " check(s) FAILED (beamrotor check exits non-zero)\n";
+    if (!writeError.empty()) {
+      out << "results: not written\n";
+      err << dir.string() << ": cannot write the results: " << writeError << "\n";
+      return int(kSolveFailure);
+    }
+    out << "results: " << dir.string() << "/\n";
+    return int(kOk);
+  });
+}
+
+int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err) {
+  return guarded(err, [&] {
+    const Study s = solveWithProgress(request, err);
+    printHeader(out, s);
+    const auto [runs, labels] = runsOf(s);
+    const int failed = printChecks(out, s.deck, runs, labels);
+    return int(failed > 0 ? kChecksFailed : kOk);
+  });
+}
+
+}  // namespace beamrotor::cli

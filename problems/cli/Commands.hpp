@@ -1,0 +1,23 @@
+// The subcommands of the beamrotor command line, callable without CLI11 (tests call them
+// directly): each reads a deck, solves it and reports, returning the process exit code.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "problems/deck/Study.hpp"
+
+namespace beamrotor::cli {
+
+struct SolveOptions {
+  StudyRequest study;
+  std::string outDir;  ///< empty: out/<deck stem>
+};
+
+/// `beamrotor solve`: solve, write results.json, CSV, VTK and charts, print a summary.
+int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& err);
+
+/// `beamrotor check`: solve and print the checks; kChecksFailed when any fails.
+int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err);
+
+}  // namespace beamrotor::cli

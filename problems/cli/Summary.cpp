@@ -1,0 +1,195 @@
+#include "problems/cli/Summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace beamrotor::cli {
+
+namespace {
+
+/// Unit of a reaction component and of a displacement component.
+const char* forceUnit(Dof d) { return isRotation(d) ? "N m" : "N"; }
+const char* motionUnit(Dof d) { return isRotation(d) ? "rad" : "m"; }
+
+std::string padded(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
+}
+
+SystemSize sizeOf(const RunResult& run) {
+  for (const AnalysisOutcome& a : run.analyses) {
+    if (a.statics) return a.statics->size;
+    if (a.modal) return a.modal->size;
+  }
+  return {};
+}
+
+/// Supports in deck order with their reaction components.
+std::vector<std::pair<std::string, std::vector<ReactionComponent>>> bySupport(
+    const StaticResult& r) {
+  std::vector<std::pair<std::string, std::vector<ReactionComponent>>> out;
+  for (const ReactionComponent& c : r.reactions) {
+    auto it = std::find_if(out.begin(), out.end(), [&](const auto& s) { return s.first == c.support; });
+    if (it == out.end()) it = out.insert(out.end(), {c.support, {}});
+    it->second.push_back(c);
+  }
+  // Components in dof order (ux before rz), whatever order the deck listed them in.
+  for (auto& [support, components] : out)
+    std::stable_sort(components.begin(), components.end(),
+                     [](const auto& a, const auto& b) { return dofIndex(a.dof) < dofIndex(b.dof); });
+  return out;
+}
+
+/// The points worth reporting: the deck's own, or start and end when it names none.
+std::vector<const DeckPoint*> reportedPoints(const Deck& deck) {
+  std::vector<const DeckPoint*> out;
+  for (const DeckPoint& p : deck.points)
+    if (p.name != "start" && p.name != "end") out.push_back(&p);
+  if (out.empty())
+    for (const DeckPoint& p : deck.points) out.push_back(&p);
+  return out;
+}
+
+void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
+                 const AnalysisOutcome& a) {
+  const StaticResult& r = *a.statics;
+  char rcond[32];
+  std::snprintf(rcond, sizeof rcond, "%.1e", r.rcond);
+  out << "static analysis '" << a.name << "' (UMFPACK rcond " << rcond << ")\n";
+  out << "  reactions (force on the structure; N, N m):\n";
+  for (const auto& [support, components] : bySupport(r)) {
+    out << "    " << padded(support, 12);
+    for (const ReactionComponent& c : components)
+      out << padded(std::string(dofName(c.dof)) + " " + formatValue(c.value) + " " +
+                        forceUnit(c.dof),
+                    22);
+    out << "\n";
+  }
+  out << "  displacements at points (m, rad):\n";
+  for (const DeckPoint* p : reportedPoints(deck)) {
+    const int node = run.model->node(p->name);
+    out << "    " << padded(p->name, 12) << padded("x = " + formatValue(p->at) + " m", 16);
+    for (Dof d : kAllDofs)
+      if (deck.dofs.contains(d))
+        out << padded(std::string(dofName(d)) + " " + formatValue(r.displacement(node, dofIndex(d))) +
+                          " " + motionUnit(d),
+                      22);
+    out << "\n";
+  }
+}
+
+void printModal(std::ostream& out, const AnalysisOutcome& a) {
+  const ModalResult& m = *a.modal;
+  out << "modal analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
+  for (std::size_t i = 0; i < m.modes.size(); ++i)
+    out << "    mode " << padded(std::to_string(i + 1), 4) << padded(formatValue(m.modes[i].frequencyHz) + " Hz", 16)
+        << m.modes[i].description << "\n";
+}
+
+const DeckCheck* findCheck(const Deck& deck, const std::string& name) {
+  for (const DeckCheck& c : deck.checks)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+std::string scientific(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1e", v);
+  return buf;
+}
+
+}  // namespace
+
+std::string formatValue(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", std::abs(v) < 1e-300 ? 0.0 : v);
+  return buf;
+}
+
+void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) {
+  const SystemSize size = sizeOf(run);
+  out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
+      << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
+  for (const AnalysisOutcome& a : run.analyses) {
+    if (a.statics) printStatic(out, deck, run, a);
+    if (a.modal) printModal(out, a);
+  }
+}
+
+void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& sweep) {
+  if (sweep.runs.empty()) return;
+  const RunResult& first = sweep.runs.front();
+  const SystemSize size = sizeOf(first);
+  out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
+      << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free) at "
+      << sweep.parameter << " = " << formatValue(sweep.values.front()) << "\n";
+  out << "sweep over " << sweep.parameter << ": " << sweep.runs.size() << " values\n";
+
+  // Columns: the reactions of the first static analysis, the frequencies of the first modal.
+  constexpr int kFrequencies = 3;
+  constexpr std::size_t kColumn = 14;
+  std::vector<std::string> headers{sweep.parameter};
+  auto staticOf = [](const RunResult& r) -> const StaticResult* {
+    for (const auto& a : r.analyses) if (a.statics) return &*a.statics;
+    return nullptr;
+  };
+  auto modalOf = [](const RunResult& r) -> const ModalResult* {
+    for (const auto& a : r.analyses) if (a.modal) return &*a.modal;
+    return nullptr;
+  };
+  if (const StaticResult* s = staticOf(first))
+    for (const ReactionComponent& c : s->reactions)
+      headers.push_back(c.support + " " + std::string(dofName(c.dof)));
+  int frequencies = 0;
+  if (const ModalResult* m = modalOf(first)) {
+    frequencies = std::min<int>(kFrequencies, int(m->modes.size()));
+    for (int i = 0; i < frequencies; ++i) headers.push_back("f" + std::to_string(i + 1) + " Hz");
+  }
+  out << "  ";
+  for (const std::string& h : headers) out << padded(h, kColumn);
+  out << "\n";
+  for (std::size_t k = 0; k < sweep.runs.size(); ++k) {
+    const RunResult& run = sweep.runs[k];
+    out << "  " << padded(formatValue(sweep.values[k]), kColumn);
+    if (const StaticResult* s = staticOf(run))
+      for (const ReactionComponent& c : s->reactions) out << padded(formatValue(c.value), kColumn);
+    if (const ModalResult* m = modalOf(run))
+      for (int i = 0; i < frequencies && i < int(m->modes.size()); ++i)
+        out << padded(formatValue(m->modes[i].frequencyHz), kColumn);
+    out << "\n";
+  }
+  out << "  (reactions in N and N m on the structure)\n";
+}
+
+int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,
+                const std::vector<std::string>& labels) {
+  int failed = 0, passed = 0, skipped = 0;
+  std::size_t nameWidth = 10, quantityWidth = 10;
+  for (const DeckCheck& c : deck.checks) {
+    nameWidth = std::max(nameWidth, c.name.size() + 2);
+    quantityWidth = std::max(quantityWidth, c.quantity.text.size() + 2);
+  }
+  out << "checks:\n";
+  if (deck.checks.empty()) out << "  (the deck has no checks)\n";
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::string prefix = labels.empty() || labels[i].empty() ? "" : padded(labels[i], 14);
+    for (const Check& c : runs[i]->checks) {
+      const bool ok = c.pass();
+      (ok ? passed : failed)++;
+      out << "  " << (ok ? "PASS  " : "FAIL  ") << prefix << padded(c.name, nameWidth)
+          << padded(c.quantity, quantityWidth) << padded(formatValue(c.computed), 14)
+          << "ref " << padded(formatValue(c.reference), 14) << "rel.err "
+          << padded(scientific(c.relError()), 10) << "tol " << scientific(c.tolerance) << "\n";
+    }
+    for (const std::string& name : runs[i]->skippedChecks) {
+      ++skipped;
+      const DeckCheck* d = findCheck(deck, name);
+      out << "  n/a   " << prefix << padded(name, nameWidth)
+          << (d ? "(when: " + d->condition + " is false here)" : "") << "\n";
+    }
+  }
+  out << "  " << passed << " passed, " << failed << " failed, " << skipped << " not applicable\n";
+  return failed;
+}
+
+}  // namespace beamrotor::cli

@@ -1,0 +1,143 @@
+// A deck after reading: every expression evaluated for one set of parameter values, every
+// name checked, every number in range. Plain values; ModelBuilder turns it into a Model and
+// DeckRunner solves it. Each item keeps its place in the file for later messages.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "elements/Beam.hpp"
+#include "fem/Dof.hpp"
+#include "fem/Section.hpp"
+#include "problems/deck/DeckError.hpp"
+#include "problems/deck/Quantity.hpp"
+
+namespace beamrotor {
+
+/// A prismatic piece of the line (see meshes/LineBuilder Segment).
+struct DeckSegment {
+  std::string name;                       ///< optional; loads refer to segments by name
+  double length = 0;                      ///< m
+  std::shared_ptr<const Section> section;
+  std::string sectionName;
+  int elements = 0;                       ///< element count, or 0 to use size
+  double size = 0;                        ///< largest element length (m) when elements == 0
+  BeamOptions options;
+  DeckPlace place;
+};
+
+/// A named station on the line, `at` metres from its start.
+struct DeckPoint {
+  std::string name;
+  double at = 0;
+  DeckPlace place;
+};
+
+/// A support at a point: fixed dofs (value 0) and prescribed values (m, rad).
+struct DeckSupport {
+  std::string name;
+  std::string point;
+  std::vector<std::pair<Dof, double>> dofs;  ///< in the deck's order, fixed ones first
+  DeckPlace place;
+};
+
+/// A linear spring (and damper) on one dof, grounded or between two points.
+struct DeckSpring {
+  std::string name;
+  std::string point;
+  std::string toPoint;  ///< empty: grounded
+  Dof dof = Dof::uy;
+  double k = 0;         ///< N/m or N m/rad
+  double c = 0;         ///< N s/m or N m s/rad
+  DeckPlace place;
+};
+
+/// A rigid body lumped at a point (elements/PointInertia); its axis is the line's.
+struct DeckMass {
+  std::string name;
+  std::string point;
+  double m = 0, Jp = 0, Jd = 0;  ///< kg, kg m^2
+  DeckPlace place;
+};
+
+/// End releases of every beam meeting at a point.
+struct DeckHinge {
+  std::string point;
+  std::vector<Dof> released;  ///< rotations
+  DeckPlace place;
+};
+
+/// A point force/moment, a distributed load on segments, or self-weight.
+struct DeckLoad {
+  enum class Kind { point, distributed, selfWeight };
+  Kind kind = Kind::point;
+  std::string point;                        ///< point loads
+  std::vector<std::pair<Dof, double>> components;  ///< point loads: N on ux.., N m on rx..
+  Eigen::Vector3d q = Eigen::Vector3d::Zero();     ///< distributed: N/m, global frame
+  double g = 9.81;                          ///< self-weight: m/s^2, acting along -y
+  std::vector<int> segments;                ///< distributed and self-weight: indices; all if empty
+  DeckPlace place;
+};
+
+/// One analysis to run.
+struct DeckAnalysis {
+  std::string type;  ///< "static" or "modal"
+  std::string name;  ///< defaults to the type
+  int modes = 6;     ///< modal: how many
+  double shift = 0;  ///< modal: rad^2/s^2
+  DeckPlace place;
+};
+
+/// A closed-form comparison.
+struct DeckCheck {
+  std::string name;
+  Quantity quantity;
+  std::string analysis;      ///< the analysis it reads (resolved: never empty)
+  double reference = 0;
+  double tolerance = 0;      ///< on the relative error
+  bool applicable = true;    ///< false when its `when:` condition is false
+  std::string condition;     ///< the `when:` text, empty if none
+  DeckPlace place;
+};
+
+/// The parameter a sweep varies and the values it takes.
+struct DeckSweep {
+  std::string parameter;
+  std::vector<double> values;
+  DeckPlace place;
+};
+
+struct Deck {
+  std::string path;   ///< as given, for messages
+  std::string stem;   ///< e.g. "pump_rod"
+  std::string title;  ///< one line describing the scene (may be empty)
+  std::vector<std::pair<std::string, double>> parameters;  ///< after overrides, deck order
+  std::vector<std::pair<std::string, double>> derived;     ///< named values computed from them
+
+  std::string dimension = "planar";  ///< "planar" or "3d"
+  DofSet dofs = DofSet::planar();
+  BeamOptions beam;                  ///< the default element formulation
+
+  std::vector<DeckSegment> segments;
+  std::vector<DeckPoint> points;     ///< including the automatic "start" and "end"
+  std::vector<DeckSupport> supports;
+  std::vector<DeckSpring> springs;
+  std::vector<DeckMass> masses;
+  std::vector<DeckHinge> hinges;
+  std::vector<DeckLoad> loads;
+  std::vector<DeckAnalysis> analyses;
+  std::vector<DeckCheck> checks;
+  std::optional<DeckSweep> sweep;
+
+  /// Total length of the line (m).
+  double length() const {
+    double L = 0;
+    for (const auto& s : segments) L += s.length;
+    return L;
+  }
+};
+
+}  // namespace beamrotor

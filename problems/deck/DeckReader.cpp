@@ -1,0 +1,177 @@
+// Reads a deck top to bottom: 1. top-level keys, 2. parameters (with overrides) and derived
+// values, 3. model options, 4. materials, sections, segments and points, 5. supports, springs,
+// masses, hinges and loads, 6. analyses, checks and the sweep.
+#include "problems/deck/DeckReader.hpp"
+
+#include <algorithm>
+
+#include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/Suggest.hpp"
+
+namespace beamrotor {
+
+namespace reader {
+
+const DeckPoint& Context::point(const Field& f) const {
+  const std::string name = f.name();
+  std::vector<std::string> names;
+  for (const DeckPoint& p : deck.points) {
+    if (p.name == name) return p;
+    names.push_back(p.name);
+  }
+  f.fail("no point named '" + name + "'" + didYouMean(name, names) +
+         " (points: " + joinNames(names) + ")");
+}
+
+int Context::segment(const Field& f) const {
+  const std::string name = f.name();
+  std::vector<std::string> names;
+  for (int i = 0; i < int(deck.segments.size()); ++i) {
+    if (deck.segments[i].name == name) return i;
+    if (!deck.segments[i].name.empty()) names.push_back(deck.segments[i].name);
+  }
+  f.fail("no segment named '" + name + "'" + didYouMean(name, names) +
+         " (named segments: " + joinNames(names) + ")");
+}
+
+std::string Context::carriedNames() const {
+  std::vector<std::string> names;
+  for (Dof d : kAllDofs)
+    if (deck.dofs.contains(d)) names.emplace_back(dofName(d));
+  return joinNames(names);
+}
+
+Dof Context::dof(const Field& f) const {
+  const std::string word = f.text();
+  const std::optional<Dof> d = parseDof(word);
+  if (!d) f.fail("'" + word + "' is not a dof (ux uy uz rx ry rz)");
+  if (!deck.dofs.contains(*d))
+    f.fail(word + " is not a dof of a " + deck.dimension + " model (" + carriedNames() + ")");
+  return *d;
+}
+
+Dof Context::rotation(const Field& f) const {
+  const Dof d = dof(f);
+  if (!isRotation(d)) f.fail("expected a rotation (rx, ry or rz), got " + f.text());
+  return d;
+}
+
+void claimName(const Field& f, const std::string& name, std::vector<std::string>& taken,
+               const std::string& what) {
+  if (std::find(taken.begin(), taken.end(), name) != taken.end())
+    f.fail("there is already " + what + " named '" + name + "'");
+  taken.push_back(name);
+}
+
+namespace {
+
+const std::vector<std::string> kTopKeys{
+    "title",  "parameters", "derived", "model",  "materials", "sections", "segments", "points",
+    "supports", "springs",  "masses",  "hinges", "loads",     "analyses", "checks",   "sweep",
+    "contacts"};
+
+/// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
+/// of them replaced by a command-line override.
+void readParameters(Context& c, const std::vector<ParameterOverride>& overrides) {
+  std::vector<std::string> names;
+  if (auto block = c.root.get("parameters"); block && !block->isNull()) {
+    for (const auto& [name, value] : block->entries()) {
+      const ParameterOverride* o = findOverride(overrides, name);
+      const double v = o ? o->value : value.number(c.evaluator);
+      try {
+        c.evaluator.define(name, v);
+      } catch (const ExpressionError& e) {
+        value.fail(e.what());
+      }
+      c.deck.parameters.emplace_back(name, v);
+      names.push_back(name);
+    }
+  }
+  // Overrides of names the deck does not have are mistakes, never silently ignored.
+  for (const ParameterOverride& o : overrides) {
+    if (std::find(names.begin(), names.end(), o.name) != names.end()) continue;
+    std::string why = "no parameter '" + o.name + "' in this deck" + didYouMean(o.name, names) +
+                      " (parameters: " + joinNames(names) + ")";
+    if (auto derived = c.root.get("derived"); derived && derived->isMap() && derived->has(o.name))
+      why = "'" + o.name + "' is derived from the parameters, not a parameter itself; set the "
+            "parameters it is computed from (parameters: " + joinNames(names) + ")";
+    throw DeckError(c.deck.path, {0, 0, "--set " + o.text}, why);
+  }
+}
+
+/// 2b. Derived values: named expressions of the parameters (and earlier derived values) that
+/// the command line cannot override.
+void readDerived(Context& c) {
+  auto block = c.root.get("derived");
+  if (!block || block->isNull()) return;
+  for (const auto& [name, value] : block->entries()) {
+    const double v = value.number(c.evaluator);
+    try {
+      c.evaluator.define(name, v);
+    } catch (const ExpressionError& e) {
+      value.fail(e.what());
+    }
+    c.deck.derived.emplace_back(name, v);
+  }
+}
+
+BeamTheory readFormulation(const Field& f) {
+  const std::string s =
+      f.choice({"euler-bernoulli", "timoshenko", "timoshenko-linear-full",
+                "timoshenko-linear-reduced"});
+  if (s == "timoshenko") return BeamTheory::timoshenko;
+  if (s == "timoshenko-linear-full") return BeamTheory::timoshenkoLinearFullIntegration;
+  if (s == "timoshenko-linear-reduced") return BeamTheory::timoshenkoLinearReducedIntegration;
+  return BeamTheory::eulerBernoulli;
+}
+
+/// 3. Model options: dimension and the default beam formulation.
+void readModel(Context& c) {
+  auto model = c.root.get("model");
+  if (!model || model->isNull()) return;
+  model->allowOnly({"dimension", "formulation", "mass", "rotary_inertia"}, "model");
+  if (auto f = model->get("dimension")) {
+    c.deck.dimension = f->choice({"planar", "3d"});
+    c.deck.dofs = c.deck.dimension == "planar" ? DofSet::planar() : DofSet::frame3d();
+  }
+  if (auto f = model->get("formulation")) c.deck.beam.theory = readFormulation(*f);
+  if (auto f = model->get("mass"))
+    c.deck.beam.mass = f->choice({"consistent", "lumped"}) == "lumped" ? MassModel::lumped
+                                                                       : MassModel::consistent;
+  if (auto f = model->get("rotary_inertia")) c.deck.beam.rotaryInertia = f->boolean();
+}
+
+}  // namespace
+
+BeamTheory formulationOf(const Field& f) { return readFormulation(f); }
+
+}  // namespace reader
+
+Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& overrides) {
+  Deck deck;
+  deck.path = source.path;
+  deck.stem = source.stem;
+  reader::Context c{Field::root(source.root, source.path), deck, {}, {}, {}};
+
+  // 1. Top-level keys; contact constraints are reserved for a later issue.
+  c.root.allowOnly(reader::kTopKeys, "the deck");
+  if (auto contacts = c.root.get("contacts"))
+    contacts->fail("contact constraints are not supported yet (planned for a later issue); "
+                   "remove this section or model the contact as a support or spring");
+  if (auto title = c.root.get("title"); title && !title->isNull()) deck.title = title->text();
+
+  // 2. Numbers everything else may use.
+  reader::readParameters(c, overrides);
+  reader::readDerived(c);
+
+  // 3. - 6.
+  reader::readModel(c);
+  reader::readMaterials(c);
+  reader::readSections(c);
+  reader::readLine(c);
+  reader::readAttachments(c);
+  reader::readStudy(c, overrides);
+  return deck;
+}
+
+}  // namespace beamrotor

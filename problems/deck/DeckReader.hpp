@@ -1,0 +1,26 @@
+// Reads a deck: YAML tree -> Deck, with every expression evaluated for one set of parameter
+// values and every field validated. The format is described in problems/deck/FORMAT.md and
+// by example in problems/*.yaml.
+#pragma once
+
+#include <vector>
+
+#include "problems/deck/Deck.hpp"
+#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/Overrides.hpp"
+
+namespace beamrotor {
+
+/// Most beam elements a deck may ask for (a line of 1e5 elements is already far finer than any
+/// beam needs; the cap keeps a typo such as `size: 1e-9` from exhausting memory).
+inline constexpr int kMaxElements = 100000;
+/// Most values a sweep may take.
+inline constexpr int kMaxSweepValues = 1000;
+/// Most modes a modal analysis may ask for.
+inline constexpr int kMaxModes = 100;
+
+/// The deck with `overrides` replacing parameter values. Throws DeckError naming the file,
+/// line, column and field of the first problem found.
+Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& overrides = {});
+
+}  // namespace beamrotor

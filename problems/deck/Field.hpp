@@ -1,0 +1,92 @@
+// Typed, located reads from a deck's YAML tree. A Field is one node plus its dotted path
+// ("segments[1].length") and file, so every failed read becomes a DeckError that names the
+// file, line, column and field.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "problems/deck/DeckError.hpp"
+
+namespace beamrotor {
+
+class ExpressionEvaluator;
+
+class Field {
+ public:
+  /// The top-level map of a deck read from `file`.
+  static Field root(const YAML::Node& node, const std::string& file);
+
+  /// Dotted path of this field, e.g. "supports[0].prescribe.uy"; empty at the top.
+  const std::string& path() const { return path_; }
+  /// Line and column (1-based) and path, for messages.
+  DeckPlace place() const;
+  const std::string& file() const { return *file_; }
+  /// Throws DeckError at this field.
+  [[noreturn]] void fail(const std::string& message) const;
+
+  bool isMap() const { return node_.IsMap(); }
+  bool isList() const { return node_.IsSequence(); }
+  bool isScalar() const { return node_.IsScalar(); }
+  bool isNull() const { return !node_.IsDefined() || node_.IsNull(); }
+  /// "a map", "a list", "the value 'x'" or "nothing", for messages.
+  std::string describe() const;
+
+  // --- maps ---------------------------------------------------------------------------------
+  /// The entries of a map in file order; fails when this is not a map, a key is not a plain
+  /// word or a key appears twice.
+  std::vector<std::pair<std::string, Field>> entries() const;
+  /// Fails (with a did-you-mean suggestion) on any key not in `allowed`; fails when this is
+  /// not a map. `what` names the map in the message, e.g. "a segment".
+  void allowOnly(const std::vector<std::string>& allowed, const std::string& what) const;
+  /// The value under `key` (possibly null, as in `length:` with nothing after it), or nullopt
+  /// when the key is absent. Fails when this is not a map.
+  std::optional<Field> get(const std::string& key) const;
+  /// The value under `key`; fails "missing required field" when absent, "no value" when null.
+  Field require(const std::string& key) const;
+  bool has(const std::string& key) const { return get(key).has_value(); }
+
+  // --- lists --------------------------------------------------------------------------------
+  /// The items of a list ("name[0]", "name[1]", ...); fails when this is not a list.
+  std::vector<Field> items() const;
+  /// The items of a list, or this single value as a one-item list.
+  std::vector<Field> itemsOrSingle() const;
+
+  // --- scalars ------------------------------------------------------------------------------
+  /// The scalar's text; fails when this is a map, list or null.
+  std::string text() const;
+  /// A name (letters, digits, '_', '-', '.'), as used for points, sections, supports.
+  std::string name() const;
+  /// The value of a number or expression; fails with the evaluator's reason.
+  double number(const ExpressionEvaluator& evaluator) const;
+  /// number() that must be > 0.
+  double positive(const ExpressionEvaluator& evaluator) const;
+  /// number() that must be >= 0.
+  double nonNegative(const ExpressionEvaluator& evaluator) const;
+  /// number() that must be a whole number in [lowest, highest].
+  int integer(const ExpressionEvaluator& evaluator, int lowest, int highest) const;
+  /// true/false (also yes/no, on/off).
+  bool boolean() const;
+  /// One of `choices`; fails listing them (with a did-you-mean suggestion).
+  std::string choice(const std::vector<std::string>& choices) const;
+
+ private:
+  Field(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
+        DeckPlace fallback);
+  Field child(const YAML::Node& node, const std::string& path, const YAML::Node& key) const;
+
+  YAML::Node node_;
+  std::string path_;
+  std::shared_ptr<const std::string> file_;
+  DeckPlace fallback_;  // the key's place: used when the value has no useful mark of its own
+};
+
+/// "1.5", "2e+11": a number in messages.
+std::string formatNumber(double v);
+
+}  // namespace beamrotor

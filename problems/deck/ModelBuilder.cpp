@@ -1,0 +1,112 @@
+#include "problems/deck/ModelBuilder.hpp"
+
+#include <algorithm>
+
+#include "elements/PointInertia.hpp"
+#include "elements/Spring.hpp"
+#include "meshes/LineBuilder.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Runs one building step; the core's std::exceptions become a DeckError at `place`.
+template <class Step>
+void at(const Deck& deck, const DeckPlace& place, Step&& step) {
+  try {
+    step();
+  } catch (const DeckError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw DeckError(deck.path, place, e.what());
+  }
+}
+
+/// Index of the segment each beam of the line lies in (beams run start to end, one after the
+/// other, so a beam's midpoint station identifies its segment).
+std::vector<int> segmentOfBeams(const Deck& deck, const Line& line) {
+  std::vector<double> ends;
+  double x = 0;
+  for (const DeckSegment& s : deck.segments) ends.push_back(x += s.length);
+  std::vector<int> out;
+  for (std::size_t b = 0; b < line.beams.size(); ++b) {
+    const double mid = 0.5 * (line.stations[b] + line.stations[b + 1]);
+    const auto it = std::upper_bound(ends.begin(), ends.end(), mid);
+    out.push_back(std::min(int(it - ends.begin()), int(ends.size()) - 1));
+  }
+  return out;
+}
+
+bool acts(const DeckLoad& l, int segment) {
+  return l.segments.empty() ||
+         std::find(l.segments.begin(), l.segments.end(), segment) != l.segments.end();
+}
+
+}  // namespace
+
+std::shared_ptr<Model> buildModel(const Deck& deck) {
+  auto model = std::make_shared<Model>();
+
+  // 1. The line: segments cut at every named point.
+  LineSpec spec;
+  spec.dofs = deck.dofs;
+  for (const DeckSegment& s : deck.segments)
+    spec.segments.push_back({s.length, s.section, s.elements, s.size, s.options});
+  for (const DeckPoint& p : deck.points) spec.points.push_back({p.name, p.at});
+  Line line;
+  at(deck, deck.segments.front().place, [&] { line = buildLine(*model, spec); });
+  const std::vector<int> segmentOf = segmentOfBeams(deck, line);
+
+  // 2. Distributed loads and self-weight, summed per beam (a beam holds one uniform load).
+  for (std::size_t b = 0; b < line.beams.size(); ++b) {
+    Eigen::Vector3d q = Eigen::Vector3d::Zero();
+    for (const DeckLoad& l : deck.loads) {
+      if (!acts(l, segmentOf[b])) continue;
+      if (l.kind == DeckLoad::Kind::distributed) q += l.q;
+      if (l.kind == DeckLoad::Kind::selfWeight)
+        q.y() -= line.beams[b]->section().rhoA() * l.g;
+    }
+    if (!q.isZero()) line.beams[b]->setDistributedLoad(q);
+  }
+
+  // 3. Hinges: release the rotations of every beam end at the point; a rotation released on
+  //    all sides leaves the node without that dof.
+  for (const DeckHinge& h : deck.hinges)
+    at(deck, h.place, [&] {
+      const int node = model->node(h.point);
+      for (Beam* beam : line.beams)
+        for (int end = 0; end < 2; ++end)
+          if (beam->endNodes()[end] == node)
+            for (Dof d : h.released) beam->release(end, d);
+    });
+
+  // 4. Supports, springs, masses and point loads at their nodes.
+  for (const DeckSupport& s : deck.supports)
+    at(deck, s.place, [&] {
+      Support support{s.name, model->node(s.point), {}};
+      for (const auto& [d, value] : s.dofs) support.dofs.push_back({d, value});
+      model->addSupport(std::move(support));
+    });
+  for (const DeckSpring& s : deck.springs)
+    at(deck, s.place, [&] {
+      const NodeDof a{model->node(s.point), s.dof};
+      if (s.toPoint.empty())
+        model->add<Spring>(a, s.k, s.c);
+      else
+        model->add<Spring>(a, NodeDof{model->node(s.toPoint), s.dof}, s.k, s.c);
+    });
+  for (const DeckMass& m : deck.masses)
+    at(deck, m.place, [&] {
+      model->add<PointInertia>(model->node(m.point), deck.dofs, m.m, m.Jp, m.Jd,
+                               Eigen::Vector3d::UnitX());
+    });
+  for (const DeckLoad& l : deck.loads)
+    if (l.kind == DeckLoad::Kind::point)
+      at(deck, l.place, [&] {
+        for (const auto& [d, value] : l.components)
+          model->addLoad({model->node(l.point), d, value});
+      });
+  return model;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,36 @@
+#include "problems/deck/Overrides.hpp"
+
+#include "problems/deck/DeckError.hpp"
+#include "problems/deck/Expression.hpp"
+
+namespace beamrotor {
+
+ParameterOverride parseOverride(const std::string& argument, const std::string& deckPath) {
+  const DeckPlace place{0, 0, "--set " + argument};
+  const std::size_t eq = argument.find('=');
+  if (eq == std::string::npos)
+    throw DeckError(deckPath, place, "expected NAME=VALUE, e.g. --set eta=0.2");
+  ParameterOverride o;
+  o.name = argument.substr(0, eq);
+  o.text = argument;
+  while (!o.name.empty() && o.name.back() == ' ') o.name.pop_back();
+  if (!ExpressionEvaluator::isIdentifier(o.name))
+    throw DeckError(deckPath, place, "'" + o.name + "' is not a parameter name");
+  try {
+    const ExpressionEvaluator constants;
+    o.value = constants.evaluate(argument.substr(eq + 1));
+  } catch (const ExpressionError& e) {
+    throw DeckError(deckPath, place, e.what());
+  }
+  return o;
+}
+
+const ParameterOverride* findOverride(const std::vector<ParameterOverride>& overrides,
+                                      const std::string& name) {
+  const ParameterOverride* found = nullptr;
+  for (const ParameterOverride& o : overrides)
+    if (o.name == name) found = &o;
+  return found;
+}
+
+}  // namespace beamrotor

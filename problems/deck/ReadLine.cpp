@@ -1,0 +1,216 @@
+// Deck reader, part 1: materials, cross-sections, the segments of the line and its points.
+#include <cmath>
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/Suggest.hpp"
+
+namespace beamrotor::reader {
+
+namespace {
+
+/// The material a section names; may be left out when the deck has exactly one.
+const Material& materialFor(const Context& c, const Field& section) {
+  std::vector<std::string> names;
+  for (const Material& m : c.materials) names.push_back(m.name);
+  auto f = section.get("material");
+  if (!f) {
+    if (c.materials.size() == 1) return c.materials.front();
+    DeckPlace at = section.place();
+    at.field = section.path() + ".material";
+    throw DeckError(section.file(), at,
+                    c.materials.empty()
+                        ? "missing required field 'material' (and the deck defines no materials)"
+                        : "missing required field 'material' (materials: " + joinNames(names) +
+                              ")");
+  }
+  const std::string name = f->name();
+  for (const Material& m : c.materials)
+    if (m.name == name) return m;
+  f->fail("no material named '" + name + "'" + didYouMean(name, names) +
+          " (materials: " + joinNames(names) + ")");
+}
+
+std::shared_ptr<const Section> readSection(const Context& c, const Field& f,
+                                           const std::string& name) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  const std::vector<std::string> common{"name", "shape", "material"};
+  const std::string shape = f.require("shape").choice({"circle", "tube", "rectangle", "general"});
+  auto keys = [&](std::vector<std::string> own) {
+    own.insert(own.begin(), common.begin(), common.end());
+    return own;
+  };
+  if (shape == "circle") f.allowOnly(keys({"D"}), "a circle section");
+  if (shape == "tube") f.allowOnly(keys({"D", "t"}), "a tube section");
+  if (shape == "rectangle") f.allowOnly(keys({"b", "h"}), "a rectangle section");
+  if (shape == "general")
+    f.allowOnly(keys({"A", "I", "Iy", "Iz", "J", "kappa", "kappa_y", "kappa_z", "depth"}),
+                "a general section");
+  const Material& m = materialFor(c, f);
+
+  if (shape == "circle") return std::make_shared<Section>(Section::circle(name, m, f.require("D").positive(ev)));
+  if (shape == "tube") {
+    const double D = f.require("D").positive(ev);
+    const Field tf = f.require("t");
+    const double t = tf.positive(ev);
+    if (!(2 * t <= D))
+      tf.fail("wall thickness must not exceed half the diameter (D/2 = " + formatNumber(D / 2) +
+              "), got " + formatNumber(t));
+    return std::make_shared<Section>(Section::tube(name, m, D, t));
+  }
+  if (shape == "rectangle") {
+    const double b = f.require("b").positive(ev);
+    const double h = f.require("h").positive(ev);
+    return std::make_shared<Section>(Section::rectangle(name, m, b, h));
+  }
+  // General: I sets both second moments; Iy defaults to Iz (and the other way round).
+  const double A = f.require("A").positive(ev);
+  auto I = f.get("I"), Iy = f.get("Iy"), Iz = f.get("Iz");
+  if (I && (Iy || Iz)) (Iy ? *Iy : *Iz).fail("give either I or Iy/Iz, not both");
+  if (!I && !Iy && !Iz) {
+    DeckPlace at = f.place();
+    at.field = f.path() + ".Iz";
+    throw DeckError(f.file(), at, "missing required field 'Iz' (or 'I' for both axes)");
+  }
+  const double Ival = I ? I->positive(ev) : 0;
+  const double IzVal = I ? Ival : Iz ? Iz->positive(ev) : Iy->positive(ev);
+  const double IyVal = I ? Ival : Iy ? Iy->positive(ev) : IzVal;
+  const double J = f.get("J") ? f.get("J")->nonNegative(ev) : 0;
+  auto kappa = f.get("kappa");
+  const double k = kappa ? kappa->nonNegative(ev) : 0;
+  const double ky = f.get("kappa_y") ? f.get("kappa_y")->nonNegative(ev) : k;
+  const double kz = f.get("kappa_z") ? f.get("kappa_z")->nonNegative(ev) : k;
+  const double depth = f.get("depth") ? f.get("depth")->positive(ev) : 0;
+  return std::make_shared<Section>(Section::general(name, m, A, IyVal, IzVal, J, ky, kz, depth));
+}
+
+/// Elements the line builder will make for a segment, at most (points add a cut each).
+double elementEstimate(const DeckSegment& s) {
+  return s.elements > 0 ? s.elements : std::ceil(s.length / s.size);
+}
+
+}  // namespace
+
+void readMaterials(Context& c) {
+  auto block = c.root.get("materials");
+  if (!block || block->isNull()) return;
+  std::vector<std::string> names;
+  for (const Field& f : block->items()) {
+    f.allowOnly({"name", "E", "nu", "G", "rho"}, "a material");
+    const std::string name = f.require("name").name();
+    claimName(f.require("name"), name, names, "a material");
+    const ExpressionEvaluator& ev = c.evaluator;
+    const double E = f.require("E").positive(ev);
+    const double rho = f.get("rho") ? f.get("rho")->nonNegative(ev) : 0;
+    auto nuField = f.get("nu"), GField = f.get("G");
+    if (nuField && GField) GField->fail("give either nu or G, not both (G = E / (2 (1 + nu)))");
+    if (!nuField && !GField) {
+      DeckPlace at = f.place();
+      at.field = f.path() + ".nu";
+      throw DeckError(f.file(), at, "missing required field 'nu' (Poisson's ratio; or give G)");
+    }
+    const double G = GField ? GField->positive(ev) : 0;
+    const double nu = nuField ? nuField->number(ev) : E / (2 * G) - 1;
+    if (!(nu > -1 && nu < 0.5)) {
+      const Field& at = nuField ? *nuField : *GField;
+      at.fail("Poisson's ratio must lie in (-1, 0.5), got " + formatNumber(nu) +
+              (nuField ? "" : " from G = " + formatNumber(G)));
+    }
+    Material m = Material::fromEnu(name, E, nu, rho);
+    if (GField) m.G = G;
+    c.materials.push_back(m);
+  }
+}
+
+void readSections(Context& c) {
+  auto block = c.root.require("sections");
+  std::vector<std::string> names;
+  for (const Field& f : block.items()) {
+    if (!f.isMap()) f.fail("expected a map describing a section, got " + f.describe());
+    const std::string name = f.require("name").name();
+    claimName(f.require("name"), name, names, "a section");
+    try {
+      c.sections.push_back(readSection(c, f, name));
+    } catch (const std::invalid_argument& e) {
+      f.fail(e.what());  // the core's own range checks, should one of ours miss
+    }
+  }
+  if (c.sections.empty()) block.fail("the deck needs at least one section");
+}
+
+void readLine(Context& c) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  // 1. Segments, in order from the start of the line.
+  const Field block = c.root.require("segments");
+  std::vector<std::string> names;
+  double elements = 0;
+  for (const Field& f : block.items()) {
+    f.allowOnly({"name", "length", "section", "elements", "size", "formulation"}, "a segment");
+    DeckSegment s;
+    s.place = f.place();
+    if (auto n = f.get("name")) {
+      s.name = n->name();
+      claimName(*n, s.name, names, "a segment");
+    }
+    s.length = f.require("length").positive(ev);
+    const Field sf = f.require("section");
+    s.sectionName = sf.name();
+    std::vector<std::string> sectionNames;
+    for (const auto& sec : c.sections) {
+      if (sec->name == s.sectionName) s.section = sec;
+      sectionNames.push_back(sec->name);
+    }
+    if (!s.section)
+      sf.fail("no section named '" + s.sectionName + "'" + didYouMean(s.sectionName, sectionNames) +
+              " (sections: " + joinNames(sectionNames) + ")");
+    auto count = f.get("elements"), size = f.get("size");
+    if (count && size) size->fail("give either elements or size, not both");
+    if (!count && !size) {
+      DeckPlace at = f.place();
+      at.field = f.path() + ".elements";
+      throw DeckError(f.file(), at, "missing required field 'elements' (or 'size', the largest element length)");
+    }
+    if (count) s.elements = count->integer(ev, 1, kMaxElements);
+    if (size) s.size = size->positive(ev);
+    s.options = c.deck.beam;
+    if (auto form = f.get("formulation")) s.options.theory = formulationOf(*form);
+    const bool linearTimoshenko = s.options.theory == BeamTheory::timoshenkoLinearFullIntegration ||
+                                  s.options.theory == BeamTheory::timoshenkoLinearReducedIntegration;
+    if (linearTimoshenko && !(s.section->kappaY > 0 && s.section->kappaZ > 0))
+      sf.fail("the linear Timoshenko element needs a shear coefficient: give the section kappa");
+    elements += elementEstimate(s);
+    if (!(elements <= kMaxElements))
+      f.fail("the line would have more than " + std::to_string(kMaxElements) +
+             " elements; use fewer elements or a larger size");
+    c.deck.segments.push_back(std::move(s));
+  }
+  if (c.deck.segments.empty()) block.fail("the deck needs at least one segment");
+
+  // 2. Points: "start" and "end" always exist; the deck's own must lie on the line.
+  const double L = c.deck.length();
+  c.deck.points.push_back({"start", 0, block.place()});
+  c.deck.points.push_back({"end", L, block.place()});
+  std::vector<std::string> pointNames{"start", "end"};
+  if (auto points = c.root.get("points"); points && !points->isNull()) {
+    for (const Field& f : points->items()) {
+      f.allowOnly({"name", "at"}, "a point");
+      const Field nf = f.require("name");
+      const std::string name = nf.name();
+      if (name == "start" || name == "end")
+        nf.fail("'" + name + "' is predefined (the " + name + " of the line); choose another name");
+      claimName(nf, name, pointNames, "a point");
+      const Field at = f.require("at");
+      const double x = at.number(ev);
+      const double tol = 1e-12 * std::max(1.0, L);
+      if (x < -tol || x > L + tol)
+        at.fail("point '" + name + "' at " + formatNumber(x) + " m lies outside the line (0 to " +
+                formatNumber(L) + " m)");
+      c.deck.points.push_back({name, std::clamp(x, 0.0, L), f.place()});
+      if (int(c.deck.points.size()) + elements > kMaxElements)
+        f.fail("too many points: the line would have more than " +
+               std::to_string(kMaxElements) + " elements");
+    }
+  }
+}
+
+}  // namespace beamrotor::reader

@@ -1,0 +1,199 @@
+// Deck reader, part 3: what to compute and what to compare: analyses, checks and the sweep.
+#include <algorithm>
+#include <cmath>
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/Suggest.hpp"
+
+namespace beamrotor::reader {
+
+namespace {
+
+/// Modal analyses need inertia somewhere: a material density or a lumped mass.
+bool hasMass(const Deck& deck) {
+  if (!deck.masses.empty()) return true;
+  for (const DeckSegment& s : deck.segments)
+    if (s.section->material.rho > 0) return true;
+  return false;
+}
+
+void readAnalyses(Context& c) {
+  auto block = c.root.get("analyses");
+  if (!block || block->isNull()) {
+    // No analyses listed: statics, the one every deck supports.
+    c.deck.analyses.push_back({"static", "static", 0, 0, c.root.place()});
+    return;
+  }
+  std::vector<std::string> names;
+  for (const Field& f : block->items()) {
+    if (!f.isMap()) f.fail("expected a map such as {type: static}, got " + f.describe());
+    DeckAnalysis a;
+    a.place = f.place();
+    a.type = f.require("type").choice({"static", "modal"});
+    if (a.type == "static") {
+      f.allowOnly({"type", "name"}, "a static analysis");
+    } else {
+      f.allowOnly({"type", "name", "modes", "shift"}, "a modal analysis");
+      if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
+      if (auto s = f.get("shift")) a.shift = s->number(c.evaluator);
+      if (!hasMass(c.deck))
+        f.fail("a modal analysis needs mass: give the materials a density rho or add masses");
+    }
+    auto n = f.get("name");
+    a.name = n ? n->name() : a.type;
+    if (std::find(names.begin(), names.end(), a.name) != names.end())
+      (n ? *n : f).fail("there is already an analysis named '" + a.name +
+                        "'; give each analysis its own name");
+    names.push_back(a.name);
+    c.deck.analyses.push_back(std::move(a));
+  }
+  if (c.deck.analyses.empty()) block->fail("the list of analyses is empty");
+}
+
+/// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
+/// returns the name of the analysis it reads.
+std::string resolveQuantity(const Context& c, const Quantity& q, const Field& f,
+                            const std::optional<Field>& analysisField) {
+  const Deck& deck = c.deck;
+  // 1. The analysis: named, or the first of the right type.
+  const DeckAnalysis* analysis = nullptr;
+  if (analysisField) {
+    const std::string name = analysisField->name();
+    std::vector<std::string> names;
+    for (const DeckAnalysis& a : deck.analyses) {
+      if (a.name == name) analysis = &a;
+      names.push_back(a.name);
+    }
+    if (!analysis)
+      analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
+                          " (analyses: " + joinNames(names) + ")");
+    if (analysis->type != q.analysisType())
+      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" +
+                          name + "' is " + analysis->type);
+  } else {
+    for (const DeckAnalysis& a : deck.analyses)
+      if (!analysis && a.type == q.analysisType()) analysis = &a;
+    if (!analysis)
+      f.fail("'" + q.text + "' needs a " + q.analysisType() +
+             " analysis; add {type: " + q.analysisType() + "} to analyses");
+  }
+
+  // 2. The names and dofs it refers to.
+  if (q.kind == Quantity::Kind::reaction) {
+    std::vector<std::string> names;
+    const DeckSupport* support = nullptr;
+    for (const DeckSupport& s : deck.supports) {
+      if (s.name == q.target) support = &s;
+      names.push_back(s.name);
+    }
+    if (!support)
+      f.fail("no support named '" + q.target + "'" + didYouMean(q.target, names) +
+             " (supports: " + joinNames(names) + ")");
+    std::vector<std::string> held;
+    bool holds = false;
+    for (const auto& [d, v] : support->dofs) {
+      held.emplace_back(dofName(d));
+      holds = holds || d == q.dof;
+    }
+    if (!holds)
+      f.fail("support '" + q.target + "' does not hold " + std::string(dofName(q.dof)) +
+             " (it holds " + joinNames(held) + "), so its reaction there is zero by definition");
+  }
+  if (q.kind == Quantity::Kind::displacement) {
+    std::vector<std::string> names;
+    bool found = false;
+    for (const DeckPoint& p : deck.points) {
+      found = found || p.name == q.target;
+      names.push_back(p.name);
+    }
+    if (!found)
+      f.fail("no point named '" + q.target + "'" + didYouMean(q.target, names) +
+             " (points: " + joinNames(names) + ")");
+    if (!deck.dofs.contains(q.dof))
+      f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
+             c.carriedNames() + ")");
+  }
+  if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
+    f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
+           "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
+  return analysis->name;
+}
+
+void readChecks(Context& c) {
+  auto block = c.root.get("checks");
+  if (!block || block->isNull()) return;
+  std::vector<std::string> names;
+  for (const Field& f : block->items()) {
+    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis"}, "a check");
+    DeckCheck k;
+    k.place = f.place();
+    const Field nameField = f.require("name");
+    k.name = nameField.text();
+    if (k.name.empty() || k.name.size() > 80)
+      nameField.fail("a check name must have 1 to 80 characters");
+    claimName(nameField, k.name, names, "a check");
+    const Field qf = f.require("quantity");
+    try {
+      k.quantity = parseQuantity(qf.text());
+    } catch (const std::invalid_argument& e) {
+      qf.fail(e.what());
+    }
+    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"));
+    k.reference = f.require("reference").number(c.evaluator);
+    const Field tol = f.require("tolerance");
+    k.tolerance = tol.positive(c.evaluator);
+    if (auto when = f.get("when")) {
+      k.condition = when->text();
+      k.applicable = when->number(c.evaluator) != 0;
+    }
+    c.deck.checks.push_back(std::move(k));
+  }
+}
+
+/// The sweep's values; evaluated with the deck's parameters before the sweep changes them.
+void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
+  auto f = c.root.get("sweep");
+  if (!f || f->isNull()) return;
+  f->allowOnly({"parameter", "values", "from", "to", "steps"}, "the sweep");
+  DeckSweep s;
+  s.place = f->place();
+  const Field pf = f->require("parameter");
+  s.parameter = pf.text();
+  std::vector<std::string> names;
+  for (const auto& [name, v] : c.deck.parameters) names.push_back(name);
+  if (std::find(names.begin(), names.end(), s.parameter) == names.end())
+    pf.fail("no parameter '" + s.parameter + "'" + didYouMean(s.parameter, names) +
+            " (parameters: " + joinNames(names) + ")");
+  auto values = f->get("values");
+  auto from = f->get("from"), to = f->get("to"), steps = f->get("steps");
+  if (values && (from || to || steps))
+    values->fail("give either values or from/to/steps, not both");
+  if (values) {
+    const std::vector<Field> items = values->items();
+    if (items.empty()) values->fail("the list of values is empty");
+    if (int(items.size()) > kMaxSweepValues)
+      values->fail("at most " + std::to_string(kMaxSweepValues) + " values");
+    for (const Field& v : items) s.values.push_back(v.number(c.evaluator));
+  } else {
+    const double a = f->require("from").number(c.evaluator);
+    const double b = f->require("to").number(c.evaluator);
+    const int n = f->require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
+    // steps intervals, n + 1 values; the last is `to` exactly, not a rounded sum.
+    for (int i = 0; i < n; ++i) s.values.push_back(a + (b - a) * i / n);
+    s.values.push_back(b);
+  }
+  // A parameter fixed on the command line turns the sweep into a single run.
+  if (findOverride(overrides, s.parameter)) return;
+  c.deck.sweep = std::move(s);
+}
+
+}  // namespace
+
+void readStudy(Context& c, const std::vector<ParameterOverride>& overrides) {
+  readAnalyses(c);
+  readChecks(c);
+  readSweep(c, overrides);
+}
+
+}  // namespace beamrotor::reader

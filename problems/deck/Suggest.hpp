@@ -1,0 +1,23 @@
+// "Did you mean ...?" for misspelt keys and names: the closest candidate by edit distance.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace beamrotor {
+
+/// Levenshtein distance (insertions, deletions, substitutions), case-sensitive.
+int editDistance(std::string_view a, std::string_view b);
+
+/// The candidate closest to `word` when it is close enough to be a plausible typo (distance at
+/// most a third of the word's length, at least 1, or equal ignoring case); empty otherwise.
+std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates);
+
+/// "; did you mean 'length'?" or empty, ready to append to a message.
+std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates);
+
+/// "a, b, c" for messages listing what is allowed.
+std::string joinNames(const std::vector<std::string>& names);
+
+}  // namespace beamrotor

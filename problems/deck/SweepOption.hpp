@@ -1,0 +1,17 @@
+// A sweep given on the command line instead of in the deck:
+//   --sweep eta=0:0.4:8        from 0 to 0.4 in 8 steps (9 values)
+//   --sweep eta=0,0.1,0.25     the listed values
+// Values are numbers or expressions of constants.
+#pragma once
+
+#include <string>
+
+#include "problems/deck/Deck.hpp"
+
+namespace beamrotor {
+
+/// Parses the option for `deck` (whose parameters it must name). Throws DeckError naming the
+/// deck and the option.
+DeckSweep parseSweepOption(const std::string& argument, const Deck& deck);
+
+}  // namespace beamrotor

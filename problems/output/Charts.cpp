@@ -1,0 +1,234 @@
+// gnuplot chart scripts (see Charts.hpp). Units are chosen for reading: mm, mrad, kN m, MPa.
+#include "problems/output/Charts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <sstream>
+
+#include "problems/output/LineSampling.hpp"
+#include "problems/output/ModeShapes.hpp"
+#include "problems/output/Tables.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Line colours, in the order curves are drawn.
+constexpr const char* kColours[] = {"#1f4e9c", "#c0392b", "#2e8b57", "#8e44ad", "#d35400"};
+constexpr int kColourCount = int(std::size(kColours));
+
+std::string colour(std::size_t i) {
+  return std::string("linecolor rgb '") + kColours[i % kColourCount] + "'";
+}
+
+/// A curve of a panel: a table column scaled to the panel's unit.
+struct Curve {
+  std::string column;
+  std::string title;  ///< key entry (enhanced text: u_y shows a subscript)
+};
+
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+bool anyNonZero(const CsvTable& table, const std::string& column) {
+  const auto values = table.numbers(column);
+  return std::any_of(values.begin(), values.end(), [](double v) { return v != 0; });
+}
+
+/// Dashed vertical lines at the markers in every panel; names above the first panel only.
+std::string markerCommands(const std::vector<ChartMarker>& markers) {
+  std::ostringstream s;
+  for (const ChartMarker& m : markers)
+    s << "  set arrow from first " << number(m.x) << ", graph 0 to first " << number(m.x)
+      << ", graph 1 nohead dashtype 2 linecolor rgb 'gray50'\n"
+      << "  set label " << gnuplotText(m.name) << " at first " << number(m.x)
+      << ", graph 1 offset 0,0.7 center textcolor rgb '#303030'\n";
+  return s.str();
+}
+
+/// `plot` over csvFile of the curves, each column multiplied by scale; filled to the axis
+/// when `filled` (the look of a moment or stress diagram).
+std::string plotCommand(const CsvTable& table, const std::string& csvFile, const std::string& x,
+                        const std::vector<Curve>& curves, double scale, bool filled) {
+  std::ostringstream s;
+  s << "  plot ";
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const std::string data =
+        gnuplotFile(csvFile) + " skip 1 using " + std::to_string(table.column(x)) + ":($" +
+        std::to_string(table.column(curves[i].column)) + "*" + number(scale) + ")";
+    if (i) s << ", \\\n       ";
+    if (filled)
+      s << data << " with filledcurves y=0 fillstyle transparent solid 0.2 noborder " << colour(i)
+        << " notitle, \\\n       ";
+    s << data << " with lines linewidth 2 " << colour(i) << " title " << curves[i].title;
+  }
+  s << "\n";
+  return s.str();
+}
+
+/// A grid of panels under a caption. gnuplot takes the margins as fractions of the canvas;
+/// they are set here in pixels so that labels fit whatever the chart's size.
+std::string panelLayout(int rows, int columns, const std::string& caption, int width, int height,
+                        int rightMargin = 30) {
+  const auto fractionX = [&](double px) { return number(px / width); };
+  const auto fractionY = [&](double px) { return number(px / height); };
+  return "  set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns) +
+         " title " + gnuplotText(caption) + " font ',13' margins " + fractionX(90) + "," +
+         fractionX(width - double(rightMargin)) + "," + fractionY(60) + "," +
+         fractionY(height - 80.0) + " spacing " + fractionX(columns > 1 ? 100 : 0) + "," +
+         fractionY(rows > 1 ? 75 : 0) + "\n";
+}
+
+std::string frequencyText(double hz) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4g Hz", hz);
+  return buffer;
+}
+
+}  // namespace
+
+std::vector<ChartMarker> namedPointMarkers(const Model& model) {
+  const auto coordinate = lineCoordinates(model);
+  std::vector<ChartMarker> markers;
+  for (const auto& [name, node] : model.namedNodes())
+    if (coordinate[node]) markers.push_back({name, *coordinate[node]});
+  std::stable_sort(markers.begin(), markers.end(),
+                   [](const ChartMarker& a, const ChartMarker& b) { return a.x < b.x; });
+  return markers;
+}
+
+ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
+                           const CsvTable& fields, const std::string& csvFile,
+                           const std::vector<ChartMarker>& markers) {
+  struct Panel {
+    std::string ylabel;
+    std::vector<Curve> curves;
+    double scale;
+    bool filled;
+  };
+  const auto withOptional = [&](Curve main, Curve optional) {
+    std::vector<Curve> curves{std::move(main)};
+    if (anyNonZero(fields, optional.column)) curves.push_back(std::move(optional));
+    return curves;
+  };
+  const std::vector<Panel> panels{
+      {"deflection [mm]", withOptional({"uy", "'u_y'"}, {"uz", "'u_z'"}), 1e3, false},
+      {"rotation [mrad]", withOptional({"rz", "'θ_z'"}, {"ry", "'θ_y'"}), 1e3, false},
+      {"bending moment [kN m]", withOptional({"Mz", "'M_z'"}, {"My", "'M_y'"}), 1e-3, true},
+      {"stress [MPa]", {{"stress", "'largest normal stress'"}}, 1e-6, true},
+  };
+
+  const int width = 900, height = 1150;
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(int(panels.size()), 1, caption, width, height) << "  set grid\n"
+       << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
+       << "  set key top right opaque\n"
+       << "  set xrange [*:*] noextend\n"
+       << markerCommands(markers);
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    if (p == 1) body << "  unset label\n";  // point names once, above the top panel
+    if (p + 1 == panels.size()) body << "  set xlabel 'x along the line [m]'\n";
+    body << "  set ylabel " << gnuplotText(panels[p].ylabel) << "\n"
+         << plotCommand(fields, csvFile, "x", panels[p].curves, panels[p].scale, panels[p].filled);
+  }
+  body << "  unset multiplot\n";
+  return {chartName, "Deflection, rotation, bending moment and stress along the line", width,
+          height, body.str()};
+}
+
+ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
+                            const Model& model, const ModalResult& modal, const CsvTable& shapes,
+                            const std::string& csvFile, int count) {
+  // Each mode is drawn by its dominant translation; the axis names it when all agree.
+  const int shown = std::min<int>(count, int(modal.modes.size()));
+  std::vector<Dof> along;
+  for (int m = 0; m < shown; ++m)
+    along.push_back(dominantTranslation(displayModeShape(model, modal.modes[m].shape)));
+  const bool same = std::all_of(along.begin(), along.end(), [&](Dof d) { return d == along[0]; });
+  const std::string drawn = same && shown ? std::string(dofName(along[0])) + " " : "";
+
+  std::ostringstream body;
+  body << "  set title " << gnuplotText(caption) << " font ',13'\n"
+       << "  set grid\n  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
+       << "  set key below\n  set xrange [*:*] noextend\n"
+       << "  set offsets 0, 0, graph 0.08, graph 0.02\n"
+       << "  set xlabel 'x along the line [m]'\n"
+       << "  set ylabel " << gnuplotText("mode shape " + drawn + "(largest translation = 1)")
+       << "\n"
+       << markerCommands(namedPointMarkers(model)) << "  plot ";
+  for (int m = 0; m < shown; ++m) {
+    const Mode& mode = modal.modes[m];
+    const std::string title = "mode " + std::to_string(m + 1) + ": " +
+                              frequencyText(mode.frequencyHz) + ", " + mode.description +
+                              (same ? "" : " (" + std::string(dofName(along[m])) + " drawn)");
+    if (m) body << ", \\\n       ";
+    body << gnuplotFile(csvFile) << " skip 1 using " << shapes.column("x") << ":"
+         << shapes.column(modeShapeColumn(m + 1, along[m])) << " with lines linewidth 2 "
+         << colour(m) << " title " << gnuplotText(title);
+  }
+  if (shown == 0) body << "0 notitle";
+  body << "\n";
+  return {chartName, "The first mode shapes along the line", 900, 560, body.str()};
+}
+
+ChartScript sweepChart(const std::string& caption, const std::string& chartName,
+                       const std::string& parameter, const std::vector<SweepQuantity>& quantities,
+                       const CsvTable& table, const std::string& csvFile) {
+  // Frequencies share one panel; every reaction and the stress get their own, except
+  // reactions that stay zero over the whole sweep (an unloaded direction: nothing to see).
+  const auto largest = [&](const SweepQuantity& q) {
+    double m = 0;
+    for (double v : table.numbers(q.column.name)) m = std::max(m, std::abs(v));
+    return m;
+  };
+  double largestReaction = 0;
+  for (const SweepQuantity& q : quantities)
+    if (q.group == SweepGroup::reaction) largestReaction = std::max(largestReaction, largest(q));
+  std::vector<std::vector<const SweepQuantity*>> panels;
+  std::vector<const SweepQuantity*> frequencies;
+  for (const SweepQuantity& q : quantities) {
+    if (q.group == SweepGroup::frequency)
+      frequencies.push_back(&q);
+    else if (q.group == SweepGroup::stress ||
+             (q.group == SweepGroup::reaction && largest(q) > 1e-12 * largestReaction))
+      panels.push_back({&q});
+  }
+  if (!frequencies.empty()) panels.push_back(frequencies);
+
+  const int columns = panels.size() > 1 ? 2 : 1;
+  const int rows = std::max<int>(1, int((panels.size() + columns - 1) / columns));
+  const int width = 1000, height = 140 + 270 * rows;
+  std::ostringstream body;
+  // A key only where a panel has several curves; it sits in a wider right margin.
+  const int keyMargin = frequencies.size() > 1 ? 130 : 30;
+  body << "  set encoding utf8\n"
+       << panelLayout(rows, columns, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n"
+       << "  set xlabel " << gnuplotText(parameter) << "\n";
+  for (const auto& panel : panels) {
+    const std::string unit = panel.front()->column.unit;
+    const double scale = unit == "Pa" ? 1e-6 : unit == "Hz" ? 1.0 : 1e-3;
+    const std::string shown = unit == "Pa" ? "MPa" : unit == "Hz" ? "Hz" : "k" + unit;
+    const std::string label = panel.size() == 1 ? panel.front()->label : "frequency";
+    body << "  set ylabel " << gnuplotText(label + " [" + shown + "]") << "\n  plot ";
+    for (std::size_t i = 0; i < panel.size(); ++i) {
+      if (i) body << ", \\\n       ";
+      body << gnuplotFile(csvFile) << " skip 1 using " << table.column(parameter) << ":($"
+           << table.column(panel[i]->column.name) << "*" << number(scale)
+           << ") with linespoints linewidth 2 pointtype 7 " << colour(i)
+           << (panel.size() == 1 ? std::string(" notitle")
+                                 : " title " + gnuplotText(panel[i]->label));
+    }
+    body << "\n";
+  }
+  body << "  unset multiplot\n";
+  return {chartName, "Sweep quantities against " + parameter, width, height, body.str()};
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,47 @@
+// The charts a person would rather look at than read, as gnuplot scripts over the CSV
+// tables: the diagrams of a static solution along the line (deflection, rotation, bending
+// moment, stress, stacked like the published figures of the pump rod), the first mode
+// shapes, and sweep quantities against the swept parameter.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fem/Model.hpp"
+#include "fem/Results.hpp"
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/Gnuplot.hpp"
+#include "problems/output/SweepTable.hpp"
+
+namespace beamrotor {
+
+/// A named point of the model on the line: drawn as a dashed vertical line with its name.
+struct ChartMarker {
+  std::string name;
+  double x = 0;  ///< distance along the line (m), see lineCoordinates
+};
+
+/// The named points that lie on line elements, in order along the line.
+std::vector<ChartMarker> namedPointMarkers(const Model& model);
+
+/// Four stacked diagrams along the line from a staticFieldsTable written to csvFile:
+/// deflection uy (mm), rotation rz (mrad), bending moment Mz (kN m) and stress (MPa); uz,
+/// ry and My are added when they are not zero everywhere (3D models).
+ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
+                           const CsvTable& fields, const std::string& csvFile,
+                           const std::vector<ChartMarker>& markers);
+
+/// The first `count` mode shapes (each its dominant translation, largest value 1) from a
+/// modeShapesTable written to csvFile.
+ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
+                            const Model& model, const ModalResult& modal, const CsvTable& shapes,
+                            const std::string& csvFile, int count = 4);
+
+/// One panel per reaction component and the largest stress of a static analysis, or the
+/// frequencies of a modal one, against the swept parameter, from sweepTable in csvFile.
+/// `quantities` are those of this analysis.
+ChartScript sweepChart(const std::string& caption, const std::string& chartName,
+                       const std::string& parameter, const std::vector<SweepQuantity>& quantities,
+                       const CsvTable& table, const std::string& csvFile);
+
+}  // namespace beamrotor

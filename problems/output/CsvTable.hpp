@@ -1,0 +1,55 @@
+// A small typed table written as CSV (RFC 4180): a header of "name [unit]" and one row per
+// record. The charts read the same table, asking for a column's position by name, so a chart
+// never plots a column the table does not have.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace beamrotor {
+
+struct CsvColumn {
+  std::string name;  ///< e.g. "uy"
+  std::string unit;  ///< e.g. "m"; empty for counts and text
+};
+
+/// A number, a count or a text (quoted in the file).
+using CsvCell = std::variant<double, long long, std::string>;
+
+class CsvTable {
+ public:
+  /// `title` names the table in error messages (normally its file name).
+  CsvTable(std::string title, std::vector<CsvColumn> columns);
+
+  /// Appends a row. Throws std::invalid_argument for a row of the wrong width and
+  /// std::runtime_error for a NaN or infinite number (naming the column and row), so a table
+  /// that exists holds only finite numbers.
+  void addRow(std::vector<CsvCell> row);
+
+  /// 1-based position of a column (gnuplot's numbering); throws std::out_of_range if absent.
+  int column(std::string_view name) const;
+  bool hasColumn(std::string_view name) const;
+  /// The numeric values of a column (counts converted; throws for a text column).
+  std::vector<double> numbers(std::string_view name) const;
+
+  const std::string& title() const { return title_; }
+  const std::vector<CsvColumn>& columns() const { return columns_; }
+  std::size_t rowCount() const { return rows_.size(); }
+
+  /// Writes the table; numbers in the shortest form that reads back exactly.
+  /// Throws std::runtime_error when the file cannot be written.
+  void write(const std::filesystem::path& file) const;
+
+ private:
+  std::string title_;
+  std::vector<CsvColumn> columns_;
+  std::vector<std::vector<CsvCell>> rows_;
+};
+
+/// The shortest decimal text that reads back as exactly x (std::to_chars); -0 is written 0.
+std::string exactDecimal(double x);
+
+}  // namespace beamrotor

@@ -1,0 +1,58 @@
+// The names of the files in a results directory, in one place: the writers create them and
+// results.json lists them, so scripts find a file by reading its name rather than guessing.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "problems/RunResult.hpp"
+
+namespace beamrotor {
+
+/// An analysis name made safe as a file stem: letters, digits, '-', '_' and '.' are kept,
+/// anything else becomes '_' (a deck may call an analysis "eta = 0.4 / left").
+std::string fileStem(const std::string& analysisName);
+
+/// Throws std::invalid_argument when two analyses of a run would write the same files.
+void requireDistinctFileStems(const std::vector<AnalysisOutcome>& analyses);
+
+inline constexpr const char* kResultsJson = "results.json";
+inline constexpr const char* kSweepJson = "sweep.json";
+inline constexpr const char* kSweepCsv = "sweep.csv";
+
+/// Statics: fields along the line, one row per station.
+inline std::string fieldsCsv(const std::string& stem) {
+  return stem + "_fields.csv";
+}
+/// Modal: one row per mode.
+inline std::string modesCsv(const std::string& stem) {
+  return stem + "_modes.csv";
+}
+/// Modal: display-scaled mode shapes along the line (the charts' data).
+inline std::string shapesCsv(const std::string& stem) {
+  return stem + "_shapes.csv";
+}
+/// Statics: the mesh with its displacements and section forces.
+inline std::string staticVtu(const std::string& stem) {
+  return stem + ".vtu";
+}
+/// Modal: mode `number` (1-based).
+std::string modeVtu(const std::string& stem, int number);
+/// A ParaView collection: the modes of an analysis, or one analysis over a sweep.
+inline std::string collectionPvd(const std::string& stem) {
+  return stem + ".pvd";
+}
+/// Charts of an analysis (without extension: .gp script, .svg and .png images).
+inline std::string diagramsChart(const std::string& stem) {
+  return stem + "_diagrams";
+}
+inline std::string shapesChart(const std::string& stem) {
+  return stem + "_shapes";
+}
+inline std::string sweepChart(const std::string& stem) {
+  return "sweep_" + stem;
+}
+/// Sub-directory of a sweep for value number `index` of `count`: value_000, value_001, ...
+std::string sweepValueDirectory(std::size_t index, std::size_t count);
+
+}  // namespace beamrotor

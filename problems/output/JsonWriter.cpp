@@ -1,0 +1,245 @@
+// results.json and sweep.json (layout in JsonWriter.hpp).
+#include "problems/output/JsonWriter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "fem/DofMap.hpp"
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/FileNames.hpp"
+#include "problems/output/Reactions.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// The dof kinds some node of the model carries.
+std::array<bool, kDofKinds> kindsCarried(const Model& model, const DofMap& dofs) {
+  std::array<bool, kDofKinds> carried{};
+  for (int n = 0; n < model.nodeCount(); ++n)
+    for (Dof d : kAllDofs) carried[dofIndex(d)] = carried[dofIndex(d)] || dofs.equation(n, d) >= 0;
+  return carried;
+}
+
+Json modelJson(const RunResult& run, const DofMap& dofs) {
+  return {{"nodes", run.model->nodeCount()},
+          {"elements", run.model->elements().size()},
+          {"dofs", dofs.size()},
+          {"dimension", run.dimension}};
+}
+
+Json reactionsJson(const StaticResult& r) {
+  Json out = Json::object();
+  for (const SupportReactions& s : reactionsBySupport(r)) {
+    Json& components = out[s.support] = Json::object();
+    for (const auto& [dof, value] : s.components)
+      components[std::string(reactionName(dof))] = value;
+  }
+  return out;
+}
+
+/// Displacements of the named points, in node order (the order along a line).
+Json pointDisplacementsJson(const Model& model, const DofMap& dofs, const NodalField& u) {
+  std::vector<std::pair<int, std::string>> points;
+  for (const auto& [name, node] : model.namedNodes()) points.emplace_back(node, name);
+  std::sort(points.begin(), points.end());
+  Json out = Json::object();
+  for (const auto& [node, name] : points) {
+    Json& components = out[name] = Json::object();
+    for (Dof d : kAllDofs)
+      if (dofs.equation(node, d) >= 0) components[std::string(dofName(d))] = u(node, dofIndex(d));
+  }
+  return out;
+}
+
+/// Contact constraints by name: whether each rests on its bound, and the force it exerts.
+Json contactsJson(const std::vector<ContactState>& contacts) {
+  Json out = Json::object();
+  for (const ContactState& c : contacts)
+    out[c.name] = {{"dof", std::string(dofName(c.dof))},
+                   {"active", c.active},
+                   {"value", c.value},
+                   {"bound", c.bound},
+                   {"gap", c.gap},
+                   {"force", c.force}};
+  return out;
+}
+
+Json maxStressJson(const std::vector<StaticStation>& stations) {
+  const auto top = largestStress(stations);
+  if (!top) return nullptr;  // no line elements: the key is dropped by the caller
+  return {{"value", top->stress}, {"x", top->place.x}, {"element", top->place.element}};
+}
+
+Json staticJson(const Model& model, const DofMap& dofs, const AnalysisOutcome& a,
+                const std::vector<StaticStation>& stations) {
+  const StaticResult& r = *a.statics;
+  const std::string stem = fileStem(a.name);
+  Json out = {{"type", a.type}, {"name", a.name}};
+  out["reactions"] = reactionsJson(r);
+  out["displacements"] = pointDisplacementsJson(model, dofs, r.displacement);
+  if (Json top = maxStressJson(stations); !top.is_null()) out["max_stress"] = top;
+  if (!r.contacts.empty()) {
+    out["contacts"] = contactsJson(r.contacts);
+    out["active_set_iterations"] = r.activeSetIterations;
+  }
+  out["rcond"] = r.rcond;
+  out["time_s"] = r.time.total;
+  out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
+  return out;
+}
+
+Json modalJson(const std::array<bool, kDofKinds>& carried, const AnalysisOutcome& a) {
+  const ModalResult& r = *a.modal;
+  const std::string stem = fileStem(a.name);
+  // Per translation kind the model carries: value(k) for k = 0 (ux), 1 (uy), 2 (uz).
+  const auto perTranslation = [&](auto value) {
+    Json o = Json::object();
+    for (int k = 0; k < 3; ++k)
+      if (carried[k]) o[std::string(dofName(kAllDofs[k]))] = value(k);
+    return o;
+  };
+  Json out = {{"type", a.type}, {"name", a.name}};
+  Json frequencies = Json::array(), modes = Json::array(), vtus = Json::array();
+  for (std::size_t m = 0; m < r.modes.size(); ++m) {
+    const Mode& mode = r.modes[m];
+    frequencies.push_back(mode.frequencyHz);
+    Json energy = Json::object();
+    for (Dof d : kAllDofs)
+      if (carried[dofIndex(d)]) energy[std::string(dofName(d))] = mode.energyShare[dofIndex(d)];
+    modes.push_back(
+        {{"mode", m + 1},
+         {"frequency_hz", mode.frequencyHz},
+         {"description", mode.description},
+         {"effective_mass_kg", perTranslation([&](int k) { return mode.effectiveMass[k]; })},
+         // A direction in which nothing moves (all its dofs held) has no mass: ratio 0.
+         {"effective_mass_ratio", perTranslation([&](int k) {
+            return r.totalMass[k] > 0 ? mode.effectiveMass[k] / r.totalMass[k] : 0.0;
+          })},
+         {"energy_share", energy}});
+    vtus.push_back(modeVtu(stem, int(m) + 1));
+  }
+  out["frequencies_hz"] = frequencies;
+  out["total_mass_kg"] = perTranslation([&](int k) { return r.totalMass[k]; });
+  out["modes"] = modes;
+  out["time_s"] = r.time.total;
+  out["files"] = {{"modes_csv", modesCsv(stem)},
+                  {"shapes_csv", shapesCsv(stem)},
+                  {"pvd", collectionPvd(stem)},
+                  {"vtu", vtus}};
+  return out;
+}
+
+Json checksJson(const std::vector<Check>& checks) {
+  Json out = Json::array();
+  for (const Check& c : checks)
+    out.push_back({{"name", c.name},
+                   {"quantity", c.quantity},
+                   {"computed", c.computed},
+                   {"reference", c.reference},
+                   {"rel_error", c.relError()},
+                   {"tolerance", c.tolerance},
+                   {"pass", c.pass()}});
+  return out;
+}
+
+Json parametersJson(const std::vector<std::pair<std::string, double>>& parameters) {
+  Json out = Json::object();
+  for (const auto& [name, value] : parameters) out[name] = value;
+  return out;
+}
+
+/// A JSON pointer token: '~' and '/' escaped as RFC 6901 asks.
+std::string pointerToken(const std::string& key) {
+  std::string out;
+  for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+  return out;
+}
+
+void requireFiniteAt(const Json& node, const std::string& path, const std::string& document) {
+  if (node.is_number_float() && !std::isfinite(node.get<double>()))
+    throw std::runtime_error(document + ": " + (path.empty() ? "/" : path) + " would be " +
+                             exactDecimal(node.get<double>()) +
+                             "; only finite numbers are written");
+  if (node.is_object())
+    for (const auto& [key, child] : node.items())
+      requireFiniteAt(child, path + "/" + pointerToken(key), document);
+  if (node.is_array())
+    for (std::size_t i = 0; i < node.size(); ++i)
+      requireFiniteAt(node[i], path + "/" + std::to_string(i), document);
+}
+
+/// The part of a run's analysis entry a sweep tracks.
+Json sweepAnalysisJson(const Json& analysis) {
+  Json out = {{"type", analysis.at("type")}, {"name", analysis.at("name")}};
+  for (const char* key : {"reactions", "max_stress", "frequencies_hz"})
+    if (analysis.contains(key)) out[key] = analysis[key];
+  return out;
+}
+
+}  // namespace
+
+Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>& stations) {
+  if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
+  if (stations.size() != run.analyses.size())
+    throw std::invalid_argument("runJson needs one list of static stations per analysis");
+  const Model& model = *run.model;
+  const DofMap dofs(model);
+  const auto carried = kindsCarried(model, dofs);
+
+  Json doc = {{"deck", {{"name", run.deckName}, {"path", run.deckPath}}}};
+  doc["model"] = modelJson(run, dofs);
+  Json analyses = Json::array();
+  for (std::size_t i = 0; i < run.analyses.size(); ++i) {
+    const AnalysisOutcome& a = run.analyses[i];
+    if (a.statics)
+      analyses.push_back(staticJson(model, dofs, a, stations[i]));
+    else if (a.modal)
+      analyses.push_back(modalJson(carried, a));
+    else  // a kind of analysis this writer does not know yet: at least say it ran
+      analyses.push_back({{"type", a.type}, {"name", a.name}});
+  }
+  doc["analyses"] = analyses;
+  doc["checks"] = checksJson(run.checks);
+  doc["skipped_checks"] = run.skippedChecks;
+  doc["parameters"] = parametersJson(run.parameters);
+  doc["seconds"] = run.seconds;
+  doc["beamrotor_version"] = BEAMROTOR_VERSION;
+  return doc;
+}
+
+Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,
+               const std::vector<std::string>& directories) {
+  if (runDocs.size() != sweep.values.size() || directories.size() != sweep.values.size())
+    throw std::invalid_argument("sweepJson needs one document and directory per value");
+  Json doc = {{"parameter", sweep.parameter}, {"values", sweep.values}};
+  if (!runDocs.empty()) doc["model"] = runDocs.front().at("model");
+  Json runs = Json::array();
+  for (std::size_t i = 0; i < runDocs.size(); ++i) {
+    Json analyses = Json::array();
+    for (const Json& a : runDocs[i].at("analyses")) analyses.push_back(sweepAnalysisJson(a));
+    runs.push_back({{"value", sweep.values[i]},
+                    {"directory", directories[i]},
+                    {"parameters", runDocs[i].at("parameters")},
+                    {"analyses", analyses},
+                    {"checks", runDocs[i].at("checks")}});
+  }
+  doc["runs"] = runs;
+  return doc;
+}
+
+void requireFiniteNumbers(const Json& doc, const std::string& document) {
+  requireFiniteAt(doc, "", document);
+}
+
+void writeJson(const Json& doc, const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("cannot create " + file.string());
+  out << doc.dump(2) << '\n';
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,46 @@
+// results.json and sweep.json: the stable, machine-read summary of a run. Keys keep the
+// order they are written in (nlohmann::ordered_json) so a person can read the file too.
+//
+// results.json:
+//   deck {name, path}, model {nodes, elements, dofs, dimension},
+//   analyses [ static: {type, name, reactions {support: {fx ... mz}}, displacements
+//              {point: {ux ... rz}}, max_stress {value, x, element}, [contacts {name: {dof,
+//              active, value, bound, gap, force}}, active_set_iterations], rcond, time_s, files}
+//            | modal:  {type, name, frequencies_hz [...], total_mass_kg {ux ..}, modes [{mode,
+//              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio
+//              {ux ..}, energy_share {ux .. rz}}], time_s, files} ],
+//   checks [{name, quantity, computed, reference, rel_error, tolerance, pass}],
+//   skipped_checks [name], parameters {name: value}, seconds, beamrotor_version.
+// Only the components a model carries appear (a planar model has no fz, my, uz ...).
+// sweep.json: parameter, values, model, runs [{value, directory, parameters, analyses (type,
+// name, reactions, max_stress | frequencies_hz), checks}].
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "problems/RunResult.hpp"
+#include "problems/output/LineSampling.hpp"
+
+namespace beamrotor {
+
+using Json = nlohmann::ordered_json;
+
+/// results.json of one run. `stations[i]` are the static samples of run.analyses[i] (empty
+/// for other analyses), see sampleStatics; the largest stress is read from them.
+Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>& stations);
+
+/// sweep.json from the values and each value's results.json (runDocs) and sub-directory.
+Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,
+               const std::vector<std::string>& directories);
+
+/// Throws std::runtime_error naming where the first NaN or infinity sits, e.g.
+/// "results.json: analyses/0/max_stress/value would be nan" (nlohmann would write null).
+void requireFiniteNumbers(const Json& doc, const std::string& document);
+
+/// Writes doc (indented) to file; throws std::runtime_error when it cannot.
+void writeJson(const Json& doc, const std::filesystem::path& file);
+
+}  // namespace beamrotor

@@ -1,0 +1,118 @@
+// Sweep quantities and sweep.csv (see SweepTable.hpp), read from each value's results.json.
+#include "problems/output/SweepTable.hpp"
+
+#include <stdexcept>
+
+namespace beamrotor {
+
+namespace {
+
+/// The entry of analysis `name` in a run's document.
+const Json& analysisNamed(const Json& runDoc, const std::string& name) {
+  for (const Json& a : runDoc.at("analyses"))
+    if (a.at("name") == name) return a;
+  throw std::runtime_error("this sweep value has no analysis '" + name + "'");
+}
+
+const Json& checkNamed(const Json& runDoc, const std::string& name) {
+  for (const Json& c : runDoc.at("checks"))
+    if (c.at("name") == name) return c;
+  throw std::runtime_error("this sweep value has no check '" + name + "'");
+}
+
+/// member[key] of a JSON object, with an error naming what is missing.
+const Json& required(const Json& object, const std::string& key, const std::string& what) {
+  if (!object.contains(key)) throw std::runtime_error("this sweep value has no " + what);
+  return object[key];
+}
+
+void addStatic(const Json& a, std::vector<SweepQuantity>& out) {
+  const std::string name = a.at("name");
+  for (const auto& [support, components] : a.at("reactions").items())
+    for (const auto& [component, value] : components.items()) {
+      const std::string unit = component[0] == 'm' ? "N m" : "N";
+      out.push_back(
+          {SweepGroup::reaction,
+           name,
+           support + " " + component,
+           {name + "." + support + "." + component, unit},
+           [name, support, component](const Json& doc) {
+             const Json& reactions = analysisNamed(doc, name).at("reactions");
+             const std::string what = "reaction " + support + " " + component;
+             return required(required(reactions, support, what), component, what).get<double>();
+           }});
+    }
+  if (a.contains("max_stress"))
+    out.push_back({SweepGroup::stress,
+                   name,
+                   "largest stress",
+                   {name + ".max_stress", "Pa"},
+                   [name](const Json& doc) {
+                     return required(analysisNamed(doc, name), "max_stress", "largest stress")
+                         .at("value")
+                         .get<double>();
+                   }});
+}
+
+void addModal(const Json& a, std::vector<SweepQuantity>& out) {
+  const std::string name = a.at("name");
+  for (std::size_t k = 0; k < a.at("frequencies_hz").size(); ++k) {
+    const std::string mode = "mode " + std::to_string(k + 1);
+    out.push_back({SweepGroup::frequency,
+                   name,
+                   mode,
+                   {name + ".f" + std::to_string(k + 1), "Hz"},
+                   [name, k, mode](const Json& doc) {
+                     const Json& f = analysisNamed(doc, name).at("frequencies_hz");
+                     if (k >= f.size()) throw std::runtime_error("this sweep value has no " + mode);
+                     return f[k].get<double>();
+                   }});
+  }
+}
+
+}  // namespace
+
+std::vector<SweepQuantity> sweepQuantities(const Json& firstRunDoc) {
+  std::vector<SweepQuantity> out;
+  for (const Json& a : firstRunDoc.at("analyses")) {
+    if (a.contains("reactions")) addStatic(a, out);
+    if (a.contains("frequencies_hz")) addModal(a, out);
+  }
+  for (const Json& c : firstRunDoc.at("checks")) {
+    const std::string name = c.at("name");
+    out.push_back({SweepGroup::check, "", name, {"check." + name, ""}, [name](const Json& doc) {
+                     return checkNamed(doc, name).at("computed").get<double>();
+                   }});
+    out.push_back({SweepGroup::checkPass,
+                   "",
+                   name + " passes",
+                   {"check." + name + ".pass", ""},
+                   [name](const Json& doc) {
+                     return checkNamed(doc, name).at("pass").get<bool>() ? 1.0 : 0.0;
+                   }});
+  }
+  return out;
+}
+
+CsvTable sweepTable(const std::string& title, const SweepResult& sweep,
+                    const std::vector<Json>& runDocs,
+                    const std::vector<SweepQuantity>& quantities) {
+  std::vector<CsvColumn> columns{{sweep.parameter, ""}};
+  for (const SweepQuantity& q : quantities) columns.push_back(q.column);
+  CsvTable table(title, columns);
+  for (std::size_t i = 0; i < runDocs.size(); ++i) {
+    std::vector<CsvCell> row{sweep.values.at(i)};
+    for (const SweepQuantity& q : quantities) {
+      try {
+        row.push_back(q.read(runDocs[i]));
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(title + ": " + sweep.parameter + " = " +
+                                 exactDecimal(sweep.values[i]) + ": " + e.what());
+      }
+    }
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,37 @@
+// What a sweep tracks across its values: each reaction component and the largest stress of
+// every static analysis, the frequencies of every modal analysis and each check. Read from
+// the runs' results.json documents, so sweep.csv, the sweep charts and the per-value
+// directories report the same numbers.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "problems/RunResult.hpp"
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/JsonWriter.hpp"
+
+namespace beamrotor {
+
+enum class SweepGroup { reaction, stress, frequency, check, checkPass };
+
+/// One quantity followed over the sweep.
+struct SweepQuantity {
+  SweepGroup group = SweepGroup::reaction;
+  std::string analysis;  ///< the analysis it belongs to; empty for checks
+  std::string label;     ///< for a chart: "left fy", "largest stress", "mode 2", a check's name
+  CsvColumn column;      ///< its column in sweep.csv, e.g. {"static.left.fy", "N"}
+  /// Its value in one run's results.json; throws std::runtime_error when the run lacks it
+  /// (a sweep whose values change the supports or analyses).
+  std::function<double(const Json& runDoc)> read;
+};
+
+/// The quantities present in the first run of a sweep, in document order.
+std::vector<SweepQuantity> sweepQuantities(const Json& firstRunDoc);
+
+/// sweep.csv: the parameter's column, then one column per quantity; one row per value.
+CsvTable sweepTable(const std::string& title, const SweepResult& sweep,
+                    const std::vector<Json>& runDocs, const std::vector<SweepQuantity>& quantities);
+
+}  // namespace beamrotor

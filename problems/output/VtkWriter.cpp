@@ -1,0 +1,182 @@
+// VTK XML writers (see VtkWriter.hpp) built on vtkUnstructuredGrid and its XML writer.
+#include "problems/output/VtkWriter.hpp"
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
+#include "fem/Recovery.hpp"
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/ModeShapes.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, int components, vtkIdType tuples) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  return a;
+}
+
+/// The line elements of a model, in element order (the VTK cell order).
+std::vector<const LineElement*> lineElements(const Model& model, std::vector<int>* indices) {
+  std::vector<const LineElement*> lines;
+  for (int i = 0; i < int(model.elements().size()); ++i)
+    if (const auto* line = dynamic_cast<const LineElement*>(model.elements()[i].get())) {
+      lines.push_back(line);
+      indices->push_back(i);
+    }
+  return lines;
+}
+
+/// Points, VTK_LINE cells and the cell data every file carries (element index, section).
+vtkSmartPointer<vtkUnstructuredGrid> lineGrid(const Model& model) {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const Eigen::Vector3d& x : model.nodes()) points->InsertNextPoint(x.x(), x.y(), x.z());
+  grid->SetPoints(points);
+
+  std::vector<int> indices;
+  const auto lines = lineElements(model, &indices);
+  const vtkIdType cells = vtkIdType(lines.size());
+  grid->Allocate(cells);
+  vtkNew<vtkIntArray> element;
+  element->SetName("element");
+  element->SetNumberOfTuples(cells);
+  auto A = doubleArray("A", 1, cells), Iy = doubleArray("Iy", 1, cells),
+       Iz = doubleArray("Iz", 1, cells), E = doubleArray("E", 1, cells);
+  for (vtkIdType c = 0; c < cells; ++c) {
+    const auto [n1, n2] = lines[c]->endNodes();
+    const vtkIdType ends[2] = {n1, n2};
+    grid->InsertNextCell(VTK_LINE, 2, ends);
+    element->SetValue(c, indices[c]);
+    const Section& s = lines[c]->section();
+    A->SetValue(c, s.A);
+    Iy->SetValue(c, s.Iy);
+    Iz->SetValue(c, s.Iz);
+    E->SetValue(c, s.material.E);
+  }
+  grid->GetCellData()->AddArray(element);
+  for (vtkDoubleArray* a : {A.Get(), Iy.Get(), Iz.Get(), E.Get()}) grid->GetCellData()->AddArray(a);
+  return grid;
+}
+
+/// Columns [first, first + 3) of a nodal field as a 3-component point array.
+vtkSmartPointer<vtkDoubleArray> pointVectors(const char* name, const NodalField& field, int first) {
+  auto a = doubleArray(name, 3, field.rows());
+  for (int n = 0; n < field.rows(); ++n)
+    a->SetTuple3(n, field(n, first), field(n, first + 1), field(n, first + 2));
+  return a;
+}
+
+void write(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(file.string().c_str());
+  writer->SetInputData(grid);
+  // Inline base64 with zlib compression: compact, and read by ParaView, VTK and meshio alike.
+  writer->SetDataModeToBinary();
+  if (writer->Write() != 1) throw std::runtime_error("VTK could not write " + file.string());
+}
+
+std::string xmlAttribute(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void writeStaticVtu(const std::filesystem::path& file, const Model& model,
+                    const StaticResult& result, const std::vector<StaticStation>& stations) {
+  auto grid = lineGrid(model);
+  grid->GetPointData()->AddArray(pointVectors("displacement", result.displacement, 0));
+  grid->GetPointData()->AddArray(pointVectors("rotation", result.displacement, 3));
+
+  // Section forces at mid-length: recovery with two intervals puts station 1 of 3 there.
+  const std::vector<BeamStation> mid = recoverBeamFields(model, result.displacement, 2);
+  const vtkIdType cells = grid->GetNumberOfCells();
+  if (vtkIdType(mid.size()) != 3 * cells) throw std::logic_error("mid-length stations missing");
+  const char* names[] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+  std::vector<vtkSmartPointer<vtkDoubleArray>> forces;
+  for (const char* name : names) forces.push_back(doubleArray(name, 1, cells));
+  for (vtkIdType c = 0; c < cells; ++c) {
+    const SectionForces& f = mid[3 * c + 1].forces;
+    const double values[] = {f.N, f.Vy, f.Vz, f.T, f.My, f.Mz};
+    for (int k = 0; k < 6; ++k) forces[k]->SetValue(c, values[k]);
+  }
+  for (auto& a : forces) grid->GetCellData()->AddArray(a);
+
+  // Largest stress over each element's stations.
+  std::vector<double> largest(model.elements().size(), 0.0);
+  for (const StaticStation& st : stations)
+    largest.at(st.place.element) = std::max(largest[st.place.element], st.stress);
+  auto stress = doubleArray("stress", 1, cells);
+  auto* element = grid->GetCellData()->GetArray("element");
+  for (vtkIdType c = 0; c < cells; ++c) stress->SetValue(c, largest.at(int(element->GetTuple1(c))));
+  grid->GetCellData()->AddArray(stress);
+  write(grid, file);
+}
+
+void writeModeVtu(const std::filesystem::path& file, const Model& model, const Mode& mode,
+                  int number) {
+  auto grid = lineGrid(model);
+  const NodalField shape = displayModeShape(model, mode.shape);
+  grid->GetPointData()->AddArray(pointVectors("mode_shape", shape, 0));
+  grid->GetPointData()->AddArray(pointVectors("mode_rotation", shape, 3));
+  vtkNew<vtkIntArray> modeNumber;
+  modeNumber->SetName("mode");
+  modeNumber->InsertNextValue(number);
+  auto frequency = doubleArray("frequency_hz", 1, 1);
+  frequency->SetValue(0, mode.frequencyHz);
+  grid->GetFieldData()->AddArray(modeNumber);
+  grid->GetFieldData()->AddArray(frequency);
+  write(grid, file);
+}
+
+void writePvd(const std::filesystem::path& file, const std::vector<PvdEntry>& entries) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("cannot create " + file.string());
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "  <Collection>\n";
+  for (const PvdEntry& e : entries)
+    out << "    <DataSet timestep=\"" << exactDecimal(e.timestep)
+        << "\" group=\"\" part=\"0\" file=\"" << xmlAttribute(e.file) << "\"/>\n";
+  out << "  </Collection>\n</VTKFile>\n";
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,138 @@
+// The writers' building blocks: displacements between nodes in any element frame, distance
+// along the line, mode-shape scaling, file stems, CSV quoting and the JSON non-finite guard.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "elements/Spring.hpp"
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/FileNames.hpp"
+#include "problems/output/JsonWriter.hpp"
+#include "problems/output/LineSampling.hpp"
+#include "problems/output/ModeShapes.hpp"
+#include "tests/problems/output/OutputFixtures.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+// Hermite interpolation of an exact EB solution: round-off only.
+constexpr double kExact = 1e-10;
+
+}  // namespace
+
+TEST_SUITE("output") {
+  TEST_CASE("displacementAt: bending about local y (uz, ry) in a 3D frame is exact") {
+    // Tip force +P along z: w(x) = P x^2 (3L - x) / (6 EI), ry = -dw/dx (right-hand rule).
+    const double L = 1.5, P = 900;
+    const auto section = steelRectangle(0.04, 0.06);
+    Model model;
+    const Line line = uniformBeam(model, L, section, 3, DofSet::frame3d());
+    clamp(model, "root", line.nodes.front(), DofSet::frame3d());
+    model.addLoad({line.nodes.back(), Dof::uz, P});
+    const StaticResult r = solveStatic(model);
+    const double EI = section->EIy();
+    const double tip = P * L * L * L / (3 * EI);
+    for (const StaticStation& st : sampleStatics(model, r.displacement)) {
+      const double x = st.place.x;
+      CAPTURE(x);
+      CHECK(std::abs(st.displacement[2] - P * x * x * (3 * L - x) / (6 * EI)) <= kExact * tip);
+      CHECK(std::abs(st.displacement[4] + P * x * (2 * L - x) / (2 * EI)) <= kExact * tip / L);
+      CHECK(std::abs(st.displacement[1]) <= kExact * tip);
+    }
+  }
+
+  TEST_CASE("displacementAt: a line at 45 degrees deflects like the same line along x") {
+    // Planar cantilever along (1, 1)/sqrt(2) with a tip force P perpendicular to it: the
+    // deflection along the normal n = (-1, 1)/sqrt(2) is P s^2 (3L - s) / (6 EI).
+    const double L = 2.0, P = 1200;
+    const auto section = steelCircle(0.05);
+    const Eigen::Vector3d axis(1 / std::sqrt(2.0), 1 / std::sqrt(2.0), 0);
+    const Eigen::Vector3d normal(-axis.y(), axis.x(), 0);
+    Model model;
+    LineSpec spec;
+    spec.direction = axis;
+    spec.segments.push_back({L, section, 4, 0, {}});
+    const Line line = buildLine(model, spec);
+    clamp(model, "root", line.nodes.front(), DofSet::planar());
+    model.addLoad({line.nodes.back(), Dof::ux, P * normal.x()});
+    model.addLoad({line.nodes.back(), Dof::uy, P * normal.y()});
+    const StaticResult r = solveStatic(model);
+    const double EI = section->EIz(), tip = P * L * L * L / (3 * EI);
+    for (const StaticStation& st : sampleStatics(model, r.displacement)) {
+      const double s = st.place.x;
+      CAPTURE(s);
+      const Eigen::Vector3d u(st.displacement[0], st.displacement[1], st.displacement[2]);
+      CHECK(std::abs(u.dot(normal) - P * s * s * (3 * L - s) / (6 * EI)) <= kExact * tip);
+      CHECK(std::abs(st.displacement[5] - P * s * (2 * L - s) / (2 * EI)) <= kExact * tip / L);
+    }
+  }
+
+  TEST_CASE("lineCoordinates: distance along the line; nodes off the line have none") {
+    Model model;
+    const Line line = uniformBeam(model, 3.0, steelCircle(0.05), 3);
+    const int loose = model.addNode({5, 5, 0});
+    model.add<Spring>(NodeDof{loose, Dof::uy}, 1e6);
+    const auto x = lineCoordinates(model);
+    for (int k = 0; k < 4; ++k) CHECK(x[line.nodes[k]] == doctest::Approx(k).epsilon(1e-15));
+    CHECK_FALSE(x[loose].has_value());
+  }
+
+  TEST_CASE("displayModeShape: largest translation 1 and positive; torsion by rotation") {
+    Model model;
+    uniformBeam(model, 1.0, steelCircle(0.05), 2);
+    NodalField shape = NodalField::Zero(3, kDofKinds);
+    shape(1, 1) = -4e-3;
+    shape(2, 1) = 2e-3;
+    shape(2, 5) = 1e-2;
+    const NodalField scaled = displayModeShape(model, shape);
+    CHECK(scaled(1, 1) == 1.0);
+    CHECK(scaled(2, 1) == -0.5);
+    CHECK(scaled(2, 5) == doctest::Approx(-2.5).epsilon(1e-15));
+    CHECK(dominantTranslation(scaled) == Dof::uy);
+
+    NodalField torsion = NodalField::Zero(3, kDofKinds);
+    torsion(2, 3) = 0.3;
+    torsion(2, 1) = 1e-20;  // round-off, not a translation
+    const NodalField t = displayModeShape(model, torsion);
+    CHECK(t(2, 3) == 1.0);
+  }
+
+  TEST_CASE("file stems are safe; colliding names are refused") {
+    CHECK(fileStem("eta = 0.4 / left") == "eta___0.4___left");
+    CHECK(fileStem("static-1_a.b") == "static-1_a.b");
+    CHECK(fileStem("..") == "analysis..");
+    std::vector<AnalysisOutcome> two(2);
+    two[0].name = "a b";
+    two[1].name = "a?b";
+    CHECK_THROWS_AS(requireDistinctFileStems(two), std::invalid_argument);
+    two[1].name = "a_c";
+    CHECK_NOTHROW(requireDistinctFileStems(two));
+    CHECK(sweepValueDirectory(7, 12) == "value_007");
+    CHECK(sweepValueDirectory(1234, 2000) == "value_1234");
+  }
+
+  TEST_CASE("CsvTable: RFC 4180 quoting, exact numbers, refuses NaN naming the cell") {
+    CsvTable table("t.csv", {{"mode", ""}, {"description", ""}, {"f", "Hz"}});
+    table.addRow({1LL, std::string("bending, \"stiff\""), 0.1});
+    CHECK_THROWS_WITH_AS(table.addRow({2LL, std::string("x"), std::nan("")}),
+                         doctest::Contains("column 'f', row 2"), std::runtime_error);
+    CHECK_THROWS_AS(table.addRow({2LL}), std::invalid_argument);
+    CHECK(table.column("f") == 3);
+    ScratchDir scratch;
+    table.write(scratch / "t.csv");
+    CHECK(readText(scratch / "t.csv") ==
+          "mode,description,f [Hz]\n1,\"bending, \"\"stiff\"\"\",0.1\n");
+  }
+
+  TEST_CASE("requireFiniteNumbers names the JSON path of a NaN") {
+    Json doc = {{"analyses", Json::array({{{"max_stress", {{"value", 1.0}}}}})}};
+    CHECK_NOTHROW(requireFiniteNumbers(doc, "results.json"));
+    doc["analyses"][0]["max_stress"]["value"] = std::numeric_limits<double>::infinity();
+    CHECK_THROWS_WITH_AS(requireFiniteNumbers(doc, "results.json"),
+                         doctest::Contains("results.json: /analyses/0/max_stress/value"),
+                         std::runtime_error);
+  }
+}

@@ -1,0 +1,115 @@
+// Sweeps: the deck is re-read and re-solved for each value of one parameter, which may move
+// supports; one run per value, in order.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "problems/deck/DeckError.hpp"
+#include "problems/deck/Study.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+// A simply supported beam whose right support sits at x = s; a load P at midspan between
+// the supports: reaction P/2 at each, midspan deflection P s^3 / (48 E I).
+const std::string kDeck = R"(
+parameters:
+  s: 1.0
+  P: 1000
+materials:
+  - {name: steel, E: 200e9, nu: 0.3}
+sections:
+  - {name: bar, shape: rectangle, b: 0.02, h: 0.05}
+segments:
+  - {length: 2.0, section: bar, elements: 8}
+points:
+  - {name: mid, at: s/2}
+  - {name: support, at: s}
+supports:
+  - {name: left, at: start, fix: pinned}
+  - {name: right, at: support, fix: [uy]}
+loads:
+  - {type: point, at: mid, fy: -P}
+checks:
+  - {name: midspan deflection, quantity: displacement mid uy,
+     reference: -P*s^3/(48*200e9*0.02*0.05^3/12), tolerance: 1e-9}
+  - {name: only at s = 1, quantity: reaction right uy, reference: P/2, tolerance: 1e-9,
+     when: s == 1}
+SWEEP
+)";
+
+Study solve(const std::string& sweep, StudyRequest r = {}) {
+  std::string text = kDeck;
+  text.replace(text.find("SWEEP"), 5, sweep);
+  r.deckPath = "sweep.yaml";
+  return solveStudyText(text, r);
+}
+
+double midDeflection(const RunResult& run) {
+  return run.analyses[0].statics->displacement(run.model->node("mid"), dofIndex(Dof::uy));
+}
+
+}  // namespace
+
+TEST_SUITE("deck sweep") {
+  TEST_CASE("from/to/steps gives steps + 1 runs and moves the support") {
+    const Study st = solve("sweep: {parameter: s, from: 1, to: 2, steps: 4}");
+    REQUIRE(st.sweep);
+    CHECK_FALSE(st.run);
+    REQUIRE(st.sweep->runs.size() == 5);
+    CHECK(st.sweep->values == std::vector<double>{1, 1.25, 1.5, 1.75, 2});
+    for (std::size_t i = 0; i < 5; ++i) {
+      const double s = st.sweep->values[i];
+      const RunResult& run = st.sweep->runs[i];
+      CAPTURE(s);
+      // Each run carries its own parameter value ...
+      CHECK(run.parameters[0] == std::pair<std::string, double>{"s", s});
+      // ... and its own model: the right support moved to x = s.
+      CHECK(run.model->nodes()[run.model->node("support")].x() == doctest::Approx(s));
+      // Exact Euler-Bernoulli result, round-off only.
+      const double EI = 200e9 * 0.02 * std::pow(0.05, 3) / 12;
+      CHECK(midDeflection(run) == doctest::Approx(-1000 * s * s * s / (48 * EI)).epsilon(1e-9));
+      for (const Check& c : run.checks) CHECK(c.pass());
+      // The `when: s == 1` check runs at the first value only.
+      CHECK(run.checks.size() == (i == 0 ? 2u : 1u));
+      CHECK(run.skippedChecks.size() == (i == 0 ? 0u : 1u));
+    }
+  }
+
+  TEST_CASE("an explicit list of values, and --set of the swept parameter runs once") {
+    const Study st = solve("sweep: {parameter: s, values: [1.2, 1.6]}");
+    REQUIRE(st.sweep);
+    CHECK(st.sweep->values == std::vector<double>{1.2, 1.6});
+    StudyRequest r;
+    r.sets = {"s=1.5"};
+    const Study single = solve("sweep: {parameter: s, values: [1.2, 1.6]}", r);
+    REQUIRE(single.run);
+    CHECK_FALSE(single.sweep);
+    CHECK(single.run->parameters[0].second == 1.5);
+  }
+
+  TEST_CASE("a sweep from the command line replaces the deck's") {
+    StudyRequest r;
+    r.sweep = "s=1:2:2";
+    const Study st = solve("", r);
+    REQUIRE(st.sweep);
+    CHECK(st.sweep->values == std::vector<double>{1, 1.5, 2});
+    r.sweep = "P=100,200,300";
+    CHECK(solve("", r).sweep->runs.size() == 3);
+    r.sweep = "q=1:2:2";
+    CHECK_THROWS_AS(solve("", r), DeckError);
+  }
+
+  TEST_CASE("a value that breaks the deck is named in the error") {
+    // s = 2.5 puts the support beyond the 2 m line.
+    try {
+      solve("sweep: {parameter: s, values: [1, 2.5]}");
+      FAIL("no error raised");
+    } catch (const DeckError& e) {
+      const std::string what = e.what();
+      CHECK(what.find("with s = 2.5 (sweep)") != std::string::npos);
+      CHECK(what.find("points[1].at") != std::string::npos);
+    }
+  }
+}
