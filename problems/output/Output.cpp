@@ -133,7 +133,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
   }
   const Json sweepDoc = sweepJson(sweep, docs, directories);
   requireFiniteNumbers(sweepDoc, kSweepJson);
-  const std::vector<SweepQuantity> quantities = sweepQuantities(docs.front());
+  const std::vector<SweepQuantity> quantities = sweepQuantities(docs);
   const CsvTable table = sweepTable(kSweepCsv, sweep, docs, quantities);
 
   // 2. Per value its own results (no charts: they would dominate the time of a long sweep),

@@ -1,6 +1,7 @@
 // Sweep quantities and sweep.csv (see SweepTable.hpp), read from each value's results.json.
 #include "problems/output/SweepTable.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace beamrotor {
@@ -72,24 +73,32 @@ void addModal(const Json& a, std::vector<SweepQuantity>& out) {
 
 }  // namespace
 
-std::vector<SweepQuantity> sweepQuantities(const Json& firstRunDoc) {
+std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
   std::vector<SweepQuantity> out;
-  for (const Json& a : firstRunDoc.at("analyses")) {
+  for (const Json& a : runDocs.at(0).at("analyses")) {
     if (a.contains("reactions")) addStatic(a, out);
     if (a.contains("frequencies_hz")) addModal(a, out);
   }
-  for (const Json& c : firstRunDoc.at("checks")) {
-    const std::string name = c.at("name");
-    out.push_back({SweepGroup::check, "", name, {"check." + name, ""}, [name](const Json& doc) {
+  std::vector<std::string> checks;
+  for (const Json& doc : runDocs)
+    for (const Json& c : doc.at("checks")) {
+      const std::string name = c.at("name");
+      if (std::find(checks.begin(), checks.end(), name) == checks.end()) checks.push_back(name);
+    }
+  for (const std::string& name : checks) {
+    out.push_back({SweepGroup::check, "", name, {"check." + name, ""},
+                   [name](const Json& doc) {
                      return checkNamed(doc, name).at("computed").get<double>();
-                   }});
+                   },
+                   true});
     out.push_back({SweepGroup::checkPass,
                    "",
                    name + " passes",
                    {"check." + name + ".pass", ""},
                    [name](const Json& doc) {
                      return checkNamed(doc, name).at("pass").get<bool>() ? 1.0 : 0.0;
-                   }});
+                   },
+                   true});
   }
   return out;
 }
@@ -106,6 +115,10 @@ CsvTable sweepTable(const std::string& title, const SweepResult& sweep,
       try {
         row.push_back(q.read(runDocs[i]));
       } catch (const std::runtime_error& e) {
+        if (q.optional) {
+          row.push_back(std::string());
+          continue;
+        }
         throw std::runtime_error(title + ": " + sweep.parameter + " = " +
                                  exactDecimal(sweep.values[i]) + ": " + e.what());
       }

@@ -25,10 +25,14 @@ struct SweepQuantity {
   /// Its value in one run's results.json; throws std::runtime_error when the run lacks it
   /// (a sweep whose values change the supports or analyses).
   std::function<double(const Json& runDoc)> read;
+  /// Runs may lack it (a check whose `when:` condition holds for some values only): its
+  /// cell is then left empty instead of failing the sweep.
+  bool optional = false;
 };
 
-/// The quantities present in the first run of a sweep, in document order.
-std::vector<SweepQuantity> sweepQuantities(const Json& firstRunDoc);
+/// The analyses' quantities of the first run, in document order, then every check any run
+/// declares (in order of first appearance).
+std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs);
 
 /// sweep.csv: the parameter's column, then one column per quantity; one row per value.
 CsvTable sweepTable(const std::string& title, const SweepResult& sweep,
