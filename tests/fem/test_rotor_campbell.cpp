@@ -11,6 +11,7 @@
 #include "fem/RotorCampbell.hpp"
 #include "fem/RotorUnbalance.hpp"
 #include "tests/Helpers.hpp"
+#include "tests/fem/RotorTestSupport.hpp"
 
 using namespace beamrotor;
 using namespace beamrotor::test;
@@ -19,16 +20,6 @@ namespace {
 
 using Complex = std::complex<double>;
 
-/// Rotor options without aggregate initialisation (which warns about the fields left out).
-RotorOptions options(int modes, Complex shift = 0, ProportionalDamping damping = {},
-                     EigenMethod method = EigenMethod::automatic) {
-  RotorOptions o;
-  o.modes = modes;
-  o.shift = shift;
-  o.damping = damping;
-  o.method = method;
-  return o;
-}
 
 constexpr double kPi = std::numbers::pi;
 
@@ -111,7 +102,7 @@ TEST_SUITE("rotor campbell") {
     // there. Sweep well past it.
     const double w = r.bounce(), crossing = (r.kPhi() - r.Jd() * w * w) / (r.Jp() * w);
     const std::vector<double> speeds = linspace(0, 1.6 * crossing, 41);
-    const CampbellResult c = solveCampbell(model, speeds, options(4));
+    const CampbellResult c = solveCampbell(model, speeds, rotorOptions(4));
     REQUIRE(c.lines.size() == 4);
     // Each line must stay on one branch of the closed form over the whole sweep.
     int bounceLines = 0, forwardLines = 0, backwardLines = 0;
@@ -159,7 +150,7 @@ TEST_SUITE("rotor campbell") {
     const double bwd = std::sqrt(r.kPhi() / (r.Jd() + r.Jp()));
     double previous = 0;
     for (int n : {21, 41}) {
-      const CampbellResult c = solveCampbell(model, linspace(0, 2000, n), options(4));
+      const CampbellResult c = solveCampbell(model, linspace(0, 2000, n), rotorOptions(4));
       const std::vector<CriticalSpeed> crit = criticalSpeeds(c);
       REQUIRE(crit.size() == 4);
       // Ascending (for these numbers): bounce twice, backward conical, forward conical.
@@ -186,7 +177,7 @@ TEST_SUITE("rotor campbell") {
     const Jeffcott j;
     Model model;
     j.build(model);
-    const CampbellResult c = solveCampbell(model, linspace(0, 2 * j.wn(), 11), options(2));
+    const CampbellResult c = solveCampbell(model, linspace(0, 2 * j.wn(), 11), rotorOptions(2));
     const std::vector<CriticalSpeed> crit = criticalSpeeds(c);
     REQUIRE(crit.size() == 2);  // the y and z bending modes, forward and backward whirl
     MESSAGE("Jeffcott critical speed error " << relError(crit[0].speed, j.wn()) << ", "
@@ -247,7 +238,7 @@ TEST_SUITE("rotor campbell") {
     for (int at : {10, 190})
       model.add<Bearing>(line.nodes[at], std::vector<double>{0, 1000},
                          std::vector<BearingCoefficients>{slow, fast});
-    const CampbellResult c = solveCampbell(model, linspace(0, 1000, 50), options(6));
+    const CampbellResult c = solveCampbell(model, linspace(0, 1000, 50), rotorOptions(6));
     CHECK(c.symbolicAnalyses == 1);
     CHECK(c.size.freeDofs == 804);
     MESSAGE("Campbell, 200 elements (804 dofs), 6 modes, 50 speeds: "

@@ -14,6 +14,7 @@
 #include "fem/Modal.hpp"
 #include "fem/RotorModes.hpp"
 #include "tests/Helpers.hpp"
+#include "tests/fem/RotorTestSupport.hpp"
 
 using namespace beamrotor;
 using namespace beamrotor::test;
@@ -22,16 +23,6 @@ namespace {
 
 using Complex = std::complex<double>;
 
-/// Rotor options without aggregate initialisation (which warns about the fields left out).
-RotorOptions options(int modes, Complex shift = 0, ProportionalDamping damping = {},
-                     EigenMethod method = EigenMethod::automatic) {
-  RotorOptions o;
-  o.modes = modes;
-  o.shift = shift;
-  o.damping = damping;
-  o.method = method;
-  return o;
-}
 
 /// Shaft along x from 0 to L (solid circle D, density rho, modulus E) with a disk at xd,
 /// bearings at xa and xb; b = 0 (C1 l1 = C2 l2) so bounce and tilt decouple. Coarse mesh: the
@@ -106,7 +97,7 @@ TEST_SUITE("rotor modes") {
       CAPTURE(W);
       for (EigenMethod method : {EigenMethod::dense, EigenMethod::arnoldi}) {
         QuadraticEigenSolver solver;
-        const RotorModesResult res = solveRotorModes(sys, W, options(4, 0, {}, method), solver);
+        const RotorModesResult res = solveRotorModes(sys, W, rotorOptions(4, 0, {}, method), solver);
         REQUIRE(res.modes.size() == 4);
         // Two bounce modes (y and z), then the backward and forward conical modes.
         std::vector<double> fe, ref{r.bounce(), r.bounce(), r.backward(W), r.forward(W)};
@@ -145,9 +136,9 @@ TEST_SUITE("rotor modes") {
                                   {BeamTheory::timoshenko, MassModel::consistent, true});
     model.add<Bearing>(line.nodes.front(), BearingCoefficients::isotropic(5e7));
     model.add<Bearing>(line.nodes.back(), BearingCoefficients::isotropic(5e7));
-    const RotorModesResult undamped = solveRotorModes(model, 0, options(6));
+    const RotorModesResult undamped = solveRotorModes(model, 0, rotorOptions(6));
     const double alpha = 3.0, beta = 2e-5;
-    const RotorModesResult damped = solveRotorModes(model, 0, options(6, 0, {alpha, beta}));
+    const RotorModesResult damped = solveRotorModes(model, 0, rotorOptions(6, 0, {alpha, beta}));
     REQUIRE(damped.modes.size() == 6);
     for (int k = 0; k < 6; ++k) {
       const double w = undamped.modes[k].dampedFrequency;
@@ -170,7 +161,7 @@ TEST_SUITE("rotor modes") {
     const int node = model.addNode({0, 0, 0});
     model.add<PointInertia>(node, DofSet{Dof::uy, Dof::uz}, m);
     model.add<Bearing>(node, BearingCoefficients{k, q, -q, k});
-    const RotorModesResult res = solveRotorModes(model, 0, options(2));
+    const RotorModesResult res = solveRotorModes(model, 0, rotorOptions(2));
     REQUIRE(res.modes.size() == 2);
     int unstable = 0;
     for (const RotorMode& mode : res.modes) {
@@ -206,7 +197,7 @@ TEST_SUITE("rotor modes") {
       lateral.addSupport({"l" + std::to_string(end), nl, {{Dof::uy, 0}, {Dof::uz, 0}}});
     }
     const ModalResult ref = solveModes(planar, {4, 0});
-    const RotorModesResult rot = solveRotorModes(lateral, 0, options(8));
+    const RotorModesResult rot = solveRotorModes(lateral, 0, rotorOptions(8));
     REQUIRE(rot.modes.size() == 8);
     REQUIRE(ref.modes.size() == 4);
     std::vector<double> hz;
@@ -232,12 +223,12 @@ TEST_SUITE("rotor modes") {
     Model model;
     r.build(model, 4);
     const double W = 800;
-    const RotorModesResult low = solveRotorModes(model, W, options(6));
+    const RotorModesResult low = solveRotorModes(model, W, rotorOptions(6));
     // Shift near the fourth mode's frequency (not on it: P(shift) would be singular): the
     // mode nearest it, found by znaupd, is that mode.
     const double w4 = low.modes[3].dampedFrequency;
     const RotorModesResult around =
-        solveRotorModes(model, W, options(2, Complex(0, 1.001 * w4), {}, EigenMethod::arnoldi));
+        solveRotorModes(model, W, rotorOptions(2, Complex(0, 1.001 * w4), {}, EigenMethod::arnoldi));
     REQUIRE(!around.modes.empty());
     CHECK(relError(around.modes[0].dampedFrequency, w4) < 1e-10);
   }
@@ -246,8 +237,8 @@ TEST_SUITE("rotor modes") {
     Model model;
     const auto sec = steelCircle(0.05);
     uniformBeam(model, 1.0, sec, 10, DofSet::lateral());
-    CHECK_THROWS_AS(solveRotorModes(model, 0, options(4)), SolveError);
-    const RotorModesResult res = solveRotorModes(model, 0, options(6, -1.0));
+    CHECK_THROWS_AS(solveRotorModes(model, 0, rotorOptions(4)), SolveError);
+    const RotorModesResult res = solveRotorModes(model, 0, rotorOptions(6, -1.0));
     REQUIRE(res.modes.size() == 6);
     // Four rigid-body modes (two translations, two tilts): lambda = 0 with a Jordan block
     // (q = a + b t), which any eigensolver resolves only to ~sqrt(eps) of the problem's scale
