@@ -7,7 +7,7 @@ JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps build run test clean
+.PHONY: deps build run test bench clean
 
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
@@ -25,6 +25,17 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Speed figures (never part of `make test`): planar statics at 10^4 .. 10^6 elements and
+# 10 modes at 10^4, medians of 3 runs, JSON in out/bench/.
+bench: build
+	mkdir -p out/bench
+	for n in 10000 100000 1000000; do \
+	  ./$(BUILD)/beamrotor bench --kind planar --elements $$n --modes 0 --repeat 3 \
+	    --json out/bench/planar_static_$$n.json || exit 1; \
+	done
+	./$(BUILD)/beamrotor bench --kind planar --elements 10000 --modes 10 --repeat 3 \
+	  --json out/bench/planar_modal_10000.json
 
 clean:
 	rm -rf $(BUILD) out

@@ -52,6 +52,22 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       "check", "Solve a deck and compare it with its closed forms; exits 3 if any check fails.");
   addDeckOptions(*checkCmd, check);
 
+  BenchOptions bench;
+  std::string benchJsonPath;
+  CLI::App* benchCmd = app.add_subcommand(
+      "bench", "Time a standard model (medians of repeated runs) and report its accuracy "
+               "against the exact reference.");
+  benchCmd->add_option("--kind", bench.kind, "standard model: planar")
+      ->check(CLI::IsMember({"planar"}));
+  benchCmd->add_option("--elements", bench.elements, "element count (whole spans of 10)")
+      ->check(CLI::Range(10, 100000000));
+  benchCmd->add_option("--modes", bench.modes, "lowest modes to compute (0: statics only)")
+      ->check(CLI::Range(0, 1000));
+  benchCmd->add_option("--repeat", bench.repeat, "runs; times are medians")
+      ->check(CLI::Range(1, 1000));
+  benchCmd->add_option("--json", benchJsonPath, "also write the figures as JSON")
+      ->type_name("FILE");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -62,6 +78,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
 
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
+    if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out);
     return checkCommand(check, out, err);
   } catch (const std::exception& e) {
     err << "beamrotor: internal error: " << e.what() << "\n";

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include "fem/Stopwatch.hpp"
@@ -124,6 +125,18 @@ int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& e
     const int failed = printChecks(out, s.deck, runs, labels);
     return int(failed > 0 ? kChecksFailed : kOk);
   });
+}
+
+int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::ostream& out) {
+  const BenchReport report = runBench(options);
+  out << benchTable(report);
+  if (!jsonPath.empty()) {
+    std::ofstream json(jsonPath);
+    json << benchJson(report) << "\n";
+    if (!json) throw std::runtime_error("cannot write " + jsonPath);
+    out << "json: " << jsonPath << "\n";
+  }
+  return kOk;
 }
 
 }  // namespace beamrotor::cli

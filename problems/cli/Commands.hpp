@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 
+#include "problems/bench/Bench.hpp"
 #include "problems/deck/Study.hpp"
 
 namespace beamrotor::cli {
@@ -19,5 +20,8 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
 
 /// `beamrotor check`: solve and print the checks; kChecksFailed when any fails.
 int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err);
+
+/// `beamrotor bench`: prints the benchmark table; writes its JSON to jsonPath when given.
+int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::ostream& out);
 
 }  // namespace beamrotor::cli
