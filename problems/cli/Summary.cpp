@@ -76,6 +76,15 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                       22);
     out << "\n";
   }
+  if (!r.contacts.empty()) {
+    out << "  contacts (after " << r.activeSetIterations << " active-set solves):\n";
+    for (const ContactState& k : r.contacts)
+      out << "    " << padded(k.name, 12)
+          << (k.active ? "closed, " + std::string(isRotation(k.dof) ? "moment " : "force ") +
+                             formatValue(k.force) + " " + (isRotation(k.dof) ? "N m" : "N")
+                       : "open, gap " + formatValue(k.gap) + " " + motionUnit(k.dof))
+          << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
+  }
 }
 
 void printModal(std::ostream& out, const AnalysisOutcome& a) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -52,6 +53,17 @@ struct DeckSpring {
   Dof dof = Dof::uy;
   double k = 0;         ///< N/m or N m/rad
   double c = 0;         ///< N s/m or N m s/rad
+  DeckPlace place;
+};
+
+/// A one-dof stop against the fixed frame (fem ContactConstraint): the dof stays within
+/// [lower, upper]; a missing bound is infinite.
+struct DeckContact {
+  std::string name;
+  std::string point;
+  Dof dof = Dof::uy;
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
   DeckPlace place;
 };
 
@@ -125,6 +137,7 @@ struct Deck {
   std::vector<DeckPoint> points;     ///< including the automatic "start" and "end"
   std::vector<DeckSupport> supports;
   std::vector<DeckSpring> springs;
+  std::vector<DeckContact> contacts;
   std::vector<DeckMass> masses;
   std::vector<DeckHinge> hinges;
   std::vector<DeckLoad> loads;

@@ -153,11 +153,8 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   deck.stem = source.stem;
   reader::Context c{Field::root(source.root, source.path), deck, {}, {}, {}};
 
-  // 1. Top-level keys; contact constraints are reserved for a later issue.
+  // 1. Top-level keys.
   c.root.allowOnly(reader::kTopKeys, "the deck");
-  if (auto contacts = c.root.get("contacts"))
-    contacts->fail("contact constraints are not supported yet (planned for a later issue); "
-                   "remove this section or model the contact as a support or spring");
   if (auto title = c.root.get("title"); title && !title->isNull()) deck.title = title->text();
 
   // 2. Numbers everything else may use.

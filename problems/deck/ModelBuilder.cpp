@@ -95,6 +95,10 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
       else
         model->add<Spring>(a, NodeDof{model->node(s.toPoint), s.dof}, s.k, s.c);
     });
+  for (const DeckContact& k : deck.contacts)
+    at(deck, k.place, [&] {
+      model->addContact({k.name, model->node(k.point), k.dof, k.lower, k.upper});
+    });
   for (const DeckMass& m : deck.masses)
     at(deck, m.place, [&] {
       model->add<PointInertia>(model->node(m.point), deck.dofs, m.m, m.Jp, m.Jd,

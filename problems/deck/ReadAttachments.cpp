@@ -116,6 +116,29 @@ void readSprings(Context& c) {
   }
 }
 
+void readContacts(Context& c) {
+  auto contacts = block(c, "contacts");
+  if (!contacts) return;
+  std::vector<std::string> names;
+  for (const Field& f : contacts->items()) {
+    f.allowOnly({"name", "at", "dof", "min", "max"}, "a contact");
+    DeckContact k;
+    k.place = f.place();
+    k.point = c.point(f.require("at")).name;
+    const Field name = f.require("name");
+    k.name = name.name();
+    claimName(name, k.name, names, "a contact");
+    k.dof = c.dof(f.require("dof"));
+    const auto lower = f.get("min"), upper = f.get("max");
+    if (!lower && !upper) f.fail("a contact needs a bound: min, max or both");
+    if (lower) k.lower = lower->number(c.evaluator);
+    if (upper) k.upper = upper->number(c.evaluator);
+    if (lower && upper && !(k.lower < k.upper))
+      upper->fail("max must exceed min (" + std::to_string(k.lower) + ")");
+    c.deck.contacts.push_back(std::move(k));
+  }
+}
+
 void readMasses(Context& c) {
   auto masses = block(c, "masses");
   if (!masses) return;
@@ -238,6 +261,7 @@ void readLoads(Context& c) {
 void readAttachments(Context& c) {
   readSupports(c);
   readSprings(c);
+  readContacts(c);
   readMasses(c);
   readHinges(c);
   readLoads(c);

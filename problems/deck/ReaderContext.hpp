@@ -39,7 +39,7 @@ void readMaterials(Context& c);
 void readSections(Context& c);
 /// Segments and points (plus the automatic "start" and "end").
 void readLine(Context& c);
-/// Supports, springs, masses, hinges and loads.
+/// Supports, springs, contacts, masses, hinges and loads.
 void readAttachments(Context& c);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);

@@ -230,3 +230,37 @@ loads:
     CHECK(relError(tip("euler-bernoulli"), -bending) < kExact);
   }
 }
+
+TEST_SUITE("deck features") {
+  TEST_CASE("contacts: a cantilever tip over a floor closes past P = 3 E I gap / L^3") {
+    // Closing load of a 2 m, D = 40 mm steel cantilever over a 2 mm gap: 3 E I g / L^3.
+    const double gap = 0.002, closing = 3 * E * I * gap / (L * L * L);
+    REQUIRE(closing > 10);  // 18.85 N: 10 N stays open, 40 N closes (loads exact in text)
+    for (double load : {10.0, 40.0}) {
+      CAPTURE(load);
+      const std::string deck = kSteelRod + R"(
+segments:
+  - {length: L, section: rod, elements: 4}
+supports:
+  - {name: root, at: start, fix: clamped}
+contacts:
+  - {name: floor, at: end, dof: uy, min: -0.002}
+loads:
+  - {type: point, at: end, fy: -)" + std::to_string(load) + R"(}
+analyses:
+  - {type: static}
+)";
+      const RunResult run = solveText(deck);
+      const StaticResult& s = *run.analyses.at(0).statics;
+      REQUIRE(s.contacts.size() == 1);
+      if (load < closing) {
+        CHECK_FALSE(s.contacts[0].active);
+        CHECK(std::abs(s.contacts[0].gap - (gap - load / (3 * E * I / (L * L * L)))) <
+              kExact * gap);
+      } else {
+        CHECK(s.contacts[0].active);
+        CHECK(std::abs(s.contacts[0].force - (load - closing)) < kExact * load);
+      }
+    }
+  }
+}
