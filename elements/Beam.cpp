@@ -201,6 +201,14 @@ std::string Beam::kind() const {
   return "beam";
 }
 
+std::array<double, 2> Beam::shearParameters() const {
+  if (options_.theory != BeamTheory::timoshenko) return {0, 0};
+  const Section& s = *section_;
+  const double GAL2 = s.material.G * s.A * L_ * L_;
+  return {s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * GAL2) : 0,
+          s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * GAL2) : 0};
+}
+
 Matrix12 Beam::localStiffness() const {
   const Section& s = *section_;
   const double L = L_, G = s.material.G;
@@ -215,9 +223,7 @@ Matrix12 Beam::localStiffness() const {
     place(K, kPlaneXY, linearStiffness(s.EIz(), s.kappaY * G * s.A, L, reduced));
     place(K, kPlaneXZ, flipRotations(linearStiffness(s.EIy(), s.kappaZ * G * s.A, L, reduced)));
   } else {
-    const bool shear = t == BeamTheory::timoshenko;
-    const double phiY = shear && s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * G * s.A * L * L) : 0;
-    const double phiZ = shear && s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * G * s.A * L * L) : 0;
+    const auto [phiY, phiZ] = shearParameters();
     place(K, kPlaneXY, hermiteStiffness(s.EIz(), phiY, L));
     place(K, kPlaneXZ, flipRotations(hermiteStiffness(s.EIy(), phiZ, L)));
   }
@@ -244,10 +250,7 @@ Matrix12 Beam::localMass() const {
     place(M, kPlaneXY, linearMass(rhoA, rhoIz, L));
     place(M, kPlaneXZ, linearMass(rhoA, rhoIy, L));
   } else {
-    const bool shear = t == BeamTheory::timoshenko;
-    const double G = s.material.G;
-    const double phiY = shear && s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * G * s.A * L * L) : 0;
-    const double phiZ = shear && s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * G * s.A * L * L) : 0;
+    const auto [phiY, phiZ] = shearParameters();
     place(M, kPlaneXY, hermiteMass(rhoA, rhoIz, phiY, L));
     place(M, kPlaneXZ, flipRotations(hermiteMass(rhoA, rhoIy, phiZ, L)));
   }
@@ -271,15 +274,15 @@ Vector12 Beam::localLoad() const {
   return f;
 }
 
-void Beam::condense(Matrix12* K, Matrix12* M, Vector12* f) const {
+void Beam::condense(Matrix12& K, Matrix12* M, Vector12* f) const {
   if (released_.empty()) return;
   // Kept dofs a, released dofs b: u_b = Kbb^-1 (f_b - Kba u_a), so with T = [I; -Kbb^-1 Kba]
   // the condensed matrices are T^T K T (= Kaa - Kab Kbb^-1 Kba), T^T M T and T^T f.
   const int nb = int(released_.size());
   Eigen::MatrixXd Kbb(nb, nb), Kba(nb, 12);
   for (int i = 0; i < nb; ++i) {
-    Kba.row(i) = K->row(released_[i]);
-    for (int j = 0; j < nb; ++j) Kbb(i, j) = (*K)(released_[i], released_[j]);
+    Kba.row(i) = K.row(released_[i]);
+    for (int j = 0; j < nb; ++j) Kbb(i, j) = K(released_[i], released_[j]);
   }
   Eigen::MatrixXd X = Kbb.ldlt().solve(Kba);  // Kbb^-1 Kba (released columns give identity)
   Matrix12 T = Matrix12::Identity();
@@ -287,7 +290,7 @@ void Beam::condense(Matrix12* K, Matrix12* M, Vector12* f) const {
   for (int i = 0; i < nb; ++i) T(released_[i], released_[i]) = 0;
   // Rows of T for released dofs express them through the kept ones; their own columns vanish.
   for (int i = 0; i < nb; ++i) T.col(released_[i]).setZero();
-  if (K) *K = T.transpose() * (*K) * T;
+  K = T.transpose() * K * T;
   if (M) *M = T.transpose() * (*M) * T;
   if (f) *f = T.transpose() * (*f);
 }
@@ -301,7 +304,7 @@ ElementMatrix Beam::toCarried(const Matrix12& global) const {
 
 ElementMatrix Beam::stiffness() const {
   Matrix12 K = localStiffness();
-  condense(&K, nullptr, nullptr);
+  condense(K, nullptr, nullptr);
   return toCarried(toGlobal(K, R_));
 }
 
@@ -309,7 +312,7 @@ ElementMatrix Beam::mass() const {
   Matrix12 M = localMass();
   if (!released_.empty()) {
     Matrix12 K = localStiffness();
-    condense(&K, &M, nullptr);
+    condense(K, &M, nullptr);
   }
   return toCarried(toGlobal(M, R_));
 }
@@ -333,10 +336,7 @@ Matrix12 Beam::localGyroscopic() const {
     return G;
   }
   const BeamTheory t = options_.theory;
-  const bool shear = t == BeamTheory::timoshenko;
-  const double Gm = s.material.G;
-  const double phiY = shear && s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * Gm * s.A * L * L) : 0;
-  const double phiZ = shear && s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * Gm * s.A * L * L) : 0;
+  const auto [phiY, phiZ] = shearParameters();
   // rz = Nz (v1, rz1, v2, rz2); the x-z plane interpolates theta = -ry from (w1, -ry1, w2,
   // -ry2), so ry = -N (w1, -ry1, w2, -ry2). Rotation shapes are quadratic: 3 Gauss points
   // integrate the products exactly.
@@ -364,7 +364,7 @@ ElementMatrix Beam::gyroscopic() const {
   if (!released_.empty()) {
     // Released rotations follow the kept dofs as in the mass matrix: G -> T^T G T.
     Matrix12 K = localStiffness();
-    condense(&K, &G, nullptr);
+    condense(K, &G, nullptr);
   }
   return toCarried(toGlobal(G, R_));
 }
@@ -373,7 +373,7 @@ ElementVector Beam::load() const {
   if (qLocal_.isZero()) return {};
   Matrix12 K = localStiffness();
   Vector12 f = localLoad();
-  condense(&K, nullptr, &f);
+  condense(K, nullptr, &f);
   Vector12 g;
   for (int i = 0; i < 4; ++i) g.segment<3>(3 * i) = R_.transpose() * f.segment<3>(3 * i);
   ElementVector out(count_);
@@ -393,7 +393,7 @@ SectionForces Beam::sectionForces(const ElementVector& u, double s) const {
   // Forces the nodes exert on the element (local frame), then equilibrium of the part [0, x].
   Matrix12 K = localStiffness();
   Vector12 f = localLoad();
-  condense(&K, nullptr, &f);
+  condense(K, nullptr, &f);
   const Vector12 F = K * toLocal(u) - f;
   const double x = s * L_;
   const Eigen::Vector3d& q = qLocal_;

@@ -79,8 +79,12 @@ class Beam : public LineElement {
   Vector12 localLoad() const;
 
  private:
-  /// Applies the end releases to local K, M and load (static condensation).
-  void condense(Matrix12* K, Matrix12* M, Vector12* f) const;
+  /// Applies the end releases to local K and, when given, M and the load (static
+  /// condensation; K is needed for all three).
+  void condense(Matrix12& K, Matrix12* M, Vector12* f) const;
+  /// Shear parameters Phi = 12 E I / (kappa G A L^2) for bending about local z and local y;
+  /// zero unless the theory is the interdependent-interpolation Timoshenko element.
+  std::array<double, 2> shearParameters() const;
   /// Global 12 x 12 -> the carried dofs only.
   ElementMatrix toCarried(const Matrix12& local) const;
   Vector12 toLocal(const ElementVector& u) const;

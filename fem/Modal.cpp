@@ -66,8 +66,9 @@ ModalResult solveModes(const Model& model, const ModalOptions& options) {
   // 3. Describe each mode: frequency, effective masses, energy share per dof kind.
   std::array<Eigen::VectorXd, 3> Mr;
   for (int k = 0; k < 3; ++k) {
-    Mr[k] = M * unitTranslation(dofs, kAllDofs[k]);
-    result.totalMass[k] = unitTranslation(dofs, kAllDofs[k]).dot(Mr[k]);
+    const Eigen::VectorXd r = unitTranslation(dofs, kAllDofs[k]);
+    Mr[k] = M * r;
+    result.totalMass[k] = r.dot(Mr[k]);
   }
   for (int m = 0; m < int(pairs.values.size()); ++m) {
     Mode mode;
