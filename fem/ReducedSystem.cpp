@@ -32,22 +32,24 @@ Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs,
   return rhs;
 }
 
-NodalField toNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+namespace {
+/// Lays out the first `count` entries of a vector ordered by equation number per node.
+NodalField layOut(const Model& model, const DofMap& dofs, const Eigen::VectorXd& v, int count) {
   NodalField field = NodalField::Zero(model.nodeCount(), kDofKinds);
-  for (int eq = 0; eq < dofs.size(); ++eq) {
+  for (int eq = 0; eq < count; ++eq) {
     const NodeDof& d = dofs.dofOf(eq);
-    field(d.node, dofIndex(d.dof)) = u[eq];
+    field(d.node, dofIndex(d.dof)) = v[eq];
   }
   return field;
 }
+}  // namespace
+
+NodalField toNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+  return layOut(model, dofs, u, dofs.size());
+}
 
 NodalField freeToNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& uf) {
-  NodalField field = NodalField::Zero(model.nodeCount(), kDofKinds);
-  for (int eq = 0; eq < dofs.freeCount(); ++eq) {
-    const NodeDof& d = dofs.dofOf(eq);
-    field(d.node, dofIndex(d.dof)) = uf[eq];
-  }
-  return field;
+  return layOut(model, dofs, uf, dofs.freeCount());
 }
 
 SystemSize systemSize(const Model& model, const DofMap& dofs, const SparseMatrix& Kff,

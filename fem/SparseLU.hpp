@@ -6,6 +6,7 @@
 #include <Eigen/UmfPackSupport>
 
 #include "fem/Assembly.hpp"
+#include "fem/Tolerances.hpp"
 
 namespace beamrotor {
 
@@ -22,8 +23,5 @@ class SparseLU : public Eigen::UmfPackLU<SparseMatrix> {
   }
 };
 
-/// rcond below this means the matrix is singular to working precision: its pivots span more
-/// than the ~15 decimal digits a double carries, so a solve returns round-off, not an answer.
-inline constexpr double kSingularRcond = 1e-14;
 
 }  // namespace beamrotor

@@ -4,12 +4,13 @@
 
 #include "fem/Model.hpp"
 #include "fem/Results.hpp"
+#include "fem/Tolerances.hpp"
 
 namespace beamrotor {
 
 struct StaticOptions {
   /// Reject the solve when UMFPACK's rcond falls below this (see kSingularRcond).
-  double singularRcond = 1e-14;
+  double singularRcond = kSingularRcond;
 };
 
 /// Solves model's statics. Throws UnsupportedStructure naming the dofs that can move freely,
