@@ -43,17 +43,17 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   if (!held.empty()) heldMatrix = holdDofs(K_, held);
   const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
   if (!analysed_) {
-    lu_.analyzePattern(A);
+    solver_.analyzePattern(A);
     analysed_ = true;
   }
-  lu_.factorize(A);
-  rcond_ = lu_.rcond();
-  if (!lu_.healthy(singularRcond)) {
+  solver_.factorize(A);
+  rcond_ = solver_.rcond();
+  if (!solver_.healthy(singularRcond)) {
     const auto moving = zeroEnergyDofs(A, dofs_);
     if (!moving.empty()) throwUnsupported(model_, moving, "static analysis");
     std::ostringstream msg;
-    msg << "static analysis: the stiffness matrix is singular to working precision (UMFPACK "
-           "rcond = " << rcond_ << "); look for extremely stiff springs next to soft members, "
+    msg << "static analysis: the stiffness matrix is singular to working precision ("
+        << solver_.methodName() << " rcond = " << rcond_ << "); look for extremely stiff springs next to soft members, "
            "or a mesh refined far past what double precision resolves";
     throw SolveError(msg.str());
   }
@@ -67,7 +67,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     b -= K_ * uHeld;
     for (const HeldDof& h : held) b[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
   }
-  u.head(nf) = lu_.solve(b);
+  u.head(nf) = solver_.solve(b);
   if (!u.allFinite()) throw SolveError("static analysis: the solution is not finite");
   solveSeconds_ += clock.lap();
   return u;

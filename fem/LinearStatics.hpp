@@ -10,7 +10,7 @@
 #include "fem/Assembly.hpp"
 #include "fem/Model.hpp"
 #include "fem/Results.hpp"
-#include "fem/SparseLU.hpp"
+#include "fem/LinearSolver.hpp"
 
 namespace beamrotor {
 
@@ -35,7 +35,9 @@ class LinearStatics {
   const DofMap& dofs() const { return dofs_; }
   const SparseMatrix& stiffness() const { return K_; }
   double rcond() const { return rcond_; }
-  double factorEntries() const { return lu_.factorEntries(); }
+  double factorEntries() const { return solver_.factorEntries(); }
+  /// The direct method chosen for K ("CHOLMOD LDL'" when K is symmetric).
+  std::string solverName() const { return solver_.methodName(); }
   /// Seconds spent factorising and solving so far.
   double factorSeconds() const { return factorSeconds_; }
   double solveSeconds() const { return solveSeconds_; }
@@ -46,7 +48,7 @@ class LinearStatics {
   SparseAssembler assembler_;
   SparseMatrix K_;
   Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
-  SparseLU lu_;
+  LinearSolver solver_;
   bool analysed_ = false;
   double rcond_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;
 };

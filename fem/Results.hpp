@@ -28,7 +28,7 @@ struct SystemSize {
   int dofs = 0;          ///< all dofs, free and constrained
   int freeDofs = 0;
   long long nonzeros = 0;  ///< stored entries of the free-free stiffness block
-  double factorEntries = 0;  ///< entries of the LU factors (fill-in)
+  double factorEntries = 0;  ///< entries of the factor(s) (fill-in)
 };
 
 /// One reaction component of a named support (N or N m, global frame).
@@ -56,7 +56,8 @@ struct StaticResult {
   std::vector<ReactionComponent> reactions; ///< every constrained dof, in support order
   std::vector<ContactState> contacts;       ///< settled contact states, in model order
   int activeSetIterations = 0;              ///< linear solves the contact loop needed
-  double rcond = 0;                         ///< UMFPACK's reciprocal condition estimate
+  double rcond = 0;                         ///< the solver's reciprocal condition estimate
+  std::string solver;                       ///< the direct method used (LinearSolver)
   SystemSize size;
   SolveTimings time;
 

@@ -37,6 +37,7 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
       result.reactions.push_back({s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof)]});
   result.displacement = toNodalField(model, dofs, u);
   result.rcond = system.rcond();
+  result.solver = system.solverName();
   result.size = systemSize(model, dofs, system.stiffness(), system.factorEntries());
   result.time.total = total.lap();
   return result;

@@ -55,7 +55,7 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
   const StaticResult& r = *a.statics;
   char rcond[32];
   std::snprintf(rcond, sizeof rcond, "%.1e", r.rcond);
-  out << "static analysis '" << a.name << "' (UMFPACK rcond " << rcond << ")\n";
+  out << "static analysis '" << a.name << "' (" << r.solver << ", rcond " << rcond << ")\n";
   out << "  reactions (force on the structure; N, N m):\n";
   for (const auto& [support, components] : bySupport(r)) {
     out << "    " << padded(support, 12);

@@ -86,6 +86,7 @@ Json staticJson(const Model& model, const DofMap& dofs, const AnalysisOutcome& a
     out["active_set_iterations"] = r.activeSetIterations;
   }
   out["rcond"] = r.rcond;
+  out["solver"] = r.solver;
   out["time_s"] = r.time.total;
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
   return out;
