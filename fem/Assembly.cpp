@@ -49,6 +49,14 @@ void nodeAdjacency(const Model& model, std::vector<int>& start, std::vector<int>
   adj.resize(out);
 }
 
+/// Position of (row, col) in the value array of a compressed matrix holding that entry.
+int slot(const SparseMatrix& A, int row, int col) {
+  const int* rows = A.innerIndexPtr();
+  const int* first = rows + A.outerIndexPtr()[col];
+  const int* last = rows + A.outerIndexPtr()[col + 1];
+  return int(std::lower_bound(first, last, row) - rows);
+}
+
 }  // namespace
 
 SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
@@ -81,12 +89,6 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
   std::fill_n(pattern_.valuePtr(), nnz, 0.0);
 }
 
-int SparseAssembler::slot(int row, int col) const {
-  const int* rows = pattern_.innerIndexPtr();
-  const int* first = rows + pattern_.outerIndexPtr()[col];
-  const int* last = rows + pattern_.outerIndexPtr()[col + 1];
-  return int(std::lower_bound(first, last, row) - rows);
-}
 
 ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {
   switch (kind) {
@@ -98,8 +100,19 @@ ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {
   return {};
 }
 
-SparseMatrix SparseAssembler::assemble(MatrixKind kind) const {
+SparseMatrix SparseAssembler::assemble(MatrixKind kind) const& {
   SparseMatrix A = pattern_;
+  fill(A, kind);
+  return A;
+}
+
+SparseMatrix SparseAssembler::assemble(MatrixKind kind) && {
+  SparseMatrix A = std::move(pattern_);  // this assembler is not used again
+  fill(A, kind);
+  return A;
+}
+
+void SparseAssembler::fill(SparseMatrix& A, MatrixKind kind) const {
   double* values = A.valuePtr();
   std::array<int, kMaxElementDofs> eq{};
   for (const auto& e : model_.elements()) {
@@ -111,10 +124,9 @@ SparseMatrix SparseAssembler::assemble(MatrixKind kind) const {
     for (int b = 0; b < n; ++b) {
       if (!dofs_.isFree(eq[b])) continue;
       for (int a = 0; a < n; ++a)
-        if (dofs_.isFree(eq[a]) && ke(a, b) != 0.0) values[slot(eq[a], eq[b])] += ke(a, b);
+        if (dofs_.isFree(eq[a]) && ke(a, b) != 0.0) values[slot(A, eq[a], eq[b])] += ke(a, b);
     }
   }
-  return A;
 }
 
 ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u) {

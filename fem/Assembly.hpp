@@ -21,13 +21,15 @@ class SparseAssembler {
   SparseAssembler(const Model& model, const DofMap& dofs);
 
   /// The free-free block of one global matrix (freeCount x freeCount, compressed).
-  SparseMatrix assemble(MatrixKind kind) const;
+  SparseMatrix assemble(MatrixKind kind) const&;
+  /// The same from a temporary assembler: its pattern is filled in place, not copied.
+  SparseMatrix assemble(MatrixKind kind) &&;
   /// Number of stored entries of the pattern.
   long long patternSize() const { return pattern_.nonZeros(); }
 
  private:
-  /// Position of (row, col) in the pattern's value array.
-  int slot(int row, int col) const;
+  /// Adds every element's matrix of one kind into A, which has the pattern's structure.
+  void fill(SparseMatrix& A, MatrixKind kind) const;
 
   const Model& model_;
   const DofMap& dofs_;

@@ -25,8 +25,9 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
 }  // namespace
 
 LinearStatics::LinearStatics(const Model& model)
-    : model_(model), dofs_(model), assembler_(model, dofs_) {
-  K_ = assembler_.assemble(MatrixKind::stiffness);
+    : model_(model), dofs_(model) {
+  // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
+  K_ = SparseAssembler(model, dofs_).assemble(MatrixKind::stiffness);
   nodalLoads_ = nodalLoadVector(model, dofs_);
   uPrescribed_ = prescribedValues(model, dofs_);
   rhs_ = reducedRightHandSide(model, dofs_, loadVector(model, dofs_), uPrescribed_);

@@ -45,7 +45,6 @@ class LinearStatics {
  private:
   const Model& model_;
   DofMap dofs_;
-  SparseAssembler assembler_;
   SparseMatrix K_;
   Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
   LinearSolver solver_;
