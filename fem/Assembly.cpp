@@ -107,7 +107,8 @@ SparseMatrix SparseAssembler::assemble(MatrixKind kind) const& {
 }
 
 SparseMatrix SparseAssembler::assemble(MatrixKind kind) && {
-  SparseMatrix A = std::move(pattern_);  // this assembler is not used again
+  SparseMatrix A;
+  A.swap(pattern_);  // this assembler is not used again (Eigen 3.4 sparse has no move)
   fill(A, kind);
   return A;
 }

@@ -20,6 +20,35 @@ double SparseLDLT::factorEntries() const {
   return entries;
 }
 
+long long lowerEnvelope(const SparseMatrix& A) {
+  long long entries = 0;
+  for (int j = 0; j < A.cols(); ++j) {
+    const int begin = A.outerIndexPtr()[j], end = A.outerIndexPtr()[j + 1];
+    // Column j's first row is row j's first column (symmetric pattern); rows are sorted.
+    const int first = begin < end ? std::min(A.innerIndexPtr()[begin], j) : j;
+    entries += j - first + 1;
+  }
+  return entries;
+}
+
+void SparseLDLT::analyzePattern(const SparseMatrix& A) {
+  const SparseMatrix::Index lowerEntries = (A.nonZeros() + A.rows()) / 2;
+  const bool keepOrder = double(lowerEnvelope(A)) <= 1.2 * double(lowerEntries);
+  cholmod_common& c = cholmod();
+  // No room for later updates of the factor (CHOLMOD reserves 5 entries a column by
+  // default, about a third of the factor's memory here): factors are only ever recomputed.
+  c.grow2 = 0;
+  if (keepOrder) {
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_NATURAL;
+    c.postorder = false;
+  } else {
+    c.nmethods = 0;  // CHOLMOD's default: AMD, and METIS when AMD leaves much fill
+    c.postorder = true;
+  }
+  Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper>::analyzePattern(A);
+}
+
 bool isNumericallySymmetric(const SparseMatrix& A, double relTol) {
   if (A.rows() != A.cols()) return false;
   const int* colStart = A.outerIndexPtr();

@@ -14,7 +14,7 @@
 namespace beamrotor {
 
 /// CHOLMOD's simplicial LDL' plus what Eigen's wrapper keeps to itself.
-class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lower> {
+class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper> {
  public:
   /// Quiet: a zero pivot is reported through info() and rcond(), never printed.
   SparseLDLT() { cholmod().print = 0; }
@@ -22,7 +22,15 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lowe
   double rcond() const;
   /// Entries in the factor L (including its unit diagonal, which holds D).
   double factorEntries() const;
+  /// Symbolic analysis. When the matrix as numbered already has (almost) no room for fill,
+  /// as a line of beams numbered node by node does, its own order is kept and the fill-
+  /// reducing ordering (AMD/METIS), which would cost more than the factorisation, is skipped.
+  void analyzePattern(const SparseMatrix& A);
 };
+
+/// Entries in the lower envelope of a structurally symmetric A: for each row, from its first
+/// entry to the diagonal. Cholesky in A's own order fills at most this (George and Liu 1981).
+long long lowerEnvelope(const SparseMatrix& A);
 
 /// True when A (structurally symmetric, as every assembled pattern is) equals its transpose to
 /// within `relTol` of the largest entry in absolute value.

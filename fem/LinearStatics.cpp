@@ -27,7 +27,7 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
 LinearStatics::LinearStatics(const Model& model)
     : model_(model), dofs_(model) {
   // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
-  K_ = SparseAssembler(model, dofs_).assemble(MatrixKind::stiffness);
+  SparseAssembler(model, dofs_).assemble(MatrixKind::stiffness).swap(K_);
   nodalLoads_ = nodalLoadVector(model, dofs_);
   uPrescribed_ = prescribedValues(model, dofs_);
   rhs_ = reducedRightHandSide(model, dofs_, loadVector(model, dofs_), uPrescribed_);

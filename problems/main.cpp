@@ -2,8 +2,10 @@
 // `--version`. Everything lives in problems/cli; this only connects it to the process.
 #include <iostream>
 
+#include "fem/HeapReserve.hpp"
 #include "problems/cli/App.hpp"
 
 int main(int argc, char** argv) {
+  beamrotor::keepFreedMemory();
   return beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
 }

