@@ -49,6 +49,16 @@ void SparseLDLT::analyzePattern(const SparseMatrix& A) {
   Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper>::analyzePattern(A);
 }
 
+int SparseLDLT::negativePivots() const {
+  // Simplicial LDL': each column of L starts with its diagonal entry, which holds D(j, j).
+  const cholmod_factor& L = *m_cholmodFactor;
+  const int* start = static_cast<const int*>(L.p);
+  const double* x = static_cast<const double*>(L.x);
+  int negative = 0;
+  for (std::size_t j = 0; j < L.n; ++j) negative += x[start[j]] < 0;
+  return negative;
+}
+
 bool isNumericallySymmetric(const SparseMatrix& A, double relTol) {
   if (A.rows() != A.cols()) return false;
   const int* colStart = A.outerIndexPtr();

@@ -22,6 +22,9 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   double rcond() const;
   /// Entries in the factor L (including its unit diagonal, which holds D).
   double factorEntries() const;
+  /// Negative entries of D. By Sylvester's law of inertia, for A = K - sigma M this is the
+  /// number of eigenvalues of K x = lambda M x below sigma (M positive definite).
+  int negativePivots() const;
   /// Symbolic analysis. When the matrix as numbered already has (almost) no room for fill,
   /// as a line of beams numbered node by node does, its own order is kept and the fill-
   /// reducing ordering (AMD/METIS), which would cost more than the factorisation, is skipped.

@@ -3,11 +3,14 @@
 #include <arpack/arpack.hpp>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <functional>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
 #include "fem/Errors.hpp"
 #include "fem/SparseLU.hpp"
+#include "fem/SturmShift.hpp"
 
 namespace beamrotor {
 
@@ -79,19 +82,82 @@ EigenPairs denseEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
   return nearest(lambda, X, count, sigma);
 }
 
+/// (K - shift M)^-1 applied to vectors, from whichever factorisation suits the shift.
+struct ShiftedInverse {
+  double shift = 0;
+  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> solve;
+  double factorEntries = 0;
+};
+
+/// Rayleigh quotient after a few steps of inverse iteration with a factor of K - sigma M:
+/// an upper bound on the lowest eigenvalue, close to it (within the cluster it lies in).
+double rayleighUpperBound(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
+  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(K.rows(), 1.0, 2.0);
+  for (int step = 0; step < 4; ++step) {
+    x = factor.solve(M * x);
+    x /= x.norm();
+  }
+  return x.dot(K * x) / x.dot(M * x);
+}
+
+/// Below the spectrum (the usual request: the lowest modes), LDL' at a shift moved up to just
+/// below the lowest eigenvalue by Sturm counts; inside it, UMFPACK's LU at sigma itself.
+/// `counter` has factorised K - sigma M already; `below` is its count there.
+ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatrix& K,
+                              const SparseMatrix& M, int count, double sigma) {
+  ShiftedInverse op;
+  if (below == 0) {
+    const double upper = rayleighUpperBound(counter.factor(), K, M);
+    op.shift = shiftBelowLowest(counter, sigma, upper, count);
+    auto ldlt = std::make_shared<SparseLDLT>();
+    ldlt->compute(SparseMatrix(K - op.shift * M));
+    if (ldlt->info() == Eigen::Success && ldlt->rcond() > kSingularRcond) {
+      op.factorEntries = ldlt->factorEntries();
+      op.solve = [ldlt](const Eigen::VectorXd& b) { return Eigen::VectorXd(ldlt->solve(b)); };
+      return op;
+    }
+  }
+  op.shift = sigma;
+  auto lu = std::make_shared<SparseLU>();
+  lu->compute(SparseMatrix(K - sigma * M));
+  if (!lu->healthy(kSingularRcond)) throw SolveError(singularShiftMessage(sigma, lu->rcond()));
+  op.factorEntries = lu->factorEntries();
+  op.solve = [lu](const Eigen::VectorXd& b) { return Eigen::VectorXd(lu->solve(b)); };
+  return op;
+}
+
+/// Throws when a Sturm count finds more eigenvalues below the largest one returned than
+/// were returned below it: Lanczos missed a mode (possible with multiple eigenvalues).
+void checkNoneMissed(SturmCounter& counter, const Eigen::VectorXd& values, double shift) {
+  if (values.size() == 0) return;
+  const double top = values.maxCoeff();
+  const double justBelow = top - 1e-9 * std::abs(top - shift) - 1e-12 * std::abs(top);
+  const int found = int((values.array() < justBelow).count());
+  const int counted = counter.below(justBelow);
+  if (counted > found)
+    throw SolveError("modal analysis: a Sturm count finds " + std::to_string(counted) +
+                     " eigenvalues below " + std::to_string(justBelow) + " rad^2/s^2 but " +
+                     "Lanczos returned " + std::to_string(found) +
+                     "; ask for more modes or give a shift");
+}
+
 }  // namespace
 
 EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count,
                                double sigma) {
   const int n = int(K.rows());
   if (count <= 0 || n == 0) return {};
-  if (n <= kDenseLimit || count >= n - 1) return denseEigenpairs(K, M, count, sigma);
+  if (n <= kDenseLimit || count >= n - 1) {
+    EigenPairs dense = denseEigenpairs(K, M, count, sigma);
+    dense.shiftUsed = sigma;
+    return dense;
+  }
 
-  // 1. Factorise K - sigma M once.
-  const SparseMatrix A = K - sigma * M;
-  SparseLU lu;
-  lu.compute(A);
-  if (!lu.healthy(kSingularRcond)) throw SolveError(singularShiftMessage(sigma, lu.rcond()));
+  // 1. Factorise K - shift M once, with the shift moved up to the lowest eigenvalues when
+  //    sigma lies below all of them.
+  SturmCounter counter(K, M);
+  const int belowSigma = counter.below(sigma);
+  const ShiftedInverse op = shiftedInverse(counter, belowSigma, K, M, count, sigma);
 
   // 2. Reverse-communication Lanczos: OP = (K - sigma M)^-1 M, inner product B = M.
   const a_int nev = count;
@@ -115,10 +181,10 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
     Eigen::Map<Eigen::VectorXd> x(&workd[ipntr[0] - 1], n), out(&workd[ipntr[1] - 1], n);
     if (ido == -1) {
       y = M * x;
-      out = lu.solve(y);
+      out = op.solve(y);
     } else if (ido == 1) {
       Eigen::Map<Eigen::VectorXd> Bx(&workd[ipntr[2] - 1], n);
-      out = lu.solve(Bx);
+      out = op.solve(Bx);
     } else if (ido == 2) {
       out = M * x;
     } else {
@@ -136,15 +202,18 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
   std::vector<a_int> select(ncv);
   Eigen::VectorXd d(nev);
   Eigen::MatrixXd z(n, nev);
-  arpack::seupd(1, arpack::howmny::ritz_vectors, select.data(), d.data(), z.data(), n, sigma,
+  arpack::seupd(1, arpack::howmny::ritz_vectors, select.data(), d.data(), z.data(), n, op.shift,
                 arpack::bmat::generalized, n, arpack::which::largest_magnitude, nev, tol,
                 resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(), workd.data(),
                 workl.data(), lworkl, info);
   if (info != 0)
     throw SolveError("modal analysis: ARPACK dseupd failed with info = " + std::to_string(info));
   for (int k = 0; k < nev; ++k) z.col(k) /= std::sqrt(z.col(k).dot(M * z.col(k)));
-  EigenPairs out = nearest(d, z, count, sigma);
-  out.factorEntries = lu.factorEntries();
+  // The shift was only moved within [sigma, lambda_1): nearest it is still nearest sigma.
+  EigenPairs out = nearest(d, z, count, op.shift);
+  if (belowSigma == 0) checkNoneMissed(counter, out.values, op.shift);
+  out.factorEntries = op.factorEntries;
+  out.shiftUsed = op.shift;
   return out;
 }
 

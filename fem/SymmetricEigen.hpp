@@ -1,6 +1,8 @@
 // Eigenpairs of the generalised symmetric problem K x = lambda M x nearest a shift sigma:
 // ARPACK's implicitly restarted Lanczos (dsaupd/dseupd) in shift-invert mode 3, with
-// K - sigma M factorised once by UMFPACK. Small problems go to a dense solver instead, since
+// K - sigma M factorised once: CHOLMOD LDL' at a shift moved up just below the lowest
+// eigenvalue by Sturm counts when sigma lies below them all (fem/SturmShift), UMFPACK LU at
+// sigma otherwise. Small problems go to a dense solver instead, since
 // ARPACK needs more Lanczos vectors than wanted eigenpairs.
 #pragma once
 
@@ -13,7 +15,8 @@ namespace beamrotor {
 struct EigenPairs {
   Eigen::VectorXd values;   ///< ascending
   Eigen::MatrixXd vectors;  ///< M-orthonormal columns
-  double factorEntries = 0; ///< LU fill of K - sigma M (0 for the dense path)
+  double factorEntries = 0; ///< fill of the factor of K - shift M (0 for the dense path)
+  double shiftUsed = 0;     ///< the shift Lanczos ran at (moved up below the lowest eigenvalue)
 };
 
 /// The `count` eigenpairs nearest sigma (for sigma below the spectrum: the lowest ones).
