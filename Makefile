@@ -26,16 +26,25 @@ run: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# Speed figures (never part of `make test`): planar statics at 10^4 .. 10^6 elements and
-# 10 modes at 10^4, medians of 3 runs, JSON in out/bench/.
+# Speed figures (never part of `make test`), side by side with SciPy on the same machine:
+# planar statics at 10^3 .. 10^6 elements and 10 modes at 10^4, medians of 3 runs; JSON,
+# ratios (summary.json) and the scaling chart in out/bench/.
+BENCH_PACKAGES := python3-scipy
+PY             := /usr/bin/python3
 bench: build
+	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
 	mkdir -p out/bench
-	for n in 10000 100000 1000000; do \
+	for n in 1000 10000 100000 1000000; do \
 	  ./$(BUILD)/beamrotor bench --kind planar --elements $$n --modes 0 --repeat 3 \
 	    --json out/bench/planar_static_$$n.json || exit 1; \
+	  $(PY) tests/bench/planar_scipy.py --elements $$n --repeat 3 \
+	    --json out/bench/scipy_static_$$n.json || exit 1; \
 	done
 	./$(BUILD)/beamrotor bench --kind planar --elements 10000 --modes 10 --repeat 3 \
 	  --json out/bench/planar_modal_10000.json
+	$(PY) tests/bench/planar_scipy.py --elements 10000 --modes 10 \
+	  --json out/bench/scipy_modal_10000.json
+	$(PY) tests/bench/compare.py out/bench
 
 clean:
 	rm -rf $(BUILD) out

@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""Side-by-side figures of `make bench`: beamrotor against SciPy on the planar model.
+
+Reads DIR/planar_static_N.json, DIR/scipy_static_N.json (N = 1e3 .. 1e6),
+DIR/planar_modal_10000.json and DIR/scipy_modal_10000.json; prints the table and ratios,
+checks that both give the same answers, fits the log-log slope of beamrotor's static cost
+against N, and writes DIR/summary.json and the chart DIR/planar_static_scaling.{svg,png}.
+Usage: compare.py DIR
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+
+def load(path):
+    with open(path) as fh:
+        return json.load(fh)
+
+
+def slope(xs, ys):
+    """Least-squares slope of log y against log x."""
+    lx, ly = [math.log(x) for x in xs], [math.log(y) for y in ys]
+    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
+
+
+def chart(directory, rows):
+    data = os.path.join(directory, "planar_static_scaling.dat")
+    with open(data, "w") as fh:
+        fh.write("# elements beamrotor_s scipy_s\n")
+        for r in rows:
+            fh.write(f"{r['elements']} {r['beamrotor_s']} {r['scipy_s']}\n")
+    n0, t0 = rows[0]["elements"], rows[0]["beamrotor_s"]
+    for terminal, ext in (("svg size 800,560", "svg"), ("pngcairo size 800,560", "png")):
+        script = f"""
+set terminal {terminal}
+set output '{os.path.join(directory, 'planar_static_scaling.' + ext)}'
+set logscale xy
+set grid
+set key top left
+set xlabel 'elements (planar continuous beam, 3 dofs per node)'
+set ylabel 'model + static solve, s (median)'
+set title 'Static cost against size: beamrotor and SciPy (spsolve)'
+plot '{data}' using 1:2 with linespoints lw 2 title 'beamrotor', \\
+     '{data}' using 1:3 with linespoints lw 2 title 'SciPy', \\
+     {t0}*(x/{n0}) with lines dt 2 lc rgb 'gray' title 'linear cost'
+"""
+        subprocess.run(["gnuplot"], input=script, text=True, check=True)
+
+
+def main():
+    directory = sys.argv[1] if len(sys.argv) > 1 else "out/bench"
+    rows = []
+    for n in (1000, 10000, 100000, 1000000):
+        ours = os.path.join(directory, f"planar_static_{n}.json")
+        theirs = os.path.join(directory, f"scipy_static_{n}.json")
+        if not (os.path.exists(ours) and os.path.exists(theirs)):
+            continue
+        a, b = load(ours), load(theirs)
+        total = a["build_s"] + a["static"]["total_s"]
+        rows.append({"elements": a["elements"], "beamrotor_s": total,
+                     "beamrotor_static_s": a["static"]["total_s"],
+                     "scipy_s": b["static"]["total_s"],
+                     "ratio": b["static"]["total_s"] / total,
+                     "rel_error_static": a["rel_error_static"],
+                     "w_agreement": abs(a["midspan_w"] / b["midspan_w"] - 1)})
+    print("planar static (model + static solve, medians)")
+    print(f"  {'elements':>9} {'beamrotor s':>12} {'SciPy s':>9} {'ratio':>7}"
+          f" {'error vs exact':>15} {'vs SciPy':>9}")
+    for r in rows:
+        print(f"  {r['elements']:>9} {r['beamrotor_s']:>12.4f} {r['scipy_s']:>9.3f}"
+              f" {r['ratio']:>6.1f}x {r['rel_error_static']:>15.1e} {r['w_agreement']:>9.1e}")
+    summary = {"planar_static": rows}
+    if len(rows) >= 2:
+        s = slope([r["elements"] for r in rows], [r["beamrotor_s"] for r in rows])
+        summary["planar_static_slope"] = s
+        print(f"  log-log slope of beamrotor's cost, {rows[0]['elements']} to "
+              f"{rows[-1]['elements']} elements: {s:.2f} (linear: 1)")
+        chart(directory, rows)
+    modal_ours = os.path.join(directory, "planar_modal_10000.json")
+    modal_theirs = os.path.join(directory, "scipy_modal_10000.json")
+    if os.path.exists(modal_ours) and os.path.exists(modal_theirs):
+        a, b = load(modal_ours), load(modal_theirs)
+        fa, fb = a["modal"]["frequencies_hz"], b["modal"]["frequencies_hz"]
+        agreement = max(abs(x / y - 1) for x, y in zip(fa, fb))
+        ratio = b["modal"]["total_s"] / a["modal"]["total_s"]
+        summary["planar_modal"] = {"elements": a["elements"], "modes": len(fa),
+                                   "beamrotor_s": a["modal"]["total_s"],
+                                   "scipy_s": b["modal"]["total_s"], "ratio": ratio,
+                                   "frequency_agreement": agreement}
+        print(f"planar modal, {a['elements']} elements, {len(fa)} modes: beamrotor "
+              f"{a['modal']['total_s']:.3f} s, SciPy eigsh {b['modal']['total_s']:.2f} s, "
+              f"{ratio:.1f}x; frequencies agree to {agreement:.1e}")
+    with open(os.path.join(directory, "summary.json"), "w") as fh:
+        json.dump(summary, fh, indent=2)
+    print(f"figures: {directory}/summary.json, {directory}/planar_static_scaling.svg")
+
+
+if __name__ == "__main__":
+    main()
