@@ -44,6 +44,12 @@ void readAttachments(Context& c);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 
+/// The settings of a transient analysis `f` (a map with type: transient).
+DeckTransient readTransient(const Context& c, const Field& f);
+/// Checks a history quantity against transient `analysis` and evaluates its time.
+void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
+                            const DeckAnalysis& analysis);
+
 /// The beam formulation a field names (euler-bernoulli, timoshenko, ...).
 BeamTheory formulationOf(const Field& f);
 
