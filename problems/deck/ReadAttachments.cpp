@@ -269,10 +269,13 @@ void readAttachments(Context& c) {
   readHinges(c);
   readLoads(c);
   // A model without beams needs something to move and something to hold it.
-  if (c.deck.segments.empty() && (c.deck.masses.empty() || c.deck.springs.empty()))
-    c.root.fail("a model without segments (beams) needs at least one mass and one spring; "
-                "it has " + std::to_string(c.deck.masses.size()) + " masses and " +
-                std::to_string(c.deck.springs.size()) + " springs");
+  if (!c.deck.segments.empty()) return;
+  if (c.deck.masses.empty())
+    block(c, "springs").value_or(c.root).fail(
+        "a model without segments (beams) needs at least one mass (masses:) on its points");
+  if (c.deck.springs.empty())
+    block(c, "masses")->fail("a model without segments (beams) needs at least one spring "
+                             "(springs:) to hold its masses");
 }
 
 }  // namespace beamrotor::reader

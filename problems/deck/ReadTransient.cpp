@@ -192,7 +192,9 @@ DeckTransient readTransient(const Context& c, const Field& f) {
   } else if (cycles || period) {
     t.end = f.require("cycles").positive(ev) * f.require("period").positive(ev);
   } else {
-    f.require("end");  // fails: missing required field 'end'
+    DeckPlace at = f.place();
+    at.field = f.path() + ".end";
+    throw DeckError(f.file(), at, "missing required field 'end' (or 'cycles' and 'period')");
   }
   if (!(t.end / t.dt <= kMaxSteps))
     dt.fail("end / dt asks for " + formatNumber(std::round(t.end / t.dt)) + " steps; at most " +

@@ -212,6 +212,10 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
        << panelLayout(rows, columns, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n"
        << "  set xlabel " << gnuplotText(parameter) << "\n";
+  // Values spread over decades (a stiffness from 1e4 to 1e6) read better on a log axis.
+  const auto values = table.numbers(parameter);
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  if (low != values.end() && *low > 0 && *high >= 30 * *low) body << "  set logscale x\n";
   for (const auto& panel : panels) {
     // Forces in kN (N m in kN m), stresses in MPa, anything else as it is.
     const std::string unit = panel.front()->column.unit;
