@@ -58,7 +58,7 @@ void readAnalyses(Context& c) {
 /// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
 /// returns the name of the analysis it reads.
 std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
-                            const std::optional<Field>& analysisField) {
+                            const std::optional<Field>& analysisField, bool applicable) {
   const Deck& deck = c.deck;
   // 1. The analysis: named, or the first of the right type.
   const DeckAnalysis* analysis = nullptr;
@@ -118,7 +118,7 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
       f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
              c.carriedNames() + ")");
   }
-  if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis);
+  if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
   if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
            "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
@@ -144,14 +144,14 @@ void readChecks(Context& c) {
     } catch (const std::invalid_argument& e) {
       qf.fail(e.what());
     }
-    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"));
-    k.reference = f.require("reference").number(c.evaluator);
-    const Field tol = f.require("tolerance");
-    k.tolerance = tol.positive(c.evaluator);
     if (auto when = f.get("when")) {
       k.condition = when->text();
       k.applicable = when->number(c.evaluator) != 0;
     }
+    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
+    k.reference = f.require("reference").number(c.evaluator);
+    const Field tol = f.require("tolerance");
+    k.tolerance = tol.positive(c.evaluator);
     c.deck.checks.push_back(std::move(k));
   }
 }

@@ -230,7 +230,7 @@ DeckTransient readTransient(const Context& c, const Field& f) {
 }
 
 void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
-                            const DeckAnalysis& analysis) {
+                            const DeckAnalysis& analysis, bool applicable) {
   std::vector<std::string> names;
   bool found = false;
   for (const DeckHistory& h : analysis.transient->histories) {
@@ -247,7 +247,7 @@ void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
     f.fail(e.what());
   }
   const double end = analysis.transient->end;
-  if (!(q.time >= 0 && q.time <= end * (1 + 1e-12)))
+  if (applicable && !(q.time >= 0 && q.time <= end * (1 + 1e-12)))
     f.fail("time " + formatNumber(q.time) + " s lies outside the run (0 to " + formatNumber(end) +
            " s)");
 }
