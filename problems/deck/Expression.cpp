@@ -99,6 +99,7 @@ double ExpressionEvaluator::evaluate(const std::string& text) const {
 struct CompiledExpression::State {
   mu::Parser parser;
   std::vector<double> variables;  // muparser reads them through pointers: never resized
+  std::vector<std::string> names;
   std::string text;
 };
 
@@ -112,6 +113,7 @@ CompiledExpression ExpressionEvaluator::compile(const std::string& text,
   auto& st = *out.state_;
   st.text = text;
   st.variables.assign(variables.size(), 0.0);
+  st.names = variables;
   std::vector<std::string> known = names_;
   try {
     st.parser.DefineConst("pi", std::numbers::pi);
@@ -158,7 +160,7 @@ double CompiledExpression::evaluate() const {
   if (!std::isfinite(value)) {
     std::string at;
     for (std::size_t i = 0; i < values.size(); ++i)
-      at += (i ? ", " : " at ") + shortNumber(values[i]);
+      at += (i ? ", " : " at ") + state_->names[i] + " = " + shortNumber(values[i]);
     throw ExpressionError("'" + state_->text + "' evaluates to " + shortNumber(value) + at);
   }
   return value;
