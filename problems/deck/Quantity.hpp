@@ -21,7 +21,7 @@ namespace beamrotor {
 struct Quantity {
   enum class Kind {
     reaction, displacement, frequency, maxStress, maxMoment,
-    historyMax, historyMin, historyMaxAbs, historyAt
+    historyMax, historyMin, historyMaxAbs, historyAt  // the transient ones last (see below)
   };
   Kind kind = Kind::reaction;
   std::string target;  ///< support (reaction), point (displacement) or history name
