@@ -37,8 +37,8 @@ std::vector<int> segmentOfBeams(const Deck& deck, const Line& line) {
   return out;
 }
 
-/// Supports, springs, contacts, masses and point loads at their nodes.
-void addAttachments(const Deck& deck, Model& model);
+/// Supports, springs, contacts, masses and point loads at their nodes (model: not null).
+void addAttachments(const Deck& deck, Model* model);
 
 bool acts(const DeckLoad& l, int segment) {
   return l.segments.empty() ||
@@ -68,7 +68,7 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
   auto model = std::make_shared<Model>();
   if (deck.segments.empty()) {
     addPointNodes(deck, *model);
-    addAttachments(deck, *model);
+    addAttachments(deck, model.get());
     return model;
   }
 
@@ -106,14 +106,13 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
     });
 
   // 4. Supports, springs, masses and point loads at their nodes.
-  addAttachments(deck, *model);
+  addAttachments(deck, model.get());
   return model;
 }
 
 namespace {
 
-void addAttachments(const Deck& deck, Model& m) {
-  Model* model = &m;
+void addAttachments(const Deck& deck, Model* model) {
   for (const DeckSupport& s : deck.supports)
     at(deck, s.place, [&] {
       Support support{s.name, model->node(s.point), {}};
