@@ -9,8 +9,10 @@ namespace beamrotor {
 TransientStops::TransientStops(const TransientSystem& system, double restitution)
     : restitution_(restitution) {
   if (!(restitution >= 0 && restitution <= 1))
-    throw std::invalid_argument("transient analysis: the coefficient of restitution must lie in "
-                                "[0, 1], got " + std::to_string(restitution));
+    throw std::invalid_argument(
+        "transient analysis: the coefficient of restitution must lie in "
+        "[0, 1], got " +
+        std::to_string(restitution));
   const Model& model = system.model();
   const DofMap& dofs = system.dofs();
   const SparseMatrix& M = system.mass();
@@ -18,17 +20,18 @@ TransientStops::TransientStops(const TransientSystem& system, double restitution
     const NodeDof d{c.node, c.dof};
     const int eq = c.node >= 0 && c.node < model.nodeCount() ? dofs.equation(d) : -1;
     if (eq < 0 || !dofs.isFree(eq))
-      throw std::invalid_argument("stop '" + c.name + "' acts on " + model.describe(d) +
-                                  (eq < 0 ? ", which no element carries"
-                                          : ", which a support already holds"));
+      throw std::invalid_argument(
+          "stop '" + c.name + "' acts on " + model.describe(d) +
+          (eq < 0 ? ", which no element carries" : ", which a support already holds"));
     // The impulse changes this dof's velocity alone only if M's column has nothing else.
     double diagonal = 0;
     for (SparseMatrix::InnerIterator it(M, eq); it; ++it) {
-      if (it.row() == eq) diagonal = it.value();
+      if (it.row() == eq)
+        diagonal = it.value();
       else if (it.value() != 0)
         throw std::invalid_argument(
-            "stop '" + c.name + "' acts on " + model.describe(d) +
-            ", whose mass is coupled to " + model.describe(dofs.dofOf(int(it.row()))) +
+            "stop '" + c.name + "' acts on " + model.describe(d) + ", whose mass is coupled to " +
+            model.describe(dofs.dofOf(int(it.row()))) +
             "; a stop in time needs an uncoupled mass there (a point mass or lumped beam mass)");
     }
     if (!(diagonal > 0))

@@ -14,7 +14,9 @@ double NamedHistory::min() const {
   return values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
 }
 
-double NamedHistory::maxAbs() const { return std::max(std::abs(max()), std::abs(min())); }
+double NamedHistory::maxAbs() const {
+  return std::max(std::abs(max()), std::abs(min()));
+}
 
 const NamedHistory& TransientOutcome::history(const std::string& name) const {
   for (const NamedHistory& h : histories)

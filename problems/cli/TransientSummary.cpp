@@ -18,17 +18,20 @@ const TransientOutcome* transientOf(const RunResult& run) {
 
 void printTransient(std::ostream& out, const AnalysisOutcome& a) {
   const TransientResult& r = a.transient->result;
-  out << "transient analysis '" << a.name << "' (" << r.scheme << ", dt = "
-      << formatValue(r.timeStep) << " s, " << r.steps << " steps to t = "
-      << formatValue(r.steps * r.timeStep) << " s";
-  if (r.stability.omegaMax > 0) out << ", dt_crit = " << formatValue(r.stability.dtCritical) << " s";
+  out << "transient analysis '" << a.name << "' (" << r.scheme
+      << ", dt = " << formatValue(r.timeStep) << " s, " << r.steps
+      << " steps to t = " << formatValue(r.steps * r.timeStep) << " s";
+  if (r.stability.omegaMax > 0)
+    out << ", dt_crit = " << formatValue(r.stability.dtCritical) << " s";
   out << ")\n";
   for (const NamedHistory& h : a.transient->histories)
-    out << "    " << padded(h.name, 18) << padded("max |.| " + formatValue(h.maxAbs()) + " " + h.unit, 28)
-        << "range [" << formatValue(h.min()) << ", " << formatValue(h.max()) << "]\n";
+    out << "    " << padded(h.name, 18)
+        << padded("max |.| " + formatValue(h.maxAbs()) + " " + h.unit, 28) << "range ["
+        << formatValue(h.min()) << ", " << formatValue(h.max()) << "]\n";
   if (!r.impacts.empty())
-    out << "    " << r.impacts.size() << " impact(s) on stops, the first at t = "
-        << formatValue(r.impacts.front().time) << " s\n";
+    out << "    " << r.impacts.size()
+        << " impact(s) on stops, the first at t = " << formatValue(r.impacts.front().time)
+        << " s\n";
   for (const std::string& w : r.warnings) out << "  warning: " << w << "\n";
 }
 

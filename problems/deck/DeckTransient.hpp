@@ -32,7 +32,7 @@ struct DeckInitialState {
 /// histories' names, the parameters and t.
 struct DeckHistory {
   std::string name;
-  std::string point;       ///< recorded dof; empty for an expression
+  std::string point;  ///< recorded dof; empty for an expression
   Dof dof = Dof::uy;
   std::string expression;  ///< derived; empty for a recorded dof
   std::string unit;        ///< m or rad for a dof; as the deck says for an expression
@@ -41,8 +41,8 @@ struct DeckHistory {
 
 struct DeckTransient {
   TimeScheme scheme = TimeScheme::newmark;
-  double dt = 0;       ///< s
-  double end = 0;      ///< s
+  double dt = 0;   ///< s
+  double end = 0;  ///< s
   double hhtAlpha = -0.1;
   double rayleighMass = 0, rayleighStiffness = 0;  ///< C += alpha M + beta K (1/s, s)
   double restitution = 0;                          ///< of the contacts as stops in time

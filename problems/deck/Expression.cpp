@@ -28,8 +28,7 @@ std::string shortNumber(double v) {
 /// The reason a muparser error gives, with a did-you-mean for an unknown name among `known`.
 std::string reason(const mu::Parser::exception_type& e, std::vector<std::string> known) {
   // An unknown name is the commonest mistake: say so, and suggest a defined one.
-  if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN &&
-      ExpressionEvaluator::isIdentifier(e.GetToken())) {
+  if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && ExpressionEvaluator::isIdentifier(e.GetToken())) {
     const std::string defined = joinNames(known);
     known.push_back("pi");
     return "unknown name '" + e.GetToken() + "'" + didYouMean(e.GetToken(), known) +
@@ -166,6 +165,8 @@ double CompiledExpression::evaluate() const {
   return value;
 }
 
-const std::string& CompiledExpression::text() const { return state_->text; }
+const std::string& CompiledExpression::text() const {
+  return state_->text;
+}
 
 }  // namespace beamrotor

@@ -93,8 +93,8 @@ TimeFunction loadFunction(const Context& c, const Field& f) {
                            "harmonics or table"
                          : "give one of " + joinNames(given) + ", not several");
   const Field g = *f.get(given[0]);
-  TimeFunction fn = given[0] == "value"    ? expressionOfTime(c, g)
-                    : given[0] == "pieces" ? piecesOf(c, g)
+  TimeFunction fn = given[0] == "value"       ? expressionOfTime(c, g)
+                    : given[0] == "pieces"    ? piecesOf(c, g)
                     : given[0] == "harmonics" ? harmonicsOf(c, g)
                                               : tableOf(c, g);
   if (auto p = f.get("period")) fn = timefn::periodic(std::move(fn), p->positive(c.evaluator));
@@ -103,8 +103,7 @@ TimeFunction loadFunction(const Context& c, const Field& f) {
 
 void readLoads(const Context& c, const Field& block, DeckTransient& t) {
   for (const Field& f : block.items()) {
-    f.allowOnly({"at", "dof", "value", "pieces", "harmonics", "table", "period"},
-                "a load in time");
+    f.allowOnly({"at", "dof", "value", "pieces", "harmonics", "table", "period"}, "a load in time");
     DeckTimeLoad l;
     l.place = f.place();
     l.point = c.point(f.require("at")).name;
@@ -121,7 +120,8 @@ void readInitial(const Context& c, const Field& block, DeckTransient& t) {
     s.place = f.place();
     s.point = c.point(f.require("at")).name;
     s.dof = c.dof(f.require("dof"));
-    if (!f.has("u") && !f.has("v")) f.fail("an initial state needs u (displacement) or v (velocity)");
+    if (!f.has("u") && !f.has("v"))
+      f.fail("an initial state needs u (displacement) or v (velocity)");
     if (auto u = f.get("u")) s.u = u->number(c.evaluator);
     if (auto v = f.get("v")) s.v = v->number(c.evaluator);
     for (const DeckInitialState& other : t.initial)
@@ -138,7 +138,8 @@ void readHistories(const Context& c, const Field& block, DeckTransient& t) {
     DeckHistory h;
     h.place = f.place();
     if (f.has("value")) {
-      if (f.has("at") || f.has("dof")) f.fail("a history is either a dof (at, dof) or a value, not both");
+      if (f.has("at") || f.has("dof"))
+        f.fail("a history is either a dof (at, dof) or a value, not both");
       h.name = f.require("name").text();
       h.expression = f.require("value").text();
       if (auto u = f.get("unit")) h.unit = u->text();
@@ -147,12 +148,15 @@ void readHistories(const Context& c, const Field& block, DeckTransient& t) {
       h.point = c.point(f.require("at")).name;
       h.dof = c.dof(f.require("dof"));
       h.unit = isRotation(h.dof) ? "rad" : "m";
-      h.name = f.has("name") ? f.require("name").text() : h.point + "_" + std::string(dofName(h.dof));
+      h.name =
+          f.has("name") ? f.require("name").text() : h.point + "_" + std::string(dofName(h.dof));
     }
     const Field at = f.has("name") ? f.require("name") : f;
     if (!ExpressionEvaluator::isIdentifier(h.name) || h.name == "t" || c.evaluator.defines(h.name))
-      at.fail("a history name must be a new name of letters, digits and '_' (not t or a "
-              "parameter), got '" + h.name + "'");
+      at.fail(
+          "a history name must be a new name of letters, digits and '_' (not t or a "
+          "parameter), got '" +
+          h.name + "'");
     if (!h.expression.empty()) {
       std::vector<std::string> variables = names;
       variables.push_back("t");

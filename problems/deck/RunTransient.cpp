@@ -41,8 +41,9 @@ void requireStableStep(const Deck& deck, const DeckTransient& t, const Model& mo
   if (t.dt <= limit.dtCritical) return;
   std::ostringstream msg;
   msg << "dt = " << formatNumber(t.dt) << " s exceeds the central-difference stability limit "
-      << "2/omega_max = " << formatNumber(limit.dtCritical) << " s (omega_max = "
-      << formatNumber(limit.omegaMax) << " rad/s); take dt below it or scheme: newmark";
+      << "2/omega_max = " << formatNumber(limit.dtCritical)
+      << " s (omega_max = " << formatNumber(limit.omegaMax)
+      << " rad/s); take dt below it or scheme: newmark";
   throw DeckError(deck.path, t.dtPlace, msg.str());
 }
 

@@ -45,13 +45,11 @@ double mo10Phi(double t, double J, double c, double l, double a, double H, doubl
   return closedForm(p, cycles).phi(t);
 }
 
-double mo10PhiMax(double cycles, double J, double c, double l, double a, double H,
-                  double omega) {
+double mo10PhiMax(double cycles, double J, double c, double l, double a, double H, double omega) {
   return closedForm(mo10(J, c, l, a, H, omega), cycles).extremes().amplitude;
 }
 
-double mo10ForceMax(double cycles, double J, double c, double l, double a, double H,
-                    double omega) {
+double mo10ForceMax(double cycles, double J, double c, double l, double a, double H, double omega) {
   return closedForm(mo10(J, c, l, a, H, omega), cycles).extremes().pressingForce;
 }
 

@@ -12,16 +12,15 @@ namespace {
 Json historiesJson(const TransientOutcome& t) {
   Json out = Json::object();
   for (const NamedHistory& h : t.histories) {
-    const auto largest = std::max_element(h.values.begin(), h.values.end(),
-                                          [](double a, double b) { return std::abs(a) < std::abs(b); });
-    const double time =
-        largest == h.values.end() ? 0.0 : t.result.times.at(std::size_t(largest - h.values.begin()));
-    out[h.name] = {{"unit", h.unit},
-                   {"max", h.max()},
-                   {"min", h.min()},
-                   {"max_abs", h.maxAbs()},
-                   {"time_of_max_abs", time},
-                   {"final", h.values.empty() ? 0.0 : h.values.back()}};
+    const auto largest = std::max_element(h.values.begin(), h.values.end(), [](double a, double b) {
+      return std::abs(a) < std::abs(b);
+    });
+    const double time = largest == h.values.end()
+                            ? 0.0
+                            : t.result.times.at(std::size_t(largest - h.values.begin()));
+    out[h.name] = {{"unit", h.unit},          {"max", h.max()},
+                   {"min", h.min()},          {"max_abs", h.maxAbs()},
+                   {"time_of_max_abs", time}, {"final", h.values.empty() ? 0.0 : h.values.back()}};
   }
   return out;
 }
@@ -33,7 +32,8 @@ double energyBalanceError(const EnergyHistory& e) {
   if (e.kinetic.empty()) return 0;
   double scale = 0, drift = 0;
   for (std::size_t i = 0; i < e.kinetic.size(); ++i) {
-    scale = std::max({scale, std::abs(e.kinetic[i]), std::abs(e.strain[i]), std::abs(e.external[i])});
+    scale =
+        std::max({scale, std::abs(e.kinetic[i]), std::abs(e.strain[i]), std::abs(e.external[i])});
     drift = std::max(drift, std::abs(e.balance(i) - e.balance(0)));
   }
   return scale > 0 ? drift / scale : 0.0;

@@ -5,9 +5,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <numbers>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "problems/deck/DeckError.hpp"
 #include "problems/deck/Study.hpp"
@@ -27,7 +27,8 @@ std::string deck(const std::string& analysis, const std::string& extra = "") {
          "masses:\n  - {at: body, m: m}\n"
          "springs:\n  - {at: body, dof: ux, k: k}\n" +
          extra +
-         "analyses:\n  - type: transient\n    name: run\n    record: [{name: x, at: body, dof: ux}]\n" +
+         "analyses:\n  - type: transient\n    name: run\n    record: [{name: x, at: body, dof: "
+         "ux}]\n" +
          analysis;
 }
 
@@ -62,9 +63,12 @@ constexpr double kW = 20;  // rad/s
 
 TEST_SUITE("deck transient") {
   TEST_CASE("free vibration from the deck's initial state: x0 cos wt + v0/w sin wt, order 2") {
-    const std::string text = deck("    dt: dt\n    end: 1\n"
-                                  "    initial: [{at: body, dof: ux, u: 0.01, v: 0.3}]\n");
-    const auto exact = [](double t) { return 0.01 * std::cos(kW * t) + 0.3 / kW * std::sin(kW * t); };
+    const std::string text = deck(
+        "    dt: dt\n    end: 1\n"
+        "    initial: [{at: body, dof: ux, u: 0.01, v: 0.3}]\n");
+    const auto exact = [](double t) {
+      return 0.01 * std::cos(kW * t) + 0.3 / kW * std::sin(kW * t);
+    };
     const double coarse = worstError(solveText(text, {"dt=0.002"}), exact);
     const double fine = worstError(solveText(text), exact);
     CAPTURE(coarse);
@@ -79,10 +83,8 @@ TEST_SUITE("deck transient") {
     // value (an expression of t), pieces, a harmonic series (the k = 0 term is the mean) and
     // a table describe the same step at t = 0; the four runs agree to round-off.
     const std::vector<std::string> forms{
-        "value: F",
-        "pieces: [{from: 0, value: F}]",
-        "harmonics: {omega: w, mean: F, terms: [{k: 1, amplitude: 0}]}",
-        "table: [[0, F], [1, F]]"};
+        "value: F", "pieces: [{from: 0, value: F}]",
+        "harmonics: {omega: w, mean: F, terms: [{k: 1, amplitude: 0}]}", "table: [[0, F], [1, F]]"};
     std::vector<std::vector<double>> histories;
     for (const std::string& form : forms) {
       CAPTURE(form);
@@ -102,8 +104,9 @@ TEST_SUITE("deck transient") {
     // F cos(w t) written as an expression of t inside a period of 2 pi / w (so t is reduced
     // to one period before it is evaluated): the resonant closed form from rest is
     // x = F t sin(w t) / (2 m w).
-    const RunResult run = solveText(deck("    dt: dt/4\n    end: 1\n    loads:\n"
-                                         "      - {at: body, dof: ux, value: F*cos(w*t), period: 2*pi/w}\n"));
+    const RunResult run =
+        solveText(deck("    dt: dt/4\n    end: 1\n    loads:\n"
+                       "      - {at: body, dof: ux, value: F*cos(w*t), period: 2*pi/w}\n"));
     const auto exact = [](double t) { return 40 * t * std::sin(kW * t) / (2 * 2 * kW); };
     // Amplitude at t = 1 s: 0.5 m; phase error (w dt)^2/12 * 20 rad = 4.2e-5 rad -> 2.1e-5 m
     // predicted, 1.03e-5 m measured.
@@ -112,11 +115,13 @@ TEST_SUITE("deck transient") {
 
   TEST_CASE("Rayleigh mass damping: the decay exp(-alpha t / 2)") {
     // C = alpha M: zeta = alpha / (2 w); x = x0 e^(-zeta w t) (cos wd t + zeta w / wd sin wd t).
-    const RunResult run = solveText(deck("    dt: dt\n    end: 1\n    rayleigh: {alpha: 4}\n"
-                                         "    initial: [{at: body, dof: ux, u: 0.01}]\n"));
+    const RunResult run =
+        solveText(deck("    dt: dt\n    end: 1\n    rayleigh: {alpha: 4}\n"
+                       "    initial: [{at: body, dof: ux, u: 0.01}]\n"));
     const double zeta = 4.0 / (2 * kW), wd = kW * std::sqrt(1 - zeta * zeta);
     const auto exact = [&](double t) {
-      return 0.01 * std::exp(-zeta * kW * t) * (std::cos(wd * t) + zeta * kW / wd * std::sin(wd * t));
+      return 0.01 * std::exp(-zeta * kW * t) *
+             (std::cos(wd * t) + zeta * kW / wd * std::sin(wd * t));
     };
     // The undamped phase error 6.7e-4 t/1 s on an amplitude 0.01 e^(-2t) peaks at t = 0.5 s:
     // 1.2e-6 m predicted, 1.23e-6 m measured.
@@ -124,9 +129,9 @@ TEST_SUITE("deck transient") {
   }
 
   TEST_CASE("central difference: dt_crit = 2 sqrt(m/k) reported; below it, the closed form") {
-    const std::string text =
-        deck("    scheme: central\n    dt: dt\n    end: 1\n"
-             "    initial: [{at: body, dof: ux, u: 0.01}]\n");
+    const std::string text = deck(
+        "    scheme: central\n    dt: dt\n    end: 1\n"
+        "    initial: [{at: body, dof: ux, u: 0.01}]\n");
     const RunResult run = solveText(text);
     const TransientResult& r = outcome(run).result;
     CHECK(std::abs(r.stability.dtCritical - 2 * std::sqrt(2.0 / 800)) < 1e-15);
@@ -144,8 +149,9 @@ TEST_SUITE("deck transient") {
   }
 
   TEST_CASE("HHT with alpha = -0.1 stays second order on a resolved oscillation") {
-    const std::string text = deck("    scheme: hht\n    alpha: -0.1\n    dt: dt\n    end: 1\n"
-                                  "    initial: [{at: body, dof: ux, u: 0.01}]\n");
+    const std::string text = deck(
+        "    scheme: hht\n    alpha: -0.1\n    dt: dt\n    end: 1\n"
+        "    initial: [{at: body, dof: ux, u: 0.01}]\n");
     const auto exact = [](double t) { return 0.01 * std::cos(kW * t); };
     const double coarse = worstError(solveText(text, {"dt=0.002"}), exact);
     const double fine = worstError(solveText(text), exact);
@@ -159,9 +165,10 @@ TEST_SUITE("deck transient") {
     // starts at x = 0 moving at -2 m/s toward x = -0.005 m, reached after 2.5 ms, well before
     // the spring slows it by more than k x / m dt ~ 1e-3 of v). Rebound e = 0.5.
     const std::string contacts = "contacts:\n  - {name: collar, at: body, dof: ux, min: -0.005}\n";
-    const RunResult run = solveText(
-        deck("    dt: dt/10\n    end: 0.2\n    restitution: 0.5\n"
-             "    initial: [{at: body, dof: ux, v: -2}]\n", contacts));
+    const RunResult run =
+        solveText(deck("    dt: dt/10\n    end: 0.2\n    restitution: 0.5\n"
+                       "    initial: [{at: body, dof: ux, v: -2}]\n",
+                       contacts));
     const TransientOutcome& t = outcome(run);
     CHECK(t.history("x").min() >= -0.005);
     REQUIRE(!t.result.impacts.empty());
@@ -175,8 +182,9 @@ TEST_SUITE("deck transient") {
   TEST_CASE("the files: history CSV and chart, frames as vertex cells in a .pvd, results.json") {
     const fs::path dir = test::scratchDir("transient-files");
     const fs::path file = dir / "spring.yaml";
-    std::ofstream(file) << deck("    dt: dt\n    end: 0.5\n    frames: 11\n"
-                                "    initial: [{at: body, dof: ux, u: 0.01}]\n");
+    std::ofstream(file) << deck(
+        "    dt: dt\n    end: 0.5\n    frames: 11\n"
+        "    initial: [{at: body, dof: ux, u: 0.01}]\n");
     const fs::path out = dir / "out";
     const auto r = test::runBeamrotor({"solve", file.string(), "--out", out.string()});
     REQUIRE(r.exitCode == 0);

@@ -195,7 +195,8 @@ TEST_SUITE("MO-10 deck") {
     for (const Impact& i : t.result.impacts) {
       CHECK(i.stop == "collar");
       CHECK(i.velocityBefore < 0);
-      CHECK(std::abs(i.velocityAfter + 0.5 * i.velocityBefore) <= 1e-15 * std::abs(i.velocityBefore));
+      CHECK(std::abs(i.velocityAfter + 0.5 * i.velocityBefore) <=
+            1e-15 * std::abs(i.velocityBefore));
     }
     CHECK(run.checks.empty());
     CHECK(run.skippedChecks.size() == 9);
