@@ -1,7 +1,10 @@
 #include "problems/deck/RunTransient.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
+#include "fem/DofMap.hpp"
 #include "problems/deck/Expression.hpp"
 #include "problems/deck/Field.hpp"
 
@@ -47,6 +50,35 @@ void requireStableStep(const Deck& deck, const DeckTransient& t, const Model& mo
   throw DeckError(deck.path, t.dtPlace, msg.str());
 }
 
+/// Loads, initial states and histories must sit on dofs some element carries (an initial
+/// state, also a free one): bad input otherwise, reported at the entry.
+void requireCarried(const Deck& deck, const DeckTransient& t, const Model& model) {
+  const DofMap dofs(model);
+  const auto check = [&](const std::string& point, Dof d, const DeckPlace& place, bool mustBeFree) {
+    const int eq = dofs.equation(model.node(point), d);
+    if (eq < 0)
+      throw DeckError(deck.path, place,
+                      "no element carries " + std::string(dofName(d)) + " at point '" + point +
+                          "' (nothing there has stiffness or mass along it)");
+    if (mustBeFree && !dofs.isFree(eq))
+      throw DeckError(deck.path, place,
+                      std::string(dofName(d)) + " at point '" + point +
+                          "' is held by a support; an initial state there would be ignored");
+  };
+  for (const DeckTimeLoad& l : t.loads) check(l.point, l.dof, l.place, false);
+  for (const DeckInitialState& s : t.initial) check(s.point, s.dof, s.place, true);
+  for (const DeckHistory& h : t.histories)
+    if (h.expression.empty()) check(h.point, h.dof, h.place, false);
+}
+
+/// A time grid that does not end at `end`: the run ends at the nearest whole step.
+void noteRounding(const DeckTransient& t, TransientResult& r) {
+  const double steps = t.end / t.dt;
+  if (std::abs(steps - std::round(steps)) > 1e-6 * std::max(1.0, steps))
+    r.warnings.push_back("end / dt = " + formatNumber(steps) + " is not a whole number: the run " +
+                         "ends at t = " + formatNumber(r.steps * r.timeStep) + " s");
+}
+
 /// The parameters and derived values as constants, for the derived histories.
 void defineDeckNames(const Deck& deck, ExpressionEvaluator& ev) {
   for (const auto& [name, value] : deck.parameters) ev.define(name, value);
@@ -57,10 +89,12 @@ void defineDeckNames(const Deck& deck, ExpressionEvaluator& ev) {
 
 TransientOutcome runTransient(const Deck& deck, const DeckAnalysis& a, const Model& model) {
   const DeckTransient& t = *a.transient;
+  requireCarried(deck, t, model);
   if (t.scheme == TimeScheme::centralDifference) requireStableStep(deck, t, model);
 
   TransientOutcome out;
   out.result = solveTransient(model, optionsOf(t, model));
+  noteRounding(t, out.result);
 
   // Named histories in deck order: a dof's displacement, or a value of the earlier ones and t.
   ExpressionEvaluator ev;

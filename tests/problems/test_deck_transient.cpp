@@ -113,6 +113,15 @@ TEST_SUITE("deck transient") {
     CHECK(worstError(run, exact) < 2.5e-5);
   }
 
+  TEST_CASE("an end time that is not a whole number of steps ends at the nearest step, warned") {
+    const RunResult run = solveText(deck("    dt: 0.0003\n    end: 0.5\n"));
+    const TransientResult& r = outcome(run).result;
+    CHECK(r.steps == 1667);  // round(1666.67)
+    REQUIRE(r.warnings.size() == 1);
+    CHECK(r.warnings[0].find("0.5001 s") != std::string::npos);
+    CHECK(outcome(solveText(deck("    dt: 0.001\n    end: 0.5\n"))).result.warnings.empty());
+  }
+
   TEST_CASE("Rayleigh mass damping: the decay exp(-alpha t / 2)") {
     // C = alpha M: zeta = alpha / (2 w); x = x0 e^(-zeta w t) (cos wd t + zeta w / wd sin wd t).
     const RunResult run =
