@@ -14,6 +14,7 @@ namespace {
 
 /// Bounds that keep a typo (dt: 1e-12) from running for days or filling the disk.
 constexpr double kMaxSteps = 1e7;
+constexpr double kMaxSamples = 1e6;  // recorded states: histories and energy at each
 constexpr int kMaxFrames = 1000;
 
 /// An expression of t as a function of time; a failure at run time names the field.
@@ -225,6 +226,10 @@ DeckTransient readTransient(const Context& c, const Field& f) {
   }
   if (auto n = f.get("frames")) t.frames = n->integer(ev, 0, kMaxFrames);
   if (auto n = f.get("sample_every")) t.sampleEvery = n->integer(ev, 1, int(kMaxSteps));
+  if (std::round(t.end / t.dt) / t.sampleEvery > kMaxSamples)
+    dt.fail("the run would record " + formatNumber(std::round(t.end / t.dt / t.sampleEvery)) +
+            " samples; at most " + formatNumber(kMaxSamples) +
+            " (set sample_every, or use a larger dt)");
 
   // 3. Initial state, loads, histories.
   if (auto b = f.get("initial"); b && !b->isNull()) readInitial(c, *b, t);
