@@ -3,6 +3,13 @@
 // the four forms of a load in time, Rayleigh damping, the central scheme's limit, HHT, a stop
 // with restitution, and the files a run writes.
 #include <doctest/doctest.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
 #include <cmath>
 #include <fstream>
@@ -112,8 +119,7 @@ TEST_SUITE("deck transient") {
         "  - {name: start, quantity: history x min, reference: 0, tolerance: 1e-15}\n"
         "  - {name: half, quantity: history x at pi/(2*w), reference: F/k, tolerance: 1e-6}\n";
     const RunResult run = solveText(
-        deck("    dt: dt/10\n    end: 0.2\n    loads: [{at: body, dof: ux, value: F}]\n") +
-        checks);
+        deck("    dt: dt/10\n    end: 0.2\n    loads: [{at: body, dof: ux, value: F}]\n") + checks);
     REQUIRE(run.checks.size() == 3);
     for (const Check& c : run.checks) {
       CAPTURE(c.name);
@@ -231,6 +237,18 @@ TEST_SUITE("deck transient") {
     CHECK(a.at("files").at("vtu").size() == 11);
     for (const char* name : {"run_history.csv", "run_history.svg", "run.pvd", "run_frame_0011.vtu"})
       CHECK(fs::exists(out / name));
+    // The last frame read back by VTK: one vertex at the body, displaced as the history ends
+    // (x = 0.01 cos(20 t) at t = 0.5 s, to Newmark's phase error 1.2e-5 m).
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((out / "run_frame_0011.vtu").c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    REQUIRE(grid->GetNumberOfCells() == 1);
+    CHECK(grid->GetCellType(0) == VTK_VERTEX);
+    const double x = grid->GetPointData()->GetArray("displacement")->GetComponent(0, 0);
+    CHECK(x == a.at("histories").at("x").at("final").get<double>());
+    CHECK(std::abs(x - 0.01 * std::cos(10.0)) < 1.5e-5);
+    CHECK(grid->GetFieldData()->GetArray("time")->GetTuple1(0) == doctest::Approx(0.5));
     std::ifstream csv(out / "run_history.csv");
     int rows = 0;
     for (std::string line; std::getline(csv, line);) ++rows;
