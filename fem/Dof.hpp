@@ -38,6 +38,12 @@ class DofSet {
     return n;
   }
   constexpr bool operator==(const DofSet&) const = default;
+  /// This set and d.
+  constexpr DofSet with(Dof d) const {
+    DofSet out = *this;
+    out.bits_ |= bit(d);
+    return out;
+  }
 
   /// Axial and bending in the x-y plane: ux, uy, rz.
   static constexpr DofSet planar() { return {Dof::ux, Dof::uy, Dof::rz}; }

@@ -14,6 +14,7 @@
 #include "fem/Stopwatch.hpp"
 #include "fem/TransientCentral.hpp"
 #include "fem/TransientNewmark.hpp"
+#include "fem/TransientStops.hpp"
 #include "fem/TransientSystem.hpp"
 
 namespace beamrotor {
@@ -103,11 +104,8 @@ TransientResult solveTransient(const Model& model, const TransientOptions& optio
   result.steps = steps;
 
   // 2. The system, the recorded dofs and the initial state (at rest by default).
-  if (!model.contacts().empty())
-    throw std::invalid_argument("transient analysis does not handle contact constraints (here '" +
-                                model.contacts().front().name +
-                                "'); remove them or use a static analysis");
   const TransientSystem system(model, options);
+  const TransientStops stops(system, options.restitution);
   const DofMap& dofs = system.dofs();
   if (system.size() == 0)
     throw std::invalid_argument("transient analysis: the model has no free dof to move");
@@ -124,6 +122,7 @@ TransientResult solveTransient(const Model& model, const TransientOptions& optio
   s.u = system.freeVector(options.initialDisplacement, "initial displacement");
   s.v = system.freeVector(options.initialVelocity, "initial velocity");
   s.a = system.initialAcceleration(s);
+  stops.requireWithin(s);
   result.time.assembly = clock.lap();
 
   // 3. The scheme: an implicit stepper factorises once here, the explicit one checks its limit.
@@ -177,9 +176,18 @@ TransientResult solveTransient(const Model& model, const TransientOptions& optio
     if (energy) energy->record(result.energy);
   };
   record(0);
+  Eigen::VectorXd uBefore, vBefore;
   for (int n = 1; n <= steps; ++n) {
+    if (!stops.empty()) {
+      uBefore = s.u;
+      vBefore = s.v;
+    }
     advance(s);
     s.t = n * dt;  // no drift from summing dt
+    if (!stops.empty() && stops.apply(uBefore, vBefore, dt, s, result.impacts)) {
+      s.a = system.initialAcceleration(s);
+      if (explicitStepper) explicitStepper->start(s);
+    }
     if (!s.u.allFinite()) {
       result.warnings.push_back("the solution overflowed at t = " + std::to_string(s.t) +
                                 " s (step " + std::to_string(n) + "); stopped");

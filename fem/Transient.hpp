@@ -65,11 +65,15 @@ struct TransientOptions {
   int sampleEvery = 1;             ///< record histories and energy every n steps (and the last)
   int maxFrames = 0;               ///< full-field frames stored, evenly spaced; 0 for none
   bool energy = true;              ///< keep the energy account (a few sparse products a step)
+  /// The model's contact constraints act as stops with this coefficient of restitution
+  /// (0 plastic .. 1 elastic), see TransientStops; an impact's energy loss shows in the
+  /// energy balance.
+  double restitution = 0;
 };
 
 /// Runs the analysis. Throws std::invalid_argument for bad options (non-positive step, alpha
-/// outside [-1/3, 0], a load or history on a dof no element carries) or a model with contact
-/// constraints (not handled in time yet), and SolveError for a singular effective or mass
+/// outside [-1/3, 0], a load or history on a dof no element carries, a stop TransientStops
+/// refuses), and SolveError for a singular effective or mass
 /// matrix, or a mass matrix central difference cannot use.
 TransientResult solveTransient(const Model& model, const TransientOptions& options);
 

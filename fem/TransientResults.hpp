@@ -54,6 +54,13 @@ struct StabilityLimit {
   std::string method;         ///< "dense" or "arpack-lanczos"
 };
 
+/// One impact on a stop (a contact constraint honoured in time, see TransientStops).
+struct Impact {
+  double time = 0;  ///< s, located within its step
+  std::string stop;
+  double velocityBefore = 0, velocityAfter = 0;  ///< m/s or rad/s, of the stop's dof
+};
+
 struct TransientResult {
   std::string scheme;   ///< "newmark", "hht" or "central-difference"
   double timeStep = 0;  ///< s
@@ -66,6 +73,7 @@ struct TransientResult {
   StabilityLimit stability;
   /// Factorisations of the effective matrix (implicit schemes): 1 for a constant step.
   int factorizations = 0;
+  std::vector<Impact> impacts;        ///< in time order
   std::vector<std::string> warnings;  ///< e.g. a step above the explicit stability limit
   SystemSize size;
   SolveTimings time;  ///< factor: factorisations; solve: the time loop

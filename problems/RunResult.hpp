@@ -12,6 +12,7 @@
 
 #include "fem/Model.hpp"
 #include "fem/Results.hpp"
+#include "problems/TransientOutcome.hpp"
 
 namespace beamrotor {
 
@@ -35,6 +36,7 @@ struct AnalysisOutcome {
   std::string name;  ///< the deck's name for it (defaults to the type)
   std::optional<StaticResult> statics;
   std::optional<ModalResult> modal;
+  std::optional<TransientOutcome> transient;
 };
 
 /// One solved instance of a deck (one set of parameter values).

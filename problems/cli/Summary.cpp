@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "problems/cli/TransientSummary.hpp"
+
 namespace beamrotor::cli {
 
 namespace {
@@ -12,14 +14,11 @@ namespace {
 const char* forceUnit(Dof d) { return isRotation(d) ? "N m" : "N"; }
 const char* motionUnit(Dof d) { return isRotation(d) ? "rad" : "m"; }
 
-std::string padded(const std::string& s, std::size_t width) {
-  return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
-}
-
 SystemSize sizeOf(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) return a.statics->size;
     if (a.modal) return a.modal->size;
+    if (a.transient) return a.transient->result.size;
   }
   return {};
 }
@@ -109,6 +108,10 @@ std::string scientific(double v) {
 
 }  // namespace
 
+std::string padded(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
+}
+
 std::string formatValue(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", std::abs(v) < 1e-300 ? 0.0 : v);
@@ -122,6 +125,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) printStatic(out, deck, run, a);
     if (a.modal) printModal(out, a);
+    if (a.transient) printTransient(out, a);
   }
 }
 
@@ -154,6 +158,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
     frequencies = std::min<int>(kFrequencies, int(m->modes.size()));
     for (int i = 0; i < frequencies; ++i) headers.push_back("f" + std::to_string(i + 1) + " Hz");
   }
+  if (headers.size() == 1) return printTransientSweep(out, sweep);  // nothing static or modal
   out << "  ";
   for (const std::string& h : headers) out << padded(h, kColumn);
   out << "\n";
@@ -168,6 +173,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
     out << "\n";
   }
   out << "  (reactions in N and N m on the structure)\n";
+  printTransientSweep(out, sweep);
 }
 
 int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,

@@ -24,6 +24,9 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
 int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,
                 const std::vector<std::string>& labels);
 
+/// s followed by spaces up to `width` characters (at least one space).
+std::string padded(const std::string& s, std::size_t width);
+
 /// "3.14159", "2.5e+11": six significant digits.
 std::string formatValue(double v);
 

@@ -14,6 +14,7 @@
 #include "fem/Dof.hpp"
 #include "fem/Section.hpp"
 #include "problems/deck/DeckError.hpp"
+#include "problems/deck/DeckTransient.hpp"
 #include "problems/deck/Quantity.hpp"
 
 namespace beamrotor {
@@ -96,11 +97,12 @@ struct DeckLoad {
 
 /// One analysis to run.
 struct DeckAnalysis {
-  std::string type;  ///< "static" or "modal"
+  std::string type;  ///< "static", "modal" or "transient"
   std::string name;  ///< defaults to the type
   int modes = 6;     ///< modal: how many
   double shift = 0;  ///< modal: rad^2/s^2
   DeckPlace place;
+  std::optional<DeckTransient> transient;  ///< transient: its settings
 };
 
 /// A closed-form comparison.

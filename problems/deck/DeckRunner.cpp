@@ -7,6 +7,7 @@
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
 #include "problems/deck/ModelBuilder.hpp"
+#include "problems/deck/RunTransient.hpp"
 
 namespace beamrotor {
 
@@ -19,12 +20,16 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
   try {
     if (a.type == "static") {
       out.statics = solveStatic(model);
+    } else if (a.transient) {
+      out.transient = runTransient(deck, a, model);
     } else {
       ModalOptions options;
       options.modes = a.modes;
       options.shift = a.shift;
       out.modal = solveModes(model, options);
     }
+  } catch (const DeckError&) {
+    throw;  // bad input only the model could reveal (an unstable explicit step)
   } catch (const std::exception& e) {
     // SolveError and UnsupportedStructure say what is wrong; anything else the core throws
     // while solving is reported the same way rather than escaping as a crash.

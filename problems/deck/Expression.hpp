@@ -21,6 +21,8 @@ class ExpressionError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+class CompiledExpression;
+
 class ExpressionEvaluator {
  public:
   /// Knows the constant pi and muparser's functions (sin, sqrt, abs, min, max, ...).
@@ -41,12 +43,37 @@ class ExpressionEvaluator {
   /// or evaluates to inf or nan.
   double evaluate(const std::string& text) const;
 
+  /// `text` as a function of `variables` (e.g. {"t"}), with the names defined so far as
+  /// constants: parsed once, then evaluated from muparser's byte code at every call. Throws
+  /// ExpressionError when it does not parse, names an unknown name, or is not finite with every
+  /// variable 0.
+  CompiledExpression compile(const std::string& text,
+                             const std::vector<std::string>& variables) const;
+
   /// Letters, digits and '_', starting with a letter.
   static bool isIdentifier(const std::string& name);
 
  private:
   std::unique_ptr<mu::Parser> parser_;
   std::vector<std::string> names_;
+};
+
+/// An expression of a few variables, compiled (see ExpressionEvaluator::compile). Copies share
+/// one parser, so a copy is cheap; calls are not thread-safe.
+class CompiledExpression {
+ public:
+  /// The value for `values` (one per variable, in compile order). Throws ExpressionError
+  /// when it is not finite.
+  double operator()(const std::vector<double>& values) const;
+  /// The value of a function of one variable.
+  double operator()(double x) const;
+  const std::string& text() const;
+
+ private:
+  friend class ExpressionEvaluator;
+  double evaluate() const;
+  struct State;
+  std::shared_ptr<State> state_;
 };
 
 }  // namespace beamrotor

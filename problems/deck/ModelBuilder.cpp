@@ -37,15 +37,40 @@ std::vector<int> segmentOfBeams(const Deck& deck, const Line& line) {
   return out;
 }
 
+/// Supports, springs, contacts, masses and point loads at their nodes (model: not null).
+void addAttachments(const Deck& deck, Model* model);
+
 bool acts(const DeckLoad& l, int segment) {
   return l.segments.empty() ||
          std::find(l.segments.begin(), l.segments.end(), segment) != l.segments.end();
+}
+
+/// The dofs on which a body has inertia: translations with m, rotations with Jp (about the
+/// axis x) or Jd. A model without beams carries only these, so no dof is left without mass.
+DofSet inertialDofs(const DeckMass& m, const DofSet& carried) {
+  DofSet out;
+  for (Dof d : kAllDofs) {
+    const double inertia = !isRotation(d) ? m.m : d == Dof::rx ? m.Jp : m.Jd;
+    if (carried.contains(d) && inertia > 0) out = out.with(d);
+  }
+  return out;
+}
+
+/// Nodes at the points of a model without beams, at (x, 0, 0).
+void addPointNodes(const Deck& deck, Model& model) {
+  for (const DeckPoint& p : deck.points)
+    at(deck, p.place, [&] { model.nameNode(p.name, model.addNode({p.at, 0, 0})); });
 }
 
 }  // namespace
 
 std::shared_ptr<Model> buildModel(const Deck& deck) {
   auto model = std::make_shared<Model>();
+  if (deck.segments.empty()) {
+    addPointNodes(deck, *model);
+    addAttachments(deck, model.get());
+    return model;
+  }
 
   // 1. The line: segments cut at every named point.
   LineSpec spec;
@@ -81,6 +106,13 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
     });
 
   // 4. Supports, springs, masses and point loads at their nodes.
+  addAttachments(deck, model.get());
+  return model;
+}
+
+namespace {
+
+void addAttachments(const Deck& deck, Model* model) {
   for (const DeckSupport& s : deck.supports)
     at(deck, s.place, [&] {
       Support support{s.name, model->node(s.point), {}};
@@ -101,7 +133,8 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
     });
   for (const DeckMass& m : deck.masses)
     at(deck, m.place, [&] {
-      model->add<PointInertia>(model->node(m.point), deck.dofs, m.m, m.Jp, m.Jd,
+      const DofSet dofs = deck.segments.empty() ? inertialDofs(m, deck.dofs) : deck.dofs;
+      model->add<PointInertia>(model->node(m.point), dofs, m.m, m.Jp, m.Jd,
                                Eigen::Vector3d::UnitX());
     });
   for (const DeckLoad& l : deck.loads)
@@ -110,7 +143,8 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
         for (const auto& [d, value] : l.components)
           model->addLoad({model->node(l.point), d, value});
       });
-  return model;
 }
+
+}  // namespace
 
 }  // namespace beamrotor

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fem/Recovery.hpp"
+#include "problems/TransientOutcome.hpp"
 
 namespace beamrotor {
 
@@ -13,7 +14,7 @@ namespace {
 
 constexpr const char* kGrammar =
     "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max' "
-    "or 'moment max'";
+    "'moment max', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
 /// Stations per element for the maxima: resultants vary at most quadratically along an
 /// element (uniform distributed load), so 8 intervals place a station within L/16 of any
@@ -30,6 +31,20 @@ Dof parseComponent(const std::string& word) {
     if (word == name) return dof;
   throw std::invalid_argument("'" + word +
                               "' is not a component (ux uy uz rx ry rz, or fx fy fz mx my mz)");
+}
+
+double measureHistory(const Quantity& q, const TransientOutcome& outcome) {
+  const NamedHistory& h = outcome.history(q.target);
+  switch (q.kind) {
+    case Quantity::Kind::historyMax:
+      return h.max();
+    case Quantity::Kind::historyMin:
+      return h.min();
+    case Quantity::Kind::historyMaxAbs:
+      return h.maxAbs();
+    default:
+      return outcome.at(h, q.time);
+  }
 }
 
 }  // namespace
@@ -62,6 +77,20 @@ Quantity parseQuantity(const std::string& text) {
     q.kind = head == "stress" ? Quantity::Kind::maxStress : Quantity::Kind::maxMoment;
     return q;
   }
+  if (head == "history" && words.size() == 3 &&
+      (words[2] == "max" || words[2] == "min" || words[2] == "maxabs")) {
+    q.kind = words[2] == "max"   ? Quantity::Kind::historyMax
+             : words[2] == "min" ? Quantity::Kind::historyMin
+                                 : Quantity::Kind::historyMaxAbs;
+    q.target = words[1];
+    return q;
+  }
+  if (head == "history" && words.size() == 4 && words[2] == "at") {
+    q.kind = Quantity::Kind::historyAt;
+    q.target = words[1];
+    q.timeText = words[3];
+    return q;
+  }
   throw std::invalid_argument("cannot read '" + text + "'; " + kGrammar);
 }
 
@@ -73,6 +102,11 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
       throw std::invalid_argument("analysis '" + outcome.name + "' found only " +
                                   std::to_string(modes.size()) + " modes");
     return modes[q.mode - 1].frequencyHz;
+  }
+  if (q.analysisType() == "transient") {
+    if (!outcome.transient)
+      throw std::invalid_argument("analysis '" + outcome.name + "' is not transient");
+    return measureHistory(q, *outcome.transient);
   }
   if (!outcome.statics)
     throw std::invalid_argument("analysis '" + outcome.name + "' is not static");

@@ -4,6 +4,9 @@
 //   frequency N               natural frequency of mode N (Hz), N from 1
 //   stress max                largest |normal stress| on the outer fibres of any beam (Pa)
 //   moment max                largest bending moment magnitude in any beam (N m)
+//   history NAME max|min|maxabs   largest, smallest or largest |value| of a transient history
+//   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
+//                             interpolated linearly between samples
 #pragma once
 
 #include <stdexcept>
@@ -16,15 +19,23 @@
 namespace beamrotor {
 
 struct Quantity {
-  enum class Kind { reaction, displacement, frequency, maxStress, maxMoment };
+  enum class Kind {
+    reaction, displacement, frequency, maxStress, maxMoment,
+    historyMax, historyMin, historyMaxAbs, historyAt  // the transient ones last (see below)
+  };
   Kind kind = Kind::reaction;
-  std::string target;  ///< support (reaction) or point (displacement) name
+  std::string target;  ///< support (reaction), point (displacement) or history name
+  std::string timeText;  ///< historyAt: the time as written
+  double time = 0;       ///< historyAt: s (set by the deck reader)
   Dof dof = Dof::uy;
   int mode = 1;        ///< frequency: 1-based mode number
   std::string text;    ///< as written, for reports
 
-  /// The analysis type whose result it reads: "static" or "modal".
-  std::string analysisType() const { return kind == Kind::frequency ? "modal" : "static"; }
+  /// The analysis type whose result it reads: "static", "modal" or "transient".
+  std::string analysisType() const {
+    if (kind >= Kind::historyMax) return "transient";
+    return kind == Kind::frequency ? "modal" : "static";
+  }
 };
 
 /// Parses the phrase; throws std::invalid_argument saying what is wrong and what is allowed.

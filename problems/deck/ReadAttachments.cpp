@@ -222,6 +222,9 @@ void readLoads(Context& c) {
       }
       if (l.components.empty())
         f.fail("a point load needs at least one of fx, fy, fz (N) or mx, my, mz (N m)");
+    } else if (c.deck.segments.empty()) {
+      f.fail("a " + type + " load acts on segments, and this deck has none (a model without "
+             "beams takes point loads)");
     } else if (type == "distributed") {
       f.allowOnly({"type", "segment", "qx", "qy", "qz"}, "a distributed load");
       l.kind = DeckLoad::Kind::distributed;
@@ -265,6 +268,14 @@ void readAttachments(Context& c) {
   readMasses(c);
   readHinges(c);
   readLoads(c);
+  // A model without beams needs something to move and something to hold it.
+  if (!c.deck.segments.empty()) return;
+  if (c.deck.masses.empty())
+    block(c, "springs").value_or(c.root).fail(
+        "a model without segments (beams) needs at least one mass (masses:) on its points");
+  if (c.deck.springs.empty())
+    block(c, "masses")->fail("a model without segments (beams) needs at least one spring "
+                             "(springs:) to hold its masses");
 }
 
 }  // namespace beamrotor::reader

@@ -89,6 +89,24 @@ double elementEstimate(const DeckSegment& s) {
   return s.elements > 0 ? s.elements : std::ceil(s.length / s.size);
 }
 
+/// A model without beams: named points only, `at` their x coordinate (m, default 0).
+void readPointModel(Context& c) {
+  const auto points = c.root.get("points");
+  if (!points || points->isNull())
+    c.root.fail("the deck needs segments (a line of beams) or, for a model without beams, "
+                "points carrying masses and springs");
+  std::vector<std::string> names;
+  for (const Field& f : points->items()) {
+    f.allowOnly({"name", "at"}, "a point");
+    const Field nf = f.require("name");
+    const std::string name = nf.name();
+    claimName(nf, name, names, "a point");
+    const double x = f.has("at") ? f.require("at").number(c.evaluator) : 0.0;
+    c.deck.points.push_back({name, x, f.place()});
+  }
+  if (c.deck.points.empty()) points->fail("the list of points is empty");
+}
+
 }  // namespace
 
 void readMaterials(Context& c) {
@@ -123,6 +141,7 @@ void readMaterials(Context& c) {
 }
 
 void readSections(Context& c) {
+  if (!c.root.has("sections") && !c.root.has("segments")) return;  // a model without beams
   auto block = c.root.require("sections");
   std::vector<std::string> names;
   for (const Field& f : block.items()) {
@@ -139,6 +158,10 @@ void readSections(Context& c) {
 }
 
 void readLine(Context& c) {
+  if (!c.root.has("segments")) {
+    readPointModel(c);
+    return;
+  }
   const ExpressionEvaluator& ev = c.evaluator;
   // 1. Segments, in order from the start of the line.
   const Field block = c.root.require("segments");

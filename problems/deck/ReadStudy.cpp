@@ -30,9 +30,13 @@ void readAnalyses(Context& c) {
     if (!f.isMap()) f.fail("expected a map such as {type: static}, got " + f.describe());
     DeckAnalysis a;
     a.place = f.place();
-    a.type = f.require("type").choice({"static", "modal"});
+    a.type = f.require("type").choice({"static", "modal", "transient"});
     if (a.type == "static") {
       f.allowOnly({"type", "name"}, "a static analysis");
+    } else if (a.type == "transient") {
+      a.transient = readTransient(c, f);
+      if (!hasMass(c.deck))
+        f.fail("a transient analysis needs mass: give the materials a density rho or add masses");
     } else {
       f.allowOnly({"type", "name", "modes", "shift"}, "a modal analysis");
       if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
@@ -53,8 +57,8 @@ void readAnalyses(Context& c) {
 
 /// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
 /// returns the name of the analysis it reads.
-std::string resolveQuantity(const Context& c, const Quantity& q, const Field& f,
-                            const std::optional<Field>& analysisField) {
+std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
+                            const std::optional<Field>& analysisField, bool applicable) {
   const Deck& deck = c.deck;
   // 1. The analysis: named, or the first of the right type.
   const DeckAnalysis* analysis = nullptr;
@@ -114,6 +118,7 @@ std::string resolveQuantity(const Context& c, const Quantity& q, const Field& f,
       f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
              c.carriedNames() + ")");
   }
+  if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
   if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
            "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
@@ -139,14 +144,14 @@ void readChecks(Context& c) {
     } catch (const std::invalid_argument& e) {
       qf.fail(e.what());
     }
-    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"));
-    k.reference = f.require("reference").number(c.evaluator);
-    const Field tol = f.require("tolerance");
-    k.tolerance = tol.positive(c.evaluator);
     if (auto when = f.get("when")) {
       k.condition = when->text();
       k.applicable = when->number(c.evaluator) != 0;
     }
+    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
+    k.reference = f.require("reference").number(c.evaluator);
+    const Field tol = f.require("tolerance");
+    k.tolerance = tol.positive(c.evaluator);
     c.deck.checks.push_back(std::move(k));
   }
 }

@@ -44,6 +44,13 @@ void readAttachments(Context& c);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 
+/// The settings of a transient analysis `f` (a map with type: transient).
+DeckTransient readTransient(const Context& c, const Field& f);
+/// Checks a history quantity against transient `analysis` and evaluates its time (which must
+/// lie within the run when the check applies).
+void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
+                            const DeckAnalysis& analysis, bool applicable);
+
 /// The beam formulation a field names (euler-bernoulli, timoshenko, ...).
 BeamTheory formulationOf(const Field& f);
 

@@ -180,7 +180,8 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
                        const std::string& parameter, const std::vector<SweepQuantity>& quantities,
                        const CsvTable& table, const std::string& csvFile) {
-  // Frequencies share one panel; every reaction and the stress get their own, except
+  // Frequencies share one panel; every reaction, the stress and each transient maximum get
+  // their own, except
   // reactions that stay zero over the whole sweep (an unloaded direction: nothing to see).
   const auto largest = [&](const SweepQuantity& q) {
     double m = 0;
@@ -195,7 +196,7 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   for (const SweepQuantity& q : quantities) {
     if (q.group == SweepGroup::frequency)
       frequencies.push_back(&q);
-    else if (q.group == SweepGroup::stress ||
+    else if (q.group == SweepGroup::stress || q.group == SweepGroup::extreme ||
              (q.group == SweepGroup::reaction && largest(q) > 1e-12 * largestReaction))
       panels.push_back({&q});
   }
@@ -211,12 +212,19 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
        << panelLayout(rows, columns, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n"
        << "  set xlabel " << gnuplotText(parameter) << "\n";
+  // Values spread over decades (a stiffness from 1e4 to 1e6) read better on a log axis.
+  const auto values = table.numbers(parameter);
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  if (low != values.end() && *low > 0 && *high >= 30 * *low) body << "  set logscale x\n";
   for (const auto& panel : panels) {
+    // Forces in kN (N m in kN m), stresses in MPa, anything else as it is.
     const std::string unit = panel.front()->column.unit;
-    const double scale = unit == "Pa" ? 1e-6 : unit == "Hz" ? 1.0 : 1e-3;
-    const std::string shown = unit == "Pa" ? "MPa" : unit == "Hz" ? "Hz" : "k" + unit;
+    const bool force = unit == "N" || unit == "N m";
+    const double scale = unit == "Pa" ? 1e-6 : force ? 1e-3 : 1.0;
+    const std::string shown = unit == "Pa" ? "MPa" : force ? "k" + unit : unit;
     const std::string label = panel.size() == 1 ? panel.front()->label : "frequency";
-    body << "  set ylabel " << gnuplotText(label + " [" + shown + "]") << "\n  plot ";
+    body << "  set ylabel " << gnuplotText(shown.empty() ? label : label + " [" + shown + "]")
+         << "\n  plot ";
     for (std::size_t i = 0; i < panel.size(); ++i) {
       if (i) body << ", \\\n       ";
       body << gnuplotFile(csvFile) << " skip 1 using " << table.column(parameter) << ":($"
@@ -229,6 +237,27 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   }
   body << "  unset multiplot\n";
   return {chartName, "Sweep quantities against " + parameter, width, height, body.str()};
+}
+
+ChartScript historyChart(const std::string& caption, const std::string& chartName,
+                         const CsvTable& table, const std::string& csvFile) {
+  const std::vector<CsvColumn>& columns = table.columns();
+  const int panels = std::max(1, int(columns.size()) - 1);
+  const int width = 1000, height = 140 + 260 * panels;
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(panels, 1, caption, width, height) << "  set grid\n"
+       << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
+       << "  set xrange [*:*] noextend\n";
+  for (std::size_t c = 1; c < columns.size(); ++c) {
+    if (c + 1 == columns.size()) body << "  set xlabel 'time t [s]'\n";
+    const std::string unit = columns[c].unit.empty() ? "" : " [" + columns[c].unit + "]";
+    body << "  set ylabel " << gnuplotText(columns[c].name + unit) << "\n"
+         << plotCommand(table, csvFile, columns[0].name,
+                        {{columns[c].name, gnuplotText(columns[c].name)}}, 1.0, false);
+  }
+  body << "  unset multiplot\n";
+  return {chartName, "Transient histories against time", width, height, body.str()};
 }
 
 }  // namespace beamrotor

@@ -1,7 +1,7 @@
 // The charts a person would rather look at than read, as gnuplot scripts over the CSV
 // tables: the diagrams of a static solution along the line (deflection, rotation, bending
 // moment, stress, stacked like the published figures of the pump rod), the first mode
-// shapes, and sweep quantities against the swept parameter.
+// shapes, sweep quantities against the swept parameter, and transient histories in time.
 #pragma once
 
 #include <string>
@@ -37,11 +37,16 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
                             const Model& model, const ModalResult& modal, const CsvTable& shapes,
                             const std::string& csvFile, int count = 4);
 
-/// One panel per reaction component and the largest stress of a static analysis, or the
-/// frequencies of a modal one, against the swept parameter, from sweepTable in csvFile.
+/// One panel per reaction component and the largest stress of a static analysis, per maximum
+/// of a transient one, or the frequencies of a modal one, against the swept parameter, from sweepTable in csvFile.
 /// `quantities` are those of this analysis.
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
                        const std::string& parameter, const std::vector<SweepQuantity>& quantities,
                        const CsvTable& table, const std::string& csvFile);
+
+/// One panel per column of a transient history table (after its first column, time t in s)
+/// against time, from historyTable written to csvFile.
+ChartScript historyChart(const std::string& caption, const std::string& chartName,
+                         const CsvTable& table, const std::string& csvFile);
 
 }  // namespace beamrotor

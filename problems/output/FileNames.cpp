@@ -31,10 +31,23 @@ void requireDistinctFileStems(const std::vector<AnalysisOutcome>& analyses) {
   }
 }
 
-std::string modeVtu(const std::string& stem, int number) {
+namespace {
+
+/// stem_kind_007.vtu: numbered files that sort in order.
+std::string numberedVtu(const std::string& stem, const char* kind, int number, int digits) {
   char buffer[16];
-  std::snprintf(buffer, sizeof buffer, "%02d", number);
-  return stem + "_mode_" + buffer + ".vtu";
+  std::snprintf(buffer, sizeof buffer, "%0*d", digits, number);
+  return stem + "_" + kind + "_" + buffer + ".vtu";
+}
+
+}  // namespace
+
+std::string modeVtu(const std::string& stem, int number) {
+  return numberedVtu(stem, "mode", number, 2);
+}
+
+std::string frameVtu(const std::string& stem, int number) {
+  return numberedVtu(stem, "frame", number, 4);
 }
 
 std::string sweepValueDirectory(std::size_t index, std::size_t count) {

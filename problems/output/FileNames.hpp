@@ -52,6 +52,16 @@ inline std::string shapesChart(const std::string& stem) {
 inline std::string sweepChart(const std::string& stem) {
   return "sweep_" + stem;
 }
+/// Transient: the named histories, one row per sample time.
+inline std::string historyCsv(const std::string& stem) {
+  return stem + "_history.csv";
+}
+/// Transient: the histories' chart (without extension).
+inline std::string historyChart(const std::string& stem) {
+  return stem + "_history";
+}
+/// Transient: stored frame `number` (1-based) of the displacement field.
+std::string frameVtu(const std::string& stem, int number);
 /// Sub-directory of a sweep for value number `index` of `count`: value_000, value_001, ...
 std::string sweepValueDirectory(std::size_t index, std::size_t count);
 

@@ -10,6 +10,7 @@
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/Reactions.hpp"
+#include "problems/output/TransientJson.hpp"
 
 namespace beamrotor {
 
@@ -175,7 +176,7 @@ void requireFiniteAt(const Json& node, const std::string& path, const std::strin
 /// The part of a run's analysis entry a sweep tracks.
 Json sweepAnalysisJson(const Json& analysis) {
   Json out = {{"type", analysis.at("type")}, {"name", analysis.at("name")}};
-  for (const char* key : {"reactions", "max_stress", "frequencies_hz"})
+  for (const char* key : {"reactions", "max_stress", "frequencies_hz", "maxima"})
     if (analysis.contains(key)) out[key] = analysis[key];
   return out;
 }
@@ -199,6 +200,8 @@ Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>
       analyses.push_back(staticJson(model, dofs, a, stations[i]));
     else if (a.modal)
       analyses.push_back(modalJson(carried, a));
+    else if (a.transient)
+      analyses.push_back(transientJson(a));
     else  // a kind of analysis this writer does not know yet: at least say it ran
       analyses.push_back({{"type", a.type}, {"name", a.name}});
   }

@@ -15,6 +15,7 @@
 #include "problems/output/LineSampling.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
+#include "problems/output/TransientFiles.hpp"
 #include "problems/output/VtkWriter.hpp"
 
 namespace beamrotor {
@@ -31,6 +32,7 @@ struct PreparedAnalysis {
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
   std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
   std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
+  std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
 };
 
 struct PreparedRun {
@@ -49,7 +51,8 @@ PreparedRun prepare(const RunResult& run) {
   PreparedRun prepared{&run, {}, {}};
   std::vector<std::vector<StaticStation>> stations;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}};
+    if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
     if (a.statics) {
       p.stations = sampleStatics(model, a.statics->displacement);
       p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
@@ -90,6 +93,9 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
         drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem), *p.fields,
                                       fieldsCsv(p.stem), namedPointMarkers(model)));
     }
+    if (a.transient)
+      writeTransientFiles(dir, model, p.stem, *a.transient, *p.history,
+                          charts ? caption(run, a.name) : "");
     if (a.modal) {
       p.modes->write(dir / modesCsv(p.stem));
       p.shapes->write(dir / shapesCsv(p.stem));

@@ -71,6 +71,23 @@ void addModal(const Json& a, std::vector<SweepQuantity>& out) {
   }
 }
 
+void addTransient(const Json& a, std::vector<SweepQuantity>& out) {
+  const std::string name = a.at("name");
+  for (const auto& [key, value] : a.at("maxima").items()) {
+    // <history>_max carries its history's unit.
+    const std::string history = key.substr(0, key.size() - 4);
+    const std::string unit = a.at("histories").at(history).at("unit");
+    out.push_back({SweepGroup::extreme,
+                   name,
+                   key,
+                   {name + "." + key, unit},
+                   [name, key](const Json& doc) {
+                     return required(analysisNamed(doc, name).at("maxima"), key, key)
+                         .get<double>();
+                   }});
+  }
+}
+
 }  // namespace
 
 std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
@@ -78,6 +95,7 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
   for (const Json& a : runDocs.at(0).at("analyses")) {
     if (a.contains("reactions")) addStatic(a, out);
     if (a.contains("frequencies_hz")) addModal(a, out);
+    if (a.contains("maxima")) addTransient(a, out);
   }
   std::vector<std::string> checks;
   for (const Json& doc : runDocs)

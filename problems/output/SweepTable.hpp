@@ -1,5 +1,6 @@
 // What a sweep tracks across its values: each reaction component and the largest stress of
-// every static analysis, the frequencies of every modal analysis and each check. Read from
+// every static analysis, the frequencies of every modal analysis, the maxima (largest |value|
+// of each named history) of every transient analysis and each check. Read from
 // the runs' results.json documents, so sweep.csv, the sweep charts and the per-value
 // directories report the same numbers.
 #pragma once
@@ -14,13 +15,13 @@
 
 namespace beamrotor {
 
-enum class SweepGroup { reaction, stress, frequency, check, checkPass };
+enum class SweepGroup { reaction, stress, frequency, check, checkPass, extreme };
 
 /// One quantity followed over the sweep.
 struct SweepQuantity {
   SweepGroup group = SweepGroup::reaction;
   std::string analysis;  ///< the analysis it belongs to; empty for checks
-  std::string label;     ///< for a chart: "left fy", "largest stress", "mode 2", a check's name
+  std::string label;     ///< for a chart: "left fy", "largest stress", "mode 2", "phi_max", a check's name
   CsvColumn column;      ///< its column in sweep.csv, e.g. {"static.left.fy", "N"}
   /// Its value in one run's results.json; throws std::runtime_error when the run lacks it
   /// (a sweep whose values change the supports or analyses).

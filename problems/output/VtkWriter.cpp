@@ -165,6 +165,21 @@ void writeModeVtu(const std::filesystem::path& file, const Model& model, const M
   write(grid, file);
 }
 
+void writeFrameVtu(const std::filesystem::path& file, const Model& model, const Frame& frame) {
+  auto grid = lineGrid(model);
+  if (grid->GetNumberOfCells() == 0) {
+    grid->GetCellData()->Initialize();  // the line arrays (empty) would not match the vertices
+    for (vtkIdType n = 0; n < vtkIdType(model.nodeCount()); ++n)
+      grid->InsertNextCell(VTK_VERTEX, 1, &n);
+  }
+  grid->GetPointData()->AddArray(pointVectors("displacement", frame.displacement, 0));
+  grid->GetPointData()->AddArray(pointVectors("rotation", frame.displacement, 3));
+  auto time = doubleArray("time", 1, 1);
+  time->SetValue(0, frame.time);
+  grid->GetFieldData()->AddArray(time);
+  write(grid, file);
+}
+
 void writePvd(const std::filesystem::path& file, const std::vector<PvdEntry>& entries) {
   std::ofstream out(file);
   if (!out) throw std::runtime_error("cannot create " + file.string());

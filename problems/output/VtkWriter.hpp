@@ -9,6 +9,7 @@
 
 #include "fem/Model.hpp"
 #include "fem/Results.hpp"
+#include "fem/TransientResults.hpp"
 #include "problems/output/LineSampling.hpp"
 
 namespace beamrotor {
@@ -28,6 +29,11 @@ void writeStaticVtu(const std::filesystem::path& file, const Model& model,
 /// properties, field data `mode` (1-based number) and `frequency_hz`.
 void writeModeVtu(const std::filesystem::path& file, const Model& model, const Mode& mode,
                   int number);
+
+/// One frame of a transient run: the line elements as VTK_LINE cells, or, for a model
+/// without them (bodies on springs), one VTK_VERTEX per node; point data `displacement`
+/// (ux uy uz, m) and `rotation` (rx ry rz, rad), field data `time` (s).
+void writeFrameVtu(const std::filesystem::path& file, const Model& model, const Frame& frame);
 
 /// One data set of a collection: the file (relative to the .pvd) shown at `timestep`.
 struct PvdEntry {
