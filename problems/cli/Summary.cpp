@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "problems/cli/RotorSummary.hpp"
+
 namespace beamrotor::cli {
 
 namespace {
@@ -20,6 +22,7 @@ SystemSize sizeOf(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) return a.statics->size;
     if (a.modal) return a.modal->size;
+    if (a.rotor && rotorSize(*a.rotor)) return *rotorSize(*a.rotor);
   }
   return {};
 }
@@ -122,6 +125,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) printStatic(out, deck, run, a);
     if (a.modal) printModal(out, a);
+    if (a.rotor) printRotor(out, a);
   }
 }
 

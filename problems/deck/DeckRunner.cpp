@@ -7,6 +7,7 @@
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
 #include "problems/deck/ModelBuilder.hpp"
+#include "problems/deck/RunRotor.hpp"
 
 namespace beamrotor {
 
@@ -19,6 +20,8 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
   try {
     if (a.type == "static") {
       out.statics = solveStatic(model);
+    } else if (isRotorAnalysis(a.type)) {
+      out.rotor = solveRotorAnalysis(deck, a, model);
     } else {
       ModalOptions options;
       options.modes = a.modes;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fem/Recovery.hpp"
+#include "problems/deck/RotorQuantity.hpp"
 
 namespace beamrotor {
 
@@ -13,7 +14,8 @@ namespace {
 
 constexpr const char* kGrammar =
     "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max' "
-    "or 'moment max'";
+    "'moment max', 'log_decrement N', 'critical_speed N', 'unbalance_amplitude POINT at RPM' "
+    "or 'rigid_body PROPERTY'";
 
 /// Stations per element for the maxima: resultants vary at most quadratically along an
 /// element (uniform distributed load), so 8 intervals place a station within L/16 of any
@@ -34,6 +36,23 @@ Dof parseComponent(const std::string& word) {
 
 }  // namespace
 
+int parseOrdinal(const std::string& n, const std::string& what) {
+  const bool digits = !n.empty() && n.size() <= 4 &&
+                      std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (!digits || std::stoi(n) < 1)
+    throw std::invalid_argument(what + " '" + n + "' must be a whole number from 1");
+  return std::stoi(n);
+}
+
+std::string Quantity::analysisType() const {
+  if (auto rotor = rotorAnalysisType(*this)) return *rotor;
+  return kind == Kind::frequency ? "modal" : "static";
+}
+
+bool Quantity::readsFrom(const std::string& type) const {
+  return type == analysisType() || (kind == Kind::frequency && type == "rotor");
+}
+
 Quantity parseQuantity(const std::string& text) {
   std::istringstream in(text);
   std::vector<std::string> words;
@@ -50,14 +69,10 @@ Quantity parseQuantity(const std::string& text) {
   }
   if (head == "frequency" && words.size() == 2) {
     q.kind = Quantity::Kind::frequency;
-    const std::string& n = words[1];
-    const bool digits = !n.empty() && n.size() <= 4 &&
-                        std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (!digits || std::stoi(n) < 1)
-      throw std::invalid_argument("mode number '" + n + "' must be a whole number from 1");
-    q.mode = std::stoi(n);
+    q.mode = parseOrdinal(words[1], "mode number");
     return q;
   }
+  if (parseRotorQuantity(words, q)) return q;
   if ((head == "stress" || head == "moment") && words.size() == 2 && words[1] == "max") {
     q.kind = head == "stress" ? Quantity::Kind::maxStress : Quantity::Kind::maxMoment;
     return q;
@@ -66,6 +81,7 @@ Quantity parseQuantity(const std::string& text) {
 }
 
 double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
+  if (outcome.rotor) return measureRotor(q, outcome);
   if (q.kind == Quantity::Kind::frequency) {
     if (!outcome.modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
     const auto& modes = outcome.modal->modes;

@@ -4,6 +4,12 @@
 //   frequency N               natural frequency of mode N (Hz), N from 1
 //   stress max                largest |normal stress| on the outer fibres of any beam (Pa)
 //   moment max                largest bending moment magnitude in any beam (N m)
+// and those of the rotor analyses (RotorQuantity.cpp):
+//   frequency N               in a rotor analysis: damped whirl frequency of mode N (Hz)
+//   log_decrement N           logarithmic decrement of mode N of a rotor analysis
+//   critical_speed N          N-th critical speed of a campbell analysis (rpm), ascending
+//   unbalance_amplitude POINT at RPM   orbit semi-major axis of POINT at RPM (m)
+//   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2 of a rigid-body analysis
 #pragma once
 
 #include <stdexcept>
@@ -16,15 +22,22 @@
 namespace beamrotor {
 
 struct Quantity {
-  enum class Kind { reaction, displacement, frequency, maxStress, maxMoment };
+  enum class Kind {
+    reaction, displacement, frequency, maxStress, maxMoment,
+    logDecrement, criticalSpeed, unbalanceAmplitude, rigidBody  // rotor analyses
+  };
   Kind kind = Kind::reaction;
   std::string target;  ///< support (reaction) or point (displacement) name
   Dof dof = Dof::uy;
-  int mode = 1;        ///< frequency: 1-based mode number
+  int mode = 1;        ///< frequency, log_decrement, critical_speed: 1-based number
+  double rpm = 0;      ///< unbalance_amplitude: the speed (rpm)
+  std::string property;  ///< rigid_body: which property
   std::string text;    ///< as written, for reports
 
-  /// The analysis type whose result it reads: "static" or "modal".
-  std::string analysisType() const { return kind == Kind::frequency ? "modal" : "static"; }
+  /// The analysis type it reads by default (when a check names none).
+  std::string analysisType() const;
+  /// Whether an analysis of `type` can give it (frequency: modal or rotor).
+  bool readsFrom(const std::string& type) const;
 };
 
 /// Parses the phrase; throws std::invalid_argument saying what is wrong and what is allowed.

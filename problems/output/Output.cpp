@@ -13,6 +13,7 @@
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
+#include "problems/output/RotorOutput.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/VtkWriter.hpp"
@@ -31,6 +32,7 @@ struct PreparedAnalysis {
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
   std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
   std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
+  std::optional<PreparedRotor> rotor;   ///< rotor analyses
 };
 
 struct PreparedRun {
@@ -49,7 +51,7 @@ PreparedRun prepare(const RunResult& run) {
   PreparedRun prepared{&run, {}, {}};
   std::vector<std::vector<StaticStation>> stations;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}};
     if (a.statics) {
       p.stations = sampleStatics(model, a.statics->displacement);
       p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
@@ -58,6 +60,7 @@ PreparedRun prepare(const RunResult& run) {
       p.modes = modesTable(modesCsv(p.stem), *a.modal);
       p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
     }
+    if (a.rotor) p.rotor = prepareRotor(a, p.stem);
     stations.push_back(p.stations);
     prepared.analyses.push_back(std::move(p));
   }
@@ -83,6 +86,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
   writeJson(prepared.doc, dir / kResultsJson);
   for (const PreparedAnalysis& p : prepared.analyses) {
     const AnalysisOutcome& a = *p.outcome;
+    if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
     if (a.statics) {
       p.fields->write(dir / fieldsCsv(p.stem));
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);
