@@ -1,7 +1,6 @@
 // gnuplot scripts of the rotor analyses (see RotorCharts.hpp).
 #include "problems/output/RotorCharts.hpp"
 
-#include <algorithm>
 #include <sstream>
 
 #include "problems/output/ChartParts.hpp"
@@ -60,21 +59,20 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
 ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
                                    const CsvTable& response, const std::string& csvFile,
                                    const std::vector<std::string>& points) {
-  bool positive = true;
-  for (const std::string& p : points) {
-    const auto a = response.numbers(p + "_amplitude");
-    positive = positive && std::all_of(a.begin(), a.end(), [](double v) { return v > 0; });
-  }
   const int width = 900, height = 800;
   const int x = response.column("speed_rpm");
-  const auto panel = [&](const std::string& what, double scale) {
+  // Amplitudes on a log scale skip the zeros (no force at rest); phases are drawn as they are.
+  const auto panel = [&](const std::string& what, double scale, bool positive) {
     std::ostringstream s;
     s << "  plot ";
     for (std::size_t k = 0; k < points.size(); ++k) {
+      const int column = response.column(points[k] + "_" + what);
       if (k) s << ", \\\n       ";
-      s << gnuplotFile(csvFile) << " skip 1 using " << x << ":($"
-        << response.column(points[k] + "_" + what) << "*" << number(scale)
-        << ") with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << colour(k) << " title "
+      s << gnuplotFile(csvFile) << " skip 1 using " << x << ":(";
+      if (positive) s << "$" << column << " > 0 ? ";
+      s << "$" << column << "*" << number(scale);
+      if (positive) s << " : NaN";
+      s << ") with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << colour(k) << " title "
         << gnuplotText(points[k]);
     }
     return s.str() + "\n";
@@ -83,12 +81,12 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
   body << "  set encoding utf8\n"
        << panelLayout(2, 1, caption, width, height, 130) << "  set grid\n"
        << "  set key outside right top\n"
-       << (positive ? "  set logscale y\n" : "")
+       << "  set logscale y\n"
        << "  set ylabel 'orbit semi-major axis [µm]'\n"
-       << panel("amplitude", 1e6) << "  unset logscale y\n"
+       << panel("amplitude", 1e6, true) << "  unset logscale y\n"
        << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'phase of u_y [deg]'\n"
        << "  set yrange [-180:180]\n  set ytics 90\n"
-       << panel("uy_phase", 1) << "  unset multiplot\n";
+       << panel("uy_phase", 1, false) << "  unset multiplot\n";
   return {chartName, "Unbalance response: amplitude and phase against spin speed", width, height,
           body.str()};
 }

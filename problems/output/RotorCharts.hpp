@@ -19,7 +19,7 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
                             double order);
 
 /// Two panels against speed (rpm) from an unbalanceTable in csvFile: the orbit semi-major
-/// axis (um, log scale when positive throughout) and the phase of uy (deg), one curve per
+/// axis (um, log scale) and the phase of uy (deg), one curve per
 /// response point.
 ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
                                    const CsvTable& response, const std::string& csvFile,

@@ -22,10 +22,23 @@ PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
   return p;
 }
 
+namespace {
+
+/// The caption, without its parameter list when that would not fit above one chart.
+std::string fitted(const std::string& caption) {
+  constexpr std::size_t kWidest = 90;  // characters across a 900-pixel chart title
+  const std::size_t list = caption.find(" (");
+  return caption.size() > kWidest && list != std::string::npos ? caption.substr(0, list)
+                                                                : caption;
+}
+
+}  // namespace
+
 void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std::string& stem,
                      const Model& model, const std::filesystem::path& dir,
-                     const std::string& caption, bool charts) {
+                     const std::string& fullCaption, bool charts) {
   const RotorOutcome& r = *a.rotor;
+  const std::string caption = fitted(fullCaption);
   if (p.modes) {
     p.modes->write(dir / modesCsv(stem));
     std::vector<PvdEntry> entries;
