@@ -72,27 +72,31 @@ void writeOrbitVtu(const std::filesystem::path& file, const Model& model, const 
   }
   const double scale = kOrbitScale * std::max((hi - lo).norm(), 1e-3);
 
-  // 2. One closed polyline per node through x + s Re(u e^{i theta}).
+  // 2. Per node a closed ring of VTK_LINE cells through x + s Re(u e^{i theta}) (lines
+  //    rather than one VTK_POLY_LINE, which meshio cannot read).
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkIntArray> nodeIds;
   nodeIds->SetName("node");
-  auto major = doubleArray("orbit_semi_major", 1, model.nodeCount());
-  grid->Allocate(model.nodeCount());
+  const vtkIdType cells = vtkIdType(model.nodeCount()) * kOrbitPoints;
+  auto major = doubleArray("orbit_semi_major", 1, cells);
+  grid->Allocate(cells);
   for (int n = 0; n < model.nodeCount(); ++n) {
-    std::vector<vtkIdType> ids;
+    const vtkIdType first = points->GetNumberOfPoints();
     for (int j = 0; j < kOrbitPoints; ++j) {
       const std::complex<double> turn =
           std::polar(1.0, 2 * std::numbers::pi * j / kOrbitPoints);
       Eigen::Vector3d x = model.nodes()[n];
       for (int k = 0; k < 3; ++k) x[k] += scale * (mode.shape(n, k) * turn).real();
-      ids.push_back(points->InsertNextPoint(x.x(), x.y(), x.z()));
+      points->InsertNextPoint(x.x(), x.y(), x.z());
     }
-    ids.push_back(ids.front());
-    grid->InsertNextCell(VTK_POLY_LINE, vtkIdType(ids.size()), ids.data());
-    nodeIds->InsertNextValue(n);
-    major->SetValue(n, orbitAt(mode, n).major());
+    for (int j = 0; j < kOrbitPoints; ++j) {
+      const vtkIdType ends[2] = {first + j, first + (j + 1) % kOrbitPoints};
+      const vtkIdType cell = grid->InsertNextCell(VTK_LINE, 2, ends);
+      nodeIds->InsertNextValue(n);
+      major->SetValue(cell, orbitAt(mode, n).major());
+    }
   }
   grid->SetPoints(points);
   grid->GetCellData()->AddArray(nodeIds);

@@ -16,9 +16,10 @@ namespace beamrotor {
 void writeRotorModeVtu(const std::filesystem::path& file, const Model& model,
                        const RotorMode& mode, int number);
 
-/// The orbits of the same mode: per node a closed VTK_POLY_LINE through
-/// x_node + s Re(shape e^{i theta}), theta over one period, with s = 0.1 of the model's extent
-/// (the shape has largest translation 1); cell data `node` and `orbit_semi_major`.
+/// The orbits of the same mode: per node a closed ring of 48 VTK_LINE cells (cells 48 n to
+/// 48 n + 47) through x_node + s Re(shape e^{i theta}), theta over one period, with s = 0.1 of
+/// the model's extent (the shape has largest translation 1); cell data `node` and
+/// `orbit_semi_major`.
 void writeOrbitVtu(const std::filesystem::path& file, const Model& model, const RotorMode& mode);
 
 }  // namespace beamrotor

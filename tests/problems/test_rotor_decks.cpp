@@ -188,20 +188,52 @@ TEST_SUITE("rotor decks") {
       CHECK(im[k] == mode.shape(disk, k).imag());
     }
     const auto orbits = readVtu(dir / "spin_orbits_mode_01.vtu");
-    REQUIRE(orbits->GetNumberOfCells() == run.model->nodeCount());
+    constexpr int kRing = 48;  // line cells per orbit
+    REQUIRE(orbits->GetNumberOfCells() == kRing * run.model->nodeCount());
     const double scale = 0.1 * j.L;  // a tenth of the model's extent per unit translation
     for (int n = 0; n < run.model->nodeCount(); ++n) {
       const Orbit o{mode.shape(n, 1), mode.shape(n, 2)};
-      vtkIdList* ids = orbits->GetCell(n)->GetPointIds();
       double largest = 0;
-      for (vtkIdType p = 0; p < ids->GetNumberOfIds(); ++p) {
+      for (int c = kRing * n; c < kRing * (n + 1); ++c) {
         double x[3];
-        orbits->GetPoint(ids->GetId(p), x);
+        orbits->GetPoint(orbits->GetCell(c)->GetPointId(0), x);
         largest = std::max(largest, (Eigen::Vector3d(x[0], x[1], x[2]) - run.model->nodes()[n]).norm());
       }
       CAPTURE(n);
       CHECK(largest <= scale * o.major() * (1 + 1e-12) + 1e-15);
       CHECK(largest >= scale * o.major() * std::cos(kPi / 48) * (1 - 1e-12) - 1e-15);
     }
+  }
+}
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("lateral deck: statics in both planes and modal at rest match the Jeffcott forms") {
+    // The Jeffcott deck without damper, statically loaded at the disk in y and z, and its
+    // modes at rest: deflection F / k in each plane (Hermite: exact), and the natural
+    // frequency sqrt(k / m) twice (one per plane).
+    const Jeffcott j;
+    std::string text = kJeffcottDeck;
+    text = text.substr(0, text.find("bearings:")) + R"(
+loads: [{type: point, at: disk, fy: -1000, fz: 500}]
+analyses:
+  - {type: static}
+  - {type: modal, modes: 2}
+  - {type: rotor, name: at-rest, speed_rpm: 0, modes: 2}
+)";
+    StudyRequest request;
+    request.deckPath = "jeffcott_lateral.yaml";
+    const Study s = solveStudyText(text, request);
+    REQUIRE(s.run);
+    const RunResult& run = *s.run;
+    const int disk = run.model->node("disk");
+    const StaticResult& st = *analysis(run, "static").statics;
+    CHECK(relError(st.displacement(disk, dofIndex(Dof::uy)), -1000 / j.k()) < kClosedForm);
+    CHECK(relError(st.displacement(disk, dofIndex(Dof::uz)), 500 / j.k()) < kClosedForm);
+    const ModalResult& modal = *analysis(run, "modal").modal;
+    REQUIRE(modal.modes.size() == 2);
+    for (const Mode& m : modal.modes) CHECK(relError(std::sqrt(m.eigenvalue), j.wn()) < kClosedForm);
+    // The rotor analysis at rest, undamped, is the same eigenproblem by another solver.
+    for (const RotorMode& m : analysis(run, "at-rest").rotor->modes->modes)
+      CHECK(relError(m.dampedFrequency, j.wn()) < kClosedForm);
   }
 }
