@@ -9,7 +9,8 @@
 //   log_decrement N           logarithmic decrement of mode N of a rotor analysis
 //   critical_speed N          N-th critical speed of a campbell analysis (rpm), ascending
 //   unbalance_amplitude POINT at RPM   orbit semi-major axis of POINT at RPM (m)
-//   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2 of a rigid-body analysis
+//   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
+//                             (N, per unit modal amplitude) of a rigid-body analysis
 #pragma once
 
 #include <stdexcept>

@@ -24,8 +24,9 @@ double rigidBodyProperty(const RigidBodyOutcome& r, const std::string& p) {
   if (p == "com_x") return r.body.xG;
   if (p == "J_com") return r.body.J;
   if (p == "Jp") return r.body.Jp;
-  const int i = p.back() - '1';  // f1 f2 n1 n2
+  const int i = p.back() - '1';  // f1 f2 n1 n2 FA1 FB1 FA2 FB2
   if (p[0] == 'f') return r.modes[i].k / (2 * std::numbers::pi);
+  if (p[0] == 'F') return p[1] == 'A' ? r.modes[i].FA : r.modes[i].FB;
   if (!std::isfinite(r.modes[i].n))
     throw std::invalid_argument(p + " is infinite: mode " + std::to_string(i + 1) +
                                 " is a pure bounce (C1 l1 = C2 l2, the paper's n = 0/0)");
@@ -35,8 +36,8 @@ double rigidBodyProperty(const RigidBodyOutcome& r, const std::string& p) {
 }  // namespace
 
 const std::vector<std::string>& rigidBodyPropertyNames() {
-  static const std::vector<std::string> names{"mass", "com_x", "J_com", "Jp",
-                                              "f1",   "f2",    "n1",    "n2"};
+  static const std::vector<std::string> names{"mass", "com_x", "J_com", "Jp", "f1",  "f2",
+                                              "n1",   "n2",    "FA1",   "FB1", "FA2", "FB2"};
   return names;
 }
 
