@@ -129,6 +129,25 @@ void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
 
 }  // namespace
 
+void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
+  disk.allowOnly({"D", "bore", "width", "rho"}, "a disk");
+  const ExpressionEvaluator& ev = c.evaluator;
+  const double D = disk.require("D").positive(ev);
+  const double w = disk.require("width").positive(ev);
+  const double rho = disk.require("rho").positive(ev);
+  double d = 0;
+  if (auto bore = disk.get("bore")) {
+    d = bore->nonNegative(ev);
+    if (!(d < D)) bore->fail("the bore must be smaller than D (" + formatNumber(D) + ")");
+  }
+  // Annular disk (a hollow cylinder) about its centre: m = rho pi (D^2 - d^2) w / 4,
+  // Jp = m (D^2 + d^2) / 8, Jd = m ((D^2 + d^2) / 16 + w^2 / 12) (the rigid-body inertia of
+  // a thick ring, e.g. Genta, Dynamics of Rotating Systems, 2005, section 4.1).
+  mass.m = rho * std::numbers::pi * (D * D - d * d) * w / 4;
+  mass.Jp = mass.m * (D * D + d * d) / 8;
+  mass.Jd = mass.m * ((D * D + d * d) / 16 + w * w / 12);
+}
+
 void readRotorModel(Context& c) {
   readBearings(c);
   readDamping(c);

@@ -41,6 +41,8 @@ void readSections(Context& c);
 void readLine(Context& c);
 /// Supports, springs, contacts, masses, hinges and loads.
 void readAttachments(Context& c);
+/// A mass given as a disk's geometry {D, bore, width, rho}: its m, Jp, Jd into `mass`.
+void readDisk(const Context& c, const Field& disk, DeckMass& mass);
 /// Bearings and proportional damping (ReadRotor.cpp).
 void readRotorModel(Context& c);
 /// The fields of a rotor, campbell, unbalance or rigid-body analysis into a.

@@ -237,3 +237,25 @@ analyses:
       CHECK(relError(m.dampedFrequency, j.wn()) < kClosedForm);
   }
 }
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("a disk given by its geometry gets the thick ring's m, Jp, Jd") {
+    // Hollow cylinder, outer radius R, inner r, length w: m = rho pi (R^2 - r^2) w,
+    // Jp = m (R^2 + r^2) / 2, Jd = m (3 (R^2 + r^2) + w^2) / 12.
+    const double R = 0.15, r = 0.025, w = 0.04, rho = 7850;
+    std::string text = kJeffcottDeck;
+    text.replace(text.find("masses: [{name: disk, at: disk, m: m}]"),
+                 std::string("masses: [{name: disk, at: disk, m: m}]").size(),
+                 "masses: [{name: disk, at: disk, disk: {D: 0.3, bore: 0.05, width: 0.04, "
+                 "rho: 7850}}]");
+    StudyRequest request;
+    request.deckPath = "disk.yaml";
+    const Study s = solveStudyText(text.substr(0, text.find("analyses:")), request);
+    REQUIRE(s.deck.masses.size() == 1);
+    const DeckMass& m = s.deck.masses[0];
+    const double mass = rho * kPi * (R * R - r * r) * w;
+    CHECK(relError(m.m, mass) < 1e-15);
+    CHECK(relError(m.Jp, mass * (R * R + r * r) / 2) < 1e-15);
+    CHECK(relError(m.Jd, mass * (3 * (R * R + r * r) + w * w) / 12) < 1e-15);
+  }
+}
