@@ -202,9 +202,8 @@ void requireSymmetricAtRest(const Context& c, const Field& analysis) {
   }
 }
 
-void resolveRotorQuantity(const Context& c, const Quantity& q, const Field& f,
+void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
                           const DeckAnalysis& a) {
-  (void)c;
   if (q.kind == Quantity::Kind::logDecrement && q.mode > a.modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + a.name +
            "' computes " + std::to_string(a.modes) + " modes (set its modes:)");
