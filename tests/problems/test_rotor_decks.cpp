@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "elements/Bearing.hpp"
 #include "problems/deck/Study.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/Output.hpp"
@@ -257,5 +258,42 @@ TEST_SUITE("rotor decks") {
     CHECK(relError(m.m, mass) < 1e-15);
     CHECK(relError(m.Jp, mass * (R * R + r * r) / 2) < 1e-15);
     CHECK(relError(m.Jd, mass * (3 * (R * R + r * r) + w * w) / 12) < 1e-15);
+  }
+}
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("a tabulated bearing: deck axes map to global y, z and rpm to rad/s") {
+    // Bearing axes x_b, y_b are global y, z (elements/Bearing.hpp): kxx -> kyy, kxy -> kyz,
+    // kyx -> kzy, kyy -> kzz. Halfway between rows 0 and 3000 rpm (157.08 rad/s) the
+    // coefficients are the rows' mean (linear interpolation).
+    std::string text = kJeffcottDeck;
+    text.replace(text.find("bearings: [{name: damper, at: disk, cxx: c, cyy: c}]"),
+                 std::string("bearings: [{name: damper, at: disk, cxx: c, cyy: c}]").size(),
+                 R"(bearings:
+  - name: film
+    at: disk
+    table:
+      - {speed_rpm: 0, kxx: 1e6, kyy: 2e6, kxy: 3e5, kyx: -4e5, cxx: 10, cyy: 20, cxy: 1, cyx: -2}
+      - {speed_rpm: 3000, kxx: 3e6, kyy: 6e6, kxy: 5e5, kyx: -8e5, cxx: 30, cyy: 60, cxy: 3, cyx: -6}
+)");
+    StudyRequest request;
+    request.deckPath = "table.yaml";
+    const Study s = solveStudyText(text.substr(0, text.find("analyses:")), request);
+    REQUIRE(s.run);
+    const Bearing* bearing = nullptr;
+    for (const auto& e : s.run->model->elements())
+      if (auto* b = dynamic_cast<const Bearing*>(e.get())) bearing = b;
+    REQUIRE(bearing);
+    const BearingCoefficients k = bearing->coefficientsAt(1500 * kPi / 30);
+    // Means of the rows; exact up to the round-off of the interpolation weight.
+    const double tol = 1e-14;
+    CHECK(relError(k.kyy, 2e6) < tol);
+    CHECK(relError(k.kzz, 4e6) < tol);
+    CHECK(relError(k.kyz, 4e5) < tol);
+    CHECK(relError(k.kzy, -6e5) < tol);
+    CHECK(relError(k.cyy, 20) < tol);
+    CHECK(relError(k.czz, 40) < tol);
+    CHECK(relError(k.cyz, 2) < tol);
+    CHECK(relError(k.czy, -4) < tol);
   }
 }
