@@ -8,7 +8,8 @@
 //              active, value, bound, gap, force}}, active_set_iterations], rcond, time_s, files}
 //            | modal:  {type, name, frequencies_hz [...], total_mass_kg {ux ..}, modes [{mode,
 //              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio
-//              {ux ..}, energy_share {ux .. rz}}], time_s, files} ],
+//              {ux ..}, energy_share {ux .. rz}}], time_s, files}
+//            | rotor, campbell, unbalance, rigid-body: see RotorJson.hpp ],
 //   checks [{name, quantity, computed, reference, rel_error, tolerance, pass}],
 //   skipped_checks [name], parameters {name: value}, seconds, beamrotor_version.
 // Only the components a model carries appear (a planar model has no fz, my, uz ...).

@@ -22,6 +22,13 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
   const auto rpm = campbell.numbers("speed_rpm");
   const int x = campbell.column("speed_rpm");
   const int lines = int((campbell.columns().size() - 2) / 4);
+  const auto labels = [&](int first, const char* dy) {
+    return gnuplotFile(criticalFile) + " skip 1 every 2::" + std::to_string(first) + " using " +
+           std::to_string(critical.column("speed_rpm")) + ":" +
+           std::to_string(critical.column("frequency")) + ":(sprintf('%.0f rpm', $" +
+           std::to_string(critical.column("speed_rpm")) + ")) with labels left offset 0.8," +
+           dy + " font ',9' notitle";
+  };
   std::ostringstream body;
   body << "  set encoding utf8\n"
        << "  set title " << gnuplotText(caption) << " font ',13'\n"
@@ -47,10 +54,9 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
     body << ", \\\n       " << gnuplotFile(criticalFile) << " skip 1 using "
          << critical.column("speed_rpm") << ":" << critical.column("frequency")
          << " with points pointtype 7 pointsize 1.4 linecolor rgb 'black' title 'critical speeds', \\\n"
-         << "       " << gnuplotFile(criticalFile) << " skip 1 using "
-         << critical.column("speed_rpm") << ":" << critical.column("frequency")
-         << ":(sprintf('%.0f rpm', $" << critical.column("speed_rpm")
-         << ")) with labels left offset 0.8,-0.6 font ',9' notitle";
+         // Labels of neighbouring crossings (a double mode crosses twice at one speed)
+         // alternate between two rows so they do not print over each other.
+         << labels(0, "-0.6") << ", \\\n       " << labels(1, "-1.6");
   body << "\n";
   return {chartName, "Campbell diagram: whirl frequencies against spin speed", 900, 620,
           body.str()};
