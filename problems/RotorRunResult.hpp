@@ -25,13 +25,13 @@ struct RigidBodyOutcome {
 
 /// One rotor analysis, solved: exactly one of the optionals is set, by its type.
 struct RotorOutcome {
-  std::optional<RotorModesResult> modes;       ///< rotor: damped modes at one speed
-  std::optional<CampbellResult> campbell;      ///< campbell
-  std::vector<CriticalSpeed> criticalSpeeds;   ///< campbell: where lines meet order x speed
-  double order = 1;                            ///< campbell: that order
-  std::optional<UnbalanceResult> unbalance;    ///< unbalance
-  std::vector<std::string> responsePoints;     ///< unbalance: names of unbalance->nodes
-  std::optional<RigidBodyOutcome> rigidBody;   ///< rigid-body
+  std::optional<RotorModesResult> modes;      ///< rotor: damped modes at one speed
+  std::optional<CampbellResult> campbell;     ///< campbell
+  std::vector<CriticalSpeed> criticalSpeeds;  ///< campbell: where lines meet order x speed
+  double order = 1;                           ///< campbell: that order
+  std::optional<UnbalanceResult> unbalance;   ///< unbalance
+  std::vector<std::string> responsePoints;    ///< unbalance: names of unbalance->nodes
+  std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
 };
 
 }  // namespace beamrotor

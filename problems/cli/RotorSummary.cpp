@@ -24,8 +24,8 @@ void printModes(std::ostream& out, const AnalysisOutcome& a, const RotorModesRes
 
 void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
   const CampbellResult& c = *r.campbell;
-  out << "campbell analysis '" << a.name << "' (" << c.lines.size() << " lines, "
-      << c.speeds.size() << " speeds " << formatValue(c.speeds.front() * kRpm) << " to "
+  out << "campbell analysis '" << a.name << "' (" << c.lines.size() << " lines, " << c.speeds.size()
+      << " speeds " << formatValue(c.speeds.front() * kRpm) << " to "
       << formatValue(c.speeds.back() * kRpm) << " rpm)\n";
   if (r.criticalSpeeds.empty())
     out << "    no critical speed (" << formatValue(r.order) << "x) in this range\n";
@@ -56,8 +56,8 @@ void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBody
     out << "    two-dof mode " << i + 1 << "  " << formatValue(m.k / (2 * std::numbers::pi))
         << " Hz  " << formeModeKindName(m.kind) << "  n = "
         << (std::isfinite(m.n) ? formatValue(m.n) + " m/rad" : std::string("inf (pure bounce)"))
-        << "  F_" << r.points[0] << " = " << formatValue(m.FA) << " N, F_" << r.points[1]
-        << " = " << formatValue(m.FB) << " N\n";
+        << "  F_" << r.points[0] << " = " << formatValue(m.FA) << " N, F_" << r.points[1] << " = "
+        << formatValue(m.FB) << " N\n";
   }
 }
 

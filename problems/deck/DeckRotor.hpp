@@ -17,8 +17,8 @@ namespace beamrotor {
 struct DeckBearing {
   std::string name;
   std::string point;
-  std::vector<double> speeds;               ///< rad/s; empty for constant coefficients
-  std::vector<BearingCoefficients> table;   ///< N/m, N s/m
+  std::vector<double> speeds;              ///< rad/s; empty for constant coefficients
+  std::vector<BearingCoefficients> table;  ///< N/m, N s/m
   DeckPlace place;
 };
 
@@ -38,11 +38,11 @@ struct DeckRotorModel {
 
 /// What a rotor analysis asks for (the fields its type uses; the others stay empty).
 struct DeckRotorAnalysis {
-  double speed = 0;                      ///< rotor: spin speed (rad/s)
-  std::vector<double> speeds;            ///< campbell, unbalance: ascending (rad/s)
-  double order = 1;                      ///< campbell: excitation order of the critical speeds
-  std::vector<DeckUnbalance> unbalance;  ///< unbalance
-  std::vector<std::string> response;     ///< unbalance: points whose orbits are reported
+  double speed = 0;                        ///< rotor: spin speed (rad/s)
+  std::vector<double> speeds;              ///< campbell, unbalance: ascending (rad/s)
+  double order = 1;                        ///< campbell: excitation order of the critical speeds
+  std::vector<DeckUnbalance> unbalance;    ///< unbalance
+  std::vector<std::string> response;       ///< unbalance: points whose orbits are reported
   std::vector<std::string> bearingPoints;  ///< rigid-body: the two spring points A, B
 };
 

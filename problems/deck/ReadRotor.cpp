@@ -193,11 +193,12 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
 
 void requireSymmetricAtRest(const Context& c, const Field& analysis) {
   for (const DeckBearing& b : c.deck.rotor.bearings) {
-    const Bearing atRest = b.speeds.empty() ? Bearing(0, b.table.front())
-                                            : Bearing(0, b.speeds, b.table);
+    const Bearing atRest =
+        b.speeds.empty() ? Bearing(0, b.table.front()) : Bearing(0, b.speeds, b.table);
     const BearingCoefficients k = atRest.coefficientsAt(0);
     if (k.kyz != k.kzy)
-      analysis.fail("bearing '" + b.name + "' is cross-coupled at rest (kxy != kyx): the "
+      analysis.fail("bearing '" + b.name +
+                    "' is cross-coupled at rest (kxy != kyx): the "
                     "modal analysis needs a symmetric stiffness; use {type: rotor, speed_rpm: 0}");
   }
 }
@@ -214,8 +215,8 @@ void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
            didYouMean(q.target, points) + " (response: " + joinNames(points) + ")");
   const double w = q.rpm * kRadPerRpm;
   if (w < a.rotor.speeds.front() * (1 - 1e-12) || w > a.rotor.speeds.back() * (1 + 1e-12))
-    f.fail("speed " + formatNumber(q.rpm) + " rpm lies outside analysis '" + a.name +
-           "' (" + formatNumber(a.rotor.speeds.front() / kRadPerRpm) + " to " +
+    f.fail("speed " + formatNumber(q.rpm) + " rpm lies outside analysis '" + a.name + "' (" +
+           formatNumber(a.rotor.speeds.front() / kRadPerRpm) + " to " +
            formatNumber(a.rotor.speeds.back() / kRadPerRpm) + " rpm)");
 }
 

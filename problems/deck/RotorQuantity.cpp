@@ -36,7 +36,7 @@ double rigidBodyProperty(const RigidBodyOutcome& r, const std::string& p) {
 }  // namespace
 
 const std::vector<std::string>& rigidBodyPropertyNames() {
-  static const std::vector<std::string> names{"mass", "com_x", "J_com", "Jp", "f1",  "f2",
+  static const std::vector<std::string> names{"mass", "com_x", "J_com", "Jp",  "f1",  "f2",
                                               "n1",   "n2",    "FA1",   "FB1", "FA2", "FB2"};
   return names;
 }
@@ -47,7 +47,8 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
   if (head == "log_decrement" || head == "critical_speed") {
     if (words.size() != 2) throw std::invalid_argument("expected '" + head + " N'");
     q.kind = head == "log_decrement" ? Kind::logDecrement : Kind::criticalSpeed;
-    q.mode = parseOrdinal(words[1], head == "log_decrement" ? "mode number" : "critical speed number");
+    q.mode =
+        parseOrdinal(words[1], head == "log_decrement" ? "mode number" : "critical speed number");
     return true;
   }
   if (head == "unbalance_amplitude") {
@@ -102,8 +103,8 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
     case Quantity::Kind::logDecrement: {
       if (!r.modes) throw std::invalid_argument(name + " is not a rotor analysis");
       if (q.mode > int(r.modes->modes.size()))
-        throw std::invalid_argument(name + " found only " +
-                                    std::to_string(r.modes->modes.size()) + " modes");
+        throw std::invalid_argument(name + " found only " + std::to_string(r.modes->modes.size()) +
+                                    " modes");
       const RotorMode& m = r.modes->modes[q.mode - 1];
       return q.kind == Quantity::Kind::frequency ? m.dampedFrequencyHz : m.logDecrement;
     }

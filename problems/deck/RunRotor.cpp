@@ -45,8 +45,8 @@ RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
     out.x[i] = model.nodes()[node].x();
     out.stiffness[i] = groundedStiffness(model, node);
     if (!(out.stiffness[i] > 0))
-      throw std::invalid_argument("no grounded spring on uy or bearing at point '" +
-                                  out.points[i] + "'");
+      throw std::invalid_argument("no grounded spring on uy or bearing at point '" + out.points[i] +
+                                  "'");
   }
   // A is the spring on the -x side of the centre of mass (the paper's l1).
   if (out.x[0] > out.x[1]) {

@@ -26,8 +26,8 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
     return gnuplotFile(criticalFile) + " skip 1 every 2::" + std::to_string(first) + " using " +
            std::to_string(critical.column("speed_rpm")) + ":" +
            std::to_string(critical.column("frequency")) + ":(sprintf('%.0f rpm', $" +
-           std::to_string(critical.column("speed_rpm")) + ")) with labels left offset 0.8," +
-           dy + " font ',9' notitle";
+           std::to_string(critical.column("speed_rpm")) + ")) with labels left offset 0.8," + dy +
+           " font ',9' notitle";
   };
   std::ostringstream body;
   body << "  set encoding utf8\n"
@@ -48,12 +48,14 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
        << "       NaN with lines linewidth 2 " << colour(kBackward)
        << " title 'backward whirl', \\\n"
        << "       NaN with lines linewidth 2 " << colour(kPlanar) << " title 'planar', \\\n"
-       << "       x * " << number(order) << " / 60 with lines dashtype 2 linecolor rgb 'gray30' title "
+       << "       x * " << number(order)
+       << " / 60 with lines dashtype 2 linecolor rgb 'gray30' title "
        << gnuplotText(number(order) + "x speed");
   if (critical.rowCount() > 0)
     body << ", \\\n       " << gnuplotFile(criticalFile) << " skip 1 using "
          << critical.column("speed_rpm") << ":" << critical.column("frequency")
-         << " with points pointtype 7 pointsize 1.4 linecolor rgb 'black' title 'critical speeds', \\\n"
+         << " with points pointtype 7 pointsize 1.4 linecolor rgb 'black' title 'critical speeds', "
+            "\\\n"
          // Labels of neighbouring crossings (a double mode crosses twice at one speed)
          // alternate between two rows so they do not print over each other.
          << labels(0, "-0.6") << ", \\\n       " << labels(1, "-1.6");

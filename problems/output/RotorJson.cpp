@@ -16,7 +16,9 @@ namespace {
 constexpr double kDegrees = 180 / std::numbers::pi;
 
 /// A number, or null where it is infinite by definition (a real eigenvalue's decrement).
-Json finiteOrNull(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+Json finiteOrNull(double x) {
+  return std::isfinite(x) ? Json(x) : Json(nullptr);
+}
 
 Json modesJson(const std::string& stem, const RotorModesResult& r) {
   Json frequencies = Json::array(), modes = Json::array(), vtus = Json::array(),
@@ -100,14 +102,18 @@ Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
       if (o.major() > u.orbits[k][peak].major()) peak = s;
     }
     response[r.responsePoints[k]] = {
-        {"amplitude_m", major},       {"uy_amplitude_m", ay}, {"uz_amplitude_m", az},
-        {"uy_phase_deg", py},         {"uz_phase_deg", pz},
+        {"amplitude_m", major},
+        {"uy_amplitude_m", ay},
+        {"uz_amplitude_m", az},
+        {"uy_phase_deg", py},
+        {"uz_phase_deg", pz},
         {"peak", {{"amplitude_m", u.orbits[k][peak].major()}, {"rpm", rpmOf(u.speeds[peak])}}}};
   }
-  return {{"speeds_rpm", speeds},
-          {"response", response},
-          {"time_s", u.time.total},
-          {"files", {{"unbalance_csv", unbalanceCsv(stem)}, {"chart", unbalanceChart(stem) + ".svg"}}}};
+  return {
+      {"speeds_rpm", speeds},
+      {"response", response},
+      {"time_s", u.time.total},
+      {"files", {{"unbalance_csv", unbalanceCsv(stem)}, {"chart", unbalanceChart(stem) + ".svg"}}}};
 }
 
 Json rigidBodyJson(const RigidBodyOutcome& r) {
@@ -151,8 +157,8 @@ Json rotorJson(const AnalysisOutcome& a) {
   const RotorOutcome& r = *a.rotor;
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
-  Json body = r.modes      ? modesJson(stem, *r.modes)
-              : r.campbell ? campbellJson(stem, r)
+  Json body = r.modes       ? modesJson(stem, *r.modes)
+              : r.campbell  ? campbellJson(stem, r)
               : r.unbalance ? unbalanceJson(stem, r)
                             : rigidBodyJson(*r.rigidBody);
   for (auto& [key, value] : body.items()) out[key] = value;

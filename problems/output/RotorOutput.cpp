@@ -28,8 +28,7 @@ namespace {
 std::string fitted(const std::string& caption) {
   constexpr std::size_t kWidest = 90;  // characters across a 900-pixel chart title
   const std::size_t list = caption.find(" (");
-  return caption.size() > kWidest && list != std::string::npos ? caption.substr(0, list)
-                                                                : caption;
+  return caption.size() > kWidest && list != std::string::npos ? caption.substr(0, list) : caption;
 }
 
 }  // namespace

@@ -10,7 +10,9 @@ long long whirlSign(Whirl w) {
   return w == Whirl::forward ? 1 : w == Whirl::backward ? -1 : 0;
 }
 
-double rpmOf(double speed) { return speed * 30 / std::numbers::pi; }
+double rpmOf(double speed) {
+  return speed * 30 / std::numbers::pi;
+}
 
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
   CsvTable table(title, {{"mode", ""},
@@ -49,8 +51,7 @@ CsvTable campbellTable(const std::string& title, const CampbellResult& c) {
     std::vector<CsvCell> row{c.speeds[s], rpmOf(c.speeds[s])};
     for (std::size_t l = 0; l < c.lines.size(); ++l) {
       const RotorMode& m = c.lines[l][s];
-      row.insert(row.end(),
-                 {m.dampedFrequencyHz, m.dampingRatio, whirlSign(m.whirl), c.mac[l][s]});
+      row.insert(row.end(), {m.dampedFrequencyHz, m.dampingRatio, whirlSign(m.whirl), c.mac[l][s]});
     }
     table.addRow(std::move(row));
   }
@@ -74,9 +75,12 @@ CsvTable unbalanceTable(const std::string& title, const UnbalanceResult& u,
                         const std::vector<std::string>& points) {
   std::vector<CsvColumn> columns{{"speed", "rad/s"}, {"speed_rpm", "rpm"}};
   for (const std::string& p : points)
-    for (const auto& [what, unit] : std::vector<std::pair<std::string, std::string>>{
-             {"amplitude", "m"}, {"uy_amplitude", "m"}, {"uz_amplitude", "m"},
-             {"uy_phase", "deg"}, {"uz_phase", "deg"}})
+    for (const auto& [what, unit] :
+         std::vector<std::pair<std::string, std::string>>{{"amplitude", "m"},
+                                                          {"uy_amplitude", "m"},
+                                                          {"uz_amplitude", "m"},
+                                                          {"uy_phase", "deg"},
+                                                          {"uz_phase", "deg"}})
       columns.push_back({p + "_" + what, unit});
   CsvTable table(title, columns);
   const double degrees = 180 / std::numbers::pi;
@@ -84,8 +88,8 @@ CsvTable unbalanceTable(const std::string& title, const UnbalanceResult& u,
     std::vector<CsvCell> row{u.speeds[s], rpmOf(u.speeds[s])};
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Orbit& o = u.orbits[k][s];
-      row.insert(row.end(), {o.major(), std::abs(o.uy), std::abs(o.uz),
-                             std::arg(o.uy) * degrees, std::arg(o.uz) * degrees});
+      row.insert(row.end(), {o.major(), std::abs(o.uy), std::abs(o.uz), std::arg(o.uy) * degrees,
+                             std::arg(o.uz) * degrees});
     }
     table.addRow(std::move(row));
   }

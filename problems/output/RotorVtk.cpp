@@ -34,8 +34,8 @@ void addField(vtkUnstructuredGrid* grid, const char* name, double value) {
 
 }  // namespace
 
-void writeRotorModeVtu(const std::filesystem::path& file, const Model& model,
-                       const RotorMode& mode, int number) {
+void writeRotorModeVtu(const std::filesystem::path& file, const Model& model, const RotorMode& mode,
+                       int number) {
   auto grid = lineGrid(model);
   const NodalField real = mode.shape.real(), imag = mode.shape.imag();
   grid->GetPointData()->AddArray(pointVectors("shape_real", real, 0));
@@ -85,8 +85,7 @@ void writeOrbitVtu(const std::filesystem::path& file, const Model& model, const 
   for (int n = 0; n < model.nodeCount(); ++n) {
     const vtkIdType first = points->GetNumberOfPoints();
     for (int j = 0; j < kOrbitPoints; ++j) {
-      const std::complex<double> turn =
-          std::polar(1.0, 2 * std::numbers::pi * j / kOrbitPoints);
+      const std::complex<double> turn = std::polar(1.0, 2 * std::numbers::pi * j / kOrbitPoints);
       Eigen::Vector3d x = model.nodes()[n];
       for (int k = 0; k < 3; ++k) x[k] += scale * (mode.shape(n, k) * turn).real();
       points->InsertNextPoint(x.x(), x.y(), x.z());

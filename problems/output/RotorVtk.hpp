@@ -13,8 +13,8 @@ namespace beamrotor {
 /// that the motion is Re((real + i imag) e^{i omega t}); `orbit_semi_major` and
 /// `whirl_ratio` per node (+1 circular forward, -1 backward, 0 a line). Field data `mode`,
 /// `frequency_hz` (damped), `natural_frequency_hz`, `damping_ratio`, `whirl` (+1, -1, 0).
-void writeRotorModeVtu(const std::filesystem::path& file, const Model& model,
-                       const RotorMode& mode, int number);
+void writeRotorModeVtu(const std::filesystem::path& file, const Model& model, const RotorMode& mode,
+                       int number);
 
 /// The orbits of the same mode: per node a closed ring of 48 VTK_LINE cells (cells 48 n to
 /// 48 n + 47) through x_node + s Re(shape e^{i theta}), theta over one period, with s = 0.1 of

@@ -3,10 +3,10 @@
 // the files it writes (results.json, CSV, mode and orbit VTK) carry the same numbers.
 #include <doctest/doctest.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkCellData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -198,7 +198,8 @@ TEST_SUITE("rotor decks") {
       for (int c = kRing * n; c < kRing * (n + 1); ++c) {
         double x[3];
         orbits->GetPoint(orbits->GetCell(c)->GetPointId(0), x);
-        largest = std::max(largest, (Eigen::Vector3d(x[0], x[1], x[2]) - run.model->nodes()[n]).norm());
+        largest =
+            std::max(largest, (Eigen::Vector3d(x[0], x[1], x[2]) - run.model->nodes()[n]).norm());
       }
       CAPTURE(n);
       CHECK(largest <= scale * o.major() * (1 + 1e-12) + 1e-15);
@@ -232,7 +233,8 @@ analyses:
     CHECK(relError(st.displacement(disk, dofIndex(Dof::uz)), 500 / j.k()) < kClosedForm);
     const ModalResult& modal = *analysis(run, "modal").modal;
     REQUIRE(modal.modes.size() == 2);
-    for (const Mode& m : modal.modes) CHECK(relError(std::sqrt(m.eigenvalue), j.wn()) < kClosedForm);
+    for (const Mode& m : modal.modes)
+      CHECK(relError(std::sqrt(m.eigenvalue), j.wn()) < kClosedForm);
     // The rotor analysis at rest, undamped, is the same eigenproblem by another solver.
     for (const RotorMode& m : analysis(run, "at-rest").rotor->modes->modes)
       CHECK(relError(m.dampedFrequency, j.wn()) < kClosedForm);
