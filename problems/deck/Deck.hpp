@@ -143,7 +143,7 @@ struct Deck {
   std::vector<DeckMass> masses;
   std::vector<DeckHinge> hinges;
   std::vector<DeckLoad> loads;
-  DeckRotorModel rotor;              ///< bearings and proportional damping
+  DeckRotorModel rotor;  ///< bearings and proportional damping
   std::vector<DeckAnalysis> analyses;
   std::vector<DeckCheck> checks;
   std::optional<DeckSweep> sweep;

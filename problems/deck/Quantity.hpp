@@ -24,14 +24,21 @@ namespace beamrotor {
 
 struct Quantity {
   enum class Kind {
-    reaction, displacement, frequency, maxStress, maxMoment,
-    logDecrement, criticalSpeed, unbalanceAmplitude, rigidBody  // rotor analyses
+    reaction,
+    displacement,
+    frequency,
+    maxStress,
+    maxMoment,
+    logDecrement,
+    criticalSpeed,
+    unbalanceAmplitude,
+    rigidBody  // rotor analyses
   };
   Kind kind = Kind::reaction;
   std::string target;  ///< support (reaction) or point (displacement) name
   Dof dof = Dof::uy;
-  int mode = 1;        ///< frequency, log_decrement, critical_speed: 1-based number
-  double rpm = 0;      ///< unbalance_amplitude: the speed (rpm)
+  int mode = 1;          ///< frequency, log_decrement, critical_speed: 1-based number
+  double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
   std::string property;  ///< rigid_body: which property
   std::string text;    ///< as written, for reports
 

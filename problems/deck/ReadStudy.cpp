@@ -37,7 +37,8 @@ void readAnalyses(Context& c) {
     } else if (isRotorAnalysis(a.type)) {
       readRotorAnalysis(c, f, a);
       if (a.type != "unbalance" && !hasMass(c.deck))
-        f.fail("a " + a.type + " analysis needs mass: give the materials a density rho or add masses");
+        f.fail("a " + a.type +
+               " analysis needs mass: give the materials a density rho or add masses");
     } else {
       requireSymmetricAtRest(c, f);
       f.allowOnly({"type", "name", "modes", "shift"}, "a modal analysis");

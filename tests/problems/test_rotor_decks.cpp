@@ -43,6 +43,8 @@ struct Jeffcott {
   double logDecrement() const { return 2 * kPi * zeta() / std::sqrt(1 - zeta() * zeta()); }
   /// Orbit radius at spin speed W (rad/s): m e W^2 / |k - m W^2 + i c W|.
   double orbit(double W) const { return me * W * W / std::hypot(k() - m * W * W, c * W); }
+  /// Phase of uy against the heavy spot (rad): the response lags by atan2(c W, k - m W^2).
+  double phase(double W) const { return -std::atan2(c * W, k() - m * W * W); }
 };
 
 // The closed-form expressions, written again in the deck's own words, are its checks.
@@ -135,6 +137,7 @@ TEST_SUITE("rotor decks") {
     for (std::size_t s = 0; s < u.speeds.size(); ++s) {
       const Orbit& o = u.orbits[0][s];
       worst = std::max(worst, relError(o.major(), j.orbit(u.speeds[s])));
+      CHECK(std::abs(std::arg(o.uy) - j.phase(u.speeds[s])) < kClosedForm);
       // Isotropic: a circular forward orbit.
       CHECK(o.minor() == doctest::Approx(o.major()).epsilon(kClosedForm));
     }
@@ -161,9 +164,12 @@ TEST_SUITE("rotor decks") {
     CHECK(relError(critical[0].at("rpm").get<double>(), j.wd() * 30 / kPi) < kClosedForm);
     const auto& response = analyses[2].at("response").at("disk");
     const auto& rpm = analyses[2].at("speeds_rpm");
-    for (std::size_t s = 0; s < rpm.size(); ++s)
-      CHECK(relError(response.at("amplitude_m")[s].get<double>(),
-                     j.orbit(rpm[s].get<double>() * kPi / 30)) < kClosedForm);
+    for (std::size_t s = 0; s < rpm.size(); ++s) {
+      const double W = rpm[s].get<double>() * kPi / 30;
+      CHECK(relError(response.at("amplitude_m")[s].get<double>(), j.orbit(W)) < kClosedForm);
+      CHECK(std::abs(response.at("uy_phase_deg")[s].get<double>() - j.phase(W) * 180 / kPi) <
+            kClosedForm * 180);
+    }
 
     // 2. The tables: one Campbell row per speed, one critical speed per crossing line.
     for (const char* f : {"campbell_campbell.csv", "campbell_critical_speeds.csv",
