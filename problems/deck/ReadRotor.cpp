@@ -141,8 +141,10 @@ void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
     if (!(d < D)) bore->fail("the bore must be smaller than D (" + formatNumber(D) + ")");
   }
   // Annular disk (a hollow cylinder) about its centre: m = rho pi (D^2 - d^2) w / 4,
-  // Jp = m (D^2 + d^2) / 8, Jd = m ((D^2 + d^2) / 16 + w^2 / 12) (the rigid-body inertia of
-  // a thick ring, e.g. Genta, Dynamics of Rotating Systems, 2005, section 4.1).
+  // Jp = m (D^2 + d^2) / 8, Jd = m ((D^2 + d^2) / 16 + w^2 / 12): the difference of two solid
+  // cylinders, each m R^2 / 2 about its axis and m (3 R^2 + w^2) / 12 about a diameter
+  // through its centre (the tables of mass moments of inertia in any dynamics text, e.g.
+  // Meriam & Kraige, Engineering Mechanics: Dynamics, appendix D).
   mass.m = rho * std::numbers::pi * (D * D - d * d) * w / 4;
   mass.Jp = mass.m * (D * D + d * d) / 8;
   mass.Jd = mass.m * ((D * D + d * d) / 16 + w * w / 12);
@@ -161,9 +163,7 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
     const Field list = f.require("bearings");
     const std::vector<Field> items = list.items();
     if (items.size() != 2) list.fail("expected the two spring points [A, B]");
-    for (const Field& p : items) {
-      r.bearingPoints.push_back(c.point(p).name);
-    }
+    for (const Field& p : items) r.bearingPoints.push_back(c.point(p).name);
     if (r.bearingPoints[0] == r.bearingPoints[1]) items[1].fail("A and B must be different points");
     if (!c.deck.dofs.contains(Dof::uy) || !c.deck.dofs.contains(Dof::rz))
       f.fail("a rigid-body analysis needs uy and rz (planar, lateral or 3d model)");
