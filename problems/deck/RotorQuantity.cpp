@@ -106,7 +106,12 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
         throw std::invalid_argument(name + " found only " + std::to_string(r.modes->modes.size()) +
                                     " modes");
       const RotorMode& m = r.modes->modes[q.mode - 1];
-      return q.kind == Quantity::Kind::frequency ? m.dampedFrequencyHz : m.logDecrement;
+      if (q.kind == Quantity::Kind::frequency) return m.dampedFrequencyHz;
+      if (!std::isfinite(m.logDecrement))
+        throw std::invalid_argument("mode " + std::to_string(q.mode) +
+                                    " has a real eigenvalue (overdamped or unstable without "
+                                    "oscillation): its log decrement is infinite");
+      return m.logDecrement;
     }
     case Quantity::Kind::criticalSpeed:
       if (!r.campbell) throw std::invalid_argument(name + " is not a campbell analysis");
