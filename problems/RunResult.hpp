@@ -13,6 +13,7 @@
 #include "fem/Model.hpp"
 #include "fem/Results.hpp"
 #include "problems/TransientOutcome.hpp"
+#include "problems/RotorRunResult.hpp"
 
 namespace beamrotor {
 
@@ -32,11 +33,12 @@ struct Check {
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
-  std::string type;  ///< "static", "modal" (later: "rotor", "transient", ...)
+  std::string type;  ///< "static", "modal", "rotor", "campbell", "unbalance", "rigid-body"
   std::string name;  ///< the deck's name for it (defaults to the type)
   std::optional<StaticResult> statics;
   std::optional<ModalResult> modal;
   std::optional<TransientOutcome> transient;
+  std::optional<RotorOutcome> rotor;  ///< the rotor analyses
 };
 
 /// One solved instance of a deck (one set of parameter values).

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "problems/cli/TransientSummary.hpp"
+#include "problems/cli/RotorSummary.hpp"
 
 namespace beamrotor::cli {
 
@@ -19,6 +20,7 @@ SystemSize sizeOf(const RunResult& run) {
     if (a.statics) return a.statics->size;
     if (a.modal) return a.modal->size;
     if (a.transient) return a.transient->result.size;
+    if (a.rotor && rotorSize(*a.rotor)) return *rotorSize(*a.rotor);
   }
   return {};
 }
@@ -126,6 +128,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
     if (a.statics) printStatic(out, deck, run, a);
     if (a.modal) printModal(out, a);
     if (a.transient) printTransient(out, a);
+    if (a.rotor) printRotor(out, a);
   }
 }
 

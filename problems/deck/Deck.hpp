@@ -15,6 +15,7 @@
 #include "fem/Section.hpp"
 #include "problems/deck/DeckError.hpp"
 #include "problems/deck/DeckTransient.hpp"
+#include "problems/deck/DeckRotor.hpp"
 #include "problems/deck/Quantity.hpp"
 
 namespace beamrotor {
@@ -97,12 +98,13 @@ struct DeckLoad {
 
 /// One analysis to run.
 struct DeckAnalysis {
-  std::string type;  ///< "static", "modal" or "transient"
+  std::string type;  ///< "static", "modal", "transient" or a rotor analysis (isRotorAnalysis)
   std::string name;  ///< defaults to the type
-  int modes = 6;     ///< modal: how many
-  double shift = 0;  ///< modal: rad^2/s^2
+  int modes = 6;     ///< modal, rotor, campbell: how many
+  double shift = 0;  ///< modal: rad^2/s^2; rotor, campbell: 1/s
   DeckPlace place;
   std::optional<DeckTransient> transient;  ///< transient: its settings
+  DeckRotorAnalysis rotor;  ///< rotor analyses: speeds, unbalance, points
 };
 
 /// A closed-form comparison.
@@ -131,7 +133,7 @@ struct Deck {
   std::vector<std::pair<std::string, double>> parameters;  ///< after overrides, deck order
   std::vector<std::pair<std::string, double>> derived;     ///< named values computed from them
 
-  std::string dimension = "planar";  ///< "planar" or "3d"
+  std::string dimension = "planar";  ///< "planar", "3d" or "lateral"
   DofSet dofs = DofSet::planar();
   BeamOptions beam;                  ///< the default element formulation
 
@@ -143,6 +145,7 @@ struct Deck {
   std::vector<DeckMass> masses;
   std::vector<DeckHinge> hinges;
   std::vector<DeckLoad> loads;
+  DeckRotorModel rotor;  ///< bearings and proportional damping
   std::vector<DeckAnalysis> analyses;
   std::vector<DeckCheck> checks;
   std::optional<DeckSweep> sweep;

@@ -68,7 +68,7 @@ namespace {
 const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived", "model",  "materials", "sections", "segments", "points",
     "supports", "springs",  "masses",  "hinges", "loads",     "analyses", "checks",   "sweep",
-    "contacts"};
+    "contacts", "bearings", "damping"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -131,8 +131,12 @@ void readModel(Context& c) {
   if (!model || model->isNull()) return;
   model->allowOnly({"dimension", "formulation", "mass", "rotary_inertia"}, "model");
   if (auto f = model->get("dimension")) {
-    c.deck.dimension = f->choice({"planar", "3d"});
-    c.deck.dofs = c.deck.dimension == "planar" ? DofSet::planar() : DofSet::frame3d();
+    c.deck.dimension = f->choice({"planar", "3d", "lateral"});
+    c.deck.dofs = c.deck.dimension == "planar" ? DofSet::planar()
+                  : c.deck.dimension == "3d"   ? DofSet::frame3d()
+                                               : DofSet::lateral();
+    // A spinning shaft's gyroscopic moments come from the sections' rotary inertia.
+    c.deck.beam.rotaryInertia = c.deck.dimension == "lateral";
   }
   if (auto f = model->get("formulation")) c.deck.beam.theory = readFormulation(*f);
   if (auto f = model->get("mass"))
@@ -167,6 +171,7 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   reader::readSections(c);
   reader::readLine(c);
   reader::readAttachments(c);
+  reader::readRotorModel(c);
   reader::readStudy(c, overrides);
   return deck;
 }

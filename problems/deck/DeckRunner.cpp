@@ -8,6 +8,7 @@
 #include "problems/deck/Field.hpp"
 #include "problems/deck/ModelBuilder.hpp"
 #include "problems/deck/RunTransient.hpp"
+#include "problems/deck/RunRotor.hpp"
 
 namespace beamrotor {
 
@@ -22,6 +23,8 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       out.statics = solveStatic(model);
     } else if (a.transient) {
       out.transient = runTransient(deck, a, model);
+    } else if (isRotorAnalysis(a.type)) {
+      out.rotor = solveRotorAnalysis(deck, a, model);
     } else {
       ModalOptions options;
       options.modes = a.modes;

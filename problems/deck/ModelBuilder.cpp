@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/Spring.hpp"
 #include "meshes/LineBuilder.hpp"
@@ -136,6 +137,13 @@ void addAttachments(const Deck& deck, Model* model) {
       const DofSet dofs = deck.segments.empty() ? inertialDofs(m, deck.dofs) : deck.dofs;
       model->add<PointInertia>(model->node(m.point), dofs, m.m, m.Jp, m.Jd,
                                Eigen::Vector3d::UnitX());
+    });
+  for (const DeckBearing& b : deck.rotor.bearings)
+    at(deck, b.place, [&] {
+      if (b.speeds.empty())
+        model->add<Bearing>(model->node(b.point), b.table.front());
+      else
+        model->add<Bearing>(model->node(b.point), b.speeds, b.table);
     });
   for (const DeckLoad& l : deck.loads)
     if (l.kind == DeckLoad::Kind::point)

@@ -7,6 +7,7 @@
 
 #include "fem/Recovery.hpp"
 #include "problems/TransientOutcome.hpp"
+#include "problems/deck/RotorQuantity.hpp"
 
 namespace beamrotor {
 
@@ -14,7 +15,8 @@ namespace {
 
 constexpr const char* kGrammar =
     "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max' "
-    "'moment max', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
+    "'moment max', 'log_decrement N', 'critical_speed N', 'unbalance_amplitude POINT at RPM', "
+    "'rigid_body PROPERTY', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
 /// Stations per element for the maxima: resultants vary at most quadratically along an
 /// element (uniform distributed load), so 8 intervals place a station within L/16 of any
@@ -49,6 +51,24 @@ double measureHistory(const Quantity& q, const TransientOutcome& outcome) {
 
 }  // namespace
 
+int parseOrdinal(const std::string& n, const std::string& what) {
+  const bool digits = !n.empty() && n.size() <= 4 &&
+                      std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (!digits || std::stoi(n) < 1)
+    throw std::invalid_argument(what + " '" + n + "' must be a whole number from 1");
+  return std::stoi(n);
+}
+
+std::string Quantity::analysisType() const {
+  if (kind >= Kind::historyMax) return "transient";
+  if (auto rotor = rotorAnalysisType(*this)) return *rotor;
+  return kind == Kind::frequency ? "modal" : "static";
+}
+
+bool Quantity::readsFrom(const std::string& type) const {
+  return type == analysisType() || (kind == Kind::frequency && type == "rotor");
+}
+
 Quantity parseQuantity(const std::string& text) {
   std::istringstream in(text);
   std::vector<std::string> words;
@@ -65,14 +85,10 @@ Quantity parseQuantity(const std::string& text) {
   }
   if (head == "frequency" && words.size() == 2) {
     q.kind = Quantity::Kind::frequency;
-    const std::string& n = words[1];
-    const bool digits = !n.empty() && n.size() <= 4 &&
-                        std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (!digits || std::stoi(n) < 1)
-      throw std::invalid_argument("mode number '" + n + "' must be a whole number from 1");
-    q.mode = std::stoi(n);
+    q.mode = parseOrdinal(words[1], "mode number");
     return q;
   }
+  if (parseRotorQuantity(words, q)) return q;
   if ((head == "stress" || head == "moment") && words.size() == 2 && words[1] == "max") {
     q.kind = head == "stress" ? Quantity::Kind::maxStress : Quantity::Kind::maxMoment;
     return q;
@@ -95,6 +111,7 @@ Quantity parseQuantity(const std::string& text) {
 }
 
 double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
+  if (outcome.rotor) return measureRotor(q, outcome);
   if (q.kind == Quantity::Kind::frequency) {
     if (!outcome.modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
     const auto& modes = outcome.modal->modes;

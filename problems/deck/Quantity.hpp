@@ -7,6 +7,13 @@
 //   history NAME max|min|maxabs   largest, smallest or largest |value| of a transient history
 //   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
 //                             interpolated linearly between samples
+// those of the rotor analyses (RotorQuantity.cpp):
+//   frequency N               in a rotor analysis: damped whirl frequency of mode N (Hz)
+//   log_decrement N           logarithmic decrement of mode N of a rotor analysis
+//   critical_speed N          N-th critical speed of a campbell analysis (rpm), ascending
+//   unbalance_amplitude POINT at RPM   orbit semi-major axis of POINT at RPM (m)
+//   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
+//                             (N, per unit modal amplitude) of a rigid-body analysis
 #pragma once
 
 #include <stdexcept>
@@ -20,22 +27,34 @@ namespace beamrotor {
 
 struct Quantity {
   enum class Kind {
-    reaction, displacement, frequency, maxStress, maxMoment,
-    historyMax, historyMin, historyMaxAbs, historyAt  // the transient ones last (see below)
+    reaction,
+    displacement,
+    frequency,
+    maxStress,
+    maxMoment,
+    logDecrement,
+    criticalSpeed,
+    unbalanceAmplitude,
+    rigidBody,  // rotor analyses
+    historyMax,
+    historyMin,
+    historyMaxAbs,
+    historyAt  // transient analyses: keep these last (analysisType)
   };
   Kind kind = Kind::reaction;
   std::string target;  ///< support (reaction), point (displacement) or history name
   std::string timeText;  ///< historyAt: the time as written
   double time = 0;       ///< historyAt: s (set by the deck reader)
   Dof dof = Dof::uy;
-  int mode = 1;        ///< frequency: 1-based mode number
+  int mode = 1;          ///< frequency, log_decrement, critical_speed: 1-based number
+  double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
+  std::string property;  ///< rigid_body: which property
   std::string text;    ///< as written, for reports
 
-  /// The analysis type whose result it reads: "static", "modal" or "transient".
-  std::string analysisType() const {
-    if (kind >= Kind::historyMax) return "transient";
-    return kind == Kind::frequency ? "modal" : "static";
-  }
+  /// The analysis type it reads by default (when a check names none).
+  std::string analysisType() const;
+  /// Whether an analysis of `type` can give it (frequency: modal or rotor).
+  bool readsFrom(const std::string& type) const;
 };
 
 /// Parses the phrase; throws std::invalid_argument saying what is wrong and what is allowed.

@@ -144,13 +144,20 @@ void readMasses(Context& c) {
   if (!masses) return;
   std::vector<std::string> names;
   for (const Field& f : masses->items()) {
-    f.allowOnly({"name", "at", "m", "Jp", "Jd"}, "a mass");
+    f.allowOnly({"name", "at", "m", "Jp", "Jd", "disk"}, "a mass");
     DeckMass m;
     m.place = f.place();
     m.point = c.point(f.require("at")).name;
     if (auto n = f.get("name")) {
       m.name = n->name();
       claimName(*n, m.name, names, "a mass");
+    }
+    if (auto disk = f.get("disk")) {
+      for (const char* key : {"m", "Jp", "Jd"})
+        if (auto given = f.get(key)) given->fail("give either the disk's geometry or m, Jp, Jd");
+      readDisk(c, *disk, m);
+      c.deck.masses.push_back(std::move(m));
+      continue;
     }
     const Field mf = f.require("m");
     m.m = mf.nonNegative(c.evaluator);

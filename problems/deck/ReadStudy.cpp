@@ -22,7 +22,7 @@ void readAnalyses(Context& c) {
   auto block = c.root.get("analyses");
   if (!block || block->isNull()) {
     // No analyses listed: statics, the one every deck supports.
-    c.deck.analyses.push_back({"static", "static", 0, 0, c.root.place()});
+    c.deck.analyses.push_back({"static", "static", 0, 0, c.root.place(), {}});
     return;
   }
   std::vector<std::string> names;
@@ -30,14 +30,21 @@ void readAnalyses(Context& c) {
     if (!f.isMap()) f.fail("expected a map such as {type: static}, got " + f.describe());
     DeckAnalysis a;
     a.place = f.place();
-    a.type = f.require("type").choice({"static", "modal", "transient"});
+    a.type = f.require("type").choice(
+        {"static", "modal", "transient", "rotor", "campbell", "unbalance", "rigid-body"});
     if (a.type == "static") {
       f.allowOnly({"type", "name"}, "a static analysis");
     } else if (a.type == "transient") {
       a.transient = readTransient(c, f);
       if (!hasMass(c.deck))
         f.fail("a transient analysis needs mass: give the materials a density rho or add masses");
+    } else if (isRotorAnalysis(a.type)) {
+      readRotorAnalysis(c, f, a);
+      if (a.type != "unbalance" && !hasMass(c.deck))
+        f.fail("a " + a.type +
+               " analysis needs mass: give the materials a density rho or add masses");
     } else {
+      requireSymmetricAtRest(c, f);
       f.allowOnly({"type", "name", "modes", "shift"}, "a modal analysis");
       if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
       if (auto s = f.get("shift")) a.shift = s->number(c.evaluator);
@@ -72,12 +79,12 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     if (!analysis)
       analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
                           " (analyses: " + joinNames(names) + ")");
-    if (analysis->type != q.analysisType())
+    if (!q.readsFrom(analysis->type))
       analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" +
                           name + "' is " + analysis->type);
   } else {
     for (const DeckAnalysis& a : deck.analyses)
-      if (!analysis && a.type == q.analysisType()) analysis = &a;
+      if (!analysis && q.readsFrom(a.type)) analysis = &a;
     if (!analysis)
       f.fail("'" + q.text + "' needs a " + q.analysisType() +
              " analysis; add {type: " + q.analysisType() + "} to analyses");
@@ -122,6 +129,7 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
   if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
            "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
+  resolveRotorQuantity(c, q, f, *analysis);
   return analysis->name;
 }
 
@@ -149,6 +157,7 @@ void readChecks(Context& c) {
       k.applicable = when->number(c.evaluator) != 0;
     }
     k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
+    addCheckedSpeed(c, k);
     k.reference = f.require("reference").number(c.evaluator);
     const Field tol = f.require("tolerance");
     k.tolerance = tol.positive(c.evaluator);

@@ -41,6 +41,19 @@ void readSections(Context& c);
 void readLine(Context& c);
 /// Supports, springs, contacts, masses, hinges and loads.
 void readAttachments(Context& c);
+/// A mass given as a disk's geometry {D, bore, width, rho}: its m, Jp, Jd into `mass`.
+void readDisk(const Context& c, const Field& disk, DeckMass& mass);
+/// Bearings and proportional damping (ReadRotor.cpp).
+void readRotorModel(Context& c);
+/// The fields of a rotor, campbell, unbalance or rigid-body analysis into a.
+void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a);
+/// Fails at a modal analysis when a bearing is cross-coupled at rest (non-symmetric K).
+void requireSymmetricAtRest(const Context& c, const Field& analysis);
+/// Fails at `f` unless the names a rotor quantity refers to exist in analysis `a`.
+void resolveRotorQuantity(const Context& c, const Quantity& q, const Field& f,
+                          const DeckAnalysis& a);
+/// Adds the speed an unbalance_amplitude check reads to its analysis's speeds.
+void addCheckedSpeed(Context& c, const DeckCheck& k);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 

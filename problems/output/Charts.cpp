@@ -7,6 +7,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "problems/output/ChartParts.hpp"
 #include "problems/output/LineSampling.hpp"
 #include "problems/output/ModeShapes.hpp"
 #include "problems/output/Tables.hpp"
@@ -15,25 +16,11 @@ namespace beamrotor {
 
 namespace {
 
-/// Line colours, in the order curves are drawn.
-constexpr const char* kColours[] = {"#1f4e9c", "#c0392b", "#2e8b57", "#8e44ad", "#d35400"};
-constexpr int kColourCount = int(std::size(kColours));
-
-std::string colour(std::size_t i) {
-  return std::string("linecolor rgb '") + kColours[i % kColourCount] + "'";
-}
-
 /// A curve of a panel: a table column scaled to the panel's unit.
 struct Curve {
   std::string column;
   std::string title;  ///< key entry (enhanced text: u_y shows a subscript)
 };
-
-std::string number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", x);
-  return buffer;
-}
 
 bool anyNonZero(const CsvTable& table, const std::string& column) {
   const auto values = table.numbers(column);
@@ -69,19 +56,6 @@ std::string plotCommand(const CsvTable& table, const std::string& csvFile, const
   }
   s << "\n";
   return s.str();
-}
-
-/// A grid of panels under a caption. gnuplot takes the margins as fractions of the canvas;
-/// they are set here in pixels so that labels fit whatever the chart's size.
-std::string panelLayout(int rows, int columns, const std::string& caption, int width, int height,
-                        int rightMargin = 30) {
-  const auto fractionX = [&](double px) { return number(px / width); };
-  const auto fractionY = [&](double px) { return number(px / height); };
-  return "  set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns) +
-         " title " + gnuplotText(caption) + " font ',13' margins " + fractionX(90) + "," +
-         fractionX(width - double(rightMargin)) + "," + fractionY(60) + "," +
-         fractionY(height - 80.0) + " spacing " + fractionX(columns > 1 ? 100 : 0) + "," +
-         fractionY(rows > 1 ? 75 : 0) + "\n";
 }
 
 std::string frequencyText(double hz) {

@@ -11,6 +11,7 @@
 #include "problems/output/FileNames.hpp"
 #include "problems/output/Reactions.hpp"
 #include "problems/output/TransientJson.hpp"
+#include "problems/output/RotorJson.hpp"
 
 namespace beamrotor {
 
@@ -202,6 +203,8 @@ Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>
       analyses.push_back(modalJson(carried, a));
     else if (a.transient)
       analyses.push_back(transientJson(a));
+    else if (a.rotor)
+      analyses.push_back(rotorJson(a));
     else  // a kind of analysis this writer does not know yet: at least say it ran
       analyses.push_back({{"type", a.type}, {"name", a.name}});
   }

@@ -10,6 +10,7 @@
 //              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio
 //              {ux ..}, energy_share {ux .. rz}}], time_s, files}
 //            | transient: see TransientJson.hpp ],
+//            | rotor, campbell, unbalance, rigid-body: see RotorJson.hpp ],
 //   checks [{name, quantity, computed, reference, rel_error, tolerance, pass}],
 //   skipped_checks [name], parameters {name: value}, seconds, beamrotor_version.
 // Only the components a model carries appear (a planar model has no fz, my, uz ...).

@@ -13,6 +13,7 @@
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
+#include "problems/output/RotorOutput.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
@@ -33,6 +34,7 @@ struct PreparedAnalysis {
   std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
   std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
+  std::optional<PreparedRotor> rotor;   ///< rotor analyses
 };
 
 struct PreparedRun {
@@ -61,6 +63,7 @@ PreparedRun prepare(const RunResult& run) {
       p.modes = modesTable(modesCsv(p.stem), *a.modal);
       p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
     }
+    if (a.rotor) p.rotor = prepareRotor(a, p.stem);
     stations.push_back(p.stations);
     prepared.analyses.push_back(std::move(p));
   }
@@ -86,6 +89,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
   writeJson(prepared.doc, dir / kResultsJson);
   for (const PreparedAnalysis& p : prepared.analyses) {
     const AnalysisOutcome& a = *p.outcome;
+    if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
     if (a.statics) {
       p.fields->write(dir / fieldsCsv(p.stem));
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);

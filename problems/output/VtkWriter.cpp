@@ -19,10 +19,9 @@
 #include "fem/Recovery.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/ModeShapes.hpp"
+#include "problems/output/VtkGrid.hpp"
 
 namespace beamrotor {
-
-namespace {
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, int components, vtkIdType tuples) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
@@ -84,7 +83,7 @@ vtkSmartPointer<vtkDoubleArray> pointVectors(const char* name, const NodalField&
   return a;
 }
 
-void write(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
+void writeVtu(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetFileName(file.string().c_str());
   writer->SetInputData(grid);
@@ -92,6 +91,8 @@ void write(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
   writer->SetDataModeToBinary();
   if (writer->Write() != 1) throw std::runtime_error("VTK could not write " + file.string());
 }
+
+namespace {
 
 std::string xmlAttribute(const std::string& text) {
   std::string out;
@@ -146,7 +147,7 @@ void writeStaticVtu(const std::filesystem::path& file, const Model& model,
   auto* element = grid->GetCellData()->GetArray("element");
   for (vtkIdType c = 0; c < cells; ++c) stress->SetValue(c, largest.at(int(element->GetTuple1(c))));
   grid->GetCellData()->AddArray(stress);
-  write(grid, file);
+  writeVtu(grid, file);
 }
 
 void writeModeVtu(const std::filesystem::path& file, const Model& model, const Mode& mode,
@@ -162,7 +163,7 @@ void writeModeVtu(const std::filesystem::path& file, const Model& model, const M
   frequency->SetValue(0, mode.frequencyHz);
   grid->GetFieldData()->AddArray(modeNumber);
   grid->GetFieldData()->AddArray(frequency);
-  write(grid, file);
+  writeVtu(grid, file);
 }
 
 void writeFrameVtu(const std::filesystem::path& file, const Model& model, const Frame& frame) {

@@ -1,0 +1,81 @@
+// Summary lines of the rotor analyses (see RotorSummary.hpp).
+#include "problems/cli/RotorSummary.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "problems/cli/Summary.hpp"
+
+namespace beamrotor::cli {
+
+namespace {
+
+constexpr double kRpm = 30 / std::numbers::pi;
+
+void printModes(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r) {
+  out << "rotor analysis '" << a.name << "' at " << formatValue(r.speed * kRpm) << " rpm ("
+      << r.modes.size() << " damped modes)\n";
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const RotorMode& m = r.modes[i];
+    out << "    mode " << i + 1 << "  " << formatValue(m.dampedFrequencyHz) << " Hz  damping "
+        << formatValue(m.dampingRatio) << "  " << whirlName(m.whirl) << "\n";
+  }
+}
+
+void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const CampbellResult& c = *r.campbell;
+  out << "campbell analysis '" << a.name << "' (" << c.lines.size() << " lines, " << c.speeds.size()
+      << " speeds " << formatValue(c.speeds.front() * kRpm) << " to "
+      << formatValue(c.speeds.back() * kRpm) << " rpm)\n";
+  if (r.criticalSpeeds.empty())
+    out << "    no critical speed (" << formatValue(r.order) << "x) in this range\n";
+  for (const CriticalSpeed& k : r.criticalSpeeds)
+    out << "    critical speed " << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz)
+        << " Hz, line " << k.line + 1 << ", " << whirlName(k.whirl) << ")\n";
+}
+
+void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const UnbalanceResult& u = *r.unbalance;
+  out << "unbalance analysis '" << a.name << "' (" << u.speeds.size() << " speeds)\n";
+  for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
+    std::size_t peak = 0;
+    for (std::size_t s = 0; s < u.speeds.size(); ++s)
+      if (u.orbits[k][s].major() > u.orbits[k][peak].major()) peak = s;
+    out << "    " << r.responsePoints[k] << ": largest orbit "
+        << formatValue(u.orbits[k][peak].major()) << " m at " << formatValue(u.speeds[peak] * kRpm)
+        << " rpm\n";
+  }
+}
+
+void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
+  out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
+      << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
+      << " kg m^2\n";
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const FormeShaftMode& m = r.modes[i];
+    out << "    two-dof mode " << i + 1 << "  " << formatValue(m.k / (2 * std::numbers::pi))
+        << " Hz  " << formeModeKindName(m.kind) << "  n = "
+        << (std::isfinite(m.n) ? formatValue(m.n) + " m/rad" : std::string("inf (pure bounce)"))
+        << "  F_" << r.points[0] << " = " << formatValue(m.FA) << " N, F_" << r.points[1] << " = "
+        << formatValue(m.FB) << " N\n";
+  }
+}
+
+}  // namespace
+
+std::optional<SystemSize> rotorSize(const RotorOutcome& r) {
+  if (r.modes) return r.modes->size;
+  if (r.campbell) return r.campbell->size;
+  if (r.unbalance) return r.unbalance->size;
+  return std::nullopt;
+}
+
+void printRotor(std::ostream& out, const AnalysisOutcome& a) {
+  const RotorOutcome& r = *a.rotor;
+  if (r.modes) printModes(out, a, *r.modes);
+  if (r.campbell) printCampbell(out, a, r);
+  if (r.unbalance) printUnbalance(out, a, r);
+  if (r.rigidBody) printRigidBody(out, a, *r.rigidBody);
+}
+
+}  // namespace beamrotor::cli

@@ -1,0 +1,54 @@
+// The rotor-dynamics parts of a deck (see FORMAT.md, "Rotors"): bearings and proportional
+// damping on the model, and what the rotor analyses (rotor, campbell, unbalance, rigid-body)
+// ask for. Plain values, read by ReadRotor.cpp and solved by RunRotor.cpp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "elements/Bearing.hpp"
+#include "fem/RotorSystem.hpp"
+#include "problems/deck/DeckError.hpp"
+
+namespace beamrotor {
+
+/// A bearing at a point (elements/Bearing): constant coefficients (speeds empty, one row)
+/// or a table against spin speed (speeds ascending, one row each). Global axes y, z.
+struct DeckBearing {
+  std::string name;
+  std::string point;
+  std::vector<double> speeds;              ///< rad/s; empty for constant coefficients
+  std::vector<BearingCoefficients> table;  ///< N/m, N s/m
+  DeckPlace place;
+};
+
+/// An unbalance m e at a point, heavy spot at `phase` (rad from +y towards +z) at t = 0.
+struct DeckUnbalance {
+  std::string point;
+  double me = 0;     ///< kg m
+  double phase = 0;  ///< rad
+  DeckPlace place;
+};
+
+/// The rotor parts of the model.
+struct DeckRotorModel {
+  std::vector<DeckBearing> bearings;
+  ProportionalDamping damping;  ///< alpha M + beta K, used by the rotor analyses
+};
+
+/// What a rotor analysis asks for (the fields its type uses; the others stay empty).
+struct DeckRotorAnalysis {
+  double speed = 0;                        ///< rotor: spin speed (rad/s)
+  std::vector<double> speeds;              ///< campbell, unbalance: ascending (rad/s)
+  double order = 1;                        ///< campbell: excitation order of the critical speeds
+  std::vector<DeckUnbalance> unbalance;    ///< unbalance
+  std::vector<std::string> response;       ///< unbalance: points whose orbits are reported
+  std::vector<std::string> bearingPoints;  ///< rigid-body: the two spring points A, B
+};
+
+/// True for the analysis types this header describes.
+inline bool isRotorAnalysis(const std::string& type) {
+  return type == "rotor" || type == "campbell" || type == "unbalance" || type == "rigid-body";
+}
+
+}  // namespace beamrotor

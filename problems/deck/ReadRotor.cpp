@@ -1,0 +1,237 @@
+// Deck reader, rotor part: bearings and proportional damping on the model, the fields of the
+// rotor analyses (rotor, campbell, unbalance, rigid-body), and the names their check
+// quantities refer to. Speeds are written in rpm in the deck and kept in rad/s.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/Suggest.hpp"
+
+namespace beamrotor::reader {
+
+namespace {
+
+constexpr double kRadPerRpm = std::numbers::pi / 30;
+
+/// Stiffness and damping keys in the bearing's own axes (x_b, y_b) = global (y, z), see
+/// elements/Bearing.hpp.
+const std::vector<std::string> kCoefficients{"kxx", "kyy", "kxy", "kyx",
+                                             "cxx", "cyy", "cxy", "cyx"};
+
+/// One row of coefficients from a map that also holds `extra` keys. Direct stiffnesses and
+/// dampings must be >= 0; cross terms may have either sign.
+BearingCoefficients readCoefficients(const Context& c, const Field& f,
+                                     const std::vector<std::string>& extra,
+                                     const std::string& what) {
+  std::vector<std::string> keys = extra;
+  keys.insert(keys.end(), kCoefficients.begin(), kCoefficients.end());
+  f.allowOnly(keys, what);
+  const ExpressionEvaluator& ev = c.evaluator;
+  auto value = [&](const char* key, bool direct) {
+    auto v = f.get(key);
+    if (!v) return 0.0;
+    return direct ? v->nonNegative(ev) : v->number(ev);
+  };
+  BearingCoefficients k;
+  k.kyy = value("kxx", true);
+  k.kzz = value("kyy", true);
+  k.kyz = value("kxy", false);
+  k.kzy = value("kyx", false);
+  k.cyy = value("cxx", true);
+  k.czz = value("cyy", true);
+  k.cyz = value("cxy", false);
+  k.czy = value("cyx", false);
+  if (k.kyy == 0 && k.kzz == 0 && k.cyy == 0 && k.czz == 0)
+    f.fail("a bearing needs a positive kxx, kyy, cxx or cyy (N/m, N s/m)");
+  return k;
+}
+
+bool carriesLateral(const Deck& deck) {
+  return deck.dofs.contains(Dof::uy) && deck.dofs.contains(Dof::uz);
+}
+
+void readBearings(Context& c) {
+  auto block = c.root.get("bearings");
+  if (!block || block->isNull()) return;
+  if (!carriesLateral(c.deck))
+    block->fail("bearings act on uy and uz: use model: {dimension: lateral} (or 3d), not " +
+                c.deck.dimension);
+  std::vector<std::string> names;
+  for (const Field& f : block->items()) {
+    if (!f.isMap()) f.fail("expected a map describing a bearing, got " + f.describe());
+    DeckBearing b;
+    b.place = f.place();
+    const Field at = f.require("at");
+    b.point = c.point(at).name;
+    auto nameField = f.get("name");
+    b.name = nameField ? nameField->name() : b.point;
+    claimName(nameField ? *nameField : at, b.name, names, "a bearing");
+    if (auto table = f.get("table")) {
+      f.allowOnly({"name", "at", "table"}, "a tabulated bearing");
+      const std::vector<Field> rows = table->items();
+      if (rows.empty()) table->fail("the bearing table is empty");
+      for (const Field& row : rows) {
+        const Field speed = row.require("speed_rpm");
+        const double w = speed.nonNegative(c.evaluator) * kRadPerRpm;
+        if (!b.speeds.empty() && !(w > b.speeds.back()))
+          speed.fail("speeds of a bearing table must be strictly ascending");
+        b.speeds.push_back(w);
+        b.table.push_back(readCoefficients(c, row, {"speed_rpm"}, "a bearing table row"));
+      }
+    } else {
+      b.table.push_back(readCoefficients(c, f, {"name", "at", "table"}, "a bearing"));
+    }
+    c.deck.rotor.bearings.push_back(std::move(b));
+  }
+}
+
+void readDamping(Context& c) {
+  auto f = c.root.get("damping");
+  if (!f || f->isNull()) return;
+  f->allowOnly({"alpha", "beta"}, "damping");
+  if (auto a = f->get("alpha")) c.deck.rotor.damping.alpha = a->nonNegative(c.evaluator);
+  if (auto b = f->get("beta")) c.deck.rotor.damping.beta = b->nonNegative(c.evaluator);
+}
+
+/// from_rpm, to_rpm, steps: steps intervals, the last speed `to` exactly.
+std::vector<double> readSpeedRange(const Context& c, const Field& f) {
+  const double from = f.require("from_rpm").nonNegative(c.evaluator);
+  const Field toField = f.require("to_rpm");
+  const double to = toField.number(c.evaluator);
+  if (!(to > from)) toField.fail("to_rpm must exceed from_rpm (" + formatNumber(from) + ")");
+  const int n = f.require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
+  std::vector<double> speeds;
+  for (int i = 0; i < n; ++i) speeds.push_back((from + (to - from) * i / n) * kRadPerRpm);
+  speeds.push_back(to * kRadPerRpm);
+  return speeds;
+}
+
+void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
+  for (const Field& u : f.require("unbalance").itemsOrSingle()) {
+    if (!u.isMap()) u.fail("expected {at: POINT, me: KG_M, phase: RAD}, got " + u.describe());
+    u.allowOnly({"at", "me", "phase"}, "an unbalance");
+    DeckUnbalance d;
+    d.place = u.place();
+    d.point = c.point(u.require("at")).name;
+    d.me = u.require("me").positive(c.evaluator);
+    if (auto p = u.get("phase")) d.phase = p->number(c.evaluator);
+    r.unbalance.push_back(std::move(d));
+  }
+  for (const Field& p : f.require("response").itemsOrSingle()) {
+    const std::string name = c.point(p).name;
+    if (std::find(r.response.begin(), r.response.end(), name) != r.response.end())
+      p.fail("point '" + name + "' is listed twice");
+    r.response.push_back(name);
+  }
+}
+
+}  // namespace
+
+void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
+  disk.allowOnly({"D", "bore", "width", "rho"}, "a disk");
+  const ExpressionEvaluator& ev = c.evaluator;
+  const double D = disk.require("D").positive(ev);
+  const double w = disk.require("width").positive(ev);
+  const double rho = disk.require("rho").positive(ev);
+  double d = 0;
+  if (auto bore = disk.get("bore")) {
+    d = bore->nonNegative(ev);
+    if (!(d < D)) bore->fail("the bore must be smaller than D (" + formatNumber(D) + ")");
+  }
+  // Annular disk (a hollow cylinder) about its centre: m = rho pi (D^2 - d^2) w / 4,
+  // Jp = m (D^2 + d^2) / 8, Jd = m ((D^2 + d^2) / 16 + w^2 / 12): the difference of two solid
+  // cylinders, each m R^2 / 2 about its axis and m (3 R^2 + w^2) / 12 about a diameter
+  // through its centre (the tables of mass moments of inertia in any dynamics text, e.g.
+  // Meriam & Kraige, Engineering Mechanics: Dynamics, appendix D).
+  mass.m = rho * std::numbers::pi * (D * D - d * d) * w / 4;
+  mass.Jp = mass.m * (D * D + d * d) / 8;
+  mass.Jd = mass.m * ((D * D + d * d) / 16 + w * w / 12);
+}
+
+void readRotorModel(Context& c) {
+  readBearings(c);
+  readDamping(c);
+}
+
+void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  DeckRotorAnalysis& r = a.rotor;
+  if (a.type == "rigid-body") {
+    f.allowOnly({"type", "name", "bearings"}, "a rigid-body analysis");
+    const Field list = f.require("bearings");
+    const std::vector<Field> items = list.items();
+    if (items.size() != 2) list.fail("expected the two spring points [A, B]");
+    for (const Field& p : items) r.bearingPoints.push_back(c.point(p).name);
+    if (r.bearingPoints[0] == r.bearingPoints[1]) items[1].fail("A and B must be different points");
+    if (!c.deck.dofs.contains(Dof::uy) || !c.deck.dofs.contains(Dof::rz))
+      f.fail("a rigid-body analysis needs uy and rz (planar, lateral or 3d model)");
+    return;
+  }
+  if (!carriesLateral(c.deck))
+    f.fail("a " + a.type + " analysis needs uy and uz: use model: {dimension: lateral}");
+  if (a.type == "rotor") {
+    f.allowOnly({"type", "name", "speed_rpm", "modes", "shift"}, "a rotor analysis");
+    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev) * kRadPerRpm;
+  } else if (a.type == "campbell") {
+    f.allowOnly({"type", "name", "modes", "shift", "from_rpm", "to_rpm", "steps", "order"},
+                "a campbell analysis");
+    r.speeds = readSpeedRange(c, f);
+    if (auto o = f.get("order")) r.order = o->positive(ev);
+  } else {
+    f.allowOnly({"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response"},
+                "an unbalance analysis");
+    r.speeds = readSpeedRange(c, f);
+    readUnbalance(c, f, r);
+  }
+  if (a.type != "unbalance") {
+    if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);
+    if (auto s = f.get("shift")) a.shift = s->number(ev);
+  }
+}
+
+void requireSymmetricAtRest(const Context& c, const Field& analysis) {
+  for (const DeckBearing& b : c.deck.rotor.bearings) {
+    const Bearing atRest =
+        b.speeds.empty() ? Bearing(0, b.table.front()) : Bearing(0, b.speeds, b.table);
+    const BearingCoefficients k = atRest.coefficientsAt(0);
+    if (k.kyz != k.kzy)
+      analysis.fail("bearing '" + b.name +
+                    "' is cross-coupled at rest (kxy != kyx): the "
+                    "modal analysis needs a symmetric stiffness; use {type: rotor, speed_rpm: 0}");
+  }
+}
+
+void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
+                          const DeckAnalysis& a) {
+  if (q.kind == Quantity::Kind::logDecrement && q.mode > a.modes)
+    f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + a.name +
+           "' computes " + std::to_string(a.modes) + " modes (set its modes:)");
+  if (q.kind != Quantity::Kind::unbalanceAmplitude) return;
+  const auto& points = a.rotor.response;
+  if (std::find(points.begin(), points.end(), q.target) == points.end())
+    f.fail("analysis '" + a.name + "' reports no response at '" + q.target + "'" +
+           didYouMean(q.target, points) + " (response: " + joinNames(points) + ")");
+  const double w = q.rpm * kRadPerRpm;
+  if (w < a.rotor.speeds.front() * (1 - 1e-12) || w > a.rotor.speeds.back() * (1 + 1e-12))
+    f.fail("speed " + formatNumber(q.rpm) + " rpm lies outside analysis '" + a.name + "' (" +
+           formatNumber(a.rotor.speeds.front() / kRadPerRpm) + " to " +
+           formatNumber(a.rotor.speeds.back() / kRadPerRpm) + " rpm)");
+}
+
+void addCheckedSpeed(Context& c, const DeckCheck& k) {
+  if (k.quantity.kind != Quantity::Kind::unbalanceAmplitude) return;
+  for (DeckAnalysis& a : c.deck.analyses) {
+    if (a.name != k.analysis) continue;
+    std::vector<double>& speeds = a.rotor.speeds;
+    const double w = k.quantity.rpm * kRadPerRpm;
+    // The same rpm -> rad/s conversion as measureRotor's, so the speed is found exactly.
+    const bool present = std::any_of(speeds.begin(), speeds.end(), [&](double s) {
+      return std::abs(s - w) <= 1e-12 * std::max(1.0, w);
+    });
+    if (!present) speeds.insert(std::upper_bound(speeds.begin(), speeds.end(), w), w);
+  }
+}
+
+}  // namespace beamrotor::reader

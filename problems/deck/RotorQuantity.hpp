@@ -1,0 +1,29 @@
+// The check quantities of the rotor analyses (grammar in Quantity.hpp): parsing and
+// measuring, kept apart from the static and modal ones.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "problems/deck/Quantity.hpp"
+
+namespace beamrotor {
+
+/// "3" -> 3 for a 1-based number; throws std::invalid_argument naming `what` otherwise.
+int parseOrdinal(const std::string& word, const std::string& what);
+
+/// The rigid_body properties a check may name.
+const std::vector<std::string>& rigidBodyPropertyNames();
+
+/// Fills q when `words` is a rotor quantity and returns true; false when the first word is
+/// not one; throws std::invalid_argument when it is one, written wrongly.
+bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q);
+
+/// The analysis type a rotor quantity reads, nullopt for the others.
+std::optional<std::string> rotorAnalysisType(const Quantity& q);
+
+/// The quantity in a solved rotor analysis; throws std::invalid_argument when it lacks it.
+double measureRotor(const Quantity& q, const AnalysisOutcome& outcome);
+
+}  // namespace beamrotor

@@ -1,0 +1,28 @@
+// Charts of the rotor analyses, as gnuplot scripts over their CSV tables: the Campbell
+// diagram and the unbalance response (amplitude and phase against speed).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/Gnuplot.hpp"
+
+namespace beamrotor {
+
+/// Whirl frequency (Hz) of each line against speed (rpm) from a campbellTable in csvFile,
+/// coloured by whirl (forward, backward, planar), the order x speed line dashed, and the
+/// critical speeds from a criticalSpeedsTable in criticalFile marked and labelled in rpm.
+ChartScript campbellDiagram(const std::string& caption, const std::string& chartName,
+                            const CsvTable& campbell, const std::string& csvFile,
+                            const CsvTable& critical, const std::string& criticalFile,
+                            double order);
+
+/// Two panels against speed (rpm) from an unbalanceTable in csvFile: the orbit semi-major
+/// axis (um, log scale) and the phase of uy (deg), one curve per
+/// response point.
+ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
+                                   const CsvTable& response, const std::string& csvFile,
+                                   const std::vector<std::string>& points);
+
+}  // namespace beamrotor

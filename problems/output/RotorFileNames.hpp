@@ -1,0 +1,34 @@
+// The names of the files a rotor analysis writes (see FileNames.hpp for the others).
+#pragma once
+
+#include <string>
+
+#include "problems/output/FileNames.hpp"
+
+namespace beamrotor {
+
+/// Campbell: one row per speed, the tracked lines' frequencies, damping and whirl.
+inline std::string campbellCsv(const std::string& stem) {
+  return stem + "_campbell.csv";
+}
+/// Campbell: one row per critical speed.
+inline std::string criticalSpeedsCsv(const std::string& stem) {
+  return stem + "_critical_speeds.csv";
+}
+/// Unbalance: one row per speed, amplitude and phase at every response point.
+inline std::string unbalanceCsv(const std::string& stem) {
+  return stem + "_unbalance.csv";
+}
+/// Charts (without extension).
+inline std::string campbellChart(const std::string& stem) {
+  return stem + "_campbell";
+}
+inline std::string unbalanceChart(const std::string& stem) {
+  return stem + "_unbalance";
+}
+/// Rotor modes: the orbits of mode `number` as polylines.
+inline std::string orbitVtu(const std::string& stem, int number) {
+  return modeVtu(stem + "_orbits", number);
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,168 @@
+// results.json entries of the rotor analyses (see RotorJson.hpp).
+#include "problems/output/RotorJson.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "problems/output/FileNames.hpp"
+#include "problems/output/RotorFileNames.hpp"
+#include "problems/output/RotorTables.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+constexpr double kDegrees = 180 / std::numbers::pi;
+
+/// A number, or null where it is infinite by definition (a real eigenvalue's decrement).
+Json finiteOrNull(double x) {
+  return std::isfinite(x) ? Json(x) : Json(nullptr);
+}
+
+Json modesJson(const std::string& stem, const RotorModesResult& r) {
+  Json frequencies = Json::array(), modes = Json::array(), vtus = Json::array(),
+       orbits = Json::array();
+  for (std::size_t m = 0; m < r.modes.size(); ++m) {
+    const RotorMode& mode = r.modes[m];
+    frequencies.push_back(mode.dampedFrequencyHz);
+    modes.push_back({{"mode", m + 1},
+                     {"frequency_hz", mode.dampedFrequencyHz},
+                     {"natural_frequency_hz", mode.naturalFrequencyHz},
+                     {"damping_ratio", mode.dampingRatio},
+                     {"log_decrement", finiteOrNull(mode.logDecrement)},
+                     {"whirl", std::string(whirlName(mode.whirl))},
+                     {"whirl_ratio", mode.whirlRatio},
+                     {"eigenvalue", {mode.eigenvalue.real(), mode.eigenvalue.imag()}}});
+    vtus.push_back(modeVtu(stem, int(m) + 1));
+    orbits.push_back(orbitVtu(stem, int(m) + 1));
+  }
+  return {{"speed_rpm", rpmOf(r.speed)},
+          {"frequencies_hz", frequencies},
+          {"modes", modes},
+          {"time_s", r.time.total},
+          {"files",
+           {{"modes_csv", modesCsv(stem)},
+            {"pvd", collectionPvd(stem)},
+            {"vtu", vtus},
+            {"orbits_vtu", orbits}}}};
+}
+
+Json campbellJson(const std::string& stem, const RotorOutcome& r) {
+  const CampbellResult& c = *r.campbell;
+  Json speeds = Json::array(), lines = Json::array(), critical = Json::array();
+  for (double s : c.speeds) speeds.push_back(rpmOf(s));
+  for (std::size_t l = 0; l < c.lines.size(); ++l) {
+    Json f = Json::array(), zeta = Json::array(), whirl = Json::array();
+    for (const RotorMode& m : c.lines[l]) {
+      f.push_back(m.dampedFrequencyHz);
+      zeta.push_back(m.dampingRatio);
+      whirl.push_back(std::string(whirlName(m.whirl)));
+    }
+    lines.push_back({{"line", l + 1},
+                     {"frequencies_hz", f},
+                     {"damping_ratio", zeta},
+                     {"whirl", whirl},
+                     {"mac", c.mac[l]}});
+  }
+  for (const CriticalSpeed& k : r.criticalSpeeds)
+    critical.push_back({{"rpm", k.rpm},
+                        {"speed_rad_s", k.speed},
+                        {"frequency_hz", k.frequencyHz},
+                        {"line", k.line + 1},
+                        {"damping_ratio", k.dampingRatio},
+                        {"whirl", std::string(whirlName(k.whirl))}});
+  return {{"order", r.order},
+          {"speeds_rpm", speeds},
+          {"lines", lines},
+          {"critical_speeds", critical},
+          {"symbolic_analyses", c.symbolicAnalyses},
+          {"time_s", c.time.total},
+          {"files",
+           {{"campbell_csv", campbellCsv(stem)},
+            {"critical_speeds_csv", criticalSpeedsCsv(stem)},
+            {"chart", campbellChart(stem) + ".svg"}}}};
+}
+
+Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
+  const UnbalanceResult& u = *r.unbalance;
+  Json speeds = Json::array(), response = Json::object();
+  for (double s : u.speeds) speeds.push_back(rpmOf(s));
+  for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
+    Json major = Json::array(), ay = Json::array(), az = Json::array(), py = Json::array(),
+         pz = Json::array();
+    std::size_t peak = 0;
+    for (std::size_t s = 0; s < u.speeds.size(); ++s) {
+      const Orbit& o = u.orbits[k][s];
+      major.push_back(o.major());
+      ay.push_back(std::abs(o.uy));
+      az.push_back(std::abs(o.uz));
+      py.push_back(std::arg(o.uy) * kDegrees);
+      pz.push_back(std::arg(o.uz) * kDegrees);
+      if (o.major() > u.orbits[k][peak].major()) peak = s;
+    }
+    response[r.responsePoints[k]] = {
+        {"amplitude_m", major},
+        {"uy_amplitude_m", ay},
+        {"uz_amplitude_m", az},
+        {"uy_phase_deg", py},
+        {"uz_phase_deg", pz},
+        {"peak", {{"amplitude_m", u.orbits[k][peak].major()}, {"rpm", rpmOf(u.speeds[peak])}}}};
+  }
+  return {
+      {"speeds_rpm", speeds},
+      {"response", response},
+      {"time_s", u.time.total},
+      {"files", {{"unbalance_csv", unbalanceCsv(stem)}, {"chart", unbalanceChart(stem) + ".svg"}}}};
+}
+
+Json rigidBodyJson(const RigidBodyOutcome& r) {
+  const FormeShaftRigid& s = r.rigid;
+  Json modes = Json::array();
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const FormeShaftMode& m = r.modes[i];
+    modes.push_back({{"mode", i + 1},
+                     {"frequency_hz", m.k / (2 * std::numbers::pi)},
+                     {"k_rad_s", m.k},
+                     {"kind", std::string(formeModeKindName(m.kind))},
+                     {"z", m.z},
+                     {"phi", m.phi},
+                     {"n", finiteOrNull(m.n)},
+                     {"FA", m.FA},
+                     {"FB", m.FB},
+                     {"inertia_force", m.inertiaForce},
+                     {"inertia_moment", m.inertiaMoment}});
+  }
+  return {{"rigid_body",
+           {{"mass", r.body.m},
+            {"com_x", r.body.xG},
+            {"J_com", r.body.J},
+            {"Jp", r.body.Jp},
+            {"bearing_x", {{r.points[0], r.x[0]}, {r.points[1], r.x[1]}}},
+            {"stiffness", {{r.points[0], r.stiffness[0]}, {r.points[1], r.stiffness[1]}}}}},
+          {"two_dof",
+           {{"l1", s.l1},
+            {"l2", s.l2},
+            {"a", s.a()},
+            {"b", s.b()},
+            {"d", s.d()},
+            {"rho2", s.rho2()},
+            {"decoupled", r.modes[0].kind != FormeModeKind::coupled},
+            {"modes", modes}}}};
+}
+
+}  // namespace
+
+Json rotorJson(const AnalysisOutcome& a) {
+  const RotorOutcome& r = *a.rotor;
+  const std::string stem = fileStem(a.name);
+  Json out = {{"type", a.type}, {"name", a.name}};
+  Json body = r.modes       ? modesJson(stem, *r.modes)
+              : r.campbell  ? campbellJson(stem, r)
+              : r.unbalance ? unbalanceJson(stem, r)
+                            : rigidBodyJson(*r.rigidBody);
+  for (auto& [key, value] : body.items()) out[key] = value;
+  return out;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,25 @@
+// The results.json entries of the rotor analyses (layout in JsonWriter.hpp's terms):
+//   rotor:      {type, name, speed_rpm, frequencies_hz (damped), modes [{mode, frequency_hz,
+//                natural_frequency_hz, damping_ratio, log_decrement (null when infinite),
+//                whirl, whirl_ratio, eigenvalue [re, im]}], time_s, files}
+//   campbell:   {type, name, order, speeds_rpm, lines [{line, frequencies_hz, damping_ratio,
+//                whirl, mac}], critical_speeds [{rpm, speed_rad_s, frequency_hz, line,
+//                damping_ratio, whirl}], symbolic_analyses, time_s, files}
+//   unbalance:  {type, name, speeds_rpm, response {POINT: {amplitude_m, uy_amplitude_m,
+//                uz_amplitude_m, uy_phase_deg, uz_phase_deg, peak {amplitude_m, rpm}}},
+//                time_s, files}
+//   rigid-body: {type, name, rigid_body {mass, com_x, J_com, Jp, bearing_x {A, B},
+//                stiffness {A, B}}, two_dof {a, b, d, rho2, decoupled, modes [{mode,
+//                frequency_hz, k_rad_s, kind, z, phi, n (null when infinite), FA, FB,
+//                inertia_force, inertia_moment}]}}
+#pragma once
+
+#include "problems/RunResult.hpp"
+#include "problems/output/JsonWriter.hpp"
+
+namespace beamrotor {
+
+/// The entry of one solved rotor analysis (a.rotor set).
+Json rotorJson(const AnalysisOutcome& a);
+
+}  // namespace beamrotor

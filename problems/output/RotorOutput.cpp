@@ -1,0 +1,67 @@
+// Files of the rotor analyses (see RotorOutput.hpp).
+#include "problems/output/RotorOutput.hpp"
+
+#include "problems/output/FileNames.hpp"
+#include "problems/output/RotorCharts.hpp"
+#include "problems/output/RotorFileNames.hpp"
+#include "problems/output/RotorTables.hpp"
+#include "problems/output/RotorVtk.hpp"
+#include "problems/output/VtkWriter.hpp"
+
+namespace beamrotor {
+
+PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
+  const RotorOutcome& r = *a.rotor;
+  PreparedRotor p;
+  if (r.modes) p.modes = rotorModesTable(modesCsv(stem), *r.modes);
+  if (r.campbell) {
+    p.campbell = campbellTable(campbellCsv(stem), *r.campbell);
+    p.critical = criticalSpeedsTable(criticalSpeedsCsv(stem), r.criticalSpeeds);
+  }
+  if (r.unbalance) p.unbalance = unbalanceTable(unbalanceCsv(stem), *r.unbalance, r.responsePoints);
+  return p;
+}
+
+namespace {
+
+/// The caption, without its parameter list when that would not fit above one chart.
+std::string fitted(const std::string& caption) {
+  constexpr std::size_t kWidest = 90;  // characters across a 900-pixel chart title
+  const std::size_t list = caption.find(" (");
+  return caption.size() > kWidest && list != std::string::npos ? caption.substr(0, list) : caption;
+}
+
+}  // namespace
+
+void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std::string& stem,
+                     const Model& model, const std::filesystem::path& dir,
+                     const std::string& fullCaption, bool charts) {
+  const RotorOutcome& r = *a.rotor;
+  const std::string caption = fitted(fullCaption);
+  if (p.modes) {
+    p.modes->write(dir / modesCsv(stem));
+    std::vector<PvdEntry> entries;
+    for (std::size_t m = 0; m < r.modes->modes.size(); ++m) {
+      const int number = int(m) + 1;
+      writeRotorModeVtu(dir / modeVtu(stem, number), model, r.modes->modes[m], number);
+      writeOrbitVtu(dir / orbitVtu(stem, number), model, r.modes->modes[m]);
+      entries.push_back({double(number), modeVtu(stem, number)});
+    }
+    writePvd(dir / collectionPvd(stem), entries);
+  }
+  if (p.campbell) {
+    p.campbell->write(dir / campbellCsv(stem));
+    p.critical->write(dir / criticalSpeedsCsv(stem));
+    if (charts && p.campbell->rowCount() > 0)
+      drawChart(dir, campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
+                                     *p.critical, criticalSpeedsCsv(stem), r.order));
+  }
+  if (p.unbalance) {
+    p.unbalance->write(dir / unbalanceCsv(stem));
+    if (charts && p.unbalance->rowCount() > 0)
+      drawChart(dir, unbalanceResponseChart(caption, unbalanceChart(stem), *p.unbalance,
+                                            unbalanceCsv(stem), r.responsePoints));
+  }
+}
+
+}  // namespace beamrotor

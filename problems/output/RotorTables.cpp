@@ -1,0 +1,99 @@
+// The CSV tables of the rotor analyses (see RotorTables.hpp).
+#include "problems/output/RotorTables.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace beamrotor {
+
+long long whirlSign(Whirl w) {
+  return w == Whirl::forward ? 1 : w == Whirl::backward ? -1 : 0;
+}
+
+double rpmOf(double speed) {
+  return speed * 30 / std::numbers::pi;
+}
+
+CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
+  CsvTable table(title, {{"mode", ""},
+                         {"frequency", "Hz"},
+                         {"natural_frequency", "Hz"},
+                         {"damping_ratio", ""},
+                         {"log_decrement", ""},
+                         {"whirl", ""},
+                         {"whirl_ratio", ""}});
+  for (std::size_t m = 0; m < r.modes.size(); ++m) {
+    const RotorMode& mode = r.modes[m];
+    const CsvCell decrement = std::isfinite(mode.logDecrement)
+                                  ? CsvCell(mode.logDecrement)
+                                  : CsvCell(std::string(mode.logDecrement > 0 ? "inf" : "-inf"));
+    table.addRow({(long long)(m + 1), mode.dampedFrequencyHz, mode.naturalFrequencyHz,
+                  mode.dampingRatio, decrement, std::string(whirlName(mode.whirl)),
+                  mode.whirlRatio});
+  }
+  return table;
+}
+
+std::string campbellColumn(int line, const std::string& what) {
+  return "line" + std::to_string(line) + "_" + what;
+}
+
+CsvTable campbellTable(const std::string& title, const CampbellResult& c) {
+  std::vector<CsvColumn> columns{{"speed", "rad/s"}, {"speed_rpm", "rpm"}};
+  for (int l = 1; l <= int(c.lines.size()); ++l) {
+    columns.push_back({campbellColumn(l, "frequency"), "Hz"});
+    columns.push_back({campbellColumn(l, "damping_ratio"), ""});
+    columns.push_back({campbellColumn(l, "whirl"), ""});
+    columns.push_back({campbellColumn(l, "mac"), ""});
+  }
+  CsvTable table(title, columns);
+  for (std::size_t s = 0; s < c.speeds.size(); ++s) {
+    std::vector<CsvCell> row{c.speeds[s], rpmOf(c.speeds[s])};
+    for (std::size_t l = 0; l < c.lines.size(); ++l) {
+      const RotorMode& m = c.lines[l][s];
+      row.insert(row.end(), {m.dampedFrequencyHz, m.dampingRatio, whirlSign(m.whirl), c.mac[l][s]});
+    }
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
+CsvTable criticalSpeedsTable(const std::string& title, const std::vector<CriticalSpeed>& c) {
+  CsvTable table(title, {{"speed_rpm", "rpm"},
+                         {"speed", "rad/s"},
+                         {"frequency", "Hz"},
+                         {"line", ""},
+                         {"damping_ratio", ""},
+                         {"whirl", ""}});
+  for (const CriticalSpeed& k : c)
+    table.addRow({k.rpm, k.speed, k.frequencyHz, (long long)(k.line + 1), k.dampingRatio,
+                  whirlSign(k.whirl)});
+  return table;
+}
+
+CsvTable unbalanceTable(const std::string& title, const UnbalanceResult& u,
+                        const std::vector<std::string>& points) {
+  std::vector<CsvColumn> columns{{"speed", "rad/s"}, {"speed_rpm", "rpm"}};
+  for (const std::string& p : points)
+    for (const auto& [what, unit] :
+         std::vector<std::pair<std::string, std::string>>{{"amplitude", "m"},
+                                                          {"uy_amplitude", "m"},
+                                                          {"uz_amplitude", "m"},
+                                                          {"uy_phase", "deg"},
+                                                          {"uz_phase", "deg"}})
+      columns.push_back({p + "_" + what, unit});
+  CsvTable table(title, columns);
+  const double degrees = 180 / std::numbers::pi;
+  for (std::size_t s = 0; s < u.speeds.size(); ++s) {
+    std::vector<CsvCell> row{u.speeds[s], rpmOf(u.speeds[s])};
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Orbit& o = u.orbits[k][s];
+      row.insert(row.end(), {o.major(), std::abs(o.uy), std::abs(o.uz), std::arg(o.uy) * degrees,
+                             std::arg(o.uz) * degrees});
+    }
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,39 @@
+// The CSV tables of the rotor analyses: damped modes at one speed, the Campbell diagram and
+// its critical speeds, and the unbalance response (the charts plot these).
+#pragma once
+
+#include <string>
+
+#include "fem/RotorResults.hpp"
+#include "problems/RotorRunResult.hpp"
+#include "problems/output/CsvTable.hpp"
+
+namespace beamrotor {
+
+/// +1 forward, -1 backward, 0 planar: a whirl as a number a chart can colour by.
+long long whirlSign(Whirl w);
+
+/// Speed in rpm of a speed in rad/s.
+double rpmOf(double speed);
+
+/// One row per mode: mode, damped and natural frequency (Hz), damping ratio, log decrement
+/// (text "inf" for a real eigenvalue), whirl (forward, backward, planar) and whirl ratio.
+CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r);
+
+/// One row per speed: speed (rad/s), speed_rpm, then per line l (from 1) line<l>_frequency
+/// (damped, Hz), line<l>_damping_ratio, line<l>_whirl (+1, -1, 0) and line<l>_mac.
+CsvTable campbellTable(const std::string& title, const CampbellResult& c);
+/// Column names of campbellTable for line l (1-based).
+std::string campbellColumn(int line, const std::string& what);
+
+/// One row per critical speed: speed_rpm, speed (rad/s), frequency (Hz), line, damping
+/// ratio, whirl (+1, -1, 0).
+CsvTable criticalSpeedsTable(const std::string& title, const std::vector<CriticalSpeed>& c);
+
+/// One row per speed: speed (rad/s), speed_rpm, then per response point P: P_amplitude (m,
+/// orbit semi-major axis), P_uy_amplitude, P_uz_amplitude (m), P_uy_phase, P_uz_phase (deg,
+/// of u = Re(U e^{i Omega t}), in (-180, 180]).
+CsvTable unbalanceTable(const std::string& title, const UnbalanceResult& u,
+                        const std::vector<std::string>& points);
+
+}  // namespace beamrotor

@@ -1,0 +1,35 @@
+// The building blocks of the VTK writers (VtkWriter.cpp, RotorVtk.cpp): the model's line
+// elements as an unstructured grid, typed point arrays, and writing a grid as .vtu.
+#pragma once
+
+#include <vtkDoubleArray.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <filesystem>
+#include <vector>
+
+#include "fem/LineElement.hpp"
+#include "fem/Model.hpp"
+#include "fem/Results.hpp"
+
+namespace beamrotor {
+
+/// A named double array of `tuples` tuples with `components` components each.
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, int components, vtkIdType tuples);
+
+/// The line elements of a model, in element order (the VTK cell order); their indices into
+/// model.elements() go to `indices`.
+std::vector<const LineElement*> lineElements(const Model& model, std::vector<int>* indices);
+
+/// Every node as a point, one VTK_LINE per line element, and the cell data every file carries
+/// (element index, section A, Iy, Iz, E).
+vtkSmartPointer<vtkUnstructuredGrid> lineGrid(const Model& model);
+
+/// Columns [first, first + 3) of a nodal field as a 3-component point array.
+vtkSmartPointer<vtkDoubleArray> pointVectors(const char* name, const NodalField& field, int first);
+
+/// Writes the grid as binary (zlib) VTK XML; throws std::runtime_error when VTK cannot.
+void writeVtu(vtkUnstructuredGrid* grid, const std::filesystem::path& file);
+
+}  // namespace beamrotor

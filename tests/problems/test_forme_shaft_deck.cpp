@@ -1,0 +1,148 @@
+// The forme-shaft decks (SCENES.md section 2) through `beamrotor solve`'s path: rigid-body
+// properties and the two-dof closed form, the rigid limit (--set E=2e17), how much real steel
+// lowers the frequencies (against the scene's own C++ model), the decoupled case
+// C1 l1 = C2 l2, and the spinning shaft's checks in the rigid limit.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "fem/Modal.hpp"
+#include "problems/deck/Study.hpp"
+#include "problems/output/RotorJson.hpp"
+#include "problems/scenes/FormeShaft.hpp"
+#include "tests/Helpers.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+RunResult solveDeck(const char* deck, std::vector<std::string> sets = {}) {
+  StudyRequest r;
+  r.deckPath = (problemsDir() / deck).string();
+  r.sets = std::move(sets);
+  const Study s = solveStudy(r);
+  REQUIRE(s.run);
+  return *s.run;
+}
+
+const AnalysisOutcome& analysisOfType(const RunResult& run, const std::string& type) {
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.type == type) return a;
+  FAIL("no " << type << " analysis");
+  return run.analyses.front();
+}
+
+/// Every check that applied passed; returns how many applied.
+int passedChecks(const RunResult& run) {
+  for (const Check& c : run.checks) {
+    CAPTURE(c.name);
+    CAPTURE(c.relError());
+    CHECK(c.pass());
+  }
+  return int(run.checks.size());
+}
+
+std::string set(const std::string& name, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%s=%.17g", name.c_str(), value);
+  return buffer;
+}
+
+}  // namespace
+
+TEST_SUITE("forme shaft decks") {
+  TEST_CASE("real steel: the deck's FE frequencies are the scene's, ~6 % below k1, k2") {
+    const RunResult run = solveDeck("forme_shaft.yaml");
+    CHECK(passedChecks(run) == 11);  // the rigid-limit checks do not apply to steel
+    CHECK(run.skippedChecks.size() == 2);
+    const RigidBodyOutcome& rigid = *analysisOfType(run, "rigid-body").rotor->rigidBody;
+    const ModalResult& modal = *analysisOfType(run, "modal").modal;
+
+    // Second method: the same shaft built in C++ by the scene (problems/scenes/FormeShaft)
+    // with the same mesh: the same frequencies up to the eigensolver's round-off.
+    const FormeShaftModel scene = buildFormeShaft(FormeShaftDesign{}, DofSet::planar());
+    const ModalResult reference = solveModes(scene.model, {2, 0});
+    for (int i = 0; i < 2; ++i) {
+      CAPTURE(i);
+      const double fe = modal.modes[i].frequencyHz, k = rigid.modes[i].k / kTwoPi;
+      CHECK(relError(fe, reference.modes[i].frequencyHz) < 1e-10);
+      // Flexibility only lowers the frequencies (Rayleigh); tests/problems/test_forme_shaft
+      // bounds the drop by Weyl's inequality and shows it is the model's, not the mesh's.
+      const double drop = 1 - fe / k;
+      CHECK(drop > 0);
+      CHECK(drop < 0.1);
+      MESSAGE("forme shaft, real steel: mode " << i + 1 << " FE " << fe << " Hz, rigid two-dof "
+                                               << k << " Hz: " << 100 * drop << " % lower");
+    }
+  }
+
+  TEST_CASE("rigid limit (--set E=2e17): FE frequencies reach k1, k2 to 1e-6") {
+    const RunResult run = solveDeck("forme_shaft.yaml", {"E=2e17"});
+    CHECK(passedChecks(run) == 13);
+    CHECK(run.skippedChecks.empty());
+    const RigidBodyOutcome& rigid = *analysisOfType(run, "rigid-body").rotor->rigidBody;
+    const ModalResult& modal = *analysisOfType(run, "modal").modal;
+    for (int i = 0; i < 2; ++i)
+      CHECK(relError(modal.modes[i].frequencyHz, rigid.modes[i].k / kTwoPi) < 1e-6);
+  }
+
+  TEST_CASE("decoupled deck (C1 l1 = C2 l2): pure bounce and rocking, n reported as null") {
+    // C2 from the lever arms of the default deck; the FE centre of mass is the section
+    // integrals' to round-off (checked by the deck), so b is round-off too.
+    const RunResult first = solveDeck("forme_shaft.yaml");
+    const FormeShaftRigid s = analysisOfType(first, "rigid-body").rotor->rigidBody->rigid;
+    const double C2 = s.C1 * s.l1 / s.l2;
+    const RunResult run = solveDeck("forme_shaft.yaml", {"E=2e17", set("C2", C2)});
+    const AnalysisOutcome& outcome = analysisOfType(run, "rigid-body");
+    const RigidBodyOutcome& rigid = *outcome.rotor->rigidBody;
+    const int ib = rigid.modes[0].kind == FormeModeKind::bounce ? 0 : 1;
+    REQUIRE(rigid.modes[ib].kind == FormeModeKind::bounce);
+    REQUIRE(rigid.modes[1 - ib].kind == FormeModeKind::rocking);
+    // Closed forms of the decoupled modes: bounce sqrt((C1 + C2)/m), rocking sqrt(d/rho^2).
+    const FormeShaftRigid& r = rigid.rigid;
+    CHECK(relError(rigid.modes[ib].k, std::sqrt((r.C1 + r.C2) / r.m)) < 1e-12);
+    CHECK(relError(rigid.modes[1 - ib].k, std::sqrt(r.d() / r.rho2())) < 1e-12);
+    // The deck's n and load checks (written with n) say n/a (0/0), the FE frequencies still
+    // reach the closed form.
+    CHECK(passedChecks(run) == 7);
+    REQUIRE(run.skippedChecks.size() == 6);
+    CHECK(run.skippedChecks[0] == "two-dof n1");
+    const ModalResult& modal = *analysisOfType(run, "modal").modal;
+    for (int i = 0; i < 2; ++i)
+      CHECK(relError(modal.modes[i].frequencyHz, rigid.modes[i].k / kTwoPi) < 1e-6);
+    // results.json: n of the bounce mode is null (infinite), of the rocking mode 0.
+    const Json doc = rotorJson(outcome);
+    CHECK(doc.at("two_dof").at("decoupled") == true);
+    CHECK(doc.at("two_dof").at("modes")[ib].at("n").is_null());
+    CHECK(doc.at("two_dof").at("modes")[1 - ib].at("n") == 0.0);
+  }
+
+  TEST_CASE("spinning shaft deck: rigid-rotor whirl, critical speeds and orbits (E=2e17)") {
+    for (const char* speed : {"speed_rpm=300", "speed_rpm=12000"}) {
+      CAPTURE(speed);
+      const RunResult run = solveDeck("forme_shaft_rotor.yaml", {"E=2e17", speed});
+      CHECK(passedChecks(run) == 15);
+      CHECK(run.skippedChecks.empty());
+    }
+    // Real steel: only the inertia checks apply; the flexible shaft's critical speeds lie
+    // below the rigid ones (flexibility lowers every frequency line).
+    const RunResult steel = solveDeck("forme_shaft_rotor.yaml");
+    CHECK(passedChecks(steel) == 4);
+    const RunResult stiff = solveDeck("forme_shaft_rotor.yaml", {"E=2e17"});
+    const auto& soft = analysisOfType(steel, "campbell").rotor->criticalSpeeds;
+    const auto& rigid = analysisOfType(stiff, "campbell").rotor->criticalSpeeds;
+    REQUIRE(soft.size() == 4);
+    REQUIRE(rigid.size() == 4);
+    for (int i = 0; i < 4; ++i) {
+      CHECK(soft[i].rpm < rigid[i].rpm);
+      MESSAGE("critical speed " << i + 1 << ": steel " << soft[i].rpm << " rpm, rigid "
+                                << rigid[i].rpm << " rpm");
+    }
+  }
+}

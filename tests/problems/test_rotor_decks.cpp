@@ -1,0 +1,307 @@
+// Rotor analyses through the deck path: a Jeffcott rotor written as a deck reproduces its
+// closed-form damped frequency, log decrement, critical speed and unbalance amplitude, and
+// the files it writes (results.json, CSV, mode and orbit VTK) carry the same numbers.
+#include <doctest/doctest.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "elements/Bearing.hpp"
+#include "problems/deck/Study.hpp"
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/Output.hpp"
+#include "tests/Helpers.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+/// Jeffcott rotor: a massless Euler-Bernoulli shaft (density 1e-12 of steel's: 4e-13 of the
+/// disk's mass), simply supported, a point mass at mid-span with a viscous damper. Hermite
+/// elements are exact for the point load, so the mid-span stiffness is exactly 48 E I / L^3
+/// and every result below is the closed form up to round-off and the 4e-13 shaft mass.
+struct Jeffcott {
+  double L = 0.8, D = 0.025, m = 8, E = 2.1e11, c = 50, me = 1e-4;
+  double k() const { return 48 * E * (kPi * std::pow(D, 4) / 64) / std::pow(L, 3); }
+  double wn() const { return std::sqrt(k() / m); }
+  double zeta() const { return c / (2 * m * wn()); }
+  double wd() const { return wn() * std::sqrt(1 - zeta() * zeta()); }
+  double logDecrement() const { return 2 * kPi * zeta() / std::sqrt(1 - zeta() * zeta()); }
+  /// Orbit radius at spin speed W (rad/s): m e W^2 / |k - m W^2 + i c W|.
+  double orbit(double W) const { return me * W * W / std::hypot(k() - m * W * W, c * W); }
+  /// Phase of uy against the heavy spot (rad): the response lags by atan2(c W, k - m W^2).
+  double phase(double W) const { return -std::atan2(c * W, k() - m * W * W); }
+};
+
+// The closed-form expressions, written again in the deck's own words, are its checks.
+const char* kJeffcottDeck = R"(
+title: Jeffcott rotor
+parameters: {L: 0.8, D: 0.025, m: 8, E: 2.1e11, c: 50, me: 1e-4}
+derived:
+  k: 48 * E * pi * D^4 / 64 / L^3
+  wn: sqrt(k / m)
+  zeta: c / (2 * m * wn)
+  wd: wn * sqrt(1 - zeta^2)
+model: {dimension: lateral, rotary_inertia: false}
+materials: [{name: massless, E: E, nu: 0.3, rho: 7850e-12}]
+sections: [{name: shaft, shape: circle, D: D}]
+segments: [{length: L, section: shaft, elements: 8}]
+points: [{name: disk, at: L / 2}]
+supports:
+  - {name: left, at: start, fix: [uy, uz]}
+  - {name: right, at: end, fix: [uy, uz]}
+masses: [{name: disk, at: disk, m: m}]
+bearings: [{name: damper, at: disk, cxx: c, cyy: c}]
+analyses:
+  - {type: rotor, name: spin, speed_rpm: 1000, modes: 2}
+  - {type: campbell, name: campbell, modes: 2, from_rpm: 0, to_rpm: 4000, steps: 16}
+  - {type: unbalance, name: unbalance, from_rpm: 100, to_rpm: 4000, steps: 39,
+     unbalance: {at: disk, me: me}, response: [disk]}
+checks:
+  - {name: damped frequency, quantity: frequency 1, reference: wd / (2 * pi), tolerance: 1e-9}
+  - {name: log decrement, quantity: log_decrement 1,
+     reference: 2 * pi * zeta / sqrt(1 - zeta^2), tolerance: 1e-9}
+  - {name: critical speed, quantity: critical_speed 1, reference: wd * 30 / pi, tolerance: 1e-9}
+  - {name: orbit at 1234.5 rpm, quantity: unbalance_amplitude disk at 1234.5,
+     reference: me * (1234.5 * pi / 30)^2 / sqrt((k - m * (1234.5 * pi / 30)^2)^2 + (c * 1234.5 * pi / 30)^2),
+     tolerance: 1e-9}
+)";
+
+// Round-off bound of the checks: the 4e-13 shaft mass and the solve's round-off (the
+// dynamic stiffness is conditioned ~1e2 here) leave ~1e-12; 1e-9 is their margin.
+constexpr double kClosedForm = 1e-9;
+
+RunResult jeffcottRun() {
+  StudyRequest request;
+  request.deckPath = "jeffcott.yaml";
+  const Study s = solveStudyText(kJeffcottDeck, request);
+  REQUIRE(s.run);
+  return *s.run;
+}
+
+const AnalysisOutcome& analysis(const RunResult& run, const std::string& name) {
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.name == name) return a;
+  FAIL("no analysis " << name);
+  return run.analyses.front();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> readVtu(const fs::path& file) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+}  // namespace
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("Jeffcott rotor deck: frequency, decrement, critical speed and orbit as closed") {
+    const Jeffcott j;
+    const RunResult run = jeffcottRun();
+    REQUIRE(run.checks.size() == 4);
+    for (const Check& c : run.checks) {
+      CAPTURE(c.name);
+      CAPTURE(c.relError());
+      CHECK(c.pass());
+    }
+    // The same closed forms written in C++ (independent of the deck's expressions).
+    const RotorOutcome& spin = *analysis(run, "spin").rotor;
+    REQUIRE(spin.modes->modes.size() == 2);
+    CHECK(relError(spin.modes->modes[0].dampedFrequency, j.wd()) < kClosedForm);
+    CHECK(relError(spin.modes->modes[0].logDecrement, j.logDecrement()) < kClosedForm);
+    const RotorOutcome& campbell = *analysis(run, "campbell").rotor;
+    // Two lines (y and z) cross the 1x line at the same speed: the damped frequency is
+    // flat in speed, so the linear interpolation is exact.
+    REQUIRE(campbell.criticalSpeeds.size() == 2);
+    for (const CriticalSpeed& c : campbell.criticalSpeeds)
+      CHECK(relError(c.speed, j.wd()) < kClosedForm);
+    // Every speed of the sweep, and the checked 1234.5 rpm added to it.
+    const UnbalanceResult& u = *analysis(run, "unbalance").rotor->unbalance;
+    CHECK(u.speeds.size() == 41);
+    double worst = 0;
+    for (std::size_t s = 0; s < u.speeds.size(); ++s) {
+      const Orbit& o = u.orbits[0][s];
+      worst = std::max(worst, relError(o.major(), j.orbit(u.speeds[s])));
+      CHECK(std::abs(std::arg(o.uy) - j.phase(u.speeds[s])) < kClosedForm);
+      // Isotropic: a circular forward orbit.
+      CHECK(o.minor() == doctest::Approx(o.major()).epsilon(kClosedForm));
+    }
+    CHECK(worst < kClosedForm);
+    MESSAGE("Jeffcott deck: largest relative orbit error over the sweep " << worst);
+  }
+
+  TEST_CASE("Jeffcott rotor deck: results.json, CSV and VTK hold the solved numbers") {
+    const Jeffcott j;
+    const RunResult run = jeffcottRun();
+    const fs::path dir = scratchDir("rotor_outputs");
+    writeRunOutputs(run, dir);
+
+    // 1. results.json: critical speeds and the unbalance response against the closed form.
+    std::ifstream in(dir / "results.json");
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    const auto& analyses = doc.at("analyses");
+    REQUIRE(analyses.size() == 3);
+    CHECK(analyses[0].at("type") == "rotor");
+    CHECK(relError(analyses[0].at("frequencies_hz")[0].get<double>(), j.wd() / (2 * kPi)) <
+          kClosedForm);
+    const auto& critical = analyses[1].at("critical_speeds");
+    REQUIRE(critical.size() == 2);
+    CHECK(relError(critical[0].at("rpm").get<double>(), j.wd() * 30 / kPi) < kClosedForm);
+    const auto& response = analyses[2].at("response").at("disk");
+    const auto& rpm = analyses[2].at("speeds_rpm");
+    for (std::size_t s = 0; s < rpm.size(); ++s) {
+      const double W = rpm[s].get<double>() * kPi / 30;
+      CHECK(relError(response.at("amplitude_m")[s].get<double>(), j.orbit(W)) < kClosedForm);
+      CHECK(std::abs(response.at("uy_phase_deg")[s].get<double>() - j.phase(W) * 180 / kPi) <
+            kClosedForm * 180);
+    }
+
+    // 2. The tables: one Campbell row per speed, one critical speed per crossing line.
+    for (const char* f : {"campbell_campbell.csv", "campbell_critical_speeds.csv",
+                          "unbalance_unbalance.csv", "spin_modes.csv", "spin.pvd"})
+      CHECK(fs::exists(dir / f));
+    std::ifstream campbell(dir / "campbell_campbell.csv");
+    int rows = -1;  // the header
+    for (std::string line; std::getline(campbell, line);) ++rows;
+    CHECK(rows == 17);
+
+    // 3. Mode VTK: the complex shape as written equals the solved one (binary doubles: exact);
+    //    the orbit polylines reach the orbit's semi-major axis at the drawing scale, within
+    //    the sampling of 48 points per turn: major cos(pi/48) <= largest distance <= major.
+    const RotorMode& mode = analysis(run, "spin").rotor->modes->modes[0];
+    const auto grid = readVtu(dir / "spin_mode_01.vtu");
+    REQUIRE(grid->GetNumberOfPoints() == run.model->nodeCount());
+    const int disk = run.model->node("disk");
+    double re[3], im[3];
+    grid->GetPointData()->GetArray("shape_real")->GetTuple(disk, re);
+    grid->GetPointData()->GetArray("shape_imag")->GetTuple(disk, im);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(re[k] == mode.shape(disk, k).real());
+      CHECK(im[k] == mode.shape(disk, k).imag());
+    }
+    const auto orbits = readVtu(dir / "spin_orbits_mode_01.vtu");
+    constexpr int kRing = 48;  // line cells per orbit
+    REQUIRE(orbits->GetNumberOfCells() == kRing * run.model->nodeCount());
+    const double scale = 0.1 * j.L;  // a tenth of the model's extent per unit translation
+    for (int n = 0; n < run.model->nodeCount(); ++n) {
+      const Orbit o{mode.shape(n, 1), mode.shape(n, 2)};
+      double largest = 0;
+      for (int c = kRing * n; c < kRing * (n + 1); ++c) {
+        double x[3];
+        orbits->GetPoint(orbits->GetCell(c)->GetPointId(0), x);
+        largest =
+            std::max(largest, (Eigen::Vector3d(x[0], x[1], x[2]) - run.model->nodes()[n]).norm());
+      }
+      CAPTURE(n);
+      CHECK(largest <= scale * o.major() * (1 + 1e-12) + 1e-15);
+      CHECK(largest >= scale * o.major() * std::cos(kPi / 48) * (1 - 1e-12) - 1e-15);
+    }
+  }
+}
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("lateral deck: statics in both planes and modal at rest match the Jeffcott forms") {
+    // The Jeffcott deck without damper, statically loaded at the disk in y and z, and its
+    // modes at rest: deflection F / k in each plane (Hermite: exact), and the natural
+    // frequency sqrt(k / m) twice (one per plane).
+    const Jeffcott j;
+    std::string text = kJeffcottDeck;
+    text = text.substr(0, text.find("bearings:")) + R"(
+loads: [{type: point, at: disk, fy: -1000, fz: 500}]
+analyses:
+  - {type: static}
+  - {type: modal, modes: 2}
+  - {type: rotor, name: at-rest, speed_rpm: 0, modes: 2}
+)";
+    StudyRequest request;
+    request.deckPath = "jeffcott_lateral.yaml";
+    const Study s = solveStudyText(text, request);
+    REQUIRE(s.run);
+    const RunResult& run = *s.run;
+    const int disk = run.model->node("disk");
+    const StaticResult& st = *analysis(run, "static").statics;
+    CHECK(relError(st.displacement(disk, dofIndex(Dof::uy)), -1000 / j.k()) < kClosedForm);
+    CHECK(relError(st.displacement(disk, dofIndex(Dof::uz)), 500 / j.k()) < kClosedForm);
+    const ModalResult& modal = *analysis(run, "modal").modal;
+    REQUIRE(modal.modes.size() == 2);
+    for (const Mode& m : modal.modes)
+      CHECK(relError(std::sqrt(m.eigenvalue), j.wn()) < kClosedForm);
+    // The rotor analysis at rest, undamped, is the same eigenproblem by another solver.
+    for (const RotorMode& m : analysis(run, "at-rest").rotor->modes->modes)
+      CHECK(relError(m.dampedFrequency, j.wn()) < kClosedForm);
+  }
+}
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("a disk given by its geometry gets the thick ring's m, Jp, Jd") {
+    // Hollow cylinder, outer radius R, inner r, length w: m = rho pi (R^2 - r^2) w,
+    // Jp = m (R^2 + r^2) / 2, Jd = m (3 (R^2 + r^2) + w^2) / 12.
+    const double R = 0.15, r = 0.025, w = 0.04, rho = 7850;
+    std::string text = kJeffcottDeck;
+    text.replace(text.find("masses: [{name: disk, at: disk, m: m}]"),
+                 std::string("masses: [{name: disk, at: disk, m: m}]").size(),
+                 "masses: [{name: disk, at: disk, disk: {D: 0.3, bore: 0.05, width: 0.04, "
+                 "rho: 7850}}]");
+    StudyRequest request;
+    request.deckPath = "disk.yaml";
+    const Study s = solveStudyText(text.substr(0, text.find("analyses:")), request);
+    REQUIRE(s.deck.masses.size() == 1);
+    const DeckMass& m = s.deck.masses[0];
+    const double mass = rho * kPi * (R * R - r * r) * w;
+    CHECK(relError(m.m, mass) < 1e-15);
+    CHECK(relError(m.Jp, mass * (R * R + r * r) / 2) < 1e-15);
+    CHECK(relError(m.Jd, mass * (3 * (R * R + r * r) + w * w) / 12) < 1e-15);
+  }
+}
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("a tabulated bearing: deck axes map to global y, z and rpm to rad/s") {
+    // Bearing axes x_b, y_b are global y, z (elements/Bearing.hpp): kxx -> kyy, kxy -> kyz,
+    // kyx -> kzy, kyy -> kzz. Halfway between rows 0 and 3000 rpm (157.08 rad/s) the
+    // coefficients are the rows' mean (linear interpolation).
+    std::string text = kJeffcottDeck;
+    text.replace(text.find("bearings: [{name: damper, at: disk, cxx: c, cyy: c}]"),
+                 std::string("bearings: [{name: damper, at: disk, cxx: c, cyy: c}]").size(),
+                 R"(bearings:
+  - name: film
+    at: disk
+    table:
+      - {speed_rpm: 0, kxx: 1e6, kyy: 2e6, kxy: 3e5, kyx: -4e5, cxx: 10, cyy: 20, cxy: 1, cyx: -2}
+      - {speed_rpm: 3000, kxx: 3e6, kyy: 6e6, kxy: 5e5, kyx: -8e5, cxx: 30, cyy: 60, cxy: 3, cyx: -6}
+)");
+    StudyRequest request;
+    request.deckPath = "table.yaml";
+    const Study s = solveStudyText(text.substr(0, text.find("analyses:")), request);
+    REQUIRE(s.run);
+    const Bearing* bearing = nullptr;
+    for (const auto& e : s.run->model->elements())
+      if (auto* b = dynamic_cast<const Bearing*>(e.get())) bearing = b;
+    REQUIRE(bearing);
+    const BearingCoefficients k = bearing->coefficientsAt(1500 * kPi / 30);
+    // Means of the rows; exact up to the round-off of the interpolation weight.
+    const double tol = 1e-14;
+    CHECK(relError(k.kyy, 2e6) < tol);
+    CHECK(relError(k.kzz, 4e6) < tol);
+    CHECK(relError(k.kyz, 4e5) < tol);
+    CHECK(relError(k.kzy, -6e5) < tol);
+    CHECK(relError(k.cyy, 20) < tol);
+    CHECK(relError(k.czz, 40) < tol);
+    CHECK(relError(k.cyz, 2) < tol);
+    CHECK(relError(k.czy, -4) < tol);
+  }
+}
