@@ -178,7 +178,7 @@ void writeFrameVtu(const std::filesystem::path& file, const Model& model, const 
   auto time = doubleArray("time", 1, 1);
   time->SetValue(0, frame.time);
   grid->GetFieldData()->AddArray(time);
-  write(grid, file);
+  writeVtu(grid, file);
 }
 
 void writePvd(const std::filesystem::path& file, const std::vector<PvdEntry>& entries) {
