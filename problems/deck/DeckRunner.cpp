@@ -80,7 +80,8 @@ RunResult runDeck(const Deck& deck) {
 }
 
 SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
-                     const Deck& base, const SweepProgress& progress) {
+                     const Deck& base, const SweepProgress& progress,
+                     const DeckAdjustment& adjust) {
   SweepResult sweep;
   sweep.parameter = base.sweep->parameter;
   sweep.values = base.sweep->values;
@@ -91,7 +92,9 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
     withValue.push_back({sweep.parameter, value, sweep.parameter + "=" + formatNumber(value)});
     const std::string at = "with " + sweep.parameter + " = " + formatNumber(value) + " (sweep): ";
     try {
-      sweep.runs.push_back(runDeck(readDeck(source, withValue)));
+      Deck deck = readDeck(source, withValue);
+      if (adjust) adjust(deck);
+      sweep.runs.push_back(runDeck(deck));
     } catch (const DeckError& e) {
       throw DeckError(e.file(), e.place(), at + e.message());
     } catch (const DeckSolveError& e) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "problems/deck/ExpressionFunctions.hpp"
 #include "problems/deck/Suggest.hpp"
 
 namespace beamrotor {
@@ -28,6 +29,7 @@ std::string shortNumber(double v) {
 
 ExpressionEvaluator::ExpressionEvaluator() : parser_(std::make_unique<mu::Parser>()) {
   parser_->DefineConst("pi", std::numbers::pi);
+  defineDeckFunctions(*parser_);
 }
 
 ExpressionEvaluator::~ExpressionEvaluator() = default;

@@ -12,8 +12,8 @@ namespace beamrotor {
 namespace {
 
 constexpr const char* kGrammar =
-    "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max' "
-    "or 'moment max'";
+    "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max', "
+    "'shear max' or 'moment max'";
 
 /// Stations per element for the maxima: resultants vary at most quadratically along an
 /// element (uniform distributed load), so 8 intervals place a station within L/16 of any
@@ -58,8 +58,11 @@ Quantity parseQuantity(const std::string& text) {
     q.mode = std::stoi(n);
     return q;
   }
-  if ((head == "stress" || head == "moment") && words.size() == 2 && words[1] == "max") {
-    q.kind = head == "stress" ? Quantity::Kind::maxStress : Quantity::Kind::maxMoment;
+  if ((head == "stress" || head == "shear" || head == "moment") && words.size() == 2 &&
+      words[1] == "max") {
+    q.kind = head == "stress"  ? Quantity::Kind::maxStress
+             : head == "shear" ? Quantity::Kind::maxShear
+                               : Quantity::Kind::maxMoment;
     return q;
   }
   throw std::invalid_argument("cannot read '" + text + "'; " + kGrammar);
@@ -85,9 +88,9 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
     default: {
       double largest = 0;
       for (const BeamStation& s : recoverBeamFields(model, r.displacement, kStationsPerElement)) {
-        const double v = q.kind == Quantity::Kind::maxStress
-                             ? s.stress
-                             : std::hypot(s.forces.My, s.forces.Mz);
+        const double v = q.kind == Quantity::Kind::maxStress  ? s.stress
+                         : q.kind == Quantity::Kind::maxShear ? s.shear
+                                                              : std::hypot(s.forces.My, s.forces.Mz);
         largest = std::max(largest, v);
       }
       return largest;

@@ -3,6 +3,7 @@
 //   displacement POINT DOF    displacement (m) or rotation (rad) of a named point
 //   frequency N               natural frequency of mode N (Hz), N from 1
 //   stress max                largest |normal stress| on the outer fibres of any beam (Pa)
+//   shear max                 largest transverse shear stress in any beam (Pa), fem/ShearStress
 //   moment max                largest bending moment magnitude in any beam (N m)
 #pragma once
 
@@ -16,7 +17,7 @@
 namespace beamrotor {
 
 struct Quantity {
-  enum class Kind { reaction, displacement, frequency, maxStress, maxMoment };
+  enum class Kind { reaction, displacement, frequency, maxStress, maxShear, maxMoment };
   Kind kind = Kind::reaction;
   std::string target;  ///< support (reaction) or point (displacement) name
   Dof dof = Dof::uy;

@@ -4,6 +4,8 @@
 // temporary directory that replaces the output directory only when complete.
 #include "problems/output/Output.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 
@@ -68,13 +70,27 @@ PreparedRun prepare(const RunResult& run) {
   return prepared;
 }
 
-/// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts.
-std::string caption(const RunResult& run, const std::string& analysis) {
-  std::string text = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis;
-  for (std::size_t i = 0; i < run.parameters.size(); ++i)
-    text += (i ? ", " : " (") + run.parameters[i].first + " = " +
-            exactDecimal(run.parameters[i].second) + (i + 1 == run.parameters.size() ? ")" : "");
-  return text;
+/// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts; `what` follows
+/// the analysis' name, and the parameter `left` out is not listed. A long caption puts the
+/// parameters on lines of their own ('\n'), so that the chart's width holds them.
+std::string caption(const RunResult& run, const std::string& analysis,
+                    const std::string& what = "", const std::string& left = "") {
+  constexpr std::size_t kLine = 90;  // characters across a 900-pixel chart at its title font
+  const std::string head = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis + what;
+  std::vector<std::string> items;
+  for (const auto& [name, value] : run.parameters)
+    if (name != left) items.push_back(name + " = " + exactDecimal(value));
+  std::string oneLine = head;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    oneLine += (i ? ", " : " (") + items[i] + (i + 1 == items.size() ? ")" : "");
+  if (oneLine.size() <= kLine) return oneLine;
+  std::string text = head, line;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string item = items[i] + (i + 1 == items.size() ? "" : ",");
+    if (!line.empty() && line.size() + 1 + item.size() > kLine) text += "\n" + line, line.clear();
+    line += (line.empty() ? "" : " ") + item;
+  }
+  return line.empty() ? text : text + "\n" + line;
 }
 
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
@@ -87,8 +103,9 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
       p.fields->write(dir / fieldsCsv(p.stem));
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);
       if (charts && !p.stations.empty())
-        drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem), *p.fields,
-                                      fieldsCsv(p.stem), namedPointMarkers(model)));
+        drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
+                                      {{&*p.fields, fieldsCsv(p.stem), ""}},
+                                      namedPointMarkers(model)));
     }
     if (a.modal) {
       p.modes->write(dir / modesCsv(p.stem));
@@ -106,6 +123,49 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
                                        *p.shapes, shapesCsv(p.stem)));
     }
   }
+}
+
+/// A sweep over this many values or fewer draws its static diagrams overlaid, one line per
+/// value (more would be unreadable; the sweep charts show long sweeps).
+constexpr std::size_t kOverlaidValues = 5;
+
+/// The named points at the same place in every run (a point that moves with the swept
+/// parameter would need one marker per value).
+std::vector<ChartMarker> commonMarkers(const SweepResult& sweep) {
+  std::vector<ChartMarker> common;
+  for (const ChartMarker& m : namedPointMarkers(*sweep.runs.front().model)) {
+    bool everywhere = true;
+    for (const RunResult& run : sweep.runs) {
+      const auto markers = namedPointMarkers(*run.model);
+      everywhere = everywhere && std::any_of(markers.begin(), markers.end(), [&](const auto& o) {
+                     return o.name == m.name && std::abs(o.x - m.x) <= 1e-12 * (1 + std::abs(m.x));
+                   });
+    }
+    if (everywhere) common.push_back(m);
+  }
+  return common;
+}
+
+/// The diagrams of static analysis `k` of every value of a short sweep on one chart, reading
+/// each value's fields CSV in its sub-directory.
+void drawOverlaidDiagrams(const fs::path& dir, const SweepResult& sweep,
+                          const std::vector<PreparedRun>& prepared,
+                          const std::vector<std::string>& directories, std::size_t k) {
+  const PreparedAnalysis& firstAnalysis = prepared.front().analyses[k];
+  if (firstAnalysis.stations.empty()) return;
+  std::vector<FieldSeries> series;
+  std::string values;
+  for (std::size_t i = 0; i < prepared.size(); ++i) {
+    const PreparedAnalysis& p = prepared[i].analyses[k];
+    const std::string value = exactDecimal(sweep.values[i]);
+    series.push_back({&*p.fields, directories[i] + "/" + fieldsCsv(p.stem),
+                      sweep.parameter + " = " + value});
+    values += (i ? ", " : "") + value;
+  }
+  const std::string what = " at " + sweep.parameter + " = " + values;
+  drawChart(dir, staticDiagrams(caption(sweep.runs.front(), firstAnalysis.outcome->name, what,
+                                        sweep.parameter),
+                                diagramsChart(firstAnalysis.stem), series, commonMarkers(sweep)));
 }
 
 }  // namespace
@@ -146,13 +206,15 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
     writeJson(sweepDoc, temporary / kSweepJson);
     table.write(temporary / kSweepCsv);
     const RunResult& first = sweep.runs.front();
-    for (const AnalysisOutcome& a : first.analyses) {
+    for (std::size_t k = 0; k < first.analyses.size(); ++k) {
+      const AnalysisOutcome& a = first.analyses[k];
       const std::string stem = fileStem(a.name);
       if (a.statics) {
         std::vector<PvdEntry> series;
         for (std::size_t i = 0; i < sweep.values.size(); ++i)
           series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
         writePvd(temporary / collectionPvd(stem), series);
+        if (sweep.values.size() <= kOverlaidValues) drawOverlaidDiagrams(temporary, sweep, prepared, directories, k);
       }
       std::vector<SweepQuantity> own;
       for (const SweepQuantity& q : quantities)

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "problems/deck/Study.hpp"
+
 namespace beamrotor::test {
 
 /// problems/ in the source tree.
@@ -28,5 +30,22 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments);
 
 /// A fresh empty directory under the system temp directory, unique to this process.
 std::filesystem::path scratchDir(const std::string& name);
+
+/// A request to solve the shipped deck problems/<name> with `--set` overrides, its own sweep
+/// switched off.
+StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets = {});
+
+/// The runs of a solved study: its one run, or one per sweep value.
+std::vector<const RunResult*> runsOf(const Study& study);
+
+/// CHECKs that every check of every run passes (naming the failing ones); returns how many
+/// ran.
+int checkAllPass(const Study& study);
+
+/// Reaction (N, N m) at `support` in the first static analysis of run.
+double staticReaction(const RunResult& run, const std::string& support, Dof dof);
+
+/// The value of a parameter or derived value of a read deck; throws when it has none.
+double deckValue(const Deck& deck, const std::string& name);
 
 }  // namespace beamrotor::test

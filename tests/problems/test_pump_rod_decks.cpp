@@ -1,0 +1,98 @@
+// The pump rod decks of variants B (pinned crosshead end) and C (rotation stop at the piston):
+// their closed-form checks hold for any eta and w0, variant C's across the switch at w*, and
+// a short sweep draws the three stroke positions on one chart with the worst section reported.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "problems/output/CsvTable.hpp"
+#include "tests/Helpers.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+const ContactState& pistonStop(const RunResult& run) {
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.statics && a.statics->contacts.size() == 1) return a.statics->contacts[0];
+  throw std::logic_error("no contact in the run");
+}
+
+}  // namespace
+
+TEST_SUITE("pump rod decks") {
+  TEST_CASE("variant B deck: closed form to 1e-9 for any eta and w0") {
+    for (const char* eta : {"0", "0.13", "0.4"})
+      for (const char* w0 : {"0.001", "0.0037"}) {
+        CAPTURE(eta);
+        CAPTURE(w0);
+        const Study s = solveStudy(shippedDeckRequest(
+            "pump_rod_hinged.yaml", {std::string("eta=") + eta, std::string("w0=") + w0}));
+        // Reactions, the left rotation and both stress peaks: 7 checks per run.
+        CHECK(checkAllPass(s) == 7);
+      }
+  }
+
+  TEST_CASE("variant C deck: bilinear closed form across w*, through the deck") {
+    const Study base = solveStudy(shippedDeckRequest("pump_rod_limited_rotation.yaml"));
+    const double wStar = deckValue(base.deck, "wstar");
+    const double thetaP = deckValue(base.deck, "theta_p");
+    MESSAGE("theta_p = " << thetaP << " rad, w* = " << wStar * 1e3 << " mm");
+    // The values the hand-built model of test_pump_rod_contact.cpp finds, to their 4 digits.
+    CHECK(std::abs(thetaP - 1.670e-3) <= 0.0005e-3);
+    CHECK(std::abs(wStar - 2.157e-3) <= 0.0005e-3);
+    // A w0 sweep across w*, with the switch itself and values a hair either side.
+    std::string values;
+    for (int k = 1; k <= 10; ++k) values += exactDecimal(0.0005 * k) + ",";
+    for (double f : {1 - 1e-7, 1.0, 1 + 1e-7}) values += exactDecimal(wStar * f) + ",";
+    values.pop_back();
+    StudyRequest r = shippedDeckRequest("pump_rod_limited_rotation.yaml");
+    r.noSweep = false;
+    r.sweep = "w0=" + values;
+    const Study s = solveStudy(r);
+    REQUIRE(s.sweep);
+    // Five closed-form checks everywhere, the 4-digit check at every value (eta = 0.4).
+    CHECK(checkAllPass(s) == 6 * int(s.sweep->values.size()));
+    for (std::size_t i = 0; i < s.sweep->values.size(); ++i) {
+      const double w0 = s.sweep->values[i];
+      CAPTURE(w0);
+      // The stop closes only past w* (round-off decides at w* itself).
+      if (std::abs(w0 - wStar) > 1e-9 * wStar) CHECK(pistonStop(s.sweep->runs[i]).active == (w0 > wStar));
+    }
+  }
+
+  TEST_CASE("a three-value sweep overlays the diagrams and reports the worst section") {
+    const auto out = scratchDir("pump-rod-hinged") / "out";
+    const ProcessResult r =
+        runBeamrotor({"solve", "problems/pump_rod_hinged.yaml", "--out", out.string()});
+    CAPTURE(r.err);
+    REQUIRE(r.exitCode == 0);
+    // One chart script reads the three values' field tables, one line each.
+    std::ifstream gp(out / "bending_diagrams.gp");
+    const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
+    for (const char* v : {"value_000/bending_fields.csv", "value_001/bending_fields.csv",
+                          "value_002/bending_fields.csv", "eta = 0.2", "shear stress"})
+      CHECK(script.find(v) != std::string::npos);
+    // The worst normal stress over the sweep is the largest of the runs' closed-form peaks
+    // (their `largest stress closed form` references), and lies on the thin rod.
+    std::ifstream in(out / "sweep.json");
+    const auto doc = nlohmann::json::parse(in);
+    double closedForm = 0, at = -1;
+    for (const auto& run : doc["runs"])
+      for (const auto& c : run["checks"])
+        if (c["name"] == "largest stress closed form" && c["reference"].get<double>() > closedForm)
+          closedForm = c["reference"].get<double>(), at = run["value"].get<double>();
+    const auto& worst = doc["worst"]["bending"]["max_stress"];
+    CHECK(relError(worst["value"].get<double>(), closedForm) < 1e-9);
+    CHECK(worst["at"]["eta"].get<double>() == at);
+    CHECK(worst["section"] == "rod");
+    CHECK(doc["worst"]["bending"].contains("max_shear"));
+    // And the summary names it.
+    CHECK(r.out.find("largest normal stress") != std::string::npos);
+    CHECK(r.out.find("(rod) at eta = ") != std::string::npos);
+    std::filesystem::remove_all(out.parent_path());
+  }
+}
