@@ -249,13 +249,25 @@ int printChecks(std::ostream& out, const Deck& deck, const std::vector<const Run
           << "ref " << padded(formatValue(c.reference), 14) << "rel.err "
           << padded(scientific(c.relError()), 10) << "tol " << scientific(c.tolerance) << "\n";
     }
-    for (const std::string& name : runs[i]->skippedChecks) {
-      ++skipped;
-      const DeckCheck* d = findCheck(deck, name);
-      out << "  n/a   " << prefix << padded(name, nameWidth)
-          << (d ? "(when: " + d->condition + " is false here)" : "") << "\n";
-    }
+    if (runs.size() == 1)
+      for (const std::string& name : runs[i]->skippedChecks) {
+        ++skipped;
+        const DeckCheck* d = findCheck(deck, name);
+        out << "  n/a   " << prefix << padded(name, nameWidth)
+            << (d ? "(when: " + d->condition + " is false here)" : "") << "\n";
+      }
   }
+  // Over several runs (a sweep) one line per check that did not apply everywhere.
+  if (runs.size() > 1)
+    for (const DeckCheck& c : deck.checks) {
+      int count = 0;
+      for (const RunResult* run : runs)
+        count += int(std::count(run->skippedChecks.begin(), run->skippedChecks.end(), c.name));
+      if (count == 0) continue;
+      skipped += count;
+      out << "  n/a   " << padded(c.name, nameWidth) << "at " << count << " of " << runs.size()
+          << " values (when: " << c.condition << " is false there)\n";
+    }
   out << "  " << passed << " passed, " << failed << " failed, " << skipped << " not applicable\n";
   return failed;
 }
