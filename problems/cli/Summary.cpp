@@ -125,6 +125,16 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
         << "\n";
 }
 
+/// "reported: wstar = 0.00215712, theta_p = 0.00167015" (the deck's `report:`).
+void printReported(std::ostream& out, const std::vector<std::pair<std::string, double>>& values) {
+  const char* separator = "reported: ";
+  for (const auto& [name, value] : values) {
+    out << separator << name << " = " << formatValue(value);
+    separator = ", ";
+  }
+  if (!values.empty()) out << "\n";
+}
+
 void printModal(std::ostream& out, const AnalysisOutcome& a) {
   const ModalResult& m = *a.modal;
   out << "modal analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
@@ -157,6 +167,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   const SystemSize size = sizeOf(run);
   out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
       << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
+  printReported(out, run.reported);
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) printStatic(out, deck, run, a);
     if (a.modal) printModal(out, a);
@@ -176,6 +187,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   constexpr int kFrequencies = 3;
   constexpr std::size_t kColumn = 14;
   std::vector<std::string> headers{sweep.parameter};
+  for (const auto& [name, value] : first.reported) headers.push_back(name);
   auto staticOf = [](const RunResult& r) -> const StaticResult* {
     for (const auto& a : r.analyses) if (a.statics) return &*a.statics;
     return nullptr;
@@ -198,6 +210,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   for (std::size_t k = 0; k < sweep.runs.size(); ++k) {
     const RunResult& run = sweep.runs[k];
     out << "  " << padded(formatValue(sweep.values[k]), kColumn);
+    for (const auto& [name, value] : run.reported) out << padded(formatValue(value), kColumn);
     if (const StaticResult* s = staticOf(run))
       for (const ReactionComponent& c : s->reactions) out << padded(formatValue(c.value), kColumn);
     if (const ModalResult* m = modalOf(run))

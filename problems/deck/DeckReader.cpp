@@ -68,7 +68,7 @@ namespace {
 const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived", "model",  "materials", "sections", "segments", "points",
     "supports", "springs",  "masses",  "hinges", "loads",     "analyses", "checks",   "sweep",
-    "contacts"};
+    "contacts", "report"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -168,6 +168,7 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   reader::readLine(c);
   reader::readAttachments(c);
   reader::readStudy(c, overrides);
+  reader::readReport(c);
   return deck;
 }
 

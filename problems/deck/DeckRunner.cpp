@@ -52,6 +52,7 @@ RunResult runDeck(const Deck& deck) {
   run.deckPath = deck.path;
   run.deckName = deck.stem;
   run.parameters = deck.parameters;
+  run.reported = deck.reported;
   run.dimension = deck.dimension;
 
   // 1. The model.

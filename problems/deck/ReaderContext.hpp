@@ -44,6 +44,9 @@ void readAttachments(Context& c);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 
+/// `report:`: names of parameters and derived values into deck.reported.
+void readReport(Context& c);
+
 /// The beam formulation a field names (euler-bernoulli, timoshenko, ...).
 BeamTheory formulationOf(const Field& f);
 

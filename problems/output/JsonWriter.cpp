@@ -229,6 +229,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>
   doc["checks"] = checksJson(run.checks);
   doc["skipped_checks"] = run.skippedChecks;
   doc["parameters"] = parametersJson(run.parameters);
+  if (!run.reported.empty()) doc["reported"] = parametersJson(run.reported);
   doc["seconds"] = run.seconds;
   doc["beamrotor_version"] = BEAMROTOR_VERSION;
   return doc;
@@ -247,6 +248,7 @@ Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,
     runs.push_back({{"value", sweep.values[i]},
                     {"directory", directories[i]},
                     {"parameters", runDocs[i].at("parameters")},
+                    {"reported", runDocs[i].value("reported", Json::object())},
                     {"analyses", analyses},
                     {"checks", runDocs[i].at("checks")}});
   }

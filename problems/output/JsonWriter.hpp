@@ -11,9 +11,10 @@
 //              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio
 //              {ux ..}, energy_share {ux .. rz}}], time_s, files} ],
 //   checks [{name, quantity, computed, reference, rel_error, tolerance, pass}],
-//   skipped_checks [name], parameters {name: value}, seconds, beamrotor_version.
+//   skipped_checks [name], parameters {name: value}, [reported {name: value}], seconds,
+//   beamrotor_version.
 // Only the components a model carries appear (a planar model has no fz, my, uz ...).
-// sweep.json: parameter, values, model, runs [{value, directory, parameters, analyses (type,
+// sweep.json: parameter, values, model, runs [{value, directory, parameters, reported, analyses (type,
 // name, reactions, max_stress, max_shear | frequencies_hz), checks}], worst {analysis:
 // {max_stress, max_shear}}: each the largest over the runs, with at {parameter: value}.
 #pragma once

@@ -79,6 +79,13 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
     if (a.contains("reactions")) addStatic(a, out);
     if (a.contains("frequencies_hz")) addModal(a, out);
   }
+  const Json reported = runDocs.at(0).value("reported", Json::object());
+  for (const auto& [name, value] : reported.items())
+    out.push_back({SweepGroup::reported, "", name, {name, ""}, [name](const Json& doc) {
+                     return required(required(doc, "reported", "reported values"), name,
+                                     "reported value " + name)
+                         .get<double>();
+                   }});
   std::vector<std::string> checks;
   for (const Json& doc : runDocs)
     for (const Json& c : doc.at("checks")) {

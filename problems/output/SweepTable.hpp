@@ -14,7 +14,7 @@
 
 namespace beamrotor {
 
-enum class SweepGroup { reaction, stress, frequency, check, checkPass };
+enum class SweepGroup { reaction, stress, frequency, reported, check, checkPass };
 
 /// One quantity followed over the sweep.
 struct SweepQuantity {
@@ -30,8 +30,8 @@ struct SweepQuantity {
   bool optional = false;
 };
 
-/// The analyses' quantities of the first run, in document order, then every check any run
-/// declares (in order of first appearance).
+/// The analyses' quantities of the first run, in document order, then its reported values
+/// (`report:`), then every check any run declares (in order of first appearance).
 std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs);
 
 /// sweep.csv: the parameter's column, then one column per quantity; one row per value.

@@ -5,6 +5,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "problems/deck/DeckError.hpp"
@@ -81,6 +83,31 @@ TEST_SUITE("pump rod crank cycle") {
       CHECK(s.sweep->runs[i].checks.size() == expected);
       for (const Check& c : s.sweep->runs[i].checks) CHECK(c.pass());
     }
+  }
+
+  TEST_CASE("solve: eta reported per crank angle in sweep.json and sweep.csv, worst at 180 deg") {
+    const auto out = scratchDir("crank-cycle") / "out";
+    const ProcessResult r =
+        runBeamrotor({"solve", "problems/pump_rod_crank_cycle.yaml", "--out", out.string()});
+    CAPTURE(r.err);
+    REQUIRE(r.exitCode == 0);
+    std::ifstream in(out / "sweep.json");
+    const auto doc = nlohmann::json::parse(in);
+    REQUIRE(doc["runs"].size() == 25);
+    for (const auto& run : doc["runs"]) {
+      const double phi = run["value"].get<double>() * kPi / 180;
+      CHECK(std::abs(run["reported"]["eta"].get<double>() - sliderPosition(0.2, 1.2, phi)) < 1e-14);
+    }
+    // The rod is worst at the outer dead centre (eta = 0.4), on the thin rod at the step.
+    const auto& worst = doc["worst"]["bending"]["max_stress"];
+    CHECK(worst["at"]["phi"].get<double>() == 180);
+    CHECK(worst["section"] == "rod");
+    CHECK(std::abs(worst["x"].get<double>() - 0.575) < 1e-12);
+    std::ifstream csv(out / "sweep.csv");
+    std::string header;
+    std::getline(csv, header);
+    CHECK(header.find(",eta,") != std::string::npos);
+    std::filesystem::remove_all(out.parent_path());
   }
 
   TEST_CASE("crank_position outside its domain names the function") {

@@ -40,6 +40,10 @@ TEST_SUITE("pump rod decks") {
     const Study base = solveStudy(shippedDeckRequest("pump_rod_limited_rotation.yaml"));
     const double wStar = deckValue(base.deck, "wstar");
     const double thetaP = deckValue(base.deck, "theta_p");
+    // Both are the deck's `report:`, shown with the results.
+    REQUIRE(base.run->reported.size() == 2);
+    CHECK(base.run->reported[0] == std::pair<std::string, double>{"theta_p", thetaP});
+    CHECK(base.run->reported[1] == std::pair<std::string, double>{"wstar", wStar});
     MESSAGE("theta_p = " << thetaP << " rad, w* = " << wStar * 1e3 << " mm");
     // The values the hand-built model of test_pump_rod_contact.cpp finds, to their 4 digits.
     CHECK(std::abs(thetaP - 1.670e-3) <= 0.0005e-3);
