@@ -60,6 +60,12 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments) {
   return r;
 }
 
+std::pair<ProcessResult, std::filesystem::path> solveShippedDeckToScratch(
+    const std::string& deck, const std::string& scratch) {
+  const auto out = scratchDir(scratch) / "out";
+  return {runBeamrotor({"solve", "problems/" + deck, "--out", out.string()}), out};
+}
+
 StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets) {
   StudyRequest r;
   r.deckPath = (problemsDir() / name).string();

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "problems/deck/Study.hpp"
@@ -30,6 +31,11 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments);
 
 /// A fresh empty directory under the system temp directory, unique to this process.
 std::filesystem::path scratchDir(const std::string& name);
+
+/// `beamrotor solve problems/<deck> --out DIR` into a fresh scratch directory `scratch`: the
+/// process's result, and DIR (remove its parent when done).
+std::pair<ProcessResult, std::filesystem::path> solveShippedDeckToScratch(
+    const std::string& deck, const std::string& scratch);
 
 /// A request to solve the shipped deck problems/<name> with `--set` overrides, its own sweep
 /// switched off.

@@ -86,9 +86,7 @@ TEST_SUITE("pump rod crank cycle") {
   }
 
   TEST_CASE("solve: eta reported per crank angle in sweep.json and sweep.csv, worst at 180 deg") {
-    const auto out = scratchDir("crank-cycle") / "out";
-    const ProcessResult r =
-        runBeamrotor({"solve", "problems/pump_rod_crank_cycle.yaml", "--out", out.string()});
+    const auto [r, out] = solveShippedDeckToScratch("pump_rod_crank_cycle.yaml", "crank-cycle");
     CAPTURE(r.err);
     REQUIRE(r.exitCode == 0);
     std::ifstream in(out / "sweep.json");

@@ -69,9 +69,7 @@ TEST_SUITE("pump rod decks") {
   }
 
   TEST_CASE("a three-value sweep overlays the diagrams and reports the worst section") {
-    const auto out = scratchDir("pump-rod-hinged") / "out";
-    const ProcessResult r =
-        runBeamrotor({"solve", "problems/pump_rod_hinged.yaml", "--out", out.string()});
+    const auto [r, out] = solveShippedDeckToScratch("pump_rod_hinged.yaml", "pump-rod-hinged");
     CAPTURE(r.err);
     REQUIRE(r.exitCode == 0);
     // One chart script reads the three values' field tables, one line each.
