@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 
-#include "problems/output/LineSampling.hpp"
+#include "problems/cli/StressSummary.hpp"
 
 namespace beamrotor::cli {
 
@@ -53,36 +52,6 @@ std::vector<const DeckPoint*> reportedPoints(const Deck& deck) {
   return out;
 }
 
-/// The deck's segment holding station x of a beam with section `section` (the section tells
-/// the two sides of a step apart); the section's name if none matches.
-std::string segmentAt(const Deck& deck, double x, const std::string& section) {
-  double start = 0;
-  for (std::size_t i = 0; i < deck.segments.size(); ++i) {
-    const DeckSegment& s = deck.segments[i];
-    const double end = start + s.length, slack = 1e-9 * (1 + end);
-    if (x >= start - slack && x <= end + slack && s.sectionName == section)
-      return s.name.empty() ? "segment " + std::to_string(i + 1) : s.name;
-    start = end;
-  }
-  return section;
-}
-
-/// Largest normal and shear stress of a static solution, each with its place:
-/// "12.3 MPa at x = 0.575 m (rod)".
-struct StressPeaks {
-  std::optional<StaticStation> normal, shear;
-};
-StressPeaks peaksOf(const Model& model, const StaticResult& r) {
-  const std::vector<StaticStation> stations = sampleStatics(model, r.displacement);
-  return {largestStress(stations), largestShear(stations)};
-}
-std::string describePeak(const Deck& deck, const Model& model, const StaticStation& s,
-                         double value) {
-  const auto& line = static_cast<const LineElement&>(*model.elements()[s.place.element]);
-  return formatValue(value * 1e-6) + " MPa at x = " + formatValue(s.place.x) + " m (" +
-         segmentAt(deck, s.place.x, line.section().name) + ")";
-}
-
 void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                  const AnalysisOutcome& a) {
   const StaticResult& r = *a.statics;
@@ -118,11 +87,7 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                        : "open, gap " + formatValue(k.gap) + " " + motionUnit(k.dof))
           << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
   }
-  const StressPeaks peaks = peaksOf(*run.model, r);
-  if (peaks.normal)
-    out << "  largest normal stress " << describePeak(deck, *run.model, *peaks.normal, peaks.normal->stress)
-        << "\n  largest shear stress  " << describePeak(deck, *run.model, *peaks.shear, peaks.shear->shear)
-        << "\n";
+  printStressPeaks(out, deck, *run.model, r);
 }
 
 /// "reported: wstar = 0.00215712, theta_p = 0.00167015" (the deck's `report:`).
@@ -220,26 +185,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   }
   out << "  (reactions in N and N m on the structure)\n";
 
-  // The worst section over the sweep, of the first static analysis.
-  struct Worst {
-    std::size_t run = 0;
-    StaticStation station;
-    double value = -1;
-  } normal, shear;
-  for (std::size_t k = 0; k < sweep.runs.size(); ++k)
-    if (const StaticResult* s = staticOf(sweep.runs[k])) {
-      const StressPeaks peaks = peaksOf(*sweep.runs[k].model, *s);
-      if (peaks.normal && peaks.normal->stress > normal.value)
-        normal = {k, *peaks.normal, peaks.normal->stress};
-      if (peaks.shear && peaks.shear->shear > shear.value) shear = {k, *peaks.shear, peaks.shear->shear};
-    }
-  const auto print = [&](const char* what, const Worst& w) {
-    if (w.value < 0) return;
-    out << "  " << what << describePeak(deck, *sweep.runs[w.run].model, w.station, w.value)
-        << " at " << sweep.parameter << " = " << formatValue(sweep.values[w.run]) << "\n";
-  };
-  print("largest normal stress ", normal);
-  print("largest shear stress  ", shear);
+  printSweepStressPeaks(out, deck, sweep);
 }
 
 int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,

@@ -4,17 +4,17 @@
 // temporary directory that replaces the output directory only when complete.
 #include "problems/output/Output.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <optional>
 #include <stdexcept>
 
+#include "problems/deck/Suggest.hpp"
 #include "problems/output/AtomicDirectory.hpp"
 #include "problems/output/Charts.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
+#include "problems/output/OverlaidDiagrams.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/VtkWriter.hpp"
@@ -125,49 +125,6 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
   }
 }
 
-/// A sweep over this many values or fewer draws its static diagrams overlaid, one line per
-/// value (more would be unreadable; the sweep charts show long sweeps).
-constexpr std::size_t kOverlaidValues = 5;
-
-/// The named points at the same place in every run (a point that moves with the swept
-/// parameter would need one marker per value).
-std::vector<ChartMarker> commonMarkers(const SweepResult& sweep) {
-  std::vector<ChartMarker> common;
-  for (const ChartMarker& m : namedPointMarkers(*sweep.runs.front().model)) {
-    bool everywhere = true;
-    for (const RunResult& run : sweep.runs) {
-      const auto markers = namedPointMarkers(*run.model);
-      everywhere = everywhere && std::any_of(markers.begin(), markers.end(), [&](const auto& o) {
-                     return o.name == m.name && std::abs(o.x - m.x) <= 1e-12 * (1 + std::abs(m.x));
-                   });
-    }
-    if (everywhere) common.push_back(m);
-  }
-  return common;
-}
-
-/// The diagrams of static analysis `k` of every value of a short sweep on one chart, reading
-/// each value's fields CSV in its sub-directory.
-void drawOverlaidDiagrams(const fs::path& dir, const SweepResult& sweep,
-                          const std::vector<PreparedRun>& prepared,
-                          const std::vector<std::string>& directories, std::size_t k) {
-  const PreparedAnalysis& firstAnalysis = prepared.front().analyses[k];
-  if (firstAnalysis.stations.empty()) return;
-  std::vector<FieldSeries> series;
-  std::string values;
-  for (std::size_t i = 0; i < prepared.size(); ++i) {
-    const PreparedAnalysis& p = prepared[i].analyses[k];
-    const std::string value = exactDecimal(sweep.values[i]);
-    series.push_back({&*p.fields, directories[i] + "/" + fieldsCsv(p.stem),
-                      sweep.parameter + " = " + value});
-    values += (i ? ", " : "") + value;
-  }
-  const std::string what = " at " + sweep.parameter + " = " + values;
-  drawChart(dir, staticDiagrams(caption(sweep.runs.front(), firstAnalysis.outcome->name, what,
-                                        sweep.parameter),
-                                diagramsChart(firstAnalysis.stem), series, commonMarkers(sweep)));
-}
-
 }  // namespace
 
 void writeRunOutputs(const RunResult& run, const fs::path& dir) {
@@ -214,7 +171,18 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
         for (std::size_t i = 0; i < sweep.values.size(); ++i)
           series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
         writePvd(temporary / collectionPvd(stem), series);
-        if (sweep.values.size() <= kOverlaidValues) drawOverlaidDiagrams(temporary, sweep, prepared, directories, k);
+        std::vector<const CsvTable*> fields;
+        std::vector<std::string> files, values;
+        for (std::size_t i = 0; i < prepared.size(); ++i) {
+          fields.push_back(&*prepared[i].analyses[k].fields);
+          files.push_back(directories[i] + "/" + fieldsCsv(stem));
+          values.push_back(exactDecimal(sweep.values[i]));
+        }
+        if (!prepared.front().analyses[k].stations.empty())
+          drawOverlaidDiagrams(temporary,
+                               caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
+                                       sweep.parameter),
+                               diagramsChart(stem), sweep, fields, files);
       }
       std::vector<SweepQuantity> own;
       for (const SweepQuantity& q : quantities)
