@@ -177,6 +177,12 @@ TEST_SUITE("output") {
       vtkDataArray* stress = grid->GetCellData()->GetArray("stress");
       REQUIRE(stress);
       CHECK(relError(stress->GetTuple1(0), c.P * c.L * c.section->outerY / c.section->Iz) < kExact);
+      // Shear force P throughout: the elasticity solution's (3 + 2 nu) / (2 (1 + nu)) P / A.
+      vtkDataArray* shear = grid->GetCellData()->GetArray("shear");
+      REQUIRE(shear);
+      const double nu = c.section->material.nu;
+      CHECK(relError(shear->GetTuple1(0), (3 + 2 * nu) / (2 * (1 + nu)) * c.P / c.section->A) <
+            kExact);
     }
     SUBCASE("meshio") {
       if (!meshioInstalled()) {
