@@ -112,6 +112,7 @@ TEST_SUITE("pump rod timoshenko") {
     const ProcessResult tim =
         runBeamrotor({"check", "problems/pump_rod.yaml", "--formulation", "timoshenko"});
     CHECK(tim.exitCode == 3);
+    CHECK(tim.out.find("formulation: timoshenko for every segment") != std::string::npos);
     CHECK(tim.out.find("FAIL  left moment closed form") != std::string::npos);
     const ProcessResult bad =
         runBeamrotor({"solve", "problems/pump_rod.yaml", "--formulation", "timoshenk"});
