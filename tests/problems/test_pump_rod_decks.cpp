@@ -3,7 +3,9 @@
 // a short sweep draws the three stroke positions on one chart with the worst section reported.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "problems/output/CsvTable.hpp"
@@ -66,6 +68,43 @@ TEST_SUITE("pump rod decks") {
       // The stop closes only past w* (round-off decides at w* itself).
       if (std::abs(w0 - wStar) > 1e-9 * wStar) CHECK(pistonStop(s.sweep->runs[i]).active == (w0 > wStar));
     }
+  }
+
+  TEST_CASE("variant A: worst section on the thin side of the step, stress jumping there") {
+    const auto [r, out] = solveShippedDeckToScratch("pump_rod.yaml", "pump-rod-a");
+    CAPTURE(r.err);
+    REQUIRE(r.exitCode == 0);
+    std::ifstream in(out / "results.json");
+    const auto doc = nlohmann::json::parse(in);
+    const auto& bending = doc["analyses"][0];
+    // M(x) = M0 + V0 x on [0, psi] from the left reactions (moment -M0, force V0); outer-fibre
+    // stress 32 |M| / (pi D^3) with the local diameter (SCENES.md section 1).
+    const double a = 0.575, D1 = 0.120, D2 = 0.070, pi = std::numbers::pi;
+    const double M0 = -bending["reactions"]["left"]["mz"].get<double>();
+    const double V0 = bending["reactions"]["left"]["fy"].get<double>();
+    const double Ma = M0 + V0 * a;
+    const auto& top = bending["max_stress"];
+    CHECK(relError(top["value"].get<double>(), 32 * std::abs(Ma) / (pi * D2 * D2 * D2)) < 1e-9);
+    CHECK(std::abs(top["x"].get<double>() - a) < 1e-12);
+    CHECK(top["section"] == "rod");
+    // The jump at the step is the diameter ratio cubed, (D1 / D2)^3 = 5.04, read off the CSV
+    // the charts draw: the last station of the extension and the first of the rod.
+    std::ifstream csv(out / "bending_fields.csv");
+    std::string line;
+    std::vector<double> atStep;
+    while (std::getline(csv, line)) {
+      if (line.rfind("0.575,", 0) != 0) continue;
+      const auto comma = [&](int n) {
+        std::size_t p = 0;
+        for (int k = 0; k < n; ++k) p = line.find(',', p) + 1;
+        return std::stod(line.substr(p));
+      };
+      atStep.push_back(comma(13));  // column 14: stress [Pa]
+    }
+    REQUIRE(atStep.size() == 2);
+    CHECK(relError(atStep[1] / atStep[0], std::pow(D1 / D2, 3)) < 1e-9);
+    CHECK(r.out.find("largest normal stress 49.9381 MPa at x = 0.575 m (rod)") != std::string::npos);
+    std::filesystem::remove_all(out.parent_path());
   }
 
   TEST_CASE("a three-value sweep overlays the diagrams and reports the worst section") {
