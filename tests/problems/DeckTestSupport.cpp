@@ -60,10 +60,18 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments) {
   return r;
 }
 
-std::pair<ProcessResult, std::filesystem::path> solveShippedDeckToScratch(
-    const std::string& deck, const std::string& scratch) {
+nlohmann::json SolvedDeck::json(const std::string& file) const {
+  return nlohmann::json::parse(text(file));
+}
+
+std::string SolvedDeck::text(const std::string& file) const { return slurp(dir / file); }
+
+SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string& scratch) {
   const auto out = scratchDir(scratch) / "out";
-  return {runBeamrotor({"solve", "problems/" + deck, "--out", out.string()}), out};
+  SolvedDeck solved{runBeamrotor({"solve", "problems/" + deck, "--out", out.string()}), out};
+  CAPTURE(solved.process.err);
+  REQUIRE(solved.process.exitCode == 0);
+  return solved;
 }
 
 StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets) {

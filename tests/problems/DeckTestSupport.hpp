@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "problems/deck/Study.hpp"
 
 namespace beamrotor::test {
@@ -32,10 +34,19 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments);
 /// A fresh empty directory under the system temp directory, unique to this process.
 std::filesystem::path scratchDir(const std::string& name);
 
-/// `beamrotor solve problems/<deck> --out DIR` into a fresh scratch directory `scratch`: the
-/// process's result, and DIR (remove its parent when done).
-std::pair<ProcessResult, std::filesystem::path> solveShippedDeckToScratch(
-    const std::string& deck, const std::string& scratch);
+/// A shipped deck solved by the executable into a scratch directory.
+struct SolvedDeck {
+  ProcessResult process;
+  std::filesystem::path dir;  ///< the results; remove dir.parent_path() when done
+  /// A JSON file of the results, parsed.
+  nlohmann::json json(const std::string& file) const;
+  /// A file of the results as text.
+  std::string text(const std::string& file) const;
+};
+
+/// `beamrotor solve problems/<deck> --out DIR` into a fresh scratch directory `scratch`;
+/// REQUIREs that it succeeds (showing its stderr otherwise).
+SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string& scratch);
 
 /// A request to solve the shipped deck problems/<name> with `--set` overrides, its own sweep
 /// switched off.

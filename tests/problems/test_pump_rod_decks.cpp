@@ -4,9 +4,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "problems/output/CsvTable.hpp"
 #include "tests/Helpers.hpp"
@@ -71,11 +70,8 @@ TEST_SUITE("pump rod decks") {
   }
 
   TEST_CASE("variant A: worst section on the thin side of the step, stress jumping there") {
-    const auto [r, out] = solveShippedDeckToScratch("pump_rod.yaml", "pump-rod-a");
-    CAPTURE(r.err);
-    REQUIRE(r.exitCode == 0);
-    std::ifstream in(out / "results.json");
-    const auto doc = nlohmann::json::parse(in);
+    const SolvedDeck solved = solveShippedDeckToScratch("pump_rod.yaml", "pump-rod-a");
+    const auto doc = solved.json("results.json");
     const auto& bending = doc["analyses"][0];
     // M(x) = M0 + V0 x on [0, psi] from the left reactions (moment -M0, force V0); outer-fibre
     // stress 32 |M| / (pi D^3) with the local diameter (SCENES.md section 1).
@@ -89,7 +85,7 @@ TEST_SUITE("pump rod decks") {
     CHECK(top["section"] == "rod");
     // The jump at the step is the diameter ratio cubed, (D1 / D2)^3 = 5.04, read off the CSV
     // the charts draw: the last station of the extension and the first of the rod.
-    std::ifstream csv(out / "bending_fields.csv");
+    std::istringstream csv(solved.text("bending_fields.csv"));
     std::string line;
     std::vector<double> atStep;
     while (std::getline(csv, line)) {
@@ -103,24 +99,21 @@ TEST_SUITE("pump rod decks") {
     }
     REQUIRE(atStep.size() == 2);
     CHECK(relError(atStep[1] / atStep[0], std::pow(D1 / D2, 3)) < 1e-9);
-    CHECK(r.out.find("largest normal stress 49.9381 MPa at x = 0.575 m (rod)") != std::string::npos);
-    std::filesystem::remove_all(out.parent_path());
+    CHECK(solved.process.out.find("largest normal stress 49.9381 MPa at x = 0.575 m (rod)") !=
+          std::string::npos);
+    std::filesystem::remove_all(solved.dir.parent_path());
   }
 
   TEST_CASE("a three-value sweep overlays the diagrams and reports the worst section") {
-    const auto [r, out] = solveShippedDeckToScratch("pump_rod_hinged.yaml", "pump-rod-hinged");
-    CAPTURE(r.err);
-    REQUIRE(r.exitCode == 0);
+    const SolvedDeck solved = solveShippedDeckToScratch("pump_rod_hinged.yaml", "pump-rod-hinged");
     // One chart script reads the three values' field tables, one line each.
-    std::ifstream gp(out / "bending_diagrams.gp");
-    const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
+    const std::string script = solved.text("bending_diagrams.gp");
     for (const char* v : {"value_000/bending_fields.csv", "value_001/bending_fields.csv",
                           "value_002/bending_fields.csv", "eta = 0.2", "shear stress"})
       CHECK(script.find(v) != std::string::npos);
     // The worst normal stress over the sweep is the largest of the runs' closed-form peaks
     // (their `largest stress closed form` references), and lies on the thin rod.
-    std::ifstream in(out / "sweep.json");
-    const auto doc = nlohmann::json::parse(in);
+    const auto doc = solved.json("sweep.json");
     double closedForm = 0, at = -1;
     for (const auto& run : doc["runs"])
       for (const auto& c : run["checks"])
@@ -132,8 +125,8 @@ TEST_SUITE("pump rod decks") {
     CHECK(worst["section"] == "rod");
     CHECK(doc["worst"]["bending"].contains("max_shear"));
     // And the summary names it.
-    CHECK(r.out.find("largest normal stress") != std::string::npos);
-    CHECK(r.out.find("(rod) at eta = ") != std::string::npos);
-    std::filesystem::remove_all(out.parent_path());
+    CHECK(solved.process.out.find("largest normal stress") != std::string::npos);
+    CHECK(solved.process.out.find("(rod) at eta = ") != std::string::npos);
+    std::filesystem::remove_all(solved.dir.parent_path());
   }
 }
