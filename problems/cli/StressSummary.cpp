@@ -44,8 +44,8 @@ std::pair<Peak, Peak> peaksOf(const Model& model, const StaticResult& r, std::si
 void printPeak(std::ostream& out, const char* what, const Deck& deck, const Model& model,
                const Peak& p) {
   const auto& line = static_cast<const LineElement&>(*model.elements()[p.station.place.element]);
-  out << "  largest " << what << " " << formatValue(p.value * 1e-6) << " MPa at x = "
-      << formatValue(p.station.place.x) << " m ("
+  out << "  largest " << what << " " << formatValue(p.value * 1e-6)
+      << " MPa at x = " << formatValue(p.station.place.x) << " m ("
       << segmentAt(deck, p.station.place.x, line.section().name) << ")";
 }
 
@@ -75,7 +75,8 @@ void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResul
       if (n.value > normal.value) normal = n;
       if (t.value > shear.value) shear = t;
     }
-  for (const auto& [what, peak] : {std::pair{"normal stress", &normal}, std::pair{"shear stress ", &shear}}) {
+  for (const auto& [what, peak] :
+       {std::pair{"normal stress", &normal}, std::pair{"shear stress ", &shear}}) {
     if (peak->value < 0) continue;
     printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak);
     out << " at " << sweep.parameter << " = " << formatValue(sweep.values[peak->run]) << "\n";

@@ -88,9 +88,10 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
     default: {
       double largest = 0;
       for (const BeamStation& s : recoverBeamFields(model, r.displacement, kStationsPerElement)) {
-        const double v = q.kind == Quantity::Kind::maxStress  ? s.stress
-                         : q.kind == Quantity::Kind::maxShear ? s.shear
-                                                              : std::hypot(s.forces.My, s.forces.Mz);
+        const double v = q.kind == Quantity::Kind::maxStress ? s.stress
+                         : q.kind == Quantity::Kind::maxShear
+                             ? s.shear
+                             : std::hypot(s.forces.My, s.forces.Mz);
         largest = std::max(largest, v);
       }
       return largest;

@@ -91,8 +91,8 @@ std::string panelLayout(int rows, int columns, const std::string& caption, int w
   return "  set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns) +
          " title " + captionText(caption) + " font ',13' margins " + fractionX(90) + "," +
          fractionX(width - double(rightMargin)) + "," + fractionY(60) + "," +
-         fractionY(height - 60.0 - 20.0 * double(lines)) + " spacing " + fractionX(columns > 1 ? 100 : 0) + "," +
-         fractionY(rows > 1 ? 75 : 0) + "\n";
+         fractionY(height - 60.0 - 20.0 * double(lines)) + " spacing " +
+         fractionX(columns > 1 ? 100 : 0) + "," + fractionY(rows > 1 ? 75 : 0) + "\n";
 }
 
 std::string frequencyText(double hz) {
@@ -115,7 +115,8 @@ std::vector<ChartMarker> namedPointMarkers(const Model& model) {
   for (const ChartMarker& m : markers) {
     const bool automatic = m.name == "start" || m.name == "end";
     const bool covered = std::any_of(markers.begin(), markers.end(), [&](const ChartMarker& o) {
-      return o.name != "start" && o.name != "end" && std::abs(o.x - m.x) <= 1e-12 * (1 + std::abs(m.x));
+      return o.name != "start" && o.name != "end" &&
+             std::abs(o.x - m.x) <= 1e-12 * (1 + std::abs(m.x));
     });
     if (!automatic || !covered) shown.push_back(m);
   }
@@ -156,10 +157,9 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
       for (const Drawn* q : {&panel.main, other ? &*panel.other : nullptr}) {
         if (!q) continue;
         const std::string title = series.size() == 1 ? q->title
-                                  : other ? gnuplotText(f.title + ", " + q->column)
-                                          : gnuplotText(f.title);
-        curves.push_back(
-            {f.csvFile, f.fields->column("x"), f.fields->column(q->column), title});
+                                  : other            ? gnuplotText(f.title + ", " + q->column)
+                                                     : gnuplotText(f.title);
+        curves.push_back({f.csvFile, f.fields->column("x"), f.fields->column(q->column), title});
       }
     return curves;
   };
@@ -182,9 +182,8 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
          << plotCommand(curvesOf(panels[p]), panels[p].scale, panels[p].filled);
   }
   body << "  unset multiplot\n";
-  return {chartName,
-          "Deflection, rotation, bending moment, normal and shear stress along the line", width,
-          height, body.str()};
+  return {chartName, "Deflection, rotation, bending moment, normal and shear stress along the line",
+          width, height, body.str()};
 }
 
 ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,

@@ -14,8 +14,8 @@
 //   skipped_checks [name], parameters {name: value}, [reported {name: value}], seconds,
 //   beamrotor_version.
 // Only the components a model carries appear (a planar model has no fz, my, uz ...).
-// sweep.json: parameter, values, model, runs [{value, directory, parameters, reported, analyses (type,
-// name, reactions, max_stress, max_shear | frequencies_hz), checks}], worst {analysis:
+// sweep.json: parameter, values, model, runs [{value, directory, parameters, reported, analyses
+// (type, name, reactions, max_stress, max_shear | frequencies_hz), checks}], worst {analysis:
 // {max_stress, max_shear}}: each the largest over the runs, with at {parameter: value}.
 #pragma once
 

@@ -100,9 +100,8 @@ std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& d
     if (recovered[i].element != p.element)
       throw std::logic_error("recoverBeamFields sampled different elements");
     const auto& line = static_cast<const LineElement&>(*model.elements()[p.element]);
-    stations.push_back(
-        {p, displacementAt(line, displacement, p.s), recovered[i].forces, recovered[i].stress,
-         recovered[i].shear});
+    stations.push_back({p, displacementAt(line, displacement, p.s), recovered[i].forces,
+                        recovered[i].stress, recovered[i].shear});
   }
   return stations;
 }

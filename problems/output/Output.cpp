@@ -73,8 +73,8 @@ PreparedRun prepare(const RunResult& run) {
 /// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts; `what` follows
 /// the analysis' name, and the parameter `left` out is not listed. A long caption puts the
 /// parameters on lines of their own ('\n'), so that the chart's width holds them.
-std::string caption(const RunResult& run, const std::string& analysis,
-                    const std::string& what = "", const std::string& left = "") {
+std::string caption(const RunResult& run, const std::string& analysis, const std::string& what = "",
+                    const std::string& left = "") {
   constexpr std::size_t kLine = 90;  // characters across a 900-pixel chart at its title font
   const std::string head = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis + what;
   std::vector<std::string> items;
@@ -103,9 +103,9 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
       p.fields->write(dir / fieldsCsv(p.stem));
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);
       if (charts && !p.stations.empty())
-        drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
-                                      {{&*p.fields, fieldsCsv(p.stem), ""}},
-                                      namedPointMarkers(model)));
+        drawChart(dir,
+                  staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
+                                 {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
     }
     if (a.modal) {
       p.modes->write(dir / modesCsv(p.stem));
@@ -179,10 +179,11 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
           values.push_back(exactDecimal(sweep.values[i]));
         }
         if (!prepared.front().analyses[k].stations.empty())
-          drawOverlaidDiagrams(temporary,
-                               caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
-                                       sweep.parameter),
-                               diagramsChart(stem), sweep, fields, files);
+          drawOverlaidDiagrams(
+              temporary,
+              caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
+                      sweep.parameter),
+              diagramsChart(stem), sweep, fields, files);
       }
       std::vector<SweepQuantity> own;
       for (const SweepQuantity& q : quantities)

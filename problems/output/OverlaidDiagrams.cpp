@@ -37,7 +37,8 @@ void drawOverlaidDiagrams(const std::filesystem::path& dir, const std::string& c
     return;
   std::vector<FieldSeries> series;
   for (std::size_t i = 0; i < fields.size(); ++i)
-    series.push_back({fields[i], csvFiles[i], sweep.parameter + " = " + exactDecimal(sweep.values[i])});
+    series.push_back(
+        {fields[i], csvFiles[i], sweep.parameter + " = " + exactDecimal(sweep.values[i])});
   drawChart(dir, staticDiagrams(caption, chartName, series, commonMarkers(sweep)));
 }
 

@@ -43,16 +43,18 @@ void addStatic(const Json& a, std::vector<SweepQuantity>& out) {
              return required(required(reactions, support, what), component, what).get<double>();
            }});
     }
-  for (const auto& [key, label] : {std::pair<std::string, std::string>{"max_stress", "largest stress"},
-                                   {"max_shear", "largest shear stress"}})
+  for (const auto& [key, label] :
+       {std::pair<std::string, std::string>{"max_stress", "largest stress"},
+        {"max_shear", "largest shear stress"}})
     if (a.contains(key))
-      out.push_back({SweepGroup::stress,
-                     name,
-                     label,
-                     {name + "." + key, "Pa"},
-                     [name, key, label](const Json& doc) {
-                       return required(analysisNamed(doc, name), key, label).at("value").get<double>();
-                     }});
+      out.push_back(
+          {SweepGroup::stress,
+           name,
+           label,
+           {name + "." + key, "Pa"},
+           [name, key, label](const Json& doc) {
+             return required(analysisNamed(doc, name), key, label).at("value").get<double>();
+           }});
 }
 
 void addModal(const Json& a, std::vector<SweepQuantity>& out) {

@@ -140,13 +140,14 @@ void writeStaticVtu(const std::filesystem::path& file, const Model& model,
 
   // Largest normal and shear stress over each element's stations.
   auto* element = grid->GetCellData()->GetArray("element");
-  for (const auto& [name, value] : {std::pair{"stress", &StaticStation::stress},
-                                    std::pair{"shear", &StaticStation::shear}}) {
+  for (const auto& [name, value] :
+       {std::pair{"stress", &StaticStation::stress}, std::pair{"shear", &StaticStation::shear}}) {
     std::vector<double> largest(model.elements().size(), 0.0);
     for (const StaticStation& st : stations)
       largest.at(st.place.element) = std::max(largest[st.place.element], st.*value);
     auto array = doubleArray(name, 1, cells);
-    for (vtkIdType c = 0; c < cells; ++c) array->SetValue(c, largest.at(int(element->GetTuple1(c))));
+    for (vtkIdType c = 0; c < cells; ++c)
+      array->SetValue(c, largest.at(int(element->GetTuple1(c))));
     grid->GetCellData()->AddArray(array);
   }
   write(grid, file);

@@ -44,8 +44,7 @@ TEST_SUITE("shear stress") {
       const Section s = Section::tube("pipe", kSteel, D, t);
       const double Q = 2.0 / 3 * (R * R * R - r * r * r);  // first moment of the upper half
       const double I = kPi / 4 * (std::pow(R, 4) - std::pow(r, 4)), b = 2 * (R - r);
-      CHECK(relError(maxShearStress(s, {0, V, 0, 0, 0, 0}), std::abs(V) * Q / (I * b)) <
-            kRoundOff);
+      CHECK(relError(maxShearStress(s, {0, V, 0, 0, 0, 0}), std::abs(V) * Q / (I * b)) < kRoundOff);
       // A thin wall tends to twice the mean shear stress.
       const Section thin = Section::tube("thin", kSteel, 1.0, 1e-5);
       CHECK(shearStressFactor(thin) == doctest::Approx(2.0).epsilon(1e-4));
@@ -54,8 +53,7 @@ TEST_SUITE("shear stress") {
       const double b = 0.02, h = 0.05;
       const Section s = Section::rectangle("bar", kSteel, b, h);
       const double Q = b * h * h / 8, I = b * h * h * h / 12;
-      CHECK(relError(maxShearStress(s, {0, V, 0, 0, 0, 0}), std::abs(V) * Q / (I * b)) <
-            kRoundOff);
+      CHECK(relError(maxShearStress(s, {0, V, 0, 0, 0, 0}), std::abs(V) * Q / (I * b)) < kRoundOff);
     }
     SUBCASE("general section: the mean shear stress V / A") {
       const Section s = Section::general("any", kSteel, 1e-3, 2e-6, 2e-6, 4e-6, 0.85, 0.85, 0.05);

@@ -64,7 +64,9 @@ nlohmann::json SolvedDeck::json(const std::string& file) const {
   return nlohmann::json::parse(text(file));
 }
 
-std::string SolvedDeck::text(const std::string& file) const { return slurp(dir / file); }
+std::string SolvedDeck::text(const std::string& file) const {
+  return slurp(dir / file);
+}
 
 SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string& scratch) {
   const auto out = scratchDir(scratch) / "out";

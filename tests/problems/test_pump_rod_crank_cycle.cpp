@@ -47,18 +47,22 @@ TEST_SUITE("pump rod crank cycle") {
   }
 
   TEST_CASE("at the dead centres the reactions are pump_rod.yaml's at eta = 0 and 0.4") {
-    for (const auto& [phi, eta] : {std::pair{"0", "0"}, std::pair{"180", "0.4"}, std::pair{"360", "0"}}) {
+    for (const auto& [phi, eta] :
+         {std::pair{"0", "0"}, std::pair{"180", "0.4"}, std::pair{"360", "0"}}) {
       CAPTURE(phi);
-      const RunResult crank = *solveStudy(shippedDeckRequest("pump_rod_crank_cycle.yaml",
-                                                              {std::string("phi=") + phi}))
-                                   .run;
+      const RunResult crank =
+          *solveStudy(shippedDeckRequest("pump_rod_crank_cycle.yaml", {std::string("phi=") + phi}))
+               .run;
       const RunResult rod =
           *solveStudy(shippedDeckRequest("pump_rod.yaml", {std::string("eta=") + eta})).run;
       // The same model up to the middle support's position, off by at most a rounding of
       // eta (sin pi is 1.2e-16, not 0): round-off.
-      for (const auto& [support, dof] : std::vector<std::pair<std::string, Dof>>{
-               {"left", Dof::uy}, {"left", Dof::rz}, {"middle", Dof::uy}, {"right", Dof::uy},
-               {"right", Dof::rz}}) {
+      for (const auto& [support, dof] :
+           std::vector<std::pair<std::string, Dof>>{{"left", Dof::uy},
+                                                    {"left", Dof::rz},
+                                                    {"middle", Dof::uy},
+                                                    {"right", Dof::uy},
+                                                    {"right", Dof::rz}}) {
         CAPTURE(support);
         CHECK(relError(staticReaction(crank, support, dof), staticReaction(rod, support, dof)) <
               1e-9);

@@ -65,7 +65,8 @@ TEST_SUITE("pump rod decks") {
       const double w0 = s.sweep->values[i];
       CAPTURE(w0);
       // The stop closes only past w* (round-off decides at w* itself).
-      if (std::abs(w0 - wStar) > 1e-9 * wStar) CHECK(pistonStop(s.sweep->runs[i]).active == (w0 > wStar));
+      if (std::abs(w0 - wStar) > 1e-9 * wStar)
+        CHECK(pistonStop(s.sweep->runs[i]).active == (w0 > wStar));
     }
   }
 

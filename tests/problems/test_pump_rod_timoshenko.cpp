@@ -36,7 +36,9 @@ Reactions closedForm(double eta, double w0, bool shear) {
   const double kGA2 = shear ? kappa * G * pi * D2 * D2 / 4 : INFINITY;
   // Bending influence integrals B_k(x) = int_0^x (x - s) f_k(s) / EI ds, A_k(l) = int f_k / EI
   // for f = 1, s, <s - psi>, over the step at a < psi.
-  const auto B1 = [&](double x) { return (x * a - a * a / 2) / EI1 + (x - a) * (x - a) / (2 * EI2); };
+  const auto B1 = [&](double x) {
+    return (x * a - a * a / 2) / EI1 + (x - a) * (x - a) / (2 * EI2);
+  };
   const auto B2 = [&](double x) {
     return (x * a * a / 2 - a * a * a / 3) / EI1 +
            (x * (x * x - a * a) / 2 - (x * x * x - a * a * a) / 3) / EI2;
@@ -46,8 +48,8 @@ Reactions closedForm(double eta, double w0, bool shear) {
   const double A3l = (l - psi) * (l - psi) / (2 * EI2);
   const auto S0 = [&](double x) { return a / kGA1 + (x - a) / kGA2; };
   Eigen::Matrix3d K;
-  K << B1(psi), B2(psi) - S0(psi), 0,                     //
-      B1(l), B2(l) - S0(l), B3l - (l - psi) / kGA2,      //
+  K << B1(psi), B2(psi) - S0(psi), 0,                //
+      B1(l), B2(l) - S0(l), B3l - (l - psi) / kGA2,  //
       A1l, A2l, A3l;
   const Eigen::Vector3d x = K.lu().solve(Eigen::Vector3d(w0, w0, 0));
   const double M0 = x[0], V0 = x[1], R = x[2];
@@ -104,8 +106,8 @@ TEST_SUITE("pump rod timoshenko") {
   }
 
   TEST_CASE("the option on the command line: applied to any deck; a bad theory is exit 2") {
-    const ProcessResult ok = runBeamrotor(
-        {"check", "problems/pump_rod_hinged.yaml", "--no-sweep", "--formulation", "euler-bernoulli"});
+    const ProcessResult ok = runBeamrotor({"check", "problems/pump_rod_hinged.yaml", "--no-sweep",
+                                           "--formulation", "euler-bernoulli"});
     CHECK(ok.exitCode == 0);
     // pump_rod.yaml's closed forms (and the paper's figures) are Euler-Bernoulli: with shear
     // they fail, and `check` says so (exit 3).

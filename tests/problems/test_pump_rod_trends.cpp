@@ -22,8 +22,8 @@ const std::vector<std::pair<std::string, Dof>> kReactionsA{{"left", Dof::uy},
                                                            {"right", Dof::rz}};
 
 const RunResult solved(const std::string& deck, double eta, double w0 = 0.001) {
-  return *solveStudy(shippedDeckRequest(deck, {"eta=" + std::to_string(eta),
-                                               "w0=" + std::to_string(w0)}))
+  return *solveStudy(
+              shippedDeckRequest(deck, {"eta=" + std::to_string(eta), "w0=" + std::to_string(w0)}))
               .run;
 }
 
@@ -87,9 +87,8 @@ TEST_SUITE("pump rod trends") {
   TEST_CASE("the middle reaction grows 44 % (of the larger) or 79 % (of the smaller)") {
     const double p0 = staticReaction(solved("pump_rod.yaml", 0), "middle", Dof::uy);
     const double p4 = staticReaction(solved("pump_rod.yaml", 0.4), "middle", Dof::uy);
-    MESSAGE("P3 = " << p0 << " N at eta = 0, " << p4 << " N at eta = 0.4: +"
-                    << (p4 - p0) / p4 * 100 << " % of the larger, +" << (p4 - p0) / p0 * 100
-                    << " % of the smaller");
+    MESSAGE("P3 = " << p0 << " N at eta = 0, " << p4 << " N at eta = 0.4: +" << (p4 - p0) / p4 * 100
+                    << " % of the larger, +" << (p4 - p0) / p0 * 100 << " % of the smaller");
     // The paper's percentages, printed to whole per cent: half a per cent either way.
     CHECK(std::abs((p4 - p0) / p4 * 100 - 44) <= 0.5);
     CHECK(std::abs((p4 - p0) / p0 * 100 - 79) <= 0.5);
