@@ -70,6 +70,27 @@ TEST_SUITE("pump rod decks") {
     }
   }
 
+  TEST_CASE("variant C deck as shipped: w* falls along the stroke, the stop closes past it") {
+    StudyRequest r = shippedDeckRequest("pump_rod_limited_rotation.yaml");
+    r.noSweep = false;
+    const Study s = solveStudy(r);
+    REQUIRE(s.sweep);
+    REQUIRE(s.sweep->values == std::vector<double>{0, 0.2, 0.4});
+    double previous = INFINITY;
+    for (const RunResult& run : s.sweep->runs) {
+      const double w0 = 0.004, wStar = run.reported.at(1).second;
+      CAPTURE(wStar);
+      // The seal lies further from the piston as eta grows (c = 0.415 + eta): the piston end
+      // turns more per unit w0, so the stop closes earlier.
+      CHECK(wStar < previous);
+      CHECK(pistonStop(run).active == (w0 > wStar));
+      previous = wStar;
+    }
+    // At w0 = 4 mm: open at eta = 0 (w* = 5.35 mm), closed at 0.2 (3.19 mm) and 0.4.
+    CHECK_FALSE(pistonStop(s.sweep->runs[0]).active);
+    CHECK(pistonStop(s.sweep->runs[2]).active);
+  }
+
   TEST_CASE("variant A: worst section on the thin side of the step, stress jumping there") {
     const SolvedDeck solved = solveShippedDeckToScratch("pump_rod.yaml", "pump-rod-a");
     const auto doc = solved.json("results.json");
