@@ -15,6 +15,9 @@ Study solve(const DeckSource& source, const StudyRequest& request,
   const DeckAdjustment adjust = [&](Deck& deck) {
     if (!request.formulation.empty()) applyFormulationOption(request.formulation, deck);
   };
+  if (request.noSweep && !request.sweep.empty())
+    throw DeckError(source.path, DeckPlace{0, 0, "--no-sweep"},
+                    "contradicts --sweep " + request.sweep + "; give one of the two");
   Study study{readDeck(source, overrides), std::nullopt, std::nullopt};
   adjust(study.deck);
   if (!request.sweep.empty()) {

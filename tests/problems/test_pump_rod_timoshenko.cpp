@@ -105,7 +105,7 @@ TEST_SUITE("pump rod timoshenko") {
     }
   }
 
-  TEST_CASE("the option on the command line: applied to any deck; a bad theory is exit 2") {
+  TEST_CASE("the option on the command line: applied to any deck; bad or contradictory options exit 2") {
     const ProcessResult ok = runBeamrotor({"check", "problems/pump_rod_hinged.yaml", "--no-sweep",
                                            "--formulation", "euler-bernoulli"});
     CHECK(ok.exitCode == 0);
@@ -122,5 +122,10 @@ TEST_SUITE("pump rod timoshenko") {
     CHECK(bad.err.find("problems/pump_rod.yaml: --formulation timoshenk: expected") == 0);
     CHECK(bad.err.find("did you mean 'timoshenko'") != std::string::npos);
     CHECK(bad.err.find('\n') == bad.err.size() - 1);
+    // Contradictory options are refused rather than one silently winning.
+    const ProcessResult both = runBeamrotor(
+        {"check", "problems/pump_rod.yaml", "--no-sweep", "--sweep", "eta=0,0.4"});
+    CHECK(both.exitCode == 2);
+    CHECK(both.err.find("problems/pump_rod.yaml: --no-sweep: contradicts --sweep eta=0,0.4") == 0);
   }
 }
