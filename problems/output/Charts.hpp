@@ -46,8 +46,9 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
                             const Model& model, const ModalResult& modal, const CsvTable& shapes,
                             const std::string& csvFile, int count = 4);
 
-/// One panel per reaction component and the largest stress of a static analysis, or the
-/// frequencies of a modal one, against the swept parameter, from sweepTable in csvFile.
+/// One panel per reaction component and the largest normal and shear stress of a static
+/// analysis, or the frequencies of a modal one, against the swept parameter, from sweepTable
+/// in csvFile.
 /// `quantities` are those of this analysis.
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
                        const std::string& parameter, const std::vector<SweepQuantity>& quantities,

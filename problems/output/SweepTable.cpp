@@ -44,7 +44,7 @@ void addStatic(const Json& a, std::vector<SweepQuantity>& out) {
            }});
     }
   for (const auto& [key, label] :
-       {std::pair<std::string, std::string>{"max_stress", "largest stress"},
+       {std::pair<std::string, std::string>{"max_stress", "largest normal stress"},
         {"max_shear", "largest shear stress"}})
     if (a.contains(key))
       out.push_back(

@@ -1,7 +1,7 @@
-// What a sweep tracks across its values: each reaction component and the largest stress of
-// every static analysis, the frequencies of every modal analysis and each check. Read from
-// the runs' results.json documents, so sweep.csv, the sweep charts and the per-value
-// directories report the same numbers.
+// What a sweep tracks across its values: each reaction component and the largest normal and
+// shear stress of every static analysis, the frequencies of every modal analysis, the deck's
+// reported values and each check. Read from the runs' results.json documents, so sweep.csv,
+// the sweep charts and the per-value directories report the same numbers.
 #pragma once
 
 #include <functional>
