@@ -1,5 +1,7 @@
 #include "fem/Recovery.hpp"
 
+#include "fem/ShearStress.hpp"
+
 namespace beamrotor {
 
 std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField& displacement,
@@ -21,6 +23,7 @@ std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField&
       st.position = x1 + st.s * (x2 - x1);
       st.forces = beam->sectionForces(u, st.s);
       st.stress = maxNormalStress(beam->section(), st.forces);
+      st.shear = maxShearStress(beam->section(), st.forces);
       out.push_back(st);
     }
   }

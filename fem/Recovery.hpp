@@ -17,6 +17,7 @@ struct BeamStation {
   Eigen::Vector3d position;    ///< global coordinates (m)
   SectionForces forces;        ///< local frame, see SectionForces
   double stress = 0;           ///< largest |normal stress| on the outer fibres (Pa)
+  double shear = 0;            ///< largest transverse shear stress (Pa), see maxShearStress
 };
 
 /// Samples every line element at `perElement` + 1 evenly spaced stations (ends included),

@@ -46,6 +46,7 @@ struct RunResult {
   std::string deckPath;
   std::string deckName;                                   ///< file stem, e.g. "pump_rod"
   std::vector<std::pair<std::string, double>> parameters; ///< values used, deck order
+  std::vector<std::pair<std::string, double>> reported;   ///< the deck's `report:` values
   std::shared_ptr<const Model> model;
   std::string dimension;                                  ///< "planar" or "3d"
   std::vector<AnalysisOutcome> analyses;

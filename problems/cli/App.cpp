@@ -27,6 +27,10 @@ void addDeckOptions(CLI::App& sub, StudyRequest& request) {
                  "solve once per value of a parameter, replacing the deck's own sweep: "
                  "NAME=FROM:TO:STEPS (STEPS intervals) or NAME=V1,V2,...")
       ->type_name("SPEC");
+  sub.add_option("--formulation", request.formulation,
+                 "beam theory for every segment, replacing the deck's: timoshenko or "
+                 "euler-bernoulli")
+      ->type_name("THEORY");
   sub.add_flag("--no-sweep", request.noSweep,
                "solve the parameters' own values once even if the deck has a sweep");
 }

@@ -54,7 +54,7 @@ std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(const 
   return {runs, labels};
 }
 
-void printHeader(std::ostream& out, const Study& s) {
+void printHeader(std::ostream& out, const Study& s, const StudyRequest& request) {
   out << "beamrotor " << BEAMROTOR_VERSION << ": " << s.deck.path;
   if (!s.deck.title.empty()) out << " (" << s.deck.title << ")";
   out << "\n";
@@ -67,6 +67,8 @@ void printHeader(std::ostream& out, const Study& s) {
     separator = ", ";
   }
   out << "\n";
+  if (!request.formulation.empty())
+    out << "formulation: " << request.formulation << " for every segment (--formulation)\n";
 }
 
 }  // namespace
@@ -94,7 +96,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     const double writeSeconds = clock.lap();
 
     // 3. The summary.
-    printHeader(out, s);
+    printHeader(out, s, options.study);
     if (s.run)
       printRunResults(out, s.deck, *s.run);
     else
@@ -120,7 +122,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
 int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err) {
   return guarded(err, [&] {
     const Study s = solveWithProgress(request, err);
-    printHeader(out, s);
+    printHeader(out, s, request);
     const auto [runs, labels] = runsOf(s);
     const int failed = printChecks(out, s.deck, runs, labels);
     return int(failed > 0 ? kChecksFailed : kOk);

@@ -6,6 +6,7 @@
 
 #include "problems/cli/TransientSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
+#include "problems/cli/StressSummary.hpp"
 
 namespace beamrotor::cli {
 
@@ -86,6 +87,17 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                        : "open, gap " + formatValue(k.gap) + " " + motionUnit(k.dof))
           << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
   }
+  printStressPeaks(out, deck, *run.model, r);
+}
+
+/// "reported: wstar = 0.00215712, theta_p = 0.00167015" (the deck's `report:`).
+void printReported(std::ostream& out, const std::vector<std::pair<std::string, double>>& values) {
+  const char* separator = "reported: ";
+  for (const auto& [name, value] : values) {
+    out << separator << name << " = " << formatValue(value);
+    separator = ", ";
+  }
+  if (!values.empty()) out << "\n";
 }
 
 void printModal(std::ostream& out, const AnalysisOutcome& a) {
@@ -124,6 +136,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   const SystemSize size = sizeOf(run);
   out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
       << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
+  printReported(out, run.reported);
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) printStatic(out, deck, run, a);
     if (a.modal) printModal(out, a);
@@ -145,6 +158,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   constexpr int kFrequencies = 3;
   constexpr std::size_t kColumn = 14;
   std::vector<std::string> headers{sweep.parameter};
+  for (const auto& [name, value] : first.reported) headers.push_back(name);
   auto staticOf = [](const RunResult& r) -> const StaticResult* {
     for (const auto& a : r.analyses) if (a.statics) return &*a.statics;
     return nullptr;
@@ -168,6 +182,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   for (std::size_t k = 0; k < sweep.runs.size(); ++k) {
     const RunResult& run = sweep.runs[k];
     out << "  " << padded(formatValue(sweep.values[k]), kColumn);
+    for (const auto& [name, value] : run.reported) out << padded(formatValue(value), kColumn);
     if (const StaticResult* s = staticOf(run))
       for (const ReactionComponent& c : s->reactions) out << padded(formatValue(c.value), kColumn);
     if (const ModalResult* m = modalOf(run))
@@ -177,6 +192,8 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   }
   out << "  (reactions in N and N m on the structure)\n";
   printTransientSweep(out, sweep);
+
+  printSweepStressPeaks(out, deck, sweep);
 }
 
 int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,
@@ -199,13 +216,25 @@ int printChecks(std::ostream& out, const Deck& deck, const std::vector<const Run
           << "ref " << padded(formatValue(c.reference), 14) << "rel.err "
           << padded(scientific(c.relError()), 10) << "tol " << scientific(c.tolerance) << "\n";
     }
-    for (const std::string& name : runs[i]->skippedChecks) {
-      ++skipped;
-      const DeckCheck* d = findCheck(deck, name);
-      out << "  n/a   " << prefix << padded(name, nameWidth)
-          << (d ? "(when: " + d->condition + " is false here)" : "") << "\n";
-    }
+    if (runs.size() == 1)
+      for (const std::string& name : runs[i]->skippedChecks) {
+        ++skipped;
+        const DeckCheck* d = findCheck(deck, name);
+        out << "  n/a   " << prefix << padded(name, nameWidth)
+            << (d ? "(when: " + d->condition + " is false here)" : "") << "\n";
+      }
   }
+  // Over several runs (a sweep) one line per check that did not apply everywhere.
+  if (runs.size() > 1)
+    for (const DeckCheck& c : deck.checks) {
+      int count = 0;
+      for (const RunResult* run : runs)
+        count += int(std::count(run->skippedChecks.begin(), run->skippedChecks.end(), c.name));
+      if (count == 0) continue;
+      skipped += count;
+      out << "  n/a   " << padded(c.name, nameWidth) << "at " << count << " of " << runs.size()
+          << " values (when: " << c.condition << " is false there)\n";
+    }
   out << "  " << passed << " passed, " << failed << " failed, " << skipped << " not applicable\n";
   return failed;
 }

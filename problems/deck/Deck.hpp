@@ -132,6 +132,7 @@ struct Deck {
   std::string title;  ///< one line describing the scene (may be empty)
   std::vector<std::pair<std::string, double>> parameters;  ///< after overrides, deck order
   std::vector<std::pair<std::string, double>> derived;     ///< named values computed from them
+  std::vector<std::pair<std::string, double>> reported;    ///< `report:` names with their values
 
   std::string dimension = "planar";  ///< "planar", "3d" or "lateral"
   DofSet dofs = DofSet::planar();

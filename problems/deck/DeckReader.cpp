@@ -68,7 +68,7 @@ namespace {
 const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived", "model",  "materials", "sections", "segments", "points",
     "supports", "springs",  "masses",  "hinges", "loads",     "analyses", "checks",   "sweep",
-    "contacts", "bearings", "damping"};
+    "contacts", "bearings", "damping", "report"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -173,6 +173,7 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   reader::readAttachments(c);
   reader::readRotorModel(c);
   reader::readStudy(c, overrides);
+  reader::readReport(c);
   return deck;
 }
 

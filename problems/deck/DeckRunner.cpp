@@ -60,6 +60,7 @@ RunResult runDeck(const Deck& deck) {
   run.deckPath = deck.path;
   run.deckName = deck.stem;
   run.parameters = deck.parameters;
+  run.reported = deck.reported;
   run.dimension = deck.dimension;
 
   // 1. The model.
@@ -88,7 +89,8 @@ RunResult runDeck(const Deck& deck) {
 }
 
 SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
-                     const Deck& base, const SweepProgress& progress) {
+                     const Deck& base, const SweepProgress& progress,
+                     const DeckAdjustment& adjust) {
   SweepResult sweep;
   sweep.parameter = base.sweep->parameter;
   sweep.values = base.sweep->values;
@@ -99,7 +101,9 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
     withValue.push_back({sweep.parameter, value, sweep.parameter + "=" + formatNumber(value)});
     const std::string at = "with " + sweep.parameter + " = " + formatNumber(value) + " (sweep): ";
     try {
-      sweep.runs.push_back(runDeck(readDeck(source, withValue)));
+      Deck deck = readDeck(source, withValue);
+      if (adjust) adjust(deck);
+      sweep.runs.push_back(runDeck(deck));
     } catch (const DeckError& e) {
       throw DeckError(e.file(), e.place(), at + e.message());
     } catch (const DeckSolveError& e) {

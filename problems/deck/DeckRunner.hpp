@@ -18,10 +18,15 @@ RunResult runDeck(const Deck& deck);
 /// Called after each sweep value is solved: (values done, values in all).
 using SweepProgress = std::function<void(int done, int total)>;
 
+/// A change applied to the deck after each reading (e.g. a command-line formulation).
+using DeckAdjustment = std::function<void(Deck&)>;
+
 /// Runs deck.sweep: the source re-read and re-solved for each value of the swept parameter
-/// (so a parameter may move points, supports and loads). `base` is the deck read with
-/// `overrides` and must have a sweep. A DeckError or DeckSolveError at one value names it.
+/// (so a parameter may move points, supports and loads), `adjust` applied after each reading.
+/// `base` is the deck read with `overrides` and must have a sweep. A DeckError or
+/// DeckSolveError at one value names it.
 SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
-                     const Deck& base, const SweepProgress& progress = {});
+                     const Deck& base, const SweepProgress& progress = {},
+                     const DeckAdjustment& adjust = {});
 
 }  // namespace beamrotor

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "problems/deck/SceneFunctions.hpp"
+#include "problems/deck/ExpressionFunctions.hpp"
 #include "problems/deck/Suggest.hpp"
 
 namespace beamrotor {
@@ -42,6 +43,7 @@ std::string reason(const mu::Parser::exception_type& e, std::vector<std::string>
 ExpressionEvaluator::ExpressionEvaluator() : parser_(std::make_unique<mu::Parser>()) {
   parser_->DefineConst("pi", std::numbers::pi);
   defineSceneFunctions(*parser_);
+  defineDeckFunctions(*parser_);
 }
 
 ExpressionEvaluator::~ExpressionEvaluator() = default;

@@ -25,7 +25,8 @@ class CompiledExpression;
 
 class ExpressionEvaluator {
  public:
-  /// Knows the constant pi and muparser's functions (sin, sqrt, abs, min, max, ...).
+  /// Knows the constant pi, muparser's functions (sin, sqrt, abs, min, max, ...) and the
+  /// deck functions of ExpressionFunctions.hpp (crank_position, ...).
   ExpressionEvaluator();
   ~ExpressionEvaluator();
   ExpressionEvaluator(const ExpressionEvaluator&) = delete;

@@ -14,8 +14,9 @@ namespace beamrotor {
 namespace {
 
 constexpr const char* kGrammar =
-    "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max' "
-    "'moment max', 'log_decrement N', 'critical_speed N', 'unbalance_amplitude POINT at RPM', "
+    "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max', "
+    "'shear max', 'moment max', 'log_decrement N', 'critical_speed N', "
+    "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
 /// Stations per element for the maxima: resultants vary at most quadratically along an
@@ -89,8 +90,11 @@ Quantity parseQuantity(const std::string& text) {
     return q;
   }
   if (parseRotorQuantity(words, q)) return q;
-  if ((head == "stress" || head == "moment") && words.size() == 2 && words[1] == "max") {
-    q.kind = head == "stress" ? Quantity::Kind::maxStress : Quantity::Kind::maxMoment;
+  if ((head == "stress" || head == "shear" || head == "moment") && words.size() == 2 &&
+      words[1] == "max") {
+    q.kind = head == "stress"  ? Quantity::Kind::maxStress
+             : head == "shear" ? Quantity::Kind::maxShear
+                               : Quantity::Kind::maxMoment;
     return q;
   }
   if (head == "history" && words.size() == 3 &&
@@ -136,8 +140,9 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
     default: {
       double largest = 0;
       for (const BeamStation& s : recoverBeamFields(model, r.displacement, kStationsPerElement)) {
-        const double v = q.kind == Quantity::Kind::maxStress
-                             ? s.stress
+        const double v = q.kind == Quantity::Kind::maxStress ? s.stress
+                         : q.kind == Quantity::Kind::maxShear
+                             ? s.shear
                              : std::hypot(s.forces.My, s.forces.Mz);
         largest = std::max(largest, v);
       }

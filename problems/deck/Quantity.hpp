@@ -3,6 +3,7 @@
 //   displacement POINT DOF    displacement (m) or rotation (rad) of a named point
 //   frequency N               natural frequency of mode N (Hz), N from 1
 //   stress max                largest |normal stress| on the outer fibres of any beam (Pa)
+//   shear max                 largest transverse shear stress in any beam (Pa), fem/ShearStress
 //   moment max                largest bending moment magnitude in any beam (N m)
 //   history NAME max|min|maxabs   largest, smallest or largest |value| of a transient history
 //   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
@@ -31,6 +32,7 @@ struct Quantity {
     displacement,
     frequency,
     maxStress,
+    maxShear,
     maxMoment,
     logDecrement,
     criticalSpeed,

@@ -63,6 +63,8 @@ DeckTransient readTransient(const Context& c, const Field& f);
 /// lie within the run when the check applies).
 void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
                             const DeckAnalysis& analysis, bool applicable);
+/// `report:`: names of parameters and derived values into deck.reported.
+void readReport(Context& c);
 
 /// The beam formulation a field names (euler-bernoulli, timoshenko, ...).
 BeamTheory formulationOf(const Field& f);

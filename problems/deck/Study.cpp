@@ -1,6 +1,7 @@
 #include "problems/deck/Study.hpp"
 
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FormulationOption.hpp"
 #include "problems/deck/SweepOption.hpp"
 
 namespace beamrotor {
@@ -11,7 +12,14 @@ Study solve(const DeckSource& source, const StudyRequest& request,
             const SweepProgress& progress) {
   std::vector<ParameterOverride> overrides;
   for (const std::string& s : request.sets) overrides.push_back(parseOverride(s, source.path));
+  const DeckAdjustment adjust = [&](Deck& deck) {
+    if (!request.formulation.empty()) applyFormulationOption(request.formulation, deck);
+  };
+  if (request.noSweep && !request.sweep.empty())
+    throw DeckError(source.path, DeckPlace{0, 0, "--no-sweep"},
+                    "contradicts --sweep " + request.sweep + "; give one of the two");
   Study study{readDeck(source, overrides), std::nullopt, std::nullopt};
+  adjust(study.deck);
   if (!request.sweep.empty()) {
     study.deck.sweep = parseSweepOption(request.sweep, study.deck);
     if (findOverride(overrides, study.deck.sweep->parameter))
@@ -20,7 +28,7 @@ Study solve(const DeckSource& source, const StudyRequest& request,
   }
   if (request.noSweep) study.deck.sweep.reset();
   if (study.deck.sweep)
-    study.sweep = runSweep(source, overrides, study.deck, progress);
+    study.sweep = runSweep(source, overrides, study.deck, progress, adjust);
   else
     study.run = runDeck(study.deck);
   return study;

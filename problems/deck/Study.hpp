@@ -19,6 +19,7 @@ struct StudyRequest {
   std::vector<std::string> sets;  ///< "NAME=VALUE" overrides, as typed
   bool noSweep = false;           ///< solve the parameters' own values even if the deck sweeps
   std::string sweep;              ///< "NAME=FROM:TO:STEPS" or "NAME=V1,V2": replaces the deck's
+  std::string formulation;        ///< "timoshenko" or "euler-bernoulli" for every beam; "": deck's
 };
 
 /// The deck as read (base parameter values) and what solving it produced.

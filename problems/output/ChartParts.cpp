@@ -1,8 +1,10 @@
 // Shared gnuplot chart pieces (see ChartParts.hpp).
 #include "problems/output/ChartParts.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iterator>
+#include <sstream>
 
 #include "problems/output/Gnuplot.hpp"
 
@@ -30,15 +32,23 @@ std::string number(double x) {
   return buffer;
 }
 
+std::string captionText(const std::string& caption) {
+  std::string out, line;
+  std::istringstream lines(caption);
+  while (std::getline(lines, line)) out += (out.empty() ? "" : ".\"\\n\".") + gnuplotText(line);
+  return out.empty() ? gnuplotText("") : out;
+}
+
 std::string panelLayout(int rows, int columns, const std::string& caption, int width, int height,
                         int rightMargin) {
   const auto fractionX = [&](double px) { return number(px / width); };
   const auto fractionY = [&](double px) { return number(px / height); };
+  const auto lines = 1 + std::count(caption.begin(), caption.end(), '\n');
   return "  set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns) +
-         " title " + gnuplotText(caption) + " font ',13' margins " + fractionX(90) + "," +
+         " title " + captionText(caption) + " font ',13' margins " + fractionX(90) + "," +
          fractionX(width - double(rightMargin)) + "," + fractionY(60) + "," +
-         fractionY(height - 80.0) + " spacing " + fractionX(columns > 1 ? 100 : 0) + "," +
-         fractionY(rows > 1 ? 75 : 0) + "\n";
+         fractionY(height - 60.0 - 20.0 * double(lines)) + " spacing " +
+         fractionX(columns > 1 ? 100 : 0) + "," + fractionY(rows > 1 ? 75 : 0) + "\n";
 }
 
 }  // namespace beamrotor

@@ -15,6 +15,9 @@ std::string colourValue(std::size_t i);
 /// x with 6 significant digits, as gnuplot reads it.
 std::string number(double x);
 
+/// A caption of one or more lines (separated by '\n') as a gnuplot string expression.
+std::string captionText(const std::string& caption);
+
 /// `set multiplot` for a grid of panels under a caption. gnuplot takes the margins as
 /// fractions of the canvas; they are set here in pixels so that labels fit whatever the
 /// chart's size.

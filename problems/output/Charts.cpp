@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <optional>
 #include <sstream>
 
 #include "problems/output/ChartParts.hpp"
@@ -18,7 +19,9 @@ namespace {
 
 /// A curve of a panel: a table column scaled to the panel's unit.
 struct Curve {
-  std::string column;
+  std::string file;   ///< CSV file, relative to the chart's directory
+  int xColumn = 0;    ///< 1-based gnuplot column of x
+  int column = 0;     ///< 1-based gnuplot column of the value
   std::string title;  ///< key entry (enhanced text: u_y shows a subscript)
 };
 
@@ -38,16 +41,15 @@ std::string markerCommands(const std::vector<ChartMarker>& markers) {
   return s.str();
 }
 
-/// `plot` over csvFile of the curves, each column multiplied by scale; filled to the axis
-/// when `filled` (the look of a moment or stress diagram).
-std::string plotCommand(const CsvTable& table, const std::string& csvFile, const std::string& x,
-                        const std::vector<Curve>& curves, double scale, bool filled) {
+/// `plot` of the curves, each column multiplied by scale; filled to the axis when `filled`
+/// (the look of a moment or stress diagram).
+std::string plotCommand(const std::vector<Curve>& curves, double scale, bool filled) {
   std::ostringstream s;
   s << "  plot ";
   for (std::size_t i = 0; i < curves.size(); ++i) {
-    const std::string data =
-        gnuplotFile(csvFile) + " skip 1 using " + std::to_string(table.column(x)) + ":($" +
-        std::to_string(table.column(curves[i].column)) + "*" + number(scale) + ")";
+    const std::string data = gnuplotFile(curves[i].file) + " skip 1 using " +
+                             std::to_string(curves[i].xColumn) + ":($" +
+                             std::to_string(curves[i].column) + "*" + number(scale) + ")";
     if (i) s << ", \\\n       ";
     if (filled)
       s << data << " with filledcurves y=0 fillstyle transparent solid 0.2 noborder " << colour(i)
@@ -73,47 +75,80 @@ std::vector<ChartMarker> namedPointMarkers(const Model& model) {
     if (coordinate[node]) markers.push_back({name, *coordinate[node]});
   std::stable_sort(markers.begin(), markers.end(),
                    [](const ChartMarker& a, const ChartMarker& b) { return a.x < b.x; });
-  return markers;
+  // The automatic "start" and "end" would print over a deck's own point at the same place.
+  std::vector<ChartMarker> shown;
+  for (const ChartMarker& m : markers) {
+    const bool automatic = m.name == "start" || m.name == "end";
+    const bool covered = std::any_of(markers.begin(), markers.end(), [&](const ChartMarker& o) {
+      return o.name != "start" && o.name != "end" &&
+             std::abs(o.x - m.x) <= 1e-12 * (1 + std::abs(m.x));
+    });
+    if (!automatic || !covered) shown.push_back(m);
+  }
+  return shown;
 }
 
 ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
-                           const CsvTable& fields, const std::string& csvFile,
+                           const std::vector<FieldSeries>& series,
                            const std::vector<ChartMarker>& markers) {
+  // A quantity drawn in a panel: its main column and, in 3D, the other plane's, shown only
+  // when it is not zero everywhere in every series.
+  struct Drawn {
+    std::string column;
+    std::string title;  ///< gnuplot enhanced-text literal
+  };
   struct Panel {
     std::string ylabel;
-    std::vector<Curve> curves;
+    Drawn main;
+    std::optional<Drawn> other;
     double scale;
     bool filled;
   };
-  const auto withOptional = [&](Curve main, Curve optional) {
-    std::vector<Curve> curves{std::move(main)};
-    if (anyNonZero(fields, optional.column)) curves.push_back(std::move(optional));
+  const std::vector<Panel> panels{
+      {"deflection [mm]", {"uy", "'u_y'"}, Drawn{"uz", "'u_z'"}, 1e3, false},
+      {"rotation [mrad]", {"rz", "'θ_z'"}, Drawn{"ry", "'θ_y'"}, 1e3, false},
+      {"bending moment [kN m]", {"Mz", "'M_z'"}, Drawn{"My", "'M_y'"}, 1e-3, true},
+      {"normal stress [MPa]", {"stress", "'largest normal stress'"}, std::nullopt, 1e-6, true},
+      {"shear stress [MPa]", {"shear", "'largest shear stress'"}, std::nullopt, 1e-6, true},
+  };
+  // One series: the quantities' own names; several: the series' titles, plus the quantity's
+  // name where a panel shows two.
+  const auto curvesOf = [&](const Panel& panel) {
+    bool other = false;
+    for (const FieldSeries& f : series)
+      other = other || (panel.other && anyNonZero(*f.fields, panel.other->column));
+    std::vector<Curve> curves;
+    for (const FieldSeries& f : series)
+      for (const Drawn* q : {&panel.main, other ? &*panel.other : nullptr}) {
+        if (!q) continue;
+        const std::string title = series.size() == 1 ? q->title
+                                  : other            ? gnuplotText(f.title + ", " + q->column)
+                                                     : gnuplotText(f.title);
+        curves.push_back({f.csvFile, f.fields->column("x"), f.fields->column(q->column), title});
+      }
     return curves;
   };
-  const std::vector<Panel> panels{
-      {"deflection [mm]", withOptional({"uy", "'u_y'"}, {"uz", "'u_z'"}), 1e3, false},
-      {"rotation [mrad]", withOptional({"rz", "'θ_z'"}, {"ry", "'θ_y'"}), 1e3, false},
-      {"bending moment [kN m]", withOptional({"Mz", "'M_z'"}, {"My", "'M_y'"}), 1e-3, true},
-      {"stress [MPa]", {{"stress", "'largest normal stress'"}}, 1e-6, true},
-  };
 
-  const int width = 900, height = 1150;
+  // Several series: their key outside the panels, in a wider right margin, never over a line.
+  const bool overlaid = series.size() > 1;
+  const int width = overlaid ? 1000 : 900, height = 1350;
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << panelLayout(int(panels.size()), 1, caption, width, height) << "  set grid\n"
+       << panelLayout(int(panels.size()), 1, caption, width, height, overlaid ? 150 : 30)
+       << "  set grid\n"
        << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
-       << "  set key top right opaque\n"
+       << (overlaid ? "  set key outside right top\n" : "  set key top right opaque\n")
        << "  set xrange [*:*] noextend\n"
        << markerCommands(markers);
   for (std::size_t p = 0; p < panels.size(); ++p) {
     if (p == 1) body << "  unset label\n";  // point names once, above the top panel
     if (p + 1 == panels.size()) body << "  set xlabel 'x along the line [m]'\n";
     body << "  set ylabel " << gnuplotText(panels[p].ylabel) << "\n"
-         << plotCommand(fields, csvFile, "x", panels[p].curves, panels[p].scale, panels[p].filled);
+         << plotCommand(curvesOf(panels[p]), panels[p].scale, panels[p].filled);
   }
   body << "  unset multiplot\n";
-  return {chartName, "Deflection, rotation, bending moment and stress along the line", width,
-          height, body.str()};
+  return {chartName, "Deflection, rotation, bending moment, normal and shear stress along the line",
+          width, height, body.str()};
 }
 
 ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
@@ -128,7 +163,7 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
   const std::string drawn = same && shown ? std::string(dofName(along[0])) + " " : "";
 
   std::ostringstream body;
-  body << "  set title " << gnuplotText(caption) << " font ',13'\n"
+  body << "  set title " << captionText(caption) << " font ',13'\n"
        << "  set grid\n  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
        << "  set key below\n  set xrange [*:*] noextend\n"
        << "  set offsets 0, 0, graph 0.08, graph 0.02\n"

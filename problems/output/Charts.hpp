@@ -24,11 +24,20 @@ struct ChartMarker {
 /// The named points that lie on line elements, in order along the line.
 std::vector<ChartMarker> namedPointMarkers(const Model& model);
 
-/// Four stacked diagrams along the line from a staticFieldsTable written to csvFile:
-/// deflection uy (mm), rotation rz (mrad), bending moment Mz (kN m) and stress (MPa); uz,
-/// ry and My are added when they are not zero everywhere (3D models).
+/// One static solution on the diagrams: its staticFieldsTable, the CSV file it was written
+/// to (relative to the chart's directory) and its key title (ignored for a single series).
+struct FieldSeries {
+  const CsvTable* fields = nullptr;
+  std::string csvFile;
+  std::string title;  ///< e.g. "eta = 0.2"
+};
+
+/// Five stacked diagrams along the line: deflection uy (mm), rotation rz (mrad), bending
+/// moment Mz (kN m), largest normal and largest shear stress (MPa); uz, ry and My are added
+/// when they are not zero everywhere (3D models). Several series (the values of a short
+/// sweep) are overlaid, one line each, like the published figures of the pump rod.
 ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
-                           const CsvTable& fields, const std::string& csvFile,
+                           const std::vector<FieldSeries>& series,
                            const std::vector<ChartMarker>& markers);
 
 /// The first `count` mode shapes (each its dominant translation, largest value 1) from a
@@ -37,8 +46,9 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
                             const Model& model, const ModalResult& modal, const CsvTable& shapes,
                             const std::string& csvFile, int count = 4);
 
-/// One panel per reaction component and the largest stress of a static analysis, per maximum
-/// of a transient one, or the frequencies of a modal one, against the swept parameter, from sweepTable in csvFile.
+/// One panel per reaction component and the largest normal and shear stress of a static
+/// analysis, per maximum of a transient one, or the frequencies of a modal one, against the
+/// swept parameter, from sweepTable in csvFile.
 /// `quantities` are those of this analysis.
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
                        const std::string& parameter, const std::vector<SweepQuantity>& quantities,

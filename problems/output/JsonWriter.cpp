@@ -69,10 +69,15 @@ Json contactsJson(const std::vector<ContactState>& contacts) {
   return out;
 }
 
-Json maxStressJson(const std::vector<StaticStation>& stations) {
-  const auto top = largestStress(stations);
+/// The most stressed station: value (Pa), place along the line, element and its section.
+Json peakJson(const Model& model, const std::optional<StaticStation>& top,
+              double StaticStation::*value) {
   if (!top) return nullptr;  // no line elements: the key is dropped by the caller
-  return {{"value", top->stress}, {"x", top->place.x}, {"element", top->place.element}};
+  const auto& line = static_cast<const LineElement&>(*model.elements()[top->place.element]);
+  return {{"value", (*top).*value},
+          {"x", top->place.x},
+          {"element", top->place.element},
+          {"section", line.section().name}};
 }
 
 Json staticJson(const Model& model, const DofMap& dofs, const AnalysisOutcome& a,
@@ -82,7 +87,10 @@ Json staticJson(const Model& model, const DofMap& dofs, const AnalysisOutcome& a
   Json out = {{"type", a.type}, {"name", a.name}};
   out["reactions"] = reactionsJson(r);
   out["displacements"] = pointDisplacementsJson(model, dofs, r.displacement);
-  if (Json top = maxStressJson(stations); !top.is_null()) out["max_stress"] = top;
+  if (Json top = peakJson(model, largestStress(stations), &StaticStation::stress); !top.is_null())
+    out["max_stress"] = top;
+  if (Json top = peakJson(model, largestShear(stations), &StaticStation::shear); !top.is_null())
+    out["max_shear"] = top;
   if (!r.contacts.empty()) {
     out["contacts"] = contactsJson(r.contacts);
     out["active_set_iterations"] = r.activeSetIterations;
@@ -177,8 +185,24 @@ void requireFiniteAt(const Json& node, const std::string& path, const std::strin
 /// The part of a run's analysis entry a sweep tracks.
 Json sweepAnalysisJson(const Json& analysis) {
   Json out = {{"type", analysis.at("type")}, {"name", analysis.at("name")}};
-  for (const char* key : {"reactions", "max_stress", "frequencies_hz", "maxima"})
+  for (const char* key : {"reactions", "max_stress", "max_shear", "frequencies_hz", "maxima"})
     if (analysis.contains(key)) out[key] = analysis[key];
+  return out;
+}
+
+/// Per static analysis, its largest stress and shear over the sweep's runs (the first run on
+/// ties), each with the swept parameter's value there.
+Json sweepWorstJson(const SweepResult& sweep, const std::vector<Json>& runDocs) {
+  Json out = Json::object();
+  for (std::size_t i = 0; i < runDocs.size(); ++i)
+    for (const Json& a : runDocs[i].at("analyses"))
+      for (const char* key : {"max_stress", "max_shear"}) {
+        if (!a.contains(key)) continue;
+        Json& worst = out[a.at("name").get<std::string>()][key];
+        if (!worst.is_null() && worst.at("value") >= a[key].at("value")) continue;
+        worst = a[key];
+        worst["at"] = {{sweep.parameter, sweep.values[i]}};
+      }
   return out;
 }
 
@@ -212,6 +236,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>
   doc["checks"] = checksJson(run.checks);
   doc["skipped_checks"] = run.skippedChecks;
   doc["parameters"] = parametersJson(run.parameters);
+  if (!run.reported.empty()) doc["reported"] = parametersJson(run.reported);
   doc["seconds"] = run.seconds;
   doc["beamrotor_version"] = BEAMROTOR_VERSION;
   return doc;
@@ -230,10 +255,12 @@ Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,
     runs.push_back({{"value", sweep.values[i]},
                     {"directory", directories[i]},
                     {"parameters", runDocs[i].at("parameters")},
+                    {"reported", runDocs[i].value("reported", Json::object())},
                     {"analyses", analyses},
                     {"checks", runDocs[i].at("checks")}});
   }
   doc["runs"] = runs;
+  doc["worst"] = sweepWorstJson(sweep, runDocs);
   return doc;
 }
 

@@ -4,7 +4,8 @@
 // results.json:
 //   deck {name, path}, model {nodes, elements, dofs, dimension},
 //   analyses [ static: {type, name, reactions {support: {fx ... mz}}, displacements
-//              {point: {ux ... rz}}, max_stress {value, x, element}, [contacts {name: {dof,
+//              {point: {ux ... rz}}, max_stress and max_shear {value, x, element, section},
+//              [contacts {name: {dof,
 //              active, value, bound, gap, force}}, active_set_iterations], rcond, time_s, files}
 //            | modal:  {type, name, frequencies_hz [...], total_mass_kg {ux ..}, modes [{mode,
 //              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio
@@ -12,10 +13,12 @@
 //            | transient: see TransientJson.hpp ],
 //            | rotor, campbell, unbalance, rigid-body: see RotorJson.hpp ],
 //   checks [{name, quantity, computed, reference, rel_error, tolerance, pass}],
-//   skipped_checks [name], parameters {name: value}, seconds, beamrotor_version.
+//   skipped_checks [name], parameters {name: value}, [reported {name: value}], seconds,
+//   beamrotor_version.
 // Only the components a model carries appear (a planar model has no fz, my, uz ...).
-// sweep.json: parameter, values, model, runs [{value, directory, parameters, analyses (type,
-// name, reactions, max_stress | frequencies_hz | maxima), checks}].
+// sweep.json: parameter, values, model, runs [{value, directory, parameters, reported, analyses
+// (type, name, reactions, max_stress, max_shear | frequencies_hz | maxima), checks}], worst {analysis:
+// {max_stress, max_shear}}: each the largest over the runs, with at {parameter: value}.
 #pragma once
 
 #include <filesystem>

@@ -100,17 +100,30 @@ std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& d
     if (recovered[i].element != p.element)
       throw std::logic_error("recoverBeamFields sampled different elements");
     const auto& line = static_cast<const LineElement&>(*model.elements()[p.element]);
-    stations.push_back(
-        {p, displacementAt(line, displacement, p.s), recovered[i].forces, recovered[i].stress});
+    stations.push_back({p, displacementAt(line, displacement, p.s), recovered[i].forces,
+                        recovered[i].stress, recovered[i].shear});
   }
   return stations;
 }
 
-std::optional<StaticStation> largestStress(const std::vector<StaticStation>& stations) {
+namespace {
+
+std::optional<StaticStation> largest(const std::vector<StaticStation>& stations,
+                                     double StaticStation::*value) {
   if (stations.empty()) return std::nullopt;
   return *std::max_element(
       stations.begin(), stations.end(),
-      [](const StaticStation& a, const StaticStation& b) { return a.stress < b.stress; });
+      [&](const StaticStation& a, const StaticStation& b) { return a.*value < b.*value; });
+}
+
+}  // namespace
+
+std::optional<StaticStation> largestStress(const std::vector<StaticStation>& stations) {
+  return largest(stations, &StaticStation::stress);
+}
+
+std::optional<StaticStation> largestShear(const std::vector<StaticStation>& stations) {
+  return largest(stations, &StaticStation::shear);
 }
 
 }  // namespace beamrotor

@@ -52,6 +52,7 @@ struct StaticStation {
   std::array<double, kDofKinds> displacement{};  ///< global frame, ux ... rz
   SectionForces forces;                          ///< element frame, see SectionForces
   double stress = 0;                             ///< largest |normal stress| (Pa)
+  double shear = 0;                              ///< largest transverse shear stress (Pa)
 };
 
 /// Samples a static solution at placesAlongLine(model, intervalsPerElement).
@@ -60,5 +61,9 @@ std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& d
 
 /// The station of the largest stress (the first one on ties); nullopt without line elements.
 std::optional<StaticStation> largestStress(const std::vector<StaticStation>& stations);
+
+/// The station of the largest shear stress (the first one on ties); nullopt without line
+/// elements.
+std::optional<StaticStation> largestShear(const std::vector<StaticStation>& stations);
 
 }  // namespace beamrotor

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "problems/deck/Suggest.hpp"
 #include "problems/output/AtomicDirectory.hpp"
 #include "problems/output/Charts.hpp"
 #include "problems/output/FileNames.hpp"
@@ -14,6 +15,7 @@
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
 #include "problems/output/RotorOutput.hpp"
+#include "problems/output/OverlaidDiagrams.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
@@ -74,13 +76,27 @@ PreparedRun prepare(const RunResult& run) {
   return prepared;
 }
 
-/// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts.
-std::string caption(const RunResult& run, const std::string& analysis) {
-  std::string text = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis;
-  for (std::size_t i = 0; i < run.parameters.size(); ++i)
-    text += (i ? ", " : " (") + run.parameters[i].first + " = " +
-            exactDecimal(run.parameters[i].second) + (i + 1 == run.parameters.size() ? ")" : "");
-  return text;
+/// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts; `what` follows
+/// the analysis' name, and the parameter `left` out is not listed. A long caption puts the
+/// parameters on lines of their own ('\n'), so that the chart's width holds them.
+std::string caption(const RunResult& run, const std::string& analysis, const std::string& what = "",
+                    const std::string& left = "") {
+  constexpr std::size_t kLine = 90;  // characters across a 900-pixel chart at its title font
+  const std::string head = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis + what;
+  std::vector<std::string> items;
+  for (const auto& [name, value] : run.parameters)
+    if (name != left) items.push_back(name + " = " + exactDecimal(value));
+  std::string oneLine = head;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    oneLine += (i ? ", " : " (") + items[i] + (i + 1 == items.size() ? ")" : "");
+  if (oneLine.size() <= kLine) return oneLine;
+  std::string text = head, line;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string item = items[i] + (i + 1 == items.size() ? "" : ",");
+    if (!line.empty() && line.size() + 1 + item.size() > kLine) text += "\n" + line, line.clear();
+    line += (line.empty() ? "" : " ") + item;
+  }
+  return line.empty() ? text : text + "\n" + line;
 }
 
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
@@ -94,8 +110,9 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
       p.fields->write(dir / fieldsCsv(p.stem));
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);
       if (charts && !p.stations.empty())
-        drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem), *p.fields,
-                                      fieldsCsv(p.stem), namedPointMarkers(model)));
+        drawChart(dir,
+                  staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
+                                 {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
     }
     if (a.transient)
       writeTransientFiles(dir, model, p.stem, *a.transient, *p.history,
@@ -156,13 +173,27 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
     writeJson(sweepDoc, temporary / kSweepJson);
     table.write(temporary / kSweepCsv);
     const RunResult& first = sweep.runs.front();
-    for (const AnalysisOutcome& a : first.analyses) {
+    for (std::size_t k = 0; k < first.analyses.size(); ++k) {
+      const AnalysisOutcome& a = first.analyses[k];
       const std::string stem = fileStem(a.name);
       if (a.statics) {
         std::vector<PvdEntry> series;
         for (std::size_t i = 0; i < sweep.values.size(); ++i)
           series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
         writePvd(temporary / collectionPvd(stem), series);
+        std::vector<const CsvTable*> fields;
+        std::vector<std::string> files, values;
+        for (std::size_t i = 0; i < prepared.size(); ++i) {
+          fields.push_back(&*prepared[i].analyses[k].fields);
+          files.push_back(directories[i] + "/" + fieldsCsv(stem));
+          values.push_back(exactDecimal(sweep.values[i]));
+        }
+        if (!prepared.front().analyses[k].stations.empty())
+          drawOverlaidDiagrams(
+              temporary,
+              caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
+                      sweep.parameter),
+              diagramsChart(stem), sweep, fields, files);
       }
       std::vector<SweepQuantity> own;
       for (const SweepQuantity& q : quantities)

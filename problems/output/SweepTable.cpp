@@ -43,16 +43,18 @@ void addStatic(const Json& a, std::vector<SweepQuantity>& out) {
              return required(required(reactions, support, what), component, what).get<double>();
            }});
     }
-  if (a.contains("max_stress"))
-    out.push_back({SweepGroup::stress,
-                   name,
-                   "largest stress",
-                   {name + ".max_stress", "Pa"},
-                   [name](const Json& doc) {
-                     return required(analysisNamed(doc, name), "max_stress", "largest stress")
-                         .at("value")
-                         .get<double>();
-                   }});
+  for (const auto& [key, label] :
+       {std::pair<std::string, std::string>{"max_stress", "largest normal stress"},
+        {"max_shear", "largest shear stress"}})
+    if (a.contains(key))
+      out.push_back(
+          {SweepGroup::stress,
+           name,
+           label,
+           {name + "." + key, "Pa"},
+           [name, key, label](const Json& doc) {
+             return required(analysisNamed(doc, name), key, label).at("value").get<double>();
+           }});
 }
 
 void addModal(const Json& a, std::vector<SweepQuantity>& out) {
@@ -97,6 +99,13 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
     if (a.contains("frequencies_hz")) addModal(a, out);
     if (a.contains("maxima")) addTransient(a, out);
   }
+  const Json reported = runDocs.at(0).value("reported", Json::object());
+  for (const auto& [name, value] : reported.items())
+    out.push_back({SweepGroup::reported, "", name, {name, ""}, [name](const Json& doc) {
+                     return required(required(doc, "reported", "reported values"), name,
+                                     "reported value " + name)
+                         .get<double>();
+                   }});
   std::vector<std::string> checks;
   for (const Json& doc : runDocs)
     for (const Json& c : doc.at("checks")) {

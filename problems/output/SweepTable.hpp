@@ -1,8 +1,8 @@
-// What a sweep tracks across its values: each reaction component and the largest stress of
-// every static analysis, the frequencies of every modal analysis, the maxima (largest |value|
-// of each named history) of every transient analysis and each check. Read from
-// the runs' results.json documents, so sweep.csv, the sweep charts and the per-value
-// directories report the same numbers.
+// What a sweep tracks across its values: each reaction component and the largest normal and
+// shear stress of every static analysis, the frequencies of every modal analysis, the maxima
+// (largest |value| of each named history) of every transient analysis, the deck's reported
+// values and each check. Read from the runs' results.json documents, so sweep.csv,
+// the sweep charts and the per-value directories report the same numbers.
 #pragma once
 
 #include <functional>
@@ -15,7 +15,7 @@
 
 namespace beamrotor {
 
-enum class SweepGroup { reaction, stress, frequency, check, checkPass, extreme };
+enum class SweepGroup { reaction, stress, frequency, reported, check, checkPass, extreme };
 
 /// One quantity followed over the sweep.
 struct SweepQuantity {
@@ -31,8 +31,8 @@ struct SweepQuantity {
   bool optional = false;
 };
 
-/// The analyses' quantities of the first run, in document order, then every check any run
-/// declares (in order of first appearance).
+/// The analyses' quantities of the first run, in document order, then its reported values
+/// (`report:`), then every check any run declares (in order of first appearance).
 std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs);
 
 /// sweep.csv: the parameter's column, then one column per quantity; one row per value.

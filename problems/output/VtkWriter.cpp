@@ -139,14 +139,18 @@ void writeStaticVtu(const std::filesystem::path& file, const Model& model,
   }
   for (auto& a : forces) grid->GetCellData()->AddArray(a);
 
-  // Largest stress over each element's stations.
-  std::vector<double> largest(model.elements().size(), 0.0);
-  for (const StaticStation& st : stations)
-    largest.at(st.place.element) = std::max(largest[st.place.element], st.stress);
-  auto stress = doubleArray("stress", 1, cells);
+  // Largest normal and shear stress over each element's stations.
   auto* element = grid->GetCellData()->GetArray("element");
-  for (vtkIdType c = 0; c < cells; ++c) stress->SetValue(c, largest.at(int(element->GetTuple1(c))));
-  grid->GetCellData()->AddArray(stress);
+  for (const auto& [name, value] :
+       {std::pair{"stress", &StaticStation::stress}, std::pair{"shear", &StaticStation::shear}}) {
+    std::vector<double> largest(model.elements().size(), 0.0);
+    for (const StaticStation& st : stations)
+      largest.at(st.place.element) = std::max(largest[st.place.element], st.*value);
+    auto array = doubleArray(name, 1, cells);
+    for (vtkIdType c = 0; c < cells; ++c)
+      array->SetValue(c, largest.at(int(element->GetTuple1(c))));
+    grid->GetCellData()->AddArray(array);
+  }
   writeVtu(grid, file);
 }
 

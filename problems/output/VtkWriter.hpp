@@ -18,8 +18,9 @@ namespace beamrotor {
 /// (ux uy uz, m) and `rotation` (rx ry rz, rad), global frame. Cells: one VTK_LINE per line
 /// element (other elements are not drawn), cell data `element` (index into model.elements()),
 /// section forces `N`, `Vy`, `Vz` (N), `T`, `My`, `Mz` (N m) at the element's mid-length
-/// (element frame; exact there, also with a span load), `stress` (Pa, the largest over the
-/// element's `stations`) and section properties `A` (m^2), `Iy`, `Iz` (m^4), `E` (Pa).
+/// (element frame; exact there, also with a span load), `stress` and `shear` (Pa, the largest
+/// normal and transverse shear stress over the element's `stations`) and section properties
+/// `A` (m^2), `Iy`, `Iz` (m^4), `E` (Pa).
 /// Throws std::runtime_error when VTK cannot write the file.
 void writeStaticVtu(const std::filesystem::path& file, const Model& model,
                     const StaticResult& result, const std::vector<StaticStation>& stations);

@@ -1,11 +1,13 @@
 #include "tests/problems/DeckTestSupport.hpp"
 
+#include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace beamrotor::test {
 
@@ -56,6 +58,64 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments) {
   r.err = slurp(dir / "err");
   std::filesystem::remove_all(dir);
   return r;
+}
+
+nlohmann::json SolvedDeck::json(const std::string& file) const {
+  return nlohmann::json::parse(text(file));
+}
+
+std::string SolvedDeck::text(const std::string& file) const {
+  return slurp(dir / file);
+}
+
+SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string& scratch) {
+  const auto out = scratchDir(scratch) / "out";
+  SolvedDeck solved{runBeamrotor({"solve", "problems/" + deck, "--out", out.string()}), out};
+  CAPTURE(solved.process.err);
+  REQUIRE(solved.process.exitCode == 0);
+  return solved;
+}
+
+StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets) {
+  StudyRequest r;
+  r.deckPath = (problemsDir() / name).string();
+  r.sets = std::move(sets);
+  r.noSweep = true;
+  return r;
+}
+
+std::vector<const RunResult*> runsOf(const Study& study) {
+  std::vector<const RunResult*> runs;
+  if (study.run) runs.push_back(&*study.run);
+  if (study.sweep)
+    for (const RunResult& r : study.sweep->runs) runs.push_back(&r);
+  return runs;
+}
+
+int checkAllPass(const Study& study) {
+  int applied = 0;
+  for (const RunResult* run : runsOf(study))
+    for (const Check& c : run->checks) {
+      CAPTURE(c.name);
+      CAPTURE(c.computed);
+      CAPTURE(c.reference);
+      CHECK(c.pass());
+      ++applied;
+    }
+  return applied;
+}
+
+double staticReaction(const RunResult& run, const std::string& support, Dof dof) {
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.statics) return a.statics->reaction(support, dof);
+  throw std::invalid_argument("run of " + run.deckName + " has no static analysis");
+}
+
+double deckValue(const Deck& deck, const std::string& name) {
+  for (const auto* list : {&deck.parameters, &deck.derived})
+    for (const auto& [n, v] : *list)
+      if (n == name) return v;
+  throw std::invalid_argument(deck.path + " has no value named " + name);
 }
 
 }  // namespace beamrotor::test

@@ -3,8 +3,12 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "problems/deck/Study.hpp"
 
 namespace beamrotor::test {
 
@@ -28,5 +32,36 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments);
 
 /// A fresh empty directory under the system temp directory, unique to this process.
 std::filesystem::path scratchDir(const std::string& name);
+
+/// A shipped deck solved by the executable into a scratch directory.
+struct SolvedDeck {
+  ProcessResult process;
+  std::filesystem::path dir;  ///< the results; remove dir.parent_path() when done
+  /// A JSON file of the results, parsed.
+  nlohmann::json json(const std::string& file) const;
+  /// A file of the results as text.
+  std::string text(const std::string& file) const;
+};
+
+/// `beamrotor solve problems/<deck> --out DIR` into a fresh scratch directory `scratch`;
+/// REQUIREs that it succeeds (showing its stderr otherwise).
+SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string& scratch);
+
+/// A request to solve the shipped deck problems/<name> with `--set` overrides, its own sweep
+/// switched off.
+StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets = {});
+
+/// The runs of a solved study: its one run, or one per sweep value.
+std::vector<const RunResult*> runsOf(const Study& study);
+
+/// CHECKs that every check of every run passes (naming the failing ones); returns how many
+/// ran.
+int checkAllPass(const Study& study);
+
+/// Reaction (N, N m) at `support` in the first static analysis of run.
+double staticReaction(const RunResult& run, const std::string& support, Dof dof);
+
+/// The value of a parameter or derived value of a read deck; throws when it has none.
+double deckValue(const Deck& deck, const std::string& name);
 
 }  // namespace beamrotor::test

@@ -116,14 +116,19 @@ TEST_SUITE("output") {
     writeRunOutputs(cantileverRun(c), scratch / "out");
     const NumericCsv csv = readNumericCsv(scratch / "out" / "tip_fields.csv");
 
-    const std::vector<std::string> expected{
-        "x [m]",  "ux [m]", "uy [m]",  "uz [m]",   "rx [rad]", "ry [rad]",    "rz [rad]", "N [N]",
-        "Vy [N]", "Vz [N]", "T [N m]", "My [N m]", "Mz [N m]", "stress [Pa]", "element"};
+    const std::vector<std::string> expected{"x [m]",    "ux [m]",      "uy [m]",     "uz [m]",
+                                            "rx [rad]", "ry [rad]",    "rz [rad]",   "N [N]",
+                                            "Vy [N]",   "Vz [N]",      "T [N m]",    "My [N m]",
+                                            "Mz [N m]", "stress [Pa]", "shear [Pa]", "element"};
     CHECK(csv.header == expected);
     REQUIRE(csv.rows.size() == std::size_t(c.elements * 5));  // 4 intervals: 5 stations each
     const int x = csv.column("x [m]"), uy = csv.column("uy [m]"), rz = csv.column("rz [rad]"),
-              Mz = csv.column("Mz [N m]");
+              Mz = csv.column("Mz [N m]"), shear = csv.column("shear [Pa]");
     CHECK(csv.rows.front()[x] == 0.0);
+    // Shear force P everywhere; largest shear stress of a solid circle by the elasticity
+    // solution (Timoshenko & Goodier, art. 124): (3 + 2 nu) / (2 (1 + nu)) P / A.
+    const double nu = c.section->material.nu, area = std::numbers::pi * c.D * c.D / 4;
+    const double tau = (3 + 2 * nu) / (2 * (1 + nu)) * c.P / area;
     CHECK(relError(std::abs(csv.rows.front()[Mz]), c.P * c.L) < kExact);
     const double sign = csv.rows.front()[Mz] > 0 ? 1 : -1;
     const double tip = c.deflection(c.L), tipSlope = c.slope(c.L);
@@ -133,6 +138,7 @@ TEST_SUITE("output") {
       CHECK(std::abs(row[uy] - c.deflection(row[x])) <= kExact * std::abs(tip));
       CHECK(std::abs(row[rz] - c.slope(row[x])) <= kExact * std::abs(tipSlope));
       CHECK(std::abs(row[Mz] - sign * c.P * (c.L - row[x])) <= kExact * c.P * c.L);
+      CHECK(relError(row[shear], tau) < kExact);
     }
   }
 
@@ -171,6 +177,12 @@ TEST_SUITE("output") {
       vtkDataArray* stress = grid->GetCellData()->GetArray("stress");
       REQUIRE(stress);
       CHECK(relError(stress->GetTuple1(0), c.P * c.L * c.section->outerY / c.section->Iz) < kExact);
+      // Shear force P throughout: the elasticity solution's (3 + 2 nu) / (2 (1 + nu)) P / A.
+      vtkDataArray* shear = grid->GetCellData()->GetArray("shear");
+      REQUIRE(shear);
+      const double nu = c.section->material.nu;
+      CHECK(relError(shear->GetTuple1(0), (3 + 2 * nu) / (2 * (1 + nu)) * c.P / c.section->A) <
+            kExact);
     }
     SUBCASE("meshio") {
       if (!meshioInstalled()) {

@@ -1,0 +1,86 @@
+#include "problems/cli/StressSummary.hpp"
+
+#include <optional>
+#include <string>
+
+#include "problems/cli/Summary.hpp"
+#include "problems/output/LineSampling.hpp"
+
+namespace beamrotor::cli {
+
+namespace {
+
+/// The deck's segment holding station x of a beam with section `section` (the section tells
+/// the two sides of a step apart); the section's name if none matches.
+std::string segmentAt(const Deck& deck, double x, const std::string& section) {
+  double start = 0;
+  for (std::size_t i = 0; i < deck.segments.size(); ++i) {
+    const DeckSegment& s = deck.segments[i];
+    const double end = start + s.length, slack = 1e-9 * (1 + end);
+    if (x >= start - slack && x <= end + slack && s.sectionName == section)
+      return s.name.empty() ? "segment " + std::to_string(i + 1) : s.name;
+    start = end;
+  }
+  return section;
+}
+
+/// The most stressed station of one kind and the run it belongs to.
+struct Peak {
+  std::size_t run = 0;
+  StaticStation station;
+  double value = -1;  ///< Pa; negative: none
+};
+
+/// Largest normal (first) and shear (second) stress of a static solution.
+std::pair<Peak, Peak> peaksOf(const Model& model, const StaticResult& r, std::size_t run) {
+  const std::vector<StaticStation> stations = sampleStatics(model, r.displacement);
+  std::pair<Peak, Peak> peaks;
+  if (const auto top = largestStress(stations)) peaks.first = {run, *top, top->stress};
+  if (const auto top = largestShear(stations)) peaks.second = {run, *top, top->shear};
+  return peaks;
+}
+
+/// "  largest normal stress 12.3 MPa at x = 0.575 m (rod)" without the line's end.
+void printPeak(std::ostream& out, const char* what, const Deck& deck, const Model& model,
+               const Peak& p) {
+  const auto& line = static_cast<const LineElement&>(*model.elements()[p.station.place.element]);
+  out << "  largest " << what << " " << formatValue(p.value * 1e-6)
+      << " MPa at x = " << formatValue(p.station.place.x) << " m ("
+      << segmentAt(deck, p.station.place.x, line.section().name) << ")";
+}
+
+const StaticResult* firstStatic(const RunResult& r) {
+  for (const AnalysisOutcome& a : r.analyses)
+    if (a.statics) return &*a.statics;
+  return nullptr;
+}
+
+}  // namespace
+
+void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
+                      const StaticResult& statics) {
+  const auto [normal, shear] = peaksOf(model, statics, 0);
+  if (normal.value < 0) return;  // no beams
+  printPeak(out, "normal stress", deck, model, normal);
+  out << "\n";
+  printPeak(out, "shear stress ", deck, model, shear);
+  out << "\n";
+}
+
+void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep) {
+  Peak normal, shear;
+  for (std::size_t k = 0; k < sweep.runs.size(); ++k)
+    if (const StaticResult* s = firstStatic(sweep.runs[k])) {
+      const auto [n, t] = peaksOf(*sweep.runs[k].model, *s, k);
+      if (n.value > normal.value) normal = n;
+      if (t.value > shear.value) shear = t;
+    }
+  for (const auto& [what, peak] :
+       {std::pair{"normal stress", &normal}, std::pair{"shear stress ", &shear}}) {
+    if (peak->value < 0) continue;
+    printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak);
+    out << " at " << sweep.parameter << " = " << formatValue(sweep.values[peak->run]) << "\n";
+  }
+}
+
+}  // namespace beamrotor::cli

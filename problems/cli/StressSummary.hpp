@@ -1,0 +1,22 @@
+// The summary's lines on the most stressed section: largest normal and shear stress of a static
+// solution with their place (x, and the deck's segment), and over a sweep also the value of the
+// swept parameter where they occur.
+#pragma once
+
+#include <ostream>
+
+#include "fem/Model.hpp"
+#include "fem/Results.hpp"
+#include "problems/RunResult.hpp"
+#include "problems/deck/Deck.hpp"
+
+namespace beamrotor::cli {
+
+/// "  largest normal stress 49.9 MPa at x = 0.575 m (rod)" and the shear stress line.
+void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
+                      const StaticResult& statics);
+
+/// The same over every run of a sweep (first static analysis of each), with "at eta = 0.4".
+void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep);
+
+}  // namespace beamrotor::cli
