@@ -262,8 +262,9 @@ ChartScript historyChart(const std::string& caption, const std::string& chartNam
     if (c + 1 == columns.size()) body << "  set xlabel 'time t [s]'\n";
     const std::string unit = columns[c].unit.empty() ? "" : " [" + columns[c].unit + "]";
     body << "  set ylabel " << gnuplotText(columns[c].name + unit) << "\n"
-         << plotCommand(table, csvFile, columns[0].name,
-                        {{columns[c].name, gnuplotText(columns[c].name)}}, 1.0, false);
+         << plotCommand({{csvFile, table.column(columns[0].name), table.column(columns[c].name),
+                         gnuplotText(columns[c].name)}},
+                        1.0, false);
   }
   body << "  unset multiplot\n";
   return {chartName, "Transient histories against time", width, height, body.str()};
