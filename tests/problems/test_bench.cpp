@@ -82,6 +82,17 @@ TEST_SUITE("bench") {
     checkCommonJson(r);
   }
 
+  TEST_CASE("grid3d, one bay: every node pinned, so nothing moves and each pin carries 1000 N") {
+    // Closed form: the 16 nodes all lie on the boundary, the loads act on pinned dofs only and
+    // the free (rotation) dofs are unloaded, so u = 0 exactly and the reactions are the loads.
+    const BenchReport r = runBench(benchOptions("grid3d", 16, 0));
+    CHECK(r.figure("/bays") == 1);
+    CHECK(r.elements == 16);
+    CHECK(r.figure("/largest_w") == 0);
+    CHECK(r.figure("/reaction_z") == 16 * 1000.0);
+    CHECK(r.relErrorStatic == 0);
+  }
+
   TEST_CASE("grid3d sized by --dofs: the grillage whose free dof count is nearest") {
     // n = 8 has 42 * 64 + 6 = 2694 free dofs, n = 9 has 3408: 3000 is nearer 2694.
     CHECK(closestSize(3000, gridFreeDofs) == 8);
@@ -91,6 +102,10 @@ TEST_SUITE("bench") {
     const BenchReport r = runBench(o);
     CHECK(r.freeDofs == 2694);
     CHECK(r.frequenciesHz.empty());
+    // planar: 3 dofs per node less 2 per span end; 1000 elements (100 spans) have 2801.
+    BenchOptions p = benchOptions("planar", 0, 0);
+    p.dofs = 2801;
+    CHECK(runBench(p).elements == 1000);
   }
 
   TEST_CASE("rotor, 48 elements: weight on the bearings; at rest, the planar twin's modes") {

@@ -152,6 +152,14 @@ TEST_SUITE("matrix export") {
                                                "--export-matrices=" + (dir / "mtx").string()});
     CHECK(chosen.exitCode == 0);
     CHECK(std::filesystem::exists(dir / "mtx" / kStiffnessMtx));
+    // A sweep exports each run's model (L = 1 and 1.5: 2 runs).
+    const ProcessResult swept = runBeamrotor({"solve", deck.string(), "--out",
+                                              (dir / "out3").string(), "--sweep", "L=1:1.5:1",
+                                              "--export-matrices=" + (dir / "swept").string()});
+    CHECK(swept.exitCode == 0);
+    CHECK(std::filesystem::exists(dir / "swept" / "run-1" / kStiffnessMtx));
+    CHECK(std::filesystem::exists(dir / "swept" / "run-2" / kLoadMtx));
+    CHECK(!std::filesystem::exists(dir / "swept" / "run-3"));
   }
 
   TEST_CASE("bench --export writes the standard model's matrices (rotor: with G)") {
