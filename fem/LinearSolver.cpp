@@ -59,6 +59,17 @@ int SparseLDLT::negativePivots() const {
   return negative;
 }
 
+const char* SparseLDLT::orderingName() const {
+  switch (m_cholmodFactor ? m_cholmodFactor->ordering : -1) {
+    case CHOLMOD_NATURAL: return "natural";
+    case CHOLMOD_AMD: return "AMD";
+    case CHOLMOD_METIS: return "METIS";
+    case CHOLMOD_NESDIS: return "NESDIS";
+    case CHOLMOD_COLAMD: return "COLAMD";
+    default: return "CHOLMOD's";
+  }
+}
+
 bool isNumericallySymmetric(const SparseMatrix& A, double relTol) {
   if (A.rows() != A.cols()) return false;
   const int* colStart = A.outerIndexPtr();
@@ -105,6 +116,10 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
 
 std::string LinearSolver::methodName() const {
   return symmetric_ ? "CHOLMOD LDL'" : "UMFPACK LU";
+}
+
+std::string LinearSolver::orderingName() const {
+  return symmetric_ ? ldlt_.orderingName() : lu_.orderingName();
 }
 
 double LinearSolver::rcond() const { return symmetric_ ? ldlt_.rcond() : lu_.rcond(); }

@@ -29,6 +29,8 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   /// as a line of beams numbered node by node does, its own order is kept and the fill-
   /// reducing ordering (AMD/METIS), which would cost more than the factorisation, is skipped.
   void analyzePattern(const SparseMatrix& A);
+  /// The fill-reducing ordering the analysis chose: "natural", "AMD", "METIS", "NESDIS".
+  const char* orderingName() const;
 };
 
 /// Entries in the lower envelope of a structurally symmetric A: for each row, from its first
@@ -51,6 +53,8 @@ class LinearSolver {
   bool symmetric() const { return symmetric_; }
   /// "CHOLMOD LDL'" or "UMFPACK LU".
   std::string methodName() const;
+  /// The fill-reducing ordering of the symbolic analysis (SparseLDLT, SparseLU).
+  std::string orderingName() const;
   double rcond() const;
   /// True when the factorisation succeeded and rcond is above tol.
   bool healthy(double tol) const;

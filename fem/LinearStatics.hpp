@@ -36,8 +36,10 @@ class LinearStatics {
   const SparseMatrix& stiffness() const { return K_; }
   double rcond() const { return rcond_; }
   double factorEntries() const { return solver_.factorEntries(); }
-  /// The direct method chosen for K ("CHOLMOD LDL'" when K is symmetric).
-  std::string solverName() const { return solver_.methodName(); }
+  /// The direct method chosen for K and its ordering ("CHOLMOD LDL', AMD ordering").
+  std::string solverName() const {
+    return solver_.methodName() + ", " + solver_.orderingName() + " ordering";
+  }
   /// Seconds spent factorising and solving so far.
   double factorSeconds() const { return factorSeconds_; }
   double solveSeconds() const { return solveSeconds_; }

@@ -21,6 +21,16 @@ class SparseLU : public Eigen::UmfPackLU<SparseMatrix> {
   double factorEntries() const {
     return m_umfpackInfo[UMFPACK_LNZ] + m_umfpackInfo[UMFPACK_UNZ];
   }
+  /// The column ordering UMFPACK's symbolic analysis used ("AMD/COLAMD", "METIS", ...).
+  const char* orderingName() const {
+    switch (int(m_umfpackInfo[UMFPACK_ORDERING_USED])) {
+      case UMFPACK_ORDERING_AMD: return "AMD/COLAMD";
+      case UMFPACK_ORDERING_METIS: return "METIS";
+      case UMFPACK_ORDERING_NONE: return "natural";
+      case UMFPACK_ORDERING_GIVEN: return "given";
+      default: return "UMFPACK's";
+    }
+  }
 };
 
 

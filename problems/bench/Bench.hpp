@@ -1,5 +1,5 @@
 // `beamrotor bench`: times the standard models (medians of repeated runs) and reports their
-// accuracy against the exact references, so speed is never bought with wrong answers.
+// accuracy against exact references, so speed is never bought with wrong answers.
 #pragma once
 
 #include <string>
@@ -8,29 +8,46 @@
 namespace beamrotor {
 
 struct BenchOptions {
-  std::string kind = "planar";  ///< planar (grid3d and rotor: later)
-  int elements = 1000;
-  int modes = 10;               ///< 0 skips the modal part
+  std::string kind = "planar";  ///< planar, grid3d or rotor (StandardModels.hpp)
+  int elements = 1000;          ///< model size, unless dofs > 0
+  /// Lowest modes (rotor: lines of the Campbell diagram); -1 the kind's default (10, rotor
+  /// 12); 0 skips the modal part.
+  int modes = -1;
   int repeat = 3;
+  long long dofs = 0;           ///< > 0: the size whose free dof count is nearest this
+  std::string exportDir;        ///< not empty: write K, M and f there (Matrix Market)
 };
 
-/// Medians over the repeats, seconds.
+/// Medians over the repeats, seconds. For rotor, modalTotal is the Campbell diagram.
 struct BenchTimings {
   double build = 0, assembly = 0, factor = 0, solve = 0, staticTotal = 0, modalTotal = 0;
 };
 
-struct BenchReport {
-  BenchOptions options;
-  int elements = 0, dofs = 0;
-  double factorEntries = 0;          ///< LU fill of the static factorisation
-  BenchTimings median;
-  double midspanW = 0, exactMidspanW = 0, relErrorStatic = 0;
-  std::vector<double> frequenciesHz;
-  double exactLowestHz = 0, relErrorLowestHz = 0;
-  double peakRssMb = 0;
+/// A kind-specific figure (an accuracy or what the kind measures): `key` is its JSON pointer
+/// (e.g. "/midspan_w", "/modal/rel_error_lowest"), `label` its line in the table.
+struct BenchFigure {
+  std::string key;
+  double value = 0;
+  std::string label;
 };
 
-/// Runs the benchmark. Throws std::invalid_argument for an unknown kind.
+struct BenchReport {
+  BenchOptions options;
+  int elements = 0, dofs = 0, freeDofs = 0;  ///< dofs: free and constrained
+  double factorEntries = 0;                  ///< entries of the static factor (fill-in)
+  std::string solver;                        ///< the static direct method and ordering
+  BenchTimings median;
+  std::vector<double> frequenciesHz;         ///< rotor: natural frequencies at rest
+  double relErrorStatic = 0;                 ///< the kind's exact static reference
+  std::vector<BenchFigure> figures;
+  double peakRssMb = 0;
+  std::vector<std::string> exported;         ///< files written by --export
+
+  /// The figure at `key`; throws std::out_of_range when the kind has none.
+  double figure(const std::string& key) const;
+};
+
+/// Runs the benchmark. Throws std::invalid_argument for an unknown kind or a bad size.
 BenchReport runBench(const BenchOptions& options);
 
 /// The report as JSON text (fields documented in README: static.assembly_s, ...).

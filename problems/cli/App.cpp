@@ -50,6 +50,11 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   solveCmd->add_option("--out,-o", solve.outDir,
                        "output directory (default: out/<deck name>/); replaced as a whole")
       ->type_name("DIR");
+  solveCmd->add_option("--export-matrices", solve.exportMatrices,
+                       "also write K, M and f (Matrix Market) and dofs.csv into DIR "
+                       "(default: <out>/matrices)")
+      ->expected(0, 1)
+      ->type_name("[DIR]");
 
   StudyRequest check;
   CLI::App* checkCmd = app.add_subcommand(
@@ -61,16 +66,27 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   CLI::App* benchCmd = app.add_subcommand(
       "bench", "Time a standard model (medians of repeated runs) and report its accuracy "
                "against the exact reference.");
-  benchCmd->add_option("--kind", bench.kind, "standard model: planar")
-      ->check(CLI::IsMember({"planar"}));
-  benchCmd->add_option("--elements", bench.elements, "element count (whole spans of 10)")
-      ->check(CLI::Range(10, 100000000));
-  benchCmd->add_option("--modes", bench.modes, "lowest modes to compute (0: statics only)")
+  benchCmd->add_option("--kind", bench.kind, "standard model: planar, grid3d or rotor")
+      ->check(CLI::IsMember({"planar", "grid3d", "rotor"}));
+  CLI::Option* elements =
+      benchCmd->add_option("--elements", bench.elements,
+                           "element count (planar: whole spans of 10; grid3d: nearest grillage; "
+                           "rotor: a multiple of 4)")
+          ->check(CLI::Range(4, 100000000));
+  benchCmd->add_option("--dofs", bench.dofs, "size the model to the free dof count nearest N")
+      ->type_name("N")
+      ->check(CLI::Range(1LL, 1000000000LL))
+      ->excludes(elements);
+  benchCmd->add_option("--modes", bench.modes,
+                       "lowest modes, rotor: Campbell lines (default 10, rotor 12; 0: statics only)")
       ->check(CLI::Range(0, 1000));
   benchCmd->add_option("--repeat", bench.repeat, "runs; times are medians")
       ->check(CLI::Range(1, 1000));
   benchCmd->add_option("--json", benchJsonPath, "also write the figures as JSON")
       ->type_name("FILE");
+  benchCmd->add_option("--export", bench.exportDir,
+                       "write the model's K, M and load vector (Matrix Market) into DIR")
+      ->type_name("DIR");
 
   try {
     app.parse(argc, argv);
@@ -82,7 +98,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
 
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
-    if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out);
+    if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);
     return checkCommand(check, out, err);
   } catch (const std::exception& e) {
     err << "beamrotor: internal error: " << e.what() << "\n";

@@ -10,11 +10,14 @@
 #include "problems/cli/Progress.hpp"
 #include "problems/cli/Summary.hpp"
 #include "problems/deck/DeckError.hpp"
+#include "problems/output/MatrixExport.hpp"
 #include "problems/output/Output.hpp"
 
 namespace beamrotor::cli {
 
 namespace {
+
+namespace fs = std::filesystem;
 
 /// Runs `body`, turning the deck's diagnostics into one line on `err` and an exit code.
 template <class Body>
@@ -54,6 +57,17 @@ std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(const 
   return {runs, labels};
 }
 
+/// --export-matrices: the model of a single run into dir, of each sweep run into dir/run-<k>
+/// (k from 1, in sweep order).
+void exportStudyMatrices(const Study& s, const std::filesystem::path& dir) {
+  if (s.run) {
+    exportMatrices(*s.run->model, dir);
+    return;
+  }
+  for (std::size_t k = 0; k < s.sweep->runs.size(); ++k)
+    exportMatrices(*s.sweep->runs[k].model, dir / ("run-" + std::to_string(k + 1)));
+}
+
 void printHeader(std::ostream& out, const Study& s, const StudyRequest& request) {
   out << "beamrotor " << BEAMROTOR_VERSION << ": " << s.deck.path;
   if (!s.deck.title.empty()) out << " (" << s.deck.title << ")";
@@ -84,12 +98,17 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     const std::filesystem::path dir =
         options.outDir.empty() ? std::filesystem::path("out") / s.deck.stem
                                : std::filesystem::path(options.outDir);
+    const fs::path matricesDir = options.exportMatrices && !options.exportMatrices->empty()
+                                     ? fs::path(*options.exportMatrices)
+                                     : dir / "matrices";
     std::string writeError;
     try {
       if (s.run)
         writeRunOutputs(*s.run, dir);
       else
         writeSweepOutputs(*s.sweep, dir);
+      if (options.exportMatrices)
+        exportStudyMatrices(s, matricesDir);
     } catch (const std::exception& e) {
       writeError = e.what();
     }
@@ -115,6 +134,8 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
       return int(kSolveFailure);
     }
     out << "results: " << dir.string() << "/\n";
+    if (options.exportMatrices)
+      out << "matrices: " << matricesDir.string() << "/\n";
     return int(kOk);
   });
 }
@@ -129,8 +150,15 @@ int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& e
   });
 }
 
-int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::ostream& out) {
-  const BenchReport report = runBench(options);
+int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::ostream& out,
+                 std::ostream& err) {
+  BenchReport report;
+  try {
+    report = runBench(options);
+  } catch (const std::invalid_argument& e) {
+    err << "beamrotor bench: " << e.what() << "\n";
+    return kInputError;
+  }
   out << benchTable(report);
   if (!jsonPath.empty()) {
     std::ofstream json(jsonPath);

@@ -2,6 +2,7 @@
 // directly): each reads a deck, solves it and reports, returning the process exit code.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -13,6 +14,8 @@ namespace beamrotor::cli {
 struct SolveOptions {
   StudyRequest study;
   std::string outDir;  ///< empty: out/<deck stem>
+  /// Set: also export the free-free matrices there (empty: <outDir>/matrices).
+  std::optional<std::string> exportMatrices;
 };
 
 /// `beamrotor solve`: solve, write results.json, CSV, VTK and charts, print a summary.
@@ -22,6 +25,8 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
 int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err);
 
 /// `beamrotor bench`: prints the benchmark table; writes its JSON to jsonPath when given.
-int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::ostream& out);
+/// A size the kind cannot build is one line on err and kInputError.
+int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::ostream& out,
+                 std::ostream& err);
 
 }  // namespace beamrotor::cli

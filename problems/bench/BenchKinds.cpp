@@ -1,0 +1,48 @@
+// Bookkeeping every benchmark kind shares (see BenchKinds.hpp).
+#include <algorithm>
+
+#include "problems/bench/BenchKinds.hpp"
+#include "problems/output/MatrixExport.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+void BenchSamples::addStatic(double buildSeconds, const StaticResult& s, BenchReport& report) {
+  build_.push_back(buildSeconds);
+  assembly_.push_back(s.time.assembly);
+  factor_.push_back(s.time.factor);
+  solve_.push_back(s.time.solve);
+  total_.push_back(s.time.total);
+  report.elements = s.size.elements;
+  report.dofs = s.size.dofs;
+  report.freeDofs = s.size.freeDofs;
+  report.factorEntries = s.size.factorEntries;
+  report.solver = s.solver;
+}
+
+BenchTimings BenchSamples::medians() const {
+  return {median(build_), median(assembly_), median(factor_),
+          median(solve_), median(total_),    median(modal_)};
+}
+
+int modesOrDefault(const BenchOptions& options, int kindDefault) {
+  return options.modes < 0 ? kindDefault : options.modes;
+}
+
+void exportIfAsked(const BenchOptions& options, const Model& model, BenchReport& report) {
+  if (options.exportDir.empty()) return;
+  for (const auto& file : exportMatrices(model, options.exportDir))
+    report.exported.push_back(file.string());
+}
+
+}  // namespace beamrotor
