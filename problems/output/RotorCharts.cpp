@@ -31,7 +31,7 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
   };
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << "  set title " << gnuplotText(caption) << " font ',13'\n"
+       << "  set title " << captionText(caption) << " font ',13'\n"
        << "  set grid\n  set key below\n"
        << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'whirl frequency [Hz]'\n"
        << "  set xrange [" << number(rpm.front()) << ":" << number(rpm.back()) << "]\n"

@@ -171,9 +171,11 @@ TEST_SUITE("rotor decks") {
             kClosedForm * 180);
     }
 
-    // 2. The tables: one Campbell row per speed, one critical speed per crossing line.
+    // 2. The tables and charts: one Campbell row per speed, one critical speed per crossing
+    //    line; gnuplot drew both charts (a script error leaves only a .log).
     for (const char* f : {"campbell_campbell.csv", "campbell_critical_speeds.csv",
-                          "unbalance_unbalance.csv", "spin_modes.csv", "spin.pvd"})
+                          "unbalance_unbalance.csv", "spin_modes.csv", "spin.pvd",
+                          "campbell_campbell.svg", "unbalance_unbalance.svg"})
       CHECK(fs::exists(dir / f));
     std::ifstream campbell(dir / "campbell_campbell.csv");
     int rows = -1;  // the header
