@@ -27,8 +27,9 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # Speed figures (never part of `make test`), side by side with SciPy on the same machine:
-# planar statics at 10^3 .. 10^6 elements and 10 modes at 10^4, medians of 3 runs; JSON,
-# ratios (summary.json) and the scaling chart in out/bench/.
+# planar statics at 10^3 .. 10^6 elements and 10 modes at 10^4, medians of 3 runs; grid3d at
+# 10^6 dofs (statics and 10 modes); rotor, 200 elements (Campbell, 50 speeds x 12 modes).
+# JSON, ratios (summary.json) and the scaling chart in out/bench/.
 BENCH_PACKAGES := python3-scipy
 PY             := /usr/bin/python3
 bench: build
@@ -44,6 +45,10 @@ bench: build
 	  --json out/bench/planar_modal_10000.json
 	$(PY) tests/bench/planar_scipy.py --elements 10000 --modes 10 \
 	  --json out/bench/scipy_modal_10000.json
+	./$(BUILD)/beamrotor bench --kind grid3d --dofs 1000000 --modes 10 --repeat 1 \
+	  --json out/bench/grid3d_1000000.json
+	./$(BUILD)/beamrotor bench --kind rotor --elements 200 --repeat 3 \
+	  --json out/bench/rotor_200.json
 	$(PY) tests/bench/compare.py out/bench
 
 clean:

@@ -93,6 +93,26 @@ def main():
         print(f"planar modal, {a['elements']} elements, {len(fa)} modes: beamrotor "
               f"{a['modal']['total_s']:.3f} s, SciPy eigsh {b['modal']['total_s']:.2f} s, "
               f"{ratio:.1f}x; frequencies agree to {agreement:.1e}")
+    grid = os.path.join(directory, "grid3d_1000000.json")
+    if os.path.exists(grid):
+        g = load(grid)
+        summary["grid3d"] = {k: g[k] for k in ("free_dofs", "factor_entries", "solver",
+                                               "peak_rss_mb", "symmetry_error")}
+        summary["grid3d"].update(static_s=g["static"]["total_s"],
+                                 modal_s=g.get("modal", {}).get("total_s"))
+        print(f"grid3d, {g['free_dofs']} free dofs: static {g['static']['total_s']:.2f} s "
+              f"(factor {g['static']['factor_s']:.2f} s, {g['solver']}, "
+              f"{g['factor_entries']:.3g} factor entries), 10 modes "
+              f"{g.get('modal', {}).get('total_s', float('nan')):.1f} s, "
+              f"peak {g['peak_rss_mb']:.0f} MB")
+    rotor = os.path.join(directory, "rotor_200.json")
+    if os.path.exists(rotor):
+        r = load(rotor)
+        summary["rotor"] = {"elements": r["elements"], "campbell_s": r["modal"]["total_s"],
+                            "rel_error_planar_twin": r["modal"]["rel_error_planar_twin"]}
+        print(f"rotor, {r['elements']} elements: Campbell of {r['campbell']['speeds']:.0f} "
+              f"speeds x {r['campbell']['modes']:.0f} modes in {r['modal']['total_s']:.2f} s "
+              f"(target 1 s); at rest vs planar model {r['modal']['rel_error_planar_twin']:.1e}")
     with open(os.path.join(directory, "summary.json"), "w") as fh:
         json.dump(summary, fh, indent=2)
     print(f"figures: {directory}/summary.json, {directory}/planar_static_scaling.svg")
