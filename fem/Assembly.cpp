@@ -160,11 +160,14 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
   return f;
 }
 
-Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
+                              bool constrainedOnly) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
+  const auto constrained = [&](const NodeDof& d) { return dofs.isConstrained(dofs.equation(d)); };
   for (const auto& e : model.elements()) {
-    const ElementVector fe = e->endForces(gather(*e, dofs, u));
     const auto d = e->dofs();
+    if (constrainedOnly && std::none_of(d.begin(), d.end(), constrained)) continue;
+    const ElementVector fe = e->endForces(gather(*e, dofs, u));
     for (int a = 0; a < int(d.size()); ++a) r[dofs.equation(d[a])] += fe[a];
   }
   return r;

@@ -49,7 +49,11 @@ Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs);
 Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs);
 
 /// Full-length vector of the element forces K u - f_elem for a full-length displacement u;
-/// at a constrained dof, this minus the nodal loads there is the support reaction.
-Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u);
+/// at a constrained dof, this minus the nodal loads there is the support reaction. With
+/// `constrainedOnly`, only elements touching a constrained dof are visited (the entries at
+/// constrained dofs are complete, the others are not): reactions of a large model in the time
+/// of its few supported elements.
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
+                              bool constrainedOnly = false);
 
 }  // namespace beamrotor

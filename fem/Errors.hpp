@@ -15,6 +15,13 @@ class SolveError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A matrix that had to be factorised is singular to working precision (e.g. K - sigma M with
+/// sigma on an eigenvalue, or K of a mechanism at sigma = 0).
+class SingularSystem : public SolveError {
+ public:
+  using SolveError::SolveError;
+};
+
 /// The structure can move without straining: the listed dofs take part in a zero-energy mode.
 class UnsupportedStructure : public SolveError {
  public:

@@ -74,9 +74,9 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   return u;
 }
 
-Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u) const {
+Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u, bool constrainedOnly) const {
   // Element forces already net out the loads the elements carry.
-  return elementForces(model_, dofs_, u) - nodalLoads_;
+  return elementForces(model_, dofs_, u, constrainedOnly) - nodalLoads_;
 }
 
 }  // namespace beamrotor

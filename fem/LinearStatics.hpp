@@ -30,7 +30,8 @@ class LinearStatics {
   Eigen::VectorXd solve(const std::vector<HeldDof>& held, double singularRcond);
 
   /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
-  Eigen::VectorXd residual(const Eigen::VectorXd& u) const;
+  /// With `constrainedOnly`, the entries are complete at constrained dofs only (reactions).
+  Eigen::VectorXd residual(const Eigen::VectorXd& u, bool constrainedOnly = false) const;
 
   const DofMap& dofs() const { return dofs_; }
   const SparseMatrix& stiffness() const { return K_; }

@@ -52,7 +52,7 @@ ModalResult solveModes(const Model& model, const ModalOptions& options) {
   EigenPairs pairs;
   try {
     pairs = symmetricEigenpairs(K, M, std::min(options.modes, dofs.freeCount()), options.shift);
-  } catch (const SolveError& e) {
+  } catch (const SingularSystem& e) {
     if (options.shift == 0) {
       const auto moving = zeroEnergyDofs(K, dofs);
       if (!moving.empty())

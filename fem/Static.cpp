@@ -31,7 +31,7 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
 
   // 3. Recover reactions: what each support exerts, K u - f at its dofs.
   const DofMap& dofs = system.dofs();
-  const Eigen::VectorXd r = system.residual(u);
+  const Eigen::VectorXd r = system.residual(u, /*constrainedOnly=*/true);
   for (const Support& s : model.supports())
     for (const PrescribedDof& p : s.dofs)
       result.reactions.push_back({s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof)]});

@@ -59,7 +59,7 @@ EigenPairs denseEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
   if (llt.info() != Eigen::Success) {
     // Either sigma sits inside the spectrum or on an eigenvalue: fall back on an LU check.
     Eigen::FullPivLU<Eigen::MatrixXd> lu(Kd - sigma * Md);
-    if (!lu.isInvertible()) throw SolveError(singularShiftMessage(sigma, 0.0));
+    if (!lu.isInvertible()) throw SingularSystem(singularShiftMessage(sigma, 0.0));
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ges(Kd, Md);
     if (ges.info() != Eigen::Success)
       throw SolveError("modal analysis: the dense generalised eigensolver failed");
@@ -120,47 +120,27 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
   op.shift = sigma;
   auto lu = std::make_shared<SparseLU>();
   lu->compute(SparseMatrix(K - sigma * M));
-  if (!lu->healthy(kSingularRcond)) throw SolveError(singularShiftMessage(sigma, lu->rcond()));
+  if (!lu->healthy(kSingularRcond)) throw SingularSystem(singularShiftMessage(sigma, lu->rcond()));
   op.factorEntries = lu->factorEntries();
   op.solve = [lu](const Eigen::VectorXd& b) { return Eigen::VectorXd(lu->solve(b)); };
   return op;
 }
 
-/// Throws when a Sturm count finds more eigenvalues below the largest one returned than
-/// were returned below it: Lanczos missed a mode (possible with multiple eigenvalues).
-void checkNoneMissed(SturmCounter& counter, const Eigen::VectorXd& values, double shift) {
-  if (values.size() == 0) return;
+/// How many eigenvalues a Sturm count finds below (just under) the largest of `values` beyond
+/// those of `values` that lie there: modes Lanczos missed (0 when none).
+int missedBelow(SturmCounter& counter, const Eigen::VectorXd& values, double shift) {
+  if (values.size() == 0) return 0;
   const double top = values.maxCoeff();
   const double justBelow = top - 1e-9 * std::abs(top - shift) - 1e-12 * std::abs(top);
   const int found = int((values.array() < justBelow).count());
-  const int counted = counter.below(justBelow);
-  if (counted > found)
-    throw SolveError("modal analysis: a Sturm count finds " + std::to_string(counted) +
-                     " eigenvalues below " + std::to_string(justBelow) + " rad^2/s^2 but " +
-                     "Lanczos returned " + std::to_string(found) +
-                     "; ask for more modes or give a shift");
+  return std::max(0, counter.below(justBelow) - found);
 }
 
-}  // namespace
-
-EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count,
-                               double sigma) {
-  const int n = int(K.rows());
-  if (count <= 0 || n == 0) return {};
-  if (n <= kDenseLimit || count >= n - 1) {
-    EigenPairs dense = denseEigenpairs(K, M, count, sigma);
-    dense.shiftUsed = sigma;
-    return dense;
-  }
-
-  // 1. Factorise K - shift M once, with the shift moved up to the lowest eigenvalues when
-  //    sigma lies below all of them.
-  SturmCounter counter(K, M);
-  const int belowSigma = counter.below(sigma);
-  const ShiftedInverse op = shiftedInverse(counter, belowSigma, K, M, count, sigma);
-
-  // 2. Reverse-communication Lanczos: OP = (K - sigma M)^-1 M, inner product B = M.
-  const a_int nev = count;
+/// The nev eigenpairs of (K - shift M)^-1 M of largest magnitude (those nearest the shift) by
+/// reverse-communication Lanczos with the M inner product, M-normalised.
+EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWanted) {
+  const a_int n = a_int(M.rows());
+  const a_int nev = nevWanted;
   // A generous Lanczos basis: clustered spectra (long continuous beams) converge in a few
   // restarts with it, and it costs only n x ncv doubles.
   const a_int ncv = std::min<a_int>(n, std::max<a_int>(4 * nev + 1, 40));
@@ -198,7 +178,7 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
                      std::to_string(kMaxRestarts) + " restarts (" +
                      std::to_string(iparam[4]) + " of " + std::to_string(nev) + " modes)");
 
-  // 3. Ritz vectors.
+  // Ritz vectors.
   std::vector<a_int> select(ncv);
   Eigen::VectorXd d(nev);
   Eigen::MatrixXd z(n, nev);
@@ -209,12 +189,49 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
   if (info != 0)
     throw SolveError("modal analysis: ARPACK dseupd failed with info = " + std::to_string(info));
   for (int k = 0; k < nev; ++k) z.col(k) /= std::sqrt(z.col(k).dot(M * z.col(k)));
-  // The shift was only moved within [sigma, lambda_1): nearest it is still nearest sigma.
-  EigenPairs out = nearest(d, z, count, op.shift);
-  if (belowSigma == 0) checkNoneMissed(counter, out.values, op.shift);
-  out.factorEntries = op.factorEntries;
-  out.shiftUsed = op.shift;
+  EigenPairs out;
+  out.values = d;
+  out.vectors = std::move(z);
   return out;
+}
+
+}  // namespace
+
+EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count,
+                               double sigma) {
+  const int n = int(K.rows());
+  if (count <= 0 || n == 0) return {};
+  if (n <= kDenseLimit || count >= n - 1) {
+    EigenPairs dense = denseEigenpairs(K, M, count, sigma);
+    dense.shiftUsed = sigma;
+    return dense;
+  }
+
+  // 1. Factorise K - shift M once, with the shift moved up to the lowest eigenvalues when
+  //    sigma lies below all of them.
+  SturmCounter counter(K, M);
+  const int belowSigma = counter.below(sigma);
+  const ShiftedInverse op = shiftedInverse(counter, belowSigma, K, M, count, sigma);
+
+  // 2. Lanczos; when a Sturm count shows that it missed eigenvalues among the lowest (it can,
+  //    with multiple or tightly clustered ones), again with a larger subspace.
+  int nev = count;
+  for (int attempt = 0;; ++attempt) {
+    const EigenPairs all = lanczos(M, op, nev);
+    // The shift was only moved within [sigma, lambda_1): nearest it is still nearest sigma.
+    EigenPairs out = nearest(all.values, all.vectors, count, op.shift);
+    const int missed = belowSigma == 0 ? missedBelow(counter, out.values, op.shift) : 0;
+    if (missed == 0) {
+      out.factorEntries = op.factorEntries;
+      out.shiftUsed = op.shift;
+      return out;
+    }
+    if (attempt == 2 || nev >= n - 2)
+      throw SolveError("modal analysis: a Sturm count finds " + std::to_string(missed) +
+                       " more eigenvalue(s) below the highest one found than Lanczos returned, "
+                       "after " + std::to_string(attempt + 1) + " attempts; give a shift");
+    nev = std::min(n - 2, nev + 2 * missed + 2);
+  }
 }
 
 }  // namespace beamrotor
