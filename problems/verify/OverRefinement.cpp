@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "fem/Static.hpp"
+#include "problems/deck/OverRefinementWarning.hpp"
 #include "problems/verify/VerifyModels.hpp"
 
 namespace beamrotor::verify {
@@ -35,6 +36,7 @@ RefinementPoint solveMesh(int n) {
   p.discretisation = 1.0 / (3.0 * double(n) * double(n));
   p.rcond = r.rcond;
   p.seconds = r.time.total;
+  p.warned = overRefinementWarning(model, r).has_value();
   return p;
 }
 

@@ -14,6 +14,7 @@ struct RefinementPoint {
   double discretisation = 0;  ///< the exact discretisation part of it, 1 / (3 N^2)
   double rcond = 0;           ///< CHOLMOD's reciprocal condition estimate of the factor
   double seconds = 0;         ///< wall time of the solve
+  bool warned = false;        ///< whether `beamrotor solve` would warn (OverRefinementWarning)
 };
 
 /// A steel cantilever (1 m, 20 x 20 mm) under a uniform load applied as nodal forces q h

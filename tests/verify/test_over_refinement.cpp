@@ -21,4 +21,17 @@ TEST_SUITE("over-refinement") {
     CHECK(p[3].rcond < 1e-12);
     CHECK(p[1].rcond / p[2].rcond > 100);
   }
+
+  TEST_CASE("solve's warning fires where the measured error has left the discretisation curve") {
+    // The rule (eps / rcond against (h/L)^2 / 3) only sees the factorisation; the study knows
+    // the exact error. They must agree on each side of the turn: no warning while the error is
+    // the closed-form 1/(3 N^2) (to 3 %), a warning once it is more than twice that.
+    for (const auto& p : overRefinementStudy({10, 30, 100, 300, 1000, 3000, 10000})) {
+      CAPTURE(p.elements);
+      if (p.error < 1.03 * p.discretisation) CHECK_FALSE(p.warned);
+      if (p.error > 2 * p.discretisation) CHECK(p.warned);
+      MESSAGE(p.elements << ": error/discretisation " << p.error / p.discretisation
+                         << ", warned " << p.warned);
+    }
+  }
 }
