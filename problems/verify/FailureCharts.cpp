@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "problems/verify/EigenCluster.hpp"
+#include "problems/verify/FreeFreeShift.hpp"
 #include "problems/verify/OverRefinement.hpp"
 #include "problems/verify/PenaltySupport.hpp"
 #include "problems/verify/ShearLocking.hpp"
@@ -83,6 +84,26 @@ StudyChart penalty() {
   return c;
 }
 
+StudyChart freeFreeShifts() {
+  const ShiftStudy study = freeFreeShiftStudy(halfDecades(1e-8, 1e2));
+  StudyChart c{"free_free_shift", "Shift-invert on a free-free beam",
+               "At shift 0 the stiffness of a free-free beam is singular and the modal solver "
+               "stops with a clear error (\"" + study.zeroShiftError.substr(0, 160) +
+                   "...\"); any negative shift works, the first elastic frequency staying at its "
+                   "discretisation error and the rigid-body eigenvalues at round-off.",
+               "-shift / lambda_1", "relative to lambda_1 / relative error", "", true, true, {}};
+  StudySeries elastic{"error of the first elastic frequency", {}, {}},
+      rigid{"rigid-body |lambda| / lambda_1", {}, {}};
+  for (const ShiftPoint& p : study.points) {
+    elastic.x.push_back(p.shiftRatio);
+    elastic.y.push_back(p.elasticError);
+    rigid.x.push_back(p.shiftRatio);
+    rigid.y.push_back(std::max(p.rigidBody, 1e-17));
+  }
+  c.series = {elastic, rigid};
+  return c;
+}
+
 StudyChart clusters() {
   StudyChart c{"eigenvalue_clusters", "Equal frequencies in two planes: vectors against subspaces",
                "A square beam has every bending frequency twice: the computed vectors are an "
@@ -146,7 +167,7 @@ StudyChart overRefinement(int largestMesh) {
 }  // namespace
 
 std::vector<StudyChart> failureCharts(const FailureChartOptions& options) {
-  return {lockingBySlenderness(), lockingByMesh(), penalty(), clusters(), timeSteps(),
+  return {lockingBySlenderness(), lockingByMesh(), penalty(), freeFreeShifts(), clusters(), timeSteps(),
           overRefinement(options.largestMesh)};
 }
 
