@@ -3,9 +3,8 @@
 #include <algorithm>
 
 #include "fem/Stopwatch.hpp"
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/Field.hpp"
 #include "problems/deck/Study.hpp"
-#include "problems/cli/Summary.hpp"
 
 namespace beamrotor::verify {
 
@@ -25,7 +24,7 @@ DeckChecks checkDeck(const std::filesystem::path& path) {
     else
       for (std::size_t i = 0; i < s.sweep->runs.size(); ++i)
         for (const Check& c : s.sweep->runs[i].checks)
-          out.checks.push_back({s.sweep->parameter + " = " + cli::formatValue(s.sweep->values[i]), c});
+          out.checks.push_back({s.sweep->parameter + " = " + formatNumber(s.sweep->values[i]), c});
   } catch (const std::exception& e) {  // DeckError, DeckSolveError: one line each
     out.error = e.what();
   }

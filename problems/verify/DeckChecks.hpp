@@ -12,8 +12,8 @@ namespace beamrotor::verify {
 
 /// The checks of one deck, or why it could not be solved.
 struct DeckChecks {
-  std::string deck;    ///< file name, e.g. "cantilever.yaml"
-  std::string title;   ///< the deck's title
+  std::string deck;                                   ///< file name, e.g. "cantilever.yaml"
+  std::string title;                                  ///< the deck's title
   std::vector<std::pair<std::string, Check>> checks;  ///< (run label, check); label empty
                                                       ///< unless the deck sweeps
   std::string error;   ///< the one-line diagnostic when reading or solving failed

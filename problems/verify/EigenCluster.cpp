@@ -40,8 +40,8 @@ std::vector<ClusterPoint> eigenClusterStudy(int pairs) {
   spec.segments.push_back({kLength, steelRectangle(0.04, 0.04), 60, 0, {}});
   spec.points = {{"start", 0}, {"end", kLength}};
   const Line line = buildLine(model, spec);
-  model.addSupport({"left", line.nodes.front(),
-                    {{Dof::ux, 0}, {Dof::uy, 0}, {Dof::uz, 0}, {Dof::rx, 0}}});
+  model.addSupport(
+      {"left", line.nodes.front(), {{Dof::ux, 0}, {Dof::uy, 0}, {Dof::uz, 0}, {Dof::rx, 0}}});
   model.addSupport({"right", line.nodes.back(), {{Dof::uy, 0}, {Dof::uz, 0}}});
   const ModalResult r = solveModes(model, {2 * pairs + 2, 0});
   std::vector<const Mode*> bending;

@@ -21,7 +21,8 @@ std::vector<double> halfDecades(double from, double to) {
 }
 
 /// The three Timoshenko elements' errors as series against x.
-std::vector<StudySeries> lockingSeries(const std::vector<LockingPoint>& points, bool bySlenderness) {
+std::vector<StudySeries> lockingSeries(const std::vector<LockingPoint>& points,
+                                       bool bySlenderness) {
   std::vector<StudySeries> s{{"linear, full integration (locks)", {}, {}},
                              {"linear, reduced integration", {}, {}},
                              {"interdependent interpolation (exact)", {}, {}}};
@@ -37,35 +38,52 @@ std::vector<StudySeries> lockingSeries(const std::vector<LockingPoint>& points, 
 }
 
 StudyChart lockingBySlenderness() {
-  StudyChart c{"shear_locking_slenderness", "Shear locking against slenderness (8 elements)",
+  StudyChart c{"shear_locking_slenderness",
+               "Shear locking against slenderness (8 elements)",
                "The naive linear Timoshenko element with full integration loses the tip "
                "deflection of a tip-loaded cantilever as L/h grows (99.99 % off at L/h = 10^4), "
                "while reduced integration stays at its 1/(4n^2) discretisation error and the "
                "interdependent-interpolation element is exact to round-off.",
-               "slenderness L/h", "relative error of the tip deflection", "", true, true, {}};
+               "slenderness L/h",
+               "relative error of the tip deflection",
+               "",
+               true,
+               true,
+               {}};
   std::vector<double> slenderness = halfDecades(10, 1e4);
   c.series = lockingSeries(lockingAgainstSlenderness(slenderness, 8), true);
   return c;
 }
 
 StudyChart lockingByMesh() {
-  StudyChart c{"shear_locking_mesh", "Shear locking against the element count (L/h = 1000)",
+  StudyChart c{"shear_locking_mesh",
+               "Shear locking against the element count (L/h = 1000)",
                "Refining cures locking only very slowly (still 55 % off with 512 elements), "
                "whereas the reduced-integration element converges at order 2 and the "
                "interdependent element is exact on every mesh.",
-               "elements", "relative error of the tip deflection", "", true, true, {}};
-  c.series = lockingSeries(lockingAgainstElements(1000, {2, 4, 8, 16, 32, 64, 128, 256, 512}),
-                           false);
+               "elements",
+               "relative error of the tip deflection",
+               "",
+               true,
+               true,
+               {}};
+  c.series =
+      lockingSeries(lockingAgainstElements(1000, {2, 4, 8, 16, 32, 64, 128, 256, 512}), false);
   return c;
 }
 
 StudyChart penalty() {
-  StudyChart c{"penalty_joint", "Penalty joint against elimination",
+  StudyChart c{"penalty_joint",
+               "Penalty joint against elimination",
                "A cantilever joined at midspan by springs of stiffness k: soft springs add their "
                "own compliance (3.75 EI/(k L^3)), stiff ones destroy the conditioning (rcond "
                "~ 1/k, dashed) until round-off dominates; eliminating the joint (a shared node) "
                "is exact to round-off at every scale.",
-               "k / (EI/L^3)", "relative error of the tip deflection", "1 / rcond", true, true,
+               "k / (EI/L^3)",
+               "relative error of the tip deflection",
+               "1 / rcond",
+               true,
+               true,
                {}};
   StudySeries error{"penalty springs", {}, {}}, modelling{"spring compliance 3.75/ratio", {}, {}},
       exact{"elimination (shared node)", {}, {}}, condition{"1 / rcond, penalty", {}, {}, true};
@@ -86,12 +104,19 @@ StudyChart penalty() {
 
 StudyChart freeFreeShifts() {
   const ShiftStudy study = freeFreeShiftStudy(halfDecades(1e-8, 1e2));
-  StudyChart c{"free_free_shift", "Shift-invert on a free-free beam",
+  StudyChart c{"free_free_shift",
+               "Shift-invert on a free-free beam",
                "At shift 0 the stiffness of a free-free beam is singular and the modal solver "
-               "stops with a clear error (\"" + study.zeroShiftError.substr(0, 160) +
+               "stops with a clear error (\"" +
+                   study.zeroShiftError.substr(0, 160) +
                    "...\"); any negative shift works, the first elastic frequency staying at its "
                    "discretisation error and the rigid-body eigenvalues at round-off.",
-               "-shift / lambda_1", "relative to lambda_1 / relative error", "", true, true, {}};
+               "-shift / lambda_1",
+               "relative to lambda_1 / relative error",
+               "",
+               true,
+               true,
+               {}};
   StudySeries elastic{"error of the first elastic frequency", {}, {}},
       rigid{"rigid-body |lambda| / lambda_1", {}, {}};
   for (const ShiftPoint& p : study.points) {
@@ -105,12 +130,18 @@ StudyChart freeFreeShifts() {
 }
 
 StudyChart clusters() {
-  StudyChart c{"eigenvalue_clusters", "Equal frequencies in two planes: vectors against subspaces",
+  StudyChart c{"eigenvalue_clusters",
+               "Equal frequencies in two planes: vectors against subspaces",
                "A square beam has every bending frequency twice: the computed vectors are an "
                "arbitrary basis of each 2-D eigenspace (about 1 rad from the exact single-plane "
                "shapes), while the largest principal angle between computed and exact "
                "eigenspaces is at round-off.",
-               "mode pair n", "angle (rad)", "", false, true, {}};
+               "mode pair n",
+               "angle (rad)",
+               "",
+               false,
+               true,
+               {}};
   StudySeries vector{"first vector against the exact y-plane shape", {}, {}},
       subspace{"largest principal angle, 2-D eigenspaces", {}, {}};
   for (const ClusterPoint& p : eigenClusterStudy(3)) {
@@ -124,11 +155,17 @@ StudyChart clusters() {
 }
 
 StudyChart timeSteps() {
-  StudyChart c{"central_difference_steps", "Central difference at 0.9 and 1.1 dt_crit",
+  StudyChart c{"central_difference_steps",
+               "Central difference at 0.9 and 1.1 dt_crit",
                "Released from a 1 mm bend, a lumped-mass cantilever stepped by central "
                "difference keeps its amplitude at 0.9 dt_crit (dt_crit = 2/omega_max) and "
                "blows up exponentially at 1.1 dt_crit.",
-               "step", "|tip deflection| (m)", "", false, true, {}};
+               "step",
+               "|tip deflection| (m)",
+               "",
+               false,
+               true,
+               {}};
   for (const TimeStepRun& r : timeStepStudy({0.9, 1.1}, 300)) {
     StudySeries s{"dt = " + std::to_string(r.stepFactor).substr(0, 3) + " dt_crit", {}, {}};
     for (std::size_t i = 0; i < r.tip.size(); ++i) {
@@ -141,12 +178,18 @@ StudyChart timeSteps() {
 }
 
 StudyChart overRefinement(int largestMesh) {
-  StudyChart c{"over_refinement", "Over-refinement of a cantilever",
+  StudyChart c{"over_refinement",
+               "Over-refinement of a cantilever",
                "The tip error of a uniformly loaded cantilever (load lumped to the nodes) follows "
                "its exact discretisation error 1/(3N^2) until round-off, growing with the "
                "condition estimate 1/rcond (dashed), takes over near a few hundred elements; "
                "past 10^4 elements the answer is percent-level wrong.",
-               "elements N", "relative error of the tip deflection", "1 / rcond", true, true, {}};
+               "elements N",
+               "relative error of the tip deflection",
+               "1 / rcond",
+               true,
+               true,
+               {}};
   std::vector<int> meshes;
   for (double n = 10; n <= largestMesh * 1.0001; n *= std::sqrt(10.0))
     meshes.push_back(int(std::lround(n)));
@@ -167,7 +210,12 @@ StudyChart overRefinement(int largestMesh) {
 }  // namespace
 
 std::vector<StudyChart> failureCharts(const FailureChartOptions& options) {
-  return {lockingBySlenderness(), lockingByMesh(), penalty(), freeFreeShifts(), clusters(), timeSteps(),
+  return {lockingBySlenderness(),
+          lockingByMesh(),
+          penalty(),
+          freeFreeShifts(),
+          clusters(),
+          timeSteps(),
           overRefinement(options.largestMesh)};
 }
 

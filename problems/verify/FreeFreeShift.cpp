@@ -36,8 +36,8 @@ ShiftStudy freeFreeShiftStudy(const std::vector<double>& shiftRatios) {
     ShiftPoint p;
     p.shiftRatio = ratio;
     p.elasticError = std::abs(r.modes.at(2).frequencyHz - f1) / f1;
-    p.rigidBody = std::max(std::abs(r.modes[0].eigenvalue), std::abs(r.modes[1].eigenvalue)) /
-                  lambda1;
+    p.rigidBody =
+        std::max(std::abs(r.modes[0].eigenvalue), std::abs(r.modes[1].eigenvalue)) / lambda1;
     study.points.push_back(p);
   }
   return study;

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "problems/output/XmlText.hpp"
+
 namespace beamrotor::verify {
 
 namespace {
@@ -24,11 +26,11 @@ std::string scientific(double x, int digits) {
 }
 
 void writeDeck(std::ostringstream& html, const DeckChecks& d) {
-  html << "<h3>" << htmlEscape(d.deck);
-  if (!d.title.empty()) html << ": " << htmlEscape(d.title);
+  html << "<h3>" << xmlEscape(d.deck);
+  if (!d.title.empty()) html << ": " << xmlEscape(d.title);
   html << "</h3>\n";
   if (!d.error.empty()) {
-    html << "<p class=\"fail\">not solved: " << htmlEscape(d.error) << "</p>\n";
+    html << "<p class=\"fail\">not solved: " << xmlEscape(d.error) << "</p>\n";
     return;
   }
   if (d.checks.empty()) {
@@ -38,34 +40,22 @@ void writeDeck(std::ostringstream& html, const DeckChecks& d) {
   html << "<table><tr><th>check</th><th>run</th><th>quantity</th><th>computed</th>"
           "<th>reference</th><th>rel. error</th><th>tolerance</th><th>result</th></tr>\n";
   for (const auto& [label, c] : d.checks)
-    html << "<tr><td>" << htmlEscape(c.name) << "</td><td>" << htmlEscape(label) << "</td><td>"
-         << htmlEscape(c.quantity) << "</td><td>" << scientific(c.computed, 9) << "</td><td>"
-         << scientific(c.reference, 9) << "</td><td>" << scientific(c.relError(), 2)
-         << "</td><td>" << scientific(c.tolerance, 2) << "</td><td class=\""
+    html << "<tr><td>" << xmlEscape(c.name) << "</td><td>" << xmlEscape(label) << "</td><td>"
+         << xmlEscape(c.quantity) << "</td><td>" << scientific(c.computed, 9) << "</td><td>"
+         << scientific(c.reference, 9) << "</td><td>" << scientific(c.relError(), 2) << "</td><td>"
+         << scientific(c.tolerance, 2) << "</td><td class=\""
          << (c.pass() ? "pass\">pass" : "fail\">FAIL") << "</td></tr>\n";
   html << "</table>\n";
 }
 
 void writeFigure(std::ostringstream& html, const ReportFigure& f) {
-  html << "<figure>\n<h3>" << htmlEscape(f.title) << "</h3>\n";
+  html << "<figure>\n<h3>" << xmlEscape(f.title) << "</h3>\n";
   const std::string svg = inlineSvg(f.svg);
   html << (svg.empty() ? "<p class=\"fail\">chart not drawn (is gnuplot installed?)</p>" : svg)
-       << "\n<figcaption>" << htmlEscape(f.caption) << "</figcaption>\n</figure>\n";
+       << "\n<figcaption>" << xmlEscape(f.caption) << "</figcaption>\n</figure>\n";
 }
 
 }  // namespace
-
-std::string htmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  return out;
-}
 
 std::string inlineSvg(const std::filesystem::path& svg) {
   std::ifstream in(svg);
@@ -88,7 +78,7 @@ std::string reportHtml(const ReportContent& content) {
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
        << "<title>beamrotor verification report</title>\n<style>" << kStyle
        << "</style></head><body>\n<h1>beamrotor verification report</h1>\n<p>"
-       << htmlEscape(content.generated) << ". Regenerate with <code>make report</code> or "
+       << xmlEscape(content.generated) << ". Regenerate with <code>make report</code> or "
        << "<code>beamrotor report --out DIR</code>.</p>\n"
        << "<h2>1. Checks of the shipped decks</h2>\n<p>" << passed << " of " << checks
        << " checks pass. Each compares a computed quantity with the deck's closed form or "

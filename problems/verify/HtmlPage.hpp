@@ -24,9 +24,6 @@ struct ReportContent {
   std::vector<ReportFigure> failures;
 };
 
-/// text with &, <, >, " escaped for HTML.
-std::string htmlEscape(const std::string& text);
-
 /// The SVG file's <svg> element, without the XML declaration and doctype before it.
 std::string inlineSvg(const std::filesystem::path& svg);
 

@@ -55,6 +55,8 @@ std::vector<PenaltyPoint> penaltyStudy(const std::vector<double>& stiffnessRatio
   return points;
 }
 
-PenaltyPoint eliminatedJoint() { return solveJoint(0); }
+PenaltyPoint eliminatedJoint() {
+  return solveJoint(0);
+}
 
 }  // namespace beamrotor::verify

@@ -29,7 +29,10 @@ std::vector<TimeStepRun> timeStepStudy(const std::vector<double>& stepFactors, i
   Model model;
   LineSpec spec;
   spec.dofs = DofSet{Dof::uy, Dof::rz};
-  spec.segments.push_back({kLength, steelRectangle(0.04, 0.04), 8, 0,
+  spec.segments.push_back({kLength,
+                           steelRectangle(0.04, 0.04),
+                           8,
+                           0,
                            {BeamTheory::eulerBernoulli, MassModel::lumped, true}});
   spec.points = {{"start", 0}, {"end", kLength}};
   const Line line = buildLine(model, spec);

@@ -8,10 +8,10 @@
 namespace beamrotor::verify {
 
 struct TimeStepRun {
-  double stepFactor = 0;          ///< dt / dt_crit
-  double dtCritical = 0;          ///< s
-  std::vector<double> times;      ///< s
-  std::vector<double> tip;        ///< tip deflection (m), initial 1 mm
+  double stepFactor = 0;      ///< dt / dt_crit
+  double dtCritical = 0;      ///< s
+  std::vector<double> times;  ///< s
+  std::vector<double> tip;    ///< tip deflection (m), initial 1 mm
 };
 
 /// One run per factor of the critical step, each `steps` steps long.

@@ -12,8 +12,8 @@ using namespace beamrotor::test;
 
 namespace {
 
-const std::filesystem::path kFixture =
-    std::filesystem::path(BEAMROTOR_SOURCE_DIR) / "tests/problems/over_refined/cantilever_4000.yaml";
+const std::filesystem::path kFixture = std::filesystem::path(BEAMROTOR_SOURCE_DIR) /
+                                       "tests/problems/over_refined/cantilever_4000.yaml";
 
 /// The fixture's statics with its 4000 elements replaced by `elements`.
 std::string cantileverText(int elements) {

@@ -33,7 +33,8 @@ TEST_SUITE("failure studies") {
     const auto byMesh = lockingAgainstElements(1000, {8, 32, 128, 512});
     CHECK(byMesh.back().fullIntegration > 0.5);
     for (const auto& p : byMesh)
-      CHECK(p.reducedIntegration == doctest::Approx(0.25 / (p.elements * p.elements)).epsilon(0.05));
+      CHECK(p.reducedIntegration ==
+            doctest::Approx(0.25 / (p.elements * p.elements)).epsilon(0.05));
   }
 
   TEST_CASE("penalty joint: modelling error 3.75/ratio, then round-off; elimination exact") {

@@ -30,8 +30,8 @@ TEST_SUITE("over-refinement") {
       CAPTURE(p.elements);
       if (p.error < 1.03 * p.discretisation) CHECK_FALSE(p.warned);
       if (p.error > 2 * p.discretisation) CHECK(p.warned);
-      MESSAGE(p.elements << ": error/discretisation " << p.error / p.discretisation
-                         << ", warned " << p.warned);
+      MESSAGE(p.elements << ": error/discretisation " << p.error / p.discretisation << ", warned "
+                         << p.warned);
     }
   }
 }
