@@ -57,7 +57,7 @@ REPORT_DIR := out/report
 .PHONY: report
 report: build
 	rm -rf $(REPORT_DIR) && mkdir -p $(REPORT_DIR)
-	@if ./$(BUILD)/beamrotor converge --help >/dev/null 2>&1; then \
+	@if ./$(BUILD)/beamrotor --help | grep -q '^  converge '; then \
 	  for deck in problems/*.yaml; do \
 	    ./$(BUILD)/beamrotor converge $$deck --out $(REPORT_DIR)/convergence/$$(basename $$deck .yaml) \
 	      || echo "converge: skipped $$deck"; \
