@@ -63,7 +63,10 @@ TEST_SUITE("verification report") {
     options.outDir = dir / "out";
     options.problemsDir = dir / "decks";
     options.failures.largestMesh = 1000;
-    std::filesystem::create_directories(options.outDir);
+    // A chart as `beamrotor converge` would leave it (the hook for the convergence section).
+    std::filesystem::create_directories(options.outDir / "convergence" / "cantilever");
+    std::ofstream(options.outDir / "convergence" / "cantilever" / "error_vs_dofs.svg")
+        << "<?xml version=\"1.0\"?>\n<svg id=\"converge-marker\"></svg>\n";
     std::ostringstream log;
     const ReportSummary s = writeReport(options, log);
     CHECK(s.checks == 7);  // the cantilever deck's seven checks
@@ -73,8 +76,10 @@ TEST_SUITE("verification report") {
     text << in.rdbuf();
     const std::string html = text.str();
     CHECK(html.find("7 of 7 checks pass") != std::string::npos);
-    CHECK(occurrences(html, "<figcaption>") == 7);  // one per failure-case chart
-    if (findGnuplot()) CHECK(occurrences(html, "<svg") == 7);
+    CHECK(occurrences(html, "<figcaption>") == 8);  // the convergence chart, 7 failure cases
+    CHECK(html.find("Convergence: cantilever/error_vs_dofs") != std::string::npos);
+    CHECK(html.find("<svg id=\"converge-marker\">") != std::string::npos);
+    if (findGnuplot()) CHECK(occurrences(html, "<svg") == 8);
     CHECK(html.find("<?xml") == std::string::npos);
     // Text is escaped: the free-free caption quotes the solver's message.
     CHECK(html.find("error (&quot;") != std::string::npos);
