@@ -133,8 +133,9 @@ StudyChart clusters() {
   StudyChart c{"eigenvalue_clusters",
                "Equal frequencies in two planes: vectors against subspaces",
                "A square beam has every bending frequency twice: the computed vectors are an "
-               "arbitrary basis of each 2-D eigenspace (about 1 rad from the exact single-plane "
-               "shapes), while the largest principal angle between computed and exact "
+               "arbitrary basis of each 2-D eigenspace (0.4 to 1.3 rad from the exact single-plane "
+               "shapes, as ARPACK's start vector falls), while the largest principal angle between "
+               "computed and exact "
                "eigenspaces is at round-off.",
                "mode pair n",
                "angle (rad)",
