@@ -54,6 +54,22 @@ bench: build
 clean:
 	rm -rf $(BUILD) out
 
+# The verification report (never part of `make test`; about a minute): out/report/index.html,
+# one self-contained page with every shipped deck's checks, the convergence charts and the
+# failure-case studies. Hook: when this build has `beamrotor converge`, each deck's convergence
+# study is run first into out/report/convergence/<deck>/ and its charts are embedded.
+REPORT_DIR := out/report
+.PHONY: report
+report: build
+	rm -rf $(REPORT_DIR) && mkdir -p $(REPORT_DIR)
+	@if ./$(BUILD)/beamrotor --help | grep -q '^  converge '; then \
+	  for deck in problems/*.yaml; do \
+	    ./$(BUILD)/beamrotor converge $$deck --out $(REPORT_DIR)/convergence/$$(basename $$deck .yaml) \
+	      || echo "converge: skipped $$deck"; \
+	  done; \
+	else echo "beamrotor converge is not in this build: the report's convergence section stays empty"; fi
+	./$(BUILD)/beamrotor report --out $(REPORT_DIR)
+
 # Fuzz the deck reader (clang-14 + libFuzzer, ASan, UBSan): seeds are the shipped decks and the
 # malformed fixtures; new inputs collect in $(FUZZ_BUILD)/corpus, crashes in $(FUZZ_BUILD)/.
 FUZZ_BUILD   := build-fuzz

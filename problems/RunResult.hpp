@@ -39,6 +39,7 @@ struct AnalysisOutcome {
   std::optional<ModalResult> modal;
   std::optional<TransientOutcome> transient;
   std::optional<RotorOutcome> rotor;  ///< the rotor analyses
+  std::vector<std::string> warnings;  ///< not errors, e.g. an over-refined mesh
 };
 
 /// One solved instance of a deck (one set of parameter values).

@@ -4,6 +4,7 @@
 
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
+#include "problems/cli/ReportCommand.hpp"
 
 namespace beamrotor::cli {
 
@@ -88,6 +89,13 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                        "write the model's K, M and load vector (Matrix Market) into DIR")
       ->type_name("DIR");
 
+  verify::ReportOptions report;
+  CLI::App* reportCmd = app.add_subcommand(
+      "report", "Regenerate the verification report (one HTML page): every shipped deck's "
+                "checks, convergence charts when present, and the failure-case studies.");
+  reportCmd->add_option("--out,-o", report.outDir, "output directory (default: out/report/)")
+      ->type_name("DIR");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -99,6 +107,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);
+    if (reportCmd->parsed()) return reportCommand(report, out, err);
     return checkCommand(check, out, err);
   } catch (const std::exception& e) {
     err << "beamrotor: internal error: " << e.what() << "\n";

@@ -142,6 +142,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
     if (a.modal) printModal(out, a);
     if (a.transient) printTransient(out, a);
     if (a.rotor) printRotor(out, a);
+    for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }
 }
 

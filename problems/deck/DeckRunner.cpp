@@ -7,6 +7,7 @@
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
 #include "problems/deck/ModelBuilder.hpp"
+#include "problems/deck/OverRefinementWarning.hpp"
 #include "problems/deck/RunTransient.hpp"
 #include "problems/deck/RunRotor.hpp"
 
@@ -21,6 +22,7 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
   try {
     if (a.type == "static") {
       out.statics = solveStatic(model);
+      if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
     } else if (a.transient) {
       out.transient = runTransient(deck, a, model);
     } else if (isRotorAnalysis(a.type)) {

@@ -231,6 +231,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>
       analyses.push_back(rotorJson(a));
     else  // a kind of analysis this writer does not know yet: at least say it ran
       analyses.push_back({{"type", a.type}, {"name", a.name}});
+    if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;
   }
   doc["analyses"] = analyses;
   doc["checks"] = checksJson(run.checks);

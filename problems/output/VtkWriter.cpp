@@ -20,6 +20,7 @@
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/ModeShapes.hpp"
 #include "problems/output/VtkGrid.hpp"
+#include "problems/output/XmlText.hpp"
 
 namespace beamrotor {
 
@@ -91,33 +92,6 @@ void writeVtu(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
   writer->SetDataModeToBinary();
   if (writer->Write() != 1) throw std::runtime_error("VTK could not write " + file.string());
 }
-
-namespace {
-
-std::string xmlAttribute(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 void writeStaticVtu(const std::filesystem::path& file, const Model& model,
                     const StaticResult& result, const std::vector<StaticStation>& stations) {
@@ -193,7 +167,7 @@ void writePvd(const std::filesystem::path& file, const std::vector<PvdEntry>& en
       << "  <Collection>\n";
   for (const PvdEntry& e : entries)
     out << "    <DataSet timestep=\"" << exactDecimal(e.timestep)
-        << "\" group=\"\" part=\"0\" file=\"" << xmlAttribute(e.file) << "\"/>\n";
+        << "\" group=\"\" part=\"0\" file=\"" << xmlEscape(e.file) << "\"/>\n";
   out << "  </Collection>\n</VTKFile>\n";
   out.close();
   if (!out) throw std::runtime_error("cannot write " + file.string());

@@ -1,0 +1,52 @@
+#include "problems/verify/DeckChecks.hpp"
+
+#include <algorithm>
+
+#include "fem/Stopwatch.hpp"
+#include "problems/deck/Field.hpp"
+#include "problems/deck/Study.hpp"
+
+namespace beamrotor::verify {
+
+namespace {
+
+DeckChecks checkDeck(const std::filesystem::path& path) {
+  DeckChecks out;
+  out.deck = path.filename().string();
+  Stopwatch clock;
+  try {
+    StudyRequest request;
+    request.deckPath = path.string();
+    const Study s = solveStudy(request);
+    out.title = s.deck.title;
+    if (s.run)
+      for (const Check& c : s.run->checks) out.checks.push_back({"", c});
+    else
+      for (std::size_t i = 0; i < s.sweep->runs.size(); ++i)
+        for (const Check& c : s.sweep->runs[i].checks)
+          out.checks.push_back({s.sweep->parameter + " = " + formatNumber(s.sweep->values[i]), c});
+  } catch (const std::exception& e) {  // DeckError, DeckSolveError: one line each
+    out.error = e.what();
+  }
+  out.seconds = clock.lap();
+  return out;
+}
+
+}  // namespace
+
+std::vector<DeckChecks> runDeckChecks(const std::vector<std::filesystem::path>& decks) {
+  std::vector<DeckChecks> out;
+  for (const auto& path : decks) out.push_back(checkDeck(path));
+  return out;
+}
+
+std::vector<std::filesystem::path> decksIn(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> decks;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml")
+      decks.push_back(entry.path());
+  std::sort(decks.begin(), decks.end());
+  return decks;
+}
+
+}  // namespace beamrotor::verify

@@ -1,0 +1,29 @@
+// `beamrotor report`: regenerates the verification report, DIR/index.html, from the shipped
+// decks' checks, the convergence charts found in DIR/convergence/ and the failure-case
+// studies (charts drawn into DIR/charts/).
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+
+#include "problems/verify/FailureCharts.hpp"
+
+namespace beamrotor::verify {
+
+struct ReportOptions {
+  std::filesystem::path outDir = "out/report";
+  std::filesystem::path problemsDir = "problems";  ///< whose *.yaml decks are checked
+  FailureChartOptions failures;
+};
+
+/// What the report found.
+struct ReportSummary {
+  std::filesystem::path page;  ///< DIR/index.html
+  int checks = 0, failedChecks = 0, unsolvedDecks = 0;
+};
+
+/// Builds the report; progress lines go to `log`. Throws std::runtime_error when the page
+/// cannot be written.
+ReportSummary writeReport(const ReportOptions& options, std::ostream& log);
+
+}  // namespace beamrotor::verify
