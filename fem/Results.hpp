@@ -85,6 +85,7 @@ struct ModalResult {
   std::array<double, 3> totalMass{};
   SystemSize size;
   SolveTimings time;
+  std::vector<std::string> warnings;  ///< e.g. modes a Sturm count says were skipped
 };
 
 }  // namespace beamrotor

@@ -221,15 +221,14 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
     // The shift was only moved within [sigma, lambda_1): nearest it is still nearest sigma.
     EigenPairs out = nearest(all.values, all.vectors, count, op.shift);
     const int missed = belowSigma == 0 ? missedBelow(counter, out.values, op.shift) : 0;
-    if (missed == 0) {
+    if (missed == 0 || attempt == 2 || nev >= n - 2) {
+      // Still missing after the retries: the caller reports it (the count itself can be off
+      // by a few for a matrix this near singular, so the modes found are not thrown away).
       out.factorEntries = op.factorEntries;
       out.shiftUsed = op.shift;
+      out.missedBySturmCount = missed;
       return out;
     }
-    if (attempt == 2 || nev >= n - 2)
-      throw SolveError("modal analysis: a Sturm count finds " + std::to_string(missed) +
-                       " more eigenvalue(s) below the highest one found than Lanczos returned, "
-                       "after " + std::to_string(attempt + 1) + " attempts; give a shift");
     nev = std::min(n - 2, nev + 2 * missed + 2);
   }
 }

@@ -17,6 +17,9 @@ struct EigenPairs {
   Eigen::MatrixXd vectors;  ///< M-orthonormal columns
   double factorEntries = 0; ///< fill of the factor of K - shift M (0 for the dense path)
   double shiftUsed = 0;     ///< the shift Lanczos ran at (moved up below the lowest eigenvalue)
+  /// Eigenvalues a Sturm count places below the highest one returned that Lanczos did not
+  /// return, after its retries with larger subspaces (0: none missed, or not checked).
+  int missedBySturmCount = 0;
 };
 
 /// The `count` eigenpairs nearest sigma (for sigma below the spectrum: the lowest ones).

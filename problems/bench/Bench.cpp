@@ -58,6 +58,7 @@ std::string benchJson(const BenchReport& r) {
   j["rel_error_static"] = r.relErrorStatic;
   for (const BenchFigure& f : r.figures) j[nlohmann::json::json_pointer(f.key)] = f.value;
   j["peak_rss_mb"] = r.peakRssMb;
+  j["warnings"] = r.warnings;
   if (!r.exported.empty()) j["exported"] = r.exported;
   return j.dump(2);
 }
@@ -78,6 +79,7 @@ std::string benchTable(const BenchReport& r) {
       << " s, " << r.frequenciesHz.size() << " modes, f1 = " << r.frequenciesHz[0] << " Hz\n";
   for (const BenchFigure& f : r.figures) s << "  " << f.label << ": " << f.value << "\n";
   s << "  peak RSS   " << r.peakRssMb << " MB\n";
+  for (const std::string& w : r.warnings) s << "  warning: " << w << "\n";
   for (const std::string& file : r.exported) s << "  exported   " << file << "\n";
   return s.str();
 }

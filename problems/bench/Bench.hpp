@@ -42,6 +42,7 @@ struct BenchReport {
   std::vector<BenchFigure> figures;
   double peakRssMb = 0;
   std::vector<std::string> exported;         ///< files written by --export
+  std::vector<std::string> warnings;         ///< from the analyses (e.g. skipped modes)
 
   /// The figure at `key`; throws std::out_of_range when the kind has none.
   double figure(const std::string& key) const;

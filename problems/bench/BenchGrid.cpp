@@ -72,6 +72,7 @@ BenchReport benchGrid(const BenchOptions& options) {
     if (modes > 0) {
       const ModalResult m = solveModes(*grid.model, {modes, 0});
       samples.addModal(m.time.total);
+      report.warnings = m.warnings;
       report.frequenciesHz.clear();
       for (const Mode& mode : m.modes) report.frequenciesHz.push_back(mode.frequencyHz);
       if (m.modes.size() >= 3)

@@ -47,6 +47,7 @@ BenchReport benchPlanar(const BenchOptions& options) {
     if (modes > 0) {
       const ModalResult m = solveModes(*bench.model, {modes, 0});
       samples.addModal(m.time.total);
+      report.warnings = m.warnings;
       report.frequenciesHz.clear();
       for (const Mode& mode : m.modes) report.frequenciesHz.push_back(mode.frequencyHz);
     }

@@ -32,6 +32,8 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       options.modes = a.modes;
       options.shift = a.shift;
       out.modal = solveModes(model, options);
+      out.warnings.insert(out.warnings.end(), out.modal->warnings.begin(),
+                          out.modal->warnings.end());
     }
   } catch (const DeckError&) {
     throw;  // bad input only the model could reveal (an unstable explicit step)
