@@ -72,7 +72,11 @@ ConvergeLevel solveLevel(const Deck& deck, const Quantity& q, int level, int rep
     const RunResult run = runDeck(deck);
     const AnalysisOutcome& a = run.analyses.front();
     if (r == 0) {
-      out.value = measure(q, a, *run.model);
+      try {
+        out.value = measure(q, a, *run.model);
+      } catch (const std::logic_error& e) {  // e.g. a point the deck does not name
+        throw DeckError(deck.path, DeckPlace{0, 0, "--quantity"}, e.what());
+      }
       out.elements = sizeOf(a).elements;
       out.dofs = sizeOf(a).freeDofs;
     }
