@@ -33,6 +33,7 @@ void printStudy(std::ostream& out, const ConvergeStudy& s) {
       }
       out << "\n";
     }
+    if (!series.failure.empty()) out << "  stopped at " << series.failure << "\n";
   }
 }
 

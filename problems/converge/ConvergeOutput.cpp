@@ -11,13 +11,13 @@ namespace beamrotor {
 
 namespace {
 
-constexpr const char* kConvergenceCsv = "convergence.csv";
+std::string csvName(const ConvergeSeries& s) { return "convergence_" + s.method.name + ".csv"; }
 
 Json optionalNumber(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
 
-/// Relative error (log) against the column `xSuffix` of every method (log), points joined.
-ChartScript errorChart(const ConvergeStudy& study, const CsvTable& table, const std::string& name,
-                       const std::string& xSuffix, const std::string& xLabel) {
+/// Relative error (log) against column `x` of every method's table (log), points joined.
+ChartScript errorChart(const ConvergeStudy& study, const std::string& name, const std::string& x,
+                       const std::string& xLabel) {
   std::ostringstream body;
   const std::string reference = study.check.empty()
                                     ? "Richardson-extrapolated reference (estimate)"
@@ -30,15 +30,17 @@ ChartScript errorChart(const ConvergeStudy& study, const CsvTable& table, const 
        << "  set format y '10^{%L}'\n"
        << "  set xlabel " << gnuplotText(xLabel) << "\n"
        << "  set ylabel 'relative error'\n  plot ";
+  const char* separator = "";
   for (std::size_t i = 0; i < study.series.size(); ++i) {
-    const std::string& m = study.series[i].method.name;
-    if (i) body << ", \\\n       ";
+    const ConvergeSeries& s = study.series[i];
+    if (s.levels.empty()) continue;
+    const CsvTable table = convergenceTable(s);
+    const int error = table.column("rel_error");
     // Errors at round-off can be exactly 0: not drawable on a log axis, left out.
-    body << gnuplotFile(kConvergenceCsv) << " skip 1 using " << table.column(m + xSuffix)
-         << ":($" << table.column(m + ".rel_error") << " > 0 ? $"
-         << table.column(m + ".rel_error") << " : NaN) with linespoints linewidth 2 pointtype "
-         << 5 + 2 * int(i) << " " << colour(i) << " title "
-         << gnuplotText(study.series[i].method.label);
+    body << separator << gnuplotFile(csvName(s)) << " skip 1 using " << table.column(x) << ":($"
+         << error << " > 0 ? $" << error << " : NaN) with linespoints linewidth 2 pointtype "
+         << 5 + 2 * int(i) << " " << colour(i) << " title " << gnuplotText(s.method.label);
+    separator = ", \\\n       ";
   }
   body << "\n";
   return {name, "Relative error against " + xLabel + ", one line per method", 900, 650,
@@ -76,6 +78,7 @@ Json convergenceJson(const ConvergeStudy& study) {
                         {"rel_error", l.error},
                         {"order", optionalNumber(l.order)}});
     m["levels"] = std::move(levels);
+    m["failure"] = s.failure.empty() ? Json(nullptr) : Json(s.failure);
     methods.push_back(std::move(m));
   }
   doc["methods"] = std::move(methods);
@@ -83,38 +86,33 @@ Json convergenceJson(const ConvergeStudy& study) {
   return doc;
 }
 
-CsvTable convergenceTable(const ConvergeStudy& study) {
-  std::vector<CsvColumn> columns{{"level", ""}};
-  for (const ConvergeSeries& s : study.series) {
-    const std::string& m = s.method.name;
-    columns.push_back({m + ".dofs", ""});
-    columns.push_back({m + ".time", "s"});
-    columns.push_back({m + ".value", ""});
-    columns.push_back({m + ".rel_error", ""});
-  }
-  CsvTable table(kConvergenceCsv, columns);
-  const std::size_t levels = study.series.empty() ? 0 : study.series.front().levels.size();
-  for (std::size_t k = 0; k < levels; ++k) {
-    std::vector<CsvCell> row{static_cast<long long>(k)};
-    for (const ConvergeSeries& s : study.series) {
-      const ConvergeLevel& l = s.levels[k];
-      row.insert(row.end(), {static_cast<long long>(l.dofs), l.total, l.value, l.error});
-    }
-    table.addRow(std::move(row));
-  }
+CsvTable convergenceTable(const ConvergeSeries& series) {
+  CsvTable table(csvName(series), {{"level", ""},
+                                   {"elements", ""},
+                                   {"dofs", ""},
+                                   {"assembly", "s"},
+                                   {"factor", "s"},
+                                   {"solve", "s"},
+                                   {"total", "s"},
+                                   {"value", ""},
+                                   {"rel_error", ""}});
+  for (const ConvergeLevel& l : series.levels)
+    table.addRow({static_cast<long long>(l.level), static_cast<long long>(l.elements),
+                  static_cast<long long>(l.dofs), l.assembly, l.factor, l.solve, l.total,
+                  l.value, l.error});
   return table;
 }
 
 void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir) {
   const Json doc = convergenceJson(study);
   requireFiniteNumbers(doc, kConvergenceJson);
-  const CsvTable table = convergenceTable(study);
+  std::vector<CsvTable> tables;
+  for (const ConvergeSeries& s : study.series) tables.push_back(convergenceTable(s));
   writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
     writeJson(doc, temporary / kConvergenceJson);
-    table.write(temporary / kConvergenceCsv);
-    drawChart(temporary, errorChart(study, table, "convergence_dofs", ".dofs", "free dofs"));
-    drawChart(temporary,
-              errorChart(study, table, "convergence_time", ".time", "wall time (total) [s]"));
+    for (const CsvTable& t : tables) t.write(temporary / t.title());
+    drawChart(temporary, errorChart(study, "convergence_dofs", "dofs", "free dofs"));
+    drawChart(temporary, errorChart(study, "convergence_time", "total", "wall time (total) [s]"));
   });
 }
 

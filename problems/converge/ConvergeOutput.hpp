@@ -10,10 +10,11 @@
 //             levels [{level, elements, dofs (free), runs, time_s {assembly, factor, solve,
 //                      total} (medians over the runs; modal: the factorisation is inside
 //                      solve), value, rel_error, order (observed against the previous level,
-//                      or null)}]}],
+//                      or null)}],
+//             failure (null, or why the method stopped before the last level)}],
 //   beamrotor_version.
-// convergence.csv: one row per level; per method <name>.dofs, <name>.time [s] (total),
-//   <name>.value and <name>.rel_error.
+// convergence_<method name>.csv: one row per level solved: level, elements, dofs, assembly,
+//   factor, solve, total [s], value, rel_error.
 // convergence_dofs.{gp,svg,png}: relative error against free dofs, log-log, one line per
 //   method; convergence_time.{gp,svg,png}: relative error against wall time (total).
 #pragma once
@@ -29,8 +30,8 @@ namespace beamrotor {
 /// convergence.json's document.
 Json convergenceJson(const ConvergeStudy& study);
 
-/// convergence.csv's table.
-CsvTable convergenceTable(const ConvergeStudy& study);
+/// convergence_<method>.csv's table of one series.
+CsvTable convergenceTable(const ConvergeSeries& series);
 
 /// Writes the files above into dir (atomically). Throws std::runtime_error when it cannot.
 void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir);

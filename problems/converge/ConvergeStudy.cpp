@@ -1,5 +1,6 @@
 #include "problems/converge/ConvergeStudy.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fem/Median.hpp"
@@ -47,12 +48,13 @@ Target resolveTarget(const Deck& deck, const std::string& text) {
   return t;
 }
 
-/// The deck reduced to the one analysis, without checks or sweep.
+/// The deck reduced to the one analysis, without checks, sweep or accuracy target.
 Deck studyDeck(const Deck& deck, const Target& t) {
   Deck d = deck;
   d.analyses = {*t.analysis};
   d.checks.clear();
   d.sweep.reset();
+  d.accuracy.reset();  // the study chooses the meshes itself
   return d;
 }
 
@@ -98,8 +100,12 @@ ConvergeLevel solveLevel(const Deck& deck, const Quantity& q, int level, int rep
 /// Reference, errors and observed orders of a solved series.
 void measureErrors(ConvergeSeries& s, const DeckCheck* check) {
   const std::size_t n = s.levels.size();
+  if (n == 0) return;
   if (check) {
     s.reference = check->reference;
+  } else if (n < 3) {  // failed too early to extrapolate: the finest value, no order
+    s.reference = s.levels.back().value;
+    s.extrapolated = true;
   } else {
     const Extrapolation e =
         richardson(s.levels[n - 3].value, s.levels[n - 2].value, s.levels[n - 1].value);
@@ -141,7 +147,13 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
       Deck d = base;
       useMethod(method, d);
       refineMesh(d, level);
-      series.levels.push_back(solveLevel(d, t.quantity, level, std::max(1, options.repeats)));
+      try {
+        series.levels.push_back(solveLevel(d, t.quantity, level, std::max(1, options.repeats)));
+      } catch (const DeckSolveError& e) {
+        series.failure = "level " + std::to_string(level) + ": " + e.message();
+        std::replace(series.failure.begin(), series.failure.end(), '\n', ' ');
+        break;
+      }
     }
     // 3. Errors and rates.
     measureErrors(series, t.check);

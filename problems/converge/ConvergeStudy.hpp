@@ -40,6 +40,10 @@ struct ConvergeSeries {
   double reference = 0;        ///< the closed form, or this series' extrapolated limit
   bool extrapolated = false;   ///< reference is a Richardson estimate (no closed form)
   std::optional<double> extrapolationOrder;  ///< the order the extrapolation found
+  /// Why the method stopped before the last level (the solver's message), empty if it did
+  /// not: a method that fails on fine meshes (e.g. the locking element's conditioning) ends
+  /// its series there, the others go on.
+  std::string failure;
 };
 
 struct ConvergeStudy {

@@ -15,7 +15,9 @@ TEST_SUITE("converge cli") {
     const test::ProcessResult p = test::runBeamrotor(
         {"converge", "problems/simply_supported.yaml", "--levels", "4", "--out", dir.string()});
     REQUIRE_MESSAGE(p.exitCode == 0, p.err);
-    CHECK(std::filesystem::exists(dir / "convergence.csv"));
+    for (const char* m : {"eb-consistent", "eb-lumped", "timoshenko", "timoshenko-linear-full",
+                          "timoshenko-linear-reduced"})
+      CHECK(std::filesystem::exists(dir / ("convergence_" + std::string(m) + ".csv")));
     for (const char* chart : {"convergence_dofs", "convergence_time"})
       CHECK(std::filesystem::exists(dir / (std::string(chart) + ".gp")));
     std::ifstream in(dir / "convergence.json");
