@@ -16,9 +16,8 @@ namespace {
 double largestChange(const RunResult& a, const RunResult& b) {
   double change = 0;
   for (std::size_t i = 0; i < a.checks.size() && i < b.checks.size(); ++i) {
-    const double scale =
-        std::max({std::abs(a.checks[i].computed), std::abs(b.checks[i].computed),
-                  std::abs(a.checks[i].reference)});
+    const double scale = std::max({std::abs(a.checks[i].computed), std::abs(b.checks[i].computed),
+                                   std::abs(a.checks[i].reference)});
     const double diff = std::abs(a.checks[i].computed - b.checks[i].computed);
     change = std::max(change, scale > 0 ? diff / scale : diff);
   }
@@ -67,15 +66,20 @@ MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
   throw DeckSolveError(deck.path, deck.accuracy->place,
                        "not reached with " + std::to_string(1 << kMaxAdequateLevel) +
                            " elements per segment: successive meshes still differ by more "
-                           "than " + formatNumber(deck.accuracy->target));
+                           "than " +
+                           formatNumber(deck.accuracy->target));
 }
 
 std::string theoryName(BeamTheory t) {
   switch (t) {
-    case BeamTheory::eulerBernoulli: return "euler-bernoulli";
-    case BeamTheory::timoshenko: return "timoshenko";
-    case BeamTheory::timoshenkoLinearFullIntegration: return "timoshenko-linear-full";
-    case BeamTheory::timoshenkoLinearReducedIntegration: return "timoshenko-linear-reduced";
+    case BeamTheory::eulerBernoulli:
+      return "euler-bernoulli";
+    case BeamTheory::timoshenko:
+      return "timoshenko";
+    case BeamTheory::timoshenkoLinearFullIntegration:
+      return "timoshenko-linear-full";
+    case BeamTheory::timoshenkoLinearReducedIntegration:
+      return "timoshenko-linear-reduced";
   }
   return "?";
 }

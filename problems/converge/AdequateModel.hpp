@@ -5,9 +5,10 @@
 // 1. Mesh: every segment gets 2^k elements, k = 0, 1, ...; the first k whose checked values
 //    differ from level k-1 by at most the target (relatively, the largest over the checks)
 //    is chosen, that change being its estimated error (a level whose mesh is no finer than
-//    the one before, because points already split the segments, is not compared). For an error falling monotonically
-//    as C h^p the change is (2^p - 1) times the error of level k, so it over-estimates it for
-//    any order p >= 1 (the Euler-Bernoulli element converges at p = 2 to 4, or is exact).
+//    the one before, because points already split the segments, is not compared). For an error
+//    falling monotonically as C h^p the change is (2^p - 1) times the error of level k, so it
+//    over-estimates it for any order p >= 1 (the Euler-Bernoulli element converges at p = 2 to 4,
+//    or is exact).
 // 2. Theory: when the deck has Timoshenko beams, the same search with Euler-Bernoulli beams;
 //    their difference from the Timoshenko result is the shear contribution. Euler-Bernoulli
 //    is chosen when its mesh estimate plus the shear contribution is within the target.

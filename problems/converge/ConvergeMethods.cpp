@@ -5,14 +5,13 @@
 namespace beamrotor {
 
 std::vector<ConvergeMethod> convergeMethods(bool massMatters) {
-  std::vector<ConvergeMethod> methods{
-      {"eb-consistent", "Euler-Bernoulli, consistent mass", BeamTheory::eulerBernoulli,
-       MassModel::consistent}};
+  std::vector<ConvergeMethod> methods{{"eb-consistent", "Euler-Bernoulli, consistent mass",
+                                       BeamTheory::eulerBernoulli, MassModel::consistent}};
   if (massMatters)
     methods.push_back({"eb-lumped", "Euler-Bernoulli, lumped mass", BeamTheory::eulerBernoulli,
                        MassModel::lumped});
-  methods.push_back({"timoshenko", "Timoshenko, locking-free", BeamTheory::timoshenko,
-                     MassModel::consistent});
+  methods.push_back(
+      {"timoshenko", "Timoshenko, locking-free", BeamTheory::timoshenko, MassModel::consistent});
   methods.push_back({"timoshenko-linear-full", "Timoshenko linear, full integration (locks)",
                      BeamTheory::timoshenkoLinearFullIntegration, MassModel::consistent});
   methods.push_back({"timoshenko-linear-reduced", "Timoshenko linear, reduced integration",

@@ -12,8 +12,8 @@ namespace beamrotor {
 
 /// One element formulation with its mass model.
 struct ConvergeMethod {
-  std::string name;     ///< stable key in convergence.json, e.g. "eb-consistent"
-  std::string label;    ///< for chart keys, e.g. "Euler-Bernoulli, consistent mass"
+  std::string name;   ///< stable key in convergence.json, e.g. "eb-consistent"
+  std::string label;  ///< for chart keys, e.g. "Euler-Bernoulli, consistent mass"
   BeamTheory theory = BeamTheory::eulerBernoulli;
   MassModel mass = MassModel::consistent;
 };

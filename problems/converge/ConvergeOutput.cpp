@@ -11,20 +11,23 @@ namespace beamrotor {
 
 namespace {
 
-std::string csvName(const ConvergeSeries& s) { return "convergence_" + s.method.name + ".csv"; }
+std::string csvName(const ConvergeSeries& s) {
+  return "convergence_" + s.method.name + ".csv";
+}
 
-Json optionalNumber(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
+Json optionalNumber(const std::optional<double>& v) {
+  return v ? Json(*v) : Json(nullptr);
+}
 
 /// Relative error (log) against column `x` of every method's table (log), points joined.
 ChartScript errorChart(const ConvergeStudy& study, const std::string& name, const std::string& x,
                        const std::string& xLabel) {
   std::ostringstream body;
-  const std::string reference = study.check.empty()
-                                    ? "Richardson-extrapolated reference (estimate)"
-                                    : "closed form of check '" + study.check + "'";
+  const std::string reference = study.check.empty() ? "Richardson-extrapolated reference (estimate)"
+                                                    : "closed form of check '" + study.check + "'";
   body << "  set encoding utf8\n"
-       << "  set title " << captionText(study.deckName + ": " + study.quantity + "\nagainst the " +
-                                        reference)
+       << "  set title "
+       << captionText(study.deckName + ": " + study.quantity + "\nagainst the " + reference)
        << " font ',13'\n"
        << "  set logscale xy\n  set grid mxtics mytics\n  set key outside below\n"
        << "  set format y '10^{%L}'\n"
@@ -43,8 +46,7 @@ ChartScript errorChart(const ConvergeStudy& study, const std::string& name, cons
     separator = ", \\\n       ";
   }
   body << "\n";
-  return {name, "Relative error against " + xLabel + ", one line per method", 900, 650,
-          body.str()};
+  return {name, "Relative error against " + xLabel + ", one line per method", 900, 650, body.str()};
 }
 
 }  // namespace
@@ -98,8 +100,8 @@ CsvTable convergenceTable(const ConvergeSeries& series) {
                                    {"rel_error", ""}});
   for (const ConvergeLevel& l : series.levels)
     table.addRow({static_cast<long long>(l.level), static_cast<long long>(l.elements),
-                  static_cast<long long>(l.dofs), l.assembly, l.factor, l.solve, l.total,
-                  l.value, l.error});
+                  static_cast<long long>(l.dofs), l.assembly, l.factor, l.solve, l.total, l.value,
+                  l.error});
   return table;
 }
 

@@ -39,8 +39,7 @@ Target resolveTarget(const Deck& deck, const std::string& text) {
       break;
     }
   if (!t.analysis)
-    throw DeckError(deck.path, option,
-                    "no analysis of the deck gives '" + t.quantity.text + "'");
+    throw DeckError(deck.path, option, "no analysis of the deck gives '" + t.quantity.text + "'");
   if (t.analysis->type != "static" && t.analysis->type != "modal")
     throw DeckError(deck.path, option,
                     "'" + t.quantity.text + "' reads a " + t.analysis->type +

@@ -26,19 +26,19 @@ inline constexpr double kShortRunSeconds = 0.2;
 struct ConvergeLevel {
   int level = 0;
   int elements = 0;
-  int dofs = 0;          ///< free dofs
+  int dofs = 0;                                           ///< free dofs
   double assembly = 0, factor = 0, solve = 0, total = 0;  ///< s, medians over the runs
   int runs = 1;
-  double value = 0;      ///< the quantity
-  double error = 0;      ///< |value - reference| / |reference| (absolute when reference is 0)
+  double value = 0;  ///< the quantity
+  double error = 0;  ///< |value - reference| / |reference| (absolute when reference is 0)
   std::optional<double> order;  ///< observed order against the previous level
 };
 
 struct ConvergeSeries {
   ConvergeMethod method;
   std::vector<ConvergeLevel> levels;
-  double reference = 0;        ///< the closed form, or this series' extrapolated limit
-  bool extrapolated = false;   ///< reference is a Richardson estimate (no closed form)
+  double reference = 0;       ///< the closed form, or this series' extrapolated limit
+  bool extrapolated = false;  ///< reference is a Richardson estimate (no closed form)
   std::optional<double> extrapolationOrder;  ///< the order the extrapolation found
   /// Why the method stopped before the last level (the solver's message), empty if it did
   /// not: a method that fails on fine meshes (e.g. the locking element's conditioning) ends

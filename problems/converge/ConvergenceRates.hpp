@@ -13,8 +13,8 @@ std::optional<double> observedOrder(double coarseError, double fineError);
 
 /// The limit of q(h) estimated from three successive levels q0 (h), q1 (h/2), q2 (h/4).
 struct Extrapolation {
-  double value = 0;                ///< the estimated exact value
-  std::optional<double> order;     ///< the order p it assumed; nullopt: q2 taken as it is
+  double value = 0;             ///< the estimated exact value
+  std::optional<double> order;  ///< the order p it assumed; nullopt: q2 taken as it is
 };
 
 /// Richardson extrapolation (L. F. Richardson, Phil. Trans. R. Soc. A 210, 1911; the

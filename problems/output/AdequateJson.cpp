@@ -15,8 +15,8 @@ Json adequateJson(const AdequateChoice& c) {
   doc["shear_contribution"] = c.shearContribution ? Json(*c.shearContribution) : Json(nullptr);
   doc["seconds"] = c.seconds;
   doc["search_seconds"] = c.searchSeconds;
-  doc["fixed_mesh"] = {{"elements", c.deckElements}, {"dofs", c.deckDofs},
-                       {"seconds", c.deckSeconds}};
+  doc["fixed_mesh"] = {
+      {"elements", c.deckElements}, {"dofs", c.deckDofs}, {"seconds", c.deckSeconds}};
   doc["dofs_saved"] = c.deckDofs - c.dofs;
   doc["time_ratio"] = c.deckSeconds > 0 ? c.seconds / c.deckSeconds : 0.0;
   return doc;

@@ -31,7 +31,8 @@ void requireReplaceable(const fs::path& dir) {
   if (!ours && !fs::is_empty(dir))
     throw std::runtime_error("refusing to replace '" + dir.string() +
                              "': it is not a beamrotor results directory (no " + kResultsJson +
-                             ", " + kSweepJson + " or " + kConvergenceJson + "); choose another output directory");
+                             ", " + kSweepJson + " or " + kConvergenceJson +
+                             "); choose another output directory");
 }
 
 /// DIR.tmp-XXXXXX, created by mkdir (so the finished directory gets the usual umask

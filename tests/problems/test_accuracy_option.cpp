@@ -17,13 +17,15 @@ namespace {
 RunResult solveBar(double h, const std::string& theory, const std::string& analyses,
                    const std::string& checks, double accuracy) {
   const std::string text = R"(
-parameters: {L: 2.0, b: 0.04, h: )" + std::to_string(h) + R"(, q: 500, E: 210e9, nu: 0.3, rho: 7850}
+parameters: {L: 2.0, b: 0.04, h: )" +
+                           std::to_string(h) + R"(, q: 500, E: 210e9, nu: 0.3, rho: 7850}
 derived:
   I: b * h^3 / 12
   A: b * h
   G: E / (2 * (1 + nu))
   kappa: 10 * (1 + nu) / (12 + 11 * nu)
-model: {dimension: planar, formulation: )" + theory + R"(}
+model: {dimension: planar, formulation: )" +
+                           theory + R"(}
 materials: [{name: steel, E: E, nu: nu, rho: rho}]
 sections: [{name: bar, shape: rectangle, b: b, h: h}]
 segments: [{length: L, section: bar, elements: 64}]
@@ -31,7 +33,8 @@ points: [{name: mid, at: L/2}]
 supports: [{name: left, at: start, fix: [ux, uy]}, {name: right, at: end, fix: [uy]}]
 loads: [{type: distributed, qy: -q}]
 analyses: )" + analyses + R"(
-accuracy: )" + std::to_string(accuracy) + R"(
+accuracy: )" + std::to_string(accuracy) +
+                           R"(
 checks:
 )" + checks;
   StudyRequest request;
@@ -54,9 +57,8 @@ TEST_SUITE("accuracy option") {
     // 5 q L^4 / (384 E I), is 48 E I / (5 kappa G A L^2) = 2.45e-4 (Cowper's kappa for a
     // rectangle), below the target; the frequency's shear correction is about half that.
     const double target = 1e-3;
-    const RunResult run =
-        solveBar(0.02, "timoshenko", "[{type: static}, {type: modal, modes: 2}]",
-                 kEulerBernoulliChecks, target);
+    const RunResult run = solveBar(0.02, "timoshenko", "[{type: static}, {type: modal, modes: 2}]",
+                                   kEulerBernoulliChecks, target);
     REQUIRE(run.adequate);
     const AdequateChoice& c = *run.adequate;
     CHECK(c.formulation == "euler-bernoulli");
@@ -83,11 +85,10 @@ TEST_SUITE("accuracy option") {
     // L/h = 10: the shear part is 2.45e-2, far above the target, so the deck's theory stays.
     // Reference: the Timoshenko midspan deflection 5 q L^4/(384 E I) + q L^2/(8 kappa G A).
     const double target = 1e-4;
-    const RunResult run = solveBar(
-        0.2, "timoshenko", "[{type: static}]",
-        "  - {name: w, quantity: displacement mid uy, tolerance: 1,"
-        " reference: -5*q*L^4/(384*E*I) - q*L^2/(8*kappa*G*A)}\n",
-        target);
+    const RunResult run = solveBar(0.2, "timoshenko", "[{type: static}]",
+                                   "  - {name: w, quantity: displacement mid uy, tolerance: 1,"
+                                   " reference: -5*q*L^4/(384*E*I) - q*L^2/(8*kappa*G*A)}\n",
+                                   target);
     REQUIRE(run.adequate);
     CHECK(run.adequate->formulation == "timoshenko");
     CHECK(*run.adequate->shearContribution ==
@@ -99,11 +100,10 @@ TEST_SUITE("accuracy option") {
     // The consistent-mass error falls as h^4 (converge rates): about 1.0e-6 on 16 elements,
     // 6.4e-8 on 32; the search stops where successive meshes agree to 1e-6, i.e. 32.
     const double target = 1e-6;
-    const RunResult run =
-        solveBar(0.02, "euler-bernoulli", "[{type: modal, modes: 1}]",
-                 "  - {name: f1, quantity: frequency 1, tolerance: 1,"
-                 " reference: (pi/L)^2 * sqrt(E*I/(rho*A)) / (2*pi)}\n",
-                 target);
+    const RunResult run = solveBar(0.02, "euler-bernoulli", "[{type: modal, modes: 1}]",
+                                   "  - {name: f1, quantity: frequency 1, tolerance: 1,"
+                                   " reference: (pi/L)^2 * sqrt(E*I/(rho*A)) / (2*pi)}\n",
+                                   target);
     REQUIRE(run.adequate);
     CHECK(run.adequate->formulation == "euler-bernoulli");
     CHECK_FALSE(run.adequate->shearContribution);

@@ -43,6 +43,10 @@ TEST_SUITE("converge cli") {
       CHECK(levels[k]["dofs"].get<int>() == 2 * levels[k - 1]["dofs"].get<int>());
       CHECK(levels[k]["time_s"]["total"].get<double>() > 0);
     }
+    // Re-running replaces its own earlier output (convergence.json marks it as beamrotor's).
+    CHECK(test::runBeamrotor({"converge", "problems/simply_supported.yaml", "--levels", "2",
+                              "--out", dir.string()})
+              .exitCode == 0);
     std::filesystem::remove_all(dir.parent_path());
   }
 
@@ -50,8 +54,9 @@ TEST_SUITE("converge cli") {
     const test::ProcessResult levels =
         test::runBeamrotor({"converge", "problems/simply_supported.yaml", "--levels", "1"});
     CHECK(levels.exitCode == 2);
-    CHECK(levels.err == "problems/simply_supported.yaml: --levels: must be from 2 (3 to "
-                        "extrapolate without a closed form) to 16, got 1\n");
+    CHECK(levels.err ==
+          "problems/simply_supported.yaml: --levels: must be from 2 (3 to "
+          "extrapolate without a closed form) to 16, got 1\n");
     const test::ProcessResult quantity = test::runBeamrotor(
         {"converge", "problems/simply_supported.yaml", "--quantity", "displacement nowhere uy"});
     CHECK(quantity.exitCode == 2);

@@ -8,12 +8,12 @@
 #include <cmath>
 #include <string>
 
-#include "tests/Helpers.hpp"
 #include "fem/Static.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/output/LineSampling.hpp"
+#include "tests/Helpers.hpp"
 
 namespace beamrotor {
 
@@ -29,7 +29,8 @@ derived:
   A: pi * D^2 / 4
   G: E / (2 * (1 + nu))
   kappa: 6 * (1 + nu) / (7 + 6 * nu)
-model: {dimension: planar, formulation: )" + formulation + R"(}
+model: {dimension: planar, formulation: )" +
+                           formulation + R"(}
 materials: [{name: steel, E: E, nu: nu, rho: rho}]
 sections: [{name: rod, shape: circle, D: D}]
 segments: [{length: L, section: rod, elements: 2}]
@@ -93,20 +94,19 @@ TEST_SUITE("converge rates") {
     // round-off: cond(K) of these <= 32-element cantilevers is below ~1e8, so 1e-10 bounds
     // cond * eps with a margin (observed ~1e-15).
     constexpr double kRoundOff = 1e-10;
-    const ConvergeStudy eb = runConvergence(
-        cantilever("euler-bernoulli",
-                   "  - {name: tip, quantity: displacement tip uy, tolerance: 1,"
-                   " reference: -P*L^3/(3*E*I)}\n"),
-        levels(5));
-    for (const ConvergeLevel& l : seriesOf(eb, "eb-consistent").levels)
-      CHECK(l.error < kRoundOff);
+    const ConvergeStudy eb =
+        runConvergence(cantilever("euler-bernoulli",
+                                  "  - {name: tip, quantity: displacement tip uy, tolerance: 1,"
+                                  " reference: -P*L^3/(3*E*I)}\n"),
+                       levels(5));
+    for (const ConvergeLevel& l : seriesOf(eb, "eb-consistent").levels) CHECK(l.error < kRoundOff);
     CHECK(eb.series.size() == 4);  // statics: no lumped-mass series
 
-    const ConvergeStudy tim = runConvergence(
-        cantilever("timoshenko",
-                   "  - {name: tip, quantity: displacement tip uy, tolerance: 1,"
-                   " reference: -P*L^3/(3*E*I) - P*L/(kappa*G*A)}\n"),
-        levels(5));
+    const ConvergeStudy tim =
+        runConvergence(cantilever("timoshenko",
+                                  "  - {name: tip, quantity: displacement tip uy, tolerance: 1,"
+                                  " reference: -P*L^3/(3*E*I) - P*L/(kappa*G*A)}\n"),
+                       levels(5));
     for (const ConvergeLevel& l : seriesOf(tim, "timoshenko").levels) CHECK(l.error < kRoundOff);
     // The locking linear element is far off on 2 elements at L/D = 50 (stiffer: smaller
     // deflection) and improves with every level, still pre-asymptotic at 32 elements.
@@ -177,6 +177,15 @@ TEST_SUITE("converge rates") {
     CHECK(test::relError(consistent.reference, exact) < 1e-10);
     CHECK(test::relError(consistent.reference, exact) <
           test::relError(consistent.levels.back().value, exact));
+  }
+
+  TEST_CASE("a deck with accuracy: the study keeps its own meshes (deck mesh times 2^k)") {
+    Deck deck = cantilever("euler-bernoulli", kFrequency1);
+    deck.accuracy = DeckAccuracy{1e-3, {}};
+    const ConvergeStudy s = runConvergence(deck, levels(3));
+    const ConvergeSeries& consistent = seriesOf(s, "eb-consistent");
+    CHECK(consistent.levels[0].elements == 2);
+    CHECK(consistent.levels[2].elements == 8);
   }
 
   TEST_CASE("a quantity the deck cannot give or too few levels is a DeckError") {
