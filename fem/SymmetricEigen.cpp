@@ -118,11 +118,15 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
     }
   }
   op.shift = sigma;
+  // Eigen's UmfPackLU keeps a reference to the matrix (UMFPACK's solve refines with it), so
+  // the shifted matrix must live as long as the factor: a temporary here left it dangling.
+  auto shifted = std::make_shared<const SparseMatrix>(K - sigma * M);
   auto lu = std::make_shared<SparseLU>();
-  lu->compute(SparseMatrix(K - sigma * M));
-  if (!lu->healthy(kSingularRcond)) throw SingularSystem(singularShiftMessage(sigma, lu->rcond()));
+  lu->compute(*shifted);
+  if (!lu->healthy(kSingularRcond))
+    throw SingularSystem(singularShiftMessage(sigma, lu->rcond()));
   op.factorEntries = lu->factorEntries();
-  op.solve = [lu](const Eigen::VectorXd& b) { return Eigen::VectorXd(lu->solve(b)); };
+  op.solve = [lu, shifted](const Eigen::VectorXd& b) { return Eigen::VectorXd(lu->solve(b)); };
   return op;
 }
 

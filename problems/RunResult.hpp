@@ -12,6 +12,7 @@
 
 #include "fem/Model.hpp"
 #include "fem/Results.hpp"
+#include "problems/AdequateChoice.hpp"
 #include "problems/TransientOutcome.hpp"
 #include "problems/RotorRunResult.hpp"
 
@@ -54,6 +55,7 @@ struct RunResult {
   std::vector<Check> checks;
   std::vector<std::string> skippedChecks;  ///< names of checks whose `when:` is false here
   double seconds = 0;                                     ///< wall time to build and solve
+  std::optional<AdequateChoice> adequate;  ///< `accuracy:` decks: the model chosen
 };
 
 /// A deck solved over a list of values of one parameter.

@@ -1,21 +1,10 @@
 // Bookkeeping every benchmark kind shares (see BenchKinds.hpp).
-#include <algorithm>
-
 #include "problems/bench/BenchKinds.hpp"
+
+#include "fem/Median.hpp"
 #include "problems/output/MatrixExport.hpp"
 
 namespace beamrotor {
-
-namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-}  // namespace
 
 void BenchSamples::addStatic(double buildSeconds, const StaticResult& s, BenchReport& report) {
   build_.push_back(buildSeconds);

@@ -96,6 +96,25 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   reportCmd->add_option("--out,-o", report.outDir, "output directory (default: out/report/)")
       ->type_name("DIR");
 
+  ConvergeRequest converge;
+  CLI::App* convergeCmd = app.add_subcommand(
+      "converge", "Refine the deck's mesh level by level (halving every element) with each "
+                  "element formulation; write convergence.json and error-against-dofs and "
+                  "error-against-time charts.");
+  convergeCmd->add_option("deck", converge.deckPath, "the deck")->required();
+  convergeCmd->add_option("--set", converge.sets, "override a deck parameter (repeatable)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+  convergeCmd->add_option("--quantity", converge.options.quantity,
+                          "a deck quantity, e.g. 'frequency 1' (default: the first check's)")
+      ->type_name("Q");
+  convergeCmd->add_option("--levels", converge.options.levels,
+                          "meshes: the deck's own and N-1 refinements (default 5)")
+      ->type_name("N");
+  convergeCmd->add_option("--out,-o", converge.outDir,
+                          "output directory (default: out/<deck name>_converge/)")
+      ->type_name("DIR");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -108,6 +127,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);
     if (reportCmd->parsed()) return reportCommand(report, out, err);
+    if (convergeCmd->parsed()) return convergeCommand(converge, out, err);
     return checkCommand(check, out, err);
   } catch (const std::exception& e) {
     err << "beamrotor: internal error: " << e.what() << "\n";

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "problems/bench/Bench.hpp"
+#include "problems/converge/ConvergeStudy.hpp"
 #include "problems/deck/Study.hpp"
 
 namespace beamrotor::cli {
@@ -28,5 +29,17 @@ int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& e
 /// A size the kind cannot build is one line on err and kInputError.
 int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::ostream& out,
                  std::ostream& err);
+
+/// What `beamrotor converge` reads and where it writes.
+struct ConvergeRequest {
+  std::string deckPath;
+  std::vector<std::string> sets;  ///< "NAME=VALUE" overrides, as typed
+  ConvergeOptions options;
+  std::string outDir;             ///< empty: out/<deck stem>_converge
+};
+
+/// `beamrotor converge` (ConvergeCommand.cpp): the convergence study of one deck quantity,
+/// written as convergence.json, convergence.csv and two log-log charts.
+int convergeCommand(const ConvergeRequest& request, std::ostream& out, std::ostream& err);
 
 }  // namespace beamrotor::cli

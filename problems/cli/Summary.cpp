@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "problems/cli/AdequateSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/cli/StressSummary.hpp"
@@ -137,6 +138,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
       << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
   printReported(out, run.reported);
+  if (run.adequate) printAdequateChoice(out, *run.adequate);
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) printStatic(out, deck, run, a);
     if (a.modal) printModal(out, a);

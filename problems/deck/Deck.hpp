@@ -13,6 +13,7 @@
 #include "elements/Beam.hpp"
 #include "fem/Dof.hpp"
 #include "fem/Section.hpp"
+#include "problems/deck/DeckAccuracy.hpp"
 #include "problems/deck/DeckError.hpp"
 #include "problems/deck/DeckTransient.hpp"
 #include "problems/deck/DeckRotor.hpp"
@@ -150,6 +151,7 @@ struct Deck {
   std::vector<DeckAnalysis> analyses;
   std::vector<DeckCheck> checks;
   std::optional<DeckSweep> sweep;
+  std::optional<DeckAccuracy> accuracy;  ///< `accuracy:`: pick the cheapest adequate model
 
   /// Total length of the line (m).
   double length() const {

@@ -68,7 +68,7 @@ namespace {
 const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived", "model",  "materials", "sections", "segments", "points",
     "supports", "springs",  "masses",  "hinges", "loads",     "analyses", "checks",   "sweep",
-    "contacts", "bearings", "damping", "report"};
+    "contacts", "bearings", "damping", "report", "accuracy"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -174,6 +174,7 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   reader::readRotorModel(c);
   reader::readStudy(c, overrides);
   reader::readReport(c);
+  reader::readAccuracy(c);
   return deck;
 }
 

@@ -4,6 +4,7 @@
 #include "fem/Modal.hpp"
 #include "fem/Static.hpp"
 #include "fem/Stopwatch.hpp"
+#include "problems/converge/AdequateModel.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
 #include "problems/deck/ModelBuilder.hpp"
@@ -59,6 +60,7 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
 }  // namespace
 
 RunResult runDeck(const Deck& deck) {
+  if (deck.accuracy) return runAdequateModel(deck);
   Stopwatch clock;
   RunResult run;
   run.deckPath = deck.path;

@@ -65,6 +65,8 @@ void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
                             const DeckAnalysis& analysis, bool applicable);
 /// `report:`: names of parameters and derived values into deck.reported.
 void readReport(Context& c);
+/// `accuracy:` (ReadAccuracy.cpp).
+void readAccuracy(Context& c);
 
 /// The beam formulation a field names (euler-bernoulli, timoshenko, ...).
 BeamTheory formulationOf(const Field& f);

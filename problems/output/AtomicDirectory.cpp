@@ -26,11 +26,13 @@ void requireReplaceable(const fs::path& dir) {
   if (!fs::is_directory(fs::symlink_status(dir, ec)))
     throw std::runtime_error("cannot write results to '" + dir.string() +
                              "': it exists and is not a directory");
-  const bool ours = fs::exists(dir / kResultsJson) || fs::exists(dir / kSweepJson);
+  const bool ours = fs::exists(dir / kResultsJson) || fs::exists(dir / kSweepJson) ||
+                    fs::exists(dir / kConvergenceJson);
   if (!ours && !fs::is_empty(dir))
     throw std::runtime_error("refusing to replace '" + dir.string() +
                              "': it is not a beamrotor results directory (no " + kResultsJson +
-                             " or " + kSweepJson + "); choose another output directory");
+                             ", " + kSweepJson + " or " + kConvergenceJson +
+                             "); choose another output directory");
 }
 
 /// DIR.tmp-XXXXXX, created by mkdir (so the finished directory gets the usual umask

@@ -18,6 +18,8 @@ void requireDistinctFileStems(const std::vector<AnalysisOutcome>& analyses);
 
 inline constexpr const char* kResultsJson = "results.json";
 inline constexpr const char* kSweepJson = "sweep.json";
+/// `beamrotor converge`'s summary (problems/converge/ConvergeOutput.hpp).
+inline constexpr const char* kConvergenceJson = "convergence.json";
 inline constexpr const char* kSweepCsv = "sweep.csv";
 
 /// Statics: fields along the line, one row per station.

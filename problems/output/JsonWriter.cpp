@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "fem/DofMap.hpp"
+#include "problems/output/AdequateJson.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/Reactions.hpp"
@@ -238,6 +239,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>
   doc["skipped_checks"] = run.skippedChecks;
   doc["parameters"] = parametersJson(run.parameters);
   if (!run.reported.empty()) doc["reported"] = parametersJson(run.reported);
+  if (run.adequate) doc["accuracy"] = adequateJson(*run.adequate);
   doc["seconds"] = run.seconds;
   doc["beamrotor_version"] = BEAMROTOR_VERSION;
   return doc;

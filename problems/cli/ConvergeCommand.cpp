@@ -1,0 +1,69 @@
+// `beamrotor converge`: reads the deck, runs the convergence study, writes its files and prints
+// one line per method and level.
+#include <cstdio>
+
+#include "problems/cli/Commands.hpp"
+#include "problems/cli/ExitCodes.hpp"
+#include "problems/converge/ConvergeOutput.hpp"
+#include "problems/deck/DeckReader.hpp"
+
+namespace beamrotor::cli {
+
+namespace {
+
+void printStudy(std::ostream& out, const ConvergeStudy& s) {
+  out << "converge " << s.deckPath << ": " << s.quantity << " (analysis " << s.analysis
+      << "), reference: "
+      << (s.check.empty() ? "Richardson-extrapolated per method (estimate)"
+                          : "closed form of check '" + s.check + "'")
+      << "\n";
+  for (const ConvergeSeries& series : s.series) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%s (reference %.10g)\n", series.method.label.c_str(),
+                  series.reference);
+    out << line;
+    for (const ConvergeLevel& l : series.levels) {
+      std::snprintf(line, sizeof line,
+                    "  level %d: %6d elements %7d dofs  %.6e s  value %.12g  error %.3e", l.level,
+                    l.elements, l.dofs, l.total, l.value, l.error);
+      out << line;
+      if (l.order) {
+        std::snprintf(line, sizeof line, "  order %.2f", *l.order);
+        out << line;
+      }
+      out << "\n";
+    }
+    if (!series.failure.empty()) out << "  stopped at " << series.failure << "\n";
+  }
+}
+
+}  // namespace
+
+int convergeCommand(const ConvergeRequest& request, std::ostream& out, std::ostream& err) {
+  try {
+    const DeckSource source = loadDeckFile(request.deckPath);
+    std::vector<ParameterOverride> overrides;
+    for (const std::string& s : request.sets) overrides.push_back(parseOverride(s, source.path));
+    const ConvergeStudy study = runConvergence(readDeck(source, overrides), request.options);
+    const std::filesystem::path dir =
+        request.outDir.empty() ? std::filesystem::path("out") / (source.stem + "_converge")
+                               : std::filesystem::path(request.outDir);
+    printStudy(out, study);
+    try {
+      writeConvergenceOutputs(study, dir);
+    } catch (const std::exception& e) {
+      err << dir.string() << ": cannot write the results: " << e.what() << "\n";
+      return kSolveFailure;
+    }
+    out << "results: " << dir.string() << "/\n";
+    return kOk;
+  } catch (const DeckError& e) {
+    err << e.what() << "\n";
+    return kInputError;
+  } catch (const DeckSolveError& e) {
+    err << e.what() << "\n";
+    return kSolveFailure;
+  }
+}
+
+}  // namespace beamrotor::cli

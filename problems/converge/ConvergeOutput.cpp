@@ -1,0 +1,121 @@
+#include "problems/converge/ConvergeOutput.hpp"
+
+#include <sstream>
+
+#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/ChartParts.hpp"
+#include "problems/output/FileNames.hpp"
+#include "problems/output/Gnuplot.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+std::string csvName(const ConvergeSeries& s) {
+  return "convergence_" + s.method.name + ".csv";
+}
+
+Json optionalNumber(const std::optional<double>& v) {
+  return v ? Json(*v) : Json(nullptr);
+}
+
+/// Relative error (log) against column `x` of every method's table (log), points joined.
+ChartScript errorChart(const ConvergeStudy& study, const std::string& name, const std::string& x,
+                       const std::string& xLabel) {
+  std::ostringstream body;
+  const std::string reference = study.check.empty() ? "Richardson-extrapolated reference (estimate)"
+                                                    : "closed form of check '" + study.check + "'";
+  body << "  set encoding utf8\n"
+       << "  set title "
+       << captionText(study.deckName + ": " + study.quantity + "\nagainst the " + reference)
+       << " font ',13'\n"
+       << "  set logscale xy\n  set grid mxtics mytics\n  set key outside below\n"
+       << "  set format y '10^{%L}'\n"
+       << "  set xlabel " << gnuplotText(xLabel) << "\n"
+       << "  set ylabel 'relative error'\n  plot ";
+  const char* separator = "";
+  for (std::size_t i = 0; i < study.series.size(); ++i) {
+    const ConvergeSeries& s = study.series[i];
+    if (s.levels.empty()) continue;
+    const CsvTable table = convergenceTable(s);
+    const int error = table.column("rel_error");
+    // Errors at round-off can be exactly 0: not drawable on a log axis, left out.
+    body << separator << gnuplotFile(csvName(s)) << " skip 1 using " << table.column(x) << ":($"
+         << error << " > 0 ? $" << error << " : NaN) with linespoints linewidth 2 pointtype "
+         << 5 + 2 * int(i) << " " << colour(i) << " title " << gnuplotText(s.method.label);
+    separator = ", \\\n       ";
+  }
+  body << "\n";
+  return {name, "Relative error against " + xLabel + ", one line per method", 900, 650, body.str()};
+}
+
+}  // namespace
+
+Json convergenceJson(const ConvergeStudy& study) {
+  Json doc;
+  doc["deck"] = {{"name", study.deckName}, {"path", study.deckPath}};
+  doc["quantity"] = study.quantity;
+  doc["analysis"] = study.analysis;
+  doc["check"] = study.check.empty() ? Json(nullptr) : Json(study.check);
+  doc["reference_kind"] = study.check.empty() ? "richardson" : "closed form";
+  Json methods = Json::array();
+  for (const ConvergeSeries& s : study.series) {
+    Json m;
+    m["name"] = s.method.name;
+    m["label"] = s.method.label;
+    m["reference"] = s.reference;
+    m["extrapolation_order"] = optionalNumber(s.extrapolationOrder);
+    Json levels = Json::array();
+    for (const ConvergeLevel& l : s.levels)
+      levels.push_back({{"level", l.level},
+                        {"elements", l.elements},
+                        {"dofs", l.dofs},
+                        {"runs", l.runs},
+                        {"time_s",
+                         {{"assembly", l.assembly},
+                          {"factor", l.factor},
+                          {"solve", l.solve},
+                          {"total", l.total}}},
+                        {"value", l.value},
+                        {"rel_error", l.error},
+                        {"order", optionalNumber(l.order)}});
+    m["levels"] = std::move(levels);
+    m["failure"] = s.failure.empty() ? Json(nullptr) : Json(s.failure);
+    methods.push_back(std::move(m));
+  }
+  doc["methods"] = std::move(methods);
+  doc["beamrotor_version"] = BEAMROTOR_VERSION;
+  return doc;
+}
+
+CsvTable convergenceTable(const ConvergeSeries& series) {
+  CsvTable table(csvName(series), {{"level", ""},
+                                   {"elements", ""},
+                                   {"dofs", ""},
+                                   {"assembly", "s"},
+                                   {"factor", "s"},
+                                   {"solve", "s"},
+                                   {"total", "s"},
+                                   {"value", ""},
+                                   {"rel_error", ""}});
+  for (const ConvergeLevel& l : series.levels)
+    table.addRow({static_cast<long long>(l.level), static_cast<long long>(l.elements),
+                  static_cast<long long>(l.dofs), l.assembly, l.factor, l.solve, l.total, l.value,
+                  l.error});
+  return table;
+}
+
+void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir) {
+  const Json doc = convergenceJson(study);
+  requireFiniteNumbers(doc, kConvergenceJson);
+  std::vector<CsvTable> tables;
+  for (const ConvergeSeries& s : study.series) tables.push_back(convergenceTable(s));
+  writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
+    writeJson(doc, temporary / kConvergenceJson);
+    for (const CsvTable& t : tables) t.write(temporary / t.title());
+    drawChart(temporary, errorChart(study, "convergence_dofs", "dofs", "free dofs"));
+    drawChart(temporary, errorChart(study, "convergence_time", "total", "wall time (total) [s]"));
+  });
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,62 @@
+// `beamrotor converge`: one deck quantity computed on a sequence of meshes (each level halves
+// every element) with each element formulation, timed stage by stage, and its error against
+// the deck's closed form, or against a Richardson-extrapolated limit where the deck has none.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "problems/converge/ConvergeMethods.hpp"
+#include "problems/deck/Deck.hpp"
+
+namespace beamrotor {
+
+struct ConvergeOptions {
+  std::string quantity;  ///< a deck quantity phrase; empty: the deck's first applicable check
+  int levels = 5;        ///< meshes: the deck's own (level 0) and levels - 1 refinements
+  /// Runs timed per level when one run is short (< kShortRunSeconds); times are medians.
+  int repeats = 3;
+};
+
+/// A solve shorter than this (s) is repeated so that its times are medians.
+inline constexpr double kShortRunSeconds = 0.2;
+
+/// One mesh of one method.
+struct ConvergeLevel {
+  int level = 0;
+  int elements = 0;
+  int dofs = 0;                                           ///< free dofs
+  double assembly = 0, factor = 0, solve = 0, total = 0;  ///< s, medians over the runs
+  int runs = 1;
+  double value = 0;  ///< the quantity
+  double error = 0;  ///< |value - reference| / |reference| (absolute when reference is 0)
+  std::optional<double> order;  ///< observed order against the previous level
+};
+
+struct ConvergeSeries {
+  ConvergeMethod method;
+  std::vector<ConvergeLevel> levels;
+  double reference = 0;       ///< the closed form, or this series' extrapolated limit
+  bool extrapolated = false;  ///< reference is a Richardson estimate (no closed form)
+  std::optional<double> extrapolationOrder;  ///< the order the extrapolation found
+  /// Why the method stopped before the last level (the solver's message), empty if it did
+  /// not: a method that fails on fine meshes (e.g. the locking element's conditioning) ends
+  /// its series there, the others go on.
+  std::string failure;
+};
+
+struct ConvergeStudy {
+  std::string deckPath, deckName;
+  std::string quantity;  ///< as written, e.g. "frequency 1"
+  std::string analysis;  ///< the deck analysis it reads
+  std::string check;     ///< the check giving the closed form; empty when there is none
+  std::vector<ConvergeSeries> series;  ///< one per method
+};
+
+/// Runs the study on a read deck (its sweep ignored). Throws DeckError (naming the option,
+/// e.g. "--quantity") for a quantity the deck cannot give or too few levels, and
+/// DeckSolveError when a solve fails.
+ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options);
+
+}  // namespace beamrotor
