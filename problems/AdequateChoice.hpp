@@ -24,6 +24,12 @@ struct AdequateChoice {
   double searchSeconds = 0;                 ///< every solve of the search, the chosen one included
   int deckElements = 0, deckDofs = 0;  ///< the deck's own mesh and formulation (the fixed mesh)
   double deckSeconds = 0;              ///< one solve of it
+  /// Decks with a rigid-body and a modal analysis (a body on two springs, SCENES.md 2): the
+  /// largest relative difference of the two-dof closed-form frequencies from the two lowest
+  /// FE frequencies of the chosen mesh, and whether it (plus the mesh error) is within the
+  /// target, so that the rigid body alone is an adequate model.
+  std::optional<double> rigidBodyError;
+  bool rigidBodyAdequate = false;
 };
 
 }  // namespace beamrotor

@@ -22,6 +22,15 @@ void printAdequateChoice(std::ostream& out, const AdequateChoice& c) {
                 c.deckFormulation.c_str(), c.deckDofs, c.deckSeconds, c.deckDofs - c.dofs,
                 c.seconds, c.searchSeconds);
   out << line;
+  if (c.rigidBodyError) {
+    std::snprintf(line, sizeof line,
+                  "  rigid body on two springs: its two frequencies differ from the beam "
+                  "model's by %.2e: %s\n",
+                  *c.rigidBodyError,
+                  c.rigidBodyAdequate ? "adequate at this accuracy, no beam model needed"
+                                      : "not adequate at this accuracy, keep the beam model");
+    out << line;
+  }
 }
 
 }  // namespace beamrotor::cli

@@ -7,6 +7,7 @@
 
 #include "fem/Stopwatch.hpp"
 #include "problems/cli/ExitCodes.hpp"
+#include "problems/cli/Guarded.hpp"
 #include "problems/cli/Progress.hpp"
 #include "problems/cli/Summary.hpp"
 #include "problems/deck/DeckError.hpp"
@@ -18,20 +19,6 @@ namespace beamrotor::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Runs `body`, turning the deck's diagnostics into one line on `err` and an exit code.
-template <class Body>
-int guarded(std::ostream& err, Body&& body) {
-  try {
-    return body();
-  } catch (const DeckError& e) {
-    err << e.what() << "\n";
-    return kInputError;
-  } catch (const DeckSolveError& e) {
-    err << e.what() << "\n";
-    return kSolveFailure;
-  }
-}
 
 Study solveWithProgress(const StudyRequest& request, std::ostream& err) {
   std::unique_ptr<ProgressBar> shown;

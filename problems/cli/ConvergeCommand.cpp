@@ -4,6 +4,7 @@
 
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
+#include "problems/cli/Guarded.hpp"
 #include "problems/converge/ConvergeOutput.hpp"
 #include "problems/deck/DeckReader.hpp"
 
@@ -40,7 +41,7 @@ void printStudy(std::ostream& out, const ConvergeStudy& s) {
 }  // namespace
 
 int convergeCommand(const ConvergeRequest& request, std::ostream& out, std::ostream& err) {
-  try {
+  return guarded(err, [&] {
     const DeckSource source = loadDeckFile(request.deckPath);
     std::vector<ParameterOverride> overrides;
     for (const std::string& s : request.sets) overrides.push_back(parseOverride(s, source.path));
@@ -53,17 +54,11 @@ int convergeCommand(const ConvergeRequest& request, std::ostream& out, std::ostr
       writeConvergenceOutputs(study, dir);
     } catch (const std::exception& e) {
       err << dir.string() << ": cannot write the results: " << e.what() << "\n";
-      return kSolveFailure;
+      return int(kSolveFailure);
     }
     out << "results: " << dir.string() << "/\n";
-    return kOk;
-  } catch (const DeckError& e) {
-    err << e.what() << "\n";
-    return kInputError;
-  } catch (const DeckSolveError& e) {
-    err << e.what() << "\n";
-    return kSolveFailure;
-  }
+    return int(kOk);
+  });
 }
 
 }  // namespace beamrotor::cli

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 #include "fem/Stopwatch.hpp"
 #include "problems/converge/ConvergeMethods.hpp"
@@ -84,6 +86,25 @@ std::string theoryName(BeamTheory t) {
   return "?";
 }
 
+/// Largest relative difference of the two-dof frequencies of the run's rigid-body analysis
+/// from the two lowest frequencies of its first modal analysis; none without both.
+std::optional<double> rigidBodyError(const RunResult& run) {
+  const RigidBodyOutcome* rigid = nullptr;
+  const ModalResult* modal = nullptr;
+  for (const AnalysisOutcome& a : run.analyses) {
+    if (!rigid && a.rotor && a.rotor->rigidBody) rigid = &*a.rotor->rigidBody;
+    if (!modal && a.modal) modal = &*a.modal;
+  }
+  if (!rigid || !modal || modal->modes.size() < 2) return std::nullopt;
+  double largest = 0;
+  for (int i = 0; i < 2; ++i) {
+    const double fe = modal->modes[i].frequencyHz;
+    const double twoDof = rigid->modes[i].k / (2 * std::numbers::pi);
+    largest = std::max(largest, std::abs(twoDof - fe) / fe);
+  }
+  return largest;
+}
+
 int dofsOf(const Deck& deck, const RunResult& run) {
   return run.model->nodeCount() * deck.dofs.size();
 }
@@ -136,6 +157,11 @@ RunResult runAdequateModel(const Deck& deck) {
   choice.deckDofs = dofsOf(deck, fixedRun);
   choice.deckSeconds = fixedRun.seconds;
   choice.searchSeconds += run.seconds;
+
+  // 4. The rigid body on its springs, where the deck compares one.
+  choice.rigidBodyError = rigidBodyError(run);
+  choice.rigidBodyAdequate =
+      choice.rigidBodyError && *choice.rigidBodyError + choice.meshError <= target;
   run.adequate = choice;
   return run;
 }

@@ -14,6 +14,10 @@
 //    is chosen when its mesh estimate plus the shear contribution is within the target.
 // 3. The chosen model is solved once more, timed, and so is the deck's own mesh (the fixed
 //    mesh it replaces), for the cost comparison.
+// 4. A deck with a rigid-body analysis and a modal one (a body on two springs): the two-dof
+//    closed form's frequencies against the two lowest FE ones; when they differ by less
+//    than the target (less the mesh error), the rigid body is reported adequate: no beam
+//    model is needed for those frequencies (the scene's "no more model than needed").
 #pragma once
 
 #include "problems/RunResult.hpp"

@@ -13,9 +13,9 @@ void readAccuracy(Context& c) {
     f->fail("needs at least one check: the accuracy is on the checked quantities");
   if (c.deck.segments.empty()) f->fail("needs beam segments: their mesh is what it chooses");
   for (const DeckAnalysis& a : c.deck.analyses)
-    if (a.type != "static" && a.type != "modal")
-      f->fail("applies to static and modal analyses; '" + a.name + "' is a " + a.type +
-              " analysis");
+    if (a.type != "static" && a.type != "modal" && a.type != "rigid-body")
+      f->fail("applies to static, modal and rigid-body analyses; '" + a.name + "' is a " +
+              a.type + " analysis");
   c.deck.accuracy = DeckAccuracy{target, f->place()};
 }
 

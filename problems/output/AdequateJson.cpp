@@ -19,6 +19,8 @@ Json adequateJson(const AdequateChoice& c) {
       {"elements", c.deckElements}, {"dofs", c.deckDofs}, {"seconds", c.deckSeconds}};
   doc["dofs_saved"] = c.deckDofs - c.dofs;
   doc["time_ratio"] = c.deckSeconds > 0 ? c.seconds / c.deckSeconds : 0.0;
+  if (c.rigidBodyError)
+    doc["rigid_body"] = {{"error", *c.rigidBodyError}, {"adequate", c.rigidBodyAdequate}};
   return doc;
 }
 
