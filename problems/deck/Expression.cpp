@@ -38,12 +38,17 @@ std::string reason(const mu::Parser::exception_type& e, std::vector<std::string>
   return e.GetMsg();
 }
 
+/// What every deck expression may use beyond muparser's own: pi and the scene functions.
+void defineDeckBuiltins(mu::Parser& parser) {
+  parser.DefineConst("pi", std::numbers::pi);
+  defineSceneFunctions(parser);
+  defineDeckFunctions(parser);
+}
+
 }  // namespace
 
 ExpressionEvaluator::ExpressionEvaluator() : parser_(std::make_unique<mu::Parser>()) {
-  parser_->DefineConst("pi", std::numbers::pi);
-  defineSceneFunctions(*parser_);
-  defineDeckFunctions(*parser_);
+  defineDeckBuiltins(*parser_);
 }
 
 ExpressionEvaluator::~ExpressionEvaluator() = default;
@@ -117,8 +122,7 @@ CompiledExpression ExpressionEvaluator::compile(const std::string& text,
   st.names = variables;
   std::vector<std::string> known = names_;
   try {
-    st.parser.DefineConst("pi", std::numbers::pi);
-    defineSceneFunctions(st.parser);
+    defineDeckBuiltins(st.parser);
     for (const auto& [name, value] : parser_->GetConst())
       if (name != "pi" && name != "_pi" && name != "_e") st.parser.DefineConst(name, value);
     for (std::size_t i = 0; i < variables.size(); ++i) {

@@ -119,4 +119,13 @@ TEST_SUITE("pump rod crank cycle") {
     // Function names are reserved: a deck cannot define a parameter called crank_position.
     CHECK_THROWS_AS(ev.define("crank_position", 1), ExpressionError);
   }
+
+  TEST_CASE("a compiled expression of t (a time load) can call crank_position too") {
+    // A crank turning at 1 rad/s: the slider has run the whole stroke 2 r at t = pi, and
+    // equals the kinematics above in between.
+    const ExpressionEvaluator ev;
+    const CompiledExpression x = ev.compile("crank_position(0.2, 1.2, t)", {"t"});
+    CHECK(x({kPi}) == doctest::Approx(0.4).epsilon(1e-15));
+    CHECK(std::abs(x({1.0}) - sliderPosition(0.2, 1.2, 1.0)) < 1e-15);
+  }
 }
