@@ -9,6 +9,7 @@
 #include "problems/converge/ConvergeMethods.hpp"
 #include "problems/deck/DeckRunner.hpp"
 #include "problems/deck/Field.hpp"
+#include "problems/deck/Formulations.hpp"
 
 namespace beamrotor {
 
@@ -72,20 +73,6 @@ MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
                            formatNumber(deck.accuracy->target));
 }
 
-std::string theoryName(BeamTheory t) {
-  switch (t) {
-    case BeamTheory::eulerBernoulli:
-      return "euler-bernoulli";
-    case BeamTheory::timoshenko:
-      return "timoshenko";
-    case BeamTheory::timoshenkoLinearFullIntegration:
-      return "timoshenko-linear-full";
-    case BeamTheory::timoshenkoLinearReducedIntegration:
-      return "timoshenko-linear-reduced";
-  }
-  return "?";
-}
-
 /// Largest relative difference of the two-dof frequencies of the run's rigid-body analysis
 /// from the two lowest frequencies of its first modal analysis; none without both.
 std::optional<double> rigidBodyError(const RunResult& run) {
@@ -115,7 +102,7 @@ RunResult runAdequateModel(const Deck& deck) {
   const double target = deck.accuracy->target;
   AdequateChoice choice;
   choice.target = target;
-  choice.deckFormulation = theoryName(deck.segments.front().options.theory);
+  choice.deckFormulation = formulationName(deck.segments.front().options.theory);
 
   // 1. The mesh for the deck's own beam theory.
   MeshChoice chosen = searchMesh(deck, target, choice.searchSeconds);
@@ -148,7 +135,7 @@ RunResult runAdequateModel(const Deck& deck) {
   fixed.accuracy.reset();
   const RunResult fixedRun = runDeck(fixed);
   RunResult run = runDeck(chosenDeck);
-  choice.formulation = theoryName(chosenDeck.segments.front().options.theory);
+  choice.formulation = formulationName(chosenDeck.segments.front().options.theory);
   choice.elementsPerSegment = 1 << chosen.level;
   choice.elements = int(run.model->elements().size());
   choice.dofs = dofsOf(deck, run);

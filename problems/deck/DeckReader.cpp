@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "problems/deck/Formulations.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
 
@@ -116,13 +117,12 @@ void readDerived(Context& c) {
 }
 
 BeamTheory readFormulation(const Field& f) {
-  const std::string s =
-      f.choice({"euler-bernoulli", "timoshenko", "timoshenko-linear-full",
-                "timoshenko-linear-reduced"});
-  if (s == "timoshenko") return BeamTheory::timoshenko;
-  if (s == "timoshenko-linear-full") return BeamTheory::timoshenkoLinearFullIntegration;
-  if (s == "timoshenko-linear-reduced") return BeamTheory::timoshenkoLinearReducedIntegration;
-  return BeamTheory::eulerBernoulli;
+  std::vector<std::string> names;
+  for (const auto& [name, theory] : kFormulations) names.push_back(name);
+  const std::string s = f.choice(names);
+  for (const auto& [name, theory] : kFormulations)
+    if (s == name) return theory;
+  return BeamTheory::eulerBernoulli;  // not reached: choice() accepts only these names
 }
 
 /// 3. Model options: dimension and the default beam formulation.
