@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "fem/LineElement.hpp"
+#include "fem/model/LineElement.hpp"
 
 namespace beamrotor {
 
@@ -95,11 +95,11 @@ class Beam : public LineElement {
   DofSet carried_;
   BeamOptions options_;
   double L_ = 0;
-  Eigen::Matrix3d R_;                       // rows: local axes in global coordinates
+  Eigen::Matrix3d R_;  // rows: local axes in global coordinates
   Eigen::Vector3d qLocal_ = Eigen::Vector3d::Zero();
-  std::vector<int> released_;               // local indices 0..11 of released rotations
+  std::vector<int> released_;  // local indices 0..11 of released rotations
   std::array<NodeDof, 12> dofs_{};
-  std::array<int, 12> globalIndex_{};       // position of each carried dof in the 12 globals
+  std::array<int, 12> globalIndex_{};  // position of each carried dof in the 12 globals
   int count_ = 0;
 };
 

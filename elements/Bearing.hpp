@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "fem/RotorElement.hpp"
+#include "fem/model/RotorElement.hpp"
 
 namespace beamrotor {
 

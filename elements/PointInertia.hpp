@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "fem/Element.hpp"
+#include "fem/model/Element.hpp"
 
 namespace beamrotor {
 

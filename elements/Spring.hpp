@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "fem/Element.hpp"
+#include "fem/model/Element.hpp"
 
 namespace beamrotor {
 

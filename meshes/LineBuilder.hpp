@@ -7,16 +7,16 @@
 #include <vector>
 
 #include "elements/Beam.hpp"
-#include "fem/Model.hpp"
+#include "fem/model/Model.hpp"
 
 namespace beamrotor {
 
 /// One prismatic piece of the line.
 struct Segment {
-  double length = 0;                        ///< m
+  double length = 0;  ///< m
   std::shared_ptr<const Section> section;
-  int elements = 0;                         ///< element count, or 0 to use targetSize
-  double targetSize = 0;                    ///< largest element length (m) when elements == 0
+  int elements = 0;       ///< element count, or 0 to use targetSize
+  double targetSize = 0;  ///< largest element length (m) when elements == 0
   BeamOptions options;
 };
 
@@ -36,9 +36,9 @@ struct LineSpec {
 
 /// What the builder made, in order along the line.
 struct Line {
-  std::vector<int> nodes;          ///< node indices from start to end
-  std::vector<double> stations;    ///< distance of each node from the start (m)
-  std::vector<Beam*> beams;        ///< elements from start to end (owned by the model)
+  std::vector<int> nodes;        ///< node indices from start to end
+  std::vector<double> stations;  ///< distance of each node from the start (m)
+  std::vector<Beam*> beams;      ///< elements from start to end (owned by the model)
 };
 
 /// Adds the line's nodes and beams to model and names its points. Throws

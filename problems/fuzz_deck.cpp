@@ -7,7 +7,7 @@
 
 #include "problems/deck/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/ModelBuilder.hpp"
+#include "problems/run/ModelBuilder.hpp"
 
 namespace {
 

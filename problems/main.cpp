@@ -2,7 +2,7 @@
 // `--version`. Everything lives in problems/cli; this only connects it to the process.
 #include <iostream>
 
-#include "fem/HeapReserve.hpp"
+#include "fem/solvers/HeapReserve.hpp"
 #include "problems/cli/App.hpp"
 
 int main(int argc, char** argv) {

@@ -3,12 +3,15 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "elements/Beam.hpp"
-#include "fem/Model.hpp"
+#include "fem/model/Model.hpp"
 #include "meshes/LineBuilder.hpp"
 
 namespace beamrotor::test {
+
+inline constexpr double kPi = std::numbers::pi;
 
 inline double relError(double computed, double reference) {
   return std::abs(computed - reference) / std::abs(reference);

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/HeapReserve.hpp"
-#include "fem/Modal.hpp"
-#include "fem/Static.hpp"
-#include "fem/Stopwatch.hpp"
+#include "fem/modal/Modal.hpp"
+#include "fem/solvers/HeapReserve.hpp"
+#include "fem/static/Static.hpp"
+#include "fem/timing/Stopwatch.hpp"
 #include "problems/bench/BenchKinds.hpp"
 #include "problems/bench/StandardModels.hpp"
 
@@ -33,7 +33,8 @@ Deflection deflection(const GridBenchModel& grid, const NodalField& u) {
       const int p = grid.nodeAt(i, j);
       if (p < 0) continue;
       d.largest = std::max(d.largest, std::abs(u(p, uz)));
-      for (const int image : {grid.nodeAt(last - i, j), grid.nodeAt(i, last - j), grid.nodeAt(j, i)})
+      for (const int image :
+           {grid.nodeAt(last - i, j), grid.nodeAt(i, last - j), grid.nodeAt(j, i)})
         worst = std::max(worst, std::abs(u(p, uz) - u(image, uz)));
     }
   d.asymmetry = d.largest > 0 ? worst / d.largest : 0;
@@ -89,8 +90,8 @@ BenchReport benchGrid(const BenchOptions& options) {
                     {"/symmetry_error", w.asymmetry, "largest asymmetry of uz (relative)"}};
   if (bays % 2 == 0) report.figures.push_back({"/centre_w", centreW, "centre deflection uz (m)"});
   if (report.frequenciesHz.size() >= 3)
-    report.figures.push_back({"/modal/pair_split", pairSplit,
-                              "f3 / f2 - 1 (a degenerate pair by symmetry)"});
+    report.figures.push_back(
+        {"/modal/pair_split", pairSplit, "f3 / f2 - 1 (a degenerate pair by symmetry)"});
   return report;
 }
 

@@ -1,7 +1,7 @@
 // Bookkeeping every benchmark kind shares (see BenchKinds.hpp).
 #include "problems/bench/BenchKinds.hpp"
 
-#include "fem/Median.hpp"
+#include "fem/timing/Median.hpp"
 #include "problems/output/MatrixExport.hpp"
 
 namespace beamrotor {

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "fem/Model.hpp"
-#include "fem/Results.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
 #include "problems/bench/Bench.hpp"
 
 namespace beamrotor {

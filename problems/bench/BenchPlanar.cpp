@@ -4,10 +4,10 @@
 // nodally exact), and the simply supported span frequency pi / (2 s^2) sqrt(E I / (rho A)).
 #include <cmath>
 
-#include "fem/HeapReserve.hpp"
-#include "fem/Modal.hpp"
-#include "fem/Static.hpp"
-#include "fem/Stopwatch.hpp"
+#include "fem/modal/Modal.hpp"
+#include "fem/solvers/HeapReserve.hpp"
+#include "fem/static/Static.hpp"
+#include "fem/timing/Stopwatch.hpp"
 #include "problems/bench/BenchKinds.hpp"
 #include "problems/bench/StandardModels.hpp"
 
@@ -58,8 +58,8 @@ BenchReport benchPlanar(const BenchOptions& options) {
   report.figures = {{"/midspan_w", midspanW, "midspan w (m)"},
                     {"/exact_midspan_w", exactMidspanW, "q s^4 / (384 E I) (m)"}};
   if (!report.frequenciesHz.empty()) {
-    report.figures.push_back({"/modal/exact_lowest_hz", exactLowestHz,
-                              "simply supported span frequency (Hz)"});
+    report.figures.push_back(
+        {"/modal/exact_lowest_hz", exactLowestHz, "simply supported span frequency (Hz)"});
     report.figures.push_back({"/modal/rel_error_lowest",
                               std::abs(report.frequenciesHz[0] / exactLowestHz - 1),
                               "f1 above it (discrete model: 6.7e-6)"});

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/HeapReserve.hpp"
-#include "fem/Modal.hpp"
-#include "fem/RotorCampbell.hpp"
-#include "fem/Static.hpp"
-#include "fem/Stopwatch.hpp"
+#include "fem/modal/Modal.hpp"
+#include "fem/rotor/RotorCampbell.hpp"
+#include "fem/solvers/HeapReserve.hpp"
+#include "fem/static/Static.hpp"
+#include "fem/timing/Stopwatch.hpp"
 #include "problems/bench/BenchKinds.hpp"
 #include "problems/bench/StandardModels.hpp"
 
@@ -25,7 +25,9 @@ constexpr int kSpeeds = 50;
 constexpr double kTopSpeed = 10000 * 2 * 3.141592653589793 / 60;  // 10000 rpm in rad/s
 
 /// Free dofs of the rotor with 4 q elements: 4 per node.
-long long rotorFreeDofs(int quarters) { return 4LL * (4 * quarters + 1); }
+long long rotorFreeDofs(int quarters) {
+  return 4LL * (4 * quarters + 1);
+}
 
 std::vector<double> campbellSpeeds() {
   std::vector<double> speeds(kSpeeds);

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "fem/Model.hpp"
+#include "fem/model/Model.hpp"
 
 namespace beamrotor {
 
@@ -14,9 +14,9 @@ namespace beamrotor {
 struct PlanarBenchModel {
   std::unique_ptr<Model> model;
   int spans = 0;
-  int midspanNode = -1;          ///< midspan of the middle span
-  double exactMidspanW = 0;      ///< q s^4 / (384 E I), downwards negative (m)
-  double exactLowestHz = 0;      ///< simply supported span: pi / (2 s^2) sqrt(E I / (rho A))
+  int midspanNode = -1;      ///< midspan of the middle span
+  double exactMidspanW = 0;  ///< q s^4 / (384 E I), downwards negative (m)
+  double exactLowestHz = 0;  ///< simply supported span: pi / (2 s^2) sqrt(E I / (rho A))
 };
 PlanarBenchModel planarBenchModel(int elements);
 
@@ -28,9 +28,9 @@ PlanarBenchModel planarBenchModel(int elements);
 struct GridBenchModel {
   std::unique_ptr<Model> model;
   int bays = 0;
-  int side = 0;               ///< lattice points per side, 4 bays + 1
-  std::vector<int> lattice;   ///< node at lattice point (i, j) = lattice[j * side + i], or -1
-  double totalLoad = 0;       ///< N, the sum of the nodal loads (downwards)
+  int side = 0;              ///< lattice points per side, 4 bays + 1
+  std::vector<int> lattice;  ///< node at lattice point (i, j) = lattice[j * side + i], or -1
+  double totalLoad = 0;      ///< N, the sum of the nodal loads (downwards)
 
   int nodeAt(int i, int j) const { return lattice[std::size_t(j) * side + i]; }
 };

@@ -4,7 +4,7 @@
 
 #include <ostream>
 
-#include "problems/AdequateChoice.hpp"
+#include "problems/run/AdequateChoice.hpp"
 
 namespace beamrotor::cli {
 

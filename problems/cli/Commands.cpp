@@ -5,7 +5,7 @@
 #include <fstream>
 #include <memory>
 
-#include "fem/Stopwatch.hpp"
+#include "fem/timing/Stopwatch.hpp"
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/Guarded.hpp"
 #include "problems/cli/Progress.hpp"
@@ -82,9 +82,9 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     const double solveSeconds = clock.lap();
 
     // 2. Write the outputs.
-    const std::filesystem::path dir =
-        options.outDir.empty() ? std::filesystem::path("out") / s.deck.stem
-                               : std::filesystem::path(options.outDir);
+    const std::filesystem::path dir = options.outDir.empty()
+                                          ? std::filesystem::path("out") / s.deck.stem
+                                          : std::filesystem::path(options.outDir);
     const fs::path matricesDir = options.exportMatrices && !options.exportMatrices->empty()
                                      ? fs::path(*options.exportMatrices)
                                      : dir / "matrices";
@@ -94,8 +94,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
         writeRunOutputs(*s.run, dir);
       else
         writeSweepOutputs(*s.sweep, dir);
-      if (options.exportMatrices)
-        exportStudyMatrices(s, matricesDir);
+      if (options.exportMatrices) exportStudyMatrices(s, matricesDir);
     } catch (const std::exception& e) {
       writeError = e.what();
     }
@@ -121,8 +120,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
       return int(kSolveFailure);
     }
     out << "results: " << dir.string() << "/\n";
-    if (options.exportMatrices)
-      out << "matrices: " << matricesDir.string() << "/\n";
+    if (options.exportMatrices) out << "matrices: " << matricesDir.string() << "/\n";
     return int(kOk);
   });
 }

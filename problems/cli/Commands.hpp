@@ -8,7 +8,7 @@
 
 #include "problems/bench/Bench.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
 
 namespace beamrotor::cli {
 
@@ -35,7 +35,7 @@ struct ConvergeRequest {
   std::string deckPath;
   std::vector<std::string> sets;  ///< "NAME=VALUE" overrides, as typed
   ConvergeOptions options;
-  std::string outDir;             ///< empty: out/<deck stem>_converge
+  std::string outDir;  ///< empty: out/<deck stem>_converge
 };
 
 /// `beamrotor converge` (ConvergeCommand.cpp): the convergence study of one deck quantity,

@@ -5,10 +5,10 @@
 
 #include <ostream>
 
-#include "fem/Model.hpp"
-#include "fem/Results.hpp"
-#include "problems/RunResult.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
 #include "problems/deck/Deck.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
 

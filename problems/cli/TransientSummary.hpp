@@ -4,7 +4,7 @@
 
 #include <ostream>
 
-#include "problems/RunResult.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
 

@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fem/Median.hpp"
+#include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
-#include "problems/deck/DeckRunner.hpp"
+#include "problems/run/DeckRunner.hpp"
+#include "problems/run/Measure.hpp"
 
 namespace beamrotor {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "problems/converge/ConvergeMethods.hpp"
 #include "problems/deck/Deck.hpp"
+#include "problems/run/ConvergeMethods.hpp"
 
 namespace beamrotor {
 

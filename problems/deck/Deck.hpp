@@ -3,32 +3,32 @@
 // DeckRunner solves it. Each item keeps its place in the file for later messages.
 #pragma once
 
-#include <memory>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "elements/Beam.hpp"
-#include "fem/Dof.hpp"
-#include "fem/Section.hpp"
+#include "fem/model/Dof.hpp"
+#include "fem/model/Section.hpp"
 #include "problems/deck/DeckAccuracy.hpp"
 #include "problems/deck/DeckError.hpp"
-#include "problems/deck/DeckTransient.hpp"
 #include "problems/deck/DeckRotor.hpp"
+#include "problems/deck/DeckTransient.hpp"
 #include "problems/deck/Quantity.hpp"
 
 namespace beamrotor {
 
 /// A prismatic piece of the line (see meshes/LineBuilder Segment).
 struct DeckSegment {
-  std::string name;                       ///< optional; loads refer to segments by name
-  double length = 0;                      ///< m
+  std::string name;   ///< optional; loads refer to segments by name
+  double length = 0;  ///< m
   std::shared_ptr<const Section> section;
   std::string sectionName;
-  int elements = 0;                       ///< element count, or 0 to use size
-  double size = 0;                        ///< largest element length (m) when elements == 0
+  int elements = 0;  ///< element count, or 0 to use size
+  double size = 0;   ///< largest element length (m) when elements == 0
   BeamOptions options;
   DeckPlace place;
 };
@@ -54,8 +54,8 @@ struct DeckSpring {
   std::string point;
   std::string toPoint;  ///< empty: grounded
   Dof dof = Dof::uy;
-  double k = 0;         ///< N/m or N m/rad
-  double c = 0;         ///< N s/m or N m s/rad
+  double k = 0;  ///< N/m or N m/rad
+  double c = 0;  ///< N s/m or N m s/rad
   DeckPlace place;
 };
 
@@ -89,11 +89,11 @@ struct DeckHinge {
 struct DeckLoad {
   enum class Kind { point, distributed, selfWeight };
   Kind kind = Kind::point;
-  std::string point;                        ///< point loads
+  std::string point;                               ///< point loads
   std::vector<std::pair<Dof, double>> components;  ///< point loads: N on ux.., N m on rx..
   Eigen::Vector3d q = Eigen::Vector3d::Zero();     ///< distributed: N/m, global frame
-  double g = 9.81;                          ///< self-weight: m/s^2, acting along -y
-  std::vector<int> segments;                ///< distributed and self-weight: indices; all if empty
+  double g = 9.81;                                 ///< self-weight: m/s^2, acting along -y
+  std::vector<int> segments;  ///< distributed and self-weight: indices; all if empty
   DeckPlace place;
 };
 
@@ -105,18 +105,18 @@ struct DeckAnalysis {
   double shift = 0;  ///< modal: rad^2/s^2; rotor, campbell: 1/s
   DeckPlace place;
   std::optional<DeckTransient> transient;  ///< transient: its settings
-  DeckRotorAnalysis rotor;  ///< rotor analyses: speeds, unbalance, points
+  DeckRotorAnalysis rotor;                 ///< rotor analyses: speeds, unbalance, points
 };
 
 /// A closed-form comparison.
 struct DeckCheck {
   std::string name;
   Quantity quantity;
-  std::string analysis;      ///< the analysis it reads (resolved: never empty)
+  std::string analysis;  ///< the analysis it reads (resolved: never empty)
   double reference = 0;
-  double tolerance = 0;      ///< on the relative error
-  bool applicable = true;    ///< false when its `when:` condition is false
-  std::string condition;     ///< the `when:` text, empty if none
+  double tolerance = 0;    ///< on the relative error
+  bool applicable = true;  ///< false when its `when:` condition is false
+  std::string condition;   ///< the `when:` text, empty if none
   DeckPlace place;
 };
 
@@ -137,10 +137,10 @@ struct Deck {
 
   std::string dimension = "planar";  ///< "planar", "3d" or "lateral"
   DofSet dofs = DofSet::planar();
-  BeamOptions beam;                  ///< the default element formulation
+  BeamOptions beam;  ///< the default element formulation
 
   std::vector<DeckSegment> segments;
-  std::vector<DeckPoint> points;     ///< including the automatic "start" and "end"
+  std::vector<DeckPoint> points;  ///< including the automatic "start" and "end"
   std::vector<DeckSupport> supports;
   std::vector<DeckSpring> springs;
   std::vector<DeckContact> contacts;

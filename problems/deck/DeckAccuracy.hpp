@@ -1,5 +1,5 @@
 // `accuracy: 1e-4` in a deck: the relative accuracy wanted on its checked quantities, which
-// lets the solver pick the cheapest adequate model (problems/converge/AdequateModel.hpp).
+// lets the solver pick the cheapest adequate model (problems/run/AdequateModel.hpp).
 #pragma once
 
 #include "problems/deck/DeckError.hpp"

@@ -1,5 +1,7 @@
 #include "problems/deck/DeckError.hpp"
 
+#include <yaml-cpp/mark.h>
+
 namespace beamrotor {
 
 namespace {
@@ -18,6 +20,11 @@ std::string oneLine(const std::string& text) {
 }
 
 }  // namespace
+
+DeckPlace placeOf(const YAML::Mark& mark) {
+  if (mark.is_null() || mark.line < 0) return {};
+  return {mark.line + 1, mark.column + 1, ""};
+}
 
 std::string formatDeckMessage(const std::string& file, const DeckPlace& place,
                               const std::string& message) {

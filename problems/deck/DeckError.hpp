@@ -7,6 +7,10 @@
 #include <stdexcept>
 #include <string>
 
+namespace YAML {
+struct Mark;
+}
+
 namespace beamrotor {
 
 /// A position in a deck: 1-based line and column (0 when unknown) and the dotted path of the
@@ -16,6 +20,9 @@ struct DeckPlace {
   int column = 0;
   std::string field;
 };
+
+/// The place of a yaml-cpp mark (1-based); unknown (all 0) for a null or negative mark.
+DeckPlace placeOf(const YAML::Mark& mark);
 
 /// "file:line:column: field: message" with the unknown parts left out, on one line (newlines
 /// inside the message become spaces).

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "elements/Bearing.hpp"
-#include "fem/RotorSystem.hpp"
+#include "fem/rotor/RotorSystem.hpp"
 #include "problems/deck/DeckError.hpp"
 
 namespace beamrotor {

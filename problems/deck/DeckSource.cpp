@@ -1,14 +1,14 @@
 #include "problems/deck/DeckSource.hpp"
 
+#include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <optional>
 #include <sstream>
-
-#include <yaml-cpp/depthguard.h>
-#include <yaml-cpp/eventhandler.h>
-#include <yaml-cpp/parser.h>
 
 #include "problems/deck/DeckError.hpp"
 
@@ -17,7 +17,7 @@ namespace beamrotor {
 namespace {
 
 /// Where a byte offset lies, 1-based.
-DeckPlace placeOf(const std::string& text, std::size_t offset) {
+DeckPlace placeAt(const std::string& text, std::size_t offset) {
   DeckPlace p{1, 1, ""};
   for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
     if (text[i] == '\n') {
@@ -34,7 +34,11 @@ DeckPlace placeOf(const std::string& text, std::size_t offset) {
 std::size_t utf8Length(const std::string& text, std::size_t i) {
   const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
   const unsigned char c = byte(i);
-  std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+  std::size_t n = c < 0x80           ? 1
+                  : (c >> 5) == 0x6  ? 2
+                  : (c >> 4) == 0xE  ? 3
+                  : (c >> 3) == 0x1E ? 4
+                                     : 0;
   if (n == 0 || i + n > text.size()) return 0;
   for (std::size_t k = 1; k < n; ++k)
     if ((byte(i + k) & 0xC0) != 0x80) return 0;
@@ -53,17 +57,12 @@ void requireText(const std::string& text, const std::string& path) {
     if (n == 0) {
       char code[8];
       std::snprintf(code, sizeof code, "0x%02X", unsigned(c));
-      throw DeckError(path, placeOf(text, i),
+      throw DeckError(path, placeAt(text, i),
                       std::string("not a text deck: byte ") + code +
                           " is not printable UTF-8 text (is this a binary file?)");
     }
     i += n;
   }
-}
-
-DeckPlace placeOf(const YAML::Mark& mark) {
-  if (mark.is_null()) return {};
-  return {mark.line + 1, mark.column + 1, ""};
 }
 
 /// YAML forbids tabs in indentation and yaml-cpp's message does not say so: add a hint when
@@ -139,8 +138,9 @@ void requireOneDocument(const std::string& text, const std::string& path) {
   const std::optional<YAML::Mark>& b = starts[1];
   if (a && b && a->pos == b->pos) {
     const char c = b->pos >= 0 && b->pos < int(text.size()) ? text[b->pos] : '?';
-    throw DeckError(path, placeOf(*b),
-                    std::string("YAML syntax error: unexpected '") + c + "' outside a [list] or {map}");
+    throw DeckError(
+        path, placeOf(*b),
+        std::string("YAML syntax error: unexpected '") + c + "' outside a [list] or {map}");
   }
   throw DeckError(path, b ? placeOf(*b) : DeckPlace{},
                   "the file holds more than one YAML document (separated by '---'); a deck is "
@@ -157,9 +157,9 @@ std::string stemOf(const std::string& path) {
 DeckSource parseDeckText(const std::string& text, const std::string& path) {
   // 1. Plain text of a sensible size.
   if (text.size() > kLargestDeck)
-    throw DeckError(path, {}, "the file is " + std::to_string(text.size()) +
-                                  " bytes; a deck may have at most " +
-                                  std::to_string(kLargestDeck));
+    throw DeckError(path, {},
+                    "the file is " + std::to_string(text.size()) +
+                        " bytes; a deck may have at most " + std::to_string(kLargestDeck));
   requireText(text, path);
 
   // 2. YAML syntax: exactly one document.

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "fem/Dof.hpp"
-#include "fem/TimeLoad.hpp"
-#include "fem/Transient.hpp"
+#include "fem/model/Dof.hpp"
+#include "fem/transient/TimeLoad.hpp"
+#include "fem/transient/Transient.hpp"
 #include "problems/deck/DeckError.hpp"
 
 namespace beamrotor {

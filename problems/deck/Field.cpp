@@ -13,11 +13,6 @@ namespace beamrotor {
 
 namespace {
 
-DeckPlace placeOf(const YAML::Mark& mark) {
-  if (mark.is_null() || mark.line < 0) return {};
-  return {mark.line + 1, mark.column + 1, ""};
-}
-
 /// Scalars are quoted in messages but cut short: a message stays one readable line.
 std::string quoted(const std::string& text) {
   constexpr std::size_t kShown = 60;
@@ -36,7 +31,9 @@ std::string formatNumber(double v) {
 
 Field::Field(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
              DeckPlace fallback)
-    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)),
+    : node_(std::move(node)),
+      path_(std::move(path)),
+      file_(std::move(file)),
       fallback_(std::move(fallback)) {}
 
 Field Field::root(const YAML::Node& node, const std::string& file) {
@@ -60,7 +57,9 @@ DeckPlace Field::place() const {
   return p;
 }
 
-void Field::fail(const std::string& message) const { throw DeckError(*file_, place(), message); }
+void Field::fail(const std::string& message) const {
+  throw DeckError(*file_, place(), message);
+}
 
 std::string Field::describe() const {
   if (isNull()) return "nothing";
@@ -141,11 +140,9 @@ std::string Field::text() const {
 
 std::string Field::name() const {
   const std::string s = text();
-  const bool ok = !s.empty() && s.size() <= 64 &&
-                  std::all_of(s.begin(), s.end(), [](char c) {
-                    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ||
-                           c == '.';
-                  });
+  const bool ok = !s.empty() && s.size() <= 64 && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
   if (!ok)
     fail("expected a name (letters, digits, '_', '-', '.'; at most 64 characters), got " +
          quoted(s));
@@ -153,8 +150,7 @@ std::string Field::name() const {
 }
 
 double Field::number(const ExpressionEvaluator& evaluator) const {
-  if (!isScalar())
-    fail("expected a number or an expression, got " + describe());
+  if (!isScalar()) fail("expected a number or an expression, got " + describe());
   try {
     return evaluator.evaluate(node_.Scalar());
   } catch (const ExpressionError& e) {
@@ -196,8 +192,8 @@ std::string Field::choice(const std::vector<std::string>& choices) const {
   const std::string s = text();
   for (const std::string& c : choices)
     if (s == c) return s;
-  fail("unknown value " + quoted(s) + didYouMean(s, choices) + " (expected one of: " +
-       joinNames(choices) + ")");
+  fail("unknown value " + quoted(s) + didYouMean(s, choices) +
+       " (expected one of: " + joinNames(choices) + ")");
 }
 
 }  // namespace beamrotor

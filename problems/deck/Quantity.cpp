@@ -1,12 +1,9 @@
 #include "problems/deck/Quantity.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 #include <vector>
 
-#include "fem/Recovery.hpp"
-#include "problems/TransientOutcome.hpp"
 #include "problems/deck/RotorQuantity.hpp"
 
 namespace beamrotor {
@@ -19,35 +16,16 @@ constexpr const char* kGrammar =
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
-/// Stations per element for the maxima: resultants vary at most quadratically along an
-/// element (uniform distributed load), so 8 intervals place a station within L/16 of any
-/// interior extremum, and the quadratic is flat there to (1/16)^2 relative.
-constexpr int kStationsPerElement = 8;
-
 /// ux..rz, or the force/moment names fx fy fz mx my mz for the same dofs.
 Dof parseComponent(const std::string& word) {
   if (auto d = parseDof(word)) return *d;
-  static const std::vector<std::pair<std::string, Dof>> aliases{
-      {"fx", Dof::ux}, {"fy", Dof::uy}, {"fz", Dof::uz},
-      {"mx", Dof::rx}, {"my", Dof::ry}, {"mz", Dof::rz}};
+  static const std::vector<std::pair<std::string, Dof>> aliases{{"fx", Dof::ux}, {"fy", Dof::uy},
+                                                                {"fz", Dof::uz}, {"mx", Dof::rx},
+                                                                {"my", Dof::ry}, {"mz", Dof::rz}};
   for (const auto& [name, dof] : aliases)
     if (word == name) return dof;
   throw std::invalid_argument("'" + word +
                               "' is not a component (ux uy uz rx ry rz, or fx fy fz mx my mz)");
-}
-
-double measureHistory(const Quantity& q, const TransientOutcome& outcome) {
-  const NamedHistory& h = outcome.history(q.target);
-  switch (q.kind) {
-    case Quantity::Kind::historyMax:
-      return h.max();
-    case Quantity::Kind::historyMin:
-      return h.min();
-    case Quantity::Kind::historyMaxAbs:
-      return h.maxAbs();
-    default:
-      return outcome.at(h, q.time);
-  }
 }
 
 }  // namespace
@@ -112,43 +90,6 @@ Quantity parseQuantity(const std::string& text) {
     return q;
   }
   throw std::invalid_argument("cannot read '" + text + "'; " + kGrammar);
-}
-
-double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
-  if (outcome.rotor) return measureRotor(q, outcome);
-  if (q.kind == Quantity::Kind::frequency) {
-    if (!outcome.modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
-    const auto& modes = outcome.modal->modes;
-    if (q.mode > int(modes.size()))
-      throw std::invalid_argument("analysis '" + outcome.name + "' found only " +
-                                  std::to_string(modes.size()) + " modes");
-    return modes[q.mode - 1].frequencyHz;
-  }
-  if (q.analysisType() == "transient") {
-    if (!outcome.transient)
-      throw std::invalid_argument("analysis '" + outcome.name + "' is not transient");
-    return measureHistory(q, *outcome.transient);
-  }
-  if (!outcome.statics)
-    throw std::invalid_argument("analysis '" + outcome.name + "' is not static");
-  const StaticResult& r = *outcome.statics;
-  switch (q.kind) {
-    case Quantity::Kind::reaction:
-      return r.reaction(q.target, q.dof);
-    case Quantity::Kind::displacement:
-      return r.displacement(model.node(q.target), dofIndex(q.dof));
-    default: {
-      double largest = 0;
-      for (const BeamStation& s : recoverBeamFields(model, r.displacement, kStationsPerElement)) {
-        const double v = q.kind == Quantity::Kind::maxStress ? s.stress
-                         : q.kind == Quantity::Kind::maxShear
-                             ? s.shear
-                             : std::hypot(s.forces.My, s.forces.Mz);
-        largest = std::max(largest, v);
-      }
-      return largest;
-    }
-  }
 }
 
 }  // namespace beamrotor

@@ -3,9 +3,9 @@
 //   displacement POINT DOF    displacement (m) or rotation (rad) of a named point
 //   frequency N               natural frequency of mode N (Hz), N from 1
 //   stress max                largest |normal stress| on the outer fibres of any beam (Pa)
-//   shear max                 largest transverse shear stress in any beam (Pa), fem/ShearStress
-//   moment max                largest bending moment magnitude in any beam (N m)
-//   history NAME max|min|maxabs   largest, smallest or largest |value| of a transient history
+//   shear max                 largest transverse shear stress in any beam (Pa),
+//   fem/model/ShearStress moment max                largest bending moment magnitude in any beam (N
+//   m) history NAME max|min|maxabs   largest, smallest or largest |value| of a transient history
 //   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
 //                             interpolated linearly between samples
 // those of the rotor analyses (RotorQuantity.cpp):
@@ -20,9 +20,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "fem/Dof.hpp"
-#include "fem/Model.hpp"
-#include "problems/RunResult.hpp"
+#include "fem/model/Dof.hpp"
 
 namespace beamrotor {
 
@@ -44,14 +42,14 @@ struct Quantity {
     historyAt  // transient analyses: keep these last (analysisType)
   };
   Kind kind = Kind::reaction;
-  std::string target;  ///< support (reaction), point (displacement) or history name
+  std::string target;    ///< support (reaction), point (displacement) or history name
   std::string timeText;  ///< historyAt: the time as written
   double time = 0;       ///< historyAt: s (set by the deck reader)
   Dof dof = Dof::uy;
   int mode = 1;          ///< frequency, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
   std::string property;  ///< rigid_body: which property
-  std::string text;    ///< as written, for reports
+  std::string text;      ///< as written, for reports
 
   /// The analysis type it reads by default (when a check names none).
   std::string analysisType() const;
@@ -62,9 +60,5 @@ struct Quantity {
 /// Parses the phrase; throws std::invalid_argument saying what is wrong and what is allowed.
 /// Names are not checked here (the deck reader knows them).
 Quantity parseQuantity(const std::string& text);
-
-/// The quantity's value in a solved analysis of model. Throws std::invalid_argument when the
-/// analysis lacks it (wrong type, too few modes, unknown name).
-double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model);
 
 }  // namespace beamrotor

@@ -1,5 +1,5 @@
 // Deck reader, `accuracy:`: the relative accuracy wanted on the checked quantities, with which
-// the runner picks the cheapest adequate mesh and beam theory (problems/converge/AdequateModel).
+// the runner picks the cheapest adequate mesh and beam theory (problems/run/AdequateModel).
 #include "problems/deck/ReaderContext.hpp"
 
 namespace beamrotor::reader {
@@ -14,8 +14,8 @@ void readAccuracy(Context& c) {
   if (c.deck.segments.empty()) f->fail("needs beam segments: their mesh is what it chooses");
   for (const DeckAnalysis& a : c.deck.analyses)
     if (a.type != "static" && a.type != "modal" && a.type != "rigid-body")
-      f->fail("applies to static, modal and rigid-body analyses; '" + a.name + "' is a " +
-              a.type + " analysis");
+      f->fail("applies to static, modal and rigid-body analyses; '" + a.name + "' is a " + a.type +
+              " analysis");
   c.deck.accuracy = DeckAccuracy{target, f->place()};
 }
 

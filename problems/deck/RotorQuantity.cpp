@@ -1,4 +1,4 @@
-// Check quantities of the rotor analyses (see RotorQuantity.hpp).
+// Check quantities of the rotor analyses, as read from a deck (see RotorQuantity.hpp).
 #include "problems/deck/RotorQuantity.hpp"
 
 #include <algorithm>
@@ -6,34 +6,6 @@
 #include <numbers>
 
 namespace beamrotor {
-
-namespace {
-
-constexpr double kRpm = 30 / std::numbers::pi;  // rad/s -> rpm
-
-/// A speed in a sweep equal to `rpm` up to the round-off of converting it (the runner adds
-/// every checked speed to the sweep, so it is there).
-int speedIndex(const std::vector<double>& speeds, double rpm) {
-  for (int s = 0; s < int(speeds.size()); ++s)
-    if (std::abs(speeds[s] * kRpm - rpm) <= 1e-12 * std::max(1.0, std::abs(rpm))) return s;
-  return -1;
-}
-
-double rigidBodyProperty(const RigidBodyOutcome& r, const std::string& p) {
-  if (p == "mass") return r.body.m;
-  if (p == "com_x") return r.body.xG;
-  if (p == "J_com") return r.body.J;
-  if (p == "Jp") return r.body.Jp;
-  const int i = p.back() - '1';  // f1 f2 n1 n2 FA1 FB1 FA2 FB2
-  if (p[0] == 'f') return r.modes[i].k / (2 * std::numbers::pi);
-  if (p[0] == 'F') return p[1] == 'A' ? r.modes[i].FA : r.modes[i].FB;
-  if (!std::isfinite(r.modes[i].n))
-    throw std::invalid_argument(p + " is infinite: mode " + std::to_string(i + 1) +
-                                " is a pure bounce (C1 l1 = C2 l2, the paper's n = 0/0)");
-  return r.modes[i].n;
-}
-
-}  // namespace
 
 const std::vector<std::string>& rigidBodyPropertyNames() {
   static const std::vector<std::string> names{"mass", "com_x", "J_com", "Jp",  "f1",  "f2",
@@ -92,47 +64,6 @@ std::optional<std::string> rotorAnalysisType(const Quantity& q) {
       return "rigid-body";
     default:
       return std::nullopt;
-  }
-}
-
-double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
-  const RotorOutcome& r = *outcome.rotor;
-  const std::string name = "analysis '" + outcome.name + "'";
-  switch (q.kind) {
-    case Quantity::Kind::frequency:
-    case Quantity::Kind::logDecrement: {
-      if (!r.modes) throw std::invalid_argument(name + " is not a rotor analysis");
-      if (q.mode > int(r.modes->modes.size()))
-        throw std::invalid_argument(name + " found only " + std::to_string(r.modes->modes.size()) +
-                                    " modes");
-      const RotorMode& m = r.modes->modes[q.mode - 1];
-      if (q.kind == Quantity::Kind::frequency) return m.dampedFrequencyHz;
-      if (!std::isfinite(m.logDecrement))
-        throw std::invalid_argument("mode " + std::to_string(q.mode) +
-                                    " has a real eigenvalue (overdamped or unstable without "
-                                    "oscillation): its log decrement is infinite");
-      return m.logDecrement;
-    }
-    case Quantity::Kind::criticalSpeed:
-      if (!r.campbell) throw std::invalid_argument(name + " is not a campbell analysis");
-      if (q.mode > int(r.criticalSpeeds.size()))
-        throw std::invalid_argument(name + " found " + std::to_string(r.criticalSpeeds.size()) +
-                                    " critical speeds in its speed range, not " +
-                                    std::to_string(q.mode));
-      return r.criticalSpeeds[q.mode - 1].rpm;
-    case Quantity::Kind::unbalanceAmplitude: {
-      if (!r.unbalance) throw std::invalid_argument(name + " is not an unbalance analysis");
-      const int s = speedIndex(r.unbalance->speeds, q.rpm);
-      for (std::size_t k = 0; k < r.responsePoints.size(); ++k)
-        if (r.responsePoints[k] == q.target && s >= 0) return r.unbalance->orbits[k][s].major();
-      throw std::invalid_argument(name + " has no response of '" + q.target + "' at " +
-                                  std::to_string(q.rpm) + " rpm");
-    }
-    case Quantity::Kind::rigidBody:
-      if (!r.rigidBody) throw std::invalid_argument(name + " is not a rigid-body analysis");
-      return rigidBodyProperty(*r.rigidBody, q.property);
-    default:
-      throw std::invalid_argument("'" + q.text + "' is not a result of " + name);
   }
 }
 

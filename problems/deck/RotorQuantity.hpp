@@ -1,5 +1,5 @@
-// The check quantities of the rotor analyses (grammar in Quantity.hpp): parsing and
-// measuring, kept apart from the static and modal ones.
+// The check quantities of the rotor analyses (grammar in Quantity.hpp), as read from a deck;
+// problems/run/MeasureRotor.hpp measures them.
 #pragma once
 
 #include <optional>
@@ -22,8 +22,5 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q);
 
 /// The analysis type a rotor quantity reads, nullopt for the others.
 std::optional<std::string> rotorAnalysisType(const Quantity& q);
-
-/// The quantity in a solved rotor analysis; throws std::invalid_argument when it lacks it.
-double measureRotor(const Quantity& q, const AnalysisOutcome& outcome);
 
 }  // namespace beamrotor

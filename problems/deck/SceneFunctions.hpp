@@ -3,7 +3,7 @@
 //   mo10_phi(t, J, c, l, a, H, omega)          MO-10 rotation phi(t) from rest (rad)
 //   mo10_phi_max(cycles, J, c, l, a, H, omega) largest |phi| over the first `cycles` cycles
 //   mo10_force_max(cycles, J, c, l, a, H, omega) largest |c (l phi + a)| over them (N)
-// (SCENES.md section 4, problems/scenes/Mo10; mu = 5 omega).
+// (problems/scenes/README.md section 4, problems/scenes/Mo10; mu = 5 omega).
 #pragma once
 
 namespace mu {

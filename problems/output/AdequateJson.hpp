@@ -6,8 +6,8 @@
 //    dofs_saved (fixed minus chosen), time_ratio (chosen seconds / fixed seconds)}.
 #pragma once
 
-#include "problems/AdequateChoice.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/run/AdequateChoice.hpp"
 
 namespace beamrotor {
 

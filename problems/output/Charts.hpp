@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "fem/Model.hpp"
-#include "fem/Results.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/Gnuplot.hpp"
 #include "problems/output/SweepTable.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/RunResult.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

@@ -2,7 +2,7 @@
 // with "null" in its JSON or "nan" in its tables would pass for a finished run.
 #pragma once
 
-#include "problems/RunResult.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

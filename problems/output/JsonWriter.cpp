@@ -6,13 +6,13 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "fem/DofMap.hpp"
+#include "fem/model/DofMap.hpp"
 #include "problems/output/AdequateJson.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/Reactions.hpp"
-#include "problems/output/TransientJson.hpp"
 #include "problems/output/RotorJson.hpp"
+#include "problems/output/TransientJson.hpp"
 
 namespace beamrotor {
 

@@ -17,8 +17,8 @@
 //   beamrotor_version.
 // Only the components a model carries appear (a planar model has no fz, my, uz ...).
 // sweep.json: parameter, values, model, runs [{value, directory, parameters, reported, analyses
-// (type, name, reactions, max_stress, max_shear | frequencies_hz | maxima), checks}], worst {analysis:
-// {max_stress, max_shear}}: each the largest over the runs, with at {parameter: value}.
+// (type, name, reactions, max_stress, max_shear | frequencies_hz | maxima), checks}], worst
+// {analysis: {max_stress, max_shear}}: each the largest over the runs, with at {parameter: value}.
 #pragma once
 
 #include <filesystem>
@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "problems/RunResult.hpp"
 #include "problems/output/LineSampling.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "fem/Recovery.hpp"
+#include "fem/assembly/Recovery.hpp"
 
 namespace beamrotor {
 

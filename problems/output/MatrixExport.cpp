@@ -1,11 +1,10 @@
 #include "problems/output/MatrixExport.hpp"
 
+#include <stdexcept>
 #include <unsupported/Eigen/SparseExtra>
 
-#include <stdexcept>
-
-#include "fem/Assembly.hpp"
-#include "fem/ReducedSystem.hpp"
+#include "fem/assembly/Assembly.hpp"
+#include "fem/assembly/ReducedSystem.hpp"
 #include "problems/output/CsvTable.hpp"
 
 namespace beamrotor {
@@ -20,8 +19,9 @@ void requireWritten(bool ok, const fs::path& file) {
 
 /// row -> node, point name, dof and node position, so a user can find an entry's meaning.
 CsvTable dofTable(const Model& model, const DofMap& dofs) {
-  CsvTable table(kDofsCsv, {{"row", ""}, {"node", ""}, {"point", ""}, {"dof", ""},
-                            {"x", "m"}, {"y", "m"}, {"z", "m"}});
+  CsvTable table(
+      kDofsCsv,
+      {{"row", ""}, {"node", ""}, {"point", ""}, {"dof", ""}, {"x", "m"}, {"y", "m"}, {"z", "m"}});
   for (int eq = 0; eq < dofs.freeCount(); ++eq) {
     const NodeDof& d = dofs.dofOf(eq);
     const Eigen::Vector3d& x = model.nodes()[d.node];
@@ -49,9 +49,9 @@ std::vector<fs::path> exportMatrices(const Model& model, const fs::path& dir) {
   const SparseMatrix G = assembler.assemble(MatrixKind::gyroscopic);
   if (G.coeffs().size() > 0 && G.coeffs().cwiseAbs().maxCoeff() > 0) save(G, kGyroscopicMtx);
 
-  // 2. The right-hand side exactly as the static solver forms it (fem/LinearStatics).
-  const Eigen::VectorXd f = reducedRightHandSide(model, dofs, loadVector(model, dofs),
-                                                 prescribedValues(model, dofs));
+  // 2. The right-hand side exactly as the static solver forms it (fem/static/LinearStatics).
+  const Eigen::VectorXd f =
+      reducedRightHandSide(model, dofs, loadVector(model, dofs), prescribedValues(model, dofs));
   requireWritten(Eigen::saveMarketVector(f, (dir / kLoadMtx).string()), dir / kLoadMtx);
   written.push_back(dir / kLoadMtx);
 

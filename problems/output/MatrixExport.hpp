@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "fem/Model.hpp"
+#include "fem/model/Model.hpp"
 
 namespace beamrotor {
 

@@ -2,8 +2,8 @@
 // mean nothing to a reader, so the writers show every mode with its largest translation 1.
 #pragma once
 
-#include "fem/Model.hpp"
-#include "fem/Results.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
 
 namespace beamrotor {
 

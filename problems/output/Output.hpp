@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "problems/RunResult.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

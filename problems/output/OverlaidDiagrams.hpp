@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "problems/RunResult.hpp"
 #include "problems/output/CsvTable.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

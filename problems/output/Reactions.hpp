@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "fem/Results.hpp"
+#include "fem/model/Results.hpp"
 
 namespace beamrotor {
 

@@ -14,8 +14,8 @@
 //                inertia_force, inertia_moment}]}}
 #pragma once
 
-#include "problems/RunResult.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

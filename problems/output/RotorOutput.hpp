@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "problems/RunResult.hpp"
 #include "problems/output/CsvTable.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

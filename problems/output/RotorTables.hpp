@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "fem/RotorResults.hpp"
-#include "problems/RotorRunResult.hpp"
+#include "fem/rotor/RotorResults.hpp"
 #include "problems/output/CsvTable.hpp"
+#include "problems/run/RotorRunResult.hpp"
 
 namespace beamrotor {
 

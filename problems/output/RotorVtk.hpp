@@ -3,8 +3,8 @@
 
 #include <filesystem>
 
-#include "fem/Model.hpp"
-#include "fem/RotorResults.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/rotor/RotorResults.hpp"
 
 namespace beamrotor {
 

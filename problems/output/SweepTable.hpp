@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "problems/RunResult.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 
@@ -21,8 +21,9 @@ enum class SweepGroup { reaction, stress, frequency, reported, check, checkPass,
 struct SweepQuantity {
   SweepGroup group = SweepGroup::reaction;
   std::string analysis;  ///< the analysis it belongs to; empty for checks
-  std::string label;     ///< for a chart: "left fy", "largest stress", "mode 2", "phi_max", a check's name
-  CsvColumn column;      ///< its column in sweep.csv, e.g. {"static.left.fy", "N"}
+  std::string
+      label;  ///< for a chart: "left fy", "largest stress", "mode 2", "phi_max", a check's name
+  CsvColumn column;  ///< its column in sweep.csv, e.g. {"static.left.fy", "N"}
   /// Its value in one run's results.json; throws std::runtime_error when the run lacks it
   /// (a sweep whose values change the supports or analyses).
   std::function<double(const Json& runDoc)> read;

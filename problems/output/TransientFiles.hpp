@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-#include "fem/Model.hpp"
-#include "problems/TransientOutcome.hpp"
+#include "fem/model/Model.hpp"
 #include "problems/output/CsvTable.hpp"
+#include "problems/run/TransientOutcome.hpp"
 
 namespace beamrotor {
 

@@ -6,8 +6,8 @@
 //    time_s, files {history_csv, [pvd, vtu [...]]}}
 #pragma once
 
-#include "problems/RunResult.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 

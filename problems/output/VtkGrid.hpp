@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <vector>
 
-#include "fem/LineElement.hpp"
-#include "fem/Model.hpp"
-#include "fem/Results.hpp"
+#include "fem/model/LineElement.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
 
 namespace beamrotor {
 

@@ -16,7 +16,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "fem/Recovery.hpp"
+#include "fem/assembly/Recovery.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/ModeShapes.hpp"
 #include "problems/output/VtkGrid.hpp"

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "fem/Model.hpp"
-#include "fem/Results.hpp"
-#include "fem/TransientResults.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
+#include "fem/transient/TransientResults.hpp"
 #include "problems/output/LineSampling.hpp"
 
 namespace beamrotor {

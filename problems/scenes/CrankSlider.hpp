@@ -1,6 +1,6 @@
 // Crank-slider drive: exact and harmonic-series kinematics, reduced masses and inertia loads,
-// and a load source for decks (SCENES.md section 3, the SNT-32 triplex plunger pump; section 1,
-// the pump rod whose stroke position eta the drive sets).
+// and a load source for decks (problems/scenes/README.md section 3, the SNT-32 triplex plunger
+// pump; section 1, the pump rod whose stroke position eta the drive sets).
 //
 //                 B (crank pin)
 //                / `-.
@@ -16,7 +16,7 @@
 // - beta is the rod's angle (rad) to the line of stroke, sin beta = lambda sin phi, lambda = r/l.
 // With these, x = r (1 - cos phi) + l (1 - cos beta), and the approximate forms carry a PLUS
 // sign: v ~ +r omega (sin phi + lambda/2 sin 2 phi), a ~ +r omega^2 (cos phi + lambda cos 2 phi).
-// SCENES.md prints both with a leading minus, which is the opposite positive direction (or the
+// The paper prints both with a leading minus, which is the opposite positive direction (or the
 // inertia force per unit mass); it is not consistent with its own x.
 //
 // Sources of the formulas: the crank-slider kinematics and its Fourier series are the classical
@@ -220,7 +220,8 @@ double reciprocatingForceSum(double reciprocatingMass, const Geometry& g, double
 /// stroke s (m), crank speed omega (rad/s): Q = z (pi d^2 / 4) s omega / (2 pi).
 double theoreticalDelivery(int plungers, double plungerDiameter, double stroke, double omega);
 
-// 7. The SNT-32 data (SCENES.md section 3) -------------------------------------------------------
+// 7. The SNT-32 data (problems/scenes/README.md section 3)
+// -------------------------------------------------------
 
 /// Data of the SNT-32 drive as printed (the published results are in the tests).
 struct Snt32 {
@@ -239,7 +240,8 @@ struct Snt32 {
   double omega() const;
 };
 
-// 8. Load source for a deck: the pump rod of SCENES.md section 1 ---------------------------------
+// 8. Load source for a deck: the pump rod of problems/scenes/README.md section 1
+// ---------------------------------
 
 /// The drive of the pump rod. eta in [0, 2 r] is the rod's stroke position of section 1
 /// (eta = 0 extreme left, eta = 2 r extreme right; the deck's 0.4 m stroke is r = 0.2).

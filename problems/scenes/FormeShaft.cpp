@@ -7,8 +7,8 @@
 #include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/Spring.hpp"
-#include "fem/Assembly.hpp"
-#include "fem/DofMap.hpp"
+#include "fem/assembly/Assembly.hpp"
+#include "fem/model/DofMap.hpp"
 
 namespace beamrotor {
 

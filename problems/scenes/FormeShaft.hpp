@@ -1,5 +1,5 @@
 // Spring-mounted forme shaft: the plate cylinder of a sheet-fed offset press on two bearing
-// springs (SCENES.md section 2). Two parts:
+// springs (problems/scenes/README.md section 2). Two parts:
 //   1. the paper's rigid two-dof closed form (bounce z of the centre of mass, rotation phi in
 //      the vertical plane), with the decoupled case b = 0 resolved, and its rotor extension;
 //   2. the finite-element model of the same shaft (journals, barrel, drive gear, springs) and
@@ -19,7 +19,7 @@
 #include <array>
 #include <string_view>
 
-#include "fem/Model.hpp"
+#include "fem/model/Model.hpp"
 #include "meshes/LineBuilder.hpp"
 
 namespace beamrotor {

@@ -1,25 +1,27 @@
-// MO-10 impact mechanism body on springs (SCENES.md section 4): the closed-form response to a
-// periodic train of half-sine blows, and the one-dof finite-element model of the same body.
+// MO-10 impact mechanism body on springs (problems/scenes/README.md section 4): the closed-form
+// response to a periodic train of half-sine blows, and the one-dof finite-element model of the same
+// body.
 //
 //   J phi'' + c l^2 (phi + phi0) = M(t),   phi0 = a / l,   k^2 = c l^2 / J,
 //   M(tau) = 0 on [0, t1), H sin(mu tau) on [t1, T), tau = t - (i - 1) T in cycle i,
 //   T = 2 pi / omega, mu = 5 omega, t1 = T - pi / mu.
 //
-// Reading of SCENES.md: because mu T = 10 pi, sin(mu t) is T-periodic, so cycle time and
-// absolute time give the same M; mu t1 = 9 pi, so each blow is a NEGATIVE half-sine of
-// amplitude H (it drives phi below zero). "From rest" is phi(0) = 0, phi'(0) = 0, which in the
-// paper's form phi1 = A1 sin kt + A2 cos kt - phi0 is A1 = 0, A2 = phi0: with a preload the
-// body starts at phi = 0 and swings about its equilibrium -phi0.
+// Reading of the scene (problems/scenes/README.md section 4): because mu T = 10 pi, sin(mu t) is
+// T-periodic, so cycle time and absolute time give the same M; mu t1 = 9 pi, so each blow is a
+// NEGATIVE half-sine of amplitude H (it drives phi below zero). "From rest" is phi(0) = 0, phi'(0)
+// = 0, which in the paper's form phi1 = A1 sin kt + A2 cos kt - phi0 is A1 = 0, A2 = phi0: with a
+// preload the body starts at phi = 0 and swings about its equilibrium -phi0.
 #pragma once
 
 #include <vector>
 
-#include "fem/Model.hpp"
-#include "fem/TimeLoad.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/transient/TimeLoad.hpp"
 
 namespace beamrotor {
 
-/// The body's data, SI units; defaults are SCENES.md's example values with c = 1e5 N/m.
+/// The body's data, SI units; defaults are the example values of problems/scenes/README.md section
+/// 4 with c = 1e5 N/m.
 struct Mo10Parameters {
   double J = 0.5;        ///< moment of inertia about the crank axis (kg m^2)
   double l = 0.1;        ///< spring arm (m)

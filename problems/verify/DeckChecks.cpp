@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "fem/Stopwatch.hpp"
+#include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/Field.hpp"
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
 
 namespace beamrotor::verify {
 

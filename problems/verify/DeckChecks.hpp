@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/RunResult.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor::verify {
 

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <numbers>
 
-#include "fem/Modal.hpp"
+#include "fem/modal/Modal.hpp"
 #include "problems/verify/VerifyModels.hpp"
 
 namespace beamrotor::verify {
 
 namespace {
 
-constexpr double kLength = 2.0;
+constexpr double kClusterBeamLength = 2.0;
 
 /// Orthonormal basis of the columns of A (thin QR).
 Eigen::MatrixXd orthonormal(const Eigen::MatrixXd& A) {
@@ -37,8 +37,8 @@ std::vector<ClusterPoint> eigenClusterStudy(int pairs) {
   Model model;
   LineSpec spec;
   spec.dofs = DofSet::frame3d();
-  spec.segments.push_back({kLength, steelRectangle(0.04, 0.04), 60, 0, {}});
-  spec.points = {{"start", 0}, {"end", kLength}};
+  spec.segments.push_back({kClusterBeamLength, steelRectangle(0.04, 0.04), 60, 0, {}});
+  spec.points = {{"start", 0}, {"end", kClusterBeamLength}};
   const Line line = buildLine(model, spec);
   model.addSupport(
       {"left", line.nodes.front(), {{Dof::ux, 0}, {Dof::uy, 0}, {Dof::uz, 0}, {Dof::rx, 0}}});
@@ -61,7 +61,8 @@ std::vector<ClusterPoint> eigenClusterStudy(int pairs) {
         computed(i, k) = m.shape(node, dofIndex(Dof::uy));
         computed(nodes + i, k) = m.shape(node, dofIndex(Dof::uz));
       }
-      const double s = std::sin(n * std::numbers::pi * line.stations[std::size_t(i)] / kLength);
+      const double s =
+          std::sin(n * std::numbers::pi * line.stations[std::size_t(i)] / kClusterBeamLength);
       exact(i, 0) = s;
       exact(nodes + i, 1) = s;
     }

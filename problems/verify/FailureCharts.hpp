@@ -1,4 +1,4 @@
-// The failure-case studies (SCENES.md, "where methods fail") as report charts, each with the
+// The failure-case studies (problems/scenes/README.md, section 6) as report charts, each with the
 // sentence that says what it shows.
 #pragma once
 

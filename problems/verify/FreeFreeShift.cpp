@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "fem/Errors.hpp"
-#include "fem/Modal.hpp"
+#include "fem/modal/Modal.hpp"
+#include "fem/solvers/Errors.hpp"
 #include "problems/verify/VerifyModels.hpp"
 
 namespace beamrotor::verify {

@@ -2,22 +2,22 @@
 
 #include <cmath>
 
-#include "fem/Static.hpp"
-#include "problems/deck/OverRefinementWarning.hpp"
+#include "fem/static/Static.hpp"
+#include "problems/run/OverRefinementWarning.hpp"
 #include "problems/verify/VerifyModels.hpp"
 
 namespace beamrotor::verify {
 
 namespace {
 
-constexpr double kLength = 1.0, kSide = 0.02, kLoad = -1000.0;  // m, m, N/m
+constexpr double kRefinedBeamLength = 1.0, kSide = 0.02, kLoad = -1000.0;  // m, m, N/m
 
 RefinementPoint solveMesh(int n) {
   Model model;
   const auto section = steelRectangle(kSide, kSide);
-  const Line line = planarBeam(model, kLength, section, n);
+  const Line line = planarBeam(model, kRefinedBeamLength, section, n);
   // 1. The uniform load lumped to the nodes: q h at interior nodes, q h / 2 at the ends.
-  const double h = kLength / n;
+  const double h = kRefinedBeamLength / n;
   for (std::size_t i = 1; i < line.nodes.size(); ++i)
     model.addLoad({line.nodes[i], Dof::uy, kLoad * h * (i + 1 == line.nodes.size() ? 0.5 : 1)});
   // 2. Solve whatever the conditioning: the study wants to see round-off, not a refusal.
@@ -29,7 +29,7 @@ RefinementPoint solveMesh(int n) {
   // q h^2 / 12 (Przemieniecki 1968, ch. 11); at interior nodes they cancel and at the root the
   // support takes them, so only the tip's is missing: its deflection M L^2 / (2 E I) makes the
   // discretisation error exactly h^2 / (3 L^2) = 1 / (3 N^2), and anything above it is round-off.
-  const double exact = kLoad * std::pow(kLength, 4) / (8 * section->EIz());
+  const double exact = kLoad * std::pow(kRefinedBeamLength, 4) / (8 * section->EIz());
   RefinementPoint p;
   p.elements = n;
   p.error = std::abs(r.displacement(line.nodes.back(), 1) - exact) / std::abs(exact);

@@ -2,29 +2,30 @@
 
 #include <cmath>
 
-#include "fem/Static.hpp"
+#include "fem/static/Static.hpp"
 #include "problems/verify/VerifyModels.hpp"
 
 namespace beamrotor::verify {
 
 namespace {
 
-constexpr double kLength = 1.0, kForce = -1000.0;  // m, N
+constexpr double kLockingBeamLength = 1.0, kLockingTipForce = -1000.0;  // m, N
 
 /// Relative error of the tip deflection of a cantilever of slenderness L/h with n elements.
 double tipError(double slenderness, int n, BeamTheory theory) {
-  const double h = kLength / slenderness;
+  const double h = kLockingBeamLength / slenderness;
   const auto section = steelRectangle(h, h);
   Model model;
-  const Line line = planarBeam(model, kLength, section, n, {theory});
-  model.addLoad({line.nodes.back(), Dof::uy, kForce});
+  const Line line = planarBeam(model, kLockingBeamLength, section, n, {theory});
+  model.addLoad({line.nodes.back(), Dof::uy, kLockingTipForce});
   StaticOptions options;
   options.singularRcond = 0;  // a slender locked beam is badly conditioned; show it anyway
   const double tip = solveStatic(model, options).displacement(line.nodes.back(), 1);
   // Timoshenko beam theory, bending plus shear: P L^3 / (3 E I) + P L / (kappa G A)
   // (Timoshenko and Gere, Mechanics of Materials; Cowper 1966 for kappa).
-  const double exact = kForce * std::pow(kLength, 3) / (3 * section->EIz()) +
-                       kForce * kLength / (section->kappaY * section->material.G * section->A);
+  const double exact =
+      kLockingTipForce * std::pow(kLockingBeamLength, 3) / (3 * section->EIz()) +
+      kLockingTipForce * kLockingBeamLength / (section->kappaY * section->material.G * section->A);
   return std::abs(tip - exact) / std::abs(exact);
 }
 

@@ -1,22 +1,22 @@
 #include "problems/verify/TimeStepStudy.hpp"
 
-#include "fem/Transient.hpp"
+#include "fem/transient/Transient.hpp"
 #include "problems/verify/VerifyModels.hpp"
 
 namespace beamrotor::verify {
 
 namespace {
 
-constexpr double kLength = 1.5, kInitialTip = 1e-3;  // m, m
+constexpr double kSteppedBeamLength = 1.5, kInitialTip = 1e-3;  // m, m
 
 /// u = (x / L)^2 times the initial tip deflection, with its slope on rz: it holds every mode,
 /// the highest included, so an unstable step shows within a few hundred steps.
 NodalField parabola(const Model& m, const Line& line) {
   NodalField u = NodalField::Zero(m.nodeCount(), kDofKinds);
   for (std::size_t i = 0; i < line.nodes.size(); ++i) {
-    const double s = line.stations[i] / kLength;
+    const double s = line.stations[i] / kSteppedBeamLength;
     u(line.nodes[i], dofIndex(Dof::uy)) = kInitialTip * s * s;
-    u(line.nodes[i], dofIndex(Dof::rz)) = kInitialTip * 2 * s / kLength;
+    u(line.nodes[i], dofIndex(Dof::rz)) = kInitialTip * 2 * s / kSteppedBeamLength;
   }
   return u;
 }
@@ -29,12 +29,12 @@ std::vector<TimeStepRun> timeStepStudy(const std::vector<double>& stepFactors, i
   Model model;
   LineSpec spec;
   spec.dofs = DofSet{Dof::uy, Dof::rz};
-  spec.segments.push_back({kLength,
+  spec.segments.push_back({kSteppedBeamLength,
                            steelRectangle(0.04, 0.04),
                            8,
                            0,
                            {BeamTheory::eulerBernoulli, MassModel::lumped, true}});
-  spec.points = {{"start", 0}, {"end", kLength}};
+  spec.points = {{"start", 0}, {"end", kSteppedBeamLength}};
   const Line line = buildLine(model, spec);
   model.addSupport({"root", line.nodes.front(), {{Dof::uy, 0}, {Dof::rz, 0}}});
   const double dtCritical = centralDifferenceLimit(model).dtCritical;

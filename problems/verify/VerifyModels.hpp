@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "elements/Beam.hpp"
-#include "fem/Model.hpp"
+#include "fem/model/Model.hpp"
 #include "meshes/LineBuilder.hpp"
 
 namespace beamrotor::verify {

@@ -17,7 +17,7 @@ namespace {
 
 // Element matrices are formed by a few hundred flops on O(1) data scaled by stiffness S:
 // asymmetry and negative eigenvalues must stay at round-off, i.e. 1e-12 relative to S.
-constexpr double kRoundOff = 1e-12;
+constexpr double kElementRoundOff = 1e-12;
 
 /// Nodal displacement of a rigid-body motion (translation t, small rotation w about the
 /// origin) at point x, for one dof kind.
@@ -32,10 +32,10 @@ void checkSymmetricPsd(const ElementMatrix& A, const char* what) {
   if (A.size() == 0) return;
   const double scale = A.cwiseAbs().maxCoeff();
   REQUIRE(scale > 0);
-  CHECK((A - A.transpose()).cwiseAbs().maxCoeff() <= kRoundOff * scale);
+  CHECK((A - A.transpose()).cwiseAbs().maxCoeff() <= kElementRoundOff * scale);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Eigen::MatrixXd(A) * 0.5 +
                                                     Eigen::MatrixXd(A.transpose()) * 0.5);
-  CHECK(es.eigenvalues().minCoeff() >= -kRoundOff * scale);
+  CHECK(es.eigenvalues().minCoeff() >= -kElementRoundOff * scale);
 }
 
 /// Rigid motions must produce no nodal forces: K u_rigid = 0.
@@ -65,10 +65,9 @@ TEST_SUITE("element properties") {
   TEST_CASE("beams: every theory, dof set, orientation and release") {
     const auto circle = steelCircle(0.08);
     const auto rect = steelRectangle(0.04, 0.1);
-    const std::vector<BeamTheory> theories{
-        BeamTheory::eulerBernoulli, BeamTheory::timoshenko,
-        BeamTheory::timoshenkoLinearFullIntegration,
-        BeamTheory::timoshenkoLinearReducedIntegration};
+    const std::vector<BeamTheory> theories{BeamTheory::eulerBernoulli, BeamTheory::timoshenko,
+                                           BeamTheory::timoshenkoLinearFullIntegration,
+                                           BeamTheory::timoshenkoLinearReducedIntegration};
     struct Geometry {
       DofSet dofs;
       Eigen::Vector3d a, b;
@@ -98,9 +97,9 @@ TEST_SUITE("element properties") {
                 ElementVector u(dofs.size());
                 for (int a = 0; a < int(dofs.size()); ++a)
                   u[a] = rigidMotion(dofs[a].dof, Eigen::Vector3d::Zero(), Eigen::Vector3d::Unit(k),
-                                   Eigen::Vector3d::Zero());
+                                     Eigen::Vector3d::Zero());
                 const double mass = u.dot(beam.mass() * u);
-                CHECK(relError(mass, section->rhoA() * beam.length()) < kRoundOff * 10);
+                CHECK(relError(mass, section->rhoA() * beam.length()) < kElementRoundOff * 10);
               }
             }
   }
@@ -119,6 +118,6 @@ TEST_SUITE("element properties") {
     const Eigen::Vector3d axis = Eigen::Vector3d(1, 1, 0).normalized();
     ElementVector spin(6);
     spin << 0, 0, 0, axis.x(), axis.y(), axis.z();
-    CHECK(relError(spin.dot(body.mass() * spin), 0.4) < kRoundOff);
+    CHECK(relError(spin.dot(body.mass() * spin), 0.4) < kElementRoundOff);
   }
 }

@@ -2,7 +2,7 @@
 // cantilever at every slenderness; the naive linear element with full integration locks.
 #include <doctest/doctest.h>
 
-#include "fem/Static.hpp"
+#include "fem/static/Static.hpp"
 #include "tests/Helpers.hpp"
 
 using namespace beamrotor;
@@ -47,10 +47,10 @@ TEST_SUITE("timoshenko") {
     for (double slenderness : {10.0, 100.0, 1000.0, 10000.0}) {
       CAPTURE(slenderness);
       const double h = L / slenderness, exact = exactTimoshenko(L, h);
-      const double locked = relError(
-          tipDeflection(L, h, 4, BeamTheory::timoshenkoLinearFullIntegration), exact);
-      const double reduced = relError(
-          tipDeflection(L, h, 4, BeamTheory::timoshenkoLinearReducedIntegration), exact);
+      const double locked =
+          relError(tipDeflection(L, h, 4, BeamTheory::timoshenkoLinearFullIntegration), exact);
+      const double reduced =
+          relError(tipDeflection(L, h, 4, BeamTheory::timoshenkoLinearReducedIntegration), exact);
       MESSAGE("L/h = " << slenderness << ": full integration error " << locked
                        << ", reduced integration error " << reduced);
       CHECK(locked > previous);  // locking worsens monotonically with slenderness

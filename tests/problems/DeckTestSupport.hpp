@@ -2,15 +2,23 @@
 // beamrotor executable.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
 
 namespace beamrotor::test {
+
+/// A `--set` override NAME=VALUE with the value at full precision.
+inline std::string setting(const std::string& name, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%s=%.17g", name.c_str(), value);
+  return buffer;
+}
 
 /// problems/ in the source tree.
 inline std::filesystem::path problemsDir() {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

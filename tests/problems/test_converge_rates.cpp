@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "fem/Static.hpp"
+#include "fem/static/Static.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
 #include "problems/deck/DeckReader.hpp"

@@ -1,6 +1,6 @@
-// Crank-slider drive (SCENES.md section 3): kinematics against finite differences and against
-// the harmonic series, the published SNT-32 figures, the triplex balance and the pump-rod load
-// source (SCENES.md section 1).
+// Crank-slider drive (problems/scenes/README.md section 3): kinematics against finite differences
+// and against the harmonic series, the published SNT-32 figures, the triplex balance and the
+// pump-rod load source (problems/scenes/README.md section 1).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -15,12 +15,11 @@
 #include "tests/Helpers.hpp"
 
 using namespace beamrotor;
+using beamrotor::test::kPi;
 using namespace beamrotor::crank;
 using beamrotor::test::relError;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 /// Half a unit of the last printed digit, relative: the published figure's own precision.
 /// E.g. printed(1.17, 0.01) = 0.005 / 1.17.
@@ -261,7 +260,8 @@ TEST_SUITE("crank slider") {
       // m_rec r omega^2 = 17.79 * 0.0188 * 62^2 = 1285.6 (-0.03 %, print 0.039 %); at 588 rpm
       // 1268.0 (-1.4 %). Second: m_rec r omega^2 A2 = 84.01 with r/l (first order with the
       // printed lambda 83.57): both within the print's 0.6 %.
-      const std::array<Harmonic, 4> f = reciprocatingInertiaHarmonics(m.reciprocating, g, w62);
+      const std::array<crank::Harmonic, 4> f =
+          reciprocatingInertiaHarmonics(m.reciprocating, g, w62);
       CHECK(f[0].k == 1);
       CHECK(f[1].k == 2);
       CHECK(f[0].c < 0);  // the inertia force opposes the acceleration
@@ -335,7 +335,7 @@ TEST_SUITE("crank slider") {
     }
   }
 
-  TEST_CASE("pump rod load source (SCENES.md section 1 stroke)") {
+  TEST_CASE("pump rod load source (problems/scenes/README.md section 1 stroke)") {
     // A 0.4 m stroke (r = 0.2) with a rod of 1.0 m (lambda = 0.2), a 250 kg reciprocating set.
     const PumpRodDrive d{0.2, 1.0};
     const double w = 6.0, mass = 250;

@@ -2,10 +2,12 @@
 // reproduces the published reactions, and its parameters can be overridden.
 #include <doctest/doctest.h>
 
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
+using beamrotor::test::relError;
 
 namespace {
 
@@ -21,10 +23,6 @@ double reaction(const RunResult& run, const std::string& support, Dof d) {
     if (a.statics) return a.statics->reaction(support, d);
   FAIL("no static analysis");
   return 0;
-}
-
-double relError(double computed, double reference) {
-  return std::abs(computed - reference) / std::abs(reference);
 }
 
 const std::filesystem::path kPumpRod = test::problemsDir() / "pump_rod.yaml";
@@ -61,8 +59,8 @@ TEST_SUITE("decks") {
     const Study s = solveStudy(request(kPumpRod));
     REQUIRE(s.run);
     const RunResult& run = *s.run;
-    // Published (SCENES.md section 1) to 3 or 4 digits; tolerance half a unit of the last
-    // printed digit, relative, as printed. Signs: the lowered left end is pulled down, the
+    // Published (problems/scenes/README.md section 1) to 3 or 4 digits; tolerance half a unit of
+    // the last printed digit, relative, as printed. Signs: the lowered left end is pulled down, the
     // seal pushes up.
     CHECK(relError(-reaction(run, "left", Dof::rz), 7.66e3) < 0.005 / 7.66);
     CHECK(relError(-reaction(run, "left", Dof::uy), 10.4e3) < 0.05 / 10.4);
@@ -106,8 +104,10 @@ TEST_SUITE("decks") {
     const Study twice = solveStudy(request(kPumpRod, {"w0=2e-3"}));
     // Linear statics: doubling the prescribed deflection doubles every reaction exactly
     // (round-off only).
-    for (const auto& [support, dof] : {std::pair{"left", Dof::rz}, {"left", Dof::uy},
-                                       {"middle", Dof::uy}, {"right", Dof::uy},
+    for (const auto& [support, dof] : {std::pair{"left", Dof::rz},
+                                       {"left", Dof::uy},
+                                       {"middle", Dof::uy},
+                                       {"right", Dof::uy},
                                        {"right", Dof::rz}})
       CHECK(relError(reaction(*twice.run, support, dof), 2 * reaction(*once.run, support, dof)) <
             1e-12);

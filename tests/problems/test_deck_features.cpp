@@ -6,16 +6,18 @@
 #include <cmath>
 #include <numbers>
 
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/Helpers.hpp"
 
 using namespace beamrotor;
+using beamrotor::test::relError;
 
 namespace {
 
 // Euler-Bernoulli (and interdependent Timoshenko) elements with consistent loads give exact
 // nodal values for end loads and uniform distributed loads: only round-off remains, far
 // below this.
-constexpr double kExact = 1e-9;
+constexpr double kFeaturesExact = 1e-9;
 
 const double L = 2.0, P = 500, D = 0.04, E = 200e9, nu = 0.3, rho = 7800;
 const double I = std::numbers::pi * std::pow(D, 4) / 64, A = std::numbers::pi * D * D / 4;
@@ -37,7 +39,7 @@ sections:
   - {name: rod, shape: circle, D: D}
 )";
 
-RunResult solveText(const std::string& body) {
+RunResult solveFeatureDeck(const std::string& body) {
   StudyRequest r;
   r.deckPath = "inline.yaml";
   Study s = solveStudyText(kParameters + body, r);
@@ -55,15 +57,11 @@ double displacement(const RunResult& run, const std::string& point, Dof d) {
   return statics(run).displacement(run.model->node(point), dofIndex(d));
 }
 
-double relError(double computed, double reference) {
-  return std::abs(computed - reference) / std::abs(reference);
-}
-
 }  // namespace
 
 TEST_SUITE("deck features") {
   TEST_CASE("uniform load on a simply supported beam: 5 q L^4 / (384 E I) at midspan") {
-    const RunResult run = solveText(kSteelRod + R"(
+    const RunResult run = solveFeatureDeck(kSteelRod + R"(
 segments:
   - {name: span, length: L, section: rod, elements: 6}
 points:
@@ -75,11 +73,11 @@ loads:
   - {type: distributed, segment: span, qy: -P}
 )");
     CHECK(relError(displacement(run, "mid", Dof::uy), -5 * P * std::pow(L, 4) / (384 * E * I)) <
-          kExact);
+          kFeaturesExact);
   }
 
   TEST_CASE("self-weight of a cantilever: q L^4 / (8 E I) at the tip, q = rho A g") {
-    const RunResult run = solveText(kSteelRod + R"(
+    const RunResult run = solveFeatureDeck(kSteelRod + R"(
 segments:
   - {length: L, section: rod, size: 0.25}
 supports:
@@ -88,13 +86,14 @@ loads:
   - {type: self-weight}
 )");
     const double q = rho * A * 9.81;
-    CHECK(relError(displacement(run, "end", Dof::uy), -q * std::pow(L, 4) / (8 * E * I)) < kExact);
+    CHECK(relError(displacement(run, "end", Dof::uy), -q * std::pow(L, 4) / (8 * E * I)) <
+          kFeaturesExact);
   }
 
   // The equivalent nodal load at a supported node belongs in its reaction exactly once (an
   // earlier core version subtracted it twice: 5/12 q L instead of q L / 2 here).
   TEST_CASE("reactions of distributed loads include the share at supported nodes") {
-    const RunResult run = solveText(kSteelRod + R"(
+    const RunResult run = solveFeatureDeck(kSteelRod + R"(
 segments:
   - {length: L, section: rod, elements: 6}
 supports:
@@ -103,14 +102,14 @@ supports:
 loads:
   - {type: distributed, qy: -P}
 )");
-    CHECK(relError(statics(run).reaction("a", Dof::uy), P * L / 2) < kExact);
-    CHECK(relError(statics(run).reaction("b", Dof::uy), P * L / 2) < kExact);
+    CHECK(relError(statics(run).reaction("a", Dof::uy), P * L / 2) < kFeaturesExact);
+    CHECK(relError(statics(run).reaction("b", Dof::uy), P * L / 2) < kFeaturesExact);
   }
 
   TEST_CASE("a hinge between two cantilevers shares the load equally") {
     // Clamped at both ends, hinged at midspan, P at the hinge: by symmetry each half is a
     // cantilever of length L/2 carrying P/2.
-    const RunResult run = solveText(kSteelRod + R"(
+    const RunResult run = solveFeatureDeck(kSteelRod + R"(
 segments:
   - {length: L, section: rod, elements: 4}
 points:
@@ -125,13 +124,13 @@ loads:
 )");
     const double h = L / 2;
     CHECK(relError(displacement(run, "hinge", Dof::uy), -(P / 2) * h * h * h / (3 * E * I)) <
-          kExact);
+          kFeaturesExact);
     // Without the hinge the clamped-clamped beam would carry P L / 8 at each end instead.
-    CHECK(relError(statics(run).reaction("left", Dof::rz), P / 2 * h) < kExact);
+    CHECK(relError(statics(run).reaction("left", Dof::rz), P / 2 * h) < kFeaturesExact);
   }
 
   TEST_CASE("a grounded spring at the tip: deflection P / (k + 3 E I / L^3)") {
-    const RunResult run = solveText(kSteelRod + R"(
+    const RunResult run = solveFeatureDeck(kSteelRod + R"(
 segments:
   - {length: L, section: rod, elements: 3}
 supports:
@@ -142,13 +141,13 @@ loads:
   - {type: point, at: end, fy: -P}
 )");
     CHECK(relError(displacement(run, "end", Dof::uy), -P / (2e4 + 3 * E * I / (L * L * L))) <
-          kExact);
+          kFeaturesExact);
   }
 
   TEST_CASE("a two-point axial spring in parallel with half a bar") {
     // Bar fixed at the start, pulled by P at the end; a spring k joins midpoint and end:
     // u_end = P / (2 E A / L) + P / (2 E A / L + k).
-    const RunResult run = solveText(kSteelRod + R"(
+    const RunResult run = solveFeatureDeck(kSteelRod + R"(
 segments:
   - {length: L, section: rod, elements: 4}
 points:
@@ -162,11 +161,12 @@ loads:
   - {type: point, at: end, fx: P}
 )");
     const double half = 2 * E * A / L;
-    CHECK(relError(displacement(run, "end", Dof::ux), P / half + P / (half + 3e8)) < kExact);
+    CHECK(relError(displacement(run, "end", Dof::ux), P / half + P / (half + 3e8)) <
+          kFeaturesExact);
   }
 
   TEST_CASE("a point mass on a massless cantilever: f = sqrt(3 E I / (m L^3)) / (2 pi)") {
-    const RunResult run = solveText(R"(
+    const RunResult run = solveFeatureDeck(R"(
 materials:
   - {name: massless, E: E, nu: 0.3}
 sections:
@@ -188,7 +188,7 @@ analyses:
   }
 
   TEST_CASE("3D frame: bending about y and torsion") {
-    const RunResult run = solveText(kSteelRod + R"(
+    const RunResult run = solveFeatureDeck(kSteelRod + R"(
 model: {dimension: 3d}
 segments:
   - {length: L, section: rod, elements: 2}
@@ -198,9 +198,10 @@ loads:
   - {type: point, at: end, fz: -P, mx: 40}
 )");
     const double G = E / (2 * (1 + nu)), J = 2 * I;
-    CHECK(relError(displacement(run, "end", Dof::uz), -P * L * L * L / (3 * E * I)) < kExact);
-    CHECK(relError(displacement(run, "end", Dof::rx), 40 * L / (G * J)) < kExact);
-    CHECK(relError(statics(run).reaction("root", Dof::uz), P) < kExact);
+    CHECK(relError(displacement(run, "end", Dof::uz), -P * L * L * L / (3 * E * I)) <
+          kFeaturesExact);
+    CHECK(relError(displacement(run, "end", Dof::rx), 40 * L / (G * J)) < kFeaturesExact);
+    CHECK(relError(statics(run).reaction("root", Dof::uz), P) < kFeaturesExact);
   }
 
   TEST_CASE("Timoshenko formulation adds the shear deflection P L / (kappa G A)") {
@@ -223,11 +224,11 @@ loads:
     auto tip = [&](const std::string& formulation) {
       std::string d = deck;
       d.replace(d.find("FORM"), 4, formulation);
-      return displacement(solveText(d), "end", Dof::uy);
+      return displacement(solveFeatureDeck(d), "end", Dof::uy);
     };
     // The interdependent-interpolation element is exact for end loads.
-    CHECK(relError(tip("timoshenko"), -(bending + shear)) < kExact);
-    CHECK(relError(tip("euler-bernoulli"), -bending) < kExact);
+    CHECK(relError(tip("timoshenko"), -(bending + shear)) < kFeaturesExact);
+    CHECK(relError(tip("euler-bernoulli"), -bending) < kFeaturesExact);
   }
 }
 
@@ -246,20 +247,21 @@ supports:
 contacts:
   - {name: floor, at: end, dof: uy, min: -0.002}
 loads:
-  - {type: point, at: end, fy: -)" + std::to_string(load) + R"(}
+  - {type: point, at: end, fy: -)" +
+                               std::to_string(load) + R"(}
 analyses:
   - {type: static}
 )";
-      const RunResult run = solveText(deck);
+      const RunResult run = solveFeatureDeck(deck);
       const StaticResult& s = *run.analyses.at(0).statics;
       REQUIRE(s.contacts.size() == 1);
       if (load < closing) {
         CHECK_FALSE(s.contacts[0].active);
         CHECK(std::abs(s.contacts[0].gap - (gap - load / (3 * E * I / (L * L * L)))) <
-              kExact * gap);
+              kFeaturesExact * gap);
       } else {
         CHECK(s.contacts[0].active);
-        CHECK(std::abs(s.contacts[0].force - (load - closing)) < kExact * load);
+        CHECK(std::abs(s.contacts[0].force - (load - closing)) < kFeaturesExact * load);
       }
     }
   }

@@ -8,7 +8,7 @@
 #include <regex>
 
 #include "problems/deck/DeckError.hpp"
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
@@ -80,7 +80,8 @@ TEST_SUITE("deck errors") {
 
   TEST_CASE("an unknown key is answered with the closest allowed one") {
     try {
-      solveStudy(requestFor(BEAMROTOR_SOURCE_DIR "/tests/problems/malformed/unknown_segment_key.yaml"));
+      solveStudy(
+          requestFor(BEAMROTOR_SOURCE_DIR "/tests/problems/malformed/unknown_segment_key.yaml"));
       FAIL("no error raised");
     } catch (const DeckError& e) {
       CHECK(std::string(e.what()).find("did you mean 'length'?") != std::string::npos);
@@ -89,7 +90,8 @@ TEST_SUITE("deck errors") {
 
   TEST_CASE("an unsupported structure names the dofs that move") {
     try {
-      solveStudy(requestFor(BEAMROTOR_SOURCE_DIR "/tests/problems/malformed/unsupported_axial.yaml"));
+      solveStudy(
+          requestFor(BEAMROTOR_SOURCE_DIR "/tests/problems/malformed/unsupported_axial.yaml"));
       FAIL("no error raised");
     } catch (const DeckSolveError& e) {
       // Held in uy and rz only: the whole beam slides along x.

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "problems/deck/DeckError.hpp"
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
 
 using namespace beamrotor;
 
@@ -13,7 +13,7 @@ namespace {
 
 // A simply supported beam whose right support sits at x = s; a load P at midspan between
 // the supports: reaction P/2 at each, midspan deflection P s^3 / (48 E I).
-const std::string kDeck = R"(
+const std::string kSweepDeck = R"(
 parameters:
   s: 1.0
   P: 1000
@@ -40,7 +40,7 @@ SWEEP
 )";
 
 Study solve(const std::string& sweep, StudyRequest r = {}) {
-  std::string text = kDeck;
+  std::string text = kSweepDeck;
   text.replace(text.find("SWEEP"), 5, sweep);
   r.deckPath = "sweep.yaml";
   return solveStudyText(text, r);

@@ -17,7 +17,7 @@
 #include <numbers>
 
 #include "problems/deck/DeckError.hpp"
-#include "problems/deck/Study.hpp"
+#include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
@@ -39,7 +39,7 @@ std::string deck(const std::string& analysis, const std::string& extra = "") {
          analysis;
 }
 
-RunResult solveText(const std::string& text, std::vector<std::string> sets = {}) {
+RunResult solveTransientDeck(const std::string& text, std::vector<std::string> sets = {}) {
   StudyRequest r;
   r.deckPath = "transient.yaml";
   r.sets = std::move(sets);
@@ -76,8 +76,8 @@ TEST_SUITE("deck transient") {
     const auto exact = [](double t) {
       return 0.01 * std::cos(kW * t) + 0.3 / kW * std::sin(kW * t);
     };
-    const double coarse = worstError(solveText(text, {"dt=0.002"}), exact);
-    const double fine = worstError(solveText(text), exact);
+    const double coarse = worstError(solveTransientDeck(text, {"dt=0.002"}), exact);
+    const double fine = worstError(solveTransientDeck(text), exact);
     CAPTURE(coarse);
     CAPTURE(fine);
     // Newmark's period error (w dt)^2 / 12 per radian: 20 rad at w dt = 0.02 gives 6.7e-4 rad
@@ -95,7 +95,7 @@ TEST_SUITE("deck transient") {
     std::vector<std::vector<double>> histories;
     for (const std::string& form : forms) {
       CAPTURE(form);
-      const RunResult run = solveText(
+      const RunResult run = solveTransientDeck(
           deck("    dt: dt\n    end: 1\n    loads:\n      - {at: body, dof: ux, " + form + "}\n"));
       histories.push_back(outcome(run).history("x").values);
       // Same phase error as free vibration on the amplitude F/k = 0.05 m: 3.3e-5 m predicted,
@@ -118,7 +118,7 @@ TEST_SUITE("deck transient") {
         "  - {name: peak, quantity: history x max, reference: 2*F/k, tolerance: 1e-6}\n"
         "  - {name: start, quantity: history x min, reference: 0, tolerance: 1e-15}\n"
         "  - {name: half, quantity: history x at pi/(2*w), reference: F/k, tolerance: 1e-6}\n";
-    const RunResult run = solveText(
+    const RunResult run = solveTransientDeck(
         deck("    dt: dt/10\n    end: 0.2\n    loads: [{at: body, dof: ux, value: F}]\n") + checks);
     REQUIRE(run.checks.size() == 3);
     for (const Check& c : run.checks) {
@@ -132,9 +132,9 @@ TEST_SUITE("deck transient") {
     // F cos(w t) written as an expression of t inside a period of 2 pi / w (so t is reduced
     // to one period before it is evaluated): the resonant closed form from rest is
     // x = F t sin(w t) / (2 m w).
-    const RunResult run =
-        solveText(deck("    dt: dt/4\n    end: 1\n    loads:\n"
-                       "      - {at: body, dof: ux, value: F*cos(w*t), period: 2*pi/w}\n"));
+    const RunResult run = solveTransientDeck(
+        deck("    dt: dt/4\n    end: 1\n    loads:\n"
+             "      - {at: body, dof: ux, value: F*cos(w*t), period: 2*pi/w}\n"));
     const auto exact = [](double t) { return 40 * t * std::sin(kW * t) / (2 * 2 * kW); };
     // Amplitude at t = 1 s: 0.5 m; phase error (w dt)^2/12 * 20 rad = 4.2e-5 rad -> 2.1e-5 m
     // predicted, 1.03e-5 m measured.
@@ -142,19 +142,20 @@ TEST_SUITE("deck transient") {
   }
 
   TEST_CASE("an end time that is not a whole number of steps ends at the nearest step, warned") {
-    const RunResult run = solveText(deck("    dt: 0.0003\n    end: 0.5\n"));
+    const RunResult run = solveTransientDeck(deck("    dt: 0.0003\n    end: 0.5\n"));
     const TransientResult& r = outcome(run).result;
     CHECK(r.steps == 1667);  // round(1666.67)
     REQUIRE(r.warnings.size() == 1);
     CHECK(r.warnings[0].find("0.5001 s") != std::string::npos);
-    CHECK(outcome(solveText(deck("    dt: 0.001\n    end: 0.5\n"))).result.warnings.empty());
+    CHECK(
+        outcome(solveTransientDeck(deck("    dt: 0.001\n    end: 0.5\n"))).result.warnings.empty());
   }
 
   TEST_CASE("Rayleigh mass damping: the decay exp(-alpha t / 2)") {
     // C = alpha M: zeta = alpha / (2 w); x = x0 e^(-zeta w t) (cos wd t + zeta w / wd sin wd t).
     const RunResult run =
-        solveText(deck("    dt: dt\n    end: 1\n    rayleigh: {alpha: 4}\n"
-                       "    initial: [{at: body, dof: ux, u: 0.01}]\n"));
+        solveTransientDeck(deck("    dt: dt\n    end: 1\n    rayleigh: {alpha: 4}\n"
+                                "    initial: [{at: body, dof: ux, u: 0.01}]\n"));
     const double zeta = 4.0 / (2 * kW), wd = kW * std::sqrt(1 - zeta * zeta);
     const auto exact = [&](double t) {
       return 0.01 * std::exp(-zeta * kW * t) *
@@ -169,7 +170,7 @@ TEST_SUITE("deck transient") {
     const std::string text = deck(
         "    scheme: central\n    dt: dt\n    end: 1\n"
         "    initial: [{at: body, dof: ux, u: 0.01}]\n");
-    const RunResult run = solveText(text);
+    const RunResult run = solveTransientDeck(text);
     const TransientResult& r = outcome(run).result;
     CHECK(std::abs(r.stability.dtCritical - 2 * std::sqrt(2.0 / 800)) < 1e-15);
     // Central difference's period error is (w dt)^2 / 24 per radian (Hughes 2000, 9.1): 20 rad
@@ -177,7 +178,7 @@ TEST_SUITE("deck transient") {
     CHECK(worstError(run, [](double t) { return 0.01 * std::cos(kW * t); }) < 5e-6);
     // Above the limit (0.1 s) the deck is refused at its dt, before any step.
     try {
-      solveText(text, {"dt=0.11"});
+      solveTransientDeck(text, {"dt=0.11"});
       FAIL("no error");
     } catch (const DeckError& e) {
       CHECK(e.place().field == "analyses[0].dt");
@@ -190,8 +191,8 @@ TEST_SUITE("deck transient") {
         "    scheme: hht\n    alpha: -0.1\n    dt: dt\n    end: 1\n"
         "    initial: [{at: body, dof: ux, u: 0.01}]\n");
     const auto exact = [](double t) { return 0.01 * std::cos(kW * t); };
-    const double coarse = worstError(solveText(text, {"dt=0.002"}), exact);
-    const double fine = worstError(solveText(text), exact);
+    const double coarse = worstError(solveTransientDeck(text, {"dt=0.002"}), exact);
+    const double fine = worstError(solveTransientDeck(text), exact);
     CAPTURE(coarse);
     CAPTURE(fine);
     CHECK(coarse / fine == doctest::Approx(4).epsilon(0.05));  // measured 3.99
@@ -203,9 +204,9 @@ TEST_SUITE("deck transient") {
     // the spring slows it by more than k x / m dt ~ 1e-3 of v). Rebound e = 0.5.
     const std::string contacts = "contacts:\n  - {name: collar, at: body, dof: ux, min: -0.005}\n";
     const RunResult run =
-        solveText(deck("    dt: dt/10\n    end: 0.2\n    restitution: 0.5\n"
-                       "    initial: [{at: body, dof: ux, v: -2}]\n",
-                       contacts));
+        solveTransientDeck(deck("    dt: dt/10\n    end: 0.2\n    restitution: 0.5\n"
+                                "    initial: [{at: body, dof: ux, v: -2}]\n",
+                                contacts));
     const TransientOutcome& t = outcome(run);
     CHECK(t.history("x").min() >= -0.005);
     REQUIRE(!t.result.impacts.empty());
@@ -275,8 +276,8 @@ TEST_SUITE("deck transient") {
     const double E = 210e9, I = std::numbers::pi * std::pow(0.05, 4) / 64;
     const double w = std::sqrt(3 * E * I / 10);
     const auto exact = [&](double t) { return 0.1 / w * std::sin(w * t); };
-    const double coarse = worstError(solveText(text, {"n=200"}), exact);
-    const double fine = worstError(solveText(text), exact);
+    const double coarse = worstError(solveTransientDeck(text, {"n=200"}), exact);
+    const double fine = worstError(solveTransientDeck(text), exact);
     CAPTURE(coarse);
     CAPTURE(fine);
     CHECK(fine < 3e-4 * 0.1 / w);

@@ -1,14 +1,14 @@
-// Spring-mounted forme shaft (SCENES.md section 2): the two-dof closed form, its decoupled
-// case, the FE model's rigid limit, how much real shaft flexibility lowers the frequencies,
-// and the rotor extension (conical whirl of the spinning shaft).
+// Spring-mounted forme shaft (problems/scenes/README.md section 2): the two-dof closed form, its
+// decoupled case, the FE model's rigid limit, how much real shaft flexibility lowers the
+// frequencies, and the rotor extension (conical whirl of the spinning shaft).
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "fem/Modal.hpp"
-#include "fem/RotorModes.hpp"
+#include "fem/modal/Modal.hpp"
+#include "fem/rotor/RotorModes.hpp"
 #include "problems/scenes/FormeShaft.hpp"
 #include "tests/Helpers.hpp"
 
@@ -17,9 +17,8 @@ using namespace beamrotor::test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Closed-form arithmetic on O(1)-conditioned formulas: round-off only.
-constexpr double kRoundOff = 1e-12;
+constexpr double kFormeRoundOff = 1e-12;
 
 /// Rigid-body properties of the default design from section integrals (independent of the
 /// FE matrices): each prismatic piece contributes m, m L^2/12 + rho I L about its centre
@@ -81,26 +80,26 @@ TEST_SUITE("forme shaft") {
     const auto modes = formeShaftModes(s);
     const double a = s.a(), b = s.b(), d = s.d(), r2 = s.rho2();
     CHECK(modes[0].k < modes[1].k);
-    CHECK(relError(modes[0].k * modes[0].k + modes[1].k * modes[1].k, a + d / r2) < kRoundOff);
-    CHECK(relError(std::pow(modes[0].k * modes[1].k, 2), (a * d - b * b) / r2) < kRoundOff);
+    CHECK(relError(modes[0].k * modes[0].k + modes[1].k * modes[1].k, a + d / r2) < kFormeRoundOff);
+    CHECK(relError(std::pow(modes[0].k * modes[1].k, 2), (a * d - b * b) / r2) < kFormeRoundOff);
     for (const FormeShaftMode& mode : modes) {
       const double k2 = mode.k * mode.k;
       CHECK(mode.kind == FormeModeKind::coupled);
       // The paper's two equations of motion, divided by m.
       CHECK(std::abs((a - k2) * mode.z + b * mode.phi) <=
-            kRoundOff * ((a + k2) * std::abs(mode.z) + std::abs(b * mode.phi)));
+            kFormeRoundOff * ((a + k2) * std::abs(mode.z) + std::abs(b * mode.phi)));
       CHECK(std::abs(b * mode.z + (d - r2 * k2) * mode.phi) <=
-            kRoundOff * (std::abs(b * mode.z) + (d + r2 * k2) * std::abs(mode.phi)));
+            kFormeRoundOff * (std::abs(b * mode.z) + (d + r2 * k2) * std::abs(mode.phi)));
       CHECK(relError(mode.n, b / (k2 - a)) < 1e-10);
-      CHECK(relError(mode.z * mode.z + r2 * mode.phi * mode.phi, 1.0) < kRoundOff);
+      CHECK(relError(mode.z * mode.z + r2 * mode.phi * mode.phi, 1.0) < kFormeRoundOff);
       // Dynamic equilibrium of the shaft: inertia against the two spring loads.
       const double scale = std::abs(mode.FA) + std::abs(mode.FB);
-      CHECK(std::abs(mode.inertiaForce + mode.FA + mode.FB) <= kRoundOff * scale);
+      CHECK(std::abs(mode.inertiaForce + mode.FA + mode.FB) <= kFormeRoundOff * scale);
       CHECK(std::abs(mode.inertiaMoment + s.l2 * mode.FB - s.l1 * mode.FA) <=
-            kRoundOff * scale * (s.l1 + s.l2));
+            kFormeRoundOff * scale * (s.l1 + s.l2));
     }
     // Modes are orthogonal in the mass: m z1 z2 + J phi1 phi2 = 0.
-    CHECK(std::abs(modes[0].z * modes[1].z + r2 * modes[0].phi * modes[1].phi) < kRoundOff);
+    CHECK(std::abs(modes[0].z * modes[1].z + r2 * modes[0].phi * modes[1].phi) < kFormeRoundOff);
     MESSAGE("design: k1 = " << modes[0].k << " rad/s (n1 = " << modes[0].n
                             << " m/rad, FA = " << modes[0].FA << " N, FB = " << modes[0].FB
                             << " N), k2 = " << modes[1].k << " rad/s (n2 = " << modes[1].n
@@ -120,8 +119,8 @@ TEST_SUITE("forme shaft") {
       const int ib = bounce < rocking ? 0 : 1;
       CHECK(modes[ib].kind == FormeModeKind::bounce);
       CHECK(modes[1 - ib].kind == FormeModeKind::rocking);
-      CHECK(relError(modes[ib].k, bounce) < kRoundOff);
-      CHECK(relError(modes[1 - ib].k, rocking) < kRoundOff);
+      CHECK(relError(modes[ib].k, bounce) < kFormeRoundOff);
+      CHECK(relError(modes[1 - ib].k, rocking) < kFormeRoundOff);
       CHECK(modes[ib].phi == 0);
       CHECK(modes[ib].n == std::numeric_limits<double>::infinity());
       CHECK(modes[1 - ib].z == 0);
@@ -130,7 +129,7 @@ TEST_SUITE("forme shaft") {
       // equal forces (C1 l1 = C2 l2), so the net force is zero.
       CHECK(modes[ib].FA * modes[ib].FB > 0);
       CHECK(std::abs(modes[1 - ib].FA + modes[1 - ib].FB) <=
-            kRoundOff * std::abs(modes[1 - ib].FA));
+            kFormeRoundOff * std::abs(modes[1 - ib].FA));
 
       // Continuity: a tiny b gives a coupled mode with a huge but finite n, the same
       // frequencies to second order in b, and nearly the same shapes.
@@ -153,12 +152,12 @@ TEST_SUITE("forme shaft") {
       const FormeShaftModel fe = buildFormeShaft(design, dofs);
       const RigidBodyProperties p = rigidBodyProperties(fe.model);
       // The consistent mass reproduces rigid motion exactly: round-off only.
-      CHECK(relError(p.m, ref.m) < kRoundOff);
-      CHECK(relError(p.xG, ref.xG) < kRoundOff);
-      CHECK(relError(p.J, ref.J) < kRoundOff);
-      if (dofs == DofSet::lateral()) CHECK(relError(p.Jp, ref.Jp) < kRoundOff);
-      CHECK(relError(fe.xA, 0.08) < kRoundOff);
-      CHECK(relError(fe.xB, 1.29) < kRoundOff);
+      CHECK(relError(p.m, ref.m) < kFormeRoundOff);
+      CHECK(relError(p.xG, ref.xG) < kFormeRoundOff);
+      CHECK(relError(p.J, ref.J) < kFormeRoundOff);
+      if (dofs == DofSet::lateral()) CHECK(relError(p.Jp, ref.Jp) < kFormeRoundOff);
+      CHECK(relError(fe.xA, 0.08) < kFormeRoundOff);
+      CHECK(relError(fe.xB, 1.29) < kFormeRoundOff);
     }
     MESSAGE("forme shaft: m = " << ref.m << " kg, centre of mass at x = " << ref.xG
                                 << " m (bearings at 0.08 and 1.29 m), J = " << ref.J

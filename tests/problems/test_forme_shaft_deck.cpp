@@ -1,16 +1,16 @@
-// The forme-shaft decks (SCENES.md section 2) through `beamrotor solve`'s path: rigid-body
-// properties and the two-dof closed form, the rigid limit (--set E=2e17), how much real steel
-// lowers the frequencies (against the scene's own C++ model), the decoupled case
-// C1 l1 = C2 l2, and the spinning shaft's checks in the rigid limit.
+// The forme-shaft decks (problems/scenes/README.md section 2) through `beamrotor solve`'s path:
+// rigid-body properties and the two-dof closed form, the rigid limit (--set E=2e17), how much real
+// steel lowers the frequencies (against the scene's own C++ model), the decoupled case C1 l1 = C2
+// l2, and the spinning shaft's checks in the rigid limit.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
-#include "fem/Modal.hpp"
-#include "problems/deck/Study.hpp"
+#include "fem/modal/Modal.hpp"
 #include "problems/output/RotorJson.hpp"
+#include "problems/run/Study.hpp"
 #include "problems/scenes/FormeShaft.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-RunResult solveDeck(const char* deck, std::vector<std::string> sets = {}) {
+RunResult solveFormeDeck(const char* deck, std::vector<std::string> sets = {}) {
   StudyRequest r;
   r.deckPath = (problemsDir() / deck).string();
   r.sets = std::move(sets);
@@ -48,17 +48,11 @@ int passedChecks(const RunResult& run) {
   return int(run.checks.size());
 }
 
-std::string set(const std::string& name, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%s=%.17g", name.c_str(), value);
-  return buffer;
-}
-
 }  // namespace
 
 TEST_SUITE("forme shaft decks") {
   TEST_CASE("real steel: the deck's FE frequencies are the scene's, ~6 % below k1, k2") {
-    const RunResult run = solveDeck("forme_shaft.yaml");
+    const RunResult run = solveFormeDeck("forme_shaft.yaml");
     CHECK(passedChecks(run) == 11);  // the rigid-limit checks do not apply to steel
     CHECK(run.skippedChecks.size() == 2);
     const RigidBodyOutcome& rigid = *analysisOfType(run, "rigid-body").rotor->rigidBody;
@@ -83,7 +77,7 @@ TEST_SUITE("forme shaft decks") {
   }
 
   TEST_CASE("rigid limit (--set E=2e17): FE frequencies reach k1, k2 to 1e-6") {
-    const RunResult run = solveDeck("forme_shaft.yaml", {"E=2e17"});
+    const RunResult run = solveFormeDeck("forme_shaft.yaml", {"E=2e17"});
     CHECK(passedChecks(run) == 13);
     CHECK(run.skippedChecks.empty());
     const RigidBodyOutcome& rigid = *analysisOfType(run, "rigid-body").rotor->rigidBody;
@@ -95,10 +89,10 @@ TEST_SUITE("forme shaft decks") {
   TEST_CASE("decoupled deck (C1 l1 = C2 l2): pure bounce and rocking, n reported as null") {
     // C2 from the lever arms of the default deck; the FE centre of mass is the section
     // integrals' to round-off (checked by the deck), so b is round-off too.
-    const RunResult first = solveDeck("forme_shaft.yaml");
+    const RunResult first = solveFormeDeck("forme_shaft.yaml");
     const FormeShaftRigid s = analysisOfType(first, "rigid-body").rotor->rigidBody->rigid;
     const double C2 = s.C1 * s.l1 / s.l2;
-    const RunResult run = solveDeck("forme_shaft.yaml", {"E=2e17", set("C2", C2)});
+    const RunResult run = solveFormeDeck("forme_shaft.yaml", {"E=2e17", setting("C2", C2)});
     const AnalysisOutcome& outcome = analysisOfType(run, "rigid-body");
     const RigidBodyOutcome& rigid = *outcome.rotor->rigidBody;
     const int ib = rigid.modes[0].kind == FormeModeKind::bounce ? 0 : 1;
@@ -126,15 +120,15 @@ TEST_SUITE("forme shaft decks") {
   TEST_CASE("spinning shaft deck: rigid-rotor whirl, critical speeds and orbits (E=2e17)") {
     for (const char* speed : {"speed_rpm=300", "speed_rpm=12000"}) {
       CAPTURE(speed);
-      const RunResult run = solveDeck("forme_shaft_rotor.yaml", {"E=2e17", speed});
+      const RunResult run = solveFormeDeck("forme_shaft_rotor.yaml", {"E=2e17", speed});
       CHECK(passedChecks(run) == 15);
       CHECK(run.skippedChecks.empty());
     }
     // Real steel: only the inertia checks apply; the flexible shaft's critical speeds lie
     // below the rigid ones (flexibility lowers every frequency line).
-    const RunResult steel = solveDeck("forme_shaft_rotor.yaml");
+    const RunResult steel = solveFormeDeck("forme_shaft_rotor.yaml");
     CHECK(passedChecks(steel) == 4);
-    const RunResult stiff = solveDeck("forme_shaft_rotor.yaml", {"E=2e17"});
+    const RunResult stiff = solveFormeDeck("forme_shaft_rotor.yaml", {"E=2e17"});
     const auto& soft = analysisOfType(steel, "campbell").rotor->criticalSpeeds;
     const auto& rigid = analysisOfType(stiff, "campbell").rotor->criticalSpeeds;
     REQUIRE(soft.size() == 4);

@@ -3,18 +3,17 @@
 // reproduces the deck's displacements.
 #include <doctest/doctest.h>
 
-#include <unsupported/Eigen/SparseExtra>
-
 #include <Eigen/SparseLU>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unsupported/Eigen/SparseExtra>
 
-#include "fem/Assembly.hpp"
-#include "fem/ReducedSystem.hpp"
+#include "fem/assembly/Assembly.hpp"
+#include "fem/assembly/ReducedSystem.hpp"
 #include "problems/bench/Bench.hpp"
-#include "problems/deck/Study.hpp"
 #include "problems/output/MatrixExport.hpp"
+#include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
@@ -24,7 +23,7 @@ namespace {
 
 /// Two spans, a settlement prescribed at the middle support (so f = f_F - K_FC u_C is more
 /// than the loads), a distributed and a point load, and a spring.
-const char* kDeck = R"(title: two spans with a settlement
+const char* kExportDeck = R"(title: two spans with a settlement
 parameters: {L: 1.0}
 model: {dimension: planar, formulation: timoshenko, mass: consistent}
 materials:
@@ -95,7 +94,7 @@ std::vector<DofRow> readDofs(const std::filesystem::path& file) {
 
 TEST_SUITE("matrix export") {
   TEST_CASE("a deck's K, M, f read back bit for bit; solving them reproduces its statics") {
-    const Study study = solveStudyText(kDeck, {"two_spans.yaml", {}, false, ""});
+    const Study study = solveStudyText(kExportDeck, {"two_spans.yaml", {}, false, ""});
     REQUIRE(study.run);
     const Model& model = *study.run->model;
     const auto dir = scratchDir("export_deck");
@@ -112,8 +111,8 @@ TEST_SUITE("matrix export") {
     CHECK(identical(readMatrix(dir / kMassMtx), assembler.assemble(MatrixKind::mass)));
     Eigen::VectorXd f;
     REQUIRE(Eigen::loadMarketVector(f, (dir / kLoadMtx).string()));
-    const Eigen::VectorXd expected = reducedRightHandSide(
-        model, dofs, loadVector(model, dofs), prescribedValues(model, dofs));
+    const Eigen::VectorXd expected =
+        reducedRightHandSide(model, dofs, loadVector(model, dofs), prescribedValues(model, dofs));
     REQUIRE(f.size() == expected.size());
     CHECK((f.array() == expected.array()).all());
 
@@ -131,15 +130,15 @@ TEST_SUITE("matrix export") {
     CHECK(scale > 1e-3);  // the settlement alone moves the beam 2 mm
     double worst = 0;
     for (std::size_t r = 0; r < rows.size(); ++r)
-      worst = std::max(worst, std::abs(u[r] - statics.displacement(rows[r].node,
-                                                                   dofIndex(rows[r].dof))));
+      worst = std::max(worst,
+                       std::abs(u[r] - statics.displacement(rows[r].node, dofIndex(rows[r].dof))));
     CHECK(worst < 1e-8 * scale);
   }
 
   TEST_CASE("beamrotor solve --export-matrices [DIR]") {
     const auto dir = scratchDir("export_cli");
     const auto deck = dir / "two_spans.yaml";
-    std::ofstream(deck) << kDeck;
+    std::ofstream(deck) << kExportDeck;
     const ProcessResult byDefault = runBeamrotor(
         {"solve", deck.string(), "--out", (dir / "out").string(), "--export-matrices"});
     CHECK(byDefault.exitCode == 0);
@@ -147,15 +146,15 @@ TEST_SUITE("matrix export") {
           std::string::npos);
     for (const char* name : {kStiffnessMtx, kMassMtx, kLoadMtx, kDofsCsv})
       CHECK(std::filesystem::exists(dir / "out" / "matrices" / name));
-    const ProcessResult chosen = runBeamrotor({"solve", deck.string(), "--out",
-                                               (dir / "out2").string(),
-                                               "--export-matrices=" + (dir / "mtx").string()});
+    const ProcessResult chosen =
+        runBeamrotor({"solve", deck.string(), "--out", (dir / "out2").string(),
+                      "--export-matrices=" + (dir / "mtx").string()});
     CHECK(chosen.exitCode == 0);
     CHECK(std::filesystem::exists(dir / "mtx" / kStiffnessMtx));
     // A sweep exports each run's model (L = 1 and 1.5: 2 runs).
-    const ProcessResult swept = runBeamrotor({"solve", deck.string(), "--out",
-                                              (dir / "out3").string(), "--sweep", "L=1:1.5:1",
-                                              "--export-matrices=" + (dir / "swept").string()});
+    const ProcessResult swept =
+        runBeamrotor({"solve", deck.string(), "--out", (dir / "out3").string(), "--sweep",
+                      "L=1:1.5:1", "--export-matrices=" + (dir / "swept").string()});
     CHECK(swept.exitCode == 0);
     CHECK(std::filesystem::exists(dir / "swept" / "run-1" / kStiffnessMtx));
     CHECK(std::filesystem::exists(dir / "swept" / "run-2" / kLoadMtx));

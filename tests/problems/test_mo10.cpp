@@ -1,13 +1,14 @@
-// MO-10 impact mechanism body on springs (SCENES.md section 4): the closed form checked on its
-// own (equation of motion, continuity, the resonant limit) and the finite-element time history
-// with Newmark's rule checked against it at every cycle boundary, with its O(dt^2) rate.
+// MO-10 impact mechanism body on springs (problems/scenes/README.md section 4): the closed form
+// checked on its own (equation of motion, continuity, the resonant limit) and the finite-element
+// time history with Newmark's rule checked against it at every cycle boundary, with its O(dt^2)
+// rate.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "fem/Transient.hpp"
+#include "fem/transient/Transient.hpp"
 #include "problems/scenes/Mo10.hpp"
 #include "tests/Helpers.hpp"
 
@@ -151,7 +152,7 @@ TEST_SUITE("MO-10") {
       CHECK(std::abs(fe[i] - cf.phi(i * p.period())) < 1e-3 * cf.extremes().amplitude);
   }
 
-  TEST_CASE("amplitude and pressing force over the stiffness range (SCENES.md example)") {
+  TEST_CASE("amplitude and pressing force over the stiffness range (scene 4 example values)") {
     Mo10Parameters p;
     for (double c : {1e4, 3e4, 1e5, 3e5, 1e6}) {
       p.c = c;

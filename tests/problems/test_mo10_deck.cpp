@@ -9,8 +9,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "fem/Transient.hpp"
-#include "problems/deck/Study.hpp"
+#include "fem/transient/Transient.hpp"
+#include "problems/run/Study.hpp"
 #include "problems/scenes/Mo10.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
@@ -19,18 +19,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kDeck = test::problemsDir() / "mo10.yaml";
+const fs::path kMo10Deck = test::problemsDir() / "mo10.yaml";
 
 /// NAME=VALUE with every digit of value, so the deck sees exactly this double.
-std::string set(const std::string& name, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%s=%.17g", name.c_str(), value);
-  return buffer;
-}
-
-RunResult solveDeck(const std::vector<std::string>& sets) {
+RunResult solveMo10Deck(const std::vector<std::string>& sets) {
   StudyRequest r;
-  r.deckPath = kDeck.string();
+  r.deckPath = kMo10Deck.string();
   r.sets = sets;
   r.noSweep = true;
   Study s = solveStudy(r);
@@ -97,8 +91,8 @@ TEST_SUITE("MO-10 deck") {
     // 3.99 to 4.00 over the c below.
     for (double c : {1e4, 1e5, 1e6}) {
       CAPTURE(c);
-      const RunResult fine = solveDeck({set("c", c)});
-      const RunResult coarse = solveDeck({set("c", c), "steps_per_cycle=1500"});
+      const RunResult fine = solveMo10Deck({setting("c", c)});
+      const RunResult coarse = solveMo10Deck({setting("c", c), "steps_per_cycle=1500"});
       for (const Check& k : fine.checks) {
         CAPTURE(k.name);
         CHECK(k.pass());
@@ -115,7 +109,7 @@ TEST_SUITE("MO-10 deck") {
     // Same equations built twice (deck: a point, a mass, a spring, a preload load and a load of
     // pieces repeated with the period; core: buildMo10Model with mo10BlowFactor), same step:
     // the histories agree to round-off. With a preload a = 2 mm the body swings about -a/l.
-    const RunResult run = solveDeck({"a=0.002", "cycles=3"});
+    const RunResult run = solveMo10Deck({"a=0.002", "cycles=3"});
     const Mo10Parameters p = parametersOf(run);
     const Mo10Model body = buildMo10Model(p);
     TransientOptions opt;
@@ -146,7 +140,7 @@ TEST_SUITE("MO-10 deck") {
     const double c = p.J * p.mu() * p.mu() / (p.l * p.l);
     p.c = c;
     REQUIRE(Mo10ClosedForm(p, 1).resonant());
-    const RunResult run = solveDeck({set("c", c)});
+    const RunResult run = solveMo10Deck({setting("c", c)});
     CHECK(parametersOf(run).c == c);
     for (const Check& k : run.checks) {
       CAPTURE(k.name);
@@ -160,8 +154,8 @@ TEST_SUITE("MO-10 deck") {
 
   TEST_CASE("the c sweep writes phi_max and spring_force_max per value and charts them") {
     const fs::path out = test::scratchDir("mo10_sweep");
-    const auto r = test::runBeamrotor({"solve", kDeck.string(), "--out", out.string(), "--sweep",
-                                       "c=1e4,1e6", "--set", "cycles=2"});
+    const auto r = test::runBeamrotor({"solve", kMo10Deck.string(), "--out", out.string(),
+                                       "--sweep", "c=1e4,1e6", "--set", "cycles=2"});
     REQUIRE(r.exitCode == 0);
     CHECK(fs::exists(out / "sweep_blows.svg"));
     std::ifstream in(out / "sweep.json");
@@ -188,7 +182,7 @@ TEST_SUITE("MO-10 deck") {
     // At c = 1e5 N/m the free motion reaches -0.153 rad; a collar at -0.1 rad is struck.
     // Newton's law with e = 0.5 holds at every impact to round-off; the closed-form checks do
     // not apply (n/a) since the motion is no longer the free one.
-    const RunResult run = solveDeck({"collar=0.1"});
+    const RunResult run = solveMo10Deck({"collar=0.1"});
     const TransientOutcome& t = blows(run);
     CHECK(t.history("phi").min() >= -0.1);
     REQUIRE(t.result.impacts.size() >= 2);

@@ -1,5 +1,5 @@
 // `beamrotor solve` warns when a static mesh is past the point where round-off outweighs
-// discretisation error (problems/deck/OverRefinementWarning.hpp), and the shipped decks don't.
+// discretisation error (problems/run/OverRefinementWarning.hpp), and the shipped decks don't.
 #include <doctest/doctest.h>
 
 #include <fstream>

@@ -1,15 +1,15 @@
-// Stepped pump rod, variant C (SCENES.md section 1): the right end is a hinge whose rotation
-// is bounded by theta_p. The active-set solve must follow the bilinear closed form: below w*
-// the clamped/hinged solution, above it that solution at w* plus the clamped/clamped one for
-// w0 - w*. The reference is an initial-parameter (transfer-matrix) solution written here,
-// independent of the finite elements.
+// Stepped pump rod, variant C (problems/scenes/README.md section 1): the right end is a hinge whose
+// rotation is bounded by theta_p. The active-set solve must follow the bilinear closed form: below
+// w* the clamped/hinged solution, above it that solution at w* plus the clamped/clamped one for w0
+// - w*. The reference is an initial-parameter (transfer-matrix) solution written here, independent
+// of the finite elements.
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 
-#include "fem/Static.hpp"
+#include "fem/static/Static.hpp"
 #include "tests/Helpers.hpp"
 
 using namespace beamrotor;
@@ -65,7 +65,8 @@ Response initialParameters(double w0, bool rightClamped) {
   return {x[1], -x[0], x[2], -s[3], s[2], s[1]};
 }
 
-/// SCENES.md eq. 26: bilinear in w0 with the switch at w*.
+/// problems/scenes/README.md section 1.3 (the paper's eq. 26): bilinear in w0 with the switch at
+/// w*.
 Response bilinear(double w0, double* wStar) {
   const Response unit = initialParameters(1.0, false);
   *wStar = thetaP() / std::abs(unit.rightRotation);
@@ -83,7 +84,7 @@ struct FeResponse {
   double stopMoment;
 };
 
-FeResponse finiteElements(double w0) {
+FeResponse variantCElements(double w0) {
   Model model;
   auto mat = Material::fromEnu("steel", E, 0.3, 7850);
   LineSpec spec;
@@ -100,11 +101,12 @@ FeResponse finiteElements(double w0) {
   const double stop = s.contacts[0].force;
   return {{s.reaction("left", Dof::uy), s.reaction("left", Dof::rz), s.reaction("middle", Dof::uy),
            s.reaction("right", Dof::uy), stop, s.displacement(model.node("right"), 5)},
-          s.contacts[0].active, stop};
+          s.contacts[0].active,
+          stop};
 }
 
 // Exact elements and exact elimination of the active stop: round-off only (condition ~1e7).
-constexpr double kExact = 1e-9;
+constexpr double kVariantCExact = 1e-9;
 
 }  // namespace
 
@@ -124,18 +126,19 @@ TEST_SUITE("pump rod") {
       CAPTURE(w0);
       double ws;
       const Response ref = bilinear(w0, &ws);
-      const FeResponse fe = finiteElements(w0);
+      const FeResponse fe = variantCElements(w0);
       CHECK(fe.active == (w0 > wStar * (1 + 1e-9)));
-      CHECK(relError(fe.r.leftForce, ref.leftForce) < kExact);
-      CHECK(relError(fe.r.leftMoment, ref.leftMoment) < kExact);
-      CHECK(relError(fe.r.middleForce, ref.middleForce) < kExact);
-      CHECK(relError(fe.r.rightForce, ref.rightForce) < kExact);
-      CHECK(relError(fe.r.rightRotation, ref.rightRotation) < kExact);
+      CHECK(relError(fe.r.leftForce, ref.leftForce) < kVariantCExact);
+      CHECK(relError(fe.r.leftMoment, ref.leftMoment) < kVariantCExact);
+      CHECK(relError(fe.r.middleForce, ref.middleForce) < kVariantCExact);
+      CHECK(relError(fe.r.rightForce, ref.rightForce) < kVariantCExact);
+      CHECK(relError(fe.r.rightRotation, ref.rightRotation) < kVariantCExact);
       // The stop carries the clamped increment's moment once closed, nothing before. Just
       // past w* that moment is tiny (1.7e-4 N m at w* (1 + 1e-7)), so its round-off is
       // measured against the rod's moment scale, the left clamp moment.
       if (w0 > wStar)
-        CHECK(std::abs(fe.r.rightMoment - ref.rightMoment) < kExact * std::abs(ref.leftMoment));
+        CHECK(std::abs(fe.r.rightMoment - ref.rightMoment) <
+              kVariantCExact * std::abs(ref.leftMoment));
       else
         CHECK(fe.stopMoment == 0);
     }

@@ -18,8 +18,6 @@ using namespace beamrotor::test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// Slider displacement from the dead centre at phi = 0: x = r (1 - cos phi) + L (1 - cos beta),
 /// sin beta = (r / L) sin phi (e.g. Shigley & Uicker, Theory of Machines and Mechanisms).
 double sliderPosition(double r, double L, double phi) {

@@ -96,7 +96,7 @@ TEST_SUITE("pump rod decks") {
     const auto doc = solved.json("results.json");
     const auto& bending = doc["analyses"][0];
     // M(x) = M0 + V0 x on [0, psi] from the left reactions (moment -M0, force V0); outer-fibre
-    // stress 32 |M| / (pi D^3) with the local diameter (SCENES.md section 1).
+    // stress 32 |M| / (pi D^3) with the local diameter (problems/scenes/README.md section 1).
     const double a = 0.575, D1 = 0.120, D2 = 0.070, pi = std::numbers::pi;
     const double M0 = -bending["reactions"]["left"]["mz"].get<double>();
     const double V0 = bending["reactions"]["left"]["fy"].get<double>();

@@ -1,8 +1,8 @@
-// Timoshenko against Euler-Bernoulli on the variant A pump rod (SCENES.md section 1), chosen from
-// the command line (`--formulation timoshenko`) for a deck written for Euler-Bernoulli. The
-// reference is the initial-parameter closed form of pump_rod.yaml with the shear flexibility
-// added, written here; the interdependent-interpolation Timoshenko element is exact for the
-// static beam without span loads, so the two agree to round-off.
+// Timoshenko against Euler-Bernoulli on the variant A pump rod (problems/scenes/README.md section
+// 1), chosen from the command line (`--formulation timoshenko`) for a deck written for
+// Euler-Bernoulli. The reference is the initial-parameter closed form of pump_rod.yaml with the
+// shear flexibility added, written here; the interdependent-interpolation Timoshenko element is
+// exact for the static beam without span loads, so the two agree to round-off.
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
@@ -17,8 +17,8 @@ using namespace beamrotor::test;
 
 namespace {
 
-/// Reactions on the rod: left force and moment, middle force, right force and moment.
-using Reactions = Eigen::Matrix<double, 5, 1>;
+/// ShearReactions on the rod: left force and moment, middle force, right force and moment.
+using ShearReactions = Eigen::Matrix<double, 5, 1>;
 
 /// Timoshenko beam (e.g. Timoshenko & Gere, Mechanics of Materials; Reddy, "On locking-free
 /// shear deformable beam finite elements", 1997): M = EI theta', Q = kappa G A (w' - theta),
@@ -26,7 +26,7 @@ using Reactions = Eigen::Matrix<double, 5, 1>;
 /// theta(0) = 0, w(0) = -w0 (left clamp), the conditions w(psi) = 0, w(l) = 0, theta(l) = 0
 /// give M0, V0, R. The shear term adds -V0 S(0, x) - R S(psi, x), S(p, x) = int_p^x ds /
 /// (kappa G A), to w; `shear` = false drops it (Euler-Bernoulli).
-Reactions closedForm(double eta, double w0, bool shear) {
+ShearReactions closedForm(double eta, double w0, bool shear) {
   const double a = 0.575, d = 1.130, D1 = 0.120, D2 = 0.070, E = 200e9, nu = 0.3;
   const double psi = a + 0.715 - eta, l = a + d, G = E / (2 * (1 + nu));
   const double kappa = 6 * (1 + nu) / (7 + 6 * nu);  // Cowper, solid circle
@@ -53,13 +53,13 @@ Reactions closedForm(double eta, double w0, bool shear) {
       A1l, A2l, A3l;
   const Eigen::Vector3d x = K.lu().solve(Eigen::Vector3d(w0, w0, 0));
   const double M0 = x[0], V0 = x[1], R = x[2];
-  Reactions r;
+  ShearReactions r;
   r << V0, -M0, R, -(V0 + R), M0 + V0 * l + R * (l - psi);
   return r;
 }
 
-Reactions deckReactions(const RunResult& run) {
-  Reactions r;
+ShearReactions deckReactions(const RunResult& run) {
+  ShearReactions r;
   r << staticReaction(run, "left", Dof::uy), staticReaction(run, "left", Dof::rz),
       staticReaction(run, "middle", Dof::uy), staticReaction(run, "right", Dof::uy),
       staticReaction(run, "right", Dof::rz);
@@ -67,7 +67,7 @@ Reactions deckReactions(const RunResult& run) {
 }
 
 // Exact elements on both sides: round-off only (condition of K ~1e7), as for the EB decks.
-constexpr double kExact = 1e-9;
+constexpr double kTimoshenkoExact = 1e-9;
 
 }  // namespace
 
@@ -85,13 +85,14 @@ TEST_SUITE("pump rod timoshenko") {
     for (std::size_t i = 0; i < tims.values.size(); ++i) {
       const double eta = tims.values[i];
       CAPTURE(eta);
-      const Reactions tim = deckReactions(tims.runs[i]), eb = deckReactions(ebs.runs[i]);
-      const Reactions timRef = closedForm(eta, 0.001, true), ebRef = closedForm(eta, 0.001, false);
+      const ShearReactions tim = deckReactions(tims.runs[i]), eb = deckReactions(ebs.runs[i]);
+      const ShearReactions timRef = closedForm(eta, 0.001, true),
+                           ebRef = closedForm(eta, 0.001, false);
       double worst = 0;
       for (int k = 0; k < 5; ++k) {
         CAPTURE(k);
-        CHECK(relError(tim[k], timRef[k]) < kExact);
-        CHECK(relError(eb[k], ebRef[k]) < kExact);
+        CHECK(relError(tim[k], timRef[k]) < kTimoshenkoExact);
+        CHECK(relError(eb[k], ebRef[k]) < kTimoshenkoExact);
         worst = std::max(worst, relError(tim[k], timRef[k]));
       }
       MESSAGE("eta = " << eta << ": Timoshenko against its closed form, largest rel. error "
@@ -105,7 +106,8 @@ TEST_SUITE("pump rod timoshenko") {
     }
   }
 
-  TEST_CASE("the option on the command line: applied to any deck; bad or contradictory options exit 2") {
+  TEST_CASE(
+      "the option on the command line: applied to any deck; bad or contradictory options exit 2") {
     const ProcessResult ok = runBeamrotor({"check", "problems/pump_rod_hinged.yaml", "--no-sweep",
                                            "--formulation", "euler-bernoulli"});
     CHECK(ok.exitCode == 0);
@@ -123,8 +125,8 @@ TEST_SUITE("pump rod timoshenko") {
     CHECK(bad.err.find("did you mean 'timoshenko'") != std::string::npos);
     CHECK(bad.err.find('\n') == bad.err.size() - 1);
     // Contradictory options are refused rather than one silently winning.
-    const ProcessResult both = runBeamrotor(
-        {"check", "problems/pump_rod.yaml", "--no-sweep", "--sweep", "eta=0,0.4"});
+    const ProcessResult both =
+        runBeamrotor({"check", "problems/pump_rod.yaml", "--no-sweep", "--sweep", "eta=0,0.4"});
     CHECK(both.exitCode == 2);
     CHECK(both.err.find("problems/pump_rod.yaml: --no-sweep: contradicts --sweep eta=0,0.4") == 0);
   }

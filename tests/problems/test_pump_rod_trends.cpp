@@ -1,7 +1,7 @@
-// The trends the pump rod paper states (SCENES.md section 1), asserted on the decks as far as
-// they are true: reactions exactly linear in w0, monotonic in the stroke eta (but rational, not
-// quadratic, in eta), the 44 % / 79 % growth of the middle reaction, and lower stresses once
-// the crosshead end can turn (variant B against variant A).
+// The trends the pump rod paper states (problems/scenes/README.md section 1), asserted on the decks
+// as far as they are true: reactions exactly linear in w0, monotonic in the stroke eta (but
+// rational, not quadratic, in eta), the 44 % / 79 % growth of the middle reaction, and lower
+// stresses once the crosshead end can turn (variant B against variant A).
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>

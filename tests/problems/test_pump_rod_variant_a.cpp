@@ -1,10 +1,11 @@
-// Stepped pump rod, variant A (SCENES.md section 1): reactions by the finite elements against
-// the published values and against an independent force-method solution written here.
+// Stepped pump rod, variant A (problems/scenes/README.md section 1): reactions by the finite
+// elements against the published values and against an independent force-method solution written
+// here.
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
 
-#include "fem/Static.hpp"
+#include "fem/static/Static.hpp"
 #include "tests/Helpers.hpp"
 
 using namespace beamrotor;
@@ -19,8 +20,8 @@ struct Rod {
   double psi() const { return a + 0.715 - eta; }
 };
 
-/// Reactions on the rod (global frame: forces +y, moments counter-clockwise +z).
-struct Reactions {
+/// VariantAReactions on the rod (global frame: forces +y, moments counter-clockwise +z).
+struct VariantAReactions {
   double leftForce, leftMoment, middleForce, rightForce, rightMoment;
 };
 
@@ -29,7 +30,7 @@ struct Reactions {
 /// of the part left of a section, unit loads give m1 = x, m2 = -1, m3 = <x - psi>, and the
 /// Maxwell-Mohr flexibilities are delta_ij = integral m_i m_j / EI dx. Compatibility:
 /// w(0) = -w0, w'(0) = 0, w(psi) = 0.
-Reactions forceMethod(const Rod& r) {
+VariantAReactions forceMethod(const Rod& r) {
   const double EI1 = r.E * std::numbers::pi * std::pow(r.D1, 4) / 64;
   const double EI2 = r.E * std::numbers::pi * std::pow(r.D2, 4) / 64;
   auto m = [&](int i, double x) {
@@ -57,7 +58,7 @@ Reactions forceMethod(const Rod& r) {
   return {X[0], X[1], X[2], right, rightMoment};
 }
 
-Reactions finiteElements(const Rod& r, int elementsPerPiece) {
+VariantAReactions variantAElements(const Rod& r, int elementsPerPiece) {
   Model model;
   auto mat = Material::fromEnu("steel", r.E, 0.3, 7850);
   LineSpec spec;
@@ -71,23 +72,22 @@ Reactions finiteElements(const Rod& r, int elementsPerPiece) {
   model.addSupport({"middle", model.node("middle"), {{Dof::uy, 0}}});
   model.addSupport({"right", model.node("right"), {{Dof::ux, 0}, {Dof::uy, 0}, {Dof::rz, 0}}});
   const StaticResult s = solveStatic(model);
-  return {s.reaction("left", Dof::uy), s.reaction("left", Dof::rz),
-          s.reaction("middle", Dof::uy), s.reaction("right", Dof::uy),
-          s.reaction("right", Dof::rz)};
+  return {s.reaction("left", Dof::uy), s.reaction("left", Dof::rz), s.reaction("middle", Dof::uy),
+          s.reaction("right", Dof::uy), s.reaction("right", Dof::rz)};
 }
 
 // Hermite elements are exact without distributed load: agreement to round-off (the
 // condition number of these models is ~1e7).
-constexpr double kExact = 1e-9;
+constexpr double kVariantAExact = 1e-9;
 
 }  // namespace
 
 TEST_SUITE("pump rod") {
   TEST_CASE("variant A at eta = 0.4, w0 = 1 mm: published reactions to printed precision") {
-    const Reactions fe = finiteElements(Rod{}, 4);
-    MESSAGE("M1 = " << fe.leftMoment << " N m, P2 = " << fe.leftForce << " N, P3 = "
-                    << fe.middleForce << " N, P4 = " << fe.rightForce << " N, M4 = "
-                    << fe.rightMoment << " N m");
+    const VariantAReactions fe = variantAElements(Rod{}, 4);
+    MESSAGE("M1 = " << fe.leftMoment << " N m, P2 = " << fe.leftForce
+                    << " N, P3 = " << fe.middleForce << " N, P4 = " << fe.rightForce
+                    << " N, M4 = " << fe.rightMoment << " N m");
     // Half a unit of the last printed digit.
     CHECK(std::abs(std::abs(fe.leftMoment) - 7660) <= 5);
     CHECK(std::abs(std::abs(fe.leftForce) - 10400) <= 50);
@@ -106,12 +106,12 @@ TEST_SUITE("pump rod") {
         CAPTURE(n);
         Rod rod;
         rod.eta = eta;
-        const Reactions fe = finiteElements(rod, n), fm = forceMethod(rod);
-        CHECK(relError(fe.leftForce, fm.leftForce) < kExact);
-        CHECK(relError(fe.leftMoment, fm.leftMoment) < kExact);
-        CHECK(relError(fe.middleForce, fm.middleForce) < kExact);
-        CHECK(relError(fe.rightForce, fm.rightForce) < kExact);
-        CHECK(relError(fe.rightMoment, fm.rightMoment) < kExact);
+        const VariantAReactions fe = variantAElements(rod, n), fm = forceMethod(rod);
+        CHECK(relError(fe.leftForce, fm.leftForce) < kVariantAExact);
+        CHECK(relError(fe.leftMoment, fm.leftMoment) < kVariantAExact);
+        CHECK(relError(fe.middleForce, fm.middleForce) < kVariantAExact);
+        CHECK(relError(fe.rightForce, fm.rightForce) < kVariantAExact);
+        CHECK(relError(fe.rightMoment, fm.rightMoment) < kVariantAExact);
       }
   }
 }

@@ -1,4 +1,4 @@
-// Rotor analyses through the deck path: a Jeffcott rotor written as a deck reproduces its
+// Rotor analyses through the deck path: a DeckJeffcott rotor written as a deck reproduces its
 // closed-form damped frequency, log decrement, critical speed and unbalance amplitude, and
 // the files it writes (results.json, CSV, mode and orbit VTK) carry the same numbers.
 #include <doctest/doctest.h>
@@ -16,9 +16,9 @@
 #include <numbers>
 
 #include "elements/Bearing.hpp"
-#include "problems/deck/Study.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/Output.hpp"
+#include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
@@ -28,13 +28,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-/// Jeffcott rotor: a massless Euler-Bernoulli shaft (density 1e-12 of steel's: 4e-13 of the
+/// DeckJeffcott rotor: a massless Euler-Bernoulli shaft (density 1e-12 of steel's: 4e-13 of the
 /// disk's mass), simply supported, a point mass at mid-span with a viscous damper. Hermite
 /// elements are exact for the point load, so the mid-span stiffness is exactly 48 E I / L^3
 /// and every result below is the closed form up to round-off and the 4e-13 shaft mass.
-struct Jeffcott {
+struct DeckJeffcott {
   double L = 0.8, D = 0.025, m = 8, E = 2.1e11, c = 50, me = 1e-4;
   double k() const { return 48 * E * (kPi * std::pow(D, 4) / 64) / std::pow(L, 3); }
   double wn() const { return std::sqrt(k() / m); }
@@ -49,7 +47,7 @@ struct Jeffcott {
 
 // The closed-form expressions, written again in the deck's own words, are its checks.
 const char* kJeffcottDeck = R"(
-title: Jeffcott rotor
+title: DeckJeffcott rotor
 parameters: {L: 0.8, D: 0.025, m: 8, E: 2.1e11, c: 50, me: 1e-4}
 derived:
   k: 48 * E * pi * D^4 / 64 / L^3
@@ -100,7 +98,7 @@ const AnalysisOutcome& analysis(const RunResult& run, const std::string& name) {
   return run.analyses.front();
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> readVtu(const fs::path& file) {
+vtkSmartPointer<vtkUnstructuredGrid> readRotorVtu(const fs::path& file) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(file.string().c_str());
   reader->Update();
@@ -110,8 +108,8 @@ vtkSmartPointer<vtkUnstructuredGrid> readVtu(const fs::path& file) {
 }  // namespace
 
 TEST_SUITE("rotor decks") {
-  TEST_CASE("Jeffcott rotor deck: frequency, decrement, critical speed and orbit as closed") {
-    const Jeffcott j;
+  TEST_CASE("DeckJeffcott rotor deck: frequency, decrement, critical speed and orbit as closed") {
+    const DeckJeffcott j;
     const RunResult run = jeffcottRun();
     REQUIRE(run.checks.size() == 4);
     for (const Check& c : run.checks) {
@@ -142,11 +140,11 @@ TEST_SUITE("rotor decks") {
       CHECK(o.minor() == doctest::Approx(o.major()).epsilon(kClosedForm));
     }
     CHECK(worst < kClosedForm);
-    MESSAGE("Jeffcott deck: largest relative orbit error over the sweep " << worst);
+    MESSAGE("DeckJeffcott deck: largest relative orbit error over the sweep " << worst);
   }
 
-  TEST_CASE("Jeffcott rotor deck: results.json, CSV and VTK hold the solved numbers") {
-    const Jeffcott j;
+  TEST_CASE("DeckJeffcott rotor deck: results.json, CSV and VTK hold the solved numbers") {
+    const DeckJeffcott j;
     const RunResult run = jeffcottRun();
     const fs::path dir = scratchDir("rotor_outputs");
     writeRunOutputs(run, dir);
@@ -173,9 +171,9 @@ TEST_SUITE("rotor decks") {
 
     // 2. The tables and charts: one Campbell row per speed, one critical speed per crossing
     //    line; gnuplot drew both charts (a script error leaves only a .log).
-    for (const char* f : {"campbell_campbell.csv", "campbell_critical_speeds.csv",
-                          "unbalance_unbalance.csv", "spin_modes.csv", "spin.pvd",
-                          "campbell_campbell.svg", "unbalance_unbalance.svg"})
+    for (const char* f :
+         {"campbell_campbell.csv", "campbell_critical_speeds.csv", "unbalance_unbalance.csv",
+          "spin_modes.csv", "spin.pvd", "campbell_campbell.svg", "unbalance_unbalance.svg"})
       CHECK(fs::exists(dir / f));
     std::ifstream campbell(dir / "campbell_campbell.csv");
     int rows = -1;  // the header
@@ -186,7 +184,7 @@ TEST_SUITE("rotor decks") {
     //    the orbit polylines reach the orbit's semi-major axis at the drawing scale, within
     //    the sampling of 48 points per turn: major cos(pi/48) <= largest distance <= major.
     const RotorMode& mode = analysis(run, "spin").rotor->modes->modes[0];
-    const auto grid = readVtu(dir / "spin_mode_01.vtu");
+    const auto grid = readRotorVtu(dir / "spin_mode_01.vtu");
     REQUIRE(grid->GetNumberOfPoints() == run.model->nodeCount());
     const int disk = run.model->node("disk");
     double re[3], im[3];
@@ -196,7 +194,7 @@ TEST_SUITE("rotor decks") {
       CHECK(re[k] == mode.shape(disk, k).real());
       CHECK(im[k] == mode.shape(disk, k).imag());
     }
-    const auto orbits = readVtu(dir / "spin_orbits_mode_01.vtu");
+    const auto orbits = readRotorVtu(dir / "spin_orbits_mode_01.vtu");
     constexpr int kRing = 48;  // line cells per orbit
     REQUIRE(orbits->GetNumberOfCells() == kRing * run.model->nodeCount());
     const double scale = 0.1 * j.L;  // a tenth of the model's extent per unit translation
@@ -217,11 +215,11 @@ TEST_SUITE("rotor decks") {
 }
 
 TEST_SUITE("rotor decks") {
-  TEST_CASE("lateral deck: statics in both planes and modal at rest match the Jeffcott forms") {
-    // The Jeffcott deck without damper, statically loaded at the disk in y and z, and its
+  TEST_CASE("lateral deck: statics in both planes and modal at rest match the DeckJeffcott forms") {
+    // The DeckJeffcott deck without damper, statically loaded at the disk in y and z, and its
     // modes at rest: deflection F / k in each plane (Hermite: exact), and the natural
     // frequency sqrt(k / m) twice (one per plane).
-    const Jeffcott j;
+    const DeckJeffcott j;
     std::string text = kJeffcottDeck;
     text = text.substr(0, text.find("bearings:")) + R"(
 loads: [{type: point, at: disk, fy: -1000, fz: 500}]

@@ -1,4 +1,4 @@
-// The failure-case studies of the verification report (SCENES.md, "where methods fail"): each
+// The failure-case studies of the verification report (problems/scenes/README.md, section 6): each
 // shows the failure and the remedy against a closed form.
 #include <doctest/doctest.h>
 

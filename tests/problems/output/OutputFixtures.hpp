@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "fem/Modal.hpp"
-#include "fem/Static.hpp"
-#include "problems/RunResult.hpp"
+#include "fem/modal/Modal.hpp"
+#include "fem/static/Static.hpp"
+#include "problems/run/RunResult.hpp"
 #include "tests/Helpers.hpp"
 
 namespace beamrotor::test {

@@ -23,11 +23,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Hermite cubics make the EB cantilever exact (see tests/fem/test_cantilever.cpp): the solve
+// Hermite cubics make the EB cantilever exact (see tests/fem/static/test_cantilever.cpp): the solve
 // and the recovery leave only round-off, ~1e6 (condition) x 1e-16 (machine epsilon).
-constexpr double kExact = 1e-10;
+constexpr double kRunOutputsExact = 1e-10;
 
-vtkSmartPointer<vtkUnstructuredGrid> readVtu(const fs::path& file) {
+vtkSmartPointer<vtkUnstructuredGrid> readOutputVtu(const fs::path& file) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(file.string().c_str());
   reader->Update();
@@ -79,18 +79,19 @@ TEST_SUITE("output") {
       CHECK(root.size() == 3);
       CHECK(root.contains("fx"));
       CHECK_FALSE(root.contains("fz"));
-      CHECK(relError(root["fy"].get<double>(), c.P) < kExact);
-      CHECK(relError(root["mz"].get<double>(), c.P * c.L) < kExact);
-      CHECK(std::abs(root["fx"].get<double>()) <= kExact * c.P);
+      CHECK(relError(root["fy"].get<double>(), c.P) < kRunOutputsExact);
+      CHECK(relError(root["mz"].get<double>(), c.P * c.L) < kRunOutputsExact);
+      CHECK(std::abs(root["fx"].get<double>()) <= kRunOutputsExact * c.P);
       const auto& end = a["displacements"]["end"];
       CHECK(end.size() == 3);
-      CHECK(relError(end["uy"].get<double>(), c.deflection(c.L)) < kExact);
+      CHECK(relError(end["uy"].get<double>(), c.deflection(c.L)) < kRunOutputsExact);
       // JSON numbers round-trip exactly (17 significant digits): the file holds the result.
       CHECK(end["uy"].get<double>() == r.displacement(c.elements, dofIndex(Dof::uy)));
       CHECK(a["displacements"]["start"]["uy"].get<double>() == 0.0);
       // Largest stress: the root, M = P L on the outer fibre D/2 of I = pi D^4 / 64.
       const double I = std::numbers::pi * std::pow(c.D, 4) / 64;
-      CHECK(relError(a["max_stress"]["value"].get<double>(), c.P * c.L * (c.D / 2) / I) < kExact);
+      CHECK(relError(a["max_stress"]["value"].get<double>(), c.P * c.L * (c.D / 2) / I) <
+            kRunOutputsExact);
       CHECK(a["max_stress"]["x"].get<double>() == 0.0);
       CHECK(a["rcond"].get<double>() == r.rcond);
       CHECK(a["files"]["fields_csv"] == "tip_fields.csv");
@@ -129,16 +130,16 @@ TEST_SUITE("output") {
     // solution (Timoshenko & Goodier, art. 124): (3 + 2 nu) / (2 (1 + nu)) P / A.
     const double nu = c.section->material.nu, area = std::numbers::pi * c.D * c.D / 4;
     const double tau = (3 + 2 * nu) / (2 * (1 + nu)) * c.P / area;
-    CHECK(relError(std::abs(csv.rows.front()[Mz]), c.P * c.L) < kExact);
+    CHECK(relError(std::abs(csv.rows.front()[Mz]), c.P * c.L) < kRunOutputsExact);
     const double sign = csv.rows.front()[Mz] > 0 ? 1 : -1;
     const double tip = c.deflection(c.L), tipSlope = c.slope(c.L);
     for (const auto& row : csv.rows) {
       CAPTURE(row[x]);
       // Interior stations are interpolated: exact for EB cubics, so round-off only.
-      CHECK(std::abs(row[uy] - c.deflection(row[x])) <= kExact * std::abs(tip));
-      CHECK(std::abs(row[rz] - c.slope(row[x])) <= kExact * std::abs(tipSlope));
-      CHECK(std::abs(row[Mz] - sign * c.P * (c.L - row[x])) <= kExact * c.P * c.L);
-      CHECK(relError(row[shear], tau) < kExact);
+      CHECK(std::abs(row[uy] - c.deflection(row[x])) <= kRunOutputsExact * std::abs(tip));
+      CHECK(std::abs(row[rz] - c.slope(row[x])) <= kRunOutputsExact * std::abs(tipSlope));
+      CHECK(std::abs(row[Mz] - sign * c.P * (c.L - row[x])) <= kRunOutputsExact * c.P * c.L);
+      CHECK(relError(row[shear], tau) < kRunOutputsExact);
     }
   }
 
@@ -151,7 +152,7 @@ TEST_SUITE("output") {
     const fs::path file = scratch / "out" / "tip.vtu";
 
     SUBCASE("VTK reader") {
-      const auto grid = readVtu(file);
+      const auto grid = readOutputVtu(file);
       REQUIRE(grid);
       CHECK(grid->GetNumberOfPoints() == c.elements + 1);
       CHECK(grid->GetNumberOfCells() == c.elements);
@@ -169,20 +170,21 @@ TEST_SUITE("output") {
       const double h = c.L / c.elements;
       vtkDataArray* Mz = grid->GetCellData()->GetArray("Mz");
       REQUIRE(Mz);
-      CHECK(relError(std::abs(Mz->GetTuple1(0)), c.P * (c.L - h / 2)) < kExact);
+      CHECK(relError(std::abs(Mz->GetTuple1(0)), c.P * (c.L - h / 2)) < kRunOutputsExact);
       vtkDataArray* A = grid->GetCellData()->GetArray("A");
       REQUIRE(A);
       CHECK(A->GetTuple1(2) == c.section->A);
       // Stress: the largest over element 0 is at the root.
       vtkDataArray* stress = grid->GetCellData()->GetArray("stress");
       REQUIRE(stress);
-      CHECK(relError(stress->GetTuple1(0), c.P * c.L * c.section->outerY / c.section->Iz) < kExact);
+      CHECK(relError(stress->GetTuple1(0), c.P * c.L * c.section->outerY / c.section->Iz) <
+            kRunOutputsExact);
       // Shear force P throughout: the elasticity solution's (3 + 2 nu) / (2 (1 + nu)) P / A.
       vtkDataArray* shear = grid->GetCellData()->GetArray("shear");
       REQUIRE(shear);
       const double nu = c.section->material.nu;
       CHECK(relError(shear->GetTuple1(0), (3 + 2 * nu) / (2 * (1 + nu)) * c.P / c.section->A) <
-            kExact);
+            kRunOutputsExact);
     }
     SUBCASE("meshio") {
       if (!meshioInstalled()) {
@@ -229,7 +231,7 @@ TEST_SUITE("output") {
     REQUIRE(files.size() == std::size_t(modes));
     for (const std::string& f : files) CHECK(fs::exists(out / f));
 
-    const auto grid = readVtu(out / files[0]);
+    const auto grid = readOutputVtu(out / files[0]);
     vtkDataArray* shape = grid->GetPointData()->GetArray("mode_shape");
     REQUIRE(shape);
     double largest = 0;

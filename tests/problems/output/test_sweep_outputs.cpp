@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Exact EB solution: round-off only (see test_run_outputs.cpp).
-constexpr double kExact = 1e-10;
+constexpr double kSweepOutputsExact = 1e-10;
 
 SweepResult tipForceSweep(const std::vector<double>& forces) {
   SweepResult sweep;
@@ -54,8 +54,9 @@ TEST_SUITE("output") {
       CHECK(entry["value"].get<double>() == forces[i]);
       CHECK(entry["directory"] == "value_00" + std::to_string(i));
       const auto& tip = entry["analyses"][0];
-      CHECK(relError(tip["reactions"]["root"]["fy"].get<double>(), forces[i]) < kExact);
-      CHECK(relError(tip["reactions"]["root"]["mz"].get<double>(), forces[i] * c.L) < kExact);
+      CHECK(relError(tip["reactions"]["root"]["fy"].get<double>(), forces[i]) < kSweepOutputsExact);
+      CHECK(relError(tip["reactions"]["root"]["mz"].get<double>(), forces[i] * c.L) <
+            kSweepOutputsExact);
       CHECK(entry["checks"][0]["pass"] == true);
       CHECK(fs::exists(out / entry["directory"].get<std::string>() / "results.json"));
       CHECK(fs::exists(out / entry["directory"].get<std::string>() / "tip.vtu"));
@@ -73,9 +74,10 @@ TEST_SUITE("output") {
     REQUIRE(f1 >= 0);
     for (std::size_t i = 0; i < forces.size(); ++i) {
       CHECK(csv.rows[i][P] == forces[i]);
-      CHECK(relError(csv.rows[i][fy], forces[i]) < kExact);
+      CHECK(relError(csv.rows[i][fy], forces[i]) < kSweepOutputsExact);
       // Linear statics: the stress scales with the load; the frequency does not change.
-      CHECK(relError(csv.rows[i][stress], csv.rows[0][stress] * forces[i] / forces[0]) < kExact);
+      CHECK(relError(csv.rows[i][stress], csv.rows[0][stress] * forces[i] / forces[0]) <
+            kSweepOutputsExact);
       CHECK(csv.rows[i][f1] == csv.rows[0][f1]);
     }
 

@@ -1,0 +1,179 @@
+#include "fem/assembly/Assembly.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "fem/model/Model.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Node adjacency (each node lists itself and every node it shares an element with), as
+/// compressed rows with sorted, unique entries.
+void nodeAdjacency(const Model& model, std::vector<int>& start, std::vector<int>& adj) {
+  const int n = model.nodeCount();
+  std::vector<int> count(n + 1, 0);
+  std::array<int, kMaxElementDofs> nodes{};
+  auto elementNodes = [&](const Element& e) {
+    int k = 0;
+    for (const NodeDof& d : e.dofs())
+      if (std::find(nodes.begin(), nodes.begin() + k, d.node) == nodes.begin() + k)
+        nodes[k++] = d.node;
+    return k;
+  };
+  for (const auto& e : model.elements()) {
+    const int k = elementNodes(*e);
+    for (int a = 0; a < k; ++a) count[nodes[a] + 1] += k;
+  }
+  for (int i = 0; i < n; ++i) count[i + 1] += count[i] + 1;  // +1: the node itself
+  std::vector<int> fill(count.begin(), count.end() - 1);
+  adj.assign(count[n], 0);
+  for (int i = 0; i < n; ++i) adj[fill[i]++] = i;
+  for (const auto& e : model.elements()) {
+    const int k = elementNodes(*e);
+    for (int a = 0; a < k; ++a)
+      for (int b = 0; b < k; ++b) adj[fill[nodes[a]]++] = nodes[b];
+  }
+  // Sort and deduplicate each node's list in place, compacting as we go.
+  start.assign(n + 1, 0);
+  int out = 0;
+  for (int i = 0; i < n; ++i) {
+    auto first = adj.begin() + count[i], last = adj.begin() + count[i + 1];
+    std::sort(first, last);
+    last = std::unique(first, last);
+    start[i] = out;
+    out = int(std::copy(first, last, adj.begin() + out) - adj.begin());
+  }
+  start[n] = out;
+  adj.resize(out);
+}
+
+/// Position of (row, col) in the value array of a compressed matrix holding that entry.
+int slot(const SparseMatrix& A, int row, int col) {
+  const int* rows = A.innerIndexPtr();
+  const int* first = rows + A.outerIndexPtr()[col];
+  const int* last = rows + A.outerIndexPtr()[col + 1];
+  return int(std::lower_bound(first, last, row) - rows);
+}
+
+}  // namespace
+
+SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
+    : model_(model), dofs_(dofs) {
+  std::vector<int> start, adj;
+  nodeAdjacency(model, start, adj);
+  // Free equations are numbered node by node, so walking a column's neighbour nodes in
+  // ascending order yields ascending row numbers. Count first, then fill in place.
+  const int nf = dofs.freeCount();
+  auto forEachRow = [&](int col, auto&& visit) {
+    const int node = dofs.dofOf(col).node;
+    for (int k = start[node]; k < start[node + 1]; ++k)
+      for (Dof d : kAllDofs) {
+        const int row = dofs.equation(adj[k], d);
+        if (dofs.isFree(row)) visit(row);
+      }
+  };
+  long long nnz = 0;
+  for (int col = 0; col < nf; ++col) forEachRow(col, [&](int) { ++nnz; });
+  pattern_.resize(nf, nf);
+  pattern_.resizeNonZeros(Eigen::Index(nnz));
+  int* colStart = pattern_.outerIndexPtr();
+  int* rows = pattern_.innerIndexPtr();
+  int next = 0;
+  for (int col = 0; col < nf; ++col) {
+    colStart[col] = next;
+    forEachRow(col, [&](int row) { rows[next++] = row; });
+  }
+  colStart[nf] = next;
+  std::fill_n(pattern_.valuePtr(), nnz, 0.0);
+}
+
+ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {
+  switch (kind) {
+    case MatrixKind::stiffness:
+      return e.stiffness();
+    case MatrixKind::mass:
+      return e.mass();
+    case MatrixKind::damping:
+      return e.damping();
+    case MatrixKind::gyroscopic:
+      return e.gyroscopic();
+  }
+  return {};
+}
+
+SparseMatrix SparseAssembler::assemble(MatrixKind kind) const& {
+  SparseMatrix A = pattern_;
+  fill(A, kind);
+  return A;
+}
+
+SparseMatrix SparseAssembler::assemble(MatrixKind kind) && {
+  SparseMatrix A;
+  A.swap(pattern_);  // this assembler is not used again (Eigen 3.4 sparse has no move)
+  fill(A, kind);
+  return A;
+}
+
+void SparseAssembler::fill(SparseMatrix& A, MatrixKind kind) const {
+  double* values = A.valuePtr();
+  std::array<int, kMaxElementDofs> eq{};
+  for (const auto& e : model_.elements()) {
+    const ElementMatrix ke = elementMatrix(*e, kind);
+    if (ke.size() == 0) continue;
+    const auto d = e->dofs();
+    const int n = int(d.size());
+    for (int a = 0; a < n; ++a) eq[a] = dofs_.equation(d[a]);
+    for (int b = 0; b < n; ++b) {
+      if (!dofs_.isFree(eq[b])) continue;
+      for (int a = 0; a < n; ++a)
+        if (dofs_.isFree(eq[a]) && ke(a, b) != 0.0) values[slot(A, eq[a], eq[b])] += ke(a, b);
+    }
+  }
+}
+
+ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u) {
+  const auto d = e.dofs();
+  ElementVector ue(d.size());
+  for (int a = 0; a < int(d.size()); ++a) ue[a] = u[dofs.equation(d[a])];
+  return ue;
+}
+
+Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.size());
+  for (const NodalLoad& l : model.loads()) {
+    const int eq = dofs.equation(l.node, l.dof);
+    if (eq < 0)
+      throw std::invalid_argument("a load acts on " + model.describe({l.node, l.dof}) +
+                                  ", which no element carries");
+    f[eq] += l.value;
+  }
+  return f;
+}
+
+Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
+  Eigen::VectorXd f = nodalLoadVector(model, dofs);
+  for (const auto& e : model.elements()) {
+    const ElementVector fe = e->load();
+    if (fe.size() == 0) continue;
+    const auto d = e->dofs();
+    for (int a = 0; a < int(d.size()); ++a) f[dofs.equation(d[a])] += fe[a];
+  }
+  return f;
+}
+
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
+                              bool constrainedOnly) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
+  const auto constrained = [&](const NodeDof& d) { return dofs.isConstrained(dofs.equation(d)); };
+  for (const auto& e : model.elements()) {
+    const auto d = e->dofs();
+    if (constrainedOnly && std::none_of(d.begin(), d.end(), constrained)) continue;
+    const ElementVector fe = e->endForces(gather(*e, dofs, u));
+    for (int a = 0; a < int(d.size()); ++a) r[dofs.equation(d[a])] += fe[a];
+  }
+  return r;
+}
+
+}  // namespace beamrotor

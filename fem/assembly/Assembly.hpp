@@ -1,0 +1,59 @@
+// Sparse assembly of the free-free block of K, M, C or G, with the sparsity pattern computed
+// once from the connectivity and reused for every matrix (and every re-assembly in a sweep).
+#pragma once
+
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "fem/model/DofMap.hpp"
+#include "fem/model/Element.hpp"
+
+namespace beamrotor {
+
+class Model;
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+enum class MatrixKind { stiffness, mass, damping, gyroscopic };
+
+class SparseAssembler {
+ public:
+  /// Computes the pattern of the free-free block: dof pairs of nodes that share an element.
+  SparseAssembler(const Model& model, const DofMap& dofs);
+
+  /// The free-free block of one global matrix (freeCount x freeCount, compressed).
+  SparseMatrix assemble(MatrixKind kind) const&;
+  /// The same from a temporary assembler: its pattern is filled in place, not copied.
+  SparseMatrix assemble(MatrixKind kind) &&;
+  /// Number of stored entries of the pattern.
+  long long patternSize() const { return pattern_.nonZeros(); }
+
+ private:
+  /// Adds every element's matrix of one kind into A, which has the pattern's structure.
+  void fill(SparseMatrix& A, MatrixKind kind) const;
+
+  const Model& model_;
+  const DofMap& dofs_;
+  SparseMatrix pattern_;  // compressed free-free block with every value zero
+};
+
+/// The element matrix of one kind (empty when the element has none).
+ElementMatrix elementMatrix(const Element& e, MatrixKind kind);
+
+/// Gathers an element's dof values from a full-length vector (ordered as DofMap).
+ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u);
+
+/// Full-length vector of the concentrated nodal loads alone.
+Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs);
+
+/// Full-length vector of applied loads: nodal loads plus element equivalent loads.
+Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs);
+
+/// Full-length vector of the element forces K u - f_elem for a full-length displacement u;
+/// at a constrained dof, this minus the nodal loads there is the support reaction. With
+/// `constrainedOnly`, only elements touching a constrained dof are visited (the entries at
+/// constrained dofs are complete, the others are not): reactions of a large model in the time
+/// of its few supported elements.
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
+                              bool constrainedOnly = false);
+
+}  // namespace beamrotor

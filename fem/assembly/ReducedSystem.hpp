@@ -1,0 +1,32 @@
+// Constraint elimination as a matched pair: form the reduced right-hand side from the
+// prescribed values, and map a full-length solution back onto the nodes.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "fem/assembly/Assembly.hpp"
+#include "fem/model/Results.hpp"
+
+namespace beamrotor {
+
+class Model;
+
+/// Full-length vector holding the supports' prescribed values at constrained dofs, zero
+/// elsewhere.
+Eigen::VectorXd prescribedValues(const Model& model, const DofMap& dofs);
+
+/// f_F - K_FC u_C: the free part of the loads minus what the prescribed displacements
+/// (given in the full-length uPrescribed) push onto the free dofs.
+Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs,
+                                     const Eigen::VectorXd& f, const Eigen::VectorXd& uPrescribed);
+
+/// A full-length vector laid out per node (absent dofs zero).
+NodalField toNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u);
+
+/// A free-length vector (e.g. a mode shape) laid out per node; constrained dofs get zero.
+NodalField freeToNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& uf);
+
+SystemSize systemSize(const Model& model, const DofMap& dofs, const SparseMatrix& Kff,
+                      double factorEntries);
+
+}  // namespace beamrotor

@@ -1,0 +1,102 @@
+#include "fem/modal/Modal.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "fem/assembly/ReducedSystem.hpp"
+#include "fem/solvers/Errors.hpp"
+#include "fem/solvers/SupportCheck.hpp"
+#include "fem/solvers/SymmetricEigen.hpp"
+#include "fem/timing/Stopwatch.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Free-length vector that moves every free dof of kind d by one (a rigid translation).
+Eigen::VectorXd unitTranslation(const DofMap& dofs, Dof d) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.freeCount());
+  for (int eq = 0; eq < dofs.freeCount(); ++eq)
+    if (dofs.dofOf(eq).dof == d) r[eq] = 1;
+  return r;
+}
+
+std::string describeMode(const std::array<double, kDofKinds>& share) {
+  // Group the shares into the physical families a user recognises.
+  const double axial = share[0], torsion = share[3];
+  const double bendY = share[1] + share[5];  // uy with rz: bending in the x-y plane
+  const double bendZ = share[2] + share[4];  // uz with ry: bending in the x-z plane
+  const double best = std::max({axial, torsion, bendY, bendZ});
+  if (best == bendY && bendZ > 0.25) return "bending uy+uz (two planes)";
+  if (best == bendY) return "bending uy (x-y plane)";
+  if (best == bendZ) return "bending uz (x-z plane)";
+  if (best == axial) return "axial ux";
+  return "torsion rx";
+}
+
+}  // namespace
+
+ModalResult solveModes(const Model& model, const ModalOptions& options) {
+  Stopwatch clock, total;
+  ModalResult result;
+  result.shift = options.shift;
+
+  // 1. Assemble the free-free blocks of K and M.
+  const DofMap dofs(model);
+  const SparseAssembler assembler(model, dofs);
+  const SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
+  const SparseMatrix M = assembler.assemble(MatrixKind::mass);
+  result.time.assembly = clock.lap();
+
+  // 2. Eigenpairs nearest the shift. At shift 0 a singular K is a mechanism: name its dofs.
+  EigenPairs pairs;
+  try {
+    pairs = symmetricEigenpairs(K, M, std::min(options.modes, dofs.freeCount()), options.shift);
+  } catch (const SingularSystem& e) {
+    if (options.shift == 0) {
+      const auto moving = zeroEnergyDofs(K, dofs);
+      if (!moving.empty())
+        throwUnsupported(model, moving, std::string(e.what()) + ".\nmodal analysis at shift 0");
+    }
+    throw;
+  }
+  result.time.solve = clock.lap();
+  if (pairs.missedBySturmCount > 0)
+    result.warnings.push_back(
+        "a Sturm count finds " + std::to_string(pairs.missedBySturmCount) +
+        " eigenvalue(s) below the highest frequency listed that Lanczos did not return, even "
+        "with larger subspaces: the list may skip modes (or the count is off, for a matrix "
+        "this near singular); give a shift near that frequency to compute them");
+
+  // 3. Describe each mode: frequency, effective masses, energy share per dof kind.
+  std::array<Eigen::VectorXd, 3> Mr;
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::VectorXd r = unitTranslation(dofs, kAllDofs[k]);
+    Mr[k] = M * r;
+    result.totalMass[k] = r.dot(Mr[k]);
+  }
+  for (int m = 0; m < int(pairs.values.size()); ++m) {
+    Mode mode;
+    const Eigen::VectorXd phi = pairs.vectors.col(m);
+    mode.eigenvalue = pairs.values[m];
+    mode.frequencyHz = std::sqrt(std::max(0.0, mode.eigenvalue)) / (2 * std::numbers::pi);
+    mode.shape = freeToNodalField(model, dofs, phi);
+    for (int k = 0; k < 3; ++k) mode.effectiveMass[k] = std::pow(phi.dot(Mr[k]), 2);
+    const Eigen::VectorXd Mphi = M * phi;
+    double sum = 0;
+    for (int eq = 0; eq < dofs.freeCount(); ++eq) {
+      const double e = std::abs(phi[eq] * Mphi[eq]);
+      mode.energyShare[dofIndex(dofs.dofOf(eq).dof)] += e;
+      sum += e;
+    }
+    if (sum > 0)
+      for (double& s : mode.energyShare) s /= sum;
+    mode.description = describeMode(mode.energyShare);
+    result.modes.push_back(std::move(mode));
+  }
+  result.size = systemSize(model, dofs, K, pairs.factorEntries);
+  result.time.total = total.lap();
+  return result;
+}
+
+}  // namespace beamrotor

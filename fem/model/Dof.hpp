@@ -1,0 +1,76 @@
+// Degrees of freedom: the six kinds a node can carry, and the sets a model uses.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace beamrotor {
+
+/// The kind of a nodal degree of freedom, global frame: translations ux, uy, uz (m) and
+/// rotations rx, ry, rz (rad, right-hand rule about the global axes).
+enum class Dof : std::uint8_t { ux = 0, uy, uz, rx, ry, rz };
+
+inline constexpr int kDofKinds = 6;
+inline constexpr std::array<Dof, kDofKinds> kAllDofs{Dof::ux, Dof::uy, Dof::uz,
+                                                     Dof::rx, Dof::ry, Dof::rz};
+
+/// "ux" ... "rz".
+std::string_view dofName(Dof d);
+/// Inverse of dofName; nullopt for anything else.
+std::optional<Dof> parseDof(std::string_view name);
+inline constexpr int dofIndex(Dof d) {
+  return static_cast<int>(d);
+}
+inline constexpr bool isRotation(Dof d) {
+  return dofIndex(d) >= 3;
+}
+
+/// A set of dof kinds, e.g. the ones every node of a planar model carries.
+class DofSet {
+ public:
+  constexpr DofSet() = default;
+  constexpr DofSet(std::initializer_list<Dof> dofs) {
+    for (Dof d : dofs) bits_ |= bit(d);
+  }
+  constexpr bool contains(Dof d) const { return (bits_ & bit(d)) != 0; }
+  constexpr int size() const {
+    int n = 0;
+    for (Dof d : kAllDofs) n += contains(d) ? 1 : 0;
+    return n;
+  }
+  constexpr bool operator==(const DofSet&) const = default;
+  /// This set and d.
+  constexpr DofSet with(Dof d) const {
+    DofSet out = *this;
+    out.bits_ |= bit(d);
+    return out;
+  }
+
+  /// Axial and bending in the x-y plane: ux, uy, rz.
+  static constexpr DofSet planar() { return {Dof::ux, Dof::uy, Dof::rz}; }
+  /// All six: 3D frames.
+  static constexpr DofSet frame3d() {
+    return {Dof::ux, Dof::uy, Dof::uz, Dof::rx, Dof::ry, Dof::rz};
+  }
+  /// Lateral rotor dynamics with the shaft along x: uy, uz, ry, rz (two bending planes).
+  static constexpr DofSet lateral() { return {Dof::uy, Dof::uz, Dof::ry, Dof::rz}; }
+
+ private:
+  static constexpr std::uint8_t bit(Dof d) { return std::uint8_t(1u << dofIndex(d)); }
+  std::uint8_t bits_ = 0;
+};
+
+/// One degree of freedom of one node.
+struct NodeDof {
+  int node = -1;
+  Dof dof = Dof::ux;
+  bool operator==(const NodeDof&) const = default;
+};
+
+/// "node 3 uy", or "point 'left' uy" when the node has a name (see Model::describe).
+std::string toString(const NodeDof& d);
+
+}  // namespace beamrotor

@@ -1,0 +1,56 @@
+#include "fem/model/DofMap.hpp"
+
+#include <stdexcept>
+
+#include "fem/model/Model.hpp"
+
+namespace beamrotor {
+
+namespace {
+constexpr int kAbsent = -1;
+constexpr int kPresent = -2;      // touched by an element, not yet numbered
+constexpr int kConstrained = -3;  // held by a support, not yet numbered
+}  // namespace
+
+DofMap::DofMap(const Model& model) {
+  // 1. Mark what exists: every dof an element touches, then the supported ones.
+  slots_.assign(model.nodeCount(), {kAbsent, kAbsent, kAbsent, kAbsent, kAbsent, kAbsent});
+  for (const auto& e : model.elements())
+    for (const NodeDof& d : e->dofs()) slots_.at(d.node)[dofIndex(d.dof)] = kPresent;
+  for (const Support& s : model.supports())
+    for (const PrescribedDof& p : s.dofs) {
+      int& slot = slots_.at(s.node)[dofIndex(p.dof)];
+      // A support on a dof no element touches constrains nothing; it still gets a number so
+      // that its (zero) reaction can be reported.
+      if (slot == kConstrained)
+        throw std::invalid_argument("support '" + s.name + "' constrains " +
+                                    model.describe({s.node, p.dof}) + " a second time");
+      slot = kConstrained;
+    }
+
+  for (const ContactConstraint& c : model.contacts()) {
+    const int slot = slots_.at(c.node)[dofIndex(c.dof)];
+    if (slot == kAbsent)
+      throw std::invalid_argument("contact '" + c.name + "' acts on " +
+                                  model.describe({c.node, c.dof}) + ", which no element carries");
+    if (slot == kConstrained)
+      throw std::invalid_argument("contact '" + c.name + "' acts on " +
+                                  model.describe({c.node, c.dof}) +
+                                  ", which a support already holds");
+  }
+
+  // 2. Number free dofs node by node, then constrained ones.
+  for (int pass = 0; pass < 2; ++pass) {
+    const int wanted = pass == 0 ? kPresent : kConstrained;
+    for (int n = 0; n < int(slots_.size()); ++n)
+      for (Dof d : kAllDofs) {
+        int& slot = slots_[n][dofIndex(d)];
+        if (slot != wanted) continue;
+        slot = int(dofs_.size());
+        dofs_.push_back({n, d});
+      }
+    if (pass == 0) freeCount_ = int(dofs_.size());
+  }
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,48 @@
+// The element interface: what the assembler and the analyses need from any element.
+// An element knows its nodes and the dofs it touches, never a global equation number.
+#pragma once
+
+#include <Eigen/Dense>
+#include <span>
+#include <string>
+
+#include "fem/model/Dof.hpp"
+
+namespace beamrotor {
+
+/// The largest element: a two-node 3D frame element, 12 dofs.
+inline constexpr int kMaxElementDofs = 12;
+
+/// Element matrices live on the stack (no allocation per element while assembling).
+using ElementMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor,
+                                    kMaxElementDofs, kMaxElementDofs>;
+using ElementVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxElementDofs, 1>;
+
+/// Any element: beam, spring, point mass, contact. Every matrix and vector is in the global
+/// frame, SI units, rows and columns ordered as dofs().
+class Element {
+ public:
+  virtual ~Element() = default;
+
+  /// The dofs this element couples, in the order of its matrices.
+  virtual std::span<const NodeDof> dofs() const = 0;
+  /// Stiffness (N/m, N m/rad, ...).
+  virtual ElementMatrix stiffness() const = 0;
+  /// Mass (kg, kg m^2); an empty (0 x 0) matrix when the element has none.
+  virtual ElementMatrix mass() const { return {}; }
+  /// Viscous damping (N s/m ...); empty when none.
+  virtual ElementMatrix damping() const { return {}; }
+  /// Gyroscopic matrix per unit spin speed (multiply by Omega in rad/s); empty when none.
+  virtual ElementMatrix gyroscopic() const { return {}; }
+  /// Equivalent nodal loads of the loads the element carries (distributed load, self-weight);
+  /// empty when none.
+  virtual ElementVector load() const { return {}; }
+  /// A short kind name for messages and output, e.g. "beam-eb", "spring".
+  virtual std::string kind() const = 0;
+
+  /// Nodal forces the element exerts against its nodes' displacement u (ordered as dofs()):
+  /// K u - f_load. Summed over elements these give internal forces and support reactions.
+  ElementVector endForces(const ElementVector& u) const;
+};
+
+}  // namespace beamrotor

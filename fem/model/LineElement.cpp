@@ -1,0 +1,14 @@
+#include "fem/model/LineElement.hpp"
+
+#include <cmath>
+
+namespace beamrotor {
+
+double maxNormalStress(const Section& s, const SectionForces& f) {
+  const double axial = std::abs(f.N) / s.A;
+  if (s.shape == Section::Shape::circle || s.shape == Section::Shape::tube)
+    return axial + std::hypot(f.My, f.Mz) * s.outerY / s.Iz;
+  return axial + std::abs(f.Mz) * s.outerY / s.Iz + std::abs(f.My) * s.outerZ / s.Iy;
+}
+
+}  // namespace beamrotor

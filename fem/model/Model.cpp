@@ -1,0 +1,45 @@
+#include "fem/model/Model.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace beamrotor {
+
+int Model::addNode(const Eigen::Vector3d& x) {
+  nodes_.push_back(x);
+  return int(nodes_.size()) - 1;
+}
+
+void Model::nameNode(const std::string& name, int node) {
+  if (node < 0 || node >= nodeCount()) throw std::out_of_range("no node " + std::to_string(node));
+  auto [it, inserted] = names_.emplace(name, node);
+  if (!inserted && it->second != node)
+    throw std::invalid_argument("point name '" + name + "' is used twice");
+}
+
+int Model::node(const std::string& name) const {
+  auto it = names_.find(name);
+  if (it == names_.end()) throw std::out_of_range("no point named '" + name + "'");
+  return it->second;
+}
+
+std::string Model::nameOf(int node) const {
+  for (const auto& [name, n] : names_)
+    if (n == node) return name;
+  return {};
+}
+
+std::string Model::describe(const NodeDof& d) const {
+  std::ostringstream s;
+  s << "node " << d.node;
+  const std::string name = nameOf(d.node);
+  if (!name.empty()) s << " '" << name << "'";
+  if (d.node >= 0 && d.node < nodeCount()) {
+    const auto& x = nodes_[d.node];
+    s << " (x = " << x.x() << ", " << x.y() << ", " << x.z() << ")";
+  }
+  s << " " << dofName(d.dof);
+  return s.str();
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,91 @@
+// Results of the analyses as plain values; writers read these plus the model's nodes.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "fem/model/Dof.hpp"
+
+namespace beamrotor {
+
+/// One value per node and dof kind (rows: nodes; columns: ux uy uz rx ry rz, global frame).
+/// Dofs the model does not carry are zero.
+using NodalField = Eigen::Matrix<double, Eigen::Dynamic, kDofKinds, Eigen::RowMajor>;
+
+/// Wall-clock seconds spent in each stage of a linear solve.
+struct SolveTimings {
+  double assembly = 0;  ///< assembling K (and M) and the load vector
+  double factor = 0;    ///< sparse factorisation (symbolic + numeric)
+  double solve = 0;     ///< triangular solves / eigen iterations
+  double total = 0;     ///< everything, including recovery
+};
+
+/// Size of the discrete system.
+struct SystemSize {
+  int nodes = 0;
+  int elements = 0;
+  int dofs = 0;  ///< all dofs, free and constrained
+  int freeDofs = 0;
+  long long nonzeros = 0;    ///< stored entries of the free-free stiffness block
+  double factorEntries = 0;  ///< entries of the factor(s) (fill-in)
+};
+
+/// One reaction component of a named support (N or N m, global frame).
+struct ReactionComponent {
+  std::string support;
+  int node = -1;
+  Dof dof = Dof::ux;
+  double value = 0;
+};
+
+/// The settled state of one contact constraint.
+struct ContactState {
+  std::string name;
+  int node = -1;
+  Dof dof = Dof::uy;
+  bool active = false;  ///< the dof rests on a bound
+  double value = 0;     ///< the dof's value (m or rad)
+  double bound = 0;     ///< the bound it rests on, or the nearest one when open
+  double gap = 0;       ///< distance to the nearest bound (0 when active)
+  double force = 0;     ///< force or moment the stop exerts (N or N m; 0 when open)
+};
+
+struct StaticResult {
+  NodalField displacement;                   ///< m and rad
+  std::vector<ReactionComponent> reactions;  ///< every constrained dof, in support order
+  std::vector<ContactState> contacts;        ///< settled contact states, in model order
+  int activeSetIterations = 0;               ///< linear solves the contact loop needed
+  double rcond = 0;                          ///< the solver's reciprocal condition estimate
+  std::string solver;                        ///< the direct method used (LinearSolver)
+  SystemSize size;
+  SolveTimings time;
+
+  /// Sum of the reaction components of one support along one dof kind.
+  double reaction(const std::string& support, Dof d) const;
+};
+
+/// One vibration mode.
+struct Mode {
+  double eigenvalue = 0;   ///< omega^2 (rad^2/s^2)
+  double frequencyHz = 0;  ///< sqrt(eigenvalue) / (2 pi); 0 for rigid-body modes
+  NodalField shape;        ///< mass-normalised (phi^T M phi = 1)
+  /// Effective modal mass (kg) for rigid translation along ux, uy, uz.
+  std::array<double, 3> effectiveMass{};
+  /// Share of the mode's kinetic energy carried by each dof kind (sums to 1).
+  std::array<double, kDofKinds> energyShare{};
+  /// A few words to recognise the mode by, e.g. "bending uy", "axial ux", "torsion rx".
+  std::string description;
+};
+
+struct ModalResult {
+  std::vector<Mode> modes;  ///< ascending frequency
+  double shift = 0;         ///< the shift used (rad^2/s^2)
+  /// Mass (kg) moving with a rigid translation along ux, uy, uz, for effective-mass ratios.
+  std::array<double, 3> totalMass{};
+  SystemSize size;
+  SolveTimings time;
+  std::vector<std::string> warnings;  ///< e.g. modes a Sturm count says were skipped
+};
+
+}  // namespace beamrotor

@@ -1,0 +1,22 @@
+// Elements whose stiffness and damping depend on the spin speed (fluid-film bearings, seals):
+// the rotor analyses re-evaluate them at every speed; the other analyses see them at rest.
+#pragma once
+
+#include "fem/model/Element.hpp"
+
+namespace beamrotor {
+
+class SpeedDependentElement : public Element {
+ public:
+  /// Stiffness at spin speed Omega (rad/s), global frame, ordered as dofs(); may be
+  /// non-symmetric (cross-coupled bearings).
+  virtual ElementMatrix stiffnessAt(double speed) const = 0;
+  /// Viscous damping at spin speed Omega (rad/s); empty when none.
+  virtual ElementMatrix dampingAt(double speed) const = 0;
+
+  /// At rest (Omega = 0): what statics and the non-rotating modal analysis use.
+  ElementMatrix stiffness() const override { return stiffnessAt(0); }
+  ElementMatrix damping() const override { return dampingAt(0); }
+};
+
+}  // namespace beamrotor

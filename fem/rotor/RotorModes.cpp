@@ -1,0 +1,132 @@
+#include "fem/rotor/RotorModes.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "fem/timing/Stopwatch.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+// An orbit whose minor axis is below this fraction of its major is a line: eigenvectors carry
+// round-off of ~1e-10 of their largest entry, far below this.
+constexpr double kPlanarWhirl = 1e-6;
+// A pair of eigenvalues this close to the real axis (relative to |lambda|) is one real
+// eigenvalue seen through round-off.
+constexpr double kRealEigenvalue = 1e-12;
+
+/// Scales q so its largest translation (or, with none moving, its largest entry) is 1.
+void normaliseShape(Eigen::VectorXcd& q, const DofMap& dofs) {
+  int best = -1;
+  for (int eq = 0; eq < int(q.size()); ++eq)
+    if (!isRotation(dofs.dofOf(eq).dof) && (best < 0 || std::abs(q[eq]) > std::abs(q[best])))
+      best = eq;
+  if (best < 0 || std::abs(q[best]) == 0) q.cwiseAbs().maxCoeff(&best);
+  if (std::abs(q[best]) > 0) q /= q[best];
+}
+
+/// Frequencies, damping and whirl of one eigenpair.
+RotorMode describe(std::complex<double> lambda, const Eigen::VectorXcd& q, const DofMap& dofs,
+                   int nodeCount) {
+  RotorMode mode;
+  mode.eigenvalue = lambda;
+  mode.naturalFrequency = std::abs(lambda);
+  mode.dampedFrequency = lambda.imag();
+  mode.naturalFrequencyHz = mode.naturalFrequency / kTwoPi;
+  mode.dampedFrequencyHz = mode.dampedFrequency / kTwoPi;
+  mode.dampingRatio = mode.naturalFrequency > 0 ? -lambda.real() / mode.naturalFrequency : 0;
+  mode.logDecrement = lambda.imag() > 0   ? -kTwoPi * lambda.real() / lambda.imag()
+                      : lambda.real() < 0 ? std::numeric_limits<double>::infinity()
+                      : lambda.real() > 0 ? -std::numeric_limits<double>::infinity()
+                                          : 0.0;
+  // The whirl is read at the node with the largest lateral orbit.
+  double largest = -1;
+  Orbit orbit;
+  for (int node = 0; node < nodeCount; ++node) {
+    const int y = dofs.equation(node, Dof::uy), z = dofs.equation(node, Dof::uz);
+    const Orbit o{dofs.isFree(y) ? q[y] : 0.0, dofs.isFree(z) ? q[z] : 0.0};
+    const double size = std::norm(o.uy) + std::norm(o.uz);
+    if (size > largest) {
+      largest = size;
+      orbit = o;
+      mode.whirlNode = node;
+    }
+  }
+  mode.whirlRatio = orbit.whirlRatio();
+  mode.whirl = lambda.imag() <= 0 || std::abs(mode.whirlRatio) < kPlanarWhirl ? Whirl::planar
+               : mode.whirlRatio > 0                                          ? Whirl::forward
+                                                                              : Whirl::backward;
+  return mode;
+}
+
+ComplexNodalField toComplexNodalField(const DofMap& dofs, int nodeCount,
+                                      const Eigen::VectorXcd& q) {
+  ComplexNodalField field = ComplexNodalField::Zero(nodeCount, kDofKinds);
+  for (int eq = 0; eq < int(q.size()); ++eq) {
+    const NodeDof& d = dofs.dofOf(eq);
+    field(d.node, dofIndex(d.dof)) = q[eq];
+  }
+  return field;
+}
+
+}  // namespace
+
+RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
+                                 const RotorOptions& options, QuadraticEigenSolver& solver,
+                                 bool shapes) {
+  Stopwatch clock, total;
+  RotorModesResult result;
+  result.speed = speed;
+
+  // 1. The matrices at this speed: D = C(Omega) + Omega G.
+  const SparseMatrix K = system.stiffness(speed);
+  const SparseMatrix D = system.damping(speed) + speed * system.gyroscopic();
+  result.time.assembly = clock.lap();
+
+  // 2. Eigenpairs: a mode is a conjugate pair, so ask for two eigenvalues per mode.
+  const QuadraticEigenpairs pairs =
+      solver.solve(K, D, system.mass(), 2 * options.modes, options.shift, options.method);
+  result.time.solve = clock.lap();
+
+  // 3. One mode per pair (the member with Im lambda > 0) and per real eigenvalue.
+  const DofMap& dofs = system.dofs();
+  const int nodes = system.model().nodeCount();
+  std::vector<int> kept;
+  for (int k = 0; k < int(pairs.values.size()) && int(kept.size()) < options.modes; ++k) {
+    const std::complex<double> lambda = pairs.values[k];
+    if (lambda.imag() >= -kRealEigenvalue * std::abs(lambda)) kept.push_back(k);
+  }
+  result.vectors.resize(system.size(), kept.size());
+  for (int m = 0; m < int(kept.size()); ++m) {
+    std::complex<double> lambda = pairs.values[kept[m]];
+    Eigen::VectorXcd q = pairs.vectors.col(kept[m]);
+    if (std::abs(lambda.imag()) <= kRealEigenvalue * std::abs(lambda)) {
+      lambda = lambda.real();
+      q = q.real().cast<std::complex<double>>();
+    }
+    normaliseShape(q, dofs);
+    RotorMode mode = describe(lambda, q, dofs, nodes);
+    if (shapes) mode.shape = toComplexNodalField(dofs, nodes, q);
+    result.vectors.col(m) = q / q.norm();
+    result.modes.push_back(std::move(mode));
+  }
+  result.size = system.systemSize(pairs.factorEntries);
+  result.time.total = total.lap();
+  return result;
+}
+
+RotorModesResult solveRotorModes(const Model& model, double speed, const RotorOptions& options) {
+  Stopwatch clock;
+  const RotorSystem system(model, options.damping);
+  const double assembly = clock.lap();
+  QuadraticEigenSolver solver;
+  RotorModesResult result = solveRotorModes(system, speed, options, solver);
+  result.time.assembly += assembly;
+  result.time.total += assembly;
+  return result;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,38 @@
+// Damped complex modes of a rotor at one spin speed: the quadratic eigenproblem of
+//   M q'' + (C + Omega G) q' + K q = 0
+// (fem/rotor/RotorEigen.hpp), each eigenvalue lambda = -zeta omega_n + i omega_d reported with its
+// frequencies, damping, whirl sense and complex shape.
+#pragma once
+
+#include <complex>
+
+#include "fem/model/Model.hpp"
+#include "fem/rotor/RotorEigen.hpp"
+#include "fem/rotor/RotorResults.hpp"
+#include "fem/rotor/RotorSystem.hpp"
+
+namespace beamrotor {
+
+struct RotorOptions {
+  int modes = 6;  ///< how many modes (a conjugate pair of eigenvalues counts once)
+  /// sigma (1/s): the modes whose eigenvalue lies nearest it. 0 gives the lowest natural
+  /// frequencies; a negative real shift for rotors with rigid-body modes; i omega to look
+  /// around the frequency omega (rad/s).
+  std::complex<double> shift = 0;
+  ProportionalDamping damping;  ///< alpha M + beta K added to the elements' damping
+  EigenMethod method = EigenMethod::automatic;
+};
+
+/// The modes at spin speed Omega (rad/s) nearest the shift. Throws SolveError when
+/// P(shift) = K + shift D + shift^2 M is singular or the eigensolver fails.
+RotorModesResult solveRotorModes(const Model& model, double speed,
+                                 const RotorOptions& options = {});
+
+/// The same for an assembled system, reusing `solver`'s symbolic factorisation (speed
+/// sweeps). options.damping is ignored: the system carries its own. With shapes = false the
+/// per-node shapes are left empty (vectors are always filled).
+RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
+                                 const RotorOptions& options, QuadraticEigenSolver& solver,
+                                 bool shapes = true);
+
+}  // namespace beamrotor

@@ -1,0 +1,107 @@
+// Results of the rotor analyses as plain values (see fem/model/Results.hpp for the static and modal
+// ones). Spin about global +x; frequencies in rad/s and Hz, speeds in rad/s.
+#pragma once
+
+#include <complex>
+#include <string_view>
+#include <vector>
+
+#include "fem/model/Results.hpp"
+
+namespace beamrotor {
+
+/// Complex amplitudes per node and dof kind (rows: nodes; columns ux uy uz rx ry rz, global
+/// frame); the motion is Re(value * e^{lambda t}). Dofs the model does not carry are zero.
+using ComplexNodalField =
+    Eigen::Matrix<std::complex<double>, Eigen::Dynamic, kDofKinds, Eigen::RowMajor>;
+
+/// Sense of a mode's orbit relative to the spin (about +x: from +y towards +z).
+enum class Whirl {
+  forward,   ///< with the spin
+  backward,  ///< against the spin
+  planar,    ///< a straight line (no sense): non-rotating, or real eigenvalue
+};
+std::string_view whirlName(Whirl w);
+
+/// The orbit Re((uy, uz) e^{i w t}) of one node: split into a forward circle of radius
+/// |uy + i uz| / 2 and a backward one of radius |uy - i uz| / 2.
+struct Orbit {
+  std::complex<double> uy, uz;  ///< complex amplitudes (m)
+
+  double forwardRadius() const { return std::abs(uy + std::complex<double>(0, 1) * uz) / 2; }
+  double backwardRadius() const { return std::abs(uy - std::complex<double>(0, 1) * uz) / 2; }
+  /// Semi-axes of the orbit ellipse (m).
+  double major() const { return forwardRadius() + backwardRadius(); }
+  double minor() const { return std::abs(forwardRadius() - backwardRadius()); }
+  /// (forward - backward) / (forward + backward): +1 circular forward, -1 circular backward,
+  /// 0 a straight line; 0 for a node at rest.
+  double whirlRatio() const;
+};
+
+/// One damped mode of M q'' + (C + Omega G) q' + K q = 0 at one speed: q = Re(shape e^{lambda t}).
+struct RotorMode {
+  std::complex<double> eigenvalue;  ///< lambda = -zeta omega_n + i omega_d (1/s), Im >= 0
+  double naturalFrequency = 0;      ///< omega_n = |lambda| (rad/s)
+  double dampedFrequency = 0;       ///< omega_d = Im lambda (rad/s)
+  double naturalFrequencyHz = 0;    ///< omega_n / (2 pi)
+  double dampedFrequencyHz = 0;     ///< omega_d / (2 pi)
+  /// zeta = -Re lambda / |lambda|; negative for an unstable mode; +-1 for a real eigenvalue.
+  double dampingRatio = 0;
+  /// Logarithmic decrement -2 pi Re lambda / Im lambda = 2 pi zeta / sqrt(1 - zeta^2);
+  /// infinite for a real eigenvalue.
+  double logDecrement = 0;
+  /// Orbit sense at whirlNode. At rest an isotropic rotor's modes are double eigenvalues
+  /// whose basis (planar or circular) is arbitrary, and so is their whirl.
+  Whirl whirl = Whirl::planar;
+  /// Orbit::whirlRatio at whirlNode.
+  double whirlRatio = 0;
+  /// The node with the largest orbit (|uy|^2 + |uz|^2), which decides the whirl.
+  int whirlNode = -1;
+  /// Complex shape, scaled so its largest translation is 1 (real); empty in Campbell results.
+  ComplexNodalField shape;
+};
+
+struct RotorModesResult {
+  double speed = 0;              ///< spin speed Omega (rad/s)
+  std::vector<RotorMode> modes;  ///< nearest the shift first (lowest omega_n for shift 0)
+  /// The same modes as free-dof vectors (DofMap order, columns as modes, unit norm), for
+  /// correlation (MAC) and post-processing.
+  Eigen::MatrixXcd vectors;
+  SystemSize size;
+  SolveTimings time;
+};
+
+/// A Campbell diagram: modes tracked across speeds by eigenvector correlation.
+struct CampbellResult {
+  std::vector<double> speeds;  ///< rad/s, as given
+  /// lines[l][s]: mode l at speeds[s] (no shapes). A line follows one mode through crossings.
+  std::vector<std::vector<RotorMode>> lines;
+  /// mac[l][s]: MAC between line l's vectors at speeds s - 1 and s (1 at s = 0); a low value
+  /// flags a jump the tracking could not resolve (speed step too coarse).
+  std::vector<std::vector<double>> mac;
+  SystemSize size;
+  SolveTimings time;
+  int symbolicAnalyses = 0;  ///< sparse symbolic factorisations done (1 when reused)
+};
+
+/// Where a line's damped frequency crosses the excitation order x speed line.
+struct CriticalSpeed {
+  int line = -1;
+  double speed = 0;  ///< rad/s, linearly interpolated between the bracketing speeds
+  double rpm = 0;
+  double frequencyHz = 0;       ///< = order * speed / (2 pi)
+  double dampingRatio = 0;      ///< interpolated
+  Whirl whirl = Whirl::planar;  ///< at the nearer bracketing speed
+};
+
+/// Synchronous response to unbalance: u(t) = Re(U e^{i Omega t}) at each speed.
+struct UnbalanceResult {
+  std::vector<double> speeds;              ///< rad/s
+  std::vector<int> nodes;                  ///< the nodes reported
+  std::vector<std::vector<Orbit>> orbits;  ///< orbits[k][s]: nodes[k] at speeds[s]
+  SystemSize size;
+  SolveTimings time;
+  int symbolicAnalyses = 0;  ///< sparse symbolic factorisations done (1 when reused)
+};
+
+}  // namespace beamrotor

@@ -1,0 +1,75 @@
+// UMFPACK factorisation of a sparse matrix whose pattern repeats (the shifted pencil of a
+// Campbell sweep, the dynamic stiffness of an unbalance sweep), real or complex: the symbolic
+// analysis (fill-reducing ordering) is done once and reused while the pattern stays the same.
+#pragma once
+
+#include <Eigen/UmfPackSupport>
+#include <complex>
+#include <vector>
+
+#include "fem/solvers/SparseLU.hpp"
+
+namespace beamrotor {
+
+template <class Scalar>
+using SparseMatrixOf = Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>;
+using ComplexSparseMatrix = SparseMatrixOf<std::complex<double>>;
+
+template <class Scalar>
+class RepeatedFactor {
+ public:
+  using Matrix = SparseMatrixOf<Scalar>;
+
+  /// refine = false skips UMFPACK's iterative refinement: an iterative eigensolver applying
+  /// the inverse hundreds of times gains nothing from it (each step costs a residual and a
+  /// solve), a single direct solve does.
+  explicit RepeatedFactor(bool refine = true) {
+    if (!refine) lu_.umfpackControl()(UMFPACK_IRSTEP) = 0;
+  }
+
+  /// Factorises A (kept inside: UMFPACK's solve reads the matrix for iterative refinement).
+  /// Returns false when the factorisation fails or rcond <= kSingularRcond.
+  bool factorize(Matrix A) {
+    A_ = std::move(A);
+    if (!A_.isCompressed()) A_.makeCompressed();
+    const bool samePattern = analysed_ && outer_.size() == std::size_t(A_.outerSize() + 1) &&
+                             inner_.size() == std::size_t(A_.nonZeros()) &&
+                             std::equal(outer_.begin(), outer_.end(), A_.outerIndexPtr()) &&
+                             std::equal(inner_.begin(), inner_.end(), A_.innerIndexPtr());
+    if (!samePattern) {
+      lu_.analyzePattern(A_);
+      outer_.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + A_.outerSize() + 1);
+      inner_.assign(A_.innerIndexPtr(), A_.innerIndexPtr() + A_.nonZeros());
+      analysed_ = true;
+      ++analyses_;
+    }
+    lu_.factorize(A_);
+    return lu_.info() == Eigen::Success && lu_.rcond() > kSingularRcond;
+  }
+
+  template <class Rhs>
+  auto solve(const Rhs& b) const {
+    return lu_.solve(b);
+  }
+  double rcond() const { return lu_.rcond(); }
+  double factorEntries() const { return lu_.factorEntries(); }
+  /// How many symbolic analyses were needed so far (1 for a whole sweep on one pattern).
+  int analyses() const { return analyses_; }
+
+ private:
+  /// Eigen's wrapper plus the UMFPACK statistics it keeps to itself.
+  struct Lu : Eigen::UmfPackLU<Matrix> {
+    double rcond() const { return this->m_umfpackInfo[UMFPACK_RCOND]; }
+    double factorEntries() const {
+      return this->m_umfpackInfo[UMFPACK_LNZ] + this->m_umfpackInfo[UMFPACK_UNZ];
+    }
+  };
+
+  Matrix A_;
+  Lu lu_;
+  std::vector<int> outer_, inner_;
+  bool analysed_ = false;
+  int analyses_ = 0;
+};
+
+}  // namespace beamrotor

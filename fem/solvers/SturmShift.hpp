@@ -1,0 +1,38 @@
+// A shift for the lowest eigenvalues of K x = lambda M x that sits just below them, found by
+// Sturm counts (the inertia of LDL' factors of K - sigma M). Shift-invert Lanczos converges at
+// the ratios (lambda_k - sigma) / (lambda_k+1 - sigma): at sigma = 0 these are all near 1 for
+// a clustered spectrum (a continuous beam of many equal spans has as many modes within 1e-5
+// of each other as spans), while just below the cluster they are far from 1.
+#pragma once
+
+#include "fem/assembly/Assembly.hpp"
+#include "fem/solvers/LinearSolver.hpp"
+
+namespace beamrotor {
+
+class SturmCounter {
+ public:
+  /// K, M symmetric with M positive definite on the free dofs; both must outlive this.
+  SturmCounter(const SparseMatrix& K, const SparseMatrix& M);
+  /// Number of eigenvalues below sigma; -1 when K - sigma M is singular to working precision.
+  int below(double sigma);
+  /// Factorisations done so far.
+  int factorisations() const { return factorisations_; }
+  /// The factor of K - sigma M for the last sigma counted (valid when below() was >= 0).
+  const SparseLDLT& factor() const { return ldlt_; }
+
+ private:
+  const SparseMatrix& K_;
+  const SparseMatrix& M_;
+  SparseLDLT ldlt_;
+  bool analysed_ = false;
+  int factorisations_ = 0;
+};
+
+/// For the `count` lowest eigenvalues above sigma (no eigenvalue below sigma): a shift in
+/// [sigma, lambda_1) within a few per cent of the wanted band's width below lambda_1, or sigma
+/// itself when the search cannot improve on it. `upperBound` is any value >= lambda_1 (e.g. a
+/// Rayleigh quotient).
+double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, int count);
+
+}  // namespace beamrotor

@@ -1,0 +1,32 @@
+// Eigenpairs of the generalised symmetric problem K x = lambda M x nearest a shift sigma:
+// ARPACK's implicitly restarted Lanczos (dsaupd/dseupd) in shift-invert mode 3, with
+// K - sigma M factorised once: CHOLMOD LDL' at a shift moved up just below the lowest
+// eigenvalue by Sturm counts when sigma lies below them all (fem/solvers/SturmShift), UMFPACK LU at
+// sigma otherwise. Small problems go to a dense solver instead, since
+// ARPACK needs more Lanczos vectors than wanted eigenpairs.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "fem/assembly/Assembly.hpp"
+
+namespace beamrotor {
+
+struct EigenPairs {
+  Eigen::VectorXd values;    ///< ascending
+  Eigen::MatrixXd vectors;   ///< M-orthonormal columns
+  double factorEntries = 0;  ///< fill of the factor of K - shift M (0 for the dense path)
+  double shiftUsed = 0;      ///< the shift Lanczos ran at (moved up below the lowest eigenvalue)
+  /// Eigenvalues a Sturm count places below the highest one returned that Lanczos did not
+  /// return, after its retries with larger subspaces (0: none missed, or not checked).
+  int missedBySturmCount = 0;
+};
+
+/// The `count` eigenpairs nearest sigma (for sigma below the spectrum: the lowest ones).
+/// K symmetric, M symmetric positive semi-definite. Throws SolveError when K - sigma M is
+/// singular (sigma equals an eigenvalue, e.g. sigma = 0 with rigid-body modes) or when ARPACK
+/// does not converge.
+EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count,
+                               double sigma);
+
+}  // namespace beamrotor

@@ -1,0 +1,58 @@
+// The linear static system of a model with supports eliminated, factorised so that it can be
+// solved again with some free dofs held at given values (active contacts) without a new
+// symbolic analysis: held dofs keep their place in the matrix, their rows and columns are
+// replaced by the diagonal, so the sparsity pattern never changes.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "fem/assembly/Assembly.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
+#include "fem/solvers/LinearSolver.hpp"
+
+namespace beamrotor {
+
+/// A free equation held at a value (m or rad).
+struct HeldDof {
+  int equation = -1;
+  double value = 0;
+};
+
+class LinearStatics {
+ public:
+  /// Numbers the dofs and assembles K (free-free), the loads and the prescribed values.
+  explicit LinearStatics(const Model& model);
+
+  /// Full-length displacement with the supports at their prescribed values and the held dofs
+  /// at theirs. Throws UnsupportedStructure or SolveError for a singular system.
+  Eigen::VectorXd solve(const std::vector<HeldDof>& held, double singularRcond);
+
+  /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
+  /// With `constrainedOnly`, the entries are complete at constrained dofs only (reactions).
+  Eigen::VectorXd residual(const Eigen::VectorXd& u, bool constrainedOnly = false) const;
+
+  const DofMap& dofs() const { return dofs_; }
+  const SparseMatrix& stiffness() const { return K_; }
+  double rcond() const { return rcond_; }
+  double factorEntries() const { return solver_.factorEntries(); }
+  /// The direct method chosen for K and its ordering ("CHOLMOD LDL', AMD ordering").
+  std::string solverName() const {
+    return solver_.methodName() + ", " + solver_.orderingName() + " ordering";
+  }
+  /// Seconds spent factorising and solving so far.
+  double factorSeconds() const { return factorSeconds_; }
+  double solveSeconds() const { return solveSeconds_; }
+
+ private:
+  const Model& model_;
+  DofMap dofs_;
+  SparseMatrix K_;
+  Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
+  LinearSolver solver_;
+  bool analysed_ = false;
+  double rcond_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;
+};
+
+}  // namespace beamrotor

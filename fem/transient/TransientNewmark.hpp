@@ -1,0 +1,44 @@
+// Implicit time stepping: Newmark's family (Newmark 1959) in the Hilber-Hughes-Taylor form
+// (Hilber, Hughes and Taylor 1977). alpha = 0 is the average acceleration rule.
+//
+// With the predictors
+//   u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n,   v~ = v_n + dt (1 - gamma) a_n,
+// and u_n+1 = u~ + beta dt^2 a_n+1, v_n+1 = v~ + gamma dt a_n+1, the HHT equation of motion
+//   M a_n+1 + C [(1 + alpha) v_n+1 - alpha v_n] + K [(1 + alpha) u_n+1 - alpha u_n]
+//     = f(t_n+1 + alpha dt)
+// becomes one linear solve for a_n+1 with the effective matrix
+//   S = M + (1 + alpha) gamma dt C + (1 + alpha) beta dt^2 K,
+// which depends on dt only: factorised once, then two sparse products and one pair of
+// triangular solves per step.
+#pragma once
+
+#include "fem/solvers/SparseLU.hpp"
+#include "fem/transient/TransientSystem.hpp"
+
+namespace beamrotor {
+
+class NewmarkStepper {
+ public:
+  /// dt in s; alpha in [-1/3, 0] (throws std::invalid_argument otherwise). Factorises S; throws
+  /// SolveError when it is singular (e.g. a free dof with neither mass nor stiffness).
+  NewmarkStepper(const TransientSystem& system, double dt, double alpha);
+  NewmarkStepper(const NewmarkStepper&) = delete;  // the factors point into S_
+  NewmarkStepper& operator=(const NewmarkStepper&) = delete;
+
+  /// Advances s (consistent: M a + C v + K u = f at s.t) by one step dt.
+  void step(TransientState& s);
+
+  double gamma() const { return gamma_; }
+  double beta() const { return beta_; }
+  /// Fill of S's LU factors.
+  double factorEntries() const { return lu_.factorEntries(); }
+
+ private:
+  const TransientSystem& system_;
+  double dt_, alpha_, gamma_, beta_;
+  SparseMatrix S_;  // the effective matrix; UMFPACK's solve refers back to it, keep it alive
+  SparseLU lu_;
+  Eigen::VectorXd uPredicted_, vPredicted_, rhs_, f_;
+};
+
+}  // namespace beamrotor

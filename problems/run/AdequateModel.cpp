@@ -1,0 +1,156 @@
+#include "problems/run/AdequateModel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "fem/timing/Stopwatch.hpp"
+#include "problems/deck/Field.hpp"
+#include "problems/deck/Formulations.hpp"
+#include "problems/run/ConvergeMethods.hpp"
+#include "problems/run/DeckRunner.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// The largest relative difference between the checked values of two runs of the deck.
+double largestChange(const RunResult& a, const RunResult& b) {
+  double change = 0;
+  for (std::size_t i = 0; i < a.checks.size() && i < b.checks.size(); ++i) {
+    const double scale = std::max({std::abs(a.checks[i].computed), std::abs(b.checks[i].computed),
+                                   std::abs(a.checks[i].reference)});
+    const double diff = std::abs(a.checks[i].computed - b.checks[i].computed);
+    change = std::max(change, scale > 0 ? diff / scale : diff);
+  }
+  return change;
+}
+
+/// A level of the search: the deck with 2^level elements on every segment.
+Deck atLevel(const Deck& deck, int level) {
+  Deck d = deck;
+  d.accuracy.reset();
+  for (DeckSegment& s : d.segments) {
+    s.elements = 1 << level;
+    s.size = 0;
+  }
+  return d;
+}
+
+struct MeshChoice {
+  RunResult run;
+  int level = 0;
+  double error = 0;  ///< change from the next coarser level
+};
+
+/// Step 1: the first level agreeing with the one before to within the target. A level too
+/// coarse for an analysis (fewer dofs than modes asked) counts as not yet there.
+MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
+  std::optional<RunResult> previous;
+  for (int level = 0; level <= kMaxAdequateLevel; ++level) {
+    Stopwatch clock;
+    std::optional<RunResult> run;
+    try {
+      run = runDeck(atLevel(deck, level));
+    } catch (const DeckSolveError&) {
+      if (level == kMaxAdequateLevel) throw;
+    }
+    seconds += clock.lap();
+    if (!run) continue;
+    // A point inside a segment already splits it: the same mesh twice would agree trivially.
+    const auto elements = [](const RunResult& r) { return r.model->elements().size(); };
+    if (previous && elements(*run) > elements(*previous)) {
+      const double change = largestChange(*run, *previous);
+      if (change <= target) return {std::move(*run), level, change};
+    }
+    previous = std::move(run);
+  }
+  throw DeckSolveError(deck.path, deck.accuracy->place,
+                       "not reached with " + std::to_string(1 << kMaxAdequateLevel) +
+                           " elements per segment: successive meshes still differ by more "
+                           "than " +
+                           formatNumber(deck.accuracy->target));
+}
+
+/// Largest relative difference of the two-dof frequencies of the run's rigid-body analysis
+/// from the two lowest frequencies of its first modal analysis; none without both.
+std::optional<double> rigidBodyError(const RunResult& run) {
+  const RigidBodyOutcome* rigid = nullptr;
+  const ModalResult* modal = nullptr;
+  for (const AnalysisOutcome& a : run.analyses) {
+    if (!rigid && a.rotor && a.rotor->rigidBody) rigid = &*a.rotor->rigidBody;
+    if (!modal && a.modal) modal = &*a.modal;
+  }
+  if (!rigid || !modal || modal->modes.size() < 2) return std::nullopt;
+  double largest = 0;
+  for (int i = 0; i < 2; ++i) {
+    const double fe = modal->modes[i].frequencyHz;
+    const double twoDof = rigid->modes[i].k / (2 * std::numbers::pi);
+    largest = std::max(largest, std::abs(twoDof - fe) / fe);
+  }
+  return largest;
+}
+
+int dofsOf(const Deck& deck, const RunResult& run) {
+  return run.model->nodeCount() * deck.dofs.size();
+}
+
+}  // namespace
+
+RunResult runAdequateModel(const Deck& deck) {
+  const double target = deck.accuracy->target;
+  AdequateChoice choice;
+  choice.target = target;
+  choice.deckFormulation = formulationName(deck.segments.front().options.theory);
+
+  // 1. The mesh for the deck's own beam theory.
+  MeshChoice chosen = searchMesh(deck, target, choice.searchSeconds);
+  Deck chosenDeck = atLevel(deck, chosen.level);
+  choice.meshError = chosen.error;
+  choice.estimatedError = chosen.error;
+
+  // 2. Euler-Bernoulli instead, when the deck has shear-deformable beams.
+  const bool shear = std::any_of(deck.segments.begin(), deck.segments.end(), [](const auto& s) {
+    return s.options.theory != BeamTheory::eulerBernoulli;
+  });
+  if (shear) {
+    Deck eb = deck;
+    useMethod({"eb", "", BeamTheory::eulerBernoulli, deck.beam.mass}, eb);
+    for (std::size_t i = 0; i < eb.segments.size(); ++i)
+      eb.segments[i].options.mass = deck.segments[i].options.mass;
+    MeshChoice ebChoice = searchMesh(eb, target, choice.searchSeconds);
+    choice.shearContribution = largestChange(ebChoice.run, chosen.run);
+    const double ebError = ebChoice.error + *choice.shearContribution;
+    if (ebError <= target) {
+      chosen = std::move(ebChoice);
+      chosenDeck = atLevel(eb, chosen.level);
+      choice.meshError = chosen.error;
+      choice.estimatedError = ebError;
+    }
+  }
+
+  // 3. The chosen model and the deck's own mesh, each solved once more for their cost.
+  Deck fixed = deck;
+  fixed.accuracy.reset();
+  const RunResult fixedRun = runDeck(fixed);
+  RunResult run = runDeck(chosenDeck);
+  choice.formulation = formulationName(chosenDeck.segments.front().options.theory);
+  choice.elementsPerSegment = 1 << chosen.level;
+  choice.elements = int(run.model->elements().size());
+  choice.dofs = dofsOf(deck, run);
+  choice.seconds = run.seconds;
+  choice.deckElements = int(fixedRun.model->elements().size());
+  choice.deckDofs = dofsOf(deck, fixedRun);
+  choice.deckSeconds = fixedRun.seconds;
+  choice.searchSeconds += run.seconds;
+
+  // 4. The rigid body on its springs, where the deck compares one.
+  choice.rigidBodyError = rigidBodyError(run);
+  choice.rigidBodyAdequate =
+      choice.rigidBodyError && *choice.rigidBodyError + choice.meshError <= target;
+  run.adequate = choice;
+  return run;
+}
+
+}  // namespace beamrotor

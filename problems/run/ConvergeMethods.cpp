@@ -1,0 +1,41 @@
+#include "problems/run/ConvergeMethods.hpp"
+
+#include <cmath>
+
+namespace beamrotor {
+
+std::vector<ConvergeMethod> convergeMethods(bool massMatters) {
+  std::vector<ConvergeMethod> methods{{"eb-consistent", "Euler-Bernoulli, consistent mass",
+                                       BeamTheory::eulerBernoulli, MassModel::consistent}};
+  if (massMatters)
+    methods.push_back({"eb-lumped", "Euler-Bernoulli, lumped mass", BeamTheory::eulerBernoulli,
+                       MassModel::lumped});
+  methods.push_back(
+      {"timoshenko", "Timoshenko, locking-free", BeamTheory::timoshenko, MassModel::consistent});
+  methods.push_back({"timoshenko-linear-full", "Timoshenko linear, full integration (locks)",
+                     BeamTheory::timoshenkoLinearFullIntegration, MassModel::consistent});
+  methods.push_back({"timoshenko-linear-reduced", "Timoshenko linear, reduced integration",
+                     BeamTheory::timoshenkoLinearReducedIntegration, MassModel::consistent});
+  return methods;
+}
+
+void useMethod(const ConvergeMethod& method, Deck& deck) {
+  deck.beam.theory = method.theory;
+  deck.beam.mass = method.mass;
+  for (DeckSegment& s : deck.segments) {
+    s.options.theory = method.theory;
+    s.options.mass = method.mass;
+  }
+}
+
+void refineMesh(Deck& deck, int level) {
+  const int factor = 1 << level;
+  for (DeckSegment& s : deck.segments) {
+    if (s.elements > 0)
+      s.elements *= factor;
+    else
+      s.size /= factor;
+  }
+}
+
+}  // namespace beamrotor

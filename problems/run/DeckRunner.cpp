@@ -1,0 +1,124 @@
+#include "problems/run/DeckRunner.hpp"
+
+#include "fem/modal/Modal.hpp"
+#include "fem/solvers/Errors.hpp"
+#include "fem/static/Static.hpp"
+#include "fem/timing/Stopwatch.hpp"
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/Field.hpp"
+#include "problems/run/AdequateModel.hpp"
+#include "problems/run/Measure.hpp"
+#include "problems/run/ModelBuilder.hpp"
+#include "problems/run/OverRefinementWarning.hpp"
+#include "problems/run/RunRotor.hpp"
+#include "problems/run/RunTransient.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model) {
+  AnalysisOutcome out;
+  out.type = a.type;
+  out.name = a.name;
+  try {
+    if (a.type == "static") {
+      out.statics = solveStatic(model);
+      if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
+    } else if (a.transient) {
+      out.transient = runTransient(deck, a, model);
+    } else if (isRotorAnalysis(a.type)) {
+      out.rotor = solveRotorAnalysis(deck, a, model);
+    } else {
+      ModalOptions options;
+      options.modes = a.modes;
+      options.shift = a.shift;
+      out.modal = solveModes(model, options);
+      out.warnings.insert(out.warnings.end(), out.modal->warnings.begin(),
+                          out.modal->warnings.end());
+    }
+  } catch (const DeckError&) {
+    throw;  // bad input only the model could reveal (an unstable explicit step)
+  } catch (const std::exception& e) {
+    // SolveError and UnsupportedStructure say what is wrong; anything else the core throws
+    // while solving is reported the same way rather than escaping as a crash.
+    throw DeckSolveError(deck.path, a.place, e.what());
+  }
+  return out;
+}
+
+Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
+  Check c;
+  c.name = k.name;
+  c.quantity = k.quantity.text;
+  c.reference = k.reference;
+  c.tolerance = k.tolerance;
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.name == k.analysis) c.computed = measure(k.quantity, a, model);
+  return c;
+}
+
+}  // namespace
+
+RunResult runDeck(const Deck& deck) {
+  if (deck.accuracy) return runAdequateModel(deck);
+  Stopwatch clock;
+  RunResult run;
+  run.deckPath = deck.path;
+  run.deckName = deck.stem;
+  run.parameters = deck.parameters;
+  run.reported = deck.reported;
+  run.dimension = deck.dimension;
+
+  // 1. The model.
+  std::shared_ptr<const Model> model = buildModel(deck);
+  run.model = model;
+
+  // 2. The analyses, in deck order.
+  for (const DeckAnalysis& a : deck.analyses) run.analyses.push_back(solve(deck, a, *model));
+
+  // 3. The checks that apply to these parameter values.
+  for (const DeckCheck& k : deck.checks) {
+    if (!k.applicable) {
+      run.skippedChecks.push_back(k.name);
+      continue;
+    }
+    try {
+      run.checks.push_back(evaluate(k, run, *model));
+    } catch (const std::exception& e) {
+      // The reader validated names and mode counts; what remains is e.g. ARPACK returning
+      // fewer modes than asked.
+      throw DeckSolveError(deck.path, k.place, "check '" + k.name + "': " + e.what());
+    }
+  }
+  run.seconds = clock.lap();
+  return run;
+}
+
+SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
+                     const Deck& base, const SweepProgress& progress,
+                     const DeckAdjustment& adjust) {
+  SweepResult sweep;
+  sweep.parameter = base.sweep->parameter;
+  sweep.values = base.sweep->values;
+  const int total = int(sweep.values.size());
+  for (int i = 0; i < total; ++i) {
+    const double value = sweep.values[i];
+    std::vector<ParameterOverride> withValue = overrides;
+    withValue.push_back({sweep.parameter, value, sweep.parameter + "=" + formatNumber(value)});
+    const std::string at = "with " + sweep.parameter + " = " + formatNumber(value) + " (sweep): ";
+    try {
+      Deck deck = readDeck(source, withValue);
+      if (adjust) adjust(deck);
+      sweep.runs.push_back(runDeck(deck));
+    } catch (const DeckError& e) {
+      throw DeckError(e.file(), e.place(), at + e.message());
+    } catch (const DeckSolveError& e) {
+      throw DeckSolveError(e.file(), e.place(), at + e.message());
+    }
+    if (progress) progress(i + 1, total);
+  }
+  return sweep;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,32 @@
+// Solving a read deck: build its model, run its analyses in order, evaluate its checks.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "problems/deck/Deck.hpp"
+#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/Overrides.hpp"
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor {
+
+/// One run of a deck for its current parameter values. Throws DeckError for input the core
+/// rejects while building, DeckSolveError (naming the analysis) when an analysis fails.
+RunResult runDeck(const Deck& deck);
+
+/// Called after each sweep value is solved: (values done, values in all).
+using SweepProgress = std::function<void(int done, int total)>;
+
+/// A change applied to the deck after each reading (e.g. a command-line formulation).
+using DeckAdjustment = std::function<void(Deck&)>;
+
+/// Runs deck.sweep: the source re-read and re-solved for each value of the swept parameter
+/// (so a parameter may move points, supports and loads), `adjust` applied after each reading.
+/// `base` is the deck read with `overrides` and must have a sweep. A DeckError or
+/// DeckSolveError at one value names it.
+SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
+                     const Deck& base, const SweepProgress& progress = {},
+                     const DeckAdjustment& adjust = {});
+
+}  // namespace beamrotor

@@ -1,0 +1,15 @@
+// The value of a deck's check quantity in a solved analysis: the running side of the
+// quantities the deck reader parses (problems/deck/Quantity.hpp).
+#pragma once
+
+#include "fem/model/Model.hpp"
+#include "problems/deck/Quantity.hpp"
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor {
+
+/// The quantity's value in a solved analysis of model. Throws std::invalid_argument when the
+/// analysis lacks it (wrong type, too few modes, unknown name).
+double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model);
+
+}  // namespace beamrotor

@@ -1,0 +1,157 @@
+#include "problems/run/ModelBuilder.hpp"
+
+#include <algorithm>
+
+#include "elements/Bearing.hpp"
+#include "elements/PointInertia.hpp"
+#include "elements/Spring.hpp"
+#include "meshes/LineBuilder.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Runs one building step; the core's std::exceptions become a DeckError at `place`.
+template <class Step>
+void at(const Deck& deck, const DeckPlace& place, Step&& step) {
+  try {
+    step();
+  } catch (const DeckError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw DeckError(deck.path, place, e.what());
+  }
+}
+
+/// Index of the segment each beam of the line lies in (beams run start to end, one after the
+/// other, so a beam's midpoint station identifies its segment).
+std::vector<int> segmentOfBeams(const Deck& deck, const Line& line) {
+  std::vector<double> ends;
+  double x = 0;
+  for (const DeckSegment& s : deck.segments) ends.push_back(x += s.length);
+  std::vector<int> out;
+  for (std::size_t b = 0; b < line.beams.size(); ++b) {
+    const double mid = 0.5 * (line.stations[b] + line.stations[b + 1]);
+    const auto it = std::upper_bound(ends.begin(), ends.end(), mid);
+    out.push_back(std::min(int(it - ends.begin()), int(ends.size()) - 1));
+  }
+  return out;
+}
+
+/// Supports, springs, contacts, masses and point loads at their nodes (model: not null).
+void addAttachments(const Deck& deck, Model* model);
+
+bool acts(const DeckLoad& l, int segment) {
+  return l.segments.empty() ||
+         std::find(l.segments.begin(), l.segments.end(), segment) != l.segments.end();
+}
+
+/// The dofs on which a body has inertia: translations with m, rotations with Jp (about the
+/// axis x) or Jd. A model without beams carries only these, so no dof is left without mass.
+DofSet inertialDofs(const DeckMass& m, const DofSet& carried) {
+  DofSet out;
+  for (Dof d : kAllDofs) {
+    const double inertia = !isRotation(d) ? m.m : d == Dof::rx ? m.Jp : m.Jd;
+    if (carried.contains(d) && inertia > 0) out = out.with(d);
+  }
+  return out;
+}
+
+/// Nodes at the points of a model without beams, at (x, 0, 0).
+void addPointNodes(const Deck& deck, Model& model) {
+  for (const DeckPoint& p : deck.points)
+    at(deck, p.place, [&] { model.nameNode(p.name, model.addNode({p.at, 0, 0})); });
+}
+
+}  // namespace
+
+std::shared_ptr<Model> buildModel(const Deck& deck) {
+  auto model = std::make_shared<Model>();
+  if (deck.segments.empty()) {
+    addPointNodes(deck, *model);
+    addAttachments(deck, model.get());
+    return model;
+  }
+
+  // 1. The line: segments cut at every named point.
+  LineSpec spec;
+  spec.dofs = deck.dofs;
+  for (const DeckSegment& s : deck.segments)
+    spec.segments.push_back({s.length, s.section, s.elements, s.size, s.options});
+  for (const DeckPoint& p : deck.points) spec.points.push_back({p.name, p.at});
+  Line line;
+  at(deck, deck.segments.front().place, [&] { line = buildLine(*model, spec); });
+  const std::vector<int> segmentOf = segmentOfBeams(deck, line);
+
+  // 2. Distributed loads and self-weight, summed per beam (a beam holds one uniform load).
+  for (std::size_t b = 0; b < line.beams.size(); ++b) {
+    Eigen::Vector3d q = Eigen::Vector3d::Zero();
+    for (const DeckLoad& l : deck.loads) {
+      if (!acts(l, segmentOf[b])) continue;
+      if (l.kind == DeckLoad::Kind::distributed) q += l.q;
+      if (l.kind == DeckLoad::Kind::selfWeight) q.y() -= line.beams[b]->section().rhoA() * l.g;
+    }
+    if (!q.isZero()) line.beams[b]->setDistributedLoad(q);
+  }
+
+  // 3. Hinges: release the rotations of every beam end at the point; a rotation released on
+  //    all sides leaves the node without that dof.
+  for (const DeckHinge& h : deck.hinges)
+    at(deck, h.place, [&] {
+      const int node = model->node(h.point);
+      for (Beam* beam : line.beams)
+        for (int end = 0; end < 2; ++end)
+          if (beam->endNodes()[end] == node)
+            for (Dof d : h.released) beam->release(end, d);
+    });
+
+  // 4. Supports, springs, masses and point loads at their nodes.
+  addAttachments(deck, model.get());
+  return model;
+}
+
+namespace {
+
+void addAttachments(const Deck& deck, Model* model) {
+  for (const DeckSupport& s : deck.supports)
+    at(deck, s.place, [&] {
+      Support support{s.name, model->node(s.point), {}};
+      for (const auto& [d, value] : s.dofs) support.dofs.push_back({d, value});
+      model->addSupport(std::move(support));
+    });
+  for (const DeckSpring& s : deck.springs)
+    at(deck, s.place, [&] {
+      const NodeDof a{model->node(s.point), s.dof};
+      if (s.toPoint.empty())
+        model->add<Spring>(a, s.k, s.c);
+      else
+        model->add<Spring>(a, NodeDof{model->node(s.toPoint), s.dof}, s.k, s.c);
+    });
+  for (const DeckContact& k : deck.contacts)
+    at(deck, k.place, [&] {
+      model->addContact({k.name, model->node(k.point), k.dof, k.lower, k.upper});
+    });
+  for (const DeckMass& m : deck.masses)
+    at(deck, m.place, [&] {
+      const DofSet dofs = deck.segments.empty() ? inertialDofs(m, deck.dofs) : deck.dofs;
+      model->add<PointInertia>(model->node(m.point), dofs, m.m, m.Jp, m.Jd,
+                               Eigen::Vector3d::UnitX());
+    });
+  for (const DeckBearing& b : deck.rotor.bearings)
+    at(deck, b.place, [&] {
+      if (b.speeds.empty())
+        model->add<Bearing>(model->node(b.point), b.table.front());
+      else
+        model->add<Bearing>(model->node(b.point), b.speeds, b.table);
+    });
+  for (const DeckLoad& l : deck.loads)
+    if (l.kind == DeckLoad::Kind::point)
+      at(deck, l.place, [&] {
+        for (const auto& [d, value] : l.components)
+          model->addLoad({model->node(l.point), d, value});
+      });
+}
+
+}  // namespace
+
+}  // namespace beamrotor

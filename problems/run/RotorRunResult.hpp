@@ -1,0 +1,38 @@
+// What the rotor analyses of a deck produce (part of RunResult's AnalysisOutcome): plain
+// results of fem/rotor/ plus the names the writers need to label them.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fem/rotor/RotorResults.hpp"
+#include "problems/scenes/FormeShaft.hpp"
+
+namespace beamrotor {
+
+/// A rigid body on two springs (problems/scenes/README.md section 2): the FE model's rigid-body
+/// properties, the two spring stations and stiffnesses, and the two-dof closed form built from
+/// them.
+struct RigidBodyOutcome {
+  RigidBodyProperties body;
+  std::array<std::string, 2> points;  ///< names of the spring points A, B
+  std::array<double, 2> x{};          ///< their stations (m)
+  std::array<double, 2> stiffness{};  ///< C1, C2 (N/m)
+  FormeShaftRigid rigid;
+  std::array<FormeShaftMode, 2> modes;
+};
+
+/// One rotor analysis, solved: exactly one of the optionals is set, by its type.
+struct RotorOutcome {
+  std::optional<RotorModesResult> modes;      ///< rotor: damped modes at one speed
+  std::optional<CampbellResult> campbell;     ///< campbell
+  std::vector<CriticalSpeed> criticalSpeeds;  ///< campbell: where lines meet order x speed
+  double order = 1;                           ///< campbell: that order
+  std::optional<UnbalanceResult> unbalance;   ///< unbalance
+  std::vector<std::string> responsePoints;    ///< unbalance: names of unbalance->nodes
+  std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
+};
+
+}  // namespace beamrotor

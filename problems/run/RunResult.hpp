@@ -1,0 +1,68 @@
+// What solving one deck produced: the contract between the deck runner (problems/deck,
+// problems/cli) and the writers (problems/output). Plain values; writers read these and the
+// model's nodes and line elements, never element internals.
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
+#include "problems/run/AdequateChoice.hpp"
+#include "problems/run/RotorRunResult.hpp"
+#include "problems/run/TransientOutcome.hpp"
+
+namespace beamrotor {
+
+/// A closed-form comparison declared by a deck.
+struct Check {
+  std::string name;
+  double computed = 0;
+  double reference = 0;
+  double tolerance = 0;  ///< on the relative error
+  std::string quantity;  ///< what was measured, in deck syntax, e.g. "reaction left rz"
+  double relError() const {
+    return reference != 0 ? std::abs(computed - reference) / std::abs(reference)
+                          : std::abs(computed);
+  }
+  bool pass() const { return std::isfinite(computed) && relError() <= tolerance; }
+};
+
+/// One analysis of a deck, solved.
+struct AnalysisOutcome {
+  std::string type;  ///< "static", "modal", "rotor", "campbell", "unbalance", "rigid-body"
+  std::string name;  ///< the deck's name for it (defaults to the type)
+  std::optional<StaticResult> statics;
+  std::optional<ModalResult> modal;
+  std::optional<TransientOutcome> transient;
+  std::optional<RotorOutcome> rotor;  ///< the rotor analyses
+  std::vector<std::string> warnings;  ///< not errors, e.g. an over-refined mesh
+};
+
+/// One solved instance of a deck (one set of parameter values).
+struct RunResult {
+  std::string deckPath;
+  std::string deckName;                                    ///< file stem, e.g. "pump_rod"
+  std::vector<std::pair<std::string, double>> parameters;  ///< values used, deck order
+  std::vector<std::pair<std::string, double>> reported;    ///< the deck's `report:` values
+  std::shared_ptr<const Model> model;
+  std::string dimension;  ///< "planar" or "3d"
+  std::vector<AnalysisOutcome> analyses;
+  std::vector<Check> checks;
+  std::vector<std::string> skippedChecks;  ///< names of checks whose `when:` is false here
+  double seconds = 0;                      ///< wall time to build and solve
+  std::optional<AdequateChoice> adequate;  ///< `accuracy:` decks: the model chosen
+};
+
+/// A deck solved over a list of values of one parameter.
+struct SweepResult {
+  std::string parameter;
+  std::vector<double> values;
+  std::vector<RunResult> runs;  ///< one per value
+};
+
+}  // namespace beamrotor

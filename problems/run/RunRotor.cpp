@@ -1,0 +1,87 @@
+// The rotor analyses of a deck (see RunRotor.hpp): 1. damped modes at one speed, 2. the
+// Campbell diagram and its critical speeds, 3. the unbalance response, 4. the rigid body on
+// two springs against the two-dof closed form of problems/scenes/README.md section 2.
+#include "problems/run/RunRotor.hpp"
+
+#include <stdexcept>
+
+#include "elements/Bearing.hpp"
+#include "elements/Spring.hpp"
+#include "fem/rotor/RotorCampbell.hpp"
+#include "fem/rotor/RotorModes.hpp"
+#include "fem/rotor/RotorUnbalance.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+RotorOptions optionsOf(const Deck& deck, const DeckAnalysis& a) {
+  RotorOptions o;
+  o.modes = a.modes;
+  o.shift = a.shift;
+  o.damping = deck.rotor.damping;
+  return o;
+}
+
+/// Grounded stiffness on uy at a node at rest: springs on uy and bearings' kyy (N/m).
+double groundedStiffness(const Model& model, int node) {
+  double k = 0;
+  for (const auto& e : model.elements()) {
+    const auto dofs = e->dofs();
+    if (dofs.empty() || dofs[0].node != node) continue;
+    if (const auto* b = dynamic_cast<const Bearing*>(e.get())) k += b->coefficientsAt(0).kyy;
+    if (dynamic_cast<const Spring*>(e.get()) && dofs.size() == 1 && dofs[0].dof == Dof::uy)
+      k += e->stiffness()(0, 0);
+  }
+  return k;
+}
+
+RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
+  RigidBodyOutcome out;
+  out.body = rigidBodyProperties(model);
+  for (int i = 0; i < 2; ++i) {
+    const int node = model.node(r.bearingPoints[i]);
+    out.points[i] = r.bearingPoints[i];
+    out.x[i] = model.nodes()[node].x();
+    out.stiffness[i] = groundedStiffness(model, node);
+    if (!(out.stiffness[i] > 0))
+      throw std::invalid_argument("no grounded spring on uy or bearing at point '" + out.points[i] +
+                                  "'");
+  }
+  // A is the spring on the -x side of the centre of mass (the paper's l1).
+  if (out.x[0] > out.x[1]) {
+    std::swap(out.points[0], out.points[1]);
+    std::swap(out.x[0], out.x[1]);
+    std::swap(out.stiffness[0], out.stiffness[1]);
+  }
+  out.rigid = rigidModel(out.body, out.x[0], out.x[1], out.stiffness[0], out.stiffness[1]);
+  out.modes = formeShaftModes(out.rigid);
+  return out;
+}
+
+}  // namespace
+
+RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const Model& model) {
+  RotorOutcome out;
+  const DeckRotorAnalysis& r = a.rotor;
+  if (a.type == "rotor") {
+    out.modes = solveRotorModes(model, r.speed, optionsOf(deck, a));
+  } else if (a.type == "campbell") {
+    out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, a));
+    out.order = r.order;
+    out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
+  } else if (a.type == "unbalance") {
+    std::vector<Unbalance> unbalance;
+    for (const DeckUnbalance& u : r.unbalance)
+      unbalance.push_back({model.node(u.point), u.me, u.phase});
+    std::vector<int> nodes;
+    for (const std::string& p : r.response) nodes.push_back(model.node(p));
+    out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
+    out.responsePoints = r.response;
+  } else {
+    out.rigidBody = rigidBody(r, model);
+  }
+  return out;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,46 @@
+#include "problems/run/Study.hpp"
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FormulationOption.hpp"
+#include "problems/deck/SweepOption.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+Study solve(const DeckSource& source, const StudyRequest& request, const SweepProgress& progress) {
+  std::vector<ParameterOverride> overrides;
+  for (const std::string& s : request.sets) overrides.push_back(parseOverride(s, source.path));
+  const DeckAdjustment adjust = [&](Deck& deck) {
+    if (!request.formulation.empty()) applyFormulationOption(request.formulation, deck);
+  };
+  if (request.noSweep && !request.sweep.empty())
+    throw DeckError(source.path, DeckPlace{0, 0, "--no-sweep"},
+                    "contradicts --sweep " + request.sweep + "; give one of the two");
+  Study study{readDeck(source, overrides), std::nullopt, std::nullopt};
+  adjust(study.deck);
+  if (!request.sweep.empty()) {
+    study.deck.sweep = parseSweepOption(request.sweep, study.deck);
+    if (findOverride(overrides, study.deck.sweep->parameter))
+      throw DeckError(source.path, study.deck.sweep->place,
+                      "'" + study.deck.sweep->parameter + "' is both set (--set) and swept");
+  }
+  if (request.noSweep) study.deck.sweep.reset();
+  if (study.deck.sweep)
+    study.sweep = runSweep(source, overrides, study.deck, progress, adjust);
+  else
+    study.run = runDeck(study.deck);
+  return study;
+}
+
+}  // namespace
+
+Study solveStudy(const StudyRequest& request, const SweepProgress& progress) {
+  return solve(loadDeckFile(request.deckPath), request, progress);
+}
+
+Study solveStudyText(const std::string& text, const StudyRequest& request) {
+  return solve(parseDeckText(text, request.deckPath), request, {});
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,105 @@
+// The direct solver chosen from the matrix: CHOLMOD LDL' for symmetric matrices, UMFPACK LU
+// otherwise. Each is checked against the other (a second method) and against exact algebra.
+#include <doctest/doctest.h>
+
+#include "fem/assembly/Assembly.hpp"
+#include "fem/model/DofMap.hpp"
+#include "fem/solvers/LinearSolver.hpp"
+#include "problems/bench/StandardModels.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+SparseMatrix fromDense(const Eigen::MatrixXd& D) {
+  return D.sparseView();
+}
+
+}  // namespace
+
+TEST_SUITE("linear solver") {
+  TEST_CASE("a symmetric stiffness matrix goes to LDL', which agrees with LU to round-off") {
+    const PlanarBenchModel bench = planarBenchModel(200);
+    const DofMap dofs(*bench.model);
+    const SparseMatrix K = SparseAssembler(*bench.model, dofs).assemble(MatrixKind::stiffness);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 2.0);
+
+    LinearSolver chosen;
+    chosen.analyzePattern(K);
+    chosen.factorize(K);
+    REQUIRE(chosen.symmetric());
+    CHECK(chosen.methodName() == "CHOLMOD LDL'");
+    REQUIRE(chosen.healthy(kSingularRcond));
+
+    SparseLU lu;
+    lu.compute(K);
+    REQUIRE(lu.info() == Eigen::Success);
+    const Eigen::VectorXd x1 = chosen.solve(b), x2 = lu.solve(b);
+    // Both are backward stable; K's condition number here is ~1e9 (E I / h^3 against E A / h),
+    // so the two solutions may differ by cond * eps ~ 1e-7 relative at worst; observed ~1e-12.
+    CHECK((x1 - x2).norm() / x2.norm() < 1e-9);
+    CHECK((K * x1 - b).norm() / b.norm() < 1e-12);
+    // The graph of a line of beams is chordal, so a fill-free elimination order exists and
+    // CHOLMOD's ordering finds it: L has exactly the pattern of K's lower triangle.
+    const SparseMatrix lower = K.triangularView<Eigen::Lower>();
+    CHECK(chosen.factorEntries() == doctest::Approx(double(lower.nonZeros())));
+    CHECK(chosen.orderingName() == "natural");  // the line's own order is fill-free
+  }
+
+  TEST_CASE("a grillage fills: the analysis orders it (AMD) and names the ordering") {
+    // A 2D grid has no fill-free order; its node-by-node envelope is ~7 n nodes wide, far
+    // above the 1.2 x K's lower triangle that keeps the natural order, so AMD is used.
+    const GridBenchModel grid = gridBenchModel(6);
+    const DofMap dofs(*grid.model);
+    const SparseMatrix K = SparseAssembler(*grid.model, dofs).assemble(MatrixKind::stiffness);
+    LinearSolver chosen;
+    chosen.analyzePattern(K);
+    chosen.factorize(K);
+    REQUIRE(chosen.symmetric());
+    CHECK(chosen.orderingName() == "AMD");
+    const SparseMatrix lower = K.triangularView<Eigen::Lower>();
+    CHECK(chosen.factorEntries() > 1.2 * double(lower.nonZeros()));  // it does fill
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 2.0);
+    CHECK((K * chosen.solve(b) - b).norm() / b.norm() < 1e-10);
+  }
+
+  TEST_CASE("an unsymmetric matrix goes to LU and is solved exactly") {
+    Eigen::MatrixXd D(3, 3);
+    D << 4, 1, 0,  //
+        2, 5, 1,   //
+        0, 1, 3;
+    const SparseMatrix A = fromDense(D);
+    CHECK_FALSE(isNumericallySymmetric(A));
+    LinearSolver s;
+    s.analyzePattern(A);
+    s.factorize(A);
+    CHECK_FALSE(s.symmetric());
+    CHECK(s.methodName() == "UMFPACK LU");
+    const Eigen::Vector3d x(1, -2, 3);
+    CHECK((s.solve(D * x) - x).norm() < 1e-14);
+  }
+
+  TEST_CASE("symmetry is judged relative to the largest entry") {
+    Eigen::MatrixXd D(2, 2);
+    D << 1e12, 1.0,  //
+        1.0 + 1e-3, 1e12;
+    // The off-diagonal mismatch is 1e-15 of the largest entry: symmetric to working precision.
+    CHECK(isNumericallySymmetric(fromDense(D)));
+    D(1, 0) = 1.0 + 1e3;  // 1e-9 of the largest entry: a real asymmetry
+    CHECK_FALSE(isNumericallySymmetric(fromDense(D)));
+  }
+
+  TEST_CASE("a singular symmetric matrix reports rcond 0, not a solution") {
+    Eigen::MatrixXd D(3, 3);
+    D << 1, -1, 0,  //
+        -1, 2, -1,  //
+        0, -1, 1;   // a free-free chain of two springs: one rigid-body mode
+    const SparseMatrix A = fromDense(D);
+    LinearSolver s;
+    s.analyzePattern(A);
+    s.factorize(A);
+    REQUIRE(s.symmetric());
+    CHECK(s.rcond() < kSingularRcond);
+    CHECK_FALSE(s.healthy(kSingularRcond));
+  }
+}

@@ -1,0 +1,117 @@
+// Lowest modes of clustered spectra: Sturm counts (LDL' inertia) against a dense eigensolver,
+// the shift they move Lanczos to, and equal eigenvalues in two bending planes.
+#include <doctest/doctest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "fem/modal/Modal.hpp"
+#include "fem/model/DofMap.hpp"
+#include "fem/solvers/SturmShift.hpp"
+#include "fem/solvers/SymmetricEigen.hpp"
+#include "problems/bench/StandardModels.hpp"
+#include "tests/Helpers.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+struct Pencil {
+  SparseMatrix K, M;
+  Eigen::VectorXd exact;  // every eigenvalue, ascending, by the dense solver
+};
+
+/// The benchmark's continuous beam, 30 equal pinned spans, with its dense generalised
+/// eigenvalues. Its lowest 30 modes form a band between the pinned-pinned and the
+/// clamped-clamped span modes; with 1000 spans the lowest 10 lie within 3e-4 of each other.
+Pencil solveClusteredBeam() {
+  const PlanarBenchModel bench = planarBenchModel(300);
+  const DofMap dofs(*bench.model);
+  const SparseAssembler assembler(*bench.model, dofs);
+  Pencil p{assembler.assemble(MatrixKind::stiffness), assembler.assemble(MatrixKind::mass), {}};
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(
+      Eigen::MatrixXd(p.K), Eigen::MatrixXd(p.M), Eigen::EigenvaluesOnly);
+  p.exact = dense.eigenvalues();
+  return p;
+}
+
+/// Built and solved once for all test cases (the dense solve dominates this suite).
+const Pencil& clusteredBeam() {
+  static const Pencil pencil = solveClusteredBeam();
+  return pencil;
+}
+
+}  // namespace
+
+TEST_SUITE("sturm shift") {
+  TEST_CASE("Sturm counts equal the number of dense eigenvalues below each shift") {
+    const Pencil& p = clusteredBeam();
+    SturmCounter counter(p.K, p.M);
+    const double l1 = p.exact[0], l30 = p.exact[29], l31 = p.exact[30];
+    const PlanarBenchModel bench = planarBenchModel(300);
+    const double pinned = std::pow(2 * 3.14159265358979323846 * bench.exactLowestHz, 2);
+    // Shifts between eigenvalues (midpoints), so that no count sits on an eigenvalue.
+    for (int k : {0, 1, 5, 29, 30, 31, 60}) {
+      CAPTURE(k);
+      const double sigma = k == 0 ? 0.5 * l1 : 0.5 * (p.exact[k - 1] + p.exact[k]);
+      CHECK(counter.below(sigma) == k);
+    }
+    // The band: from the pinned-pinned span mode (the discrete model lies 6.7e-6 above it) to
+    // below the clamped-clamped one, (4.730041 / pi)^4 times higher; the next band starts at
+    // the second pinned-pinned mode, 16 times the first.
+    CHECK(l1 / pinned - 1 == doctest::Approx(6.7e-6).epsilon(0.05));
+    CHECK(l30 < std::pow(4.730041 / 3.14159265358979323846, 4) * pinned);
+    CHECK(l31 > 16 * pinned);
+  }
+
+  TEST_CASE("the shift moves to just below the lowest eigenvalue") {
+    const Pencil& p = clusteredBeam();
+    SturmCounter counter(p.K, p.M);
+    const double l1 = p.exact[0], l10 = p.exact[9];
+    const double shift = shiftBelowLowest(counter, 0.0, 1.01 * l1, 10);
+    CHECK(shift < l1);                                  // still below the spectrum
+    CHECK(l1 - shift < 0.06 * (l10 - l1) + 1e-7 * l1);  // within the stopping rule
+    CHECK(counter.factorisations() < 60);
+  }
+
+  TEST_CASE("Lanczos at the moved shift returns the dense lowest eigenvalues") {
+    const Pencil& p = clusteredBeam();
+    const EigenPairs pairs = symmetricEigenpairs(p.K, p.M, 10, 0.0);
+    REQUIRE(pairs.values.size() == 10);
+    CHECK(pairs.shiftUsed < p.exact[0]);
+    CHECK(p.exact[0] - pairs.shiftUsed < 0.06 * (p.exact[9] - p.exact[0]));
+    for (int k = 0; k < 10; ++k) {
+      CAPTURE(k);
+      // Both solvers are backward stable: eigenvalues agree to a few ulps times the spread
+      // of the pencil's scale; 1e-10 relative leaves room without hiding a wrong mode.
+      CHECK(relError(pairs.values[k], p.exact[k]) < 1e-10);
+      const Eigen::VectorXd x = pairs.vectors.col(k);
+      CHECK((p.K * x - pairs.values[k] * (p.M * x)).norm() / (p.K * x).norm() < 1e-8);
+    }
+  }
+
+  TEST_CASE("equal frequencies in two bending planes are both found") {
+    // A square tube beam, simply supported in both planes: every bending frequency is double.
+    Model model;
+    const auto section = steelRectangle(0.04, 0.04);
+    const Line line = uniformBeam(model, 2.0, section, 60, DofSet::frame3d());
+    model.addSupport(
+        {"left", line.nodes.front(), {{Dof::ux, 0}, {Dof::uy, 0}, {Dof::uz, 0}, {Dof::rx, 0}}});
+    model.addSupport({"right", line.nodes.back(), {{Dof::uy, 0}, {Dof::uz, 0}}});
+    const ModalResult r = solveModes(model, {6, 0});
+    REQUIRE(r.modes.size() == 6);
+    // Euler-Bernoulli, pinned-pinned: omega_n = (n pi / L)^2 sqrt(E I / (rho A)); 60 cubic
+    // elements are within 1e-7 for n <= 3 (order-4 convergence).
+    const double EI = section->EIz(), rhoA = section->rhoA();
+    const double pi = 3.14159265358979323846;
+    std::vector<double> bending;
+    for (const Mode& m : r.modes)
+      if (m.description.rfind("bending", 0) == 0) bending.push_back(m.frequencyHz);
+    REQUIRE(bending.size() >= 4);
+    for (int n = 1; n <= 2; ++n) {
+      const double exact = std::pow(n * pi / 2.0, 2) * std::sqrt(EI / rhoA) / (2 * pi);
+      CHECK(relError(bending[2 * n - 2], exact) < 1e-6);
+      CHECK(relError(bending[2 * n - 1], exact) < 1e-6);
+    }
+  }
+}

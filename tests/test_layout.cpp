@@ -1,0 +1,182 @@
+// The layout the README promises, kept true: includes run one way only (elements -> fem,
+// meshes -> fem and elements, problems -> all; inside fem/ and problems/ the rooms below, in
+// order), every folder has a line in the README's layout table, and nothing in the repository
+// points at a file outside it.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSourceRoot = BEAMROTOR_SOURCE_DIR;
+
+/// Where a source file sits in the import order: its top-level folder's rank, then its room's
+/// rank inside that folder. A file may include files of a lower (top, room) pair, or of its own
+/// room; rooms of equal rank (the analyses in fem/, the studies in problems/) are peers that
+/// never include each other.
+struct Layer {
+  int top = 0;
+  int room = 0;
+  std::string roomName;
+};
+
+const std::map<std::string, int> kTopRank{
+    {"fem", 0}, {"elements", 1}, {"meshes", 2}, {"problems", 3}};
+
+/// The rooms of fem/ and problems/, in import order. Files directly in problems/ (the
+/// executables' mains) rank above every room.
+const std::map<std::string, std::map<std::string, int>> kRoomRank{{"fem",
+                                                                   {{"timing", 0},
+                                                                    {"model", 1},
+                                                                    {"assembly", 2},
+                                                                    {"solvers", 3},
+                                                                    {"static", 4},
+                                                                    {"modal", 4},
+                                                                    {"rotor", 4},
+                                                                    {"transient", 4}}},
+                                                                  {"problems",
+                                                                   {{"scenes", 0},
+                                                                    {"deck", 1},
+                                                                    {"run", 2},
+                                                                    {"output", 3},
+                                                                    {"converge", 4},
+                                                                    {"verify", 4},
+                                                                    {"bench", 4},
+                                                                    {"cli", 5}}}};
+
+std::optional<Layer> layerOf(const std::string& relative) {
+  const fs::path p(relative);
+  auto part = p.begin();
+  const std::string top = part->string();
+  const auto topRank = kTopRank.find(top);
+  if (topRank == kTopRank.end()) return std::nullopt;
+  Layer layer{topRank->second, 0, ""};
+  const auto rooms = kRoomRank.find(top);
+  if (rooms == kRoomRank.end()) return layer;
+  ++part;
+  const bool directlyInside = std::next(part) == p.end();
+  if (directlyInside) {
+    layer.room = 99;
+    return layer;
+  }
+  layer.roomName = part->string();
+  const auto room = rooms->second.find(layer.roomName);
+  REQUIRE_MESSAGE(room != rooms->second.end(),
+                  "folder " << top << "/" << layer.roomName
+                            << " has no place in the import order: add it to kRoomRank and "
+                               "to the README's layout table");
+  layer.room = room->second;
+  return layer;
+}
+
+bool mayInclude(const Layer& from, const Layer& to) {
+  if (from.top != to.top) return to.top < from.top;
+  if (from.room != to.room) return to.room < from.room;
+  return from.roomName == to.roomName;
+}
+
+std::vector<std::string> sourcesUnder(const std::string& top) {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(kSourceRoot / top)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file() && (ext == ".cpp" || ext == ".hpp"))
+      files.push_back(fs::relative(entry.path(), kSourceRoot).generic_string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_SUITE("layout") {
+  TEST_CASE("includes run one way: down the folders and down the rooms") {
+    const std::regex include(R"re(#include "([^"]+)")re");
+    int checked = 0;
+    for (const std::string top : {"fem", "elements", "meshes", "problems"}) {
+      for (const std::string& file : sourcesUnder(top)) {
+        const Layer from = *layerOf(file);
+        const std::string text = readText(kSourceRoot / file);
+        for (std::sregex_iterator m(text.begin(), text.end(), include), end; m != end; ++m) {
+          const std::string target = (*m)[1];
+          const std::optional<Layer> to = layerOf(target);
+          if (!to) continue;  // tests/ and third-party headers
+          CAPTURE(file);
+          CAPTURE(target);
+          CHECK(mayInclude(from, *to));
+          ++checked;
+        }
+      }
+    }
+    CHECK(checked > 300);  // the walk found the tree (about 600 includes today)
+  }
+
+  TEST_CASE("the rule itself: a planted upward include is refused") {
+    // A second method for the walk above: the rule judged on known cases.
+    CHECK_FALSE(mayInclude(*layerOf("fem/model/Model.hpp"), *layerOf("elements/Beam.hpp")));
+    CHECK_FALSE(mayInclude(*layerOf("problems/deck/Deck.hpp"), *layerOf("problems/run/Study.hpp")));
+    CHECK_FALSE(
+        mayInclude(*layerOf("fem/static/Static.cpp"), *layerOf("fem/rotor/RotorSystem.hpp")));
+    CHECK(mayInclude(*layerOf("fem/static/Static.cpp"), *layerOf("fem/solvers/LinearSolver.hpp")));
+    CHECK(mayInclude(*layerOf("problems/main.cpp"), *layerOf("problems/cli/App.hpp")));
+  }
+
+  TEST_CASE("every room has a line in the README's layout table") {
+    const std::string readme = readText(kSourceRoot / "README.md");
+    for (const auto& [top, rooms] : kRoomRank) {
+      std::set<std::string> onDisk;
+      for (const auto& entry : fs::directory_iterator(kSourceRoot / top))
+        if (entry.is_directory()) onDisk.insert(entry.path().filename().string());
+      for (const std::string& room : onDisk) {
+        CAPTURE(top + "/" + room);
+        CHECK(rooms.count(room) == 1);
+        CHECK(readme.find("| `" + top + "/" + room + "/` |") != std::string::npos);
+      }
+      for (const auto& [room, rank] : rooms) {
+        CAPTURE(top + "/" + room);
+        CHECK(onDisk.count(room) == 1);
+      }
+    }
+  }
+
+  TEST_CASE("nothing points outside the repository") {
+    // The patterns are split so that this file does not match itself.
+    const std::vector<std::string> outside{std::string("SCENES") + ".md",
+                                           std::string("../") + "shared",
+                                           std::string("/work") + "/", std::string("/home") + "/"};
+    const std::set<std::string> textExtensions{".cpp", ".hpp", ".md",   ".yaml",
+                                               ".py",  ".txt", ".dict", ".json"};
+    std::vector<fs::path> files{kSourceRoot / "README.md", kSourceRoot / "Makefile",
+                                kSourceRoot / "CMakeLists.txt", kSourceRoot / ".ci" / "run"};
+    for (const std::string top : {"fem", "elements", "meshes", "problems", "tests"})
+      for (const auto& entry : fs::recursive_directory_iterator(kSourceRoot / top))
+        if (entry.is_regular_file() && textExtensions.count(entry.path().extension().string()))
+          files.push_back(entry.path());
+    CHECK(files.size() > 200);
+    for (const fs::path& file : files) {
+      const std::string text = readText(file);
+      for (const std::string& pattern : outside) {
+        CAPTURE(file.string());
+        CAPTURE(pattern);
+        CHECK(text.find(pattern) == std::string::npos);
+      }
+    }
+  }
+}
