@@ -222,7 +222,7 @@ TEST_SUITE("rotor campbell") {
     MESSAGE("CampbellJeffcott unbalance response: largest relative error " << worst);
   }
 
-  TEST_CASE("a 200-element rotor: 50-speed Campbell diagram stays sparse and fast") {
+  TEST_CASE("a 200-element rotor: 50-speed Campbell diagram and unbalance sweep stay sparse") {
     Model model;
     const Line line = uniformBeam(model, 2.0, steelCircle(0.08), 200, DofSet::lateral(),
                                   {BeamTheory::timoshenko, MassModel::consistent, true});
@@ -236,17 +236,12 @@ TEST_SUITE("rotor campbell") {
     const CampbellResult c = solveCampbell(model, linspace(0, 1000, 50), rotorOptions(6));
     CHECK(c.symbolicAnalyses == 1);
     CHECK(c.size.freeDofs == 804);
-    MESSAGE("Campbell, 200 elements (804 dofs), 6 modes, 50 speeds: "
-            << c.time.total << " s (assembly " << c.time.assembly << " s, eigen " << c.time.solve
-            << " s)");
-    // The target is well under 1 s on one core; 3 s leaves room for a loaded test machine.
-    CHECK(c.time.total < 3.0);
+    // Speed is measured by `make bench` (bench --kind rotor), never asserted here: a loaded
+    // test machine would fail a timed check with nothing wrong.
 
     const std::vector<double> speeds = linspace(10, 1000, 50);
     const UnbalanceResult u =
         solveUnbalance(model, {{line.nodes[100], 1e-4, 0}}, speeds, {line.nodes[50]});
     CHECK(u.symbolicAnalyses == 1);
-    MESSAGE("unbalance response, same rotor, 50 speeds: " << u.time.total << " s");
-    CHECK(u.time.total < 1.0);
   }
 }
