@@ -9,11 +9,24 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps build run test bench clean
 
+# Installs what is missing and never removes anything: when Debian can install a package only by
+# removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), it
+# stops, changes nothing, and names the packages that stand in each other's way.
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
 	  echo "Installing missing packages:" $$missing; \
-	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
+	  $(SUDO) apt-get update -qq || exit 1; \
+	  removed=$$(LC_ALL=C apt-get install -s $$missing 2>/dev/null | sed -n 's/^Remv \([^ ]*\).*/\1/p' | tr '\n' ' '); removed=$$(echo $$removed); \
+	  if [ -n "$$removed" ]; then \
+	    echo "beamrotor: Debian can install $$missing only by removing $$removed, which this machine has." >&2; \
+	    echo "beamrotor: nothing was installed or removed. The packages stand in each other's way:" >&2; \
+	    for p in $$missing; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
+	    for p in $$removed; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
+	    echo "beamrotor: install the listed packages on a machine (or container) without $$removed, or remove $$removed yourself if you choose to." >&2; \
+	    exit 1; \
+	  fi; \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-remove $$missing; \
 	fi
 
 build: deps
