@@ -1,7 +1,7 @@
 # Thin wrapper: install missing Debian packages, build with CMake, run.
 PACKAGES := cmake g++ make libeigen3-dev libsuitesparse-dev libarpack2-dev libvtk9-dev \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
-            gnuplot-nox python3-meshio
+            gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest
 BUILD    := build
 JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml

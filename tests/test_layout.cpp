@@ -36,24 +36,14 @@ const std::map<std::string, int> kTopRank{
 
 /// The rooms of fem/ and problems/, in import order. Files directly in problems/ (the
 /// executables' mains) rank above every room.
-const std::map<std::string, std::map<std::string, int>> kRoomRank{{"fem",
-                                                                   {{"timing", 0},
-                                                                    {"model", 1},
-                                                                    {"assembly", 2},
-                                                                    {"solvers", 3},
-                                                                    {"static", 4},
-                                                                    {"modal", 4},
-                                                                    {"rotor", 4},
-                                                                    {"transient", 4}}},
-                                                                  {"problems",
-                                                                   {{"scenes", 0},
-                                                                    {"deck", 1},
-                                                                    {"run", 2},
-                                                                    {"output", 3},
-                                                                    {"converge", 4},
-                                                                    {"verify", 4},
-                                                                    {"bench", 4},
-                                                                    {"cli", 5}}}};
+// clang-format off
+const std::map<std::string, std::map<std::string, int>> kRoomRank{
+    {"fem", {{"timing", 0}, {"model", 1}, {"assembly", 2}, {"solvers", 3},
+             {"static", 4}, {"modal", 4}, {"rotor", 4}, {"transient", 4}}},
+    {"problems", {{"scenes", 0}, {"deck", 1}, {"run", 2}, {"output", 3},
+                  {"converge", 4}, {"verify", 4}, {"bench", 4},
+                  {"cli", 5}, {"python", 5}}}};
+// clang-format on
 
 std::optional<Layer> layerOf(const std::string& relative) {
   const fs::path p(relative);

@@ -35,6 +35,11 @@ class CsvTable {
   /// The numeric values of a column (counts converted; throws for a text column).
   std::vector<double> numbers(std::string_view name) const;
 
+  /// The cell of a row (0-based) and column (0-based position).
+  const CsvCell& cell(std::size_t row, std::size_t column) const {
+    return rows_.at(row).at(column);
+  }
+
   const std::string& title() const { return title_; }
   const std::vector<CsvColumn>& columns() const { return columns_; }
   std::size_t rowCount() const { return rows_.size(); }

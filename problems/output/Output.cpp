@@ -14,8 +14,9 @@
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
-#include "problems/output/RotorOutput.hpp"
 #include "problems/output/OverlaidDiagrams.hpp"
+#include "problems/output/PreparedRun.hpp"
+#include "problems/output/RotorOutput.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
@@ -26,55 +27,6 @@ namespace beamrotor {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// What one analysis writes, computed before writing.
-struct PreparedAnalysis {
-  const AnalysisOutcome* outcome = nullptr;
-  std::string stem;
-  std::vector<StaticStation> stations;  ///< statics only
-  std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
-  std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
-  std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
-  std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
-  std::optional<PreparedRotor> rotor;   ///< rotor analyses
-};
-
-struct PreparedRun {
-  const RunResult* run = nullptr;
-  std::vector<PreparedAnalysis> analyses;
-  Json doc;  ///< results.json
-};
-
-PreparedRun prepare(const RunResult& run) {
-  // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
-  requireFinite(run);
-  requireDistinctFileStems(run.analyses);
-  const Model& model = *run.model;
-
-  // 2. Sample the statics along the line and build every table.
-  PreparedRun prepared{&run, {}, {}};
-  std::vector<std::vector<StaticStation>> stations;
-  for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}};
-    if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
-    if (a.statics) {
-      p.stations = sampleStatics(model, a.statics->displacement);
-      p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
-    }
-    if (a.modal) {
-      p.modes = modesTable(modesCsv(p.stem), *a.modal);
-      p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
-    }
-    if (a.rotor) p.rotor = prepareRotor(a, p.stem);
-    stations.push_back(p.stations);
-    prepared.analyses.push_back(std::move(p));
-  }
-
-  // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
-  prepared.doc = runJson(run, stations);
-  requireFiniteNumbers(prepared.doc, kResultsJson);
-  return prepared;
-}
 
 /// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts; `what` follows
 /// the analysis' name, and the parameter `left` out is not listed. A long caption puts the
@@ -138,7 +90,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 }  // namespace
 
 void writeRunOutputs(const RunResult& run, const fs::path& dir) {
-  const PreparedRun prepared = prepare(run);
+  const PreparedRun prepared = prepareRun(run);
   writeDirectoryAtomically(
       dir, [&](const fs::path& temporary) { writeRunFiles(prepared, temporary, /*charts=*/true); });
 }
@@ -154,7 +106,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
   std::vector<Json> docs;
   std::vector<std::string> directories;
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    prepared.push_back(prepare(sweep.runs[i]));
+    prepared.push_back(prepareRun(sweep.runs[i]));
     docs.push_back(prepared.back().doc);
     directories.push_back(sweepValueDirectory(i, sweep.runs.size()));
   }

@@ -1,0 +1,53 @@
+// Preparing a run for writing (see PreparedRun.hpp).
+#include "problems/output/PreparedRun.hpp"
+
+#include "problems/output/FileNames.hpp"
+#include "problems/output/FiniteCheck.hpp"
+#include "problems/output/Tables.hpp"
+#include "problems/output/TransientFiles.hpp"
+
+namespace beamrotor {
+
+std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() const {
+  std::vector<std::pair<std::string, const CsvTable*>> all;
+  for (const std::optional<CsvTable>* t : {&fields, &modes, &shapes, &history})
+    if (*t) all.emplace_back((*t)->title(), &**t);
+  if (rotor)
+    for (const std::optional<CsvTable>* t :
+         {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance})
+      if (*t) all.emplace_back((*t)->title(), &**t);
+  return all;
+}
+
+PreparedRun prepareRun(const RunResult& run) {
+  // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
+  requireFinite(run);
+  requireDistinctFileStems(run.analyses);
+  const Model& model = *run.model;
+
+  // 2. Sample the statics along the line and build every table.
+  PreparedRun prepared{&run, {}, {}};
+  std::vector<std::vector<StaticStation>> stations;
+  for (const AnalysisOutcome& a : run.analyses) {
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}};
+    if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
+    if (a.statics) {
+      p.stations = sampleStatics(model, a.statics->displacement);
+      p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
+    }
+    if (a.modal) {
+      p.modes = modesTable(modesCsv(p.stem), *a.modal);
+      p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
+    }
+    if (a.rotor) p.rotor = prepareRotor(a, p.stem);
+    stations.push_back(p.stations);
+    prepared.analyses.push_back(std::move(p));
+  }
+
+  // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
+  prepared.doc = runJson(run, stations);
+  requireFiniteNumbers(prepared.doc, kResultsJson);
+  return prepared;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,45 @@
+// A solved run made ready for writing, in memory: checked for NaN and infinity, sampled along
+// the line, its results.json document and every CSV table built. The results directory is
+// written from it, and the Python module hands the same document and tables to Python, so the
+// two never disagree.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "problems/output/CsvTable.hpp"
+#include "problems/output/JsonWriter.hpp"
+#include "problems/output/LineSampling.hpp"
+#include "problems/output/RotorOutput.hpp"
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor {
+
+/// What one analysis writes, computed before writing.
+struct PreparedAnalysis {
+  const AnalysisOutcome* outcome = nullptr;
+  std::string stem;                     ///< file stem of its files
+  std::vector<StaticStation> stations;  ///< statics only
+  std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
+  std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
+  std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
+  std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
+  std::optional<PreparedRotor> rotor;   ///< rotor analyses
+
+  /// Every table this analysis has, each with its CSV file name, in writing order.
+  std::vector<std::pair<std::string, const CsvTable*>> tables() const;
+};
+
+struct PreparedRun {
+  const RunResult* run = nullptr;  ///< must outlive this
+  std::vector<PreparedAnalysis> analyses;
+  Json doc;  ///< results.json
+};
+
+/// Prepares run. Throws std::runtime_error naming the first non-finite number, or analyses
+/// whose files would overwrite each other's.
+PreparedRun prepareRun(const RunResult& run);
+
+}  // namespace beamrotor

@@ -1,0 +1,308 @@
+// The Python module `beamrotor` (pybind11): the same deck reader, runner and result tables as
+// the command line, for notebooks and scripts.
+//
+//   import beamrotor
+//   run = beamrotor.solve("problems/pump_rod.yaml", set={"eta": 0.2})
+//   run.results["analyses"][0]["reactions"]     # results.json as plain dicts and lists
+//   run.tables["static"]["fields"]["M"]         # a CSV table's column as a NumPy array
+//   run.passed, run.checks                      # the deck's closed-form checks
+//   run.write("out/pump_rod")                   # the results directory, as `beamrotor solve`
+//
+// Errors keep the command line's wording: beamrotor.DeckError (bad input, a ValueError) and
+// beamrotor.SolveError (an analysis failed, a RuntimeError) carry file, line, column, field
+// and message; str(error) is the one-line "file:line:col: field: message".
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "problems/deck/DeckError.hpp"
+#include "problems/deck/DeckReader.hpp"
+#include "problems/output/Output.hpp"
+#include "problems/output/PreparedRun.hpp"
+#include "problems/run/Study.hpp"
+
+namespace py = pybind11;
+
+namespace beamrotor {
+
+namespace {
+
+// 1. Values to Python ------------------------------------------------------------------------
+
+py::object toPython(const Json& j) {
+  switch (j.type()) {
+    case Json::value_t::null:
+      return py::none();
+    case Json::value_t::boolean:
+      return py::bool_(j.get<bool>());
+    case Json::value_t::number_integer:
+      return py::int_(j.get<long long>());
+    case Json::value_t::number_unsigned:
+      return py::int_(j.get<unsigned long long>());
+    case Json::value_t::number_float:
+      return py::float_(j.get<double>());
+    case Json::value_t::string:
+      return py::str(j.get<std::string>());
+    case Json::value_t::array: {
+      py::list list;
+      for (const Json& item : j) list.append(toPython(item));
+      return std::move(list);
+    }
+    default: {
+      py::dict dict;  // keeps results.json's key order
+      for (const auto& [key, value] : j.items()) dict[py::str(key)] = toPython(value);
+      return std::move(dict);
+    }
+  }
+}
+
+/// "static_fields.csv" of stem "static" -> "fields".
+std::string tableKey(const std::string& file, const std::string& stem) {
+  std::string key = file;
+  if (key.rfind(stem + "_", 0) == 0) key.erase(0, stem.size() + 1);
+  if (key.size() > 4 && key.compare(key.size() - 4, 4, ".csv") == 0) key.resize(key.size() - 4);
+  return key;
+}
+
+/// A table's columns: numbers as NumPy arrays, text as lists of str.
+py::dict columnsOf(const CsvTable& table) {
+  py::dict columns;
+  for (const CsvColumn& c : table.columns()) {
+    try {
+      const std::vector<double> values = table.numbers(c.name);
+      columns[py::str(c.name)] = py::array_t<double>(py::ssize_t(values.size()), values.data());
+    } catch (const std::invalid_argument&) {  // a text column
+      py::list texts;
+      const int position = table.column(c.name) - 1;
+      for (std::size_t r = 0; r < table.rowCount(); ++r)
+        texts.append(std::get<std::string>(table.cell(r, std::size_t(position))));
+      columns[py::str(c.name)] = std::move(texts);
+    }
+  }
+  return columns;
+}
+
+py::dict unitsOf(const CsvTable& table) {
+  py::dict units;
+  for (const CsvColumn& c : table.columns()) units[py::str(c.name)] = c.unit;
+  return units;
+}
+
+// 2. Results as Python objects ---------------------------------------------------------------
+
+/// One solved run: its results.json document and its tables, built once by the same code
+/// that writes the results directory.
+class PythonRun {
+ public:
+  explicit PythonRun(RunResult run) : run_(std::move(run)) {
+    const PreparedRun prepared = prepareRun(run_);
+    results_ = toPython(prepared.doc);
+    for (const PreparedAnalysis& a : prepared.analyses) {
+      py::dict tables, units;
+      for (const auto& [file, table] : a.tables()) {
+        tables[py::str(tableKey(file, a.stem))] = columnsOf(*table);
+        units[py::str(tableKey(file, a.stem))] = unitsOf(*table);
+      }
+      tables_[py::str(a.outcome->name)] = tables;
+      units_[py::str(a.outcome->name)] = units;
+    }
+  }
+
+  py::object results() const { return results_; }
+  py::dict tables() const { return tables_; }
+  py::dict units() const { return units_; }
+  py::object checks() const { return results_["checks"]; }
+  bool passed() const {
+    for (const Check& c : run_.checks)
+      if (!c.pass()) return false;
+    return true;
+  }
+  py::dict parameters() const {
+    py::dict p;
+    for (const auto& [name, value] : run_.parameters) p[py::str(name)] = value;
+    return p;
+  }
+  /// Node coordinates (m, global frame), one row per node.
+  py::array_t<double> nodes() const {
+    const Model& model = *run_.model;
+    py::array_t<double> xyz({py::ssize_t(model.nodeCount()), py::ssize_t(3)});
+    auto view = xyz.mutable_unchecked<2>();
+    for (int n = 0; n < model.nodeCount(); ++n)
+      for (int k = 0; k < 3; ++k) view(n, k) = model.nodes()[std::size_t(n)][k];
+    return xyz;
+  }
+  /// The nodal displacements of a static analysis: one row per node, columns ux uy uz rx ry rz.
+  py::array_t<double> displacements(const std::string& analysis) const {
+    for (const AnalysisOutcome& a : run_.analyses)
+      if (a.name == analysis) {
+        if (!a.statics) throw py::value_error("analysis '" + analysis + "' is not static");
+        const NodalField& u = a.statics->displacement;
+        py::array_t<double> out({py::ssize_t(u.rows()), py::ssize_t(u.cols())});
+        auto view = out.mutable_unchecked<2>();
+        for (Eigen::Index r = 0; r < u.rows(); ++r)
+          for (Eigen::Index c = 0; c < u.cols(); ++c) view(r, c) = u(r, c);
+        return out;
+      }
+    throw py::key_error("no analysis named '" + analysis + "'");
+  }
+  void write(const std::filesystem::path& dir) const {
+    py::gil_scoped_release free;
+    writeRunOutputs(run_, dir);
+  }
+  std::string repr() const {
+    return "<beamrotor.Run " + run_.deckName + ": " + std::to_string(run_.analyses.size()) +
+           " analyses, " + std::to_string(run_.checks.size()) + " checks, " +
+           (passed() ? "all pass" : "some fail") + ">";
+  }
+
+ private:
+  RunResult run_;
+  py::object results_;
+  py::dict tables_, units_;
+};
+
+/// A deck solved over the values of one parameter.
+class PythonSweep {
+ public:
+  explicit PythonSweep(SweepResult sweep) : sweep_(std::move(sweep)) {
+    for (const RunResult& r : sweep_.runs) runs_.emplace_back(r);
+  }
+  const std::string& parameter() const { return sweep_.parameter; }
+  py::array_t<double> values() const {
+    return py::array_t<double>(py::ssize_t(sweep_.values.size()), sweep_.values.data());
+  }
+  const std::vector<PythonRun>& runs() const { return runs_; }
+  void write(const std::filesystem::path& dir) const {
+    py::gil_scoped_release free;
+    writeSweepOutputs(sweep_, dir);
+  }
+
+ private:
+  SweepResult sweep_;
+  std::vector<PythonRun> runs_;
+};
+
+// 3. Requests from Python --------------------------------------------------------------------
+
+/// {"eta": 0.2, "w0": "2*mm"} -> {"eta=0.2", "w0=2*mm"}: numbers at full precision, text as
+/// written (an expression the deck reader evaluates).
+std::vector<std::string> overridesFrom(const py::dict& values) {
+  std::vector<std::string> sets;
+  for (const auto& [key, value] : values) {
+    const std::string name = py::str(key);
+    if (py::isinstance<py::bool_>(value))
+      throw py::type_error("set: '" + name + "' must be a number or an expression, not a bool");
+    if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) {
+      char buffer[64];
+      std::snprintf(buffer, sizeof buffer, "%.17g", value.cast<double>());
+      sets.push_back(name + "=" + buffer);
+    } else if (py::isinstance<py::str>(value)) {
+      sets.push_back(name + "=" + value.cast<std::string>());
+    } else {
+      throw py::type_error("set: '" + name + "' must be a number or an expression (str)");
+    }
+  }
+  return sets;
+}
+
+py::object solve(const std::filesystem::path& deck, const py::dict& set, const std::string& sweep,
+                 const std::string& formulation, bool noSweep) {
+  StudyRequest request;
+  request.deckPath = deck.string();
+  request.sets = overridesFrom(set);
+  request.sweep = sweep;
+  request.formulation = formulation;
+  request.noSweep = noSweep;
+  Study study;
+  {
+    py::gil_scoped_release free;
+    study = solveStudy(request);
+  }
+  if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep)));
+  return py::cast(PythonRun(std::move(*study.run)));
+}
+
+py::dict parameters(const std::filesystem::path& deck) {
+  const Deck d = readDeck(loadDeckFile(deck));
+  py::dict p;
+  for (const auto& [name, value] : d.parameters) p[py::str(name)] = value;
+  return p;
+}
+
+// 4. Errors ------------------------------------------------------------------------------
+
+/// Raises `type` with the diagnostic's parts as attributes.
+void raise(const py::object& type, const DeckDiagnostic& e) {
+  py::object error = type(py::str(e.what()));
+  error.attr("file") = e.file();
+  error.attr("line") = e.place().line;
+  error.attr("column") = e.place().column;
+  error.attr("field") = e.place().field;
+  error.attr("message") = e.message();
+  PyErr_SetObject(type.ptr(), error.ptr());
+}
+
+}  // namespace
+
+}  // namespace beamrotor
+
+PYBIND11_MODULE(beamrotor, m) {
+  using namespace beamrotor;
+  m.doc() = "beamrotor: finite-element beams, frames and rotors; decks solved from Python";
+  m.attr("__version__") = BEAMROTOR_VERSION;
+
+  static py::exception<DeckError> deckError(m, "DeckError", PyExc_ValueError);
+  static py::exception<DeckSolveError> solveError(m, "SolveError", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const DeckError& e) {
+      raise(deckError, e);
+    } catch (const DeckSolveError& e) {
+      raise(solveError, e);
+    }
+  });
+
+  py::class_<PythonRun>(m, "Run", "One solved instance of a deck.")
+      .def_property_readonly("results", &PythonRun::results,
+                             "results.json of the run as dicts and lists")
+      .def_property_readonly("tables", &PythonRun::tables,
+                             "tables[analysis][table][column]: the CSV tables' columns as "
+                             "NumPy arrays (text columns as lists)")
+      .def_property_readonly("units", &PythonRun::units,
+                             "units[analysis][table][column]: each column's unit")
+      .def_property_readonly("checks", &PythonRun::checks,
+                             "the deck's checks: name, quantity, computed, reference, "
+                             "rel_error, tolerance, pass")
+      .def_property_readonly("passed", &PythonRun::passed, "whether every check passes")
+      .def_property_readonly("parameters", &PythonRun::parameters, "parameter values used")
+      .def_property_readonly("nodes", &PythonRun::nodes, "node coordinates (m), n x 3")
+      .def("displacements", &PythonRun::displacements, py::arg("analysis"),
+           "nodal displacements of a static analysis, n x 6 (ux uy uz rx ry rz; m, rad)")
+      .def("write", &PythonRun::write, py::arg("directory"),
+           "writes the results directory, as `beamrotor solve --out`")
+      .def("__repr__", &PythonRun::repr);
+
+  py::class_<PythonSweep>(m, "Sweep", "A deck solved over the values of one parameter.")
+      .def_property_readonly("parameter", &PythonSweep::parameter)
+      .def_property_readonly("values", &PythonSweep::values)
+      .def_property_readonly("runs", &PythonSweep::runs, "one Run per value")
+      .def("write", &PythonSweep::write, py::arg("directory"),
+           "writes the sweep's results directory, as `beamrotor solve --out`");
+
+  m.def("solve", &beamrotor::solve, py::arg("deck"), py::kw_only(), py::arg("set") = py::dict(),
+        py::arg("sweep") = "", py::arg("formulation") = "", py::arg("sweep_off") = false,
+        "Reads a deck, applies `set` ({name: number or expression}) and solves it. Returns a "
+        "Run, or a Sweep when the deck (or `sweep`, e.g. 'eta=0:0.4:4') sweeps a parameter; "
+        "`sweep_off` solves the parameters' own values. Raises DeckError or SolveError.");
+  m.def("parameters", &beamrotor::parameters, py::arg("deck"),
+        "The deck's parameters and their values, in deck order.");
+}

@@ -1,0 +1,130 @@
+"""The Python module against closed forms and published figures, and against the command line's
+own results directory (the same numbers by a second path)."""
+import json
+import math
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import beamrotor
+
+PROBLEMS = pathlib.Path(os.environ["BEAMROTOR_SOURCE_DIR"]) / "problems"
+MALFORMED = pathlib.Path(os.environ["BEAMROTOR_SOURCE_DIR"]) / "tests" / "problems" / "malformed"
+
+# Hermite elements hold the static cantilever exactly: round-off only (the deck's own
+# tolerance, where ~5e-12 is observed).
+EXACT = 1e-9
+
+
+def cantilever_reference(p):
+    inertia = math.pi * p["D"] ** 4 / 64
+    return {
+        "tip": -p["P"] * p["L"] ** 3 / (3 * p["E"] * inertia),
+        "root_moment": p["P"] * p["L"],
+        "f1": 1.875104**2 / (2 * math.pi * p["L"] ** 2)
+        * math.sqrt(p["E"] * inertia / (p["rho"] * math.pi * p["D"] ** 2 / 4)),
+    }
+
+
+def test_parameters_are_the_decks():
+    p = beamrotor.parameters(PROBLEMS / "cantilever.yaml")
+    assert list(p) == ["L", "D", "P", "E", "rho"]
+    assert p["L"] == 1.2 and p["P"] == 1000
+
+
+def test_cantilever_against_beam_theory():
+    run = beamrotor.solve(PROBLEMS / "cantilever.yaml", set={"P": 2500, "L": "1.5"})
+    p = run.parameters
+    assert p["P"] == 2500 and p["L"] == 1.5
+    ref = cantilever_reference(p)
+    static = run.results["analyses"][0]
+    assert static["type"] == "static"
+    tip = static["displacements"]["tip"]["uy"]
+    assert abs(tip / ref["tip"] - 1) < EXACT
+    # The same tip from the nodal field and from the fields table along the line.
+    u = run.displacements("static")
+    tip_node = int(np.argmax(run.nodes[:, 0]))
+    assert abs(u[tip_node, 1] / ref["tip"] - 1) < EXACT
+    fields = run.tables["static"]["fields"]
+    assert abs(fields["uy"][-1] / ref["tip"] - 1) < EXACT
+    assert run.units["static"]["fields"]["uy"] == "m"
+    # Bending moment along the line: linear, P (L - x), the root moment at x = 0.
+    x, moment = fields["x"], fields["Mz"]
+    assert np.max(np.abs(np.abs(moment) - p["P"] * (p["L"] - x))) < EXACT * ref["root_moment"]
+    # Consistent mass, 16 elements: the first frequency within the deck's 1e-6.
+    modal = run.results["analyses"][1]
+    assert abs(modal["frequencies_hz"][0] / ref["f1"] - 1) < 1e-6
+    assert len(run.tables["modal"]["modes"]["frequency"]) == 4
+
+
+def test_pump_rod_published_reactions_over_a_sweep():
+    sweep = beamrotor.solve(PROBLEMS / "pump_rod.yaml", sweep="eta=0,0.4")
+    assert isinstance(sweep, beamrotor.Sweep)
+    assert sweep.parameter == "eta" and list(sweep.values) == [0, 0.4]
+    middle = [abs(r.results["analyses"][0]["reactions"]["middle"]["fy"]) for r in sweep.runs]
+    # Published (problems/scenes/README.md section 1): 7.46 kN and 13.33 kN, to half a unit
+    # of the last printed digit.
+    assert abs(middle[0] - 7460) <= 5
+    assert abs(middle[1] - 13330) <= 5
+    assert all(r.passed for r in sweep.runs)
+
+
+def test_reactions_are_linear_in_the_wear():
+    one = beamrotor.solve(PROBLEMS / "pump_rod.yaml", set={"w0": 1e-3}, sweep_off=True)
+    two = beamrotor.solve(PROBLEMS / "pump_rod.yaml", set={"w0": 2e-3}, sweep_off=True)
+    r1 = one.results["analyses"][0]["reactions"]
+    r2 = two.results["analyses"][0]["reactions"]
+    for support, components in r1.items():
+        for name, value in components.items():
+            assert abs(r2[support][name] - 2 * value) <= 1e-12 * abs(value) + 1e-9
+
+
+def test_checks_and_written_results_agree(tmp_path):
+    run = beamrotor.solve(PROBLEMS / "pump_rod_hinged.yaml", sweep_off=True)
+    assert run.passed
+    assert all(c["pass"] for c in run.checks)
+    run.write(tmp_path / "out")
+    written = json.loads((tmp_path / "out" / "results.json").read_text())
+    assert written["checks"] == run.checks
+    assert written["analyses"][0]["reactions"] == run.results["analyses"][0]["reactions"]
+
+
+def test_rotor_campbell_tables():
+    run = beamrotor.solve(PROBLEMS / "forme_shaft_rotor.yaml", sweep_off=True)
+    campbell = [a for a in run.results["analyses"] if a["type"] == "campbell"][0]
+    table = run.tables[campbell["name"]]["campbell"]
+    speeds = table[next(iter(table))]
+    assert isinstance(speeds, np.ndarray) and speeds.size > 10
+    assert np.all(np.diff(speeds) > 0)
+
+
+def test_bad_input_raises_deck_error_with_its_place(tmp_path):
+    deck = tmp_path / "bad.yaml"
+    deck.write_text("parameters:\n  L: 1\nsegments:\n  - {length: -L, section: rod, elements: 2}\n")
+    with pytest.raises(beamrotor.DeckError) as error:
+        beamrotor.solve(deck)
+    e = error.value
+    assert isinstance(e, ValueError)
+    assert e.file == str(deck)
+    assert e.line >= 1
+    assert str(e).startswith(f"{deck}:{e.line}:")
+
+
+def test_unknown_parameter_is_bad_input():
+    with pytest.raises(beamrotor.DeckError) as error:
+        beamrotor.solve(PROBLEMS / "cantilever.yaml", set={"nonsense": 1})
+    assert "nonsense" in str(error.value)
+
+
+def test_a_mechanism_raises_solve_error():
+    with pytest.raises(beamrotor.SolveError) as error:
+        beamrotor.solve(MALFORMED / "unsupported_structure.yaml")
+    assert isinstance(error.value, RuntimeError)
+    assert error.value.message
+
+
+def test_set_refuses_what_is_not_a_number_or_expression():
+    with pytest.raises(TypeError):
+        beamrotor.solve(PROBLEMS / "cantilever.yaml", set={"P": [1, 2]})
