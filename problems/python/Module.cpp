@@ -54,12 +54,12 @@ py::object toPython(const Json& j) {
     case Json::value_t::array: {
       py::list list;
       for (const Json& item : j) list.append(toPython(item));
-      return std::move(list);
+      return list;
     }
     default: {
       py::dict dict;  // keeps results.json's key order
       for (const auto& [key, value] : j.items()) dict[py::str(key)] = toPython(value);
-      return std::move(dict);
+      return dict;
     }
   }
 }
