@@ -14,8 +14,8 @@
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
-#include "problems/output/RotorOutput.hpp"
 #include "problems/output/OverlaidDiagrams.hpp"
+#include "problems/output/RotorOutput.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
@@ -32,6 +32,7 @@ struct PreparedAnalysis {
   const AnalysisOutcome* outcome = nullptr;
   std::string stem;
   std::vector<StaticStation> stations;  ///< statics only
+  std::vector<ElementPeaks> peaks;      ///< statics only: each element's exact largest values
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
   std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
   std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
@@ -53,12 +54,13 @@ PreparedRun prepare(const RunResult& run) {
 
   // 2. Sample the statics along the line and build every table.
   PreparedRun prepared{&run, {}, {}};
-  std::vector<std::vector<StaticStation>> stations;
+  std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}};
     if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
     if (a.statics) {
       p.stations = sampleStatics(model, a.statics->displacement);
+      p.peaks = elementPeaks(model, a.statics->displacement);
       p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
     }
     if (a.modal) {
@@ -66,12 +68,12 @@ PreparedRun prepare(const RunResult& run) {
       p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
     }
     if (a.rotor) p.rotor = prepareRotor(a, p.stem);
-    stations.push_back(p.stations);
+    peaks.push_back(p.peaks);
     prepared.analyses.push_back(std::move(p));
   }
 
   // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
-  prepared.doc = runJson(run, stations);
+  prepared.doc = runJson(run, peaks);
   requireFiniteNumbers(prepared.doc, kResultsJson);
   return prepared;
 }
@@ -108,7 +110,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
     if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
     if (a.statics) {
       p.fields->write(dir / fieldsCsv(p.stem));
-      writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);
+      writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations, p.peaks);
       if (charts && !p.stations.empty())
         drawChart(dir,
                   staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
