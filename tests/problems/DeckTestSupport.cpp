@@ -47,10 +47,11 @@ std::filesystem::path scratchDir(const std::string& name) {
 ProcessResult runBeamrotor(const std::vector<std::string>& arguments) {
   static int counter = 0;
   const auto dir = scratchDir("process-" + std::to_string(++counter));
-  std::string command = "cd " + shellQuoted(BEAMROTOR_SOURCE_DIR) + " && " +
-                        shellQuoted(BEAMROTOR_EXE);
+  std::string command =
+      "cd " + shellQuoted(BEAMROTOR_SOURCE_DIR) + " && " + shellQuoted(BEAMROTOR_EXE);
   for (const std::string& a : arguments) command += " " + shellQuoted(a);
-  command += " >" + shellQuoted((dir / "out").string()) + " 2>" + shellQuoted((dir / "err").string());
+  command +=
+      " >" + shellQuoted((dir / "out").string()) + " 2>" + shellQuoted((dir / "err").string());
   const int status = std::system(command.c_str());
   ProcessResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -82,6 +83,12 @@ StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string
   r.sets = std::move(sets);
   r.noSweep = true;
   return r;
+}
+
+Study solveDeckText(const std::string& text, const std::string& path) {
+  StudyRequest request;
+  request.deckPath = path;
+  return solveStudyText(text, request);
 }
 
 std::vector<const RunResult*> runsOf(const Study& study) {

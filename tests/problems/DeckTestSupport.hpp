@@ -59,6 +59,10 @@ SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string&
 /// switched off.
 StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets = {});
 
+/// Deck text written in a test, read and solved as if it were the file `path` (which names
+/// it in messages).
+Study solveDeckText(const std::string& text, const std::string& path);
+
 /// The runs of a solved study: its one run, or one per sweep value.
 std::vector<const RunResult*> runsOf(const Study& study);
 
