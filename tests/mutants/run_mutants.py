@@ -5,9 +5,12 @@ Plants the single-line mutants of tests/mutants/mutants.txt one at a time in the
 itself, rebuilds a one-object-per-source build directory incrementally, runs the test suite
 with a time limit and puts the file back, whatever happens (an exception, Ctrl-C, SIGTERM; a
 copy of the original sits in OUT/backup/ until it is restored, and a later run puts back any
-copy a killed run left there). A mutant is killed when the suite fails or times out, survives
-when it passes, and is invalid when it does not compile. Prints one line per mutant and the
-kill rate, and writes OUT/summary.json.
+copy a killed run left there). A mutant is killed when tests fail (or time out) in the full run
+and again when the failed ones are rerun alone: the suite has wall-clock budgets (a sweep's
+outputs, a Campbell diagram) that a loaded machine can miss, and a failure the quiet rerun does
+not repeat is reported as flaky, not as a kill. A mutant survives when the suite passes, and is
+invalid when it does not compile. Prints one line per mutant and the kill rate, and writes
+OUT/summary.json.
 
 Usage: run_mutants.py [--build DIR] [--out DIR] [--list FILE] [--jobs N] [--timeout S]
                       [--only ID,ID,...] [--check]
@@ -124,6 +127,30 @@ def run(command, timeout, log):
     return code, time.monotonic() - start
 
 
+def ctest_regex(names):
+    """An anchored CTest regular expression matching exactly these test names."""
+    special = set(".^$*+?()[]{}|\\")
+    return "^(" + "|".join("".join("\\" + c if c in special else c for c in n)
+                           for n in names) + ")$"
+
+
+def run_suite(build_dir, jobs, timeout, log):
+    """The whole suite, then the failed tests again one at a time. Returns (failed in both
+    runs, failed only in the first, seconds); a hang of the whole run counts as a failure."""
+    test = ["ctest", "--test-dir", build_dir, "--timeout", str(timeout), "--output-on-failure"]
+    code, seconds = run(test + ["-j", str(jobs)], timeout * 2, log)
+    if code == 0:
+        return [], [], seconds
+    if code is None:
+        return ["(suite timed out)"], [], seconds
+    first = failed_tests(log)
+    if not first:  # ctest failed without naming a test (e.g. it could not start)
+        return ["(ctest failed)"], [], seconds
+    code, again = run(test + ["-R", ctest_regex(first)], timeout * 2, log)
+    confirmed = first if code is None else failed_tests(log) if code != 0 else []
+    return confirmed, [n for n in first if n not in confirmed], seconds + again
+
+
 def failed_tests(log):
     """The CTest names listed after 'The following tests FAILED:' in the last ctest output."""
     text = Path(log).read_text()
@@ -175,8 +202,6 @@ def main():
     restore_leftovers(backup_dir)
     logs.mkdir(parents=True, exist_ok=True)
     build = ["cmake", "--build", args.build, "-j", str(args.jobs)]
-    test = ["ctest", "--test-dir", args.build, "-j", str(args.jobs), "--stop-on-failure",
-            "--timeout", str(args.timeout), "--output-on-failure"]
 
     # 1. The unmutated suite must pass, or no kill means anything.
     log = logs / "baseline.log"
@@ -184,10 +209,11 @@ def main():
     code, build_s = run(build, args.build_timeout, log)
     if code != 0:
         sys.exit(f"the unmutated tree does not build (see {log})")
-    code, suite_s = run(test, args.timeout, log)
-    if code != 0:
-        sys.exit(f"the unmutated suite fails (see {log})")
-    print(f"baseline: built in {build_s:.0f} s, suite passes in {suite_s:.0f} s")
+    failed, flaky, suite_s = run_suite(args.build, args.jobs, args.timeout, log)
+    if failed:
+        sys.exit(f"the unmutated suite fails: {', '.join(failed)} (see {log})")
+    print(f"baseline: built in {build_s:.0f} s, suite passes in {suite_s:.0f} s"
+          + (f" (flaky under load: {', '.join(flaky)})" if flaky else ""))
 
     # 2. One mutant at a time.
     results = []
@@ -207,16 +233,17 @@ def main():
                     result["status"] = "invalid"
                     result["reason"] = "does not build" if code is not None else "build timed out"
                 else:
-                    code, test_s = run(test, args.timeout * 2, log)
+                    failed, flaky, test_s = run_suite(args.build, args.jobs, args.timeout, log)
                     result["test_s"] = round(test_s, 1)
-                    if code == 0:
-                        result["status"] = "survived"
-                    else:
-                        result["status"] = "killed"
-                        result["killed_by"] = (failed_tests(log) if code is not None
-                                               else ["(suite timed out)"])
+                    result["status"] = "killed" if failed else "survived"
+                    if failed:
+                        result["killed_by"] = failed
+                    if flaky:
+                        result["flaky"] = flaky
             results.append(result)
             note = ", ".join(result.get("killed_by", [])) or result.get("reason", "")
+            if "flaky" in result:
+                note += (", " if note else "") + "flaky: " + ", ".join(result["flaky"])
             if result["status"] == "survived" and "equivalent" in m:
                 note = "equivalent: " + m["equivalent"]
             print(f"[{k}/{len(mutants)}] {result['status']:8s} {m['id']}"
