@@ -54,8 +54,9 @@ void readAnalyses(Context& c) {
     auto n = f.get("name");
     a.name = n ? n->name() : a.type;
     if (std::find(names.begin(), names.end(), a.name) != names.end())
-      (n ? *n : f).fail("there is already an analysis named '" + a.name +
-                        "'; give each analysis its own name");
+      (n ? *n : f)
+          .fail("there is already an analysis named '" + a.name +
+                "'; give each analysis its own name");
     names.push_back(a.name);
     c.deck.analyses.push_back(std::move(a));
   }
@@ -80,8 +81,8 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
       analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
                           " (analyses: " + joinNames(names) + ")");
     if (!q.readsFrom(analysis->type))
-      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" +
-                          name + "' is " + analysis->type);
+      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" + name +
+                          "' is " + analysis->type);
   } else {
     for (const DeckAnalysis& a : deck.analyses)
       if (!analysis && q.readsFrom(a.type)) analysis = &a;
@@ -142,9 +143,7 @@ void readChecks(Context& c) {
     DeckCheck k;
     k.place = f.place();
     const Field nameField = f.require("name");
-    k.name = nameField.text();
-    if (k.name.empty() || k.name.size() > 80)
-      nameField.fail("a check name must have 1 to 80 characters");
+    k.name = nameField.label(80);
     claimName(nameField, k.name, names, "a check");
     const Field qf = f.require("quantity");
     try {
