@@ -176,9 +176,7 @@ void readChecks(Context& c) {
     DeckCheck k;
     k.place = f.place();
     const Field nameField = f.require("name");
-    k.name = nameField.text();
-    if (k.name.empty() || k.name.size() > 80)
-      nameField.fail("a check name must have 1 to 80 characters");
+    k.name = nameField.label(80);
     claimName(nameField, k.name, names, "a check");
     const Field qf = f.require("quantity");
     try {

@@ -17,7 +17,7 @@ using namespace beamrotor::test;
 namespace {
 
 const PumpRod kRodC;  // the paper's data at eta = 0.4
-const double a = kRodC.a, d = kRodC.d, D1 = kRodC.D1, D2 = kRodC.D2, E = kRodC.E;
+const double a = kRodC.a, d = kRodC.d, D1 = kRodC.D1, D2 = kRodC.D2, steelE = kRodC.E;
 const double psi = kRodC.psi(), l = kRodC.l();
 
 /// theta_p of the example data, from the tilted core's width (PumpRodReference.hpp).
@@ -52,7 +52,7 @@ struct FeResponse {
 
 FeResponse variantCElements(double w0) {
   Model model;
-  auto mat = Material::fromEnu("steel", E, 0.3, 7850);
+  auto mat = Material::fromEnu("steel", steelE, 0.3, 7850);
   LineSpec spec;
   spec.segments.push_back({a, std::make_shared<Section>(Section::circle("D1", mat, D1)), 3});
   spec.segments.push_back({d, std::make_shared<Section>(Section::circle("D2", mat, D2)), 6});
