@@ -1,5 +1,6 @@
 #include "elements/Beam.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -12,8 +13,8 @@ using Matrix12 = Beam::Matrix12;
 using Vector12 = Beam::Vector12;
 
 // Local dof positions: u v w rx ry rz at the start (0..5) and at the end (6..11).
-constexpr std::array<int, 4> kPlaneXY{1, 5, 7, 11};   // v, rz: bending about local z
-constexpr std::array<int, 4> kPlaneXZ{2, 4, 8, 10};   // w, ry: bending about local y
+constexpr std::array<int, 4> kPlaneXY{1, 5, 7, 11};  // v, rz: bending about local z
+constexpr std::array<int, 4> kPlaneXZ{2, 4, 8, 10};  // w, ry: bending about local y
 constexpr std::array<int, 2> kAxial{0, 6};
 constexpr std::array<int, 2> kTorsion{3, 9};
 
@@ -28,9 +29,9 @@ bool isLinear(BeamTheory t) {
 Matrix4 hermiteStiffness(double EI, double Phi, double L) {
   Matrix4 k;
   const double L2 = L * L;
-  k << 12, 6 * L, -12, 6 * L,                            //
-      6 * L, (4 + Phi) * L2, -6 * L, (2 - Phi) * L2,     //
-      -12, -6 * L, 12, -6 * L,                           //
+  k << 12, 6 * L, -12, 6 * L,                         //
+      6 * L, (4 + Phi) * L2, -6 * L, (2 - Phi) * L2,  //
+      -12, -6 * L, 12, -6 * L,                        //
       6 * L, (2 - Phi) * L2, -6 * L, (4 + Phi) * L2;
   return EI / ((1 + Phi) * L2 * L) * k;
 }
@@ -68,9 +69,9 @@ Matrix4 hermiteMass(double rhoA, double rhoI, double Phi, double L) {
   Matrix4 r;
   const double g = 6.0 / 5, h = (1.0 / 10 - P / 2) * L, i = (2.0 / 15 + P / 6 + P2 / 3) * L2,
                j = (-1.0 / 30 - P / 6 + P2 / 6) * L2;
-  r << g, h, -g, h,  //
-      h, i, -h, j,   //
-      -g, -h, g, -h, //
+  r << g, h, -g, h,   //
+      h, i, -h, j,    //
+      -g, -h, g, -h,  //
       h, j, -h, i;
   const double s = (1 + P) * (1 + P);
   return rhoA * L / s * t + rhoI / (s * L) * r;
@@ -95,6 +96,36 @@ Eigen::RowVector4d rotationShape(BeamTheory t, double Phi, double L, double xi) 
   return Eigen::RowVector4d(a, 3 * xi * xi - (4 + Phi) * xi + 1 + Phi, -a,
                             3 * xi * xi - (2 - Phi) * xi) /
          (1 + Phi);
+}
+
+/// Deflection v(xi) = N(xi) . (v1, theta1, v2, theta2) of the interpolation whose rotations
+/// rotationShape gives: for the interdependent element v' - theta is the element's constant
+/// shear strain (Friedman and Kosmatka 1993), Phi = 0 gives the Hermite cubics; the linear
+/// elements interpolate v linearly.
+Eigen::RowVector4d deflectionShape(BeamTheory t, double Phi, double L, double xi) {
+  if (isLinear(t)) return {1 - xi, 0, xi, 0};
+  const double x2 = xi * xi, x3 = x2 * xi;
+  return Eigen::RowVector4d(1 - 3 * x2 + 2 * x3 + Phi * (1 - xi),
+                            L * (xi - 2 * x2 + x3 + Phi * (xi - x2) / 2),
+                            3 * x2 - 2 * x3 + Phi * xi, L * (x3 - x2 - Phi * (xi - x2) / 2)) /
+         (1 + Phi);
+}
+
+/// Deflection and section rotation at x of an element clamped at both ends under a uniform
+/// load q per length in one bending plane (EI, shear parameter Phi = 12 EI / (kappa G A L^2)).
+/// From the Timoshenko beam equations EI theta'' + kappa G A (v' - theta) = 0 and
+/// kappa G A (v'' - theta') + q = 0 with v = theta = 0 at both ends:
+///   theta = q x (L - x) (L - 2x) / (12 EI),
+///   v = q x^2 (L - x)^2 / (24 EI) + q x (L - x) / (2 kappa G A),
+/// the shear term being Phi L^2 q x (L - x) / (24 EI); Phi = 0 gives Euler-Bernoulli. Its end
+/// forces are the fixed-end loads of localLoad(), so added to the end-loaded shapes it makes
+/// the field exact between the nodes.
+struct SpanBending {
+  double deflection, rotation;
+};
+SpanBending clampedSpanBending(double q, double EI, double Phi, double L, double x) {
+  const double a = x * (L - x);
+  return {q * a * (a + Phi * L * L) / (24 * EI), q * a * (L - 2 * x) / (12 * EI)};
 }
 
 /// Bending about local y uses theta = -ry = dw/dx: flip the rotation signs.
@@ -172,8 +203,7 @@ void Beam::buildDofs() {
       bool dropped = false;
       for (int r : released_) {
         const int axis = r % 6 - 3;
-        if (r / 6 == end && isRotation(d) &&
-            std::abs(R_(axis, dofIndex(d) - 3)) > 1 - 1e-12)
+        if (r / 6 == end && isRotation(d) && std::abs(R_(axis, dofIndex(d) - 3)) > 1 - 1e-12)
           dropped = true;
       }
       if (dropped) continue;
@@ -192,14 +222,20 @@ void Beam::release(int end, Dof rotation) {
   buildDofs();
 }
 
-void Beam::setDistributedLoad(const Eigen::Vector3d& q) { qLocal_ = R_ * q; }
+void Beam::setDistributedLoad(const Eigen::Vector3d& q) {
+  qLocal_ = R_ * q;
+}
 
 std::string Beam::kind() const {
   switch (options_.theory) {
-    case BeamTheory::eulerBernoulli: return "beam-eb";
-    case BeamTheory::timoshenko: return "beam-timoshenko";
-    case BeamTheory::timoshenkoLinearFullIntegration: return "beam-timoshenko-linear-full";
-    case BeamTheory::timoshenkoLinearReducedIntegration: return "beam-timoshenko-linear-reduced";
+    case BeamTheory::eulerBernoulli:
+      return "beam-eb";
+    case BeamTheory::timoshenko:
+      return "beam-timoshenko";
+    case BeamTheory::timoshenkoLinearFullIntegration:
+      return "beam-timoshenko-linear-full";
+    case BeamTheory::timoshenkoLinearReducedIntegration:
+      return "beam-timoshenko-linear-reduced";
   }
   return "beam";
 }
@@ -394,21 +430,72 @@ Vector12 Beam::toLocal(const ElementVector& u) const {
   return l;
 }
 
-SectionForces Beam::sectionForces(const ElementVector& u, double s) const {
-  // Forces the nodes exert on the element (local frame), then equilibrium of the part [0, x].
-  Matrix12 K = localStiffness();
-  Vector12 f = localLoad();
-  condense(K, nullptr, &f);
-  const Vector12 F = K * toLocal(u) - f;
-  const double x = s * L_;
+Vector12 Beam::localEndDisplacements(const ElementVector& u, SpanLoad load) const {
+  Vector12 l = toLocal(u);
+  if (released_.empty()) return l;
+  const Matrix12 K = localStiffness();
+  const Vector12 f = load == SpanLoad::applied ? localLoad() : Vector12::Zero();
+  for (int b : released_) l[b] = 0;  // a node may carry the axis: its value is not the end's
+  const int nb = int(released_.size());
+  Eigen::MatrixXd Kbb(nb, nb);
+  Eigen::VectorXd rhs(nb);
+  for (int i = 0; i < nb; ++i) {
+    rhs[i] = f[released_[i]] - K.row(released_[i]).dot(l);
+    for (int j = 0; j < nb; ++j) Kbb(i, j) = K(released_[i], released_[j]);
+  }
+  const Eigen::VectorXd lb = Kbb.ldlt().solve(rhs);
+  for (int i = 0; i < nb; ++i) l[released_[i]] = lb[i];
+  return l;
+}
+
+bool Beam::releases(int end) const {
+  return std::any_of(released_.begin(), released_.end(), [&](int r) { return r / 6 == end; });
+}
+
+std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, double s,
+                                                   SpanLoad load) const {
+  // 1. End values in the element frame; bending about local z interpolates (v, rz), about
+  //    local y (w, -ry) (right-hand rule: dw/dx = -ry).
+  const Vector12 l = localEndDisplacements(u, load);
+  const BeamTheory t = options_.theory;
+  const auto [phiY, phiZ] = shearParameters();
+  const Eigen::Vector4d xy(l[1], l[5], l[7], l[11]), xz(l[2], -l[4], l[8], -l[10]);
+  Eigen::Vector3d d((1 - s) * l[0] + s * l[6], (deflectionShape(t, phiY, L_, s) * xy).value(),
+                    (deflectionShape(t, phiZ, L_, s) * xz).value());
+  Eigen::Vector3d r((1 - s) * l[3] + s * l[9], -(rotationShape(t, phiZ, L_, s) * xz).value(),
+                    (rotationShape(t, phiY, L_, s) * xy).value());
+
+  // 2. The span load's share: a bar fixed at both ends (EA u'' + qx = 0) and, for the elements
+  //    with fixed-end moments, the clamped-clamped bending solution.
+  if (load == SpanLoad::applied && !qLocal_.isZero()) {
+    const Section& sec = *section_;
+    const double x = s * L_;
+    d.x() += qLocal_.x() * x * (L_ - x) / (2 * sec.EA());
+    if (!isLinear(t)) {
+      const SpanBending y = clampedSpanBending(qLocal_.y(), sec.EIz(), phiY, L_, x);
+      const SpanBending z = clampedSpanBending(qLocal_.z(), sec.EIy(), phiZ, L_, x);
+      d.y() += y.deflection;
+      r.z() += y.rotation;
+      d.z() += z.deflection;
+      r.y() -= z.rotation;
+    }
+  }
+
+  // 3. Back to the global frame.
+  const Eigen::Vector3d dg = R_.transpose() * d, rg = R_.transpose() * r;
+  return {dg.x(), dg.y(), dg.z(), rg.x(), rg.y(), rg.z()};
+}
+
+SectionForceSeries Beam::sectionForceSeries(const ElementVector& u) const {
+  // Forces the nodes exert on the element (local frame): K l - f with the released rotations
+  // recovered, which vanishes on their rows; then equilibrium of the part [0, x = s L].
+  const Vector12 F = localStiffness() * localEndDisplacements(u, SpanLoad::applied) - localLoad();
   const Eigen::Vector3d& q = qLocal_;
-  SectionForces r;
-  r.N = -(F[0] + q.x() * x);
-  r.Vy = -(F[1] + q.y() * x);
-  r.Vz = -(F[2] + q.z() * x);
-  r.T = -F[3];
-  r.My = -(F[4] + x * F[2] + q.z() * x * x / 2);
-  r.Mz = -F[5] + x * F[1] + q.y() * x * x / 2;
+  const double L = L_;
+  SectionForceSeries r;
+  r.c[0] = {-F[0], -F[1], -F[2], -F[3], -F[4], -F[5]};
+  r.c[1] = {-q.x() * L, -q.y() * L, -q.z() * L, 0, -L * F[2], L * F[1]};
+  r.c[2] = {0, 0, 0, 0, -q.z() * L * L / 2, q.y() * L * L / 2};
   return r;
 }
 

@@ -65,7 +65,15 @@ class Beam : public LineElement {
   double length() const override { return L_; }
   const Section& section() const override { return *section_; }
   Eigen::Matrix3d localAxes() const override { return R_; }
-  SectionForces sectionForces(const ElementVector& u, double s) const override;
+  SectionForceSeries sectionForceSeries(const ElementVector& u) const override;
+  /// Axial displacement and twist linear (plus the bar's share of an axial span load);
+  /// deflections and section rotations by the theory's own shape functions (Hermite cubics,
+  /// the interdependent interpolation, or linear), which are exact for end-loaded elements,
+  /// plus with `load` the clamped-clamped solution of the uniform span load (exact for
+  /// Euler-Bernoulli and interdependent Timoshenko elements; not added to the linear ones).
+  std::array<double, kDofKinds> displacementAt(const ElementVector& u, double s,
+                                               SpanLoad load) const override;
+  bool releases(int end) const override;
   const BeamOptions& options() const { return options_; }
 
   using Matrix12 = Eigen::Matrix<double, 12, 12>;
@@ -88,6 +96,10 @@ class Beam : public LineElement {
   /// Global 12 x 12 -> the carried dofs only.
   ElementMatrix toCarried(const Matrix12& local) const;
   Vector12 toLocal(const ElementVector& u) const;
+  /// The 12 local end displacements with every released rotation recovered from the
+  /// condensation: the released rows of K l = f (no end moment there) give
+  /// Kbb l_b = f_b - Kba l_a, f the span load's fixed-end forces when `load` is applied.
+  Vector12 localEndDisplacements(const ElementVector& u, SpanLoad load) const;
   void buildDofs();
 
   std::array<int, 2> nodes_;

@@ -17,6 +17,25 @@ inline double relError(double computed, double reference) {
   return std::abs(computed - reference) / std::abs(reference);
 }
 
+/// Discrete-to-exact frequency ratio of a simply supported uniform Euler-Bernoulli beam meshed
+/// with equal cubic Hermite elements of length h and consistent mass, for the mode of wave
+/// number k = n pi / L (the discrete dispersion relation). The nodal values w_j = sin(k x_j),
+/// theta_j = c cos(k x_j) satisfy every interior row of K - w^2 M (and the simply supported ends)
+/// when, per unit EI / h^3 and rho A h / 420, with C = cos(k h), S = sin(k h) and c scaled by h,
+///   K2 = [24 (1 - C), -12 S; -12 S, 8 + 4 C],   M2 = [312 + 108 C, 26 S; 26 S, 8 - 6 C],
+/// and the lower root mu of det(K2 - mu M2) = 0 gives w^2 = 420 mu EI / (rho A h^4); the exact
+/// w^2 is EI k^4 / (rho A). Asymptotically 1 + (k h)^4 / 1440.
+inline double hermiteSimplySupportedFrequencyRatio(double kh) {
+  const double C = std::cos(kh), S = std::sin(kh), oneMinusC = 2 * std::pow(std::sin(kh / 2), 2);
+  const double k11 = 24 * oneMinusC, k12 = -12 * S, k22 = 8 + 4 * C;
+  const double m11 = 312 + 108 * C, m12 = 26 * S, m22 = 8 - 6 * C;
+  // det = a mu^2 + b mu + c; the lower root in the cancellation-free form 2 c / (-b + sqrt(.)).
+  const double a = m11 * m22 - m12 * m12, b = -(k11 * m22 + k22 * m11 - 2 * k12 * m12);
+  const double c = 48 * oneMinusC * oneMinusC;  // k11 k22 - k12^2, without its cancellation
+  const double mu = 2 * c / (-b + std::sqrt(b * b - 4 * a * c));
+  return std::sqrt(420 * mu) / (kh * kh);
+}
+
 inline std::shared_ptr<const Section> steelCircle(double D) {
   return std::make_shared<Section>(
       Section::circle("d", Material::fromEnu("steel", 200e9, 0.3, 7850), D));

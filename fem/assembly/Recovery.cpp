@@ -4,16 +4,73 @@
 
 namespace beamrotor {
 
+ElementVector elementValues(const Element& element, const NodalField& field) {
+  const auto d = element.dofs();
+  ElementVector u(d.size());
+  for (int a = 0; a < int(d.size()); ++a) u[a] = field(d[a].node, dofIndex(d[a].dof));
+  return u;
+}
+
+std::array<double, kDofKinds> displacementAlong(const LineElement& element, const NodalField& field,
+                                                double s, SpanLoad load) {
+  return element.displacementAt(elementValues(element, field), s, load);
+}
+
+namespace {
+
+/// Fills the sides of the nodes in `sides` (indexed by node; the others null) from the line
+/// elements ending or starting there.
+void fillSides(const Model& model, const NodalField& displacement,
+               std::vector<SideRotations*>& sides) {
+  for (const auto& e : model.elements()) {
+    const LineElement* line = asLine(e);
+    if (!line) continue;
+    for (int end : {0, 1}) {
+      SideRotations* at = sides[line->endNodes()[end]];
+      if (!at) continue;
+      std::optional<Eigen::Vector3d>& side = end == 1 ? at->left : at->right;
+      if (side) continue;  // the first element in model order on that side
+      const auto u = displacementAlong(*line, displacement, end, SpanLoad::applied);
+      side = Eigen::Vector3d(u[3], u[4], u[5]);
+    }
+  }
+}
+
+}  // namespace
+
+SideRotations rotationsBeside(const Model& model, const NodalField& displacement, int node) {
+  SideRotations out{node, {}, {}};
+  std::vector<SideRotations*> sides(model.nodeCount(), nullptr);
+  sides.at(node) = &out;
+  fillSides(model, displacement, sides);
+  return out;
+}
+
+std::vector<SideRotations> hingeRotations(const Model& model, const NodalField& displacement) {
+  std::vector<bool> hinged(model.nodeCount(), false);
+  for (const auto& e : model.elements())
+    if (const LineElement* line = asLine(e))
+      for (int end : {0, 1})
+        if (line->releases(end)) hinged[line->endNodes()[end]] = true;
+  std::vector<SideRotations> out;
+  for (int n = 0; n < model.nodeCount(); ++n)
+    if (hinged[n]) out.push_back({n, {}, {}});
+  if (out.empty()) return out;
+  std::vector<SideRotations*> sides(model.nodeCount(), nullptr);
+  for (SideRotations& s : out) sides[s.node] = &s;
+  fillSides(model, displacement, sides);
+  return out;
+}
+
 std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField& displacement,
                                            int perElement) {
   std::vector<BeamStation> out;
   const auto& elements = model.elements();
   for (int i = 0; i < int(elements.size()); ++i) {
-    const auto* beam = dynamic_cast<const LineElement*>(elements[i].get());
+    const LineElement* beam = asLine(elements[i]);
     if (!beam) continue;
-    const auto d = beam->dofs();
-    ElementVector u(d.size());
-    for (int a = 0; a < int(d.size()); ++a) u[a] = displacement(d[a].node, dofIndex(d[a].dof));
+    const ElementVector u = elementValues(*beam, displacement);
+    const SectionForceSeries forces = beam->sectionForceSeries(u);
     const auto [n1, n2] = beam->endNodes();
     const Eigen::Vector3d x1 = model.nodes()[n1], x2 = model.nodes()[n2];
     for (int k = 0; k <= perElement; ++k) {
@@ -21,7 +78,8 @@ std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField&
       st.element = i;
       st.s = double(k) / perElement;
       st.position = x1 + st.s * (x2 - x1);
-      st.forces = beam->sectionForces(u, st.s);
+      st.displacement = beam->displacementAt(u, st.s, SpanLoad::applied);
+      st.forces = forces.at(st.s);
       st.stress = maxNormalStress(beam->section(), st.forces);
       st.shear = maxShearStress(beam->section(), st.forces);
       out.push_back(st);

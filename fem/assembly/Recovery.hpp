@@ -1,7 +1,9 @@
-// Element recovery: stress resultants and outer-fibre stress at stations along every line
-// element, from a solved displacement field.
+// Element recovery: what a solved nodal field means along the line elements. Displacements
+// between the nodes by each element's own interpolation (with a hinge's own end rotation),
+// the rotations on the two sides of a node, and stress resultants and stresses at stations.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "fem/model/LineElement.hpp"
@@ -10,18 +12,35 @@
 
 namespace beamrotor {
 
+/// An element's nodal values, ordered as its dofs(), from a nodal field.
+ElementVector elementValues(const Element& element, const NodalField& field);
+
+/// Displacements (global frame, ux uy uz (m), rx ry rz (rad)) at fraction s of a line element
+/// from a nodal field: LineElement::displacementAt, so exact nodal values at the ends (a
+/// released end rotation being the element's own) and the element's interpolation between.
+std::array<double, kDofKinds> displacementAlong(const LineElement& element, const NodalField& field,
+                                                double s, SpanLoad load);
+
+/// The rotations on the two sides of a node (see SideRotations), each beam end's own.
+SideRotations rotationsBeside(const Model& model, const NodalField& displacement, int node);
+
+/// The side rotations at every node where a line element releases a rotation (a hinge), in
+/// node order.
+std::vector<SideRotations> hingeRotations(const Model& model, const NodalField& displacement);
+
 /// Fields at one station of one line element.
 struct BeamStation {
-  int element = -1;          ///< index into model.elements()
-  double s = 0;              ///< fraction of the element's length, 0..1
-  Eigen::Vector3d position;  ///< global coordinates (m)
-  SectionForces forces;      ///< local frame, see SectionForces
-  double stress = 0;         ///< largest |normal stress| on the outer fibres (Pa)
-  double shear = 0;          ///< largest transverse shear stress (Pa), see maxShearStress
+  int element = -1;                              ///< index into model.elements()
+  double s = 0;                                  ///< fraction of the element's length, 0..1
+  Eigen::Vector3d position;                      ///< global coordinates (m)
+  std::array<double, kDofKinds> displacement{};  ///< global frame, see displacementAlong
+  SectionForces forces;                          ///< local frame, see SectionForces
+  double stress = 0;  ///< largest |normal stress| on the outer fibres (Pa)
+  double shear = 0;   ///< largest transverse shear stress (Pa), see maxShearStress
 };
 
-/// Samples every line element at `perElement` + 1 evenly spaced stations (ends included),
-/// in element order. Other elements (springs, masses) are skipped.
+/// Samples a static solution on every line element at `perElement` + 1 evenly spaced
+/// stations (ends included), in element order. Other elements (springs, masses) are skipped.
 std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField& displacement,
                                            int perElement = 1);
 

@@ -4,6 +4,14 @@
 
 namespace beamrotor {
 
+SectionForces SectionForceSeries::at(double s) const {
+  const auto value = [&](double SectionForces::*f) {
+    return c[0].*f + s * (c[1].*f + s * c[2].*f);
+  };
+  return {value(&SectionForces::N), value(&SectionForces::Vy), value(&SectionForces::Vz),
+          value(&SectionForces::T), value(&SectionForces::My), value(&SectionForces::Mz)};
+}
+
 double maxNormalStress(const Section& s, const SectionForces& f) {
   const double axial = std::abs(f.N) / s.A;
   if (s.shape == Section::Shape::circle || s.shape == Section::Shape::tube)

@@ -17,6 +17,20 @@ struct SectionForces {
   double N = 0, Vy = 0, Vz = 0, T = 0, My = 0, Mz = 0;
 };
 
+/// Resultants along an element as polynomials in s, the fraction of its length:
+/// value(s) = c[0] + c[1] s + c[2] s^2 component by component. Under the span loads the
+/// elements carry (uniform per length) the forces are at most linear and the moments at most
+/// quadratic, so three coefficients are exact.
+struct SectionForceSeries {
+  std::array<SectionForces, 3> c;
+  SectionForces at(double s) const;
+};
+
+/// Whether the element's own span load is part of a displacement field: a static solution
+/// carries it (the deflection between the nodes includes the load's local bending), a mode
+/// shape or any other field of the nodes alone does not.
+enum class SpanLoad { applied, none };
+
 /// Largest |normal stress| over the section's outer fibres (Pa): |N|/A plus bending.
 /// Circular and tubular sections bend about the resultant axis: M = sqrt(My^2 + Mz^2).
 double maxNormalStress(const Section& s, const SectionForces& f);
@@ -30,9 +44,26 @@ class LineElement : public Element {
   virtual const Section& section() const = 0;
   /// Rows are the local x, y, z axes in global coordinates.
   virtual Eigen::Matrix3d localAxes() const = 0;
-  /// Resultants at fraction s in [0, 1] of the length, from the element's nodal
-  /// displacements u (global frame, ordered as dofs()).
-  virtual SectionForces sectionForces(const ElementVector& u, double s) const = 0;
+  /// Resultants along the element from its nodal displacements u (global frame, ordered as
+  /// dofs()), span load included.
+  virtual SectionForceSeries sectionForceSeries(const ElementVector& u) const = 0;
+  /// Resultants at fraction s in [0, 1] of the length (sectionForceSeries at s).
+  SectionForces sectionForces(const ElementVector& u, double s) const {
+    return sectionForceSeries(u).at(s);
+  }
+  /// Displacements (global frame: ux uy uz (m), rx ry rz (rad)) at fraction s of the length,
+  /// from the nodal displacements u (ordered as dofs()) by the element's own interpolation,
+  /// with the span load's share when `load` is applied. A released end (a hinge) has its own
+  /// rotation, recovered from the element's condensation, not its node's.
+  virtual std::array<double, kDofKinds> displacementAt(const ElementVector& u, double s,
+                                                       SpanLoad load) const = 0;
+  /// Whether some rotation of end 0 (start) or 1 (end) is released (a hinge).
+  virtual bool releases(int end) const = 0;
 };
+
+/// The element as a line element, or null (springs, masses, bearings).
+inline const LineElement* asLine(const std::unique_ptr<Element>& e) {
+  return dynamic_cast<const LineElement*>(e.get());
+}
 
 }  // namespace beamrotor

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,10 +52,20 @@ struct ContactState {
   double force = 0;     ///< force or moment the stop exerts (N or N m; 0 when open)
 };
 
+/// The rotations on the two sides of a node: the rotation vector (global frame, rad) of the
+/// line-element end there, `left` of the element ending at the node, `right` of the one
+/// starting there (empty where there is none). At a hinge they differ, and the node itself may
+/// carry no rotation at all.
+struct SideRotations {
+  int node = -1;
+  std::optional<Eigen::Vector3d> left, right;
+};
+
 struct StaticResult {
   NodalField displacement;                   ///< m and rad
   std::vector<ReactionComponent> reactions;  ///< every constrained dof, in support order
   std::vector<ContactState> contacts;        ///< settled contact states, in model order
+  std::vector<SideRotations> hinges;         ///< at every node with a released beam end
   int activeSetIterations = 0;               ///< linear solves the contact loop needed
   double rcond = 0;                          ///< the solver's reciprocal condition estimate
   std::string solver;                        ///< the direct method used (LinearSolver)

@@ -1,5 +1,6 @@
 #include "fem/static/Static.hpp"
 
+#include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/static/ActiveSet.hpp"
 #include "fem/static/LinearStatics.hpp"
@@ -36,6 +37,7 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
     for (const PrescribedDof& p : s.dofs)
       result.reactions.push_back({s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof)]});
   result.displacement = toNodalField(model, dofs, u);
+  result.hinges = hingeRotations(model, result.displacement);
   result.rcond = system.rcond();
   result.solver = system.solverName();
   result.size = systemSize(model, dofs, system.stiffness(), system.factorEntries());

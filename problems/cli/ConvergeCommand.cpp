@@ -13,8 +13,8 @@ namespace beamrotor::cli {
 namespace {
 
 void printStudy(std::ostream& out, const ConvergeStudy& s) {
-  out << "converge " << s.deckPath << ": " << s.quantity << " (analysis " << s.analysis
-      << "), reference: "
+  out << "converge " << s.deckPath << ": " << s.quantity << " (analysis " << s.analysis << "; "
+      << s.choice << "), refining the " << s.refinement << ", reference: "
       << (s.check.empty() ? "Richardson-extrapolated per method (estimate)"
                           : "closed form of check '" + s.check + "'")
       << "\n";
@@ -24,9 +24,14 @@ void printStudy(std::ostream& out, const ConvergeStudy& s) {
                   series.reference);
     out << line;
     for (const ConvergeLevel& l : series.levels) {
-      std::snprintf(line, sizeof line,
-                    "  level %d: %6d elements %7d dofs  %.6e s  value %.12g  error %.3e", l.level,
-                    l.elements, l.dofs, l.total, l.value, l.error);
+      if (l.steps > 0)
+        std::snprintf(line, sizeof line,
+                      "  level %d: %8d steps %7d dofs  %.6e s  value %.12g  error %.3e", l.level,
+                      l.steps, l.dofs, l.total, l.value, l.error);
+      else
+        std::snprintf(line, sizeof line,
+                      "  level %d: %6d elements %7d dofs  %.6e s  value %.12g  error %.3e", l.level,
+                      l.elements, l.dofs, l.total, l.value, l.error);
       out << line;
       if (l.order) {
         std::snprintf(line, sizeof line, "  order %.2f", *l.order);

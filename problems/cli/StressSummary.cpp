@@ -24,29 +24,31 @@ std::string segmentAt(const Deck& deck, double x, const std::string& section) {
   return section;
 }
 
-/// The most stressed station of one kind and the run it belongs to.
+/// The largest stress of one kind and the run it belongs to.
 struct Peak {
   std::size_t run = 0;
-  StaticStation station;
-  double value = -1;  ///< Pa; negative: none
+  LinePeak peak;
+  bool found = false;  ///< false: no beams
 };
 
-/// Largest normal (first) and shear (second) stress of a static solution.
+/// Largest normal (first) and shear (second) stress of a static solution: exact element peaks.
 std::pair<Peak, Peak> peaksOf(const Model& model, const StaticResult& r, std::size_t run) {
-  const std::vector<StaticStation> stations = sampleStatics(model, r.displacement);
-  std::pair<Peak, Peak> peaks;
-  if (const auto top = largestStress(stations)) peaks.first = {run, *top, top->stress};
-  if (const auto top = largestShear(stations)) peaks.second = {run, *top, top->shear};
-  return peaks;
+  const std::vector<ElementPeaks> peaks = elementPeaks(model, r.displacement);
+  std::pair<Peak, Peak> out;
+  if (const auto top = largestAlongLine(model, peaks, &ElementPeaks::stress))
+    out.first = {run, *top, true};
+  if (const auto top = largestAlongLine(model, peaks, &ElementPeaks::shear))
+    out.second = {run, *top, true};
+  return out;
 }
 
 /// "  largest normal stress 12.3 MPa at x = 0.575 m (rod)" without the line's end.
 void printPeak(std::ostream& out, const char* what, const Deck& deck, const Model& model,
                const Peak& p) {
-  const auto& line = static_cast<const LineElement&>(*model.elements()[p.station.place.element]);
-  out << "  largest " << what << " " << formatValue(p.value * 1e-6)
-      << " MPa at x = " << formatValue(p.station.place.x) << " m ("
-      << segmentAt(deck, p.station.place.x, line.section().name) << ")";
+  const LineElement& line = *asLine(model.elements()[p.peak.place.element]);
+  out << "  largest " << what << " " << formatValue(p.peak.value * 1e-6)
+      << " MPa at x = " << formatValue(p.peak.place.x) << " m ("
+      << segmentAt(deck, p.peak.place.x, line.section().name) << ")";
 }
 
 const StaticResult* firstStatic(const RunResult& r) {
@@ -60,7 +62,7 @@ const StaticResult* firstStatic(const RunResult& r) {
 void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
                       const StaticResult& statics) {
   const auto [normal, shear] = peaksOf(model, statics, 0);
-  if (normal.value < 0) return;  // no beams
+  if (!normal.found) return;  // no beams
   printPeak(out, "normal stress", deck, model, normal);
   out << "\n";
   printPeak(out, "shear stress ", deck, model, shear);
@@ -72,12 +74,12 @@ void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResul
   for (std::size_t k = 0; k < sweep.runs.size(); ++k)
     if (const StaticResult* s = firstStatic(sweep.runs[k])) {
       const auto [n, t] = peaksOf(*sweep.runs[k].model, *s, k);
-      if (n.value > normal.value) normal = n;
-      if (t.value > shear.value) shear = t;
+      if (n.found && (!normal.found || n.peak.value > normal.peak.value)) normal = n;
+      if (t.found && (!shear.found || t.peak.value > shear.peak.value)) shear = t;
     }
   for (const auto& [what, peak] :
        {std::pair{"normal stress", &normal}, std::pair{"shear stress ", &shear}}) {
-    if (peak->value < 0) continue;
+    if (!peak->found) continue;
     printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak);
     out << " at " << sweep.parameter << " = " << formatValue(sweep.values[peak->run]) << "\n";
   }

@@ -5,17 +5,21 @@
 #include <cstdio>
 
 #include "problems/cli/AdequateSummary.hpp"
-#include "problems/cli/TransientSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/cli/StressSummary.hpp"
+#include "problems/cli/TransientSummary.hpp"
 
 namespace beamrotor::cli {
 
 namespace {
 
 /// Unit of a reaction component and of a displacement component.
-const char* forceUnit(Dof d) { return isRotation(d) ? "N m" : "N"; }
-const char* motionUnit(Dof d) { return isRotation(d) ? "rad" : "m"; }
+const char* forceUnit(Dof d) {
+  return isRotation(d) ? "N m" : "N";
+}
+const char* motionUnit(Dof d) {
+  return isRotation(d) ? "rad" : "m";
+}
 
 SystemSize sizeOf(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses) {
@@ -32,14 +36,16 @@ std::vector<std::pair<std::string, std::vector<ReactionComponent>>> bySupport(
     const StaticResult& r) {
   std::vector<std::pair<std::string, std::vector<ReactionComponent>>> out;
   for (const ReactionComponent& c : r.reactions) {
-    auto it = std::find_if(out.begin(), out.end(), [&](const auto& s) { return s.first == c.support; });
+    auto it =
+        std::find_if(out.begin(), out.end(), [&](const auto& s) { return s.first == c.support; });
     if (it == out.end()) it = out.insert(out.end(), {c.support, {}});
     it->second.push_back(c);
   }
   // Components in dof order (ux before rz), whatever order the deck listed them in.
   for (auto& [support, components] : out)
-    std::stable_sort(components.begin(), components.end(),
-                     [](const auto& a, const auto& b) { return dofIndex(a.dof) < dofIndex(b.dof); });
+    std::stable_sort(components.begin(), components.end(), [](const auto& a, const auto& b) {
+      return dofIndex(a.dof) < dofIndex(b.dof);
+    });
   return out;
 }
 
@@ -63,20 +69,30 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
   for (const auto& [support, components] : bySupport(r)) {
     out << "    " << padded(support, 12);
     for (const ReactionComponent& c : components)
-      out << padded(std::string(dofName(c.dof)) + " " + formatValue(c.value) + " " +
-                        forceUnit(c.dof),
-                    22);
+      out << padded(
+          std::string(dofName(c.dof)) + " " + formatValue(c.value) + " " + forceUnit(c.dof), 22);
     out << "\n";
   }
   out << "  displacements at points (m, rad):\n";
   for (const DeckPoint* p : reportedPoints(deck)) {
     const int node = run.model->node(p->name);
     out << "    " << padded(p->name, 12) << padded("x = " + formatValue(p->at) + " m", 16);
-    for (Dof d : kAllDofs)
-      if (deck.dofs.contains(d))
-        out << padded(std::string(dofName(d)) + " " + formatValue(r.displacement(node, dofIndex(d))) +
-                          " " + motionUnit(d),
-                      22);
+    const auto hinge = std::find_if(r.hinges.begin(), r.hinges.end(),
+                                    [&](const SideRotations& h) { return h.node == node; });
+    for (Dof d : kAllDofs) {
+      if (!deck.dofs.contains(d)) continue;
+      const std::string name(dofName(d));
+      if (!isRotation(d) || hinge == r.hinges.end()) {
+        out << padded(
+            name + " " + formatValue(r.displacement(node, dofIndex(d))) + " " + motionUnit(d), 22);
+        continue;
+      }
+      // A hinge: the beam end on each side turns on its own.
+      for (const auto& [side, value] :
+           {std::pair{" left ", &hinge->left}, std::pair{" right ", &hinge->right}})
+        if (*value)
+          out << padded(name + side + formatValue((**value)[dofIndex(d) - 3]) + " rad", 26);
+    }
     out << "\n";
   }
   if (!r.contacts.empty()) {
@@ -105,8 +121,9 @@ void printModal(std::ostream& out, const AnalysisOutcome& a) {
   const ModalResult& m = *a.modal;
   out << "modal analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
   for (std::size_t i = 0; i < m.modes.size(); ++i)
-    out << "    mode " << padded(std::to_string(i + 1), 4) << padded(formatValue(m.modes[i].frequencyHz) + " Hz", 16)
-        << m.modes[i].description << "\n";
+    out << "    mode " << padded(std::to_string(i + 1), 4)
+        << padded(formatValue(m.modes[i].frequencyHz) + " Hz", 16) << m.modes[i].description
+        << "\n";
 }
 
 const DeckCheck* findCheck(const Deck& deck, const std::string& name) {
@@ -153,8 +170,8 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   const RunResult& first = sweep.runs.front();
   const SystemSize size = sizeOf(first);
   out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
-      << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free) at "
-      << sweep.parameter << " = " << formatValue(sweep.values.front()) << "\n";
+      << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free) at " << sweep.parameter
+      << " = " << formatValue(sweep.values.front()) << "\n";
   out << "sweep over " << sweep.parameter << ": " << sweep.runs.size() << " values\n";
 
   // Columns: the reactions of the first static analysis, the frequencies of the first modal.
@@ -163,11 +180,13 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   std::vector<std::string> headers{sweep.parameter};
   for (const auto& [name, value] : first.reported) headers.push_back(name);
   auto staticOf = [](const RunResult& r) -> const StaticResult* {
-    for (const auto& a : r.analyses) if (a.statics) return &*a.statics;
+    for (const auto& a : r.analyses)
+      if (a.statics) return &*a.statics;
     return nullptr;
   };
   auto modalOf = [](const RunResult& r) -> const ModalResult* {
-    for (const auto& a : r.analyses) if (a.modal) return &*a.modal;
+    for (const auto& a : r.analyses)
+      if (a.modal) return &*a.modal;
     return nullptr;
   };
   if (const StaticResult* s = staticOf(first))
@@ -215,8 +234,8 @@ int printChecks(std::ostream& out, const Deck& deck, const std::vector<const Run
       const bool ok = c.pass();
       (ok ? passed : failed)++;
       out << "  " << (ok ? "PASS  " : "FAIL  ") << prefix << padded(c.name, nameWidth)
-          << padded(c.quantity, quantityWidth) << padded(formatValue(c.computed), 14)
-          << "ref " << padded(formatValue(c.reference), 14) << "rel.err "
+          << padded(c.quantity, quantityWidth) << padded(formatValue(c.computed), 14) << "ref "
+          << padded(formatValue(c.reference), 14) << "rel.err "
           << padded(scientific(c.relError()), 10) << "tol " << scientific(c.tolerance) << "\n";
     }
     if (runs.size() == 1)

@@ -57,6 +57,8 @@ Json convergenceJson(const ConvergeStudy& study) {
   doc["quantity"] = study.quantity;
   doc["analysis"] = study.analysis;
   doc["check"] = study.check.empty() ? Json(nullptr) : Json(study.check);
+  doc["choice"] = study.choice;
+  doc["refinement"] = study.refinement;
   doc["reference_kind"] = study.check.empty() ? "richardson" : "closed form";
   Json methods = Json::array();
   for (const ConvergeSeries& s : study.series) {
@@ -70,6 +72,7 @@ Json convergenceJson(const ConvergeStudy& study) {
       levels.push_back({{"level", l.level},
                         {"elements", l.elements},
                         {"dofs", l.dofs},
+                        {"steps", l.steps},
                         {"runs", l.runs},
                         {"time_s",
                          {{"assembly", l.assembly},
@@ -92,6 +95,7 @@ CsvTable convergenceTable(const ConvergeSeries& series) {
   CsvTable table(csvName(series), {{"level", ""},
                                    {"elements", ""},
                                    {"dofs", ""},
+                                   {"steps", ""},
                                    {"assembly", "s"},
                                    {"factor", "s"},
                                    {"solve", "s"},
@@ -100,8 +104,8 @@ CsvTable convergenceTable(const ConvergeSeries& series) {
                                    {"rel_error", ""}});
   for (const ConvergeLevel& l : series.levels)
     table.addRow({static_cast<long long>(l.level), static_cast<long long>(l.elements),
-                  static_cast<long long>(l.dofs), l.assembly, l.factor, l.solve, l.total, l.value,
-                  l.error});
+                  static_cast<long long>(l.dofs), static_cast<long long>(l.steps), l.assembly,
+                  l.factor, l.solve, l.total, l.value, l.error});
   return table;
 }
 
@@ -113,7 +117,11 @@ void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::
   writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
     writeJson(doc, temporary / kConvergenceJson);
     for (const CsvTable& t : tables) t.write(temporary / t.title());
-    drawChart(temporary, errorChart(study, "convergence_dofs", "dofs", "free dofs"));
+    // The size of the discretisation: free dofs on a mesh, steps in time.
+    if (study.refinement == "time step")
+      drawChart(temporary, errorChart(study, "convergence_dofs", "steps", "time steps"));
+    else
+      drawChart(temporary, errorChart(study, "convergence_dofs", "dofs", "free dofs"));
     drawChart(temporary, errorChart(study, "convergence_time", "total", "wall time (total) [s]"));
   });
 }

@@ -2,21 +2,25 @@
 //
 // convergence.json (other tools read it, e.g. the verification report; keep it stable):
 //   deck {name, path}, quantity (deck syntax, e.g. "frequency 1"), analysis (its name),
-//   check (the check whose reference is the closed form, or null),
+//   check (the check whose reference is the closed form, or null), choice (how the quantity
+//   was chosen), refinement ("mesh", or "time step" for a transient quantity),
 //   reference_kind ("closed form" or "richardson": extrapolated per method from its three
 //   finest levels, an estimate),
 //   methods [{name ("eb-consistent", "eb-lumped", "timoshenko", "timoshenko-linear-full",
-//             "timoshenko-linear-reduced"), label, reference, extrapolation_order (or null),
-//             levels [{level, elements, dofs (free), runs, time_s {assembly, factor, solve,
+//             "timoshenko-linear-reduced"; "time-step" in a time-step study), label, reference,
+//             extrapolation_order (or null), levels [{level, elements, dofs (free), steps (time
+//             steps; 0 in mesh
+//                      studies), runs, time_s {assembly, factor, solve,
 //                      total} (medians over the runs; modal: the factorisation is inside
 //                      solve), value, rel_error, order (observed against the previous level,
 //                      or null)}],
 //             failure (null, or why the method stopped before the last level)}],
 //   beamrotor_version.
-// convergence_<method name>.csv: one row per level solved: level, elements, dofs, assembly,
+// convergence_<method name>.csv: one row per level solved: level, elements, dofs, steps, assembly,
 //   factor, solve, total [s], value, rel_error.
 // convergence_dofs.{gp,svg,png}: relative error against free dofs, log-log, one line per
-//   method; convergence_time.{gp,svg,png}: relative error against wall time (total).
+//   method (against time steps in a time-step study); convergence_time.{gp,svg,png}: relative error
+//   against wall time (total).
 #pragma once
 
 #include <filesystem>

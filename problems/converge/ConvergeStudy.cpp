@@ -12,57 +12,185 @@ namespace beamrotor {
 
 namespace {
 
+/// A quantity that changes by less than this (relative) when the discretisation is refined
+/// once does not depend on it: far above the round-off of the shipped models' solves
+/// (~1e-13), far below any discretisation error worth a study.
+constexpr double kDiscretisationChange = 1e-9;
+
+const DeckPlace kQuantityOption{0, 0, "--quantity"};
+
 /// The quantity, the analysis it reads and the check giving its closed form (if any).
 struct Target {
   Quantity quantity;
   const DeckAnalysis* analysis = nullptr;
   const DeckCheck* check = nullptr;
+  std::string choice;  ///< how it was chosen
 };
 
-Target resolveTarget(const Deck& deck, const std::string& text) {
-  const DeckPlace option{0, 0, "--quantity"};
-  Target t;
-  for (const DeckCheck& k : deck.checks)
-    if (k.applicable && (text.empty() || k.quantity.text == text)) {
-      t.check = &k;
-      break;
-    }
-  if (text.empty() && !t.check)
-    throw DeckError(deck.path, option, "the deck has no check to take a quantity from; name one");
-  try {
-    t.quantity = t.check ? t.check->quantity : parseQuantity(text);
-  } catch (const std::invalid_argument& e) {
-    throw DeckError(deck.path, option, e.what());
-  }
-  for (const DeckAnalysis& a : deck.analyses)
-    if (t.check ? a.name == t.check->analysis : t.quantity.readsFrom(a.type)) {
-      t.analysis = &a;
-      break;
-    }
-  if (!t.analysis)
-    throw DeckError(deck.path, option, "no analysis of the deck gives '" + t.quantity.text + "'");
-  if (t.analysis->type != "static" && t.analysis->type != "modal")
-    throw DeckError(deck.path, option,
-                    "'" + t.quantity.text + "' reads a " + t.analysis->type +
-                        " analysis; converge studies static and modal quantities");
-  return t;
+/// Time-step studies for transient analyses, mesh studies for the others.
+bool refinesTimeStep(const DeckAnalysis& a) {
+  return a.transient.has_value();
 }
 
-/// The deck reduced to the one analysis, without checks, sweep or accuracy target.
-Deck studyDeck(const Deck& deck, const Target& t) {
+/// Which analyses a study can refine: every kind but the rigid-body properties (integrals of
+/// the section, the same on any mesh).
+bool studiable(const DeckAnalysis& a) {
+  return a.type != "rigid-body";
+}
+
+const DeckAnalysis* analysisNamed(const Deck& deck, const std::string& name) {
+  for (const DeckAnalysis& a : deck.analyses)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+/// The deck's own check quantities in order (applicable ones, of analyses a study refines),
+/// then one natural quantity per analysis: the lowest frequency of a modal or rotor analysis,
+/// the largest stress of a static one with beams, the first history's largest |value| of a
+/// transient one.
+std::vector<Target> candidates(const Deck& deck) {
+  std::vector<Target> out;
+  for (const DeckCheck& k : deck.checks) {
+    const DeckAnalysis* a = analysisNamed(deck, k.analysis);
+    if (k.applicable && a && studiable(*a)) out.push_back({k.quantity, a, &k, ""});
+  }
+  for (const DeckAnalysis& a : deck.analyses) {
+    std::string text;
+    if (a.type == "modal" || a.type == "rotor") text = "frequency 1";
+    if (a.type == "static" && !deck.segments.empty()) text = "stress max";
+    if (a.transient && !a.transient->histories.empty())
+      text = "history " + a.transient->histories.front().name + " maxabs";
+    if (!text.empty()) out.push_back({parseQuantity(text), &a, nullptr, ""});
+  }
+  return out;
+}
+
+/// The deck reduced to the given analyses, without checks, sweep or accuracy target.
+Deck studyDeck(const Deck& deck, const std::vector<const DeckAnalysis*>& analyses) {
   Deck d = deck;
-  d.analyses = {*t.analysis};
+  d.analyses.clear();
+  for (const DeckAnalysis* a : analyses) d.analyses.push_back(*a);
   d.checks.clear();
   d.sweep.reset();
   d.accuracy.reset();  // the study chooses the meshes itself
   return d;
 }
 
-const SolveTimings& timingsOf(const AnalysisOutcome& a) {
-  return a.statics ? a.statics->time : a.modal->time;
+/// The candidate's value in a run, or nullopt when the run cannot give it.
+std::optional<double> valueIn(const RunResult& run, const Target& t) {
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.name == t.analysis->name) try {
+        const double v = measure(t.quantity, a, *run.model);
+        if (std::isfinite(v)) return v;
+      } catch (const std::exception&) {
+      }
+  return std::nullopt;
 }
-const SystemSize& sizeOf(const AnalysisOutcome& a) {
-  return a.statics ? a.statics->size : a.modal->size;
+
+/// Relative change of each candidate of one kind of refinement between the deck's own
+/// discretisation and the next level (nullopt: not measurable there).
+void measureChanges(const Deck& deck, const std::vector<Target>& all, bool timeStep,
+                    std::vector<std::optional<double>>& change) {
+  std::vector<const DeckAnalysis*> analyses;
+  for (const Target& t : all)
+    if (refinesTimeStep(*t.analysis) == timeStep &&
+        std::find(analyses.begin(), analyses.end(), t.analysis) == analyses.end())
+      analyses.push_back(t.analysis);
+  if (analyses.empty()) return;
+  const Deck coarse = studyDeck(deck, analyses);
+  Deck fine = coarse;
+  timeStep ? refineTimeStep(fine, 1) : refineMesh(fine, 1);
+  RunResult a, b;
+  try {
+    a = runDeck(coarse);
+    b = runDeck(fine);
+  } catch (const DeckError&) {
+    return;  // e.g. an explicit step the finer mesh makes unstable: no candidate here
+  } catch (const DeckSolveError&) {
+    return;
+  }
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (refinesTimeStep(*all[i].analysis) != timeStep) continue;
+    const auto u = valueIn(a, all[i]), v = valueIn(b, all[i]);
+    if (u && v) change[i] = std::abs(*v - *u) / std::max(std::abs(*u), 1e-300);
+  }
+}
+
+/// The first candidate that depends on the discretisation, or the first one at all.
+Target defaultTarget(const Deck& deck) {
+  const std::vector<Target> all = candidates(deck);
+  if (all.empty())
+    throw DeckError(deck.path, kQuantityOption,
+                    "the deck has no static, modal, rotor or transient quantity to study; name "
+                    "one");
+  std::vector<std::optional<double>> change(all.size());
+  measureChanges(deck, all, false, change);
+  measureChanges(deck, all, true, change);
+  const auto describe = [&](const Target& t) {
+    return t.check ? "check '" + t.check->name + "'" : "analysis '" + t.analysis->name + "'";
+  };
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (change[i] && *change[i] > kDiscretisationChange) {
+      Target t = all[i];
+      char text[96];
+      std::snprintf(text, sizeof text, "%.2g", *change[i]);
+      t.choice = "the first quantity of the deck that changes with the " +
+                 std::string(refinesTimeStep(*t.analysis) ? "time step" : "mesh") + " (" +
+                 describe(t) + "; " + text + " relative on the first refinement)";
+      return t;
+    }
+  // Nothing changes: every candidate is exact on the deck's own discretisation.
+  const auto first = std::find_if(change.begin(), change.end(), [](auto c) { return c; });
+  Target t = all[first == change.end() ? 0 : first - change.begin()];
+  t.choice =
+      "no quantity of the deck changes with the discretisation beyond round-off (its "
+      "elements are exact here); " +
+      describe(t) + " shown, its errors are round-off";
+  return t;
+}
+
+Target resolveTarget(const Deck& deck, const std::string& text) {
+  if (text.empty()) return defaultTarget(deck);
+  Target t;
+  for (const DeckCheck& k : deck.checks)
+    if (k.applicable && k.quantity.text == text) {
+      t.check = &k;
+      break;
+    }
+  try {
+    t.quantity = t.check ? t.check->quantity : parseQuantity(text);
+  } catch (const std::invalid_argument& e) {
+    throw DeckError(deck.path, kQuantityOption, e.what());
+  }
+  t.analysis = t.check ? analysisNamed(deck, t.check->analysis) : nullptr;
+  for (const DeckAnalysis& a : deck.analyses)
+    if (!t.analysis && t.quantity.readsFrom(a.type)) t.analysis = &a;
+  if (!t.analysis)
+    throw DeckError(deck.path, kQuantityOption,
+                    "no analysis of the deck gives '" + t.quantity.text + "'");
+  if (!studiable(*t.analysis))
+    throw DeckError(deck.path, kQuantityOption,
+                    "'" + t.quantity.text + "' reads a " + t.analysis->type +
+                        " analysis, which is the same on every mesh");
+  t.choice = "as asked (--quantity)";
+  return t;
+}
+
+/// What one solve of the studied analysis cost.
+struct SolveCost {
+  SolveTimings time;
+  SystemSize size;
+};
+
+SolveCost costOf(const AnalysisOutcome& a) {
+  if (a.statics) return {a.statics->time, a.statics->size};
+  if (a.modal) return {a.modal->time, a.modal->size};
+  if (a.transient) return {a.transient->result.time, a.transient->result.size};
+  const RotorOutcome& r = *a.rotor;
+  if (r.modes) return {r.modes->time, r.modes->size};
+  if (r.campbell) return {r.campbell->time, r.campbell->size};
+  if (r.unbalance) return {r.unbalance->time, r.unbalance->size};
+  return {};
 }
 
 /// Solves one level, repeating short runs; the quantity is taken from the first run.
@@ -73,21 +201,23 @@ ConvergeLevel solveLevel(const Deck& deck, const Quantity& q, int level, int rep
   for (int r = 0; r < repeats; ++r) {
     const RunResult run = runDeck(deck);
     const AnalysisOutcome& a = run.analyses.front();
+    const SolveCost cost = costOf(a);
     if (r == 0) {
       try {
         out.value = measure(q, a, *run.model);
       } catch (const std::logic_error& e) {  // e.g. a point the deck does not name
-        throw DeckError(deck.path, DeckPlace{0, 0, "--quantity"}, e.what());
+        throw DeckError(deck.path, kQuantityOption, e.what());
       }
-      out.elements = sizeOf(a).elements;
-      out.dofs = sizeOf(a).freeDofs;
+      out.elements = cost.size.elements;
+      out.dofs = cost.size.freeDofs;
+      if (const auto& t = deck.analyses.front().transient)
+        out.steps = int(std::lround(t->end / t->dt));
     }
-    const SolveTimings& t = timingsOf(a);
-    assembly.push_back(t.assembly);
-    factor.push_back(t.factor);
-    solve.push_back(t.solve);
-    total.push_back(t.total);
-    if (t.total >= kShortRunSeconds) break;
+    assembly.push_back(cost.time.assembly);
+    factor.push_back(cost.time.factor);
+    solve.push_back(cost.time.solve);
+    total.push_back(cost.time.total);
+    if (cost.time.total >= kShortRunSeconds) break;
   }
   out.runs = int(total.size());
   out.assembly = median(assembly);
@@ -131,22 +261,34 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
                     std::string("must be from ") + (t.check ? "2" : "3") +
                         " (3 to extrapolate without a closed form) to 16, got " +
                         std::to_string(options.levels));
+  const bool timeStep = refinesTimeStep(*t.analysis);
   ConvergeStudy study;
   study.deckPath = deck.path;
   study.deckName = deck.stem;
   study.quantity = t.quantity.text;
   study.analysis = t.analysis->name;
   if (t.check) study.check = t.check->name;
+  study.refinement = timeStep ? "time step" : "mesh";
+  study.choice = t.choice;
 
-  // 2. Every method on every level.
-  const Deck base = studyDeck(deck, t);
-  for (const ConvergeMethod& method : convergeMethods(t.analysis->type != "static")) {
+  // 2. Every method on every level: the element formulations on finer meshes, or the deck's
+  //    own scheme and elements on shorter time steps.
+  const Deck base = studyDeck(deck, {t.analysis});
+  const std::vector<ConvergeMethod> methods =
+      timeStep ? std::vector<ConvergeMethod>{{"time-step", "the deck's scheme, dt halved per level",
+                                              deck.beam.theory, deck.beam.mass}}
+               : convergeMethods(t.analysis->type != "static");
+  for (const ConvergeMethod& method : methods) {
     ConvergeSeries series;
     series.method = method;
     for (int level = 0; level < options.levels; ++level) {
       Deck d = base;
-      useMethod(method, d);
-      refineMesh(d, level);
+      if (timeStep) {
+        refineTimeStep(d, level);
+      } else {
+        useMethod(method, d);
+        refineMesh(d, level);
+      }
       try {
         series.levels.push_back(solveLevel(d, t.quantity, level, std::max(1, options.repeats)));
       } catch (const DeckSolveError& e) {

@@ -1,6 +1,8 @@
 // `beamrotor converge`: one deck quantity computed on a sequence of meshes (each level halves
-// every element) with each element formulation, timed stage by stage, and its error against
-// the deck's closed form, or against a Richardson-extrapolated limit where the deck has none.
+// every element) with each element formulation, or for a transient quantity on a sequence of
+// time steps (each level halves dt) with the deck's own scheme, timed stage by stage, and its
+// error against the deck's closed form, or against a Richardson-extrapolated limit where the
+// deck has none.
 #pragma once
 
 #include <optional>
@@ -13,8 +15,11 @@
 namespace beamrotor {
 
 struct ConvergeOptions {
-  std::string quantity;  ///< a deck quantity phrase; empty: the deck's first applicable check
-  int levels = 5;        ///< meshes: the deck's own (level 0) and levels - 1 refinements
+  /// A deck quantity phrase; empty: the first of the deck's quantities that changes with the
+  /// discretisation (its applicable checks in order, then each analysis' lowest frequency,
+  /// largest stress or first history), see runConvergence.
+  std::string quantity;
+  int levels = 5;  ///< meshes: the deck's own (level 0) and levels - 1 refinements
   /// Runs timed per level when one run is short (< kShortRunSeconds); times are medians.
   int repeats = 3;
 };
@@ -26,7 +31,8 @@ inline constexpr double kShortRunSeconds = 0.2;
 struct ConvergeLevel {
   int level = 0;
   int elements = 0;
-  int dofs = 0;                                           ///< free dofs
+  int dofs = 0;   ///< free dofs
+  int steps = 0;  ///< time steps (time-step studies; 0 in mesh studies)
   double assembly = 0, factor = 0, solve = 0, total = 0;  ///< s, medians over the runs
   int runs = 1;
   double value = 0;  ///< the quantity
@@ -48,15 +54,20 @@ struct ConvergeSeries {
 
 struct ConvergeStudy {
   std::string deckPath, deckName;
-  std::string quantity;  ///< as written, e.g. "frequency 1"
-  std::string analysis;  ///< the deck analysis it reads
-  std::string check;     ///< the check giving the closed form; empty when there is none
+  std::string quantity;    ///< as written, e.g. "frequency 1"
+  std::string analysis;    ///< the deck analysis it reads
+  std::string check;       ///< the check giving the closed form; empty when there is none
+  std::string refinement;  ///< "mesh" or "time step"
+  std::string choice;      ///< how the quantity was chosen, for the user
   std::vector<ConvergeSeries> series;  ///< one per method
 };
 
-/// Runs the study on a read deck (its sweep ignored). Throws DeckError (naming the option,
-/// e.g. "--quantity") for a quantity the deck cannot give or too few levels, and
-/// DeckSolveError when a solve fails.
+/// Runs the study on a read deck (its sweep ignored). Without a quantity it takes the first
+/// candidate whose value changes by more than round-off when the deck's own discretisation is
+/// refined once (a reaction of a statically determinate beam or a rigid-body property does not;
+/// a quantity of a rigid-body analysis is no candidate), or the first candidate when none
+/// does, saying so. Throws DeckError (naming the option, e.g. "--quantity") for a quantity the
+/// deck cannot give or too few levels, and DeckSolveError when a solve fails.
 ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options);
 
 }  // namespace beamrotor

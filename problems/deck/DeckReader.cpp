@@ -67,9 +67,9 @@ void claimName(const Field& f, const std::string& name, std::vector<std::string>
 namespace {
 
 const std::vector<std::string> kTopKeys{
-    "title",  "parameters", "derived", "model",  "materials", "sections", "segments", "points",
-    "supports", "springs",  "masses",  "hinges", "loads",     "analyses", "checks",   "sweep",
-    "contacts", "bearings", "damping", "report", "accuracy"};
+    "title",  "parameters", "derived",  "model",    "materials", "sections", "segments",
+    "points", "supports",   "springs",  "masses",   "hinges",    "loads",    "analyses",
+    "checks", "sweep",      "contacts", "bearings", "damping",   "report",   "accuracy"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -94,8 +94,10 @@ void readParameters(Context& c, const std::vector<ParameterOverride>& overrides)
     std::string why = "no parameter '" + o.name + "' in this deck" + didYouMean(o.name, names) +
                       " (parameters: " + joinNames(names) + ")";
     if (auto derived = c.root.get("derived"); derived && derived->isMap() && derived->has(o.name))
-      why = "'" + o.name + "' is derived from the parameters, not a parameter itself; set the "
-            "parameters it is computed from (parameters: " + joinNames(names) + ")";
+      why = "'" + o.name +
+            "' is derived from the parameters, not a parameter itself; set the "
+            "parameters it is computed from (parameters: " +
+            joinNames(names) + ")";
     throw DeckError(c.deck.path, {0, 0, "--set " + o.text}, why);
   }
 }
@@ -140,14 +142,16 @@ void readModel(Context& c) {
   }
   if (auto f = model->get("formulation")) c.deck.beam.theory = readFormulation(*f);
   if (auto f = model->get("mass"))
-    c.deck.beam.mass = f->choice({"consistent", "lumped"}) == "lumped" ? MassModel::lumped
-                                                                       : MassModel::consistent;
+    c.deck.beam.mass =
+        f->choice({"consistent", "lumped"}) == "lumped" ? MassModel::lumped : MassModel::consistent;
   if (auto f = model->get("rotary_inertia")) c.deck.beam.rotaryInertia = f->boolean();
 }
 
 }  // namespace
 
-BeamTheory formulationOf(const Field& f) { return readFormulation(f); }
+BeamTheory formulationOf(const Field& f) {
+  return readFormulation(f);
+}
 
 }  // namespace reader
 
@@ -159,7 +163,7 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
 
   // 1. Top-level keys.
   c.root.allowOnly(reader::kTopKeys, "the deck");
-  if (auto title = c.root.get("title"); title && !title->isNull()) deck.title = title->text();
+  if (auto title = c.root.get("title"); title && !title->isNull()) deck.title = title->label(200);
 
   // 2. Numbers everything else may use.
   reader::readParameters(c, overrides);

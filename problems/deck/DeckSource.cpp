@@ -1,16 +1,21 @@
 #include "problems/deck/DeckSource.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/parser.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
 #include <optional>
 #include <sstream>
 
 #include "problems/deck/DeckError.hpp"
+#include "problems/deck/PlainText.hpp"
 
 namespace beamrotor {
 
@@ -30,39 +35,16 @@ DeckPlace placeAt(const std::string& text, std::size_t offset) {
   return p;
 }
 
-/// Length of the UTF-8 sequence starting at text[i], or 0 when it is not valid UTF-8.
-std::size_t utf8Length(const std::string& text, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  const unsigned char c = byte(i);
-  std::size_t n = c < 0x80           ? 1
-                  : (c >> 5) == 0x6  ? 2
-                  : (c >> 4) == 0xE  ? 3
-                  : (c >> 3) == 0x1E ? 4
-                                     : 0;
-  if (n == 0 || i + n > text.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k)
-    if ((byte(i + k) & 0xC0) != 0x80) return 0;
-  return n;
-}
-
 /// Rejects bytes no hand-written YAML deck contains: NUL, other control characters, and
 /// invalid UTF-8 (the usual signs of a binary file given by mistake).
 void requireText(const std::string& text, const std::string& path) {
-  std::size_t i = 0;
-  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) i = 3;  // UTF-8 byte-order mark
-  while (i < text.size()) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    const bool control = c < 0x20 && c != '\n' && c != '\r' && c != '\t';
-    const std::size_t n = control || c == 0x7F ? 0 : utf8Length(text, i);
-    if (n == 0) {
-      char code[8];
-      std::snprintf(code, sizeof code, "0x%02X", unsigned(c));
-      throw DeckError(path, placeAt(text, i),
-                      std::string("not a text deck: byte ") + code +
-                          " is not printable UTF-8 text (is this a binary file?)");
-    }
-    i += n;
-  }
+  const std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // byte-order mark
+  const auto bad = firstNonPlain(std::string_view(text).substr(start), "\n\r\t");
+  if (!bad) return;
+  const std::size_t at = start + *bad;
+  throw DeckError(path, placeAt(text, at),
+                  "not a text deck: " + describeNonPlain(text, at) +
+                      " is not printable UTF-8 text (is this a binary file?)");
 }
 
 /// YAML forbids tabs in indentation and yaml-cpp's message does not say so: add a hint when
@@ -188,16 +170,38 @@ DeckSource parseDeckText(const std::string& text, const std::string& path) {
 
 DeckSource loadDeckFile(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw DeckError(name, {}, "is a directory, not a deck file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw DeckError(name, {}, "cannot open the deck file (does it exist?)");
+  // Opened without blocking and checked before reading: a FIFO with no writer, a terminal or
+  // a device would otherwise wait (or read) forever.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    const int error = errno;
+    throw DeckError(name, {},
+                    error == ENOENT ? std::string("cannot open the deck file (does it exist?)")
+                                    : "cannot open the deck file: " + std::string(strerror(error)));
+  }
+  struct FileCloser {
+    int fd;
+    ~FileCloser() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) throw DeckError(name, {}, "cannot read the deck file");
+  if (S_ISDIR(info.st_mode)) throw DeckError(name, {}, "is a directory, not a deck file");
+  if (!S_ISREG(info.st_mode))
+    throw DeckError(name, {},
+                    "is not a regular file (a FIFO, socket or device); give the path of a deck "
+                    "file");
   // Read at most one byte more than allowed so an enormous file is not loaded whole.
   std::string buffer(kLargestDeck + 1, '\0');
-  in.read(buffer.data(), std::streamsize(buffer.size()));
-  buffer.resize(std::size_t(in.gcount()));
-  if (in.bad()) throw DeckError(name, {}, "cannot read the deck file");
+  std::size_t size = 0;
+  while (size < buffer.size()) {
+    const ssize_t n = ::read(fd, buffer.data() + size, buffer.size() - size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0)
+      throw DeckError(name, {}, "cannot read the deck file: " + std::string(strerror(errno)));
+    if (n == 0) break;
+    size += std::size_t(n);
+  }
+  buffer.resize(size);
   return parseDeckText(buffer, name);
 }
 

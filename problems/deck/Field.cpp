@@ -7,6 +7,7 @@
 #include <set>
 
 #include "problems/deck/Expression.hpp"
+#include "problems/deck/PlainText.hpp"
 #include "problems/deck/Suggest.hpp"
 
 namespace beamrotor {
@@ -136,6 +137,17 @@ std::vector<Field> Field::itemsOrSingle() const {
 std::string Field::text() const {
   if (!isScalar()) fail("expected a single value, got " + describe());
   return node_.Scalar();
+}
+
+std::string Field::label(std::size_t longest) const {
+  const std::string s = text();
+  if (s.empty() || s.size() > longest)
+    fail("expected 1 to " + std::to_string(longest) + " characters, got " +
+         std::to_string(s.size()));
+  if (const auto bad = firstNonPlain(s))
+    fail("holds " + describeNonPlain(s, *bad) + " at character " + std::to_string(*bad + 1) +
+         "; text here must be one line of printable UTF-8");
+  return s;
 }
 
 std::string Field::name() const {

@@ -3,13 +3,13 @@
 // file, line, column and field.
 #pragma once
 
+#include <yaml-cpp/yaml.h>
+
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 #include "problems/deck/DeckError.hpp"
 
@@ -60,6 +60,10 @@ class Field {
   // --- scalars ------------------------------------------------------------------------------
   /// The scalar's text; fails when this is a map, list or null.
   std::string text() const;
+  /// Free text shown to people (a title, a check's name, a unit): 1 to `longest` bytes of
+  /// valid UTF-8 without control characters (a line break would end the line it is written on
+  /// in a chart script or table).
+  std::string label(std::size_t longest) const;
   /// A name (letters, digits, '_', '-', '.'), as used for points, sections, supports.
   std::string name() const;
   /// The value of a number or expression; fails with the evaluator's reason.

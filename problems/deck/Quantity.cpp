@@ -11,7 +11,8 @@ namespace beamrotor {
 namespace {
 
 constexpr const char* kGrammar =
-    "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', 'frequency N', 'stress max', "
+    "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', "
+    "'displacement POINT ROTATION left|right', 'frequency N', 'stress max', "
     "'shear max', 'moment max', 'log_decrement N', 'critical_speed N', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
@@ -60,6 +61,18 @@ Quantity parseQuantity(const std::string& text) {
     q.kind = head == "reaction" ? Quantity::Kind::reaction : Quantity::Kind::displacement;
     q.target = words[1];
     q.dof = parseComponent(words[2]);
+    return q;
+  }
+  if (head == "displacement" && words.size() == 4) {
+    q.kind = Quantity::Kind::displacement;
+    q.target = words[1];
+    q.dof = parseComponent(words[2]);
+    if (words[3] != "left" && words[3] != "right")
+      throw std::invalid_argument("'" + words[3] + "' is not a side (left or right)");
+    if (!isRotation(q.dof))
+      throw std::invalid_argument("a side names one of the two rotations at a hinge; " + words[2] +
+                                  " is a translation, the same on both sides");
+    q.side = words[3] == "left" ? Quantity::Side::left : Quantity::Side::right;
     return q;
   }
   if (head == "frequency" && words.size() == 2) {

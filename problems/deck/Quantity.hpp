@@ -1,6 +1,8 @@
 // The quantities a deck's checks compare with closed forms, written as short phrases:
 //   reaction SUPPORT DOF      support reaction (N, N m); DOF ux uy uz rx ry rz or fx .. mz
 //   displacement POINT DOF    displacement (m) or rotation (rad) of a named point
+//   displacement POINT ROT left|right   the rotation of the beam end left (ending there) or
+//                             right (starting there) of the point: a hinge's two rotations
 //   frequency N               natural frequency of mode N (Hz), N from 1
 //   stress max                largest |normal stress| on the outer fibres of any beam (Pa)
 //   shear max                 largest transverse shear stress in any beam (Pa),
@@ -46,6 +48,9 @@ struct Quantity {
   std::string timeText;  ///< historyAt: the time as written
   double time = 0;       ///< historyAt: s (set by the deck reader)
   Dof dof = Dof::uy;
+  /// displacement: the node's own value, or the rotation of the beam end on one side of it.
+  enum class Side { node, left, right };
+  Side side = Side::node;
   int mode = 1;          ///< frequency, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
   std::string property;  ///< rigid_body: which property

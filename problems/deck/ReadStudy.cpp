@@ -54,12 +54,45 @@ void readAnalyses(Context& c) {
     auto n = f.get("name");
     a.name = n ? n->name() : a.type;
     if (std::find(names.begin(), names.end(), a.name) != names.end())
-      (n ? *n : f).fail("there is already an analysis named '" + a.name +
-                        "'; give each analysis its own name");
+      (n ? *n : f)
+          .fail("there is already an analysis named '" + a.name +
+                "'; give each analysis its own name");
     names.push_back(a.name);
     c.deck.analyses.push_back(std::move(a));
   }
   if (c.deck.analyses.empty()) block->fail("the list of analyses is empty");
+}
+
+/// A displacement quantity's side: a side needs a beam there, and a rotation a hinge releases
+/// has two values (one per side), so it must name the side.
+void resolveSide(const Deck& deck, const Quantity& q, const Field& f) {
+  const std::string rotation(dofName(q.dof));
+  const auto point = std::find_if(deck.points.begin(), deck.points.end(),
+                                  [&](const DeckPoint& p) { return p.name == q.target; });
+  double length = 0;
+  for (const DeckSegment& s : deck.segments) length += s.length;
+  const double slack = 1e-9 * length;
+  const bool left = !deck.segments.empty() && point->at > slack;
+  const bool right = !deck.segments.empty() && point->at < length - slack;
+  if (q.side == Quantity::Side::left && !left)
+    f.fail("point '" + q.target + "' has no beam on its left" +
+           (right ? " (it starts the line): ask for its rotation on the right" : ""));
+  if (q.side == Quantity::Side::right && !right)
+    f.fail("point '" + q.target + "' has no beam on its right" +
+           (left ? " (it ends the line): ask for its rotation on the left" : ""));
+  if (q.side != Quantity::Side::node || !isRotation(q.dof)) return;
+  for (const DeckHinge& h : deck.hinges)
+    if (h.point == q.target &&
+        std::find(h.released.begin(), h.released.end(), q.dof) != h.released.end()) {
+      std::string sides;
+      if (left) sides = "'displacement " + q.target + " " + rotation + " left'";
+      if (right)
+        sides += (sides.empty() ? "'" : " or '") + std::string("displacement ") + q.target + " " +
+                 rotation + " right'";
+      f.fail("point '" + q.target + "' is a hinge releasing " + rotation +
+             ": the beam ends there turn independently and the point has no " + rotation +
+             " of its own; ask for " + sides);
+    }
 }
 
 /// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
@@ -80,8 +113,8 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
       analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
                           " (analyses: " + joinNames(names) + ")");
     if (!q.readsFrom(analysis->type))
-      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" +
-                          name + "' is " + analysis->type);
+      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" + name +
+                          "' is " + analysis->type);
   } else {
     for (const DeckAnalysis& a : deck.analyses)
       if (!analysis && q.readsFrom(a.type)) analysis = &a;
@@ -124,6 +157,7 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     if (!deck.dofs.contains(q.dof))
       f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
              c.carriedNames() + ")");
+    resolveSide(deck, q, f);
   }
   if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
   if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
@@ -142,9 +176,7 @@ void readChecks(Context& c) {
     DeckCheck k;
     k.place = f.place();
     const Field nameField = f.require("name");
-    k.name = nameField.text();
-    if (k.name.empty() || k.name.size() > 80)
-      nameField.fail("a check name must have 1 to 80 characters");
+    k.name = nameField.label(80);
     claimName(nameField, k.name, names, "a check");
     const Field qf = f.require("quantity");
     try {

@@ -143,7 +143,7 @@ void readHistories(const Context& c, const Field& block, DeckTransient& t) {
         f.fail("a history is either a dof (at, dof) or a value, not both");
       h.name = f.require("name").text();
       h.expression = f.require("value").text();
-      if (auto u = f.get("unit")) h.unit = u->text();
+      if (auto u = f.get("unit")) h.unit = u->label(32);
     } else {
       if (f.has("unit")) f.get("unit")->fail("a dof's unit is m or rad; unit is for values");
       h.point = c.point(f.require("at")).name;

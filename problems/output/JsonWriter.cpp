@@ -43,8 +43,11 @@ Json reactionsJson(const StaticResult& r) {
   return out;
 }
 
-/// Displacements of the named points, in node order (the order along a line).
-Json pointDisplacementsJson(const Model& model, const DofMap& dofs, const NodalField& u) {
+/// Displacements of the named points, in node order (the order along a line). At a hinge each
+/// rotation the model carries is also given per side, "rz_left" and "rz_right" (the beam ends'
+/// own), and the node's value only where the node carries it.
+Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
+                            const std::array<bool, kDofKinds>& carried, const StaticResult& r) {
   std::vector<std::pair<int, std::string>> points;
   for (const auto& [name, node] : model.namedNodes()) points.emplace_back(node, name);
   std::sort(points.begin(), points.end());
@@ -52,7 +55,16 @@ Json pointDisplacementsJson(const Model& model, const DofMap& dofs, const NodalF
   for (const auto& [node, name] : points) {
     Json& components = out[name] = Json::object();
     for (Dof d : kAllDofs)
-      if (dofs.equation(node, d) >= 0) components[std::string(dofName(d))] = u(node, dofIndex(d));
+      if (dofs.equation(node, d) >= 0)
+        components[std::string(dofName(d))] = r.displacement(node, dofIndex(d));
+    for (const SideRotations& h : r.hinges) {
+      if (h.node != node) continue;
+      for (Dof d : kAllDofs)
+        if (isRotation(d) && carried[dofIndex(d)])
+          for (const auto& [side, value] :
+               {std::pair{"_left", &h.left}, std::pair{"_right", &h.right}})
+            if (*value) components[std::string(dofName(d)) + side] = (**value)[dofIndex(d) - 3];
+    }
   }
   return out;
 }
@@ -70,28 +82,27 @@ Json contactsJson(const std::vector<ContactState>& contacts) {
   return out;
 }
 
-/// The most stressed station: value (Pa), place along the line, element and its section.
-Json peakJson(const Model& model, const std::optional<StaticStation>& top,
-              double StaticStation::*value) {
+/// A largest stress: value (Pa), place along the line, element and its section.
+Json peakJson(const Model& model, const std::optional<LinePeak>& top) {
   if (!top) return nullptr;  // no line elements: the key is dropped by the caller
-  const auto& line = static_cast<const LineElement&>(*model.elements()[top->place.element]);
-  return {{"value", (*top).*value},
+  const LineElement& line = *asLine(model.elements()[top->place.element]);
+  return {{"value", top->value},
           {"x", top->place.x},
           {"element", top->place.element},
           {"section", line.section().name}};
 }
 
-Json staticJson(const Model& model, const DofMap& dofs, const AnalysisOutcome& a,
-                const std::vector<StaticStation>& stations) {
+Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
+                const AnalysisOutcome& a, const std::vector<ElementPeaks>& peaks) {
   const StaticResult& r = *a.statics;
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
   out["reactions"] = reactionsJson(r);
-  out["displacements"] = pointDisplacementsJson(model, dofs, r.displacement);
-  if (Json top = peakJson(model, largestStress(stations), &StaticStation::stress); !top.is_null())
-    out["max_stress"] = top;
-  if (Json top = peakJson(model, largestShear(stations), &StaticStation::shear); !top.is_null())
-    out["max_shear"] = top;
+  out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
+  for (const auto& [key, kind] : {std::pair{"max_stress", &ElementPeaks::stress},
+                                  std::pair{"max_shear", &ElementPeaks::shear}})
+    if (Json top = peakJson(model, largestAlongLine(model, peaks, kind)); !top.is_null())
+      out[key] = top;
   if (!r.contacts.empty()) {
     out["contacts"] = contactsJson(r.contacts);
     out["active_set_iterations"] = r.activeSetIterations;
@@ -209,10 +220,10 @@ Json sweepWorstJson(const SweepResult& sweep, const std::vector<Json>& runDocs) 
 
 }  // namespace
 
-Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>& stations) {
+Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>& peaks) {
   if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
-  if (stations.size() != run.analyses.size())
-    throw std::invalid_argument("runJson needs one list of static stations per analysis");
+  if (peaks.size() != run.analyses.size())
+    throw std::invalid_argument("runJson needs one list of element peaks per analysis");
   const Model& model = *run.model;
   const DofMap dofs(model);
   const auto carried = kindsCarried(model, dofs);
@@ -223,7 +234,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
     if (a.statics)
-      analyses.push_back(staticJson(model, dofs, a, stations[i]));
+      analyses.push_back(staticJson(model, dofs, carried, a, peaks[i]));
     else if (a.modal)
       analyses.push_back(modalJson(carried, a));
     else if (a.transient)

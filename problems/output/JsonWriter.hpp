@@ -4,9 +4,9 @@
 // results.json:
 //   deck {name, path}, model {nodes, elements, dofs, dimension},
 //   analyses [ static: {type, name, reactions {support: {fx ... mz}}, displacements
-//              {point: {ux ... rz}}, max_stress and max_shear {value, x, element, section},
-//              [contacts {name: {dof,
-//              active, value, bound, gap, force}}, active_set_iterations], rcond, time_s, files}
+//              {point: {ux ... rz, at a hinge rz_left, rz_right ...}}, max_stress and max_shear
+//              {value, x, element, section}, [contacts {name: {dof, active, value, bound, gap,
+//              force}}, active_set_iterations], rcond, time_s, files}
 //            | modal:  {type, name, frequencies_hz [...], total_mass_kg {ux ..}, modes [{mode,
 //              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio
 //              {ux ..}, energy_share {ux .. rz}}], time_s, files}
@@ -33,9 +33,9 @@ namespace beamrotor {
 
 using Json = nlohmann::ordered_json;
 
-/// results.json of one run. `stations[i]` are the static samples of run.analyses[i] (empty
-/// for other analyses), see sampleStatics; the largest stress is read from them.
-Json runJson(const RunResult& run, const std::vector<std::vector<StaticStation>>& stations);
+/// results.json of one run. `peaks[i]` are the element peaks of run.analyses[i] (empty for
+/// other analyses), see elementPeaks; the largest stress and shear are read from them.
+Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>& peaks);
 
 /// sweep.json from the values and each value's results.json (runDocs) and sub-directory.
 Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,

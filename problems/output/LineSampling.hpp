@@ -1,13 +1,15 @@
 // Samples a solved nodal field along the line elements (beams, shafts): where each station
-// lies along the line, the displacements between the nodes and, for statics, the section
-// forces and stress. The CSV tables, the charts and results.json's largest stress all read
-// these samples, so they agree with one another.
+// lies along the line and, for statics, what the recovery (fem/assembly/Recovery.hpp) finds
+// there: displacements by each element's own interpolation (hinges included), section forces
+// and stress. The CSV tables and the charts read these samples; the largest values are the
+// exact element peaks (fem/assembly/ElementExtrema.hpp), placed along the line here.
 #pragma once
 
 #include <array>
 #include <optional>
 #include <vector>
 
+#include "fem/assembly/ElementExtrema.hpp"
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
@@ -37,19 +39,10 @@ struct LinePlace {
 /// the next) so that jumps, e.g. of stress at a diameter step, show as vertical steps.
 std::vector<LinePlace> placesAlongLine(const Model& model, int intervalsPerElement);
 
-/// Displacements (global frame, ux uy uz (m), rx ry rz (rad)) at fraction s of a line element.
-/// Exact nodal values at the ends; between them, axial displacement and twist are linear and
-/// the two transverse deflections are cubic Hermite in the element's local frame, with the
-/// bending rotations their slopes. This is exact for Euler-Bernoulli elements without span
-/// loads and an interpolation of exact nodal values otherwise (Timoshenko elements, span
-/// loads). It assumes the element's end rotations are its nodes' rotations (no end releases).
-std::array<double, kDofKinds> displacementAt(const LineElement& element, const NodalField& field,
-                                             double s);
-
 /// One static sample: place, displacements, section forces (element frame) and stress.
 struct StaticStation {
   LinePlace place;
-  std::array<double, kDofKinds> displacement{};  ///< global frame, ux ... rz
+  std::array<double, kDofKinds> displacement{};  ///< global frame, see displacementAlong
   SectionForces forces;                          ///< element frame, see SectionForces
   double stress = 0;                             ///< largest |normal stress| (Pa)
   double shear = 0;                              ///< largest transverse shear stress (Pa)
@@ -59,11 +52,16 @@ struct StaticStation {
 std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& displacement,
                                          int intervalsPerElement = kIntervalsPerElement);
 
-/// The station of the largest stress (the first one on ties); nullopt without line elements.
-std::optional<StaticStation> largestStress(const std::vector<StaticStation>& stations);
+/// A largest value over the line elements and its place along the line.
+struct LinePeak {
+  LinePlace place;
+  double value = 0;
+};
 
-/// The station of the largest shear stress (the first one on ties); nullopt without line
-/// elements.
-std::optional<StaticStation> largestShear(const std::vector<StaticStation>& stations);
+/// The largest of one kind of the element peaks of a static solution (elementPeaks: exact,
+/// not sampled), with its place; nullopt without line elements, NaN when any element's value
+/// is not finite (largestPeak).
+std::optional<LinePeak> largestAlongLine(const Model& model, const std::vector<ElementPeaks>& peaks,
+                                         BeamPeak ElementPeaks::*kind);
 
 }  // namespace beamrotor

@@ -60,7 +60,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
     if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
     if (a.statics) {
       p.fields->write(dir / fieldsCsv(p.stem));
-      writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations);
+      writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations, p.peaks);
       if (charts && !p.stations.empty())
         drawChart(dir,
                   staticDiagrams(caption(run, a.name), diagramsChart(p.stem),

@@ -27,12 +27,13 @@ PreparedRun prepareRun(const RunResult& run) {
 
   // 2. Sample the statics along the line and build every table.
   PreparedRun prepared{&run, {}, {}};
-  std::vector<std::vector<StaticStation>> stations;
+  std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}};
     if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
     if (a.statics) {
       p.stations = sampleStatics(model, a.statics->displacement);
+      p.peaks = elementPeaks(model, a.statics->displacement);
       p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
     }
     if (a.modal) {
@@ -40,12 +41,12 @@ PreparedRun prepareRun(const RunResult& run) {
       p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
     }
     if (a.rotor) p.rotor = prepareRotor(a, p.stem);
-    stations.push_back(p.stations);
+    peaks.push_back(p.peaks);
     prepared.analyses.push_back(std::move(p));
   }
 
   // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
-  prepared.doc = runJson(run, stations);
+  prepared.doc = runJson(run, peaks);
   requireFiniteNumbers(prepared.doc, kResultsJson);
   return prepared;
 }

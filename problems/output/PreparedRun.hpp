@@ -22,6 +22,7 @@ struct PreparedAnalysis {
   const AnalysisOutcome* outcome = nullptr;
   std::string stem;                     ///< file stem of its files
   std::vector<StaticStation> stations;  ///< statics only
+  std::vector<ElementPeaks> peaks;      ///< statics only: each element's exact largest values
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
   std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
   std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv

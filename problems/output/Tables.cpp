@@ -1,6 +1,7 @@
 // The CSV tables of one run (see Tables.hpp).
 #include "problems/output/Tables.hpp"
 
+#include "fem/assembly/Recovery.hpp"
 #include "problems/output/ModeShapes.hpp"
 
 namespace beamrotor {
@@ -68,7 +69,7 @@ CsvTable modeShapesTable(const std::string& title, const Model& model, const Mod
     const auto& line = static_cast<const LineElement&>(*model.elements()[p.element]);
     std::vector<CsvCell> row{p.x};
     for (const NodalField& shape : shapes) {
-      const auto u = displacementAt(line, shape, p.s);
+      const auto u = displacementAlong(line, shape, p.s, SpanLoad::none);
       row.insert(row.end(), {u[0], u[1], u[2]});
     }
     table.addRow(std::move(row));

@@ -94,7 +94,8 @@ void writeVtu(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
 }
 
 void writeStaticVtu(const std::filesystem::path& file, const Model& model,
-                    const StaticResult& result, const std::vector<StaticStation>& stations) {
+                    const StaticResult& result, const std::vector<StaticStation>& stations,
+                    const std::vector<ElementPeaks>& peaks) {
   auto grid = lineGrid(model);
   grid->GetPointData()->AddArray(pointVectors("displacement", result.displacement, 0));
   grid->GetPointData()->AddArray(pointVectors("rotation", result.displacement, 3));
@@ -113,16 +114,31 @@ void writeStaticVtu(const std::filesystem::path& file, const Model& model,
   }
   for (auto& a : forces) grid->GetCellData()->AddArray(a);
 
-  // Largest normal and shear stress over each element's stations.
+  // Each element's own end rotations: at a hinge they differ from the node's (which may carry
+  // no rotation at all), and a point holds only one value.
   auto* element = grid->GetCellData()->GetArray("element");
-  for (const auto& [name, value] :
-       {std::pair{"stress", &StaticStation::stress}, std::pair{"shear", &StaticStation::shear}}) {
-    std::vector<double> largest(model.elements().size(), 0.0);
-    for (const StaticStation& st : stations)
-      largest.at(st.place.element) = std::max(largest[st.place.element], st.*value);
+  std::vector<int> cellOf(model.elements().size(), -1);
+  for (vtkIdType c = 0; c < cells; ++c) cellOf.at(int(element->GetTuple1(c))) = int(c);
+  auto start = doubleArray("rotation_start", 3, cells), end = doubleArray("rotation_end", 3, cells);
+  for (const StaticStation& st : stations)
+    if (st.place.s == 0 || st.place.s == 1)
+      (st.place.s == 0 ? start : end)
+          ->SetTuple3(cellOf.at(st.place.element), st.displacement[3], st.displacement[4],
+                      st.displacement[5]);
+  grid->GetCellData()->AddArray(start);
+  grid->GetCellData()->AddArray(end);
+
+  // Each element's exact largest normal and shear stress.
+  std::vector<const ElementPeaks*> peakOf(model.elements().size(), nullptr);
+  for (const ElementPeaks& p : peaks) peakOf.at(p.stress.element) = &p;
+  for (const auto& [name, kind] :
+       {std::pair{"stress", &ElementPeaks::stress}, std::pair{"shear", &ElementPeaks::shear}}) {
     auto array = doubleArray(name, 1, cells);
-    for (vtkIdType c = 0; c < cells; ++c)
-      array->SetValue(c, largest.at(int(element->GetTuple1(c))));
+    for (vtkIdType c = 0; c < cells; ++c) {
+      const ElementPeaks* p = peakOf.at(int(element->GetTuple1(c)));
+      if (!p) throw std::logic_error("an element without peaks");
+      array->SetValue(c, (p->*kind).value);
+    }
     grid->GetCellData()->AddArray(array);
   }
   writeVtu(grid, file);

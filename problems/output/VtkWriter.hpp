@@ -19,11 +19,13 @@ namespace beamrotor {
 /// element (other elements are not drawn), cell data `element` (index into model.elements()),
 /// section forces `N`, `Vy`, `Vz` (N), `T`, `My`, `Mz` (N m) at the element's mid-length
 /// (element frame; exact there, also with a span load), `stress` and `shear` (Pa, the largest
-/// normal and transverse shear stress over the element's `stations`) and section properties
-/// `A` (m^2), `Iy`, `Iz` (m^4), `E` (Pa).
-/// Throws std::runtime_error when VTK cannot write the file.
+/// normal and transverse shear stress on the element, its `peaks`), the element's own end
+/// rotations `rotation_start`, `rotation_end` (rx ry rz, rad; at a hinge they differ from the
+/// node's; read from the end `stations`) and section properties `A` (m^2), `Iy`, `Iz` (m^4), `E`
+/// (Pa). Throws std::runtime_error when VTK cannot write the file.
 void writeStaticVtu(const std::filesystem::path& file, const Model& model,
-                    const StaticResult& result, const std::vector<StaticStation>& stations);
+                    const StaticResult& result, const std::vector<StaticStation>& stations,
+                    const std::vector<ElementPeaks>& peaks);
 
 /// One mode on the mesh: point data `mode_shape` (translations scaled by displayModeShape,
 /// largest 1) and `mode_rotation` (rotations, same scale), cell data `element` and section

@@ -38,4 +38,9 @@ void refineMesh(Deck& deck, int level) {
   }
 }
 
+void refineTimeStep(Deck& deck, int level) {
+  for (DeckAnalysis& a : deck.analyses)
+    if (a.transient) a.transient->dt /= double(1 << level);
+}
+
 }  // namespace beamrotor

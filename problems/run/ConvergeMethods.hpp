@@ -1,5 +1,6 @@
-// The discretisations a convergence study compares, and the mesh refinement it applies: level k
-// multiplies every segment's element count by 2^k (halves every element size).
+// The discretisations a convergence study compares, and the refinements it applies: level k
+// multiplies every segment's element count by 2^k (halves every element size), or for a
+// transient quantity divides the time step by 2^k.
 #pragma once
 
 #include <string>
@@ -29,5 +30,8 @@ void useMethod(const ConvergeMethod& method, Deck& deck);
 
 /// Level k of the refinement: element counts times 2^k, element sizes divided by 2^k.
 void refineMesh(Deck& deck, int level);
+
+/// Level k of a time-step study: every transient analysis' dt divided by 2^k.
+void refineTimeStep(Deck& deck, int level);
 
 }  // namespace beamrotor

@@ -5,18 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fem/assembly/ElementExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
+#include "fem/model/DofMap.hpp"
 #include "problems/run/MeasureRotor.hpp"
 #include "problems/run/TransientOutcome.hpp"
 
 namespace beamrotor {
 
 namespace {
-
-/// Stations per element for the maxima: resultants vary at most quadratically along an
-/// element (uniform distributed load), so 8 intervals place a station within L/16 of any
-/// interior extremum, and the quadratic is flat there to (1/16)^2 relative.
-constexpr int kStationsPerElement = 8;
 
 double measureHistory(const Quantity& q, const TransientOutcome& outcome) {
   const NamedHistory& h = outcome.history(q.target);
@@ -30,6 +27,32 @@ double measureHistory(const Quantity& q, const TransientOutcome& outcome) {
     default:
       return outcome.at(h, q.time);
   }
+}
+
+/// A point's displacement, or the rotation of the beam end on one side of it. A dof the node
+/// does not carry (a rotation every beam end there releases, a translation of a body that has
+/// no mass along it) is an error, never a zero.
+double measureDisplacement(const Quantity& q, const StaticResult& r, const Model& model) {
+  const int node = model.node(q.target);
+  const std::string what = "point '" + q.target + "' ";
+  const int k = dofIndex(q.dof);
+  if (q.side != Quantity::Side::node) {
+    const SideRotations sides = rotationsBeside(model, r.displacement, node);
+    const bool left = q.side == Quantity::Side::left;
+    const auto& rotation = left ? sides.left : sides.right;
+    if (!rotation)
+      throw std::invalid_argument(what + "has no beam on its " + (left ? "left" : "right"));
+    return (*rotation)[k - 3];
+  }
+  if (DofMap(model).equation(node, q.dof) < 0)
+    throw std::invalid_argument(
+        what + "has no " + std::string(dofName(q.dof)) +
+        (isRotation(q.dof) && std::any_of(r.hinges.begin(), r.hinges.end(),
+                                          [&](const SideRotations& h) { return h.node == node; })
+             ? ": a hinge releases it on every side (name a side: "
+               "left or right)"
+             : ": nothing there carries it"));
+  return r.displacement(node, k);
 }
 
 }  // namespace
@@ -56,17 +79,16 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
     case Quantity::Kind::reaction:
       return r.reaction(q.target, q.dof);
     case Quantity::Kind::displacement:
-      return r.displacement(model.node(q.target), dofIndex(q.dof));
+      return measureDisplacement(q, r, model);
     default: {
-      double largest = 0;
-      for (const BeamStation& s : recoverBeamFields(model, r.displacement, kStationsPerElement)) {
-        const double v = q.kind == Quantity::Kind::maxStress ? s.stress
-                         : q.kind == Quantity::Kind::maxShear
-                             ? s.shear
-                             : std::hypot(s.forces.My, s.forces.Mz);
-        largest = std::max(largest, v);
-      }
-      return largest;
+      // The exact element peaks (the same numbers results.json and the summary report); a
+      // value that is not finite anywhere makes the quantity NaN, and its check fail.
+      const auto kind = q.kind == Quantity::Kind::maxStress  ? &ElementPeaks::stress
+                        : q.kind == Quantity::Kind::maxShear ? &ElementPeaks::shear
+                                                             : &ElementPeaks::moment;
+      const auto top = largestPeak(elementPeaks(model, r.displacement), kind);
+      if (!top) throw std::invalid_argument("'" + q.text + "': the model has no beams");
+      return top->value;
     }
   }
 }

@@ -21,12 +21,6 @@ std::vector<std::filesystem::path> shippedDecks() {
 
 namespace {
 
-std::string shellQuoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream s;
@@ -36,6 +30,12 @@ std::string slurp(const std::filesystem::path& p) {
 
 }  // namespace
 
+std::string shellQuoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
 std::filesystem::path scratchDir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("beamrotor-deck-tests-" + std::to_string(getpid())) / name;
@@ -44,13 +44,17 @@ std::filesystem::path scratchDir(const std::string& name) {
   return dir;
 }
 
-ProcessResult runBeamrotor(const std::vector<std::string>& arguments) {
+ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
+                           const std::filesystem::path& workingDir,
+                           const std::vector<std::string>& environment) {
   static int counter = 0;
   const auto dir = scratchDir("process-" + std::to_string(++counter));
-  std::string command = "cd " + shellQuoted(BEAMROTOR_SOURCE_DIR) + " && " +
-                        shellQuoted(BEAMROTOR_EXE);
+  std::string command = "cd " + shellQuoted(workingDir.string()) + " && env";
+  for (const std::string& e : environment) command += " " + shellQuoted(e);
+  command += " timeout -k 5 120 " + shellQuoted(BEAMROTOR_EXE);
   for (const std::string& a : arguments) command += " " + shellQuoted(a);
-  command += " >" + shellQuoted((dir / "out").string()) + " 2>" + shellQuoted((dir / "err").string());
+  command +=
+      " >" + shellQuoted((dir / "out").string()) + " 2>" + shellQuoted((dir / "err").string());
   const int status = std::system(command.c_str());
   ProcessResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -82,6 +86,12 @@ StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string
   r.sets = std::move(sets);
   r.noSweep = true;
   return r;
+}
+
+Study solveDeckText(const std::string& text, const std::string& path) {
+  StudyRequest request;
+  request.deckPath = path;
+  return solveStudyText(text, request);
 }
 
 std::vector<const RunResult*> runsOf(const Study& study) {

@@ -35,8 +35,15 @@ struct ProcessResult {
   std::string err;
 };
 
-/// Runs BEAMROTOR_EXE with `arguments` (each shell-quoted) from the source directory.
-ProcessResult runBeamrotor(const std::vector<std::string>& arguments);
+/// Runs BEAMROTOR_EXE with `arguments` (each shell-quoted) in `workingDir` (default: the
+/// source directory) with `environment` (NAME=VALUE) added, stopped after 120 s (exit code
+/// 124) so that a hang fails a test instead of stalling it.
+ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
+                           const std::filesystem::path& workingDir = BEAMROTOR_SOURCE_DIR,
+                           const std::vector<std::string>& environment = {});
+
+/// text inside single quotes for /bin/sh.
+std::string shellQuoted(const std::string& text);
 
 /// A fresh empty directory under the system temp directory, unique to this process.
 std::filesystem::path scratchDir(const std::string& name);
@@ -58,6 +65,10 @@ SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string&
 /// A request to solve the shipped deck problems/<name> with `--set` overrides, its own sweep
 /// switched off.
 StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets = {});
+
+/// Deck text written in a test, read and solved as if it were the file `path` (which names
+/// it in messages).
+Study solveDeckText(const std::string& text, const std::string& path);
 
 /// The runs of a solved study: its one run, or one per sweep value.
 std::vector<const RunResult*> runsOf(const Study& study);

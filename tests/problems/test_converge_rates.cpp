@@ -8,11 +8,11 @@
 #include <cmath>
 #include <string>
 
+#include "fem/assembly/Recovery.hpp"
 #include "fem/static/Static.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/output/LineSampling.hpp"
 #include "tests/Helpers.hpp"
 
 namespace beamrotor {
@@ -56,10 +56,11 @@ const ConvergeSeries& seriesOf(const ConvergeStudy& s, const std::string& method
   return s.series.front();
 }
 
-ConvergeOptions levels(int n) {
+ConvergeOptions levels(int n, const std::string& quantity = "") {
   ConvergeOptions o;
   o.levels = n;
   o.repeats = 1;
+  o.quantity = quantity;
   return o;
 }
 
@@ -88,17 +89,18 @@ TEST_SUITE("converge rates") {
   }
 
   TEST_CASE("end-loaded cantilever: nodal values exact for Euler-Bernoulli and Timoshenko") {
-    // The tip deflection of Euler-Bernoulli, P L^3/(3 E I), and of Timoshenko, plus the shear
-    // term P L/(kappa G A) (kappa of a circle, Cowper 1966). Both elements reproduce the exact
-    // solution at the nodes (their shape functions contain it), so every level is exact to
-    // round-off: cond(K) of these <= 32-element cantilevers is below ~1e8, so 1e-10 bounds
-    // cond * eps with a margin (observed ~1e-15).
+    // Named with --quantity: by default converge would pass over a quantity exact on every
+    // mesh (test_converge_decks.cpp). The tip deflection of Euler-Bernoulli, P L^3/(3 E I), and of
+    // Timoshenko, plus the shear term P L/(kappa G A) (kappa of a circle, Cowper 1966). Both
+    // elements reproduce the exact solution at the nodes (their shape functions contain it), so
+    // every level is exact to round-off: cond(K) of these <= 32-element cantilevers is below ~1e8,
+    // so 1e-10 bounds cond * eps with a margin (observed ~1e-15).
     constexpr double kRoundOff = 1e-10;
     const ConvergeStudy eb =
         runConvergence(cantilever("euler-bernoulli",
                                   "  - {name: tip, quantity: displacement tip uy, tolerance: 1,"
                                   " reference: -P*L^3/(3*E*I)}\n"),
-                       levels(5));
+                       levels(5, "displacement tip uy"));
     for (const ConvergeLevel& l : seriesOf(eb, "eb-consistent").levels) CHECK(l.error < kRoundOff);
     CHECK(eb.series.size() == 4);  // statics: no lumped-mass series
 
@@ -106,7 +108,7 @@ TEST_SUITE("converge rates") {
         runConvergence(cantilever("timoshenko",
                                   "  - {name: tip, quantity: displacement tip uy, tolerance: 1,"
                                   " reference: -P*L^3/(3*E*I) - P*L/(kappa*G*A)}\n"),
-                       levels(5));
+                       levels(5, "displacement tip uy"));
     for (const ConvergeLevel& l : seriesOf(tim, "timoshenko").levels) CHECK(l.error < kRoundOff);
     // The locking linear element is far off on 2 elements at L/D = 50 (stiffer: smaller
     // deflection) and improves with every level, still pre-asymptotic at 32 elements.
@@ -116,15 +118,17 @@ TEST_SUITE("converge rates") {
       CHECK(naive.levels[k].error < naive.levels[k - 1].error);
   }
 
-  TEST_CASE("uniform load, sampled between nodes: error q h^4 / (384 E I) at mid-element") {
+  TEST_CASE(
+      "uniform load, sampled between nodes: exact with the span load, q h^4 / (384 E I) without") {
     // Euler-Bernoulli elements with consistent loads give exact nodal values (their shape
-    // functions contain the Green's function of the beam), so between nodes the FE deflection
-    // is the cubic Hermite interpolant of the exact quartic w. The Hermite interpolation error
-    // is w''''(xi)/4! (x - a)^2 (x - b)^2 (e.g. Burden & Faires, Numerical Analysis, thm 3.9);
-    // with w'''' = q/(E I) constant it is q/(24 E I) (h/2)^4 = q h^4 / (384 E I) at the element
-    // middle. At midspan of a simply supported span (w = 5 q L^4 / (384 E I)) on an odd
-    // number N of elements the relative error is therefore exactly (h/L)^4 / 5 = 1/(5 N^4):
-    // order 4, and the computed deflection is the smaller one (the interpolant lies inside).
+    // functions contain the Green's function of the beam). Between nodes the cubic Hermite
+    // interpolant of the exact quartic w misses w''''(xi)/4! (x - a)^2 (x - b)^2 (e.g. Burden &
+    // Faires, Numerical Analysis, thm 3.9); with w'''' = q/(E I) constant that is
+    // q/(24 E I) (h/2)^4 = q h^4 / (384 E I) at the element middle, which is exactly the
+    // clamped-clamped span solution the element adds when its load is applied. At midspan of
+    // a simply supported span (w = 5 q L^4 / (384 E I)) on an odd number N of elements the
+    // interpolant alone is off by exactly (h/L)^4 / 5 = 1/(5 N^4) (order 4, inside), and the
+    // field with the span load is exact.
     const double L = 2.0, q = -5000;
     const auto section = test::steelRectangle(0.04, 0.06);
     const double EI = section->EIz();
@@ -137,11 +141,19 @@ TEST_SUITE("converge rates") {
       model.addSupport({"right", line.nodes.back(), {{Dof::uy, 0}}});
       const StaticResult r = solveStatic(model);
       const Beam& middle = *line.beams[N / 2];
-      const double w = displacementAt(middle, r.displacement, 0.5)[int(Dof::uy)];
+      const auto nodal = displacementAlong(middle, r.displacement, 0.5, SpanLoad::none);
+      const auto field = displacementAlong(middle, r.displacement, 0.5, SpanLoad::applied);
+      const int uy = int(Dof::uy), rz = int(Dof::rz);
       INFO("N = " << N);
-      // Round-off in the nodal values (~1e-15 relative) over an error >= 2.7e-6 (N = 15).
-      CHECK(test::relError(w, exact) == doctest::Approx(1 / (5 * std::pow(N, 4))).epsilon(1e-8));
-      CHECK(std::abs(w) < std::abs(exact));
+      // The error is exactly 1 / (5 N^4) up to round-off in the nodal values, measured up to
+      // 1.8e-13 relative (N = 15), i.e. 5 N^4 times that relative to the error: 4.5e-8 at
+      // N = 15, 5.7e-10 at N = 9. Asked: 1e-7.
+      CHECK(test::relError(test::relError(nodal[uy], exact), 1 / (5 * std::pow(N, 4))) < 1e-7);
+      CHECK(std::abs(nodal[uy]) < std::abs(exact));
+      // Round-off of the solve (cond(K) ~ 1e5 at 15 elements times eps; 1.8e-13 measured).
+      CHECK(test::relError(field[uy], exact) < 1e-12);
+      // The slope at midspan vanishes by symmetry (end slopes q L^3 / (24 E I)).
+      CHECK(std::abs(field[rz]) < 1e-12 * std::abs(q * L * L * L / (24 * EI)));
     }
   }
 

@@ -1,7 +1,7 @@
 // The forme-shaft decks (problems/scenes/README.md section 2) through `beamrotor solve`'s path:
 // rigid-body properties and the two-dof closed form, the rigid limit (--set E=2e17), how much real
-// steel lowers the frequencies (against the scene's own C++ model), the decoupled case C1 l1 = C2
-// l2, and the spinning shaft's checks in the rigid limit.
+// steel lowers the frequencies (and, as plumbing, that the deck builds the scene's own C++
+// model), the decoupled case C1 l1 = C2 l2, and the spinning shaft's checks in the rigid limit.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -58,8 +58,11 @@ TEST_SUITE("forme shaft decks") {
     const RigidBodyOutcome& rigid = *analysisOfType(run, "rigid-body").rotor->rigidBody;
     const ModalResult& modal = *analysisOfType(run, "modal").modal;
 
-    // Second method: the same shaft built in C++ by the scene (problems/scenes/FormeShaft)
-    // with the same mesh: the same frequencies up to the eigensolver's round-off.
+    // Plumbing, not a second method: the same shaft built in C++ by the scene
+    // (problems/scenes/FormeShaft) with the same mesh and solved the same way gives the same
+    // frequencies up to the eigensolver's round-off, which shows the deck builds that model.
+    // The independent references are the rigid two-dof closed form (the drop below) and, in
+    // tests/problems/test_forme_shaft.cpp, Weyl's bound on the drop.
     const FormeShaftModel scene = buildFormeShaft(FormeShaftDesign{}, DofSet::planar());
     const ModalResult reference = solveModes(scene.model, {2, 0});
     for (int i = 0; i < 2; ++i) {

@@ -159,17 +159,35 @@ TEST_SUITE("MO-10") {
       const Mo10Extremes e = Mo10ClosedForm(p, 20).extremes();
       MESSAGE("c = " << c << " N/m: phi_max " << e.phiMax << ", phi_min " << e.phiMin
                      << " rad, pressing force max |c (l phi + a)| " << e.pressingForce << " N");
-      CHECK(relError(e.pressingForce, c * p.l * e.amplitude) < 1e-14);
+      // The extremes' search against the closed form sampled densely, for the force as
+      // defined, c (l phi(t) + a), also with a preload (a = 2 mm shifts the force by c a, so
+      // its peak is no longer c l max |phi|): sampling every T / 2000 misses a smooth peak by at
+      // most (w dt)^2 / 8 = 3e-5 of it, w = max(k, mu) <= 186 rad/s, and never exceeds it.
+      for (double preload : {0.0, 0.002}) {
+        Mo10Parameters q = p;
+        q.a = preload;
+        const Mo10ClosedForm cf(q, 20);
+        const double dt = q.period() / 2000, w = std::max(q.k(), q.mu());
+        double sampled = 0;
+        for (int i = 0; i <= 20 * 2000; ++i)
+          sampled = std::max(sampled, std::abs(q.c * (q.l * cf.phi(i * dt) + q.a)));
+        const double searched = cf.extremes().pressingForce;
+        CAPTURE(preload);
+        CHECK(sampled <= searched * (1 + 1e-12));
+        CHECK(sampled >= searched * (1 - w * w * dt * dt / 8));
+      }
       // The extremes from the FE history sampled every step: sampling a peak misses
-      // (omega dt)^2 / 8 = 3e-5 of it and the phase error over 10 cycles shifts the beating
-      // between free swing and blows by at most ~5e-3 rad, so agree to 1 %.
+      // (omega dt)^2 / 8 = 3e-5 of it and Newmark's phase error, (omega dt)^2 / 12 per radian,
+      // shifts the beating between free swing and blows by up to 6.5e-3 rad over 10 cycles.
+      // Measured: 1.6e-5 to 5.8e-5 of the extremes for c <= 3e5, 5.0e-4 at c = 1e6 (the
+      // fastest free swing); asked 2e-3.
       const std::vector<double> fe = feHistory(p, 10, 2000);
       const auto [lo, hi] = std::minmax_element(fe.begin(), fe.end());
       const Mo10Extremes e10 = Mo10ClosedForm(p, 10).extremes();
       MESSAGE("   FE (10 cycles): phi_max " << *hi << " vs " << e10.phiMax << ", phi_min " << *lo
                                             << " vs " << e10.phiMin);
-      CHECK(relError(*hi, e10.phiMax) < 1e-2);
-      CHECK(relError(*lo, e10.phiMin) < 1e-2);
+      CHECK(relError(*hi, e10.phiMax) < 2e-3);
+      CHECK(relError(*lo, e10.phiMin) < 2e-3);
     }
   }
 }

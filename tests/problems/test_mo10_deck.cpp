@@ -1,7 +1,7 @@
 // problems/mo10.yaml end to end: the deck's body (points, a mass, a spring, no beam) against
 // the closed form of problems/scenes/Mo10 at every cycle boundary, with Newmark's dt^2 rate;
-// against the core's own MO-10 model (a second construction of the same equations); at the
-// resonance k = mu; and the c sweep charting phi_max and spring_force_max.
+// against the core's own MO-10 model (plumbing: the same equations built by the library); at
+// the resonance k = mu; and the c sweep charting phi_max and spring_force_max.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -91,8 +91,8 @@ TEST_SUITE("MO-10 deck") {
     // 3.99 to 4.00 over the c below.
     for (double c : {1e4, 1e5, 1e6}) {
       CAPTURE(c);
-      const RunResult fine = solveMo10Deck({setting("c", c)});
-      const RunResult coarse = solveMo10Deck({setting("c", c), "steps_per_cycle=1500"});
+      const RunResult fine = solveMo10Deck({test::setting("c", c)});
+      const RunResult coarse = solveMo10Deck({test::setting("c", c), "steps_per_cycle=1500"});
       for (const Check& k : fine.checks) {
         CAPTURE(k.name);
         CHECK(k.pass());
@@ -105,10 +105,13 @@ TEST_SUITE("MO-10 deck") {
     }
   }
 
-  TEST_CASE("the deck's model and the core's MO-10 model give the same history") {
-    // Same equations built twice (deck: a point, a mass, a spring, a preload load and a load of
-    // pieces repeated with the period; core: buildMo10Model with mo10BlowFactor), same step:
-    // the histories agree to round-off. With a preload a = 2 mm the body swings about -a/l.
+  TEST_CASE("plumbing: the deck builds the core's MO-10 model (same history to round-off)") {
+    // Plumbing, not a second method: the same equations built twice (deck: a point, a mass, a
+    // spring, a preload load and a load of pieces repeated with the period; core:
+    // buildMo10Model with mo10BlowFactor) and solved by the same integrator, same step, so the
+    // histories agree to round-off. It shows the deck reader builds that model; the
+    // independent reference is the closed form (boundaryError here, and the case above). With a
+    // preload a = 2 mm the body swings about -a/l.
     const RunResult run = solveMo10Deck({"a=0.002", "cycles=3"});
     const Mo10Parameters p = parametersOf(run);
     const Mo10Model body = buildMo10Model(p);
@@ -140,7 +143,7 @@ TEST_SUITE("MO-10 deck") {
     const double c = p.J * p.mu() * p.mu() / (p.l * p.l);
     p.c = c;
     REQUIRE(Mo10ClosedForm(p, 1).resonant());
-    const RunResult run = solveMo10Deck({setting("c", c)});
+    const RunResult run = solveMo10Deck({test::setting("c", c)});
     CHECK(parametersOf(run).c == c);
     for (const Check& k : run.checks) {
       CAPTURE(k.name);

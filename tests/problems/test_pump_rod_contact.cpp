@@ -1,68 +1,34 @@
 // Stepped pump rod, variant C (problems/scenes/README.md section 1): the right end is a hinge whose
 // rotation is bounded by theta_p. The active-set solve must follow the bilinear closed form: below
 // w* the clamped/hinged solution, above it that solution at w* plus the clamped/clamped one for w0
-// - w*. The reference is an initial-parameter (transfer-matrix) solution written here, independent
-// of the finite elements.
+// - w*. The reference is an initial-parameter (transfer-matrix) solution
+// (tests/problems/PumpRodReference.hpp), independent of the finite elements.
 #include <doctest/doctest.h>
 
-#include <Eigen/Dense>
 #include <cmath>
-#include <numbers>
 
 #include "fem/static/Static.hpp"
 #include "tests/Helpers.hpp"
+#include "tests/problems/PumpRodReference.hpp"
 
 using namespace beamrotor;
 using namespace beamrotor::test;
 
 namespace {
 
-constexpr double a = 0.575, d = 1.130, D1 = 0.120, D2 = 0.070, E = 200e9;
-constexpr double eta = 0.4, psi = a + 0.715 - eta, l = a + d;
+const PumpRod kRodC;  // the paper's data at eta = 0.4
+const double a = kRodC.a, d = kRodC.d, D1 = kRodC.D1, D2 = kRodC.D2, steelE = kRodC.E;
+const double psi = kRodC.psi(), l = kRodC.l();
 
+/// theta_p of the example data, from the tilted core's width (PumpRodReference.hpp).
 double thetaP() {
-  const double Dp = 0.150, lp = 0.060, Dc = 0.1501, diag = std::hypot(Dp, lp);
-  return std::acos(Dp / diag) - std::acos(Dc / diag);
+  return pistonTiltLimit(0.150, 0.060, 0.1501);
 }
 
-struct Response {
-  double leftForce, leftMoment, middleForce, rightForce, rightMoment, rightRotation;
-};
+using Response = PumpRodResponse;
 
-/// Initial-parameter method: state (w, theta, M, V) with w' = theta, theta' = M/EI, M' = V
-/// (M sagging-positive, V the sum of upward forces left of the section), carried across
-/// prismatic pieces exactly; the middle support adds its force to V. Unknowns M(0), V(0),
-/// the middle force; conditions w(psi) = 0 and, at the right end, w = 0 with theta = 0
-/// (clamped) or M = 0 (hinged). Left end: w = -w0, theta = 0.
 Response initialParameters(double w0, bool rightClamped) {
-  const double EI1 = E * std::numbers::pi * std::pow(D1, 4) / 64;
-  const double EI2 = E * std::numbers::pi * std::pow(D2, 4) / 64;
-  auto carry = [](Eigen::Vector4d s, double h, double EI) {
-    return Eigen::Vector4d(s[0] + s[1] * h + s[2] * h * h / (2 * EI) + s[3] * h * h * h / (6 * EI),
-                           s[1] + s[2] * h / EI + s[3] * h * h / (2 * EI), s[2] + s[3] * h, s[3]);
-  };
-  // Returns (w(psi-), state at the right end) for given unknowns.
-  auto march = [&](double w, double M0, double V0, double P3) {
-    Eigen::Vector4d s(-w, 0, M0, V0);
-    s = carry(s, a, EI1);
-    s = carry(s, psi - a, EI2);
-    const double wMiddle = s[0];
-    s[3] += P3;
-    s = carry(s, l - psi, EI2);
-    return std::make_pair(wMiddle, s);
-  };
-  auto conditions = [&](double w, const Eigen::Vector3d& x) {
-    const auto [wm, s] = march(w, x[0], x[1], x[2]);
-    return Eigen::Vector3d(wm, s[0], rightClamped ? s[1] : s[2]);
-  };
-  // The conditions are linear in (w0, unknowns): one column per unknown, then solve.
-  Eigen::Matrix3d A;
-  for (int j = 0; j < 3; ++j) A.col(j) = conditions(0, Eigen::Vector3d::Unit(j));
-  const Eigen::Vector3d x = A.lu().solve(-conditions(w0, Eigen::Vector3d::Zero()));
-  const auto [wm, s] = march(w0, x[0], x[1], x[2]);
-  // Reactions on the rod (+y forces, counter-clockwise moments): left force V(0), left moment
-  // -M(0), middle force P3, right force -V(l), right moment M(l).
-  return {x[1], -x[0], x[2], -s[3], s[2], s[1]};
+  return pumpRodInitialParameters(kRodC, w0, rightClamped);
 }
 
 /// problems/scenes/README.md section 1.3 (the paper's eq. 26): bilinear in w0 with the switch at
@@ -86,7 +52,7 @@ struct FeResponse {
 
 FeResponse variantCElements(double w0) {
   Model model;
-  auto mat = Material::fromEnu("steel", E, 0.3, 7850);
+  auto mat = Material::fromEnu("steel", steelE, 0.3, 7850);
   LineSpec spec;
   spec.segments.push_back({a, std::make_shared<Section>(Section::circle("D1", mat, D1)), 3});
   spec.segments.push_back({d, std::make_shared<Section>(Section::circle("D2", mat, D2)), 6});

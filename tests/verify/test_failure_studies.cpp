@@ -10,8 +10,10 @@
 #include "problems/verify/PenaltySupport.hpp"
 #include "problems/verify/ShearLocking.hpp"
 #include "problems/verify/TimeStepStudy.hpp"
+#include "tests/Helpers.hpp"
 
 using namespace beamrotor::verify;
+using beamrotor::test::relError;
 
 TEST_SUITE("failure studies") {
   TEST_CASE("shear locking: the naive element locks, reduced integration and the exact do not") {
@@ -29,19 +31,22 @@ TEST_SUITE("failure studies") {
     CHECK(bySlenderness[0].fullIntegration > 0.3);
     CHECK(bySlenderness[3].fullIntegration > 0.9999);
     // Refining only slowly cures locking: at L/h = 1000 even 512 elements are 55 % off, while
-    // reduced integration converges at order 2 (error 1/(4 n^2)).
+    // reduced integration converges at order 2 (error 1/(4 n^2)) until round-off, which grows
+    // with the condition number ~ (L/h)^2 n^2, overtakes the shrinking error: measured
+    // departures from 1/(4 n^2) of 6.4e-7, 1.3e-5 and 7.0e-3 at n = 8, 32, 128, and 1.2 (the
+    // error doubled) at n = 512. Asked to 1e-2 where the discretisation error dominates.
     const auto byMesh = lockingAgainstElements(1000, {8, 32, 128, 512});
     CHECK(byMesh.back().fullIntegration > 0.5);
-    for (const auto& p : byMesh)
-      CHECK(p.reducedIntegration ==
-            doctest::Approx(0.25 / (p.elements * p.elements)).epsilon(0.05));
+    for (int i = 0; i < 3; ++i)
+      CHECK(relError(byMesh[i].reducedIntegration,
+                     0.25 / (byMesh[i].elements * byMesh[i].elements)) < 1e-2);
   }
 
   TEST_CASE("penalty joint: modelling error 3.75/ratio, then round-off; elimination exact") {
     const auto points = penaltyStudy({1e3, 1e6, 1e9, 1e12, 1e16});
     // Soft: the spring's own compliance, to 1 %.
-    CHECK(points[0].error == doctest::Approx(points[0].modelling).epsilon(0.01));
-    CHECK(points[1].error == doctest::Approx(points[1].modelling).epsilon(0.01));
+    CHECK(relError(points[0].error, points[0].modelling) < 0.01);
+    CHECK(relError(points[1].error, points[1].modelling) < 0.01);
     // Stiff: rcond ~ 1 / ratio, and round-off of order eps / rcond (measured 3e-5 at 1e12,
     // 0.22 at 1e16) far above the modelling error.
     CHECK(points[3].rcond < 1e-11);

@@ -2,6 +2,8 @@
 // falls until round-off, growing with the condition number, takes over.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include "problems/verify/OverRefinement.hpp"
 
 using namespace beamrotor::verify;
@@ -9,9 +11,10 @@ using namespace beamrotor::verify;
 TEST_SUITE("over-refinement") {
   TEST_CASE("the tip error follows 1/(3 N^2), then round-off turns it up") {
     const auto p = overRefinementStudy({10, 100, 1000, 10000});
-    // Coarse: the closed-form discretisation error, round-off (eps / rcond ~ 1e-10) invisible.
-    CHECK(p[0].error == doctest::Approx(p[0].discretisation).epsilon(1e-6));
-    CHECK(p[1].error == doctest::Approx(p[1].discretisation).epsilon(1e-3));
+    // Coarse: the closed-form discretisation error; round-off, growing with 1/rcond ~ N^3,
+    // is measured at 3.7e-10 of it at N = 10 and already 1.6e-5 at N = 100. Asked: 1e-8, 1e-4.
+    CHECK(std::abs(p[0].error / p[0].discretisation - 1) < 1e-8);
+    CHECK(std::abs(p[1].error / p[1].discretisation - 1) < 1e-4);
     // Fine: the error no longer falls. Measured 1.3e-6 at 1000 elements (4x the 3.3e-7
     // discretisation) and 6 % at 10^4 (SciPy's 5 % in the issue): the curve turned up.
     CHECK(p[2].error > 2 * p[2].discretisation);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <tuple>
 
 #include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
@@ -175,6 +176,28 @@ TEST_SUITE("rotor modes") {
       CHECK(std::abs(std::abs(mode.whirlRatio) - 1) < 1e-12);  // circular orbits
     }
     CHECK(unstable == 1);
+  }
+
+  TEST_CASE("tabulated cross-coupled bearing: the coefficients interpolated at the speed") {
+    // The closed form of the case above with k and q read off a two-row table at the spin
+    // speed: (3e6, 0) N/m at rest and (5e6, 8e5) at 1000 rad/s give k = 3.5e6 and q = 2e5 at
+    // 250 rad/s, held at the last row beyond it. The table's speed dependence reaches the
+    // matrices through the rotor system's per-speed update, not through the rest state.
+    const double m = 12;
+    Model model;
+    const int node = model.addNode({0, 0, 0});
+    model.add<PointInertia>(node, DofSet{Dof::uy, Dof::uz}, m);
+    model.add<Bearing>(node, std::vector<double>{0, 1000},
+                       std::vector<BearingCoefficients>{{3e6, 0, 0, 3e6}, {5e6, 8e5, -8e5, 5e6}});
+    for (auto [speed, k, q] : {std::tuple{250.0, 3.5e6, 2e5}, std::tuple{1500.0, 5e6, 8e5}}) {
+      CAPTURE(speed);
+      const RotorModesResult res = solveRotorModes(model, speed, rotorOptions(2));
+      REQUIRE(res.modes.size() == 2);
+      for (const RotorMode& mode : res.modes) {
+        const Complex expected = -Complex(k, mode.whirl == Whirl::forward ? -q : q) / m;
+        CHECK(std::abs(mode.eigenvalue * mode.eigenvalue - expected) < 1e-12 * std::abs(expected));
+      }
+    }
   }
 
   TEST_CASE("non-rotating uniform shaft: each planar frequency twice (eigenspaces)") {

@@ -1,0 +1,170 @@
+#include "fem/assembly/ElementExtrema.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fem/assembly/Recovery.hpp"
+#include "fem/model/ShearStress.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// A polynomial in s by its coefficients, lowest degree first.
+using Polynomial = std::vector<double>;
+
+double valueAt(const Polynomial& p, double s) {
+  double v = 0;
+  for (auto c = p.rbegin(); c != p.rend(); ++c) v = v * s + *c;
+  return v;
+}
+
+Polynomial derivativeOf(const Polynomial& p) {
+  Polynomial d;
+  for (std::size_t k = 1; k < p.size(); ++k) d.push_back(double(k) * p[k]);
+  return d;
+}
+
+Polynomial productOf(const Polynomial& a, const Polynomial& b) {
+  if (a.empty() || b.empty()) return {};
+  Polynomial r(a.size() + b.size() - 1, 0.0);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
+  return r;
+}
+
+/// x a + y b.
+Polynomial combination(double x, const Polynomial& a, double y, const Polynomial& b) {
+  Polynomial r(std::max(a.size(), b.size()), 0.0);
+  for (std::size_t k = 0; k < a.size(); ++k) r[k] += x * a[k];
+  for (std::size_t k = 0; k < b.size(); ++k) r[k] += y * b[k];
+  return r;
+}
+
+/// Appends the zeros of p in [0, 1] and those of its derivatives. Between consecutive zeros
+/// of p' the polynomial is monotone, so each sign change there holds exactly one zero, found
+/// by bisection to the last bit; a zero of even multiplicity is a zero of p' and so already
+/// among them.
+void collectZeros(Polynomial p, std::vector<double>& out) {
+  while (!p.empty() && p.back() == 0) p.pop_back();
+  if (p.size() < 2) return;  // a constant: no isolated zero
+  if (p.size() == 2) {
+    const double s = -p[0] / p[1];
+    if (s >= 0 && s <= 1) out.push_back(s);
+    return;
+  }
+  std::vector<double> knots{0, 1};
+  collectZeros(derivativeOf(p), knots);
+  std::sort(knots.begin(), knots.end());
+  out.insert(out.end(), knots.begin() + 1, knots.end() - 1);
+  for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    double lo = knots[k], hi = knots[k + 1];
+    const double atLo = valueAt(p, lo), atHi = valueAt(p, hi);
+    if (atLo == 0) out.push_back(lo);
+    if (atHi == 0) out.push_back(hi);
+    if (!(atLo < 0 && atHi > 0) && !(atLo > 0 && atHi < 0)) continue;  // also NaN
+    const bool rising = atLo < 0;
+    for (int i = 0; i < 200 && lo < hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;  // adjacent doubles
+      ((valueAt(p, mid) < 0) == rising ? lo : hi) = mid;
+    }
+    out.push_back(0.5 * (lo + hi));
+  }
+}
+
+/// The largest of value(s) over the candidate places; NaN as soon as one value is NaN.
+template <class Value>
+BeamPeak largestAt(int element, const std::vector<double>& places, Value value) {
+  BeamPeak best{element, 0, -std::numeric_limits<double>::infinity()};
+  for (double s : places) {
+    const double v = value(s);
+    if (std::isnan(v)) return {element, s, v};
+    if (v > best.value) best = {element, s, v};
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<double> zerosInUnitInterval(const std::vector<double>& c) {
+  std::vector<double> out;
+  collectZeros(c, out);
+  return out;
+}
+
+ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& forces) {
+  const auto series = [&](double SectionForces::*f) {
+    return Polynomial{forces.c[0].*f, forces.c[1].*f, forces.c[2].*f};
+  };
+  const Polynomial N = series(&SectionForces::N), Vy = series(&SectionForces::Vy),
+                   Vz = series(&SectionForces::Vz), My = series(&SectionForces::My),
+                   Mz = series(&SectionForces::Mz);
+  const Section& section = element.section();
+
+  // 1. Bending moment |M| = sqrt(P), P = My^2 + Mz^2: at an end or where P' = 0.
+  const Polynomial P = combination(1, productOf(My, My), 1, productOf(Mz, Mz));
+  const Polynomial dP = derivativeOf(P);
+  std::vector<double> momentAt{0, 1};
+  collectZeros(dP, momentAt);
+
+  // 2. Shear stress k |V| / A, |V|^2 = Vy^2 + Vz^2 (quadratic): at an end or where its
+  //    derivative vanishes.
+  std::vector<double> shearAt{0, 1};
+  collectZeros(derivativeOf(combination(1, productOf(Vy, Vy), 1, productOf(Vz, Vz))), shearAt);
+
+  // 3. Normal stress (maxNormalStress). A sum of absolute values |N|/A + |Mz| cy/Iz + |My| cz/Iy
+  //    is smooth between the zeros of its terms, where a kink can only be a minimum, so its
+  //    maximum is at an end or where one sign pattern's derivative vanishes. The axisymmetric
+  //    sections' |N|/A + c sqrt(P)/I is stationary where c P' / (2 I sqrt(P)) = -+ N'/A, i.e.
+  //    at zeros of (c/I)^2 P'^2 - 4 (N'/A)^2 P (squared: both signs). Candidates of either
+  //    form are evaluated with the true formula, so extra ones cost nothing but time.
+  std::vector<double> stressAt = momentAt;
+  collectZeros(N, stressAt);
+  for (double sN : {-1.0, 1.0})
+    for (double sz : {-1.0, 1.0})
+      for (double sy : {-1.0, 1.0}) {
+        const Polynomial pattern =
+            combination(1, combination(sN / section.A, N, sz * section.outerY / section.Iz, Mz),
+                        sy * section.outerZ / section.Iy, My);
+        collectZeros(derivativeOf(pattern), stressAt);
+      }
+  const double k = section.outerY / section.Iz, dN = N[1] / section.A;
+  if (dN != 0)  // otherwise these are the zeros of P', already there
+    collectZeros(combination(k * k, productOf(dP, dP), -4 * dN * dN, P), stressAt);
+
+  return {largestAt(-1, stressAt, [&](double s) { return maxNormalStress(section, forces.at(s)); }),
+          largestAt(-1, shearAt, [&](double s) { return maxShearStress(section, forces.at(s)); }),
+          largestAt(-1, momentAt, [&](double s) {
+            const SectionForces f = forces.at(s);
+            return std::hypot(f.My, f.Mz);
+          })};
+}
+
+std::vector<ElementPeaks> elementPeaks(const Model& model, const NodalField& displacement) {
+  std::vector<ElementPeaks> out;
+  const auto& elements = model.elements();
+  for (int i = 0; i < int(elements.size()); ++i) {
+    const LineElement* line = asLine(elements[i]);
+    if (!line) continue;
+    ElementPeaks p =
+        elementPeaks(*line, line->sectionForceSeries(elementValues(*line, displacement)));
+    p.stress.element = p.shear.element = p.moment.element = i;
+    out.push_back(p);
+  }
+  return out;
+}
+
+std::optional<BeamPeak> largestPeak(const std::vector<ElementPeaks>& peaks,
+                                    BeamPeak ElementPeaks::*kind) {
+  std::optional<BeamPeak> best;
+  for (const ElementPeaks& p : peaks) {
+    const BeamPeak& candidate = p.*kind;
+    if (std::isnan(candidate.value)) return candidate;
+    if (!best || candidate.value > best->value) best = candidate;
+  }
+  return best;
+}
+
+}  // namespace beamrotor

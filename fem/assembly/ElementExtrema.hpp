@@ -1,0 +1,48 @@
+// The exact extrema of the stress resultants along line elements. Within an element the
+// resultants are polynomials of known degree in the position (SectionForceSeries: forces at
+// most linear, moments at most quadratic under uniform span loads), so the largest bending
+// moment, normal stress and shear stress lie at an end or where a derivative vanishes: found
+// here from those polynomials, not from samples. Every output that reports a largest value
+// (check quantities, results.json, the summary, VTK) reads these.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "fem/model/LineElement.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
+
+namespace beamrotor {
+
+/// The largest value of one quantity on one element and where it is.
+struct BeamPeak {
+  int element = -1;  ///< index into model.elements()
+  double s = 0;      ///< fraction of the element's length, 0..1
+  double value = 0;  ///< NaN when some resultant of the element is not finite
+};
+
+/// An element's largest outer-fibre normal stress (maxNormalStress, Pa), transverse shear
+/// stress (maxShearStress, Pa) and bending moment magnitude hypot(My, Mz) (N m).
+struct ElementPeaks {
+  BeamPeak stress, shear, moment;
+};
+
+/// The peaks of one element from its resultants along it.
+ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& forces);
+
+/// The peaks of every line element of a static solution, in element order.
+std::vector<ElementPeaks> elementPeaks(const Model& model, const NodalField& displacement);
+
+/// The largest of one kind over the elements (the first on ties); a value that is not finite
+/// anywhere makes the result NaN, so a check on it fails instead of reading a smaller number.
+/// nullopt without line elements.
+std::optional<BeamPeak> largestPeak(const std::vector<ElementPeaks>& peaks,
+                                    BeamPeak ElementPeaks::*kind);
+
+/// The real zeros in [0, 1] of the polynomial c[0] + c[1] s + ... (any degree), together with
+/// the zeros of its derivatives there (so even-multiplicity zeros are among them): every place
+/// where it can change sign or touch zero. Exposed for the tests.
+std::vector<double> zerosInUnitInterval(const std::vector<double>& c);
+
+}  // namespace beamrotor

@@ -1,0 +1,27 @@
+// Every file beamrotor writes goes through here, so that no failed write goes unnoticed: the
+// stream is flushed and closed and its state checked, and a failure (a full device, an I/O
+// error, a read-only directory) becomes an exception naming the file and the system's reason.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace beamrotor {
+
+/// Creates (or truncates) `file` and writes it with `write`; throws std::runtime_error
+/// "cannot write FILE: REASON" when it cannot be created or any byte was not written, and
+/// Interrupted (Interruption.hpp) when a deferred signal arrived before it.
+void writeFile(const std::filesystem::path& file, const std::function<void(std::ostream&)>& write);
+
+/// writeFile into a temporary sibling that then replaces `file` in one rename: a reader sees
+/// the old content or the new one, and a failure leaves the old file as it was.
+void writeFileAtomically(const std::filesystem::path& file,
+                         const std::function<void(std::ostream&)>& write);
+
+/// "cannot write FILE: REASON" with errno's text (or `fallback` when errno says nothing).
+std::string writeFailure(const std::filesystem::path& file, int error,
+                         const std::string& fallback = "write error");
+
+}  // namespace beamrotor

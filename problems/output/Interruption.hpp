@@ -1,0 +1,45 @@
+// Ctrl-C, `kill` or a closed terminal while results are being written: the signal is recorded
+// (not acted on at once), the writers stop at their next file and unwind, which removes the
+// half-written temporary directory, and the process then ends by the same signal. Outside a
+// write the signals keep their usual effect (nothing is on disk to clean up while solving).
+#pragma once
+
+#include <stdexcept>
+
+namespace beamrotor {
+
+/// What a writer throws when a deferred signal arrived.
+class Interrupted : public std::runtime_error {
+ public:
+  explicit Interrupted(int signal);
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
+/// While one exists, SIGINT, SIGTERM and SIGHUP are recorded instead of ending the process; a
+/// second such signal ends it at once (the next run sweeps what is left, see
+/// AtomicDirectory.hpp). The previous handlers come back when the last one is destroyed.
+class DeferredSignals {
+ public:
+  DeferredSignals();
+  ~DeferredSignals();
+  DeferredSignals(const DeferredSignals&) = delete;
+  DeferredSignals& operator=(const DeferredSignals&) = delete;
+};
+
+/// Throws Interrupted when a signal was recorded. Writers call it before each file.
+void throwIfInterrupted();
+
+/// The recorded signal, 0 when none.
+int pendingInterruption();
+
+/// Forgets a recorded signal (for tests that raise one on purpose).
+void clearInterruption();
+
+/// Ends the process by the recorded signal, with its default action, when there is one (so
+/// that a shell sees the process as killed by it). Called last in main.
+void endIfInterrupted();
+
+}  // namespace beamrotor

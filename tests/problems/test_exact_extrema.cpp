@@ -1,0 +1,159 @@
+// Exact extrema: the largest moment, stress and shear inside an element against the closed
+// form of a propped beam with a support settlement and a distributed load (the peak lies
+// between sample points), the same number in a check and in results.json, and a non-finite
+// resultant making the quantity non-finite so that its check fails.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/Recovery.hpp"
+#include "problems/cli/Summary.hpp"
+#include "problems/output/JsonWriter.hpp"
+#include "problems/run/Measure.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/Helpers.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+// Clamped at x = 0, propped at x = L and lifted there by d = -q L^4 / (48 E I), uniform load q
+// (N/m along y, downward). The prop's force from w(L) = q L^4 / (8 E I) + R L^3 / (3 E I) = d
+// (Gere & Goodno, table G-1, cases 1 and 4): R = 3 E I d / L^3 - 3 q L / 8 = -7 q L / 16.
+// The moment of the part right of x, M(x) = R (L - x) + q (L - x)^2 / 2, is stationary where
+// its shear vanishes, L - x = -R / q = 7 L / 16, with |M| = R^2 / (2 |q|) = 49 |q| L^2 / 512,
+// larger than the root's |R L + q L^2 / 2| = |q| L^2 / 16. On 3 elements of 1 m it lies at
+// s = 0.6875 of the middle element: between the 8 (and 4) sample points per element.
+const std::string kProppedDeck = R"(
+parameters: {L: 3, q: -2000, D: 0.06, E: 200e9, nu: 0.3}
+derived:
+  EI: E*pi*D^4/64
+  lift: -q*L^4/(48*EI)
+  R: 3*EI*lift/L^3 - 3*q*L/8
+  M_peak: R^2 / (2*abs(q))
+  x_peak: L + R/q
+  sigma_peak: 32*M_peak/(pi*D^3)
+  tau_peak: (3 + 2*nu)/(2*(1 + nu)) * abs(R + q*L) / (pi*D^2/4)
+materials:
+  - {name: steel, E: E, nu: nu, rho: 7850}
+sections:
+  - {name: rod, shape: circle, D: D}
+segments:
+  - {length: L, section: rod, elements: 3}
+supports:
+  - {name: wall, at: start, fix: clamped}
+  - {name: prop, at: end, fix: [ux], prescribe: {uy: lift}}
+loads:
+  - {type: distributed, qy: q}
+report: [x_peak]
+checks:
+  # Exact elements and exact extrema: round-off only.
+  - {name: peak moment, quantity: moment max, reference: M_peak, tolerance: 1e-12}
+  - {name: peak stress, quantity: stress max, reference: sigma_peak, tolerance: 1e-12}
+  - {name: peak shear, quantity: shear max, reference: tau_peak, tolerance: 1e-12}
+)";
+
+Study solveProppedBeam() {
+  return test::solveDeckText(kProppedDeck, "propped.yaml");
+}
+
+}  // namespace
+
+TEST_SUITE("exact extrema") {
+  TEST_CASE("propped beam with a settlement: the peak inside an element, exact everywhere") {
+    const Study study = solveProppedBeam();
+    REQUIRE(study.run);
+    const RunResult& run = *study.run;
+    const double L = 3, q = -2000, D = 0.06;
+    const double mPeak = 49 * std::abs(q) * L * L / 512;
+    const double sigmaPeak = 32 * mPeak / (test::kPi * D * D * D);
+    REQUIRE(run.checks.size() == 3);
+    for (const Check& c : run.checks) {
+      CAPTURE(c.name);
+      CHECK(c.pass());
+    }
+    // The deck's references are written independently of these numbers.
+    CHECK(test::relError(run.checks[0].computed, mPeak) < 1e-12);
+    CHECK(test::relError(run.checks[1].computed, sigmaPeak) < 1e-12);
+
+    // results.json reports the very same number, at the stationary point.
+    const StaticResult& r = *run.analyses.front().statics;
+    const std::vector<std::vector<ElementPeaks>> peaks{elementPeaks(*run.model, r.displacement)};
+    const Json doc = runJson(run, peaks);
+    const Json& top = doc.at("analyses").at(0).at("max_stress");
+    CHECK(top.at("value").get<double>() == run.checks[1].computed);
+    CHECK(top.at("element").get<int>() == 1);
+    // The stationary point is the zero of a linear shear: round-off in its place.
+    CHECK(std::abs(top.at("x").get<double>() - 9 * L / 16) < 1e-12 * L);
+
+    // What sampling saw (before: 8 stations per element for checks, 4 for results.json): the
+    // nearest stations lie h/16 = L/48 from the peak (x = 1.625 and 1.75 against 1.6875), where
+    // M = M_peak - |q| (L/48)^2 / 2, i.e. 2.3e-3 relative below it. The exact peak must be above
+    // every sample.
+    for (int perElement : {4, 8}) {
+      double sampled = 0;
+      for (const BeamStation& st : recoverBeamFields(*run.model, r.displacement, perElement))
+        sampled = std::max(sampled, std::hypot(st.forces.My, st.forces.Mz));
+      const double deficit = std::abs(q) * (L / 48) * (L / 48) / 2 / mPeak;
+      CHECK(test::relError(sampled, mPeak) == doctest::Approx(deficit).epsilon(1e-9));
+      CHECK(sampled < run.checks[0].computed);
+    }
+  }
+
+  TEST_CASE("a non-finite resultant makes the largest value NaN and its check fail") {
+    const Study study = solveProppedBeam();
+    REQUIRE(study.run);
+    RunResult run = *study.run;
+    // A NaN in the nodal solution (as an ill-conditioned solve could leave) reaches the
+    // resultants of the two elements at that node only; std::max would drop it and report
+    // the others' largest value.
+    StaticResult& r = *run.analyses.front().statics;
+    r.displacement(1, int(Dof::rz)) = std::numeric_limits<double>::quiet_NaN();
+    for (const char* text : {"moment max", "stress max", "shear max"}) {
+      CAPTURE(text);
+      const double value = measure(parseQuantity(text), run.analyses.front(), *run.model);
+      CHECK(std::isnan(value));
+      Check c{"peak", value, 1.0, 0.5, text};
+      CHECK_FALSE(c.pass());
+      run.checks = {c};
+      std::ostringstream table;
+      CHECK(cli::printChecks(table, study.deck, {&run}, {}) == 1);
+      CHECK(table.str().find(std::string("FAIL  peak")) != std::string::npos);
+      CHECK(table.str().find(text) != std::string::npos);
+    }
+    // The element peaks themselves.
+    SectionForceSeries nan;
+    nan.c[1].Mz = std::numeric_limits<double>::quiet_NaN();
+    const auto& line = *asLine(run.model->elements().front());
+    const ElementPeaks p = elementPeaks(line, nan);
+    CHECK(std::isnan(p.moment.value));
+    CHECK(std::isnan(p.stress.value));
+    CHECK(std::isnan(largestPeak({ElementPeaks{}, p}, &ElementPeaks::moment)->value));
+  }
+
+  TEST_CASE("zeros in [0, 1]: simple and double zeros, to round-off") {
+    // (s - 0.3)^2 (s - 0.7) = s^3 - 1.3 s^2 + 0.51 s - 0.063: a double zero (no sign change) and
+    // a simple one; (s - 2)(s + 1) has none inside (0.5, its derivative's zero, may be listed).
+    const auto near = [](const std::vector<double>& zeros, double x) {
+      for (double z : zeros)
+        if (std::abs(z - x) < 1e-12) return true;
+      return false;
+    };
+    const std::vector<double> z = zerosInUnitInterval({-0.063, 0.51, -1.3, 1});
+    CHECK(near(z, 0.3));
+    CHECK(near(z, 0.7));
+    for (double s : zerosInUnitInterval({-2, -1, 1})) CHECK(s == doctest::Approx(0.5));
+    // Degree 6 with leading coefficients of very different size: (s - 0.25)(s - 0.5)(s - 0.75)
+    // times 1e20 (s^3 + 1), whose other zeros lie outside.
+    std::vector<double> p{0, 0, 0, 0, 0, 0, 0};
+    const std::vector<double> a{-0.09375, 0.6875, -1.5, 1}, b{1e20, 0, 0, 1e20};
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t j = 0; j < b.size(); ++j) p[i + j] += a[i] * b[j];
+    const std::vector<double> z6 = zerosInUnitInterval(p);
+    for (double x : {0.25, 0.5, 0.75}) CHECK(near(z6, x));
+  }
+}
