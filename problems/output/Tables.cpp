@@ -1,6 +1,7 @@
 // The CSV tables of one run (see Tables.hpp).
 #include "problems/output/Tables.hpp"
 
+#include "fem/assembly/Recovery.hpp"
 #include "problems/output/ModeShapes.hpp"
 
 namespace beamrotor {

@@ -17,7 +17,7 @@ using namespace beamrotor::test;
 
 namespace {
 
-constexpr double a = 0.575, d = 1.130, D1 = 0.120, D2 = 0.070, E = 200e9;
+constexpr double a = 0.575, d = 1.130, D1 = 0.120, D2 = 0.070, youngRod = 200e9;
 constexpr double eta = 0.4, psi = a + 0.715 - eta, l = a + d;
 
 double thetaP() {
@@ -35,8 +35,8 @@ struct Response {
 /// the middle force; conditions w(psi) = 0 and, at the right end, w = 0 with theta = 0
 /// (clamped) or M = 0 (hinged). Left end: w = -w0, theta = 0.
 Response initialParameters(double w0, bool rightClamped) {
-  const double EI1 = E * std::numbers::pi * std::pow(D1, 4) / 64;
-  const double EI2 = E * std::numbers::pi * std::pow(D2, 4) / 64;
+  const double EI1 = youngRod * std::numbers::pi * std::pow(D1, 4) / 64;
+  const double EI2 = youngRod * std::numbers::pi * std::pow(D2, 4) / 64;
   auto carry = [](Eigen::Vector4d s, double h, double EI) {
     return Eigen::Vector4d(s[0] + s[1] * h + s[2] * h * h / (2 * EI) + s[3] * h * h * h / (6 * EI),
                            s[1] + s[2] * h / EI + s[3] * h * h / (2 * EI), s[2] + s[3] * h, s[3]);
@@ -86,7 +86,7 @@ struct FeResponse {
 
 FeResponse variantCElements(double w0) {
   Model model;
-  auto mat = Material::fromEnu("steel", E, 0.3, 7850);
+  auto mat = Material::fromEnu("steel", youngRod, 0.3, 7850);
   LineSpec spec;
   spec.segments.push_back({a, std::make_shared<Section>(Section::circle("D1", mat, D1)), 3});
   spec.segments.push_back({d, std::make_shared<Section>(Section::circle("D2", mat, D2)), 6});
