@@ -329,7 +329,15 @@ void Beam::condense(Matrix12& K, Matrix12* M, Vector12* f) const {
   for (int i = 0; i < nb; ++i) T(released_[i], released_[i]) = 0;
   // Rows of T for released dofs express them through the kept ones; their own columns vanish.
   for (int i = 0; i < nb; ++i) T.col(released_[i]).setZero();
+  const Eigen::VectorXd before = K.diagonal().cwiseAbs();
   K = T.transpose() * K * T;
+  // Kaa - Kab Kbb^-1 Kba cancels exactly where the releases leave no stiffness (a bar hinged
+  // at both ends has none in bending), but in floating point leaves round-off there, which a
+  // solver scaled by diag(K) would take for real stiffness: what is below round-off of the
+  // unreleased entries is zero.
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j)
+      if (std::abs(K(i, j)) <= 1e-12 * std::sqrt(before[i] * before[j])) K(i, j) = 0;
   if (M) *M = T.transpose() * (*M) * T;
   if (f) *f = T.transpose() * (*f);
 }

@@ -54,9 +54,10 @@ ModalResult solveModes(const Model& model, const ModalOptions& options) {
     pairs = symmetricEigenpairs(K, M, std::min(options.modes, dofs.freeCount()), options.shift);
   } catch (const SingularSystem& e) {
     if (options.shift == 0) {
-      const auto moving = zeroEnergyDofs(K, dofs);
-      if (!moving.empty())
-        throwUnsupported(model, moving, std::string(e.what()) + ".\nmodal analysis at shift 0");
+      const Mechanism mechanism = findMechanism(model, dofs, K);
+      if (mechanism.count > 0)
+        throwUnsupported(model, dofs, mechanism,
+                         std::string(e.what()) + ".\nmodal analysis at shift 0");
     }
     throw;
   }

@@ -67,7 +67,8 @@ struct StaticResult {
   std::vector<ContactState> contacts;        ///< settled contact states, in model order
   std::vector<SideRotations> hinges;         ///< at every node with a released beam end
   int activeSetIterations = 0;               ///< linear solves the contact loop needed
-  double rcond = 0;                          ///< the solver's reciprocal condition estimate
+  double rcond = 0;     ///< reciprocal condition estimate of the scaled system D^-1/2 K D^-1/2
+  double roundOff = 0;  ///< measured relative error of the solution (extended-precision residual)
   std::string solver;                        ///< the direct method used (LinearSolver)
   SystemSize size;
   SolveTimings time;

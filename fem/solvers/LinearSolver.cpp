@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace beamrotor {
 
@@ -9,6 +10,29 @@ double SparseLDLT::rcond() const {
   if (!m_factorizationIsOk || info() != Eigen::Success) return 0;
   // Eigen keeps the workspace private and hands it out non-const only; rcond reads it.
   return cholmod_rcond(m_cholmodFactor, &const_cast<SparseLDLT*>(this)->cholmod());
+}
+
+void SparseLDLT::factorize(const SparseMatrix& A) {
+  diagonal_ = A.diagonal();
+  Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper>::factorize(A);
+}
+
+double SparseLDLT::scaledRcond() const {
+  if (!m_factorizationIsOk || info() != Eigen::Success) return 0;
+  const cholmod_factor& L = *m_cholmodFactor;
+  if (std::size_t(diagonal_.size()) != L.n) return 0;
+  const int* start = static_cast<const int*>(L.p);
+  const double* x = static_cast<const double*>(L.x);
+  const int* perm = static_cast<const int*>(L.Perm);
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for (std::size_t j = 0; j < L.n; ++j) {
+    const double a = diagonal_[perm ? perm[j] : int(j)];
+    if (!(a > 0)) return 0;
+    const double pivot = std::abs(x[start[j]]) / a;
+    smallest = std::min(smallest, pivot);
+    largest = std::max(largest, pivot);
+  }
+  return largest > 0 && std::isfinite(largest) ? smallest / largest : 0;
 }
 
 double SparseLDLT::factorEntries() const {
@@ -108,15 +132,23 @@ void LinearSolver::analyzePattern(const SparseMatrix& A) {
 }
 
 void LinearSolver::factorize(const SparseMatrix& A) {
-  if (symmetric_)
+  if (symmetric_) {
     ldlt_.factorize(A);
-  else
-    lu_.factorize(A);
+    return;
+  }
+  // UMFPACK scales rows only; the columns (the dofs' units) are scaled here.
+  luScale_ = A.diagonal().cwiseAbs();
+  for (Eigen::Index i = 0; i < luScale_.size(); ++i)
+    luScale_[i] = luScale_[i] > 0 ? 1 / std::sqrt(luScale_[i]) : 1.0;
+  // Eigen's UmfPackLU keeps a reference to the matrix it factorised: it must outlive the factor.
+  luMatrix_ = luScale_.asDiagonal() * A * luScale_.asDiagonal();
+  lu_.factorize(luMatrix_);
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
   if (symmetric_) return ldlt_.solve(b);
-  return lu_.solve(b);
+  const Eigen::VectorXd scaledB = luScale_.cwiseProduct(b);
+  return luScale_.cwiseProduct(Eigen::VectorXd(lu_.solve(scaledB)));
 }
 
 std::string LinearSolver::methodName() const {
@@ -128,7 +160,7 @@ std::string LinearSolver::orderingName() const {
 }
 
 double LinearSolver::rcond() const {
-  return symmetric_ ? ldlt_.rcond() : lu_.rcond();
+  return symmetric_ ? ldlt_.scaledRcond() : lu_.rcond();
 }
 
 bool LinearSolver::healthy(double tol) const {

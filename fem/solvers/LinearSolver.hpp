@@ -19,7 +19,16 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   /// Quiet: a zero pivot is reported through info() and rcond(), never printed.
   SparseLDLT() { cholmod().print = 0; }
   /// CHOLMOD's cheap reciprocal condition estimate, min |D_ii| / max |D_ii| (0 when singular).
+  /// It depends on the units of the dofs; see scaledRcond().
   double rcond() const;
+  /// Numeric factorisation; keeps A's diagonal for scaledRcond().
+  void factorize(const SparseMatrix& A);
+  /// The same estimate for the symmetrically scaled matrix D^-1/2 A D^-1/2, D = diag(A),
+  /// from this factor: with P A P' = L D L', the scaled matrix factors as (S L S^-1) (S D S)
+  /// (S L S^-1)' with S = D^-1/2 permuted, whose pivots are D_jj / A_pp. Independent of the
+  /// units (and of any diagonal scaling) of the dofs; 0 when singular or when a diagonal
+  /// entry of A is not positive (a dof nothing holds).
+  double scaledRcond() const;
   /// Entries in the factor L (including its unit diagonal, which holds D).
   double factorEntries() const;
   /// Negative entries of D. By Sylvester's law of inertia, for A = K - sigma M this is the
@@ -31,6 +40,9 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   void analyzePattern(const SparseMatrix& A);
   /// The fill-reducing ordering the analysis chose: "natural", "AMD", "METIS", "NESDIS".
   const char* orderingName() const;
+
+ private:
+  Eigen::VectorXd diagonal_;  ///< of the matrix last factorised
 };
 
 /// Entries in the lower envelope of a structurally symmetric A: for each row, from its first
@@ -46,7 +58,9 @@ class LinearSolver {
   /// Chooses the method from A's values and computes the symbolic factorisation; later
   /// factorize() calls must pass matrices with the same pattern (and the same symmetry).
   void analyzePattern(const SparseMatrix& A);
-  /// Numeric factorisation. Check healthy() before solving.
+  /// Numeric factorisation. Check healthy() before solving. A non-symmetric matrix is
+  /// factorised symmetrically scaled, S A S with S = |diag(A)|^-1/2, and solved as
+  /// x = S (S A S)^-1 S b.
   void factorize(const SparseMatrix& A);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
@@ -55,6 +69,8 @@ class LinearSolver {
   std::string methodName() const;
   /// The fill-reducing ordering of the symbolic analysis (SparseLDLT, SparseLU).
   std::string orderingName() const;
+  /// Reciprocal condition estimate of the symmetrically scaled matrix D^-1/2 A D^-1/2: the
+  /// system's conditioning, whatever the units of its dofs.
   double rcond() const;
   /// True when the factorisation succeeded and rcond is above tol.
   bool healthy(double tol) const;
@@ -65,6 +81,8 @@ class LinearSolver {
   bool symmetric_ = false;
   SparseLDLT ldlt_;
   SparseLU lu_;
+  Eigen::VectorXd luScale_;  ///< S of the scaled non-symmetric matrix
+  SparseMatrix luMatrix_;    ///< S A S, referenced by lu_
 };
 
 }  // namespace beamrotor

@@ -1,6 +1,8 @@
 // UMFPACK through Eigen's wrapper, plus what the wrapper keeps to itself: UMFPACK's
-// reciprocal condition estimate (min |U_ii| / max |U_ii| after scaling), which tells a
+// reciprocal condition estimate (min |U_ii| / max |U_ii| after its row scaling), which tells a
 // singular or nearly singular matrix apart from a healthy one before its solution is trusted.
+// Row scaling leaves the columns (the dofs' units) as they are: LinearSolver factorises the
+// symmetrically scaled matrix, so that its estimate does not depend on them.
 #pragma once
 
 #include <Eigen/UmfPackSupport>

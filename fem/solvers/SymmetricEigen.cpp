@@ -109,8 +109,11 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
     const double upper = rayleighUpperBound(counter.factor(), K, M);
     op.shift = shiftBelowLowest(counter, sigma, upper, count);
     auto ldlt = std::make_shared<SparseLDLT>();
-    ldlt->compute(SparseMatrix(K - op.shift * M));
-    if (ldlt->info() == Eigen::Success && ldlt->rcond() > kSingularRcond) {
+    const SparseMatrix shifted = K - op.shift * M;
+    ldlt->analyzePattern(shifted);
+    ldlt->factorize(shifted);
+    // Positive definite below the spectrum: judged scaled, whatever the units of the dofs.
+    if (ldlt->info() == Eigen::Success && ldlt->scaledRcond() > kSingularRcond) {
       op.factorEntries = ldlt->factorEntries();
       op.solve = [ldlt](const Eigen::VectorXd& b) { return Eigen::VectorXd(ldlt->solve(b)); };
       return op;

@@ -26,7 +26,8 @@ class LinearStatics {
   explicit LinearStatics(const Model& model);
 
   /// Full-length displacement with the supports at their prescribed values and the held dofs
-  /// at theirs. Throws UnsupportedStructure or SolveError for a singular system.
+  /// at theirs. Throws UnsupportedStructure for a mechanism (named), SolveError for a held
+  /// structure whose solution is not finite; otherwise roundOff() says how much of it holds.
   Eigen::VectorXd solve(const std::vector<HeldDof>& held, double singularRcond);
 
   /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
@@ -35,7 +36,11 @@ class LinearStatics {
 
   const DofMap& dofs() const { return dofs_; }
   const SparseMatrix& stiffness() const { return K_; }
+  /// Reciprocal condition estimate of the last factorisation, symmetrically scaled.
   double rcond() const { return rcond_; }
+  /// The measured relative error of the last solution (round-off): the residual in extended
+  /// precision and one correction solve, in the scaled metric sqrt(K_jj) |u_j|.
+  double roundOff() const { return roundOff_; }
   double factorEntries() const { return solver_.factorEntries(); }
   /// The direct method chosen for K and its ordering ("CHOLMOD LDL', AMD ordering").
   std::string solverName() const {
@@ -52,7 +57,7 @@ class LinearStatics {
   Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
   LinearSolver solver_;
   bool analysed_ = false;
-  double rcond_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;
+  double rcond_ = 0, roundOff_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;
 };
 
 }  // namespace beamrotor

@@ -39,6 +39,7 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
   result.displacement = toNodalField(model, dofs, u);
   result.hinges = hingeRotations(model, result.displacement);
   result.rcond = system.rcond();
+  result.roundOff = system.roundOff();
   result.solver = system.solverName();
   result.size = systemSize(model, dofs, system.stiffness(), system.factorEntries());
   result.time.total = total.lap();

@@ -62,9 +62,10 @@ std::vector<const DeckPoint*> reportedPoints(const Deck& deck) {
 void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                  const AnalysisOutcome& a) {
   const StaticResult& r = *a.statics;
-  char rcond[32];
-  std::snprintf(rcond, sizeof rcond, "%.1e", r.rcond);
-  out << "static analysis '" << a.name << "' (" << r.solver << ", rcond " << rcond << ")\n";
+  char conditioning[64];
+  std::snprintf(conditioning, sizeof conditioning, "rcond %.1e, round-off <= %.1e", r.rcond,
+                r.roundOff);
+  out << "static analysis '" << a.name << "' (" << r.solver << ", " << conditioning << ")\n";
   out << "  reactions (force on the structure; N, N m):\n";
   for (const auto& [support, components] : bySupport(r)) {
     out << "    " << padded(support, 12);

@@ -108,6 +108,7 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
     out["active_set_iterations"] = r.activeSetIterations;
   }
   out["rcond"] = r.rcond;
+  out["round_off"] = r.roundOff;
   out["solver"] = r.solver;
   out["time_s"] = r.time.total;
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};

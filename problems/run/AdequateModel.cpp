@@ -44,33 +44,62 @@ struct MeshChoice {
   double error = 0;  ///< change from the next coarser level
 };
 
+/// The largest measured round-off error of the run's static solutions (0 without any).
+double roundOffOf(const RunResult& run) {
+  double largest = 0;
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.statics) largest = std::max(largest, a.statics->roundOff);
+  return largest;
+}
+
 /// Step 1: the first level agreeing with the one before to within the target. A level too
-/// coarse for an analysis (fewer dofs than modes asked) counts as not yet there.
+/// coarse for an analysis (fewer dofs than modes asked) counts as not yet there. Refining
+/// stops, and the search fails naming the `accuracy` field, once round-off starts to dominate:
+/// a static solution's measured round-off error above the target, a solve that fails after a
+/// coarser one succeeded, or successive changes that stop falling (from the fourth level on,
+/// past the coarse meshes' irregular start).
 MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
+  const auto fail = [&](const std::string& why) {
+    throw DeckSolveError(deck.path, deck.accuracy->place,
+                         formatNumber(target) + " not reached: " + why);
+  };
   std::optional<RunResult> previous;
+  std::optional<double> previousChange;
   for (int level = 0; level <= kMaxAdequateLevel; ++level) {
+    const std::string perSegment = std::to_string(1 << level) + " elements per segment";
     Stopwatch clock;
     std::optional<RunResult> run;
     try {
       run = runDeck(atLevel(deck, level));
-    } catch (const DeckSolveError&) {
-      if (level == kMaxAdequateLevel) throw;
+    } catch (const DeckSolveError& e) {
+      if (previous || level == kMaxAdequateLevel)
+        fail("the solve with " + perSegment +
+             " failed, refining further cannot help: " + e.message());
     }
     seconds += clock.lap();
     if (!run) continue;
+    if (const double roundOff = roundOffOf(*run); roundOff > target)
+      fail("with " + perSegment +
+           " the static solution's round-off alone, bounded by "
+           "measurement at " +
+           formatNumber(roundOff) + ", exceeds the target, and it only grows with finer meshes");
     // A point inside a segment already splits it: the same mesh twice would agree trivially.
     const auto elements = [](const RunResult& r) { return r.model->elements().size(); };
     if (previous && elements(*run) > elements(*previous)) {
       const double change = largestChange(*run, *previous);
       if (change <= target) return {std::move(*run), level, change};
+      if (previousChange && level >= 3 && change >= *previousChange)
+        fail("successive meshes stopped converging at " + perSegment + " (they differ by " +
+             formatNumber(change) + ", by " + formatNumber(*previousChange) +
+             " one level coarser): round-off dominates from there; about " +
+             formatNumber(std::min(change, *previousChange)) + " is reachable");
+      previousChange = change;
     }
     previous = std::move(run);
   }
-  throw DeckSolveError(deck.path, deck.accuracy->place,
-                       "not reached with " + std::to_string(1 << kMaxAdequateLevel) +
-                           " elements per segment: successive meshes still differ by more "
-                           "than " +
-                           formatNumber(deck.accuracy->target));
+  fail("successive meshes still differ by more than that with " +
+       std::to_string(1 << kMaxAdequateLevel) + " elements per segment");
+  return {};
 }
 
 /// Largest relative difference of the two-dof frequencies of the run's rigid-body analysis

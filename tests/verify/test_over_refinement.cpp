@@ -26,12 +26,14 @@ TEST_SUITE("over-refinement") {
   }
 
   TEST_CASE("solve's warning fires where the measured error has left the discretisation curve") {
-    // The rule (eps / rcond against (h/L)^2 / 3) only sees the factorisation; the study knows
-    // the exact error. They must agree on each side of the turn: no warning while the error is
-    // the closed-form 1/(3 N^2) (to 3 %), a warning once it is more than twice that.
+    // The rule compares a measured upper bound of the round-off (StaticResult::roundOff) with
+    // (h/L)^2 / 3; the study knows the exact error. The warning must never miss (a warning
+    // once the error is more than twice the closed form 1/(3 N^2)) and stay quiet while the
+    // error is the closed form to 0.1 %; being a bound, it fires from where round-off is a few
+    // percent of the error (1.5 % at 300 elements).
     for (const auto& p : overRefinementStudy({10, 30, 100, 300, 1000, 3000, 10000})) {
       CAPTURE(p.elements);
-      if (p.error < 1.03 * p.discretisation) CHECK_FALSE(p.warned);
+      if (p.error < 1.001 * p.discretisation) CHECK_FALSE(p.warned);
       if (p.error > 2 * p.discretisation) CHECK(p.warned);
       MESSAGE(p.elements << ": error/discretisation " << p.error / p.discretisation << ", warned "
                          << p.warned);
