@@ -16,10 +16,10 @@ using namespace beamrotor::test;
 
 namespace {
 
-struct Cantilever {
+struct TransientCantilever {
   Model model;
   Line line;
-  Cantilever() {
+  TransientCantilever() {
     line = uniformBeam(model, 1.5, steelCircle(0.04), 8, DofSet{Dof::uy, Dof::rz});
     clamp(model, "root", line.nodes.front(), DofSet{Dof::uy, Dof::rz});
   }
@@ -29,7 +29,7 @@ struct Cantilever {
 
 TEST_SUITE("transient beam") {
   TEST_CASE("harmonic tip load: newmark converges at O(dt^2) to the modal superposition") {
-    Cantilever c;
+    TransientCantilever c;
     const Model& m = c.model;
     // Tip load P (1 - cos W t), W = omega_1 / 2: it starts with zero value and slope, so the
     // modes the steps cannot resolve are excited only at (W / omega_i)^2 / omega_i^2, and
@@ -85,7 +85,7 @@ TEST_SUITE("transient beam") {
   }
 
   TEST_CASE("outputs: sampled histories, bounded evenly spaced frames, support values") {
-    Cantilever c;
+    TransientCantilever c;
     TransientOptions opt;
     opt.timeStep = 1e-4;
     opt.endTime = 0.0105;  // 105 steps
@@ -111,7 +111,7 @@ TEST_SUITE("transient beam") {
   }
 
   TEST_CASE("bad options are named") {
-    Cantilever c;
+    TransientCantilever c;
     TransientOptions opt;
     opt.timeStep = 1e-4;
     opt.endTime = 1e-3;
