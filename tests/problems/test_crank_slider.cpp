@@ -130,8 +130,9 @@ TEST_SUITE("crank slider") {
     // The paper's lambda: residual 1.5e-9 of r omega^2, i.e. 1e-7 m/s^2 on 77 m/s^2.
     CHECK(seriesResidual(0.065) < 0.33 * std::pow(0.065, 7));
     // The sign of the cos 4 phi term matters: with +A4 the residual is 2 A4 ~ lambda^3 / 2, only
-    // third order (5e-4 at lambda = 0.1 against 3e-8 with the derived sign).
-    CHECK(relError(seriesResidual(0.1, true), 2 * seriesCoefficients(0.1).A4) < 0.01);
+    // third order (5e-4 at lambda = 0.1 against 3e-8 with the derived sign); the lambda^7
+    // residual on top is 6.3e-5 of it (measured), so 2e-4.
+    CHECK(relError(seriesResidual(0.1, true), 2 * seriesCoefficients(0.1).A4) < 2e-4);
     // The two-term forms drop the lambda^3 terms (x: l (1 - cos beta) = r (lambda s/2 +
     // lambda^3 s^2/8 + ...), s = sin^2 phi): their residual falls like lambda^3, ratio 2^3.
     auto twoTermResidual = [](double lam) {

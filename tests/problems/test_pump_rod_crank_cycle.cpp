@@ -1,7 +1,9 @@
 // The pump rod driven by its crank (problems/pump_rod_crank_cycle.yaml): the deck's stroke
 // position eta(phi), computed by the deck function crank_position, against the crank-slider
 // kinematics written out here and against problems/scenes/CrankSlider; the reactions at the
-// dead centres against pump_rod.yaml at eta = 0 and 0.4; and the function's domain errors.
+// dead centres against pump_rod.yaml at eta = 0 and 0.4 (plumbing: two decks of one model; the
+// published reactions the deck checks at the dead centres are the independent reference); and
+// the function's domain errors.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -53,8 +55,9 @@ TEST_SUITE("pump rod crank cycle") {
                .run;
       const RunResult rod =
           *solveStudy(shippedDeckRequest("pump_rod.yaml", {std::string("eta=") + eta})).run;
-      // The same model up to the middle support's position, off by at most a rounding of
-      // eta (sin pi is 1.2e-16, not 0): round-off.
+      // Plumbing, not a second method: the same model up to the middle support's position,
+      // off by at most a rounding of eta (sin pi is 1.2e-16, not 0), so round-off. It shows
+      // crank_position puts the rod where pump_rod.yaml does.
       for (const auto& [support, dof] :
            std::vector<std::pair<std::string, Dof>>{{"left", Dof::uy},
                                                     {"left", Dof::rz},

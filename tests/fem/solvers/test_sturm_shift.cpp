@@ -68,6 +68,26 @@ TEST_SUITE("sturm shift") {
     CHECK(l31 > 16 * pinned);
   }
 
+  TEST_CASE("a diagonal pencil: the count is how many k_i / m_i lie below the shift") {
+    // K - sigma M is diagonal, so its LDL' pivots are k_i - sigma m_i in whatever order the
+    // factorisation takes them: the count is exact at every shift, up to all of them.
+    const std::vector<double> k{4, 1, 9, 16, 25}, m{1, 1, 1, 2, 1};  // ratios 4, 1, 9, 8, 25
+    std::vector<Eigen::Triplet<double>> kt, mt;
+    for (int i = 0; i < 5; ++i) {
+      kt.emplace_back(i, i, k[i]);
+      mt.emplace_back(i, i, m[i]);
+    }
+    SparseMatrix K(5, 5), M(5, 5);
+    K.setFromTriplets(kt.begin(), kt.end());
+    M.setFromTriplets(mt.begin(), mt.end());
+    SturmCounter counter(K, M);
+    for (auto [sigma, below] : {std::pair{0.5, 0}, std::pair{2.0, 1}, std::pair{5.0, 2},
+                                std::pair{8.5, 3}, std::pair{10.0, 4}, std::pair{30.0, 5}}) {
+      CAPTURE(sigma);
+      CHECK(counter.below(sigma) == below);
+    }
+  }
+
   TEST_CASE("the shift moves to just below the lowest eigenvalue") {
     const Pencil& p = clusteredBeam();
     SturmCounter counter(p.K, p.M);
