@@ -4,8 +4,13 @@
 
 #include "fem/solvers/HeapReserve.hpp"
 #include "problems/cli/App.hpp"
+#include "problems/output/Interruption.hpp"
 
 int main(int argc, char** argv) {
   beamrotor::keepFreedMemory();
-  return beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
+  const int code = beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
+  // Interrupted while writing: the temporary directory is gone; now end as the signal asked.
+  std::cout.flush();
+  beamrotor::endIfInterrupted();
+  return code;
 }

@@ -5,6 +5,7 @@
 
 #include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
+#include "problems/deck/DeckReader.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
 
@@ -138,8 +139,17 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
   study.analysis = t.analysis->name;
   if (t.check) study.check = t.check->name;
 
-  // 2. Every method on every level.
+  // 2. Every method on every level, the finest within what a deck may ask for.
   const Deck base = studyDeck(deck, t);
+  Deck finest = base;
+  refineMesh(finest, options.levels - 1);
+  double elements = 0;
+  for (const DeckSegment& s : finest.segments) elements += s.elementEstimate();
+  if (elements > kMaxElements)
+    throw DeckError(deck.path, DeckPlace{0, 0, "--levels"},
+                    "the finest mesh would have " + std::to_string(std::llround(elements)) +
+                        " elements, more than the " + std::to_string(kMaxElements) +
+                        " a deck may have; use fewer levels");
   for (const ConvergeMethod& method : convergeMethods(t.analysis->type != "static")) {
     ConvergeSeries series;
     series.method = method;

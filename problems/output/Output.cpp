@@ -14,8 +14,8 @@
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
-#include "problems/output/RotorOutput.hpp"
 #include "problems/output/OverlaidDiagrams.hpp"
+#include "problems/output/RotorOutput.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
@@ -137,13 +137,15 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 }  // namespace
 
-void writeRunOutputs(const RunResult& run, const fs::path& dir) {
+void writeRunOutputs(const RunResult& run, const fs::path& dir, const AlsoWrite& also) {
   const PreparedRun prepared = prepare(run);
-  writeDirectoryAtomically(
-      dir, [&](const fs::path& temporary) { writeRunFiles(prepared, temporary, /*charts=*/true); });
+  writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
+    writeRunFiles(prepared, temporary, /*charts=*/true);
+    if (also) also(temporary);
+  });
 }
 
-void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
+void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const AlsoWrite& also) {
   // 1. Prepare every value and the sweep's own tables before writing anything.
   if (sweep.values.empty()) throw std::invalid_argument("a sweep needs at least one value");
   if (sweep.runs.size() != sweep.values.size())
@@ -202,6 +204,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
         drawChart(temporary, sweepChart(first.deckName + ": " + a.name + " over " + sweep.parameter,
                                         sweepChart(stem), sweep.parameter, own, table, kSweepCsv));
     }
+    if (also) also(temporary);
   });
 }
 

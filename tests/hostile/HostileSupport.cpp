@@ -2,10 +2,13 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
+
+#include "problems/cli/App.hpp"
 
 namespace beamrotor::test {
 
@@ -71,6 +74,35 @@ std::vector<std::string> filesWithNonFinite(const fs::path& sandbox,
   return bad;
 }
 
+/// Without charts, gnuplot is pointed at nothing (a warning, and no time spent drawing).
+std::vector<std::string> gnuplotSetting(const HostileCase& c) {
+  if (c.charts) return {};
+  return {"BEAMROTOR_GNUPLOT=/nonexistent/gnuplot"};
+}
+
+/// The command line called in this process, in `dir` (restored after).
+ProcessResult runInThisProcess(const std::vector<std::string>& arguments, const fs::path& dir,
+                               bool charts) {
+  const char* gnuplot = std::getenv("BEAMROTOR_GNUPLOT");
+  const std::string saved = gnuplot ? gnuplot : "";
+  if (!charts) setenv("BEAMROTOR_GNUPLOT", "/nonexistent/gnuplot", 1);
+  const fs::path back = fs::current_path();
+  fs::current_path(dir);
+  std::vector<const char*> argv{"beamrotor"};
+  for (const std::string& a : arguments) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  ProcessResult r;
+  r.exitCode = beamrotor::cli::runCommandLine(int(argv.size()), argv.data(), out, err);
+  fs::current_path(back);
+  if (gnuplot)
+    setenv("BEAMROTOR_GNUPLOT", saved.c_str(), 1);
+  else
+    unsetenv("BEAMROTOR_GNUPLOT");
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
 }  // namespace
 
 std::string hostileBaseDeck(const std::string& title, const std::string& unit,
@@ -116,9 +148,8 @@ ProcessResult runHostileCase(const HostileCase& c) {
   std::vector<std::string> arguments;
   for (const std::string& a : c.arguments)
     arguments.push_back(replaced(a, "{sandbox}", sandbox.string()));
-  std::vector<std::string> environment = c.environment;
-  if (!c.charts) environment.push_back("BEAMROTOR_GNUPLOT=/nonexistent/gnuplot");
-  const ProcessResult r = runBeamrotor(arguments, sandbox, environment);
+  const ProcessResult r = c.process ? runBeamrotor(arguments, sandbox, gnuplotSetting(c))
+                                    : runInThisProcess(arguments, sandbox, c.charts);
 
   CAPTURE(r.out);
   CAPTURE(r.err);
