@@ -12,5 +12,10 @@ int main(int argc, char** argv) {
   // Interrupted while writing: the temporary directory is gone; now end as the signal asked.
   std::cout.flush();
   beamrotor::endIfInterrupted();
+  // The summary is output like any file: a failed write (a full device) is not success.
+  if (!std::cout) {
+    std::cerr << "beamrotor: cannot write the summary to standard output\n";
+    return code == 0 ? 1 : code;
+  }
   return code;
 }

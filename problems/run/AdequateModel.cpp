@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "fem/timing/Stopwatch.hpp"
+#include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
 #include "problems/deck/Formulations.hpp"
 #include "problems/run/ConvergeMethods.hpp"
@@ -47,14 +48,19 @@ struct MeshChoice {
 /// Step 1: the first level agreeing with the one before to within the target. A level too
 /// coarse for an analysis (fewer dofs than modes asked) counts as not yet there.
 MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
+  // The finest level within the element cap a deck has (so within its memory estimate).
+  int finest = 0;
+  while (finest < kMaxAdequateLevel &&
+         double(deck.segments.size()) * double(2 << finest) <= double(kMaxElements))
+    ++finest;
   std::optional<RunResult> previous;
-  for (int level = 0; level <= kMaxAdequateLevel; ++level) {
+  for (int level = 0; level <= finest; ++level) {
     Stopwatch clock;
     std::optional<RunResult> run;
     try {
       run = runDeck(atLevel(deck, level));
     } catch (const DeckSolveError&) {
-      if (level == kMaxAdequateLevel) throw;
+      if (level == finest) throw;
     }
     seconds += clock.lap();
     if (!run) continue;
@@ -67,9 +73,10 @@ MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
     previous = std::move(run);
   }
   throw DeckSolveError(deck.path, deck.accuracy->place,
-                       "not reached with " + std::to_string(1 << kMaxAdequateLevel) +
-                           " elements per segment: successive meshes still differ by more "
-                           "than " +
+                       "not reached with " + std::to_string(1 << finest) +
+                           " elements per segment (the most the cap of " +
+                           std::to_string(kMaxElements) +
+                           " elements allows): successive meshes still differ by more than " +
                            formatNumber(deck.accuracy->target));
 }
 

@@ -22,13 +22,6 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text;
 }
 
-std::string fileText(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 bool allowed(const std::string& relative, const std::vector<std::string>& mayChange) {
   for (const std::string& m : mayChange)
     if (relative == m || relative.rfind(m + "/", 0) == 0 || relative.rfind(m + ".tmp-", 0) == 0)
@@ -48,7 +41,7 @@ std::map<std::string, std::string> snapshot(const fs::path& sandbox,
       continue;
     }
     const fs::file_type type = it->symlink_status().type();
-    seen[relative] = type == fs::file_type::regular     ? "file:" + fileText(it->path())
+    seen[relative] = type == fs::file_type::regular     ? "file:" + fileContents(it->path())
                      : type == fs::file_type::directory ? std::string("dir")
                                                         : "other:" + std::to_string(int(type));
   }
@@ -67,7 +60,7 @@ std::vector<std::string> filesWithNonFinite(const fs::path& sandbox,
     for (const auto& entry : fs::recursive_directory_iterator(root)) {
       const std::string ext = entry.path().extension().string();
       if (!entry.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
-      const std::string text = fileText(entry.path());
+      const std::string text = fileContents(entry.path());
       if (std::regex_search(text, nonFinite)) bad.push_back(entry.path().string());
     }
   }
@@ -107,14 +100,7 @@ ProcessResult runInThisProcess(const std::vector<std::string>& arguments, const 
 
 std::string hostileBaseDeck(const std::string& title, const std::string& unit,
                             const std::string& check) {
-  return "title: " + title + R"(
-materials:
-  - {name: steel, E: 200e9, nu: 0.3, rho: 7850}
-sections:
-  - {name: bar, shape: circle, D: 0.05}
-segments:
-  - {name: a, length: 1, section: bar, elements: 4}
-supports:
+  return "title: " + title + "\n" + kHostileBeam + R"(supports:
   - {name: left, at: start, fix: clamped}
 loads:
   - {type: point, at: end, fy: -1000}

@@ -14,6 +14,15 @@
 
 namespace beamrotor::test {
 
+/// A steel rod of 1 m in 4 elements: materials, sections and segments of the decks below.
+inline constexpr const char* kHostileBeam = R"(materials:
+  - {name: steel, E: 200e9, nu: 0.3, rho: 7850}
+sections:
+  - {name: bar, shape: circle, D: 0.05}
+segments:
+  - {name: a, length: 1, section: bar, elements: 4}
+)";
+
 /// A cantilever with a static and a short transient analysis (one history with a unit) and a
 /// check, with placeholders {title}, {unit} and {check} (YAML scalars, quotes included).
 std::string hostileBaseDeck(const std::string& title = "Cantilever", const std::string& unit = "N",

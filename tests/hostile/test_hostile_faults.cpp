@@ -31,13 +31,7 @@ std::vector<std::string> plus(std::vector<std::string> a, const std::vector<std:
 }
 
 /// A two-spring body whose modes decouple: its first mode's node lies at infinity.
-const std::string kDecoupledBody = R"(materials:
-  - {name: steel, E: 200e9, nu: 0.3, rho: 7850}
-sections:
-  - {name: bar, shape: circle, D: 0.05}
-segments:
-  - {name: a, length: 1, section: bar, elements: 4}
-points:
+const std::string kDecoupledBody = std::string(kHostileBeam) + R"(points:
   - {name: A, at: 0.2}
   - {name: B, at: 0.8}
 springs:

@@ -48,8 +48,7 @@ std::string largeOutputDeck(int elements, int frames) {
 }
 
 bool completeImage(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = fileContents(p);
   if (p.extension() == ".svg") return text.find("</svg>") != std::string::npos;
   return text.size() >= 8 && text.compare(text.size() - 8, 4, "IEND") == 0;
 }
@@ -97,10 +96,7 @@ TEST_SUITE("slow hostile: full device") {
     std::ofstream(root / "large.yaml") << largeOutputDeck(2000, 200);
     const ProcessResult small = runBeamrotor({"solve", "small.yaml", "--out", "disk/out"}, root);
     REQUIRE(small.exitCode == 0);
-    const std::string earlier = [&] {
-      std::ifstream in(root / "disk" / "out" / "results.json");
-      return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    }();
+    const std::string earlier = fileContents(root / "disk" / "out" / "results.json");
     const ProcessResult large = runBeamrotor({"solve", "large.yaml", "--out", "disk/out"}, root);
     CAPTURE(large.err);
     CHECK(large.exitCode == 1);
@@ -109,9 +105,7 @@ TEST_SUITE("slow hostile: full device") {
         std::regex(
             R"(^disk/out: cannot write the results: cannot write disk/out\.tmp-\w+/\S+: (No space left on device|gnuplot's output is incomplete; the device has \d+ kB free))")));
     CHECK(large.out.find("results: not written") != std::string::npos);
-    std::ifstream in(root / "disk" / "out" / "results.json");
-    CHECK(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()) ==
-          earlier);
+    CHECK(fileContents(root / "disk" / "out" / "results.json") == earlier);
     requireCompleteOrAbsent(root / "disk" / "out");
   }
 
@@ -224,9 +218,8 @@ TEST_SUITE("slow hostile: memory") {
       for (const std::string& a : args) command += " " + shellQuoted(a);
       command += " >log 2>&1";
       const int status = std::system(command.c_str());
-      std::ifstream in(root / "log");
-      const std::string log((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      return std::pair<int, std::string>(WIFEXITED(status) ? WEXITSTATUS(status) : -1, log);
+      return std::pair<int, std::string>(WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                                         fileContents(root / "log"));
     };
     {
       const auto [code, log] = limited("1000000", {"solve", "frames.yaml", "--out", "out"});

@@ -3,22 +3,8 @@
 // (problems/FuzzInputs.hpp): each must end with the reader's own answer, nothing else.
 #include <doctest/doctest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "problems/FuzzInputs.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
-
-namespace {
-
-std::string inputText(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
 
 TEST_SUITE("fuzz inputs") {
   TEST_CASE("every kept fuzz input is answered without a crash or a stray exception") {
@@ -28,9 +14,9 @@ TEST_SUITE("fuzz inputs") {
       const std::string ext = entry.path().extension().string();
       CAPTURE(entry.path().filename().string());
       if (ext == ".deck")
-        CHECK_NOTHROW(beamrotor::fuzz::deckInput(inputText(entry.path())));
+        CHECK_NOTHROW(beamrotor::fuzz::deckInput(beamrotor::test::fileContents(entry.path())));
       else if (ext == ".options")
-        CHECK_NOTHROW(beamrotor::fuzz::optionsInput(inputText(entry.path())));
+        CHECK_NOTHROW(beamrotor::fuzz::optionsInput(beamrotor::test::fileContents(entry.path())));
       else
         continue;
       ++replayed;
