@@ -82,19 +82,35 @@ report: build
 	done
 	./$(BUILD)/beamrotor report --out $(REPORT_DIR)
 
-# Fuzz the deck reader (clang-14 + libFuzzer, ASan, UBSan): seeds are the shipped decks and the
-# malformed fixtures; new inputs collect in $(FUZZ_BUILD)/corpus, crashes in $(FUZZ_BUILD)/.
+# Fuzz the deck reader and the command-line values (clang-14 + libFuzzer, ASan, UBSan),
+# FUZZ_SECONDS each: seeds are the shipped decks and malformed fixtures (fuzz_deck) and the
+# option lines in tests/problems/fuzz_inputs/ (fuzz_options); new inputs collect in
+# $(FUZZ_BUILD)/corpus-*, crashes in $(FUZZ_BUILD)/. Keep each finding, once fixed, as a
+# fixture in tests/problems/fuzz_inputs/ (`make test` replays them).
 FUZZ_BUILD   := build-fuzz
 FUZZ_SECONDS ?= 600
+FUZZ_FLAGS   := -max_len=8192 -timeout=10 -rss_limit_mb=2048
 .PHONY: fuzz
 fuzz:
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 \
 	      -DBEAMROTOR_FUZZ=ON >/dev/null
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_deck
-	mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds
-	cp problems/*.yaml tests/problems/malformed/*.yaml $(FUZZ_BUILD)/seeds/
-	cd $(FUZZ_BUILD) && ./fuzz_deck corpus seeds -dict=../tests/problems/fuzz_deck.dict \
-	      -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=2048
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_deck fuzz_options
+	mkdir -p $(FUZZ_BUILD)/corpus-deck $(FUZZ_BUILD)/seeds-deck $(FUZZ_BUILD)/corpus-options \
+	         $(FUZZ_BUILD)/seeds-options
+	cp problems/*.yaml tests/problems/malformed/*.yaml tests/problems/fuzz_inputs/*.deck \
+	   $(FUZZ_BUILD)/seeds-deck/
+	cp tests/problems/fuzz_inputs/*.options $(FUZZ_BUILD)/seeds-options/
+	cd $(FUZZ_BUILD) && ./fuzz_deck corpus-deck seeds-deck -dict=../tests/problems/fuzz_deck.dict \
+	      -max_total_time=$(FUZZ_SECONDS) $(FUZZ_FLAGS)
+	cd $(FUZZ_BUILD) && ./fuzz_options corpus-options seeds-options \
+	      -dict=../tests/problems/fuzz_options.dict -max_total_time=$(FUZZ_SECONDS) $(FUZZ_FLAGS)
+
+# The slow hostile cases (never part of `make test`; a few minutes): a full device (a small
+# tmpfs, mounted when run as root, else skipped with a note), signals while results are
+# written, address-space limits (ulimit -v). The fast ones run in `make test`.
+.PHONY: hostile
+hostile: build
+	./$(BUILD)/beamrotor_tests --test-suite='slow hostile*' --no-intro
 
 # Mutation testing (never part of `make test`; about a minute per mutant on two cores): plants
 # each single-line bug of tests/mutants/mutants.txt in turn in the source tree, rebuilds the

@@ -4,8 +4,18 @@
 
 #include "fem/solvers/HeapReserve.hpp"
 #include "problems/cli/App.hpp"
+#include "problems/output/Interruption.hpp"
 
 int main(int argc, char** argv) {
   beamrotor::keepFreedMemory();
-  return beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
+  const int code = beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
+  // Interrupted while writing: the temporary directory is gone; now end as the signal asked.
+  std::cout.flush();
+  beamrotor::endIfInterrupted();
+  // The summary is output like any file: a failed write (a full device) is not success.
+  if (!std::cout) {
+    std::cerr << "beamrotor: cannot write the summary to standard output\n";
+    return code == 0 ? 1 : code;
+  }
+  return code;
 }

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "fem/assembly/ReducedSystem.hpp"
+#include "fem/solvers/Errors.hpp"
 #include "fem/timing/Stopwatch.hpp"
 #include "fem/transient/TransientCentral.hpp"
 #include "fem/transient/TransientNewmark.hpp"
@@ -57,7 +58,29 @@ class EnergyAccount {
   const TransientSystem& system_;
   Eigen::VectorXd u_, du_, f_, fPrevious_, Cv_, CvPrevious_;
   double kinetic_ = 0, strain_ = 0, damping_ = 0, external_ = 0;
+
+ public:
+  /// Whether every term of the account is a finite number.
+  bool finite() const {
+    return std::isfinite(kinetic_) && std::isfinite(strain_) && std::isfinite(damping_) &&
+           std::isfinite(external_);
+  }
 };
+
+/// What part of the state after a step is not finite (nullptr when all is).
+const char* nonFinite(const TransientState& s, const EnergyAccount* energy) {
+  if (!s.u.allFinite()) return "displacement";
+  if (!s.v.allFinite()) return "velocity";
+  if (!s.a.allFinite()) return "acceleration";
+  if (energy && !energy->finite()) return "energy";
+  return nullptr;
+}
+
+std::string shortTime(double t) {
+  std::ostringstream s;
+  s << t;
+  return s.str();
+}
 
 /// The steps at which frames are stored: evenly spaced over [0, steps], at most `count`.
 std::vector<int> frameSteps(int steps, int count) {
@@ -188,13 +211,12 @@ TransientResult solveTransient(const Model& model, const TransientOptions& optio
       s.a = system.initialAcceleration(s);
       if (explicitStepper) explicitStepper->start(s);
     }
-    if (!s.u.allFinite()) {
-      result.warnings.push_back("the solution overflowed at t = " + std::to_string(s.t) +
-                                " s (step " + std::to_string(n) + "); stopped");
-      result.steps = n - 1;
-      break;
-    }
     if (energy) energy->advance(s);
+    if (const char* what = nonFinite(s, energy ? &*energy : nullptr))
+      throw SolveError("the " + std::string(what) + " overflowed at step " + std::to_string(n) +
+                       " (t = " + shortTime(s.t) +
+                       " s): the loads, initial conditions or properties are too large for "
+                       "finite numbers (or the step is unstable)");
     record(n);
   }
   result.time.solve = clock.lap();

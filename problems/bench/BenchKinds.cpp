@@ -1,7 +1,12 @@
 // Bookkeeping every benchmark kind shares (see BenchKinds.hpp).
 #include "problems/bench/BenchKinds.hpp"
 
+#include <stdexcept>
+
+#include "fem/solvers/AvailableMemory.hpp"
+#include "fem/solvers/HeapReserve.hpp"
 #include "fem/timing/Median.hpp"
+#include "problems/output/AtomicDirectory.hpp"
 #include "problems/output/MatrixExport.hpp"
 
 namespace beamrotor {
@@ -24,14 +29,26 @@ BenchTimings BenchSamples::medians() const {
           median(solve_), median(total_),    median(modal_)};
 }
 
+void prepareMemory(std::size_t bytes) {
+  const std::size_t available = availableMemoryBytes();
+  if (bytes > available)
+    throw std::invalid_argument("this model needs about " + memoryText(double(bytes)) + " but " +
+                                memoryText(double(available)) +
+                                " are available: use fewer --elements or --dofs");
+  prefaultHeap(bytes);
+}
+
 int modesOrDefault(const BenchOptions& options, int kindDefault) {
   return options.modes < 0 ? kindDefault : options.modes;
 }
 
 void exportIfAsked(const BenchOptions& options, const Model& model, BenchReport& report) {
   if (options.exportDir.empty()) return;
-  for (const auto& file : exportMatrices(model, options.exportDir))
-    report.exported.push_back(file.string());
+  const std::filesystem::path dir = options.exportDir;
+  writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
+    for (const auto& file : exportMatrices(model, temporary))
+      report.exported.push_back((dir / file.filename()).string());
+  });
 }
 
 }  // namespace beamrotor

@@ -27,6 +27,11 @@ class BenchSamples {
   std::vector<double> build_, assembly_, factor_, solve_, total_, modal_;
 };
 
+/// Before each run: refuses a model whose estimated memory (`bytes`) is more than the process
+/// can have (std::invalid_argument with the estimate and what is available); otherwise makes
+/// that memory ready (prefaultHeap).
+void prepareMemory(std::size_t bytes);
+
 /// The kind's modes when options.modes is -1.
 int modesOrDefault(const BenchOptions& options, int kindDefault);
 

@@ -1,10 +1,12 @@
 #include "problems/cli/App.hpp"
 
 #include <CLI/CLI.hpp>
+#include <new>
 
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/ReportCommand.hpp"
+#include "problems/run/DeckRunner.hpp"
 
 namespace beamrotor::cli {
 
@@ -45,15 +47,18 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
 
   SolveOptions solve;
   CLI::App* solveCmd = app.add_subcommand(
-      "solve", "Solve every analysis of a deck, write results.json, CSV, VTK and charts, and "
-               "print a summary with the deck's checks.");
+      "solve",
+      "Solve every analysis of a deck, write results.json, CSV, VTK and charts, and "
+      "print a summary with the deck's checks.");
   addDeckOptions(*solveCmd, solve.study);
-  solveCmd->add_option("--out,-o", solve.outDir,
-                       "output directory (default: out/<deck name>/); replaced as a whole")
+  solveCmd
+      ->add_option("--out,-o", solve.outDir,
+                   "output directory (default: out/<deck name>/); replaced as a whole")
       ->type_name("DIR");
-  solveCmd->add_option("--export-matrices", solve.exportMatrices,
-                       "also write K, M and f (Matrix Market) and dofs.csv into DIR "
-                       "(default: <out>/matrices)")
+  solveCmd
+      ->add_option("--export-matrices", solve.exportMatrices,
+                   "also write K, M and f (Matrix Market) and dofs.csv into DIR "
+                   "(default: <out>/matrices)")
       ->expected(0, 1)
       ->type_name("[DIR]");
 
@@ -64,55 +69,69 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
 
   BenchOptions bench;
   std::string benchJsonPath;
-  CLI::App* benchCmd = app.add_subcommand(
-      "bench", "Time a standard model (medians of repeated runs) and report its accuracy "
-               "against the exact reference.");
+  CLI::App* benchCmd =
+      app.add_subcommand("bench",
+                         "Time a standard model (medians of repeated runs) and report its accuracy "
+                         "against the exact reference.");
   benchCmd->add_option("--kind", bench.kind, "standard model: planar, grid3d or rotor")
       ->check(CLI::IsMember({"planar", "grid3d", "rotor"}));
   CLI::Option* elements =
-      benchCmd->add_option("--elements", bench.elements,
-                           "element count (planar: whole spans of 10; grid3d: nearest grillage; "
-                           "rotor: a multiple of 4)")
+      benchCmd
+          ->add_option("--elements", bench.elements,
+                       "element count (planar: whole spans of 10; grid3d: nearest grillage; "
+                       "rotor: a multiple of 4)")
           ->check(CLI::Range(4, 100000000));
   benchCmd->add_option("--dofs", bench.dofs, "size the model to the free dof count nearest N")
       ->type_name("N")
       ->check(CLI::Range(1LL, 1000000000LL))
       ->excludes(elements);
-  benchCmd->add_option("--modes", bench.modes,
-                       "lowest modes, rotor: Campbell lines (default 10, rotor 12; 0: statics only)")
+  benchCmd
+      ->add_option("--modes", bench.modes,
+                   "lowest modes, rotor: Campbell lines (default 10, rotor 12; 0: statics only)")
       ->check(CLI::Range(0, 1000));
   benchCmd->add_option("--repeat", bench.repeat, "runs; times are medians")
       ->check(CLI::Range(1, 1000));
   benchCmd->add_option("--json", benchJsonPath, "also write the figures as JSON")
       ->type_name("FILE");
-  benchCmd->add_option("--export", bench.exportDir,
-                       "write the model's K, M and load vector (Matrix Market) into DIR")
+  benchCmd
+      ->add_option("--export", bench.exportDir,
+                   "write the model's K, M and load vector (Matrix Market) into DIR")
       ->type_name("DIR");
 
   verify::ReportOptions report;
-  CLI::App* reportCmd = app.add_subcommand(
-      "report", "Regenerate the verification report (one HTML page): every shipped deck's "
-                "checks, convergence charts when present, and the failure-case studies.");
+  CLI::App* reportCmd =
+      app.add_subcommand("report",
+                         "Regenerate the verification report (one HTML page): every shipped deck's "
+                         "checks, convergence charts when present, and the failure-case studies.");
   reportCmd->add_option("--out,-o", report.outDir, "output directory (default: out/report/)")
+      ->type_name("DIR");
+  reportCmd
+      ->add_option("--decks", report.problemsDir,
+                   "directory of the decks to check (default: problems/ of the source "
+                   "tree, when run from it)")
       ->type_name("DIR");
 
   ConvergeRequest converge;
-  CLI::App* convergeCmd = app.add_subcommand(
-      "converge", "Refine the deck's mesh level by level (halving every element) with each "
-                  "element formulation; write convergence.json and error-against-dofs and "
-                  "error-against-time charts.");
+  CLI::App* convergeCmd =
+      app.add_subcommand("converge",
+                         "Refine the deck's mesh level by level (halving every element) with each "
+                         "element formulation; write convergence.json and error-against-dofs and "
+                         "error-against-time charts.");
   convergeCmd->add_option("deck", converge.deckPath, "the deck")->required();
   convergeCmd->add_option("--set", converge.sets, "override a deck parameter (repeatable)")
       ->type_name("NAME=VALUE")
       ->allow_extra_args(false);
-  convergeCmd->add_option("--quantity", converge.options.quantity,
-                          "a deck quantity, e.g. 'frequency 1' (default: the first check's)")
+  convergeCmd
+      ->add_option("--quantity", converge.options.quantity,
+                   "a deck quantity, e.g. 'frequency 1' (default: the first check's)")
       ->type_name("Q");
-  convergeCmd->add_option("--levels", converge.options.levels,
-                          "meshes: the deck's own and N-1 refinements (default 5)")
+  convergeCmd
+      ->add_option("--levels", converge.options.levels,
+                   "meshes: the deck's own and N-1 refinements (default 5)")
       ->type_name("N");
-  convergeCmd->add_option("--out,-o", converge.outDir,
-                          "output directory (default: out/<deck name>_converge/)")
+  convergeCmd
+      ->add_option("--out,-o", converge.outDir,
+                   "output directory (default: out/<deck name>_converge/)")
       ->type_name("DIR");
 
   try {
@@ -129,6 +148,9 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
     if (reportCmd->parsed()) return reportCommand(report, out, err);
     if (convergeCmd->parsed()) return convergeCommand(converge, out, err);
     return checkCommand(check, out, err);
+  } catch (const std::bad_alloc&) {
+    err << "beamrotor: " << kOutOfMemory << "\n";
+    return kSolveFailure;
   } catch (const std::exception& e) {
     err << "beamrotor: internal error: " << e.what() << "\n";
     return kSolveFailure;

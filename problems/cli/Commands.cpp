@@ -11,6 +11,8 @@
 #include "problems/cli/Progress.hpp"
 #include "problems/cli/Summary.hpp"
 #include "problems/deck/DeckError.hpp"
+#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/FileWriting.hpp"
 #include "problems/output/MatrixExport.hpp"
 #include "problems/output/Output.hpp"
 
@@ -88,13 +90,24 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     const fs::path matricesDir = options.exportMatrices && !options.exportMatrices->empty()
                                      ? fs::path(*options.exportMatrices)
                                      : dir / "matrices";
+    // Matrices inside the results directory are written and replaced with it; elsewhere they
+    // get an atomic directory of their own.
+    const fs::path inResults =
+        matricesDir.lexically_normal().lexically_relative(dir.lexically_normal());
+    const bool inside = options.exportMatrices && !inResults.empty() &&
+                        *inResults.begin() != ".." && inResults != ".";
+    AlsoWrite also;
+    if (inside)
+      also = [&](const fs::path& temporary) { exportStudyMatrices(s, temporary / inResults); };
     std::string writeError;
     try {
       if (s.run)
-        writeRunOutputs(*s.run, dir);
+        writeRunOutputs(*s.run, dir, also);
       else
-        writeSweepOutputs(*s.sweep, dir);
-      if (options.exportMatrices) exportStudyMatrices(s, matricesDir);
+        writeSweepOutputs(*s.sweep, dir, also);
+      if (options.exportMatrices && !inside)
+        writeDirectoryAtomically(
+            matricesDir, [&](const fs::path& temporary) { exportStudyMatrices(s, temporary); });
     } catch (const std::exception& e) {
       writeError = e.what();
     }
@@ -143,12 +156,19 @@ int benchCommand(const BenchOptions& options, const std::string& jsonPath, std::
   } catch (const std::invalid_argument& e) {
     err << "beamrotor bench: " << e.what() << "\n";
     return kInputError;
+  } catch (const std::runtime_error& e) {  // --export could not be written
+    err << "beamrotor bench: " << e.what() << "\n";
+    return kSolveFailure;
   }
   out << benchTable(report);
   if (!jsonPath.empty()) {
-    std::ofstream json(jsonPath);
-    json << benchJson(report) << "\n";
-    if (!json) throw std::runtime_error("cannot write " + jsonPath);
+    try {
+      const std::string text = benchJson(report);
+      writeFileAtomically(jsonPath, [&](std::ostream& json) { json << text << "\n"; });
+    } catch (const std::exception& e) {
+      err << "beamrotor bench: " << e.what() << "\n";
+      return kSolveFailure;
+    }
     out << "json: " << jsonPath << "\n";
   }
   return kOk;

@@ -7,12 +7,14 @@ namespace beamrotor::cli {
 
 int reportCommand(const verify::ReportOptions& options, std::ostream& out, std::ostream& err) {
   try {
-    std::filesystem::create_directories(options.outDir);
     const verify::ReportSummary s = verify::writeReport(options, err);
     out << "checks: " << s.checks - s.failedChecks << " of " << s.checks << " pass";
     if (s.unsolvedDecks) out << ", " << s.unsolvedDecks << " deck(s) not solved";
     out << "\nreport: " << s.page.string() << "\n";
     return kOk;
+  } catch (const std::invalid_argument& e) {
+    err << "beamrotor report: " << e.what() << "\n";
+    return kInputError;
   } catch (const std::exception& e) {
     err << "beamrotor report: " << e.what() << "\n";
     return kSolveFailure;

@@ -5,6 +5,7 @@
 
 #include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
+#include "problems/deck/DeckReader.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
 
@@ -271,9 +272,20 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
   study.refinement = timeStep ? "time step" : "mesh";
   study.choice = t.choice;
 
-  // 2. Every method on every level: the element formulations on finer meshes, or the deck's
-  //    own scheme and elements on shorter time steps.
+  // 2. Every method on every level: the element formulations on finer meshes (the finest within
+  //    what a deck may ask for), or the deck's own scheme and elements on shorter time steps.
   const Deck base = studyDeck(deck, {t.analysis});
+  if (!timeStep) {
+    Deck finest = base;
+    refineMesh(finest, options.levels - 1);
+    double elements = 0;
+    for (const DeckSegment& s : finest.segments) elements += s.elementEstimate();
+    if (elements > kMaxElements)
+      throw DeckError(deck.path, DeckPlace{0, 0, "--levels"},
+                      "the finest mesh would have " + std::to_string(std::llround(elements)) +
+                          " elements, more than the " + std::to_string(kMaxElements) +
+                          " a deck may have; use fewer levels");
+  }
   const std::vector<ConvergeMethod> methods =
       timeStep ? std::vector<ConvergeMethod>{{"time-step", "the deck's scheme, dt halved per level",
                                               deck.beam.theory, deck.beam.mass}}

@@ -3,6 +3,7 @@
 // DeckRunner solves it. Each item keeps its place in the file for later messages.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -31,6 +32,8 @@ struct DeckSegment {
   double size = 0;   ///< largest element length (m) when elements == 0
   BeamOptions options;
   DeckPlace place;
+  /// Elements the line builder will make, at most (points add a cut each).
+  double elementEstimate() const { return elements > 0 ? elements : std::ceil(length / size); }
 };
 
 /// A named station on the line, `at` metres from its start.

@@ -73,10 +73,18 @@ const std::vector<std::string> kTopKeys{
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
+/// Fails at `f` when the deck already has as many named values as it may.
+void requireRoomForName(const Context& c, const Field& f) {
+  if (c.evaluator.names().size() >= std::size_t(kMaxNamedValues))
+    f.fail("a deck may have at most " + std::to_string(kMaxNamedValues) +
+           " parameters and derived values together");
+}
+
 void readParameters(Context& c, const std::vector<ParameterOverride>& overrides) {
   std::vector<std::string> names;
   if (auto block = c.root.get("parameters"); block && !block->isNull()) {
     for (const auto& [name, value] : block->entries()) {
+      requireRoomForName(c, value);
       const ParameterOverride* o = findOverride(overrides, name);
       const double v = o ? o->value : value.number(c.evaluator);
       try {
@@ -108,6 +116,7 @@ void readDerived(Context& c) {
   auto block = c.root.get("derived");
   if (!block || block->isNull()) return;
   for (const auto& [name, value] : block->entries()) {
+    requireRoomForName(c, value);
     const double v = value.number(c.evaluator);
     try {
       c.evaluator.define(name, v);

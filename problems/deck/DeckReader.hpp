@@ -18,6 +18,10 @@ inline constexpr int kMaxElements = 100000;
 inline constexpr int kMaxSweepValues = 1000;
 /// Most modes a modal analysis may ask for.
 inline constexpr int kMaxModes = 100;
+/// Most parameters and derived values together (every expression may use each of them).
+inline constexpr int kMaxNamedValues = 10000;
+/// Most analyses, and most checks, in one deck.
+inline constexpr int kMaxAnalyses = 1000;
 
 /// The deck with `overrides` replacing parameter values. Throws DeckError naming the file,
 /// line, column and field of the first problem found.

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "problems/deck/SceneFunctions.hpp"
 #include "problems/deck/ExpressionFunctions.hpp"
+#include "problems/deck/SceneFunctions.hpp"
 #include "problems/deck/Suggest.hpp"
 
 namespace beamrotor {
@@ -62,7 +62,7 @@ bool ExpressionEvaluator::isIdentifier(const std::string& name) {
 }
 
 bool ExpressionEvaluator::defines(const std::string& name) const {
-  return std::find(names_.begin(), names_.end(), name) != names_.end();
+  return defined_.count(name) > 0;
 }
 
 void ExpressionEvaluator::define(const std::string& name, double value) {
@@ -76,6 +76,7 @@ void ExpressionEvaluator::define(const std::string& name, double value) {
   if (!std::isfinite(value)) throw ExpressionError("'" + name + "' is not finite");
   parser_->DefineConst(name, value);
   names_.push_back(name);
+  defined_.insert(name);
 }
 
 double ExpressionEvaluator::evaluate(const std::string& text) const {

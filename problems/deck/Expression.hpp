@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace mu {
@@ -57,6 +58,7 @@ class ExpressionEvaluator {
  private:
   std::unique_ptr<mu::Parser> parser_;
   std::vector<std::string> names_;
+  std::unordered_set<std::string> defined_;  // names_, for lookups in constant time
 };
 
 /// An expression of a few variables, compiled (see ExpressionEvaluator::compile). Copies share

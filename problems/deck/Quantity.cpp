@@ -4,6 +4,7 @@
 #include <sstream>
 #include <vector>
 
+#include "problems/deck/PlainText.hpp"
 #include "problems/deck/RotorQuantity.hpp"
 
 namespace beamrotor {
@@ -50,6 +51,10 @@ bool Quantity::readsFrom(const std::string& type) const {
 }
 
 Quantity parseQuantity(const std::string& text) {
+  // One line of words: the text is shown in tables and chart captions as it is.
+  if (const auto bad = firstNonPlain(text, " "))
+    throw std::invalid_argument("a quantity is one line of words; it holds " +
+                                describeNonPlain(text, *bad));
   std::istringstream in(text);
   std::vector<std::string> words;
   for (std::string w; in >> w;) words.push_back(w);

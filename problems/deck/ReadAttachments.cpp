@@ -82,7 +82,8 @@ void readSupports(Context& c) {
         record(value, d, value.number(c.evaluator));
       }
     if (s.dofs.empty())
-      f.fail("support '" + s.name + "' holds nothing: give fix (e.g. clamped, pinned, [uy]) "
+      f.fail("support '" + s.name +
+             "' holds nothing: give fix (e.g. clamped, pinned, [uy]) "
              "or prescribe (e.g. {uy: -0.001})");
     for (const auto& [d, v] : s.dofs) held.emplace_back(p.at, d, s.name);
     c.deck.supports.push_back(std::move(s));
@@ -104,7 +105,8 @@ void readSprings(Context& c) {
     }
     if (auto to = f.get("to")) {
       const DeckPoint& q = c.point(*to);
-      if (q.name == s.point) to->fail("a spring needs two different points (or no 'to' for a grounded spring)");
+      if (q.name == s.point)
+        to->fail("a spring needs two different points (or no 'to' for a grounded spring)");
       s.toPoint = q.name;
     }
     s.dof = c.dof(f.require("dof"));
@@ -116,6 +118,22 @@ void readSprings(Context& c) {
   }
 }
 
+/// The support holding dof d at point p, if any (in a line model, any point at p's place).
+const DeckSupport* holder(const Context& c, const DeckPoint& p, Dof d) {
+  const double tol = 1e-12 * std::max(1.0, c.deck.length());
+  for (const DeckSupport& s : c.deck.supports) {
+    const auto at = std::find_if(c.deck.points.begin(), c.deck.points.end(),
+                                 [&](const DeckPoint& q) { return q.name == s.point; });
+    const bool samePlace =
+        s.point == p.name ||
+        (!c.deck.segments.empty() && at != c.deck.points.end() && std::abs(at->at - p.at) <= tol);
+    if (!samePlace) continue;
+    for (const auto& [dof, value] : s.dofs)
+      if (dof == d) return &s;
+  }
+  return nullptr;
+}
+
 void readContacts(Context& c) {
   auto contacts = block(c, "contacts");
   if (!contacts) return;
@@ -124,11 +142,16 @@ void readContacts(Context& c) {
     f.allowOnly({"name", "at", "dof", "min", "max"}, "a contact");
     DeckContact k;
     k.place = f.place();
-    k.point = c.point(f.require("at")).name;
+    const DeckPoint& p = c.point(f.require("at"));
+    k.point = p.name;
     const Field name = f.require("name");
     k.name = name.name();
     claimName(name, k.name, names, "a contact");
-    k.dof = c.dof(f.require("dof"));
+    const Field dof = f.require("dof");
+    k.dof = c.dof(dof);
+    if (const DeckSupport* s = holder(c, p, k.dof))
+      dof.fail(std::string(dofName(k.dof)) + " at point '" + p.name + "' is held by support '" +
+               s->name + "'; a contact there would never act: remove one of the two");
     const auto lower = f.get("min"), upper = f.get("max");
     if (!lower && !upper) f.fail("a contact needs a bound: min, max or both");
     if (lower) k.lower = lower->number(c.evaluator);
@@ -230,7 +253,8 @@ void readLoads(Context& c) {
       if (l.components.empty())
         f.fail("a point load needs at least one of fx, fy, fz (N) or mx, my, mz (N m)");
     } else if (c.deck.segments.empty()) {
-      f.fail("a " + type + " load acts on segments, and this deck has none (a model without "
+      f.fail("a " + type +
+             " load acts on segments, and this deck has none (a model without "
              "beams takes point loads)");
     } else if (type == "distributed") {
       f.allowOnly({"type", "segment", "qx", "qy", "qz"}, "a distributed load");
@@ -242,8 +266,8 @@ void readLoads(Context& c) {
         auto v = f.get(key);
         if (!v) continue;
         if (!c.deck.dofs.contains(kAllDofs[k]))
-          v->fail(key + " acts along " + std::string(dofName(kAllDofs[k])) +
-                  ", not a dof of a " + c.deck.dimension + " model");
+          v->fail(key + " acts along " + std::string(dofName(kAllDofs[k])) + ", not a dof of a " +
+                  c.deck.dimension + " model");
         l.q[k] = v->number(ev);
         any = true;
       }
@@ -258,8 +282,8 @@ void readLoads(Context& c) {
                             std::find(l.segments.begin(), l.segments.end(), i) != l.segments.end();
         if (loaded && !(c.deck.segments[i].section->material.rho > 0))
           f.fail("self-weight needs a density: material '" +
-                 c.deck.segments[i].section->material.name + "' of segment " +
-                 std::to_string(i) + " has no rho");
+                 c.deck.segments[i].section->material.name + "' of segment " + std::to_string(i) +
+                 " has no rho");
       }
     }
     c.deck.loads.push_back(std::move(l));
@@ -278,11 +302,14 @@ void readAttachments(Context& c) {
   // A model without beams needs something to move and something to hold it.
   if (!c.deck.segments.empty()) return;
   if (c.deck.masses.empty())
-    block(c, "springs").value_or(c.root).fail(
-        "a model without segments (beams) needs at least one mass (masses:) on its points");
+    block(c, "springs")
+        .value_or(c.root)
+        .fail("a model without segments (beams) needs at least one mass (masses:) on its points");
   if (c.deck.springs.empty())
-    block(c, "masses")->fail("a model without segments (beams) needs at least one spring "
-                             "(springs:) to hold its masses");
+    block(c, "masses")
+        ->fail(
+            "a model without segments (beams) needs at least one spring "
+            "(springs:) to hold its masses");
 }
 
 }  // namespace beamrotor::reader

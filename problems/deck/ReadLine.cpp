@@ -18,11 +18,11 @@ const Material& materialFor(const Context& c, const Field& section) {
     if (c.materials.size() == 1) return c.materials.front();
     DeckPlace at = section.place();
     at.field = section.path() + ".material";
-    throw DeckError(section.file(), at,
-                    c.materials.empty()
-                        ? "missing required field 'material' (and the deck defines no materials)"
-                        : "missing required field 'material' (materials: " + joinNames(names) +
-                              ")");
+    throw DeckError(
+        section.file(), at,
+        c.materials.empty()
+            ? "missing required field 'material' (and the deck defines no materials)"
+            : "missing required field 'material' (materials: " + joinNames(names) + ")");
   }
   const std::string name = f->name();
   for (const Material& m : c.materials)
@@ -48,7 +48,8 @@ std::shared_ptr<const Section> readSection(const Context& c, const Field& f,
                 "a general section");
   const Material& m = materialFor(c, f);
 
-  if (shape == "circle") return std::make_shared<Section>(Section::circle(name, m, f.require("D").positive(ev)));
+  if (shape == "circle")
+    return std::make_shared<Section>(Section::circle(name, m, f.require("D").positive(ev)));
   if (shape == "tube") {
     const double D = f.require("D").positive(ev);
     const Field tf = f.require("t");
@@ -84,17 +85,13 @@ std::shared_ptr<const Section> readSection(const Context& c, const Field& f,
   return std::make_shared<Section>(Section::general(name, m, A, IyVal, IzVal, J, ky, kz, depth));
 }
 
-/// Elements the line builder will make for a segment, at most (points add a cut each).
-double elementEstimate(const DeckSegment& s) {
-  return s.elements > 0 ? s.elements : std::ceil(s.length / s.size);
-}
-
 /// A model without beams: named points only, `at` their x coordinate (m, default 0).
 void readPointModel(Context& c) {
   const auto points = c.root.get("points");
   if (!points || points->isNull())
-    c.root.fail("the deck needs segments (a line of beams) or, for a model without beams, "
-                "points carrying masses and springs");
+    c.root.fail(
+        "the deck needs segments (a line of beams) or, for a model without beams, "
+        "points carrying masses and springs");
   std::vector<std::string> names;
   for (const Field& f : points->items()) {
     f.allowOnly({"name", "at"}, "a point");
@@ -166,6 +163,7 @@ void readLine(Context& c) {
   // 1. Segments, in order from the start of the line.
   const Field block = c.root.require("segments");
   std::vector<std::string> names;
+  std::vector<Field> lengths;
   double elements = 0;
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "length", "section", "elements", "size", "formulation"}, "a segment");
@@ -175,7 +173,8 @@ void readLine(Context& c) {
       s.name = n->name();
       claimName(*n, s.name, names, "a segment");
     }
-    s.length = f.require("length").positive(ev);
+    lengths.push_back(f.require("length"));
+    s.length = lengths.back().positive(ev);
     const Field sf = f.require("section");
     s.sectionName = sf.name();
     std::vector<std::string> sectionNames;
@@ -191,23 +190,36 @@ void readLine(Context& c) {
     if (!count && !size) {
       DeckPlace at = f.place();
       at.field = f.path() + ".elements";
-      throw DeckError(f.file(), at, "missing required field 'elements' (or 'size', the largest element length)");
+      throw DeckError(f.file(), at,
+                      "missing required field 'elements' (or 'size', the largest element length)");
     }
     if (count) s.elements = count->integer(ev, 1, kMaxElements);
     if (size) s.size = size->positive(ev);
     s.options = c.deck.beam;
     if (auto form = f.get("formulation")) s.options.theory = formulationOf(*form);
-    const bool linearTimoshenko = s.options.theory == BeamTheory::timoshenkoLinearFullIntegration ||
-                                  s.options.theory == BeamTheory::timoshenkoLinearReducedIntegration;
+    const bool linearTimoshenko =
+        s.options.theory == BeamTheory::timoshenkoLinearFullIntegration ||
+        s.options.theory == BeamTheory::timoshenkoLinearReducedIntegration;
     if (linearTimoshenko && !(s.section->kappaY > 0 && s.section->kappaZ > 0))
       sf.fail("the linear Timoshenko element needs a shear coefficient: give the section kappa");
-    elements += elementEstimate(s);
+    elements += s.elementEstimate();
     if (!(elements <= kMaxElements))
       f.fail("the line would have more than " + std::to_string(kMaxElements) +
              " elements; use fewer elements or a larger size");
     c.deck.segments.push_back(std::move(s));
   }
   if (c.deck.segments.empty()) block.fail("the deck needs at least one segment");
+  // A segment within the line's geometric tolerance (meshes/LineBuilder) would get no element.
+  const double tolerance = 1e-12 * std::max(1.0, c.deck.length());
+  for (std::size_t k = 0; k < lengths.size(); ++k)
+    if (c.deck.segments[k].length <= tolerance)
+      lengths[k].fail("segment " +
+                      (c.deck.segments[k].name.empty() ? std::to_string(k + 1)
+                                                       : "'" + c.deck.segments[k].name + "'") +
+                      " is " + formatNumber(c.deck.segments[k].length) +
+                      " m long, within the geometric tolerance (" + formatNumber(tolerance) +
+                      " m) of this line: it would get no element; make it longer or leave it "
+                      "out");
 
   // 2. Points: "start" and "end" always exist; the deck's own must lie on the line.
   const double L = c.deck.length();
@@ -230,8 +242,8 @@ void readLine(Context& c) {
                 formatNumber(L) + " m)");
       c.deck.points.push_back({name, std::clamp(x, 0.0, L), f.place()});
       if (int(c.deck.points.size()) + elements > kMaxElements)
-        f.fail("too many points: the line would have more than " +
-               std::to_string(kMaxElements) + " elements");
+        f.fail("too many points: the line would have more than " + std::to_string(kMaxElements) +
+               " elements");
     }
   }
 }

@@ -18,6 +18,15 @@ bool hasMass(const Deck& deck) {
   return false;
 }
 
+/// The items of a list of analyses or checks, at most kMaxAnalyses of them.
+std::vector<Field> boundedItems(const Field& block, const std::string& what) {
+  std::vector<Field> items = block.items();
+  if (items.size() > std::size_t(kMaxAnalyses))
+    items[kMaxAnalyses].fail("a deck may have at most " + std::to_string(kMaxAnalyses) + " " +
+                             what);
+  return items;
+}
+
 void readAnalyses(Context& c) {
   auto block = c.root.get("analyses");
   if (!block || block->isNull()) {
@@ -26,7 +35,7 @@ void readAnalyses(Context& c) {
     return;
   }
   std::vector<std::string> names;
-  for (const Field& f : block->items()) {
+  for (const Field& f : boundedItems(*block, "analyses")) {
     if (!f.isMap()) f.fail("expected a map such as {type: static}, got " + f.describe());
     DeckAnalysis a;
     a.place = f.place();
@@ -171,7 +180,7 @@ void readChecks(Context& c) {
   auto block = c.root.get("checks");
   if (!block || block->isNull()) return;
   std::vector<std::string> names;
-  for (const Field& f : block->items()) {
+  for (const Field& f : boundedItems(*block, "checks")) {
     f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis"}, "a check");
     DeckCheck k;
     k.place = f.place();

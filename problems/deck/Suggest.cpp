@@ -55,8 +55,11 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& ca
 }
 
 std::string joinNames(const std::vector<std::string>& names) {
+  constexpr std::size_t kShown = 20;  // a message stays one readable line
   std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  for (std::size_t i = 0; i < names.size() && i < kShown; ++i)
+    out += (out.empty() ? "" : ", ") + names[i];
+  if (names.size() > kShown) out += ", ... (" + std::to_string(names.size()) + " in all)";
   return out.empty() ? "(none)" : out;
 }
 

@@ -17,7 +17,8 @@ std::string closestMatch(std::string_view word, const std::vector<std::string>& 
 /// "; did you mean 'length'?" or empty, ready to append to a message.
 std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates);
 
-/// "a, b, c" for messages listing what is allowed.
+/// "a, b, c" for messages listing what is allowed; a long list shows its first 20 names and
+/// the count.
 std::string joinNames(const std::vector<std::string>& names);
 
 }  // namespace beamrotor

@@ -54,6 +54,8 @@ DeckSweep parseSweepOption(const std::string& argument, const Deck& deck) {
     const int n = int(steps);
     for (int i = 0; i < n; ++i) sweep.values.push_back(from + (to - from) * i / n);
     sweep.values.push_back(to);
+    if (!std::isfinite(to - from))
+      throw fail("FROM and TO are too far apart for the values between them to be numbers");
   } else if (range.size() == 1) {
     for (const std::string& v : split(spec, ',')) sweep.values.push_back(value(v));
     if (int(sweep.values.size()) > kMaxSweepValues)

@@ -3,8 +3,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
+
+#include "problems/output/FileWriting.hpp"
 
 namespace beamrotor {
 
@@ -78,8 +79,10 @@ std::vector<double> CsvTable::numbers(std::string_view name) const {
 }
 
 void CsvTable::write(const std::filesystem::path& file) const {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot create " + file.string());
+  writeFile(file, [&](std::ostream& out) { writeTo(out); });
+}
+
+void CsvTable::writeTo(std::ostream& out) const {
   for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << header(columns_[c]);
   out << '\n';
   for (const auto& row : rows_) {
@@ -94,8 +97,6 @@ void CsvTable::write(const std::filesystem::path& file) const {
     }
     out << '\n';
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
 }  // namespace beamrotor

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -47,6 +48,8 @@ class CsvTable {
   /// Writes the table; numbers in the shortest form that reads back exactly.
   /// Throws std::runtime_error when the file cannot be written.
   void write(const std::filesystem::path& file) const;
+  /// The same text onto a stream.
+  void writeTo(std::ostream& out) const;
 
  private:
   std::string title_;

@@ -23,18 +23,28 @@ void writeFile(const fs::path& file, const std::function<void(std::ostream&)>& w
   errno = 0;
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   if (!out) throw std::runtime_error(writeFailure(file, errno, "cannot create it"));
-  write(out);
-  // The last buffer reaches the device only here: check after the flush and after the close.
   errno = 0;
-  out.flush();
-  const int flushError = out ? 0 : errno;
-  const bool flushed = bool(out);
+  write(out);
+  // A buffer that filled up was written on the way (its error is the stream's last); the last
+  // one reaches the device only here: check after the flush and after the close.
+  int error = out ? 0 : errno;
+  if (out) {
+    out.flush();
+    if (!out) error = errno;
+  }
+  const bool written = bool(out);
   out.close();
-  if (!flushed || !out)
-    throw std::runtime_error(writeFailure(file, flushError ? flushError : errno));
+  if (!written || !out) throw std::runtime_error(writeFailure(file, error ? error : errno));
 }
 
 void writeFileAtomically(const fs::path& file, const std::function<void(std::ostream&)>& write) {
+  // A device or pipe (/dev/stdout) is written as it is: renaming onto it would replace it.
+  std::error_code ec;
+  const fs::file_type type = fs::status(file, ec).type();
+  if (type != fs::file_type::not_found && type != fs::file_type::regular) {
+    writeFile(file, write);
+    return;
+  }
   const fs::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
   try {
     writeFile(temporary, write);

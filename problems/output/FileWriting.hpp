@@ -16,7 +16,8 @@ namespace beamrotor {
 void writeFile(const std::filesystem::path& file, const std::function<void(std::ostream&)>& write);
 
 /// writeFile into a temporary sibling that then replaces `file` in one rename: a reader sees
-/// the old content or the new one, and a failure leaves the old file as it was.
+/// the old content or the new one, and a failure leaves the old file as it was. A `file` that
+/// exists and is not a regular file (/dev/stdout, a pipe) is written directly.
 void writeFileAtomically(const std::filesystem::path& file,
                          const std::function<void(std::ostream&)>& write);
 

@@ -72,6 +72,14 @@ ImageState imageState(const fs::path& p) {
   return complete ? ImageState::complete : ImageState::incomplete;
 }
 
+/// "; the device has 12 kB free": what may explain an image cut short.
+std::string spaceLeft(const fs::path& dir) {
+  std::error_code ec;
+  const fs::space_info space = fs::space(dir, ec);
+  if (ec) return {};
+  return "; the device has " + std::to_string(space.available / 1024) + " kB free";
+}
+
 /// Runs `gnuplot ./SCRIPT` in dir, stdin from /dev/null, stdout and stderr into dir/LOG;
 /// returns its exit status (-1 when it could not be started or did not exit normally).
 int runGnuplot(const fs::path& gnuplot, const fs::path& dir, const std::string& script,
@@ -164,9 +172,8 @@ bool drawChart(const fs::path& dir, const ChartScript& chart) {
     // gnuplot succeeded: an image cut short means the write failed, as for any other file.
     for (const fs::path& image : images)
       if (imageState(image) == ImageState::incomplete)
-        throw std::runtime_error(writeFailure(image, 0,
-                                              "gnuplot's output is incomplete (is the "
-                                              "device full?)"));
+        throw std::runtime_error(
+            writeFailure(image, 0, "gnuplot's output is incomplete" + spaceLeft(dir)));
     if (imageState(images[0]) == ImageState::complete &&
         imageState(images[1]) == ImageState::complete) {
       std::error_code ignored;

@@ -3,13 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
 #include "fem/model/DofMap.hpp"
 #include "problems/output/AdequateJson.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/FileNames.hpp"
+#include "problems/output/FileWriting.hpp"
 #include "problems/output/Reactions.hpp"
 #include "problems/output/RotorJson.hpp"
 #include "problems/output/TransientJson.hpp"
@@ -284,11 +284,10 @@ void requireFiniteNumbers(const Json& doc, const std::string& document) {
 }
 
 void writeJson(const Json& doc, const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot create " + file.string());
-  out << doc.dump(2) << '\n';
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  // Text that is not valid UTF-8 (a file name in another encoding) is shown as U+FFFD rather
+  // than failing the whole write.
+  const std::string text = doc.dump(2, ' ', false, Json::error_handler_t::replace);
+  writeFile(file, [&](std::ostream& out) { out << text << '\n'; });
 }
 
 }  // namespace beamrotor

@@ -1,11 +1,11 @@
 #include "problems/output/MatrixExport.hpp"
 
 #include <stdexcept>
-#include <unsupported/Eigen/SparseExtra>
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
 #include "problems/output/CsvTable.hpp"
+#include "problems/output/FileWriting.hpp"
 
 namespace beamrotor {
 
@@ -13,8 +13,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void requireWritten(bool ok, const fs::path& file) {
-  if (!ok) throw std::runtime_error("cannot write " + file.string());
+/// Matrix Market coordinate format, 1-based, every stored entry (what Eigen::loadMarket and
+/// scipy.io.mmread read).
+void writeMarket(const SparseMatrix& A, const fs::path& file) {
+  writeFile(file, [&](std::ostream& out) {
+    out << "%%MatrixMarket matrix coordinate real general\n"
+        << A.rows() << " " << A.cols() << " " << A.nonZeros() << "\n";
+    for (int k = 0; k < A.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+        out << it.row() + 1 << " " << it.col() + 1 << " " << exactDecimal(it.value()) << "\n";
+  });
+}
+
+/// Matrix Market array format: a column vector.
+void writeMarket(const Eigen::VectorXd& v, const fs::path& file) {
+  writeFile(file, [&](std::ostream& out) {
+    out << "%%MatrixMarket matrix array real general\n" << v.size() << " 1\n";
+    for (Eigen::Index i = 0; i < v.size(); ++i) out << exactDecimal(v[i]) << "\n";
+  });
 }
 
 /// row -> node, point name, dof and node position, so a user can find an entry's meaning.
@@ -41,7 +57,7 @@ std::vector<fs::path> exportMatrices(const Model& model, const fs::path& dir) {
 
   // 1. The matrices, as assembled (the same free-free blocks the analyses factorise).
   const auto save = [&](const SparseMatrix& A, const char* name) {
-    requireWritten(Eigen::saveMarket(A, (dir / name).string()), dir / name);
+    writeMarket(A, dir / name);
     written.push_back(dir / name);
   };
   save(assembler.assemble(MatrixKind::stiffness), kStiffnessMtx);
@@ -52,7 +68,7 @@ std::vector<fs::path> exportMatrices(const Model& model, const fs::path& dir) {
   // 2. The right-hand side exactly as the static solver forms it (fem/static/LinearStatics).
   const Eigen::VectorXd f =
       reducedRightHandSide(model, dofs, loadVector(model, dofs), prescribedValues(model, dofs));
-  requireWritten(Eigen::saveMarketVector(f, (dir / kLoadMtx).string()), dir / kLoadMtx);
+  writeMarket(f, dir / kLoadMtx);
   written.push_back(dir / kLoadMtx);
 
   // 3. What each row means.

@@ -89,13 +89,15 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 }  // namespace
 
-void writeRunOutputs(const RunResult& run, const fs::path& dir) {
+void writeRunOutputs(const RunResult& run, const fs::path& dir, const AlsoWrite& also) {
   const PreparedRun prepared = prepareRun(run);
-  writeDirectoryAtomically(
-      dir, [&](const fs::path& temporary) { writeRunFiles(prepared, temporary, /*charts=*/true); });
+  writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
+    writeRunFiles(prepared, temporary, /*charts=*/true);
+    if (also) also(temporary);
+  });
 }
 
-void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
+void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const AlsoWrite& also) {
   // 1. Prepare every value and the sweep's own tables before writing anything.
   if (sweep.values.empty()) throw std::invalid_argument("a sweep needs at least one value");
   if (sweep.runs.size() != sweep.values.size())
@@ -154,6 +156,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir) {
         drawChart(temporary, sweepChart(first.deckName + ": " + a.name + " over " + sweep.parameter,
                                         sweepChart(stem), sweep.parameter, own, table, kSweepCsv));
     }
+    if (also) also(temporary);
   });
 }
 

@@ -4,16 +4,23 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 
+/// More files a caller puts into the results directory being written (e.g. exported
+/// matrices), so that they are replaced with it.
+using AlsoWrite = std::function<void(const std::filesystem::path&)>;
+
 /// All outputs of one run into dir (replacing an earlier run's directory).
-void writeRunOutputs(const RunResult& run, const std::filesystem::path& dir);
+void writeRunOutputs(const RunResult& run, const std::filesystem::path& dir,
+                     const AlsoWrite& also = {});
 
 /// All outputs of a sweep into dir: one sub-directory per value plus the sweep tables,
 /// charts and a .pvd series.
-void writeSweepOutputs(const SweepResult& sweep, const std::filesystem::path& dir);
+void writeSweepOutputs(const SweepResult& sweep, const std::filesystem::path& dir,
+                       const AlsoWrite& also = {});
 
 }  // namespace beamrotor

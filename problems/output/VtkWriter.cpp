@@ -13,11 +13,11 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <algorithm>
-#include <fstream>
 #include <stdexcept>
 
 #include "fem/assembly/Recovery.hpp"
 #include "problems/output/CsvTable.hpp"
+#include "problems/output/FileWriting.hpp"
 #include "problems/output/ModeShapes.hpp"
 #include "problems/output/VtkGrid.hpp"
 #include "problems/output/XmlText.hpp"
@@ -86,11 +86,15 @@ vtkSmartPointer<vtkDoubleArray> pointVectors(const char* name, const NodalField&
 
 void writeVtu(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(file.string().c_str());
+  // Into memory, then through writeFile: VTK's own file writing does not report every
+  // failed write (a full device).
+  writer->WriteToOutputStringOn();
   writer->SetInputData(grid);
   // Inline base64 with zlib compression: compact, and read by ParaView, VTK and meshio alike.
   writer->SetDataModeToBinary();
   if (writer->Write() != 1) throw std::runtime_error("VTK could not write " + file.string());
+  const std::string text = writer->GetOutputString();
+  writeFile(file, [&](std::ostream& out) { out << text; });
 }
 
 void writeStaticVtu(const std::filesystem::path& file, const Model& model,
@@ -176,17 +180,15 @@ void writeFrameVtu(const std::filesystem::path& file, const Model& model, const 
 }
 
 void writePvd(const std::filesystem::path& file, const std::vector<PvdEntry>& entries) {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot create " + file.string());
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <Collection>\n";
-  for (const PvdEntry& e : entries)
-    out << "    <DataSet timestep=\"" << exactDecimal(e.timestep)
-        << "\" group=\"\" part=\"0\" file=\"" << xmlEscape(e.file) << "\"/>\n";
-  out << "  </Collection>\n</VTKFile>\n";
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  writeFile(file, [&](std::ostream& out) {
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+        << "  <Collection>\n";
+    for (const PvdEntry& e : entries)
+      out << "    <DataSet timestep=\"" << exactDecimal(e.timestep)
+          << "\" group=\"\" part=\"0\" file=\"" << xmlEscape(e.file) << "\"/>\n";
+    out << "  </Collection>\n</VTKFile>\n";
+  });
 }
 
 }  // namespace beamrotor

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "fem/timing/Stopwatch.hpp"
+#include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
 #include "problems/deck/Formulations.hpp"
 #include "problems/run/ConvergeMethods.hpp"
@@ -63,16 +64,21 @@ MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
     throw DeckSolveError(deck.path, deck.accuracy->place,
                          formatNumber(target) + " not reached: " + why);
   };
+  // The finest level within the element cap a deck has (so within its memory estimate).
+  int finest = 0;
+  while (finest < kMaxAdequateLevel &&
+         double(deck.segments.size()) * double(2 << finest) <= double(kMaxElements))
+    ++finest;
   std::optional<RunResult> previous;
   std::optional<double> previousChange;
-  for (int level = 0; level <= kMaxAdequateLevel; ++level) {
+  for (int level = 0; level <= finest; ++level) {
     const std::string perSegment = std::to_string(1 << level) + " elements per segment";
     Stopwatch clock;
     std::optional<RunResult> run;
     try {
       run = runDeck(atLevel(deck, level));
     } catch (const DeckSolveError& e) {
-      if (previous || level == kMaxAdequateLevel)
+      if (previous || level == finest)
         fail("the solve with " + perSegment +
              " failed, refining further cannot help: " + e.message());
     }
@@ -98,7 +104,8 @@ MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
     previous = std::move(run);
   }
   fail("successive meshes still differ by more than that with " +
-       std::to_string(1 << kMaxAdequateLevel) + " elements per segment");
+       std::to_string(1 << finest) + " elements per segment (the most the cap of " +
+       std::to_string(kMaxElements) + " elements allows)");
   return {};
 }
 

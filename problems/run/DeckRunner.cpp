@@ -1,5 +1,9 @@
 #include "problems/run/DeckRunner.hpp"
 
+#include <cmath>
+#include <new>
+#include <stdexcept>
+
 #include "fem/modal/Modal.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/static/Static.hpp"
@@ -39,6 +43,8 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
     }
   } catch (const DeckError&) {
     throw;  // bad input only the model could reveal (an unstable explicit step)
+  } catch (const std::bad_alloc&) {
+    throw DeckSolveError(deck.path, a.place, kOutOfMemory);
   } catch (const std::exception& e) {
     // SolveError and UnsupportedStructure say what is wrong; anything else the core throws
     // while solving is reported the same way rather than escaping as a crash.
@@ -55,6 +61,11 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
   c.tolerance = k.tolerance;
   for (const AnalysisOutcome& a : run.analyses)
     if (a.name == k.analysis) c.computed = measure(k.quantity, a, model);
+  // A NaN compares false with everything: it must never reach a pass, a table or the
+  // accuracy search's convergence test.
+  if (!std::isfinite(c.computed))
+    throw std::domain_error("the computed value of '" + k.quantity.text + "' is " +
+                            (std::isnan(c.computed) ? "not a number" : "infinite"));
   return c;
 }
 

@@ -11,6 +11,11 @@
 
 namespace beamrotor {
 
+/// What a run that ran out of memory says (std::bad_alloc is caught where it can be named).
+inline constexpr const char* kOutOfMemory =
+    "out of memory: the model, its factorisation or its results do not fit (use fewer "
+    "elements, modes, frames or samples)";
+
 /// One run of a deck for its current parameter values. Throws DeckError for input the core
 /// rejects while building, DeckSolveError (naming the analysis) when an analysis fails.
 RunResult runDeck(const Deck& deck);

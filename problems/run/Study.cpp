@@ -1,8 +1,10 @@
 #include "problems/run/Study.hpp"
 
+#include "fem/solvers/AvailableMemory.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/FormulationOption.hpp"
 #include "problems/deck/SweepOption.hpp"
+#include "problems/run/MemoryEstimate.hpp"
 
 namespace beamrotor {
 
@@ -26,6 +28,8 @@ Study solve(const DeckSource& source, const StudyRequest& request, const SweepPr
                       "'" + study.deck.sweep->parameter + "' is both set (--set) and swept");
   }
   if (request.noSweep) study.deck.sweep.reset();
+  requireMemory(study.deck, study.deck.sweep ? study.deck.sweep->values.size() : 1,
+                availableMemoryBytes());
   if (study.deck.sweep)
     study.sweep = runSweep(source, overrides, study.deck, progress, adjust);
   else

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <ctime>
-#include <fstream>
 
+#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/FileWriting.hpp"
 #include "problems/verify/HtmlPage.hpp"
 
 namespace beamrotor::verify {
@@ -40,11 +41,29 @@ std::string generatedLine() {
 }  // namespace
 
 ReportSummary writeReport(const ReportOptions& options, std::ostream& log) {
+  // 0. What it needs, before any work: the shipped decks, and a directory it may write.
+  std::error_code ec;
+  const std::vector<fs::path> decks = fs::is_directory(options.problemsDir, ec)
+                                          ? decksIn(options.problemsDir)
+                                          : std::vector<fs::path>{};
+  if (decks.empty())
+    throw std::invalid_argument(
+        "the report checks the shipped decks (problems/*.yaml of the beamrotor source tree), but "
+        "'" +
+        options.problemsDir.string() +
+        "' holds none: run it from the source directory, or give --decks DIR");
+  const fs::path charts = options.outDir / "charts";
+  const fs::path page = options.outDir / "index.html";
+  if (fs::exists(fs::symlink_status(page, ec)) &&
+      !fs::exists(fs::symlink_status(charts / kMarkerFile, ec)))
+    throw std::invalid_argument("refusing to replace '" + page.string() +
+                                "': it is not a report beamrotor wrote (no charts/" + kMarkerFile +
+                                " beside it); choose another output directory with --out DIR");
   ReportContent content;
   content.generated = generatedLine();
   // 1. The decks' checks.
   log << "checking the decks in " << options.problemsDir.string() << "\n";
-  content.decks = runDeckChecks(decksIn(options.problemsDir));
+  content.decks = runDeckChecks(decks);
   ReportSummary summary;
   for (const DeckChecks& d : content.decks) {
     log << "  " << d.deck << (d.error.empty() ? "" : ": not solved") << "\n";
@@ -54,20 +73,20 @@ ReportSummary writeReport(const ReportOptions& options, std::ostream& log) {
       summary.failedChecks += !entry.second.pass();
     }
   }
-  // 2. The failure-case studies, drawn into DIR/charts.
+  // 2. The failure-case studies, drawn into DIR/charts (replaced as a whole).
   log << "running the failure-case studies\n";
-  const fs::path charts = options.outDir / "charts";
-  for (const StudyChart& chart : failureCharts(options.failures)) {
-    writeStudyChart(charts, chart);
+  const std::vector<StudyChart> studies = failureCharts(options.failures);
+  writeDirectoryAtomically(charts, [&](const fs::path& temporary) {
+    for (const StudyChart& chart : studies) writeStudyChart(temporary, chart);
+  });
+  for (const StudyChart& chart : studies)
     content.failures.push_back({chart.title, chart.caption, charts / (chart.name + ".svg")});
-  }
   // 3. The convergence charts, when a converge run left them.
   content.convergence = convergenceFigures(options.outDir / "convergence");
   // 4. The page.
-  summary.page = options.outDir / "index.html";
-  std::ofstream page(summary.page);
-  page << reportHtml(content);
-  if (!page) throw std::runtime_error("cannot write " + summary.page.string());
+  summary.page = page;
+  const std::string html = reportHtml(content);
+  writeFileAtomically(summary.page, [&](std::ostream& page) { page << html; });
   return summary;
 }
 

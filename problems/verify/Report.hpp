@@ -22,8 +22,9 @@ struct ReportSummary {
   int checks = 0, failedChecks = 0, unsolvedDecks = 0;
 };
 
-/// Builds the report; progress lines go to `log`. Throws std::runtime_error when the page
-/// cannot be written.
+/// Builds the report; progress lines go to `log`. Throws std::invalid_argument, before any
+/// work, when problemsDir holds no deck or DIR/index.html exists without a charts/ directory
+/// beamrotor wrote; std::runtime_error when a file cannot be written.
 ReportSummary writeReport(const ReportOptions& options, std::ostream& log);
 
 }  // namespace beamrotor::verify

@@ -2,10 +2,13 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
+
+#include "problems/cli/App.hpp"
 
 namespace beamrotor::test {
 
@@ -17,13 +20,6 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at))
     text.replace(at, from.size(), to), at += to.size();
   return text;
-}
-
-std::string fileText(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 bool allowed(const std::string& relative, const std::vector<std::string>& mayChange) {
@@ -45,7 +41,7 @@ std::map<std::string, std::string> snapshot(const fs::path& sandbox,
       continue;
     }
     const fs::file_type type = it->symlink_status().type();
-    seen[relative] = type == fs::file_type::regular     ? "file:" + fileText(it->path())
+    seen[relative] = type == fs::file_type::regular     ? "file:" + fileContents(it->path())
                      : type == fs::file_type::directory ? std::string("dir")
                                                         : "other:" + std::to_string(int(type));
   }
@@ -64,25 +60,47 @@ std::vector<std::string> filesWithNonFinite(const fs::path& sandbox,
     for (const auto& entry : fs::recursive_directory_iterator(root)) {
       const std::string ext = entry.path().extension().string();
       if (!entry.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
-      const std::string text = fileText(entry.path());
+      const std::string text = fileContents(entry.path());
       if (std::regex_search(text, nonFinite)) bad.push_back(entry.path().string());
     }
   }
   return bad;
 }
 
+/// Without charts, gnuplot is pointed at nothing (a warning, and no time spent drawing).
+std::vector<std::string> gnuplotSetting(const HostileCase& c) {
+  if (c.charts) return {};
+  return {"BEAMROTOR_GNUPLOT=/nonexistent/gnuplot"};
+}
+
+/// The command line called in this process, in `dir` (restored after).
+ProcessResult runInThisProcess(const std::vector<std::string>& arguments, const fs::path& dir,
+                               bool charts) {
+  const char* gnuplot = std::getenv("BEAMROTOR_GNUPLOT");
+  const std::string saved = gnuplot ? gnuplot : "";
+  if (!charts) setenv("BEAMROTOR_GNUPLOT", "/nonexistent/gnuplot", 1);
+  const fs::path back = fs::current_path();
+  fs::current_path(dir);
+  std::vector<const char*> argv{"beamrotor"};
+  for (const std::string& a : arguments) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  ProcessResult r;
+  r.exitCode = beamrotor::cli::runCommandLine(int(argv.size()), argv.data(), out, err);
+  fs::current_path(back);
+  if (gnuplot)
+    setenv("BEAMROTOR_GNUPLOT", saved.c_str(), 1);
+  else
+    unsetenv("BEAMROTOR_GNUPLOT");
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
 }  // namespace
 
 std::string hostileBaseDeck(const std::string& title, const std::string& unit,
                             const std::string& check) {
-  return "title: " + title + R"(
-materials:
-  - {name: steel, E: 200e9, nu: 0.3, rho: 7850}
-sections:
-  - {name: bar, shape: circle, D: 0.05}
-segments:
-  - {name: a, length: 1, section: bar, elements: 4}
-supports:
+  return "title: " + title + "\n" + kHostileBeam + R"(supports:
   - {name: left, at: start, fix: clamped}
 loads:
   - {type: point, at: end, fy: -1000}
@@ -116,9 +134,8 @@ ProcessResult runHostileCase(const HostileCase& c) {
   std::vector<std::string> arguments;
   for (const std::string& a : c.arguments)
     arguments.push_back(replaced(a, "{sandbox}", sandbox.string()));
-  std::vector<std::string> environment = c.environment;
-  if (!c.charts) environment.push_back("BEAMROTOR_GNUPLOT=/nonexistent/gnuplot");
-  const ProcessResult r = runBeamrotor(arguments, sandbox, environment);
+  const ProcessResult r = c.process ? runBeamrotor(arguments, sandbox, gnuplotSetting(c))
+                                    : runInThisProcess(arguments, sandbox, c.charts);
 
   CAPTURE(r.out);
   CAPTURE(r.err);

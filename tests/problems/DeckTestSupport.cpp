@@ -19,16 +19,12 @@ std::vector<std::filesystem::path> shippedDecks() {
   return decks;
 }
 
-namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
+std::string fileContents(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
 }
-
-}  // namespace
 
 std::string shellQuoted(const std::string& s) {
   std::string out = "'";
@@ -58,8 +54,8 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
   const int status = std::system(command.c_str());
   ProcessResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(dir / "out");
-  r.err = slurp(dir / "err");
+  r.out = fileContents(dir / "out");
+  r.err = fileContents(dir / "err");
   std::filesystem::remove_all(dir);
   return r;
 }
@@ -69,7 +65,7 @@ nlohmann::json SolvedDeck::json(const std::string& file) const {
 }
 
 std::string SolvedDeck::text(const std::string& file) const {
-  return slurp(dir / file);
+  return fileContents(dir / file);
 }
 
 SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string& scratch) {

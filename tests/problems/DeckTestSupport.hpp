@@ -42,6 +42,9 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
                            const std::filesystem::path& workingDir = BEAMROTOR_SOURCE_DIR,
                            const std::vector<std::string>& environment = {});
 
+/// A file's bytes as a string ("" when it cannot be read).
+std::string fileContents(const std::filesystem::path& file);
+
 /// text inside single quotes for /bin/sh.
 std::string shellQuoted(const std::string& text);
 
