@@ -78,7 +78,8 @@ MeshChoice searchMesh(const Deck& deck, double target, double& seconds) {
     try {
       run = runDeck(atLevel(deck, level));
     } catch (const DeckSolveError& e) {
-      if (previous || level == finest)
+      if (!previous && level == finest) throw;  // no mesh solves it: the solve's own error
+      if (previous)
         fail("the solve with " + perSegment +
              " failed, refining further cannot help: " + e.message());
     }

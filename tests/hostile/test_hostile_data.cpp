@@ -164,7 +164,7 @@ TEST_SUITE("hostile input: data") {
          foreignDirectory("thesis")},
         {"converge --out into a directory of unrelated files",
          deck,
-         {"converge", "deck.yaml", "--levels", "2", "--out", "thesis"},
+         {"converge", "deck.yaml", "--levels", "3", "--out", "thesis"},
          1,
          "^thesis: cannot write the results: " + kRefused,
          {},

@@ -255,7 +255,7 @@ TEST_SUITE("hostile input: faults") {
          {}},
         {"converge --levels beyond the element cap",
          deck,
-         {"converge", "deck.yaml", "--levels", "16", "--out", "out"},
+         {"converge", "deck.yaml", "--levels", "16", "--quantity", "stress max", "--out", "out"},
          2,
          R"(--levels: the finest mesh would have \d+ elements, more than the 100000)",
          {}},

@@ -92,7 +92,7 @@ TEST_SUITE("transient beam") {
     // the two runs agree step by step to round-off. The moving support reaches the free dofs
     // through the stiffness and the consistent-mass coupling of the first element.
     const double a = 30.0;  // m/s^2
-    Cantilever moving, fixed;
+    TransientCantilever moving, fixed;
     SupportMotion root;
     root.node = moving.line.nodes.front();
     root.dof = Dof::uy;
