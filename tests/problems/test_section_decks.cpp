@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "problems/deck/DeckError.hpp"
 #include "problems/run/Study.hpp"
@@ -25,18 +26,22 @@ constexpr double kTablePrecision = 1.2e-4;
 // A 3D cantilever: tip loads N (x), Fy, Fz; at the root Mz = Fy L and My = Fz L, largest at
 // the flange corner where all three add: sigma = |N|/A + |Fy| L (h/2)/I_strong +
 // |Fz| L (b/2)/I_weak.
-const std::string kCantileverDeck = R"(
+// The 3D model with its IPE 300, which both decks below share.
+const std::string kIpeModel = R"(
+model: {dimension: 3d}
+materials:
+  - {name: steel, E: 210e9, nu: 0.3, rho: 7850}
+sections:
+  - {name: ipe300, shape: I, h: 0.300, b: 0.150, tw: 0.0071, tf: 0.0107, r: 0.015}
+)";
+
+const std::string kCantileverDeck = kIpeModel + R"(
 parameters: {L: 2, N: 150e3, Fy: -12e3, Fz: 3e3}
 derived:
   A: 53.81e-4
   I_strong: 8356e-8
   I_weak: 603.8e-8
   sigma_corner: abs(N)/A + abs(Fy)*L*0.15/I_strong + abs(Fz)*L*0.075/I_weak
-model: {dimension: 3d}
-materials:
-  - {name: steel, E: 210e9, nu: 0.3, rho: 7850}
-sections:
-  - {name: ipe300, shape: I, h: 0.300, b: 0.150, tw: 0.0071, tf: 0.0107, r: 0.015}
 segments:
   - {length: L, section: ipe300, elements: 4}
 supports:
@@ -49,15 +54,10 @@ checks:
 
 // Simply supported in both planes, uniform qy and qz: M = q L^2 / 8 at midspan in each, the
 // middle of the middle element.
-const std::string kSpanDeck = R"(
+const std::string kSpanDeck = kIpeModel + R"(
 parameters: {L: 3, qy: -8e3, qz: 1.5e3}
 derived:
   sigma_mid: (abs(qy)*L^2/8)*0.15/8356e-8 + (abs(qz)*L^2/8)*0.075/603.8e-8
-model: {dimension: 3d}
-materials:
-  - {name: steel, E: 210e9, nu: 0.3, rho: 7850}
-sections:
-  - {name: ipe300, shape: I, h: 0.300, b: 0.150, tw: 0.0071, tf: 0.0107, r: 0.015}
 segments:
   - {length: L, section: ipe300, elements: 3}
 supports:
@@ -113,6 +113,21 @@ TEST_SUITE("section decks") {
     CHECK(timoshenko.exitCode == 2);
     CHECK(timoshenko.err.find(deck.string() + ":4:5: sections[0].kappa: missing field 'kappa'") !=
           std::string::npos);
+    // `converge` runs the Timoshenko elements too: they stop with the same reason, the
+    // Euler-Bernoulli one goes on.
+    const test::ProcessResult converge = test::runBeamrotor(
+        {"converge", deck.string(), "--levels", "3", "--out", (dir / "converge").string()});
+    CAPTURE(converge.err);
+    REQUIRE(converge.exitCode == 0);
+    const nlohmann::json study =
+        nlohmann::json::parse(test::fileContents(dir / "converge" / "convergence.json"));
+    for (const nlohmann::json& method : study["methods"]) {
+      CAPTURE(method["name"].get<std::string>());
+      const bool timoshenkoElement = method["name"].get<std::string>().rfind("timoshenko", 0) == 0;
+      CHECK(method["levels"].empty() == timoshenkoElement);
+      if (timoshenkoElement)
+        CHECK(method["failure"].get<std::string>().find("sections[0].kappa") != std::string::npos);
+    }
     std::filesystem::remove_all(dir);
   }
 }
