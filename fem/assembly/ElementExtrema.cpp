@@ -114,25 +114,37 @@ ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& 
   std::vector<double> shearAt{0, 1};
   collectZeros(derivativeOf(combination(1, productOf(Vy, Vy), 1, productOf(Vz, Vz))), shearAt);
 
-  // 3. Normal stress (maxNormalStress). A sum of absolute values |N|/A + |Mz| cy/Iz + |My| cz/Iy
-  //    is smooth between the zeros of its terms, where a kink can only be a minimum, so its
-  //    maximum is at an end or where one sign pattern's derivative vanishes. The axisymmetric
-  //    sections' |N|/A + c sqrt(P)/I is stationary where c P' / (2 I sqrt(P)) = -+ N'/A, i.e.
-  //    at zeros of (c/I)^2 P'^2 - 4 (N'/A)^2 P (squared: both signs). Candidates of either
-  //    form are evaluated with the true formula, so extra ones cost nothing but time.
+  // 3. Normal stress (maxNormalStress): the largest over the fibres of |sigma|, sigma = c + a y
+  //    + b z with c = N/A, a = -Mz/Iz, b = My/Iy, all polynomials in s. At a sharp fibre
+  //    |c + a y + b z| is smooth between the zeros of its argument, where a kink can only be a
+  //    minimum, so its maximum is at an end or where the argument's derivative vanishes. Over an
+  //    arc of radius r about (y, z) the largest is +-p + r sqrt(P), p = c + a y + b z, P = a^2 +
+  //    b^2, stationary where +-p' = -r P' / (2 sqrt(P)), i.e. at zeros of 4 p'^2 P - r^2 P'^2
+  //    (squared: both signs), or, while the gradient points outside the arc, at an end of the
+  //    arc (a sharp point; the two pieces join with equal slopes). Candidates are evaluated
+  //    with the true formula, so extra ones cost nothing but time.
+  const Polynomial c = combination(1 / section.A, N, 0, {}),
+                   a = combination(-1 / section.Iz, Mz, 0, {}),
+                   b = combination(1 / section.Iy, My, 0, {});
+  const auto linearAt = [&](double y, double z) {
+    return combination(1, c, 1, combination(y, a, z, b));
+  };
   std::vector<double> stressAt = momentAt;
   collectZeros(N, stressAt);
-  for (double sN : {-1.0, 1.0})
-    for (double sz : {-1.0, 1.0})
-      for (double sy : {-1.0, 1.0}) {
-        const Polynomial pattern =
-            combination(1, combination(sN / section.A, N, sz * section.outerY / section.Iz, Mz),
-                        sy * section.outerZ / section.Iy, My);
-        collectZeros(derivativeOf(pattern), stressAt);
-      }
-  const double k = section.outerY / section.Iz, dN = N[1] / section.A;
-  if (dN != 0)  // otherwise these are the zeros of P', already there
-    collectZeros(combination(k * k, productOf(dP, dP), -4 * dN * dN, P), stressAt);
+  const Polynomial gradient = combination(1, productOf(a, a), 1, productOf(b, b));
+  const Polynomial dGradient = derivativeOf(gradient);
+  for (const StressFibre& fibre : section.fibres) {
+    const Polynomial dp = derivativeOf(linearAt(fibre.y, fibre.z));
+    collectZeros(dp, stressAt);
+    if (fibre.radius == 0) continue;
+    collectZeros(combination(4, productOf(productOf(dp, dp), gradient),
+                             -fibre.radius * fibre.radius, productOf(dGradient, dGradient)),
+                 stressAt);
+    for (double end : {fibre.from, fibre.from + fibre.sweep})
+      collectZeros(derivativeOf(linearAt(fibre.y + fibre.radius * std::cos(end),
+                                         fibre.z + fibre.radius * std::sin(end))),
+                   stressAt);
+  }
 
   return {largestAt(-1, stressAt, [&](double s) { return maxNormalStress(section, forces.at(s)); }),
           largestAt(-1, shearAt, [&](double s) { return maxShearStress(section, forces.at(s)); }),

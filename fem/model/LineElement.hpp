@@ -31,8 +31,22 @@ struct SectionForceSeries {
 /// shape or any other field of the nodes alone does not.
 enum class SpanLoad { applied, none };
 
-/// Largest |normal stress| over the section's outer fibres (Pa): |N|/A plus bending.
-/// Circular and tubular sections bend about the resultant axis: M = sqrt(My^2 + Mz^2).
+/// The normal stress over a section as a linear field of the local coordinates:
+/// sigma(y, z) = c + a y + b z with c = N/A, a = -Mz/Iz, b = My/Iy (principal axes; the signs
+/// make the stresses' moments on the +x face equal Mz = -int y sigma dA, My = int z sigma dA).
+struct FibreStressField {
+  double c = 0, a = 0, b = 0;
+};
+FibreStressField fibreStressField(const Section& s, const SectionForces& f);
+
+/// The largest |sigma| of the field over one fibre (Pa): at a sharp corner |c + a y + b z|; over
+/// an arc of radius r about (y, z) the field's extreme on the arc, |c + a y + b z| +
+/// r hypot(a, b) when the field's gradient points into the arc.
+double fibreNormalStress(const StressFibre& fibre, const FibreStressField& field);
+
+/// Largest |normal stress| over the section (Pa): the largest over its fibres (the corners of
+/// an I-section's flanges carry |N|/A + |Mz| cy/Iz + |My| cz/Iy; a circle or tube the resultant
+/// moment, |N|/A + R sqrt(My^2 + Mz^2)/I). NaN for a section without fibres.
 double maxNormalStress(const Section& s, const SectionForces& f);
 
 class LineElement : public Element {

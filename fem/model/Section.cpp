@@ -26,8 +26,10 @@ Section Section::circle(std::string name, const Material& m, double D) {
   const double R = D / 2, I = kPi * std::pow(D, 4) / 64;
   // Cowper (1966), solid circle.
   const double kappa = 6 * (1 + m.nu) / (7 + 6 * m.nu);
-  return Section{std::move(name), Shape::circle, m,     kPi * R * R, I, I,
-                 2 * I,           kappa,         kappa, R,           R, D};
+  Section s{std::move(name), Shape::circle, m,     kPi * R * R, I, I,
+            2 * I,           kappa,         kappa, R,           R, D, {}, 0, 0};
+  s.fibres = {StressFibre{0, 0, R, 0, 2 * kPi}};
+  return s;
 }
 
 Section Section::tube(std::string name, const Material& m, double D, double t) {
@@ -39,9 +41,10 @@ Section Section::tube(std::string name, const Material& m, double D, double t) {
   const double c = d / D, c2 = c * c, nu = m.nu;
   const double kappa = 6 * (1 + nu) * (1 + c2) * (1 + c2) /
                        ((7 + 6 * nu) * (1 + c2) * (1 + c2) + (20 + 12 * nu) * c2);
-  return Section{
-      std::move(name), Shape::tube, m, kPi * (D * D - d * d) / 4, I, I, 2 * I, kappa, kappa,
-      D / 2,           D / 2,       D};
+  Section s{std::move(name), Shape::tube, m, kPi * (D * D - d * d) / 4, I, I, 2 * I, kappa, kappa,
+            D / 2,           D / 2,       D,   {}, 0, 0};
+  s.fibres = {StressFibre{0, 0, D / 2, 0, 2 * kPi}};
+  return s;
 }
 
 Section Section::rectangle(std::string name, const Material& m, double b, double h) {
@@ -52,7 +55,7 @@ Section Section::rectangle(std::string name, const Material& m, double b, double
   const double J = a * c * c * c * (1.0 / 3 - 0.21 * c / a * (1 - std::pow(c / a, 4) / 12));
   // Cowper (1966), rectangle.
   const double kappa = 10 * (1 + m.nu) / (12 + 11 * m.nu);
-  return Section{std::move(name),
+  Section s{std::move(name),
                  Shape::rectangle,
                  m,
                  b * h,
@@ -63,7 +66,12 @@ Section Section::rectangle(std::string name, const Material& m, double b, double
                  kappa,
                  h / 2,
                  b / 2,
-                 std::max(b, h)};
+                 std::max(b, h),
+                 {},
+                 0,
+                 0};
+  s.fibres = cornerFibres(h / 2, b / 2);
+  return s;
 }
 
 Section Section::general(std::string name, const Material& m, double A, double Iy, double Iz,
@@ -73,9 +81,24 @@ Section Section::general(std::string name, const Material& m, double A, double I
           "second moments Iy, Iz must be positive");
   require(std::isfinite(J) && J >= 0, "torsion constant J must be non-negative");
   require(kappaY >= 0 && kappaZ >= 0, "shear coefficients must be non-negative");
-  const double r = depth > 0 ? depth / 2 : std::sqrt(4 * Iz / A);
-  return Section{std::move(name),          Shape::general, m, A, Iy, Iz, J, kappaY, kappaZ, r, r,
-                 depth > 0 ? depth : 2 * r};
+  Section s{std::move(name), Shape::general, m, A, Iy, Iz, J, kappaY, kappaZ, 0, 0, depth, {}, 0, 0};
+  if (depth > 0) s.setExtent(depth, depth);
+  return s;
+}
+
+void Section::setExtent(double alongY, double alongZ) {
+  require(std::isfinite(alongY) && alongY >= 0 && std::isfinite(alongZ) && alongZ >= 0,
+          "section extents must be non-negative");
+  outerY = alongY / 2;
+  outerZ = alongZ / 2;
+  depth = std::max(alongY, alongZ);
+  fibres = cornerFibres(outerY, outerZ);
+}
+
+std::vector<StressFibre> cornerFibres(double cy, double cz) {
+  if (cz == 0) return {StressFibre{cy, 0}, StressFibre{-cy, 0}};
+  if (cy == 0) return {StressFibre{0, cz}, StressFibre{0, -cz}};
+  return {StressFibre{cy, cz}, StressFibre{-cy, cz}, StressFibre{-cy, -cz}, StressFibre{cy, -cz}};
 }
 
 }  // namespace beamrotor

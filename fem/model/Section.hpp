@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace beamrotor {
 
@@ -17,10 +18,21 @@ struct Material {
   static Material fromEnu(std::string name, double E, double nu, double rho);
 };
 
+/// A place on a section's outline where the normal stress can be largest (local y, z from the
+/// centroid, m): a sharp corner (radius 0), or a convex circular arc of `radius` about (y, z)
+/// spanning the outward directions from angle `from` through `from + sweep` (rad, measured from
+/// +y towards +z; sweep 2 pi for a whole circle). The extreme of a linear stress field over
+/// the section lies at one of its fibres (it is attained on the outline's convex hull).
+struct StressFibre {
+  double y = 0, z = 0;
+  double radius = 0;
+  double from = 0, sweep = 0;
+};
+
 /// Cross-section properties in the element's local frame (x along the axis, y and z the
 /// principal axes). Areas m^2, second moments m^4.
 struct Section {
-  enum class Shape { circle, tube, rectangle, general };
+  enum class Shape { circle, tube, rectangle, general, iSection, channel, angle, hollowRectangle };
 
   std::string name;
   Shape shape = Shape::general;
@@ -34,6 +46,12 @@ struct Section {
   double outerY = 0;  ///< distance from the axis to the outer fibre along y (stress recovery)
   double outerZ = 0;  ///< ... along z
   double depth = 0;   ///< overall depth for slenderness (diameter or height)
+  /// Where the normal stress can be largest (see StressFibre); empty when unknown (a
+  /// `general` section without its extent), and then no stress can be recovered.
+  std::vector<StressFibre> fibres;
+  /// Thin-walled shapes: tau_max = shearPeakY |Vy| / A for shear along y alone (and Z for z);
+  /// 0 for the solid and round shapes, whose factor shearStressFactor derives from the shape.
+  double shearPeakY = 0, shearPeakZ = 0;
 
   double EA() const { return material.E * A; }
   double EIy() const { return material.E * Iy; }
@@ -49,9 +67,18 @@ struct Section {
   static Section tube(std::string name, const Material& m, double D, double t);
   /// Rectangle b (along local z) by h (along local y); Cowper's kappa = 10 (1 + nu) / (12 + 11 nu).
   static Section rectangle(std::string name, const Material& m, double b, double h);
-  /// Any section from its properties; kappa = 0 means shear-rigid.
+  /// Any section from its properties; kappa = 0 means shear-rigid. depth > 0 sets the extent
+  /// along y and z to depth (setExtent); depth 0 leaves the extent unknown (no fibres).
   static Section general(std::string name, const Material& m, double A, double Iy, double Iz,
                          double J, double kappaY, double kappaZ, double depth);
+
+  /// The outer fibres of a section whose extreme points are the corners of its bounding box,
+  /// alongY (depth) by alongZ (width), centred on the centroid; 0 for an extent that no
+  /// bending can load (a planar model's z).
+  void setExtent(double alongY, double alongZ);
 };
+
+/// The corners (+-cy, +-cz) as sharp fibres; two points when cy or cz is 0.
+std::vector<StressFibre> cornerFibres(double cy, double cz);
 
 }  // namespace beamrotor

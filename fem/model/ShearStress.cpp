@@ -22,11 +22,18 @@ double shearStressFactor(const Section& s) {
       return 1.5;
     case Section::Shape::general:
       break;
+    case Section::Shape::iSection:
+    case Section::Shape::channel:
+    case Section::Shape::angle:
+    case Section::Shape::hollowRectangle:
+      return std::max(s.shearPeakY, s.shearPeakZ);
   }
   return 1.0;
 }
 
 double maxShearStress(const Section& s, const SectionForces& f) {
+  if (s.shearPeakY > 0 || s.shearPeakZ > 0)
+    return (s.shearPeakY * std::abs(f.Vy) + s.shearPeakZ * std::abs(f.Vz)) / s.A;
   return shearStressFactor(s) * std::hypot(f.Vy, f.Vz) / s.A;
 }
 

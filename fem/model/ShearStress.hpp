@@ -16,12 +16,17 @@ namespace beamrotor {
 ///   formula V Q / (I b) at the neutral axis (Gere & Goodno, Mechanics of Materials, 5.9):
 ///   4/3 for r = 0, 2 for a thin wall;
 /// - rectangle: k = 3/2 (Jourawski; Gere & Goodno, 5.8);
-/// - general section: k = 1, the mean shear stress V/A (its shape is unknown).
+/// - general section: k = 1, the mean shear stress V/A (its shape is unknown);
+/// - thin-walled standard shapes (I, channel, angle, rectangular hollow): the larger of their
+///   factors along y and z, Jourawski's V Q / (I t) at its largest over the midline
+///   (StandardSections, ThinWalledShear).
 double shearStressFactor(const Section& s);
 
 /// Largest transverse shear stress (Pa) from Vy and Vz: k hypot(Vy, Vz) / A. For the circle
 /// and tube the section is axisymmetric, so the resultant acts like a single shear force; for a
-/// rectangle both parabolic distributions peak at the centre, where they add as vectors.
+/// rectangle both parabolic distributions peak at the centre, where they add as vectors. For
+/// the thin-walled shapes (kY |Vy| + kZ |Vz|) / A: exact for shear along one axis, and an
+/// upper bound under both, whose peaks may lie at different places of the wall.
 double maxShearStress(const Section& s, const SectionForces& f);
 
 }  // namespace beamrotor

@@ -6,6 +6,7 @@
 #include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/SectionNeeds.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
 
@@ -300,6 +301,12 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
       } else {
         useMethod(method, d);
         refineMesh(d, level);
+        try {  // a Timoshenko method needs every general section's kappa
+          requireSectionValues(d);
+        } catch (const DeckError& e) {
+          series.failure = e.what();
+          break;
+        }
       }
       try {
         series.levels.push_back(solveLevel(d, t.quantity, level, std::max(1, options.repeats)));

@@ -36,6 +36,16 @@ struct DeckSegment {
   double elementEstimate() const { return elements > 0 ? elements : std::ceil(length / size); }
 };
 
+/// The values a `general` section leaves out (true: missing), with its place: a run that
+/// needs one (stresses, 3D torsion, a Timoshenko element) is refused there, never given a
+/// default (problems/deck/SectionNeeds).
+struct DeckSectionGaps {
+  std::string name;
+  std::string path;  ///< its field path, e.g. "sections[2]"
+  DeckPlace place;   ///< the section's map
+  bool depth = false, width = false, J = false, kappa = false;
+};
+
 /// A named station on the line, `at` metres from its start.
 struct DeckPoint {
   std::string name;
@@ -143,6 +153,7 @@ struct Deck {
   BeamOptions beam;  ///< the default element formulation
 
   std::vector<DeckSegment> segments;
+  std::vector<DeckSectionGaps> sectionGaps;  ///< one per `general` section missing something
   std::vector<DeckPoint> points;  ///< including the automatic "start" and "end"
   std::vector<DeckSupport> supports;
   std::vector<DeckSpring> springs;

@@ -7,6 +7,7 @@
 
 #include "problems/deck/Formulations.hpp"
 #include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/SectionNeeds.hpp"
 #include "problems/deck/Suggest.hpp"
 
 namespace beamrotor {
@@ -188,6 +189,7 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   reader::readStudy(c, overrides);
   reader::readReport(c);
   reader::readAccuracy(c);
+  requireSectionValues(deck);
   return deck;
 }
 

@@ -1,5 +1,6 @@
 #include "problems/deck/FormulationOption.hpp"
 
+#include "problems/deck/SectionNeeds.hpp"
 #include "problems/deck/Suggest.hpp"
 
 namespace beamrotor {
@@ -13,6 +14,7 @@ void applyFormulationOption(const std::string& theory, Deck& deck) {
       theory == kChoices[1] ? BeamTheory::timoshenko : BeamTheory::eulerBernoulli;
   deck.beam.theory = chosen;
   for (DeckSegment& s : deck.segments) s.options.theory = chosen;
+  requireSectionValues(deck);  // a Timoshenko beam needs every section's shear coefficient
 }
 
 }  // namespace beamrotor

@@ -1,6 +1,7 @@
 // Deck reader, part 1: materials, cross-sections, the segments of the line and its points.
 #include <cmath>
 
+#include "fem/model/StandardSections.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
@@ -31,11 +32,26 @@ const Material& materialFor(const Context& c, const Field& section) {
           " (materials: " + joinNames(names) + ")");
 }
 
-std::shared_ptr<const Section> readSection(const Context& c, const Field& f,
-                                           const std::string& name) {
+/// A standard shape from its dimensions (fem/model/StandardSections): `keys` the required
+/// dimensions in the constructor's order, `optional` those that default to 0.
+template <class Make>
+std::shared_ptr<const Section> readShape(const Context& c, const Field& f,
+                                         const std::vector<std::string>& keys,
+                                         const std::vector<std::string>& optional, Make make) {
+  std::vector<double> v;
+  for (const std::string& k : keys)  // a root radius may be 0 (welded, sharp)
+    v.push_back(k == "r" ? f.require(k).nonNegative(c.evaluator)
+                         : f.require(k).positive(c.evaluator));
+  for (const std::string& k : optional)
+    v.push_back(f.get(k) ? f.get(k)->nonNegative(c.evaluator) : 0.0);
+  return std::make_shared<Section>(make(v));
+}
+
+std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std::string& name) {
   const ExpressionEvaluator& ev = c.evaluator;
   const std::vector<std::string> common{"name", "shape", "material"};
-  const std::string shape = f.require("shape").choice({"circle", "tube", "rectangle", "general"});
+  const std::string shape = f.require("shape").choice(
+      {"circle", "tube", "rectangle", "I", "channel", "angle", "rhs", "general"});
   auto keys = [&](std::vector<std::string> own) {
     own.insert(own.begin(), common.begin(), common.end());
     return own;
@@ -43,9 +59,14 @@ std::shared_ptr<const Section> readSection(const Context& c, const Field& f,
   if (shape == "circle") f.allowOnly(keys({"D"}), "a circle section");
   if (shape == "tube") f.allowOnly(keys({"D", "t"}), "a tube section");
   if (shape == "rectangle") f.allowOnly(keys({"b", "h"}), "a rectangle section");
+  if (shape == "I") f.allowOnly(keys({"h", "b", "tw", "tf", "r"}), "an I section");
+  if (shape == "channel") f.allowOnly(keys({"h", "b", "tw", "tf", "r", "r_toe"}), "a channel");
+  if (shape == "angle") f.allowOnly(keys({"h", "b", "t", "r", "r_toe"}), "an angle");
+  if (shape == "rhs") f.allowOnly(keys({"h", "b", "t", "r_out", "r_in"}), "a hollow rectangle");
   if (shape == "general")
-    f.allowOnly(keys({"A", "I", "Iy", "Iz", "J", "kappa", "kappa_y", "kappa_z", "depth"}),
-                "a general section");
+    f.allowOnly(
+        keys({"A", "I", "Iy", "Iz", "J", "kappa", "kappa_y", "kappa_z", "depth", "width"}),
+        "a general section");
   const Material& m = materialFor(c, f);
 
   if (shape == "circle")
@@ -64,6 +85,24 @@ std::shared_ptr<const Section> readSection(const Context& c, const Field& f,
     const double h = f.require("h").positive(ev);
     return std::make_shared<Section>(Section::rectangle(name, m, b, h));
   }
+  if (shape == "I")
+    return readShape(c, f, {"h", "b", "tw", "tf", "r"}, {}, [&](const std::vector<double>& v) {
+      return iSection(name, m, v[0], v[1], v[2], v[3], v[4]);
+    });
+  if (shape == "channel")
+    return readShape(c, f, {"h", "b", "tw", "tf", "r"}, {"r_toe"},
+                     [&](const std::vector<double>& v) {
+                       return channelSection(name, m, v[0], v[1], v[2], v[3], v[4], v[5]);
+                     });
+  if (shape == "angle")
+    return readShape(c, f, {"h", "b", "t", "r"}, {"r_toe"}, [&](const std::vector<double>& v) {
+      return angleSection(name, m, v[0], v[1], v[2], v[3], v[4]);
+    });
+  if (shape == "rhs")
+    return readShape(c, f, {"h", "b", "t"}, {"r_out", "r_in"},
+                     [&](const std::vector<double>& v) {
+                       return hollowRectangleSection(name, m, v[0], v[1], v[2], v[3], v[4]);
+                     });
   // General: I sets both second moments; Iy defaults to Iz (and the other way round).
   const double A = f.require("A").positive(ev);
   auto I = f.get("I"), Iy = f.get("Iy"), Iz = f.get("Iz");
@@ -82,7 +121,15 @@ std::shared_ptr<const Section> readSection(const Context& c, const Field& f,
   const double ky = f.get("kappa_y") ? f.get("kappa_y")->nonNegative(ev) : k;
   const double kz = f.get("kappa_z") ? f.get("kappa_z")->nonNegative(ev) : k;
   const double depth = f.get("depth") ? f.get("depth")->positive(ev) : 0;
-  return std::make_shared<Section>(Section::general(name, m, A, IyVal, IzVal, J, ky, kz, depth));
+  const double width = f.get("width") ? f.get("width")->positive(ev) : 0;
+  Section s = Section::general(name, m, A, IyVal, IzVal, J, ky, kz, 0);
+  if (depth > 0) s.setExtent(depth, width);
+  // kappa: 0 given on purpose is a shear-rigid section; only a missing kappa is a gap.
+  const bool kappaGiven = kappa || (f.has("kappa_y") && f.has("kappa_z"));
+  const DeckSectionGaps gaps{name, f.path(), f.place(), depth == 0, width == 0, !f.has("J"),
+                             !kappaGiven};
+  if (gaps.depth || gaps.width || gaps.J || gaps.kappa) c.deck.sectionGaps.push_back(gaps);
+  return std::make_shared<Section>(std::move(s));
 }
 
 /// A model without beams: named points only, `at` their x coordinate (m, default 0).

@@ -1,0 +1,43 @@
+// Standard structural shapes from their dimensions (m): rolled and welded I/H sections,
+// channels, angles and rectangular hollow sections. Each gets its area and second moments
+// from the exact outline with its fillets (SectionOutline), its torsion constant from the
+// formula named at its function, its shear coefficients and peak shear stress factors from
+// the thin-walled shear flow of its midline (ThinWalledShear), and its stress fibres (the
+// outline's convex corners). Local axes: y along the depth h (the web of I and channel
+// sections, so a planar model bends the strong way, about z), z along the width b.
+#pragma once
+
+#include <string>
+
+#include "fem/model/Section.hpp"
+
+namespace beamrotor {
+
+/// Doubly symmetric I/H section: depth h, flange width b, web tw, flanges tf, root radius r
+/// (0 for a welded section, whose fillet welds are not counted). The published tables' y-y
+/// (strong) axis is this z: their Iy is Section::Iz.
+Section iSection(std::string name, const Material& m, double h, double b, double tw, double tf,
+                 double r);
+
+/// Channel with parallel flanges (UPE, PFC): depth h, flange width b (from the web's back), web
+/// tw, flanges tf, root radius r, flange toe radius rToe (inner corner of the flange tips).
+/// The web's back lies at z = -e (e from the centroid, the tables' e or e_y); the shear centre
+/// lies behind the web and is not modelled: loads act through the centroid.
+Section channelSection(std::string name, const Material& m, double h, double b, double tw,
+                       double tf, double r, double rToe);
+
+/// Angle with legs h (drawn along y) and b (along z), thickness t, root radius r and toe
+/// radius rToe. Its principal axes are inclined to the legs: local y and z are the principal
+/// axes, z the major one (the tables' u-u, Iz = Iu, Iy = Iv); the legs lie at
+/// -principalAngle from them (see angleLegAngle).
+Section angleSection(std::string name, const Material& m, double h, double b, double t, double r,
+                     double rToe);
+/// The angle (rad) from the leg h to the local y axis, turning towards the leg b.
+double angleLegAngle(double h, double b, double t, double r, double rToe);
+
+/// Rectangular (square) hollow section: depth h (along y), width b, wall t, outer and inner
+/// corner radii ro, ri (0: sharp).
+Section hollowRectangleSection(std::string name, const Material& m, double h, double b, double t,
+                               double ro, double ri);
+
+}  // namespace beamrotor
