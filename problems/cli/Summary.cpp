@@ -156,6 +156,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
       << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
   printReported(out, run.reported);
+  for (const std::string& w : run.warnings) out << "warning: " << w << "\n";
   if (run.adequate) printAdequateChoice(out, *run.adequate);
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) printStatic(out, deck, run, a);
@@ -174,6 +175,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
       << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free) at " << sweep.parameter
       << " = " << formatValue(sweep.values.front()) << "\n";
   out << "sweep over " << sweep.parameter << ": " << sweep.runs.size() << " values\n";
+  for (const std::string& w : first.warnings) out << "warning: " << w << "\n";
 
   // Columns: the reactions of the first static analysis, the frequencies of the first modal.
   constexpr int kFrequencies = 3;

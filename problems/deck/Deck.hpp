@@ -19,6 +19,7 @@
 #include "problems/deck/DeckRotor.hpp"
 #include "problems/deck/DeckTransient.hpp"
 #include "problems/deck/Quantity.hpp"
+#include "problems/deck/Units.hpp"
 
 namespace beamrotor {
 
@@ -147,6 +148,10 @@ struct Deck {
   std::vector<std::pair<std::string, double>> parameters;  ///< after overrides, deck order
   std::vector<std::pair<std::string, double>> derived;     ///< named values computed from them
   std::vector<std::pair<std::string, double>> reported;    ///< `report:` names with their values
+  /// The dimensions of the parameters and derived values written with a unit (values in SI).
+  std::vector<std::pair<std::string, Dimension>> dimensions;
+  /// "file:line:col: field: message" lines for implausible values (MaterialPlausibility.hpp).
+  std::vector<std::string> warnings;
 
   std::string dimension = "planar";  ///< "planar", "3d" or "lateral"
   DofSet dofs = DofSet::planar();

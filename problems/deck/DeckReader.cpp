@@ -5,7 +5,9 @@
 
 #include <algorithm>
 
+#include "problems/deck/Expression.hpp"
 #include "problems/deck/Formulations.hpp"
+#include "problems/deck/MaterialPlausibility.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/SectionNeeds.hpp"
 #include "problems/deck/Suggest.hpp"
@@ -81,19 +83,41 @@ void requireRoomForName(const Context& c, const Field& f) {
            " parameters and derived values together");
 }
 
+/// Makes a parameter or derived value available to later expressions, with its unit.
+void define(Context& c, const Field& f, const std::string& name, const Amount& v) {
+  try {
+    c.evaluator.define(name, v);
+  } catch (const ExpressionError& e) {
+    f.fail(e.what());
+  }
+  if (!v.dimension.dimensionless()) c.deck.dimensions.emplace_back(name, v.dimension);
+}
+
+/// A command-line override of the parameter `f`: a bare number takes the dimension of the
+/// deck's own value, one with a unit must have it.
+Amount overridden(const Context& c, const Field& f, const ParameterOverride& o) {
+  Dimension own;
+  try {
+    own = f.amount(c.evaluator).dimension;
+  } catch (const DeckError&) {
+    // the deck's value is replaced anyway; its dimension is unknown, so the override's holds
+    return Amount{o.value, o.dimension.value_or(Dimension{}), false};
+  }
+  if (o.dimension)
+    if (auto why = overrideMismatch(o.name, *o.dimension, own))
+      throw DeckError(c.deck.path, {0, 0, "--set " + o.text}, *why);
+  return Amount{o.value, own, false};
+}
+
 void readParameters(Context& c, const std::vector<ParameterOverride>& overrides) {
   std::vector<std::string> names;
   if (auto block = c.root.get("parameters"); block && !block->isNull()) {
     for (const auto& [name, value] : block->entries()) {
       requireRoomForName(c, value);
       const ParameterOverride* o = findOverride(overrides, name);
-      const double v = o ? o->value : value.number(c.evaluator);
-      try {
-        c.evaluator.define(name, v);
-      } catch (const ExpressionError& e) {
-        value.fail(e.what());
-      }
-      c.deck.parameters.emplace_back(name, v);
+      const Amount v = o ? overridden(c, value, *o) : value.amount(c.evaluator);
+      define(c, value, name, v);
+      c.deck.parameters.emplace_back(name, v.si);
       names.push_back(name);
     }
   }
@@ -118,13 +142,9 @@ void readDerived(Context& c) {
   if (!block || block->isNull()) return;
   for (const auto& [name, value] : block->entries()) {
     requireRoomForName(c, value);
-    const double v = value.number(c.evaluator);
-    try {
-      c.evaluator.define(name, v);
-    } catch (const ExpressionError& e) {
-      value.fail(e.what());
-    }
-    c.deck.derived.emplace_back(name, v);
+    const Amount v = value.amount(c.evaluator);
+    define(c, value, name, v);
+    c.deck.derived.emplace_back(name, v.si);
   }
 }
 
@@ -182,6 +202,8 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   // 3. - 6.
   reader::readModel(c);
   reader::readMaterials(c);
+  if (auto materials = c.root.get("materials"); materials && !materials->isNull())
+    deck.warnings = materialWarnings(*materials, c.materials);
   reader::readSections(c);
   reader::readLine(c);
   reader::readAttachments(c);

@@ -3,14 +3,18 @@
 #include <muParser.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
+#include <stdexcept>
 
 #include "problems/deck/ExpressionFunctions.hpp"
 #include "problems/deck/SceneFunctions.hpp"
 #include "problems/deck/Suggest.hpp"
+#include "problems/deck/UnitSyntax.hpp"
 
 namespace beamrotor {
 
@@ -45,10 +49,109 @@ void defineDeckBuiltins(mu::Parser& parser) {
   defineDeckFunctions(parser);
 }
 
+/// One system of units in which expressions are evaluated: base unit d is 2^exponent[d] times
+/// its SI size. `angleArguments`: trigonometric functions read their argument as an angle in
+/// this system (sin(30 deg)) rather than as a plain number of radians (sin(0.5)).
+struct Scaling {
+  std::array<int, 4> exponent;
+  bool angleArguments;
+};
+
+// [0] SI; [1..3] length, mass, time doubled; [4], [5] angle doubled, read both ways; [6], [7]
+// every base scaled at once (the check), angles read both ways.
+constexpr std::array<Scaling, 8> kScalings{{{{0, 0, 0, 0}, false},
+                                            {{1, 0, 0, 0}, false},
+                                            {{0, 1, 0, 0}, false},
+                                            {{0, 0, 1, 0}, false},
+                                            {{0, 0, 0, 1}, false},
+                                            {{0, 0, 0, 1}, true},
+                                            {{3, -5, 7, -2}, false},
+                                            {{3, -5, 7, -2}, true}}};
+
+/// The size in scaled system `s` of a value whose SI size is `si`.
+double scaled(double si, const Dimension& d, const Scaling& s) {
+  double e = 0;
+  for (int i = 0; i < 4; ++i) e += d.exponents[i] * s.exponent[i];
+  return si * std::exp2(e);
+}
+
+// Trigonometric functions whose angles are in a system where the radian is 2^E radians.
+template <int E>
+double sinIn(double x) {
+  return std::sin(std::ldexp(x, -E));
+}
+template <int E>
+double cosIn(double x) {
+  return std::cos(std::ldexp(x, -E));
+}
+template <int E>
+double tanIn(double x) {
+  return std::tan(std::ldexp(x, -E));
+}
+template <int E>
+double asinIn(double x) {
+  return std::ldexp(std::asin(x), E);
+}
+template <int E>
+double acosIn(double x) {
+  return std::ldexp(std::acos(x), E);
+}
+template <int E>
+double atanIn(double x) {
+  return std::ldexp(std::atan(x), E);
+}
+
+template <int E>
+void defineAngleFunctions(mu::Parser& parser) {
+  parser.DefineFun("sin", sinIn<E>);
+  parser.DefineFun("cos", cosIn<E>);
+  parser.DefineFun("tan", tanIn<E>);
+  parser.DefineFun("asin", asinIn<E>);
+  parser.DefineFun("acos", acosIn<E>);
+  parser.DefineFun("atan", atanIn<E>);
+}
+
+std::unique_ptr<mu::Parser> parserFor(const Scaling& s) {
+  auto parser = std::make_unique<mu::Parser>();
+  defineDeckBuiltins(*parser);
+  if (s.angleArguments) {
+    if (s.exponent[Dimension::kAngle] == 1) defineAngleFunctions<1>(*parser);
+    if (s.exponent[Dimension::kAngle] == -2) defineAngleFunctions<-2>(*parser);
+  }
+  for (const Unit& u : units()) parser->DefineConst(u.name, scaled(u.si, u.dimension, s));
+  return parser;
+}
+
+/// The exponent of one base from the value v0 in SI and v in the system where that base is
+/// doubled; nullopt unless v / v0 is a power of 2 with an exponent in sixths.
+std::optional<double> exponentFrom(double v0, double v) {
+  if (!(v / v0 > 0)) return std::nullopt;
+  const double e = std::log2(v / v0);
+  const double sixths = std::round(6 * e);
+  if (std::abs(6 * e - sixths) > 1e-9) return std::nullopt;
+  return sixths / 6;
+}
+
+/// The dimension the values in every scaling show, reading angles in functions as plain
+/// numbers (angleArguments false) or as angles; nullopt when they do not fit one dimension.
+std::optional<Dimension> dimensionFrom(const std::vector<double>& v, bool angleArguments) {
+  const int angle = angleArguments ? 5 : 4, check = angleArguments ? 7 : 6;
+  Dimension d;
+  const int from[4] = {1, 2, 3, angle};
+  for (int i = 0; i < 4; ++i) {
+    const auto e = exponentFrom(v[0], v[from[i]]);
+    if (!e) return std::nullopt;
+    d.exponents[i] = *e;
+  }
+  const double predicted = scaled(v[0], d, kScalings[check]);
+  if (!(std::abs(v[check] - predicted) <= 1e-9 * std::abs(predicted))) return std::nullopt;
+  return d;
+}
+
 }  // namespace
 
-ExpressionEvaluator::ExpressionEvaluator() : parser_(std::make_unique<mu::Parser>()) {
-  defineDeckBuiltins(*parser_);
+ExpressionEvaluator::ExpressionEvaluator() {
+  for (const Scaling& s : kScalings) parsers_.push_back(parserFor(s));
 }
 
 ExpressionEvaluator::~ExpressionEvaluator() = default;
@@ -65,42 +168,87 @@ bool ExpressionEvaluator::defines(const std::string& name) const {
   return defined_.count(name) > 0;
 }
 
+Dimension ExpressionEvaluator::dimensionOf(const std::string& name) const {
+  const auto found = defined_.find(name);
+  return found == defined_.end() ? Dimension{} : found->second;
+}
+
 void ExpressionEvaluator::define(const std::string& name, double value) {
+  define(name, Amount{value, Dimension{}, false});
+}
+
+void ExpressionEvaluator::define(const std::string& name, const Amount& value) {
   if (!isIdentifier(name))
     throw ExpressionError("'" + name +
                           "' is not a valid name (letters, digits and '_', starting with a "
                           "letter, at most 64 characters)");
-  if (name == "pi" || parser_->GetFunDef().count(name))
+  if (name == "pi" || parsers_[0]->GetFunDef().count(name))
     throw ExpressionError("'" + name + "' is reserved (a built-in function or constant)");
   if (defines(name)) throw ExpressionError("'" + name + "' is defined twice");
-  if (!std::isfinite(value)) throw ExpressionError("'" + name + "' is not finite");
-  parser_->DefineConst(name, value);
+  if (!std::isfinite(value.si)) throw ExpressionError("'" + name + "' is not finite");
+  defineConstant(name, value);
   names_.push_back(name);
-  defined_.insert(name);
+  defined_.emplace(name, value.dimension);
 }
 
-double ExpressionEvaluator::evaluate(const std::string& text) const {
+void ExpressionEvaluator::defineConstant(const std::string& name, const Amount& value) {
+  for (std::size_t i = 0; i < parsers_.size(); ++i)
+    parsers_[i]->DefineConst(name, scaled(value.si, value.dimension, kScalings[i]));
+}
+
+std::vector<double> ExpressionEvaluator::valuesInEveryScaling(const std::string& text) const {
   if (text.size() > kLongestExpression)
     throw ExpressionError("expression longer than " + std::to_string(kLongestExpression) +
                           " characters");
   if (text.find_first_not_of(" \t") == std::string::npos)
     throw ExpressionError("empty value; expected a number or an expression");
-  int count = 0;
-  double value = 0;
+  std::string written;
   try {
-    parser_->SetExpr(text);
-    const double* results = parser_->Eval(count);
-    if (count != 1)
-      throw ExpressionError("'" + text + "' gives " + std::to_string(count) +
-                            " comma-separated values; expected one number");
-    value = results[0];
-  } catch (const mu::Parser::exception_type& e) {
-    throw ExpressionError("cannot evaluate '" + text + "': " + reason(e, names_));
+    written = writeUnitProducts(text, [this](const std::string& word) {
+      return defines(word) || (parsers_[0]->GetConst().count(word) > 0 && !findUnit(word));
+    });
+  } catch (const std::invalid_argument& e) {
+    throw ExpressionError("cannot evaluate '" + text + "': " + e.what());
   }
-  if (!std::isfinite(value))
-    throw ExpressionError("'" + text + "' evaluates to " + shortNumber(value) +
-                          " (division by zero or a function outside its domain?)");
-  return value;
+  std::vector<double> values;
+  for (const auto& parser : parsers_) {
+    int count = 0;
+    try {
+      parser->SetExpr(written);
+      const double* results = parser->Eval(count);
+      if (count != 1)
+        throw ExpressionError("'" + text + "' gives " + std::to_string(count) +
+                              " comma-separated values; expected one number");
+      values.push_back(results[0]);
+    } catch (const mu::Parser::exception_type& e) {
+      throw ExpressionError("cannot evaluate '" + text + "': " + reason(e, names_));
+    }
+    if (values.size() == 1 && !std::isfinite(values[0]))
+      throw ExpressionError("'" + text + "' evaluates to " + shortNumber(values[0]) +
+                            " (division by zero or a function outside its domain?)");
+  }
+  return values;
+}
+
+Amount ExpressionEvaluator::amount(const std::string& text) const {
+  const std::vector<double> v = valuesInEveryScaling(text);
+  if (v[0] == 0) {
+    if (std::all_of(v.begin(), v.end(), [](double x) { return x == 0; }))
+      return Amount{0, Dimension{}, true};
+  } else if (auto d = dimensionFrom(v, false)) {
+    return Amount{v[0], *d, false};
+  } else if (auto angled = dimensionFrom(v, true)) {
+    return Amount{v[0], *angled, false};
+  }
+  throw ExpressionError(
+      "'" + text +
+      "' mixes dimensions: it adds, subtracts or compares quantities of different "
+      "dimensions, or gives a quantity with a unit to a function that needs a plain number "
+      "(divide it by its unit first, e.g. exp(x/m))");
+}
+
+double ExpressionEvaluator::evaluate(const std::string& text) const {
+  return amount(text).si;
 }
 
 struct CompiledExpression::State {
@@ -124,15 +272,20 @@ CompiledExpression ExpressionEvaluator::compile(const std::string& text,
   std::vector<std::string> known = names_;
   try {
     defineDeckBuiltins(st.parser);
-    for (const auto& [name, value] : parser_->GetConst())
-      if (name != "pi" && name != "_pi" && name != "_e") st.parser.DefineConst(name, value);
+    const auto isVariable = [&](const std::string& name) {
+      return std::find(variables.begin(), variables.end(), name) != variables.end();
+    };
+    for (const auto& [name, value] : parsers_[0]->GetConst())
+      if (name != "pi" && name != "_pi" && name != "_e" && !(findUnit(name) && isVariable(name)))
+        st.parser.DefineConst(name, value);
     for (std::size_t i = 0; i < variables.size(); ++i) {
       if (defines(variables[i]))
         throw ExpressionError("'" + variables[i] + "' is both a parameter and a variable here");
       st.parser.DefineVar(variables[i], &st.variables[i]);
       known.push_back(variables[i]);
     }
-    st.parser.SetExpr(text);
+    st.parser.SetExpr(writeUnitProducts(
+        text, [&](const std::string& word) { return defines(word) || isVariable(word); }));
     int count = 0;
     st.parser.Eval(count);
     if (count != 1)
@@ -140,6 +293,8 @@ CompiledExpression ExpressionEvaluator::compile(const std::string& text,
                             " comma-separated values; expected one number");
   } catch (const mu::Parser::exception_type& e) {
     throw ExpressionError("cannot evaluate '" + text + "': " + reason(e, known));
+  } catch (const std::invalid_argument& e) {
+    throw ExpressionError("cannot evaluate '" + text + "': " + e.what());
   }
   out(std::vector<double>(variables.size(), 0.0));  // finite where every variable is 0
   return out;

@@ -1,13 +1,25 @@
 // Arithmetic in decks: any numeric field may be a muparser expression of the deck's parameters
-// ("0.715 - eta", "P*L^3/(3*E*I)"). Names are defined one by one, so a parameter can use the
-// ones before it; values are constants to the parser, so an expression cannot assign.
+// ("0.715 - eta", "P*L^3/(3*E*I)"), with units ("12 kN/m", "q*L^2/8" with L: 6 m). Names are
+// defined one by one, so a parameter can use the ones before it; values are constants to the
+// parser, so an expression cannot assign.
+//
+// Dimensions are tracked by evaluating each expression again in scaled base units: with the
+// metre made 2 times larger every length-valued constant doubles, so an expression's value
+// scales as 2^e where e is its length exponent; likewise for mass, time and angle. A last
+// evaluation with all four bases scaled at once must agree with the exponents found, else the
+// expression adds, subtracts or compares different dimensions (or passes a quantity with a
+// unit to a function that needs a plain number). Scaling by powers of two is exact in floating
+// point, so a consistent expression gives exact exponents. Trigonometric functions take either
+// a plain number (radians) or an angle (`sin(30 deg)`): both readings are tried.
 #pragma once
 
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
+
+#include "problems/deck/Units.hpp"
 
 namespace mu {
 class Parser;
@@ -24,6 +36,14 @@ class ExpressionError : public std::runtime_error {
 
 class CompiledExpression;
 
+/// A value with its dimension: `si` in SI units (m, kg, s, rad and their products).
+struct Amount {
+  double si = 0;
+  Dimension dimension;
+  /// An exact zero has no dimension that evaluation can see (0 m = 0 kg): it fits any field.
+  bool anyDimension = false;
+};
+
 class ExpressionEvaluator {
  public:
   /// Knows the constant pi, muparser's functions (sin, sqrt, abs, min, max, ...) and the
@@ -35,20 +55,28 @@ class ExpressionEvaluator {
 
   /// Makes `name` = value available to later expressions. Throws ExpressionError when the name
   /// is not an identifier, is reserved (a function or built-in constant) or already defined.
+  /// A plain (dimensionless) number.
   void define(const std::string& name, double value);
+  /// A value with a unit (`L: 6 m`). A name may hide a unit of the same name (a parameter `m`);
+  /// the unit is then not available after a number in later expressions.
+  void define(const std::string& name, const Amount& value);
+  /// The dimension of a name defined with define(); none for an unknown one.
+  Dimension dimensionOf(const std::string& name) const;
   /// Whether `name` was defined with define().
   bool defines(const std::string& name) const;
   /// The names defined so far, in order.
   const std::vector<std::string>& names() const { return names_; }
 
-  /// The value of `text` (a single expression). Throws ExpressionError when it does not parse
-  /// or evaluates to inf or nan.
+  /// The value of `text` (a single expression) and its dimension. Throws ExpressionError when
+  /// it does not parse, evaluates to inf or nan, or mixes dimensions.
+  Amount amount(const std::string& text) const;
+  /// amount(text).si: the SI value, whatever its dimension.
   double evaluate(const std::string& text) const;
 
-  /// `text` as a function of `variables` (e.g. {"t"}), with the names defined so far as
-  /// constants: parsed once, then evaluated from muparser's byte code at every call. Throws
-  /// ExpressionError when it does not parse, names an unknown name, or is not finite with every
-  /// variable 0.
+  /// `text` as a function of `variables` (e.g. {"t"}), with the names defined so far and the
+  /// units (in SI, except those named like a variable) as constants: parsed once, then evaluated
+  /// from muparser's byte code at every call. Throws ExpressionError when it does not parse, names
+  /// an unknown name, or is not finite with every variable 0.
   CompiledExpression compile(const std::string& text,
                              const std::vector<std::string>& variables) const;
 
@@ -56,9 +84,13 @@ class ExpressionEvaluator {
   static bool isIdentifier(const std::string& name);
 
  private:
-  std::unique_ptr<mu::Parser> parser_;
+  /// The value of `text` in each scaled system of units (see above), unit products inserted.
+  std::vector<double> valuesInEveryScaling(const std::string& text) const;
+  void defineConstant(const std::string& name, const Amount& value);
+
+  std::vector<std::unique_ptr<mu::Parser>> parsers_;  // one per scaling; [0] is SI
   std::vector<std::string> names_;
-  std::unordered_set<std::string> defined_;  // names_, for lookups in constant time
+  std::unordered_map<std::string, Dimension> defined_;  // names_, for lookups in constant time
 };
 
 /// An expression of a few variables, compiled (see ExpressionEvaluator::compile). Copies share

@@ -161,23 +161,47 @@ std::string Field::name() const {
   return s;
 }
 
-double Field::number(const ExpressionEvaluator& evaluator) const {
+Amount Field::amount(const ExpressionEvaluator& evaluator) const {
   if (!isScalar()) fail("expected a number or an expression, got " + describe());
   try {
-    return evaluator.evaluate(node_.Scalar());
+    return evaluator.amount(node_.Scalar());
   } catch (const ExpressionError& e) {
     fail(e.what());
   }
 }
 
+double Field::number(const ExpressionEvaluator& evaluator) const {
+  return number(evaluator, fieldUnitAt(path_));
+}
+
+double Field::number(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {
+  const Amount a = amount(evaluator);
+  if (a.anyDimension || a.dimension.dimensionless()) return a.si;  // bare: in the field's unit
+  if (a.dimension != unit.dimension) {
+    const std::size_t dot = path_.find_last_of('.');
+    const std::string key = dot == std::string::npos ? path_ : path_.substr(dot + 1);
+    fail(key + " expects " + describeDimension(unit.dimension) + ", got " +
+         describeDimension(a.dimension));
+  }
+  return a.si / unit.bareSize;
+}
+
 double Field::positive(const ExpressionEvaluator& evaluator) const {
-  const double v = number(evaluator);
+  return positive(evaluator, fieldUnitAt(path_));
+}
+
+double Field::positive(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {
+  const double v = number(evaluator, unit);
   if (!(v > 0)) fail("must be positive, got " + formatNumber(v));
   return v;
 }
 
 double Field::nonNegative(const ExpressionEvaluator& evaluator) const {
-  const double v = number(evaluator);
+  return nonNegative(evaluator, fieldUnitAt(path_));
+}
+
+double Field::nonNegative(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {
+  const double v = number(evaluator, unit);
   if (!(v >= 0)) fail("must not be negative, got " + formatNumber(v));
   return v;
 }

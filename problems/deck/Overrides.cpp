@@ -18,11 +18,25 @@ ParameterOverride parseOverride(const std::string& argument, const std::string& 
     throw DeckError(deckPath, place, "'" + o.name + "' is not a parameter name");
   try {
     const ExpressionEvaluator constants;
-    o.value = constants.evaluate(argument.substr(eq + 1));
+    const Amount a = constants.amount(argument.substr(eq + 1));
+    o.value = a.si;
+    if (!a.anyDimension && !a.dimension.dimensionless()) o.dimension = a.dimension;
   } catch (const ExpressionError& e) {
     throw DeckError(deckPath, place, e.what());
   }
   return o;
+}
+
+std::optional<std::string> overrideMismatch(const std::string& name, const Dimension& given,
+                                            const Dimension& expected) {
+  if (given == expected) return std::nullopt;
+  std::string why =
+      name + " expects " + describeDimension(expected) + ", got " + describeDimension(given);
+  if (expected.dimensionless())
+    why += " (the deck gives " + name +
+           " without a unit: give a plain number in SI units, or write the deck's value with "
+           "its unit)";
+  return why;
 }
 
 const ParameterOverride* findOverride(const std::vector<ParameterOverride>& overrides,

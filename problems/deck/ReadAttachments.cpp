@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
 
@@ -111,8 +112,9 @@ void readSprings(Context& c) {
     }
     s.dof = c.dof(f.require("dof"));
     const Field k = f.require("k");
-    s.k = k.nonNegative(c.evaluator);
-    if (auto cf = f.get("c")) s.c = cf->nonNegative(c.evaluator);
+    s.k = k.nonNegative(c.evaluator, unitForDof(s.dof, dim::stiffness, dim::rotationalStiffness));
+    if (auto cf = f.get("c"))
+      s.c = cf->nonNegative(c.evaluator, unitForDof(s.dof, dim::damping, dim::rotationalDamping));
     if (s.k == 0 && s.c == 0) k.fail("a spring needs a positive stiffness k (or damping c)");
     c.deck.springs.push_back(std::move(s));
   }
@@ -154,8 +156,9 @@ void readContacts(Context& c) {
                s->name + "'; a contact there would never act: remove one of the two");
     const auto lower = f.get("min"), upper = f.get("max");
     if (!lower && !upper) f.fail("a contact needs a bound: min, max or both");
-    if (lower) k.lower = lower->number(c.evaluator);
-    if (upper) k.upper = upper->number(c.evaluator);
+    const FieldUnit bound = unitForDof(k.dof, dim::length, dim::angle);
+    if (lower) k.lower = lower->number(c.evaluator, bound);
+    if (upper) k.upper = upper->number(c.evaluator, bound);
     if (lower && upper && !(k.lower < k.upper))
       upper->fail("max must exceed min (" + std::to_string(k.lower) + ")");
     c.deck.contacts.push_back(std::move(k));

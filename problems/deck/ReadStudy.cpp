@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
 
@@ -199,7 +200,7 @@ void readChecks(Context& c) {
     }
     k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
     addCheckedSpeed(c, k);
-    k.reference = f.require("reference").number(c.evaluator);
+    k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
     const Field tol = f.require("tolerance");
     k.tolerance = tol.positive(c.evaluator);
     c.deck.checks.push_back(std::move(k));
@@ -220,6 +221,7 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
   if (std::find(names.begin(), names.end(), s.parameter) == names.end())
     pf.fail("no parameter '" + s.parameter + "'" + didYouMean(s.parameter, names) +
             " (parameters: " + joinNames(names) + ")");
+  const FieldUnit unit{c.evaluator.dimensionOf(s.parameter)};  // SI, as the parameter's value
   auto values = f->get("values");
   auto from = f->get("from"), to = f->get("to"), steps = f->get("steps");
   if (values && (from || to || steps))
@@ -229,10 +231,10 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
     if (items.empty()) values->fail("the list of values is empty");
     if (int(items.size()) > kMaxSweepValues)
       values->fail("at most " + std::to_string(kMaxSweepValues) + " values");
-    for (const Field& v : items) s.values.push_back(v.number(c.evaluator));
+    for (const Field& v : items) s.values.push_back(v.number(c.evaluator, unit));
   } else {
-    const double a = f->require("from").number(c.evaluator);
-    const double b = f->require("to").number(c.evaluator);
+    const double a = f->require("from").number(c.evaluator, unit);
+    const double b = f->require("to").number(c.evaluator, unit);
     const int n = f->require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
     // steps intervals, n + 1 values; the last is `to` exactly, not a rounded sum.
     for (int i = 0; i < n; ++i) s.values.push_back(a + (b - a) * i / n);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
 
@@ -49,17 +50,17 @@ TimeFunction piecesOf(const Context& c, const Field& f) {
   return timefn::piecewise(std::move(pieces));
 }
 
-TimeFunction harmonicsOf(const Context& c, const Field& f) {
+TimeFunction harmonicsOf(const Context& c, const Field& f, const FieldUnit& unit) {
   f.allowOnly({"omega", "mean", "terms"}, "a harmonic series");
   const double omega = f.require("omega").positive(c.evaluator);
-  const double mean = f.get("mean") ? f.get("mean")->number(c.evaluator) : 0;
+  const double mean = f.get("mean") ? f.get("mean")->number(c.evaluator, unit) : 0;
   std::vector<Harmonic> terms;
   const Field list = f.require("terms");
   for (const Field& t : list.items()) {
     t.allowOnly({"k", "amplitude", "phase"}, "a harmonic");
     Harmonic h;
     h.k = t.require("k").integer(c.evaluator, 0, 100000);
-    h.amplitude = t.require("amplitude").number(c.evaluator);
+    h.amplitude = t.require("amplitude").number(c.evaluator, unit);
     if (auto p = t.get("phase")) h.phase = p->number(c.evaluator);
     terms.push_back(h);
   }
@@ -67,24 +68,25 @@ TimeFunction harmonicsOf(const Context& c, const Field& f) {
   return timefn::harmonicSeries(omega, std::move(terms), mean);
 }
 
-TimeFunction tableOf(const Context& c, const Field& f) {
+TimeFunction tableOf(const Context& c, const Field& f, const FieldUnit& unit) {
   std::vector<double> times, values;
   for (const Field& row : f.items()) {
     const std::vector<Field> pair = row.isList() ? row.items() : std::vector<Field>{};
     if (pair.size() != 2) row.fail("expected a row [t, value], got " + row.describe());
-    const double t = pair[0].number(c.evaluator);
+    const double t = pair[0].number(c.evaluator, FieldUnit{dim::time});
     if (!times.empty() && !(t > times.back()))
       pair[0].fail("times must ascend strictly (the previous is " + formatNumber(times.back()) +
                    ")");
     times.push_back(t);
-    values.push_back(pair[1].number(c.evaluator));
+    values.push_back(pair[1].number(c.evaluator, unit));
   }
   if (times.empty()) f.fail("the table is empty");
   return timefn::tabulated(std::move(times), std::move(values));
 }
 
-/// value, pieces, harmonics or table, repeated with `period` when given.
-TimeFunction loadFunction(const Context& c, const Field& f) {
+/// value, pieces, harmonics or table, repeated with `period` when given; `unit` is the load's
+/// (a force or a moment).
+TimeFunction loadFunction(const Context& c, const Field& f, const FieldUnit& unit) {
   const std::vector<std::string> forms{"value", "pieces", "harmonics", "table"};
   std::vector<std::string> given;
   for (const std::string& k : forms)
@@ -96,8 +98,8 @@ TimeFunction loadFunction(const Context& c, const Field& f) {
   const Field g = *f.get(given[0]);
   TimeFunction fn = given[0] == "value"       ? expressionOfTime(c, g)
                     : given[0] == "pieces"    ? piecesOf(c, g)
-                    : given[0] == "harmonics" ? harmonicsOf(c, g)
-                                              : tableOf(c, g);
+                    : given[0] == "harmonics" ? harmonicsOf(c, g, unit)
+                                              : tableOf(c, g, unit);
   if (auto p = f.get("period")) fn = timefn::periodic(std::move(fn), p->positive(c.evaluator));
   return fn;
 }
@@ -109,7 +111,7 @@ void readLoads(const Context& c, const Field& block, DeckTransient& t) {
     l.place = f.place();
     l.point = c.point(f.require("at")).name;
     l.dof = c.dof(f.require("dof"));
-    l.value = loadFunction(c, f);
+    l.value = loadFunction(c, f, unitForDof(l.dof, dim::force, dim::moment));
     t.loads.push_back(std::move(l));
   }
 }
@@ -123,8 +125,10 @@ void readInitial(const Context& c, const Field& block, DeckTransient& t) {
     s.dof = c.dof(f.require("dof"));
     if (!f.has("u") && !f.has("v"))
       f.fail("an initial state needs u (displacement) or v (velocity)");
-    if (auto u = f.get("u")) s.u = u->number(c.evaluator);
-    if (auto v = f.get("v")) s.v = v->number(c.evaluator);
+    if (auto u = f.get("u"))
+      s.u = u->number(c.evaluator, unitForDof(s.dof, dim::length, dim::angle));
+    if (auto v = f.get("v"))
+      s.v = v->number(c.evaluator, unitForDof(s.dof, dim::velocity, dim::angularSpeed));
     for (const DeckInitialState& other : t.initial)
       if (other.point == s.point && other.dof == s.dof)
         f.fail(std::string(dofName(s.dof)) + " of point '" + s.point + "' is given twice");

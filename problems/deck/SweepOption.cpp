@@ -6,6 +6,7 @@
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Expression.hpp"
+#include "problems/deck/Overrides.hpp"
 #include "problems/deck/Suggest.hpp"
 
 namespace beamrotor {
@@ -39,12 +40,19 @@ DeckSweep parseSweepOption(const std::string& argument, const Deck& deck) {
 
   const std::string spec = argument.substr(eq + 1);
   const ExpressionEvaluator constants;
+  Dimension own;  // the parameter's dimension in the deck: values with a unit must have it
+  for (const auto& [name, d] : deck.dimensions)
+    if (name == sweep.parameter) own = d;
   auto value = [&](const std::string& text) {
+    Amount a;
     try {
-      return constants.evaluate(text);
+      a = constants.amount(text);
     } catch (const ExpressionError& e) {
       throw fail(e.what());
     }
+    if (!a.anyDimension && !a.dimension.dimensionless())
+      if (auto why = overrideMismatch(sweep.parameter, a.dimension, own)) throw fail(*why);
+    return a.si;
   };
   const std::vector<std::string> range = split(spec, ':');
   if (range.size() == 3) {

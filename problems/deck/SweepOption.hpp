@@ -1,7 +1,8 @@
 // A sweep given on the command line instead of in the deck:
 //   --sweep eta=0:0.4:8        from 0 to 0.4 in 8 steps (9 values)
 //   --sweep eta=0,0.1,0.25     the listed values
-// Values are numbers or expressions of constants.
+// Values are numbers or expressions of constants, with or without a unit (`L=4m:8m:4`); one
+// with a unit must have the parameter's dimension in the deck.
 #pragma once
 
 #include <string>

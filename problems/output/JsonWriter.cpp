@@ -250,6 +250,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
   doc["checks"] = checksJson(run.checks);
   doc["skipped_checks"] = run.skippedChecks;
   doc["parameters"] = parametersJson(run.parameters);
+  if (!run.warnings.empty()) doc["warnings"] = run.warnings;
   if (!run.reported.empty()) doc["reported"] = parametersJson(run.reported);
   if (run.adequate) doc["accuracy"] = adequateJson(*run.adequate);
   doc["seconds"] = run.seconds;

@@ -12,6 +12,7 @@
 #include "problems/deck/Field.hpp"
 #include "problems/run/AdequateModel.hpp"
 #include "problems/run/Measure.hpp"
+#include "problems/run/DisplacementWarning.hpp"
 #include "problems/run/ModelBuilder.hpp"
 #include "problems/run/OverRefinementWarning.hpp"
 #include "problems/run/RunRotor.hpp"
@@ -29,6 +30,7 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
     if (a.type == "static") {
       out.statics = solveStatic(model);
       if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
+      if (auto w = displacementWarning(model, *out.statics)) out.warnings.push_back(*w);
     } else if (a.transient) {
       out.transient = runTransient(deck, a, model);
     } else if (isRotorAnalysis(a.type)) {
@@ -72,9 +74,14 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
 }  // namespace
 
 RunResult runDeck(const Deck& deck) {
-  if (deck.accuracy) return runAdequateModel(deck);
+  if (deck.accuracy) {
+    RunResult adequate = runAdequateModel(deck);
+    adequate.warnings = deck.warnings;
+    return adequate;
+  }
   Stopwatch clock;
   RunResult run;
+  run.warnings = deck.warnings;
   run.deckPath = deck.path;
   run.deckName = deck.stem;
   run.parameters = deck.parameters;

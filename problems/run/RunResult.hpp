@@ -56,6 +56,7 @@ struct RunResult {
   std::vector<std::string> skippedChecks;  ///< names of checks whose `when:` is false here
   double seconds = 0;                      ///< wall time to build and solve
   std::optional<AdequateChoice> adequate;  ///< `accuracy:` decks: the model chosen
+  std::vector<std::string> warnings;       ///< the deck's own (implausible materials)
 };
 
 /// A deck solved over a list of values of one parameter.

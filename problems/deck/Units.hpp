@@ -1,0 +1,73 @@
+// Physical dimensions and the units a deck may write after a number (issue 16): `210 GPa`,
+// `6000 mm`, `12 kN/m`, `3000 rpm`. A dimension is a vector of exponents of four base
+// dimensions: length (m), mass (kg), time (s) and plane angle (rad). Angle is kept apart from
+// the dimensionless numbers so that an angular speed (rad/s, rpm) is never taken for a
+// frequency (Hz = 1/s) and a rotational stiffness (N m/rad) never for a moment.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace beamrotor {
+
+struct Dimension {
+  /// Exponents of length, mass, time and angle; whole numbers for every named dimension, but
+  /// an intermediate result such as sqrt(A) may have halves.
+  std::array<double, 4> exponents{0, 0, 0, 0};
+
+  static constexpr int kLength = 0, kMass = 1, kTime = 2, kAngle = 3;
+  static constexpr Dimension of(double length, double mass, double time, double angle) {
+    return Dimension{{length, mass, time, angle}};
+  }
+  bool dimensionless() const { return *this == Dimension{}; }
+  bool operator==(const Dimension&) const = default;
+};
+
+/// The dimensions a deck's fields have, by name.
+namespace dim {
+inline constexpr Dimension none = Dimension::of(0, 0, 0, 0);
+inline constexpr Dimension length = Dimension::of(1, 0, 0, 0);
+inline constexpr Dimension area = Dimension::of(2, 0, 0, 0);
+inline constexpr Dimension secondMoment = Dimension::of(4, 0, 0, 0);
+inline constexpr Dimension mass = Dimension::of(0, 1, 0, 0);
+inline constexpr Dimension time = Dimension::of(0, 0, 1, 0);
+inline constexpr Dimension angle = Dimension::of(0, 0, 0, 1);
+inline constexpr Dimension force = Dimension::of(1, 1, -2, 0);
+inline constexpr Dimension forcePerLength = Dimension::of(0, 1, -2, 0);
+inline constexpr Dimension moment = Dimension::of(2, 1, -2, 0);
+inline constexpr Dimension pressure = Dimension::of(-1, 1, -2, 0);
+inline constexpr Dimension density = Dimension::of(-3, 1, 0, 0);
+inline constexpr Dimension inertia = Dimension::of(2, 1, 0, 0);
+inline constexpr Dimension massLength = Dimension::of(1, 1, 0, 0);
+inline constexpr Dimension stiffness = Dimension::of(0, 1, -2, 0);
+inline constexpr Dimension rotationalStiffness = Dimension::of(2, 1, -2, -1);
+inline constexpr Dimension damping = Dimension::of(0, 1, -1, 0);
+inline constexpr Dimension rotationalDamping = Dimension::of(2, 1, -1, -1);
+inline constexpr Dimension frequency = Dimension::of(0, 0, -1, 0);
+inline constexpr Dimension angularSpeed = Dimension::of(0, 0, -1, 1);
+inline constexpr Dimension velocity = Dimension::of(1, 0, -1, 0);
+inline constexpr Dimension acceleration = Dimension::of(1, 0, -2, 0);
+inline constexpr Dimension lengthPerAngle = Dimension::of(1, 0, 0, -1);
+}  // namespace dim
+
+/// "a pressure (Pa)", "a length (m)", "a dimensionless number", or for an unnamed one its SI
+/// unit: "a quantity in m^3 kg".
+std::string describeDimension(const Dimension& d);
+/// The SI unit of d, e.g. "N/m", "kg m^2", "m^3 kg"; "" when dimensionless.
+std::string siUnitOf(const Dimension& d);
+
+/// A unit a deck may write: its name, its size in SI units and its dimension.
+struct Unit {
+  const char* name;
+  double si;
+  Dimension dimension;
+};
+
+/// Every unit, in the order FORMAT.md lists them.
+const std::vector<Unit>& units();
+/// The unit called `name`, or nullopt.
+std::optional<Unit> findUnit(const std::string& name);
+
+}  // namespace beamrotor

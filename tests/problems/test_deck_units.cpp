@@ -1,0 +1,394 @@
+// Units on deck numbers (issue 16): every dimension a field can have, a deck in mm, kN and MPa
+// against its SI twin, mismatches refused naming the field and both dimensions, expressions
+// and command-line overrides with units, and the plausibility warnings.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <muParser.h>
+#include <numbers>
+#include <string>
+#include <vector>
+#include <yaml-cpp/yaml.h>
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/Expression.hpp"
+#include "problems/deck/ExpressionFunctions.hpp"
+#include "problems/deck/MaterialPlausibility.hpp"
+#include "problems/deck/Overrides.hpp"
+#include "problems/deck/SceneFunctions.hpp"
+#include "problems/deck/SweepOption.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/Helpers.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+/// A cantilever with a tip load, a tip moment, a uniform load and a rotational spring at the
+/// tip, written in SI (bare numbers) or in mm, kN, MPa, t/m^3 with units. `E` and the first
+/// line's parameters are replaced by the caller.
+std::string unitsCantilever(const std::string& parameters, const std::string& material,
+                            const std::string& section, const std::string& spring,
+                            const std::string& moment) {
+  return "parameters: {" + parameters +
+         "}\n"
+         "materials:\n"
+         "  - {name: steel, " +
+         material +
+         "}\n"
+         "sections:\n"
+         "  - {name: bar, shape: rectangle, " +
+         section +
+         "}\n"
+         "segments:\n"
+         "  - {length: L, section: bar, elements: 8}\n"
+         "points:\n"
+         "  - {name: tip, at: L}\n"
+         "  - {name: mid, at: 0.5 * L}\n"
+         "supports:\n"
+         "  - {name: root, at: start, fix: clamped}\n"
+         "springs:\n"
+         "  - {name: s, at: tip, dof: rz, " +
+         spring +
+         "}\n"
+         "loads:\n"
+         "  - {type: point, at: tip, fy: -P, " +
+         moment +
+         "}\n"
+         "  - {type: distributed, qy: -q}\n"
+         "analyses:\n"
+         "  - {type: static, name: bending}\n"
+         "  - {type: modal, name: vibration, modes: 2}\n";
+}
+
+const std::string kSiTwin =
+    unitsCantilever("L: 2.5, P: 1500, q: 800", "E: 210e9, nu: 0.3, rho: 7850", "b: 0.04, h: 0.06",
+                    "k: 2e5", "mz: 200");
+const std::string kUnitTwin = unitsCantilever(
+    "L: 2500 mm, P: 1.5 kN, q: 0.8 kN/m", "E: 210000 MPa, nu: 0.3, rho: 7.85 t/m^3",
+    "b: 40 mm, h: 60mm", "k: 200 kN*m/rad", "mz: 0.2 kN m");
+
+const StaticResult& firstStatic(const RunResult& run) {
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.statics) return *a.statics;
+  throw std::logic_error("no static analysis");
+}
+
+const ModalResult& firstModal(const RunResult& run) {
+  for (const AnalysisOutcome& a : run.analyses)
+    if (a.modal) return *a.modal;
+  throw std::logic_error("no modal analysis");
+}
+
+/// The DeckError reading `text` raises (REQUIREs one).
+DeckError unitsDeckError(const std::string& text) {
+  try {
+    readDeck(parseDeckText(text, "units.yaml"), {});
+  } catch (const DeckError& e) {
+    return e;
+  }
+  FAIL("no DeckError for:\n" << text);
+  throw std::logic_error("not reached");
+}
+
+double siOf(const std::string& text) {
+  return ExpressionEvaluator().evaluate(text);
+}
+
+Dimension dimensionOfText(const std::string& text) {
+  return ExpressionEvaluator().amount(text).dimension;
+}
+
+std::string unitsFailure(const ExpressionEvaluator& ev, const std::string& text) {
+  try {
+    ev.amount(text);
+  } catch (const ExpressionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_SUITE("deck units") {
+  TEST_CASE("each unit is its SI size and dimension") {
+    // References: the definitions of the units (SI brochure, 9th ed., tables 2-4 and 8;
+    // 1 in = 25.4 mm, 1 ft = 0.3048 m exactly). Conversions are one multiplication (and a
+    // power), so they hold to one rounding: 1e-15 relative.
+    const double pi = std::numbers::pi;
+    struct Case {
+      const char* text;
+      double si;
+      Dimension dimension;
+    };
+    const std::vector<Case> cases{
+        {"6000 mm", 6, dim::length},
+        {"6000mm", 6, dim::length},
+        {"2 km + 30 cm + 4 um + 1 in + 1 ft", 2000.3 + 4e-6 + 0.0254 + 0.3048, dim::length},
+        {"300 cm^2", 0.03, dim::area},
+        {"8356 cm^4", 8356e-8, dim::secondMoment},
+        {"12 t + 500 g + 2 kg", 12002.5, dim::mass},
+        {"1.5 s + 20 ms", 1.52, dim::time},
+        {"3 MN + 2 kN + 7 N", 3002007, dim::force},
+        {"12 kN/m", 12000, dim::forcePerLength},
+        {"5 kN m", 5000, dim::moment},
+        {"210 GPa + 3 MPa + 4 kPa + 5 Pa + 2 bar", 210003204005, dim::pressure},
+        {"7.85 t/m^3", 7850, dim::density},
+        {"0.3 kg m^2", 0.3, dim::inertia},
+        {"40 g*mm", 4e-5, dim::massLength},
+        {"2e5 N*m/rad", 2e5, dim::rotationalStiffness},
+        {"500 N*s/m", 500, dim::damping},
+        {"3 N m s/rad", 3, dim::rotationalDamping},
+        {"3000 rpm", 100 * pi, dim::angularSpeed},
+        {"2 rev/s", 4 * pi, dim::angularSpeed},
+        {"50 Hz + 1 kHz", 1050, dim::frequency},
+        {"90 deg", pi / 2, dim::angle},
+        {"1 rad", 1, dim::angle},
+        {"9.81 m/s^2", 9.81, dim::acceleration},
+        {"3 m/s", 3, dim::velocity},
+        {"0.3", 0.3, dim::none},
+        {"3 mm / m", 0.003, dim::none},
+    };
+    for (const Case& c : cases) {
+      CAPTURE(c.text);
+      CHECK(siOf(c.text) == doctest::Approx(c.si).epsilon(1e-15));
+      CHECK(dimensionOfText(c.text) == c.dimension);
+    }
+  }
+
+  TEST_CASE("dimensions are carried through expressions of parameters") {
+    ExpressionEvaluator ev;
+    ev.define("L", ev.amount("6 m"));
+    ev.define("q", ev.amount("12 kN/m"));
+    ev.define("n", 4.0);  // a plain number
+    // q L^2 / 8 = 12000 * 36 / 8 = 54000 N m, the simply supported span's largest moment:
+    // exact in binary (integers), so compared exactly.
+    const Amount M = ev.amount("q*L^2/8");
+    CHECK(M.si == 54000);
+    CHECK(M.dimension == dim::moment);
+    CHECK(ev.amount("0.5 * L").si == 3);
+    CHECK(ev.amount("n * 1.5 m + L").dimension == dim::length);
+    CHECK(ev.amount("sqrt(L^2 + (8 m)^2)").si == 10);  // 6-8-10
+    CHECK(ev.amount("L > 5 m ? 1 : 0").si == 1);
+    CHECK(ev.dimensionOf("q") == dim::forcePerLength);
+    // An angle into a function, and a plain number of radians: both readings are tried.
+    CHECK(ev.evaluate("sin(30 deg)") == doctest::Approx(0.5).epsilon(1e-15));
+    CHECK(ev.evaluate("sin(0.5)") == std::sin(0.5));
+    CHECK(ev.amount("cos(L / (2 m))").dimension == dim::none);
+    // A zero fits any field: 0 m and 0 kg are the same number.
+    CHECK(ev.amount("0 kN").anyDimension);
+  }
+
+  TEST_CASE("adding different dimensions, a misspelt unit and a hidden unit are refused") {
+    ExpressionEvaluator ev;
+    ev.define("L", ev.amount("6 m"));
+    for (const char* mixed :
+         {"1 m + 1 kg", "L - 2 s", "L + 1", "L > 3 kg", "sin(L)", "exp(2 N)", "2 m - 1 m^2"}) {
+      CAPTURE(mixed);
+      CHECK(unitsFailure(ev, mixed).find("mixes dimensions") != std::string::npos);
+    }
+    CHECK(unitsFailure(ev, "6000 mmm").find("unknown unit 'mmm'; did you mean 'mm'?") !=
+          std::string::npos);
+    ExpressionEvaluator shadowed;
+    shadowed.define("m", 2.0);  // a deck's parameter named like the metre
+    CHECK(unitsFailure(shadowed, "6 m").find("not the unit") != std::string::npos);
+    CHECK(shadowed.evaluate("6*m") == 12);
+  }
+
+  TEST_CASE("a deck in mm, kN and MPa gives the results of its SI twin") {
+    const Study si = test::solveDeckText(kSiTwin, "si.yaml");
+    const Study units = test::solveDeckText(kUnitTwin, "units.yaml");
+    REQUIRE(si.run);
+    REQUIRE(units.run);
+    // The twins' inputs agree to one rounding of each conversion (2500 * 0.001 and 0.8 * 1000
+    // are within an ulp of 2.5 and 800); the solve amplifies that by at most the measured
+    // round-off bound (~1e-13 here), so 1e-12 relative is round-off, not tolerance.
+    const StaticResult& a = firstStatic(*si.run);
+    const StaticResult& b = firstStatic(*units.run);
+    REQUIRE(a.displacement.rows() == b.displacement.rows());
+    const double scale = a.displacement.cwiseAbs().maxCoeff();
+    CHECK(scale > 1e-3);  // a real deflection, not zeros
+    CHECK((a.displacement - b.displacement).cwiseAbs().maxCoeff() <= 1e-12 * scale);
+    for (Dof d : {Dof::uy, Dof::rz}) {
+      const double r = test::staticReaction(*si.run, "root", d);
+      CHECK(test::staticReaction(*units.run, "root", d) == doctest::Approx(r).epsilon(1e-12));
+    }
+    // Closed-form cross-check of the SI run's root force: P + q L = 1500 + 800 * 2.5.
+    CHECK(test::staticReaction(*si.run, "root", Dof::uy) ==
+          doctest::Approx(3500).epsilon(1e-12));
+    const auto& fa = firstModal(*si.run).modes;
+    const auto& fb = firstModal(*units.run).modes;
+    REQUIRE(fa.size() == fb.size());
+    for (std::size_t i = 0; i < fa.size(); ++i)
+      CHECK(fb[i].frequencyHz == doctest::Approx(fa[i].frequencyHz).epsilon(1e-12));
+    CHECK(test::deckValue(units.deck, "L") == doctest::Approx(2.5).epsilon(1e-15));
+    CHECK(si.run->warnings.empty());
+    for (const AnalysisOutcome& o : si.run->analyses) CHECK(o.warnings.empty());
+  }
+
+  TEST_CASE("a value of the wrong dimension names the field and both dimensions") {
+    struct Case {
+      std::string from, to;  // a replacement in kUnitTwin
+      std::string field, message;
+      int line;
+    };
+    const std::vector<Case> cases{
+        {"E: 210000 MPa", "E: 210 mm", "materials[0].E",
+         "E expects a pressure or stress (Pa), got a length (m)", 3},
+        {"rho: 7.85 t/m^3", "rho: 7.85 t", "materials[0].rho",
+         "rho expects a density (kg/m^3), got a mass (kg)", 3},
+        {"h: 60mm", "h: 60 mm^2", "sections[0].h", "h expects a length (m), got an area (m^2)", 5},
+        {"k: 200 kN*m/rad", "k: 200 kN*m", "springs[0].k",
+         "k expects a rotational stiffness (N m/rad), got a moment (N m)", 14},
+        {"mz: 0.2 kN m", "mz: 0.2 kN", "loads[0].mz", "mz expects a moment (N m), got a force (N)",
+         16},
+        {"qy: -q", "qy: -P", "loads[1].qy",
+         "qy expects a force per length or a stiffness (N/m), got a force (N)", 17},
+        {"at: L}", "at: 3 rad}", "points[0].at", "at expects a length (m), got an angle (rad)", 9},
+    };
+    for (const Case& c : cases) {
+      CAPTURE(c.to);
+      std::string text = kUnitTwin;
+      const std::size_t at = text.find(c.from);
+      REQUIRE(at != std::string::npos);
+      text.replace(at, c.from.size(), c.to);
+      const DeckError e = unitsDeckError(text);
+      CHECK(e.place().field == c.field);
+      CHECK(e.message() == c.message);
+      CHECK(e.place().line == c.line);
+      CHECK(e.place().column > 1);
+    }
+    // A check's reference has the dimension of its quantity.
+    const DeckError rpm = unitsDeckError(
+        kUnitTwin +
+        "checks:\n  - {name: f, quantity: frequency 1, reference: 3000 rpm, tolerance: 1}\n");
+    CHECK(rpm.message() ==
+          "reference expects a frequency (1/s = Hz), got an angular speed (rad/s)");
+  }
+
+  TEST_CASE("the command line refuses a wrong dimension with exit 2 at file:line:col") {
+    const auto dir = test::scratchDir("units_cli");
+    std::string text = kUnitTwin;
+    text.replace(text.find("E: 210000 MPa"), 13, "E: 210 mm");
+    const auto deck = dir / "wrong.yaml";
+    std::ofstream(deck) << text;
+    const test::ProcessResult r = test::runBeamrotor({"check", deck.string()});
+    CHECK(r.exitCode == 2);
+    CHECK(r.err.find("wrong.yaml:3:") != std::string::npos);
+    CHECK(r.err.find(": materials[0].E: E expects a pressure or stress (Pa), got a length (m)") !=
+          std::string::npos);
+    std::filesystem::remove_all(dir);
+  }
+
+  TEST_CASE("--set and --sweep take units and must match the parameter's dimension") {
+    // --set L=3000mm on the deck in units equals --set L=3 on the SI twin (to round-off, as
+    // above).
+    StudyRequest withUnit, bare;
+    withUnit.deckPath = "units.yaml";
+    withUnit.sets = {"L=3000mm"};
+    bare.deckPath = "si.yaml";
+    bare.sets = {"L=3"};
+    const Study a = solveStudyText(kUnitTwin, withUnit);
+    const Study b = solveStudyText(kSiTwin, bare);
+    CHECK(test::deckValue(a.deck, "L") == doctest::Approx(3).epsilon(1e-15));
+    CHECK(test::staticReaction(*a.run, "root", Dof::rz) ==
+          doctest::Approx(test::staticReaction(*b.run, "root", Dof::rz)).epsilon(1e-12));
+    // A bare override takes the parameter's own dimension (SI).
+    StudyRequest plain = withUnit;
+    plain.sets = {"L=3"};
+    CHECK(test::deckValue(solveStudyText(kUnitTwin, plain).deck, "L") == 3);
+    // Wrong dimension; and a unit for a parameter the deck gives without one.
+    StudyRequest wrong = withUnit;
+    wrong.sets = {"L=3 kg"};
+    CHECK_THROWS_WITH_AS(solveStudyText(kUnitTwin, wrong),
+                         doctest::Contains("L expects a length (m), got a mass (kg)"), DeckError);
+    StudyRequest unitForBare = bare;
+    unitForBare.sets = {"L=3000 mm"};
+    CHECK_THROWS_WITH_AS(solveStudyText(kSiTwin, unitForBare),
+                         doctest::Contains("the deck gives L without a unit"), DeckError);
+    // --sweep: values with units, converted to SI.
+    const Deck deck = readDeck(parseDeckText(kUnitTwin, "units.yaml"), {});
+    const DeckSweep s = parseSweepOption("L=2m:3000mm:2", deck);
+    REQUIRE(s.values.size() == 3);
+    CHECK(s.values[0] == 2);
+    CHECK(s.values[1] == doctest::Approx(2.5).epsilon(1e-15));
+    CHECK(s.values[2] == doctest::Approx(3).epsilon(1e-15));
+    CHECK_THROWS_WITH_AS(parseSweepOption("L=2 s,3 s", deck),
+                         doctest::Contains("L expects a length (m), got a time (s)"), DeckError);
+  }
+
+  TEST_CASE("E: 210 (meant as GPa) is warned about, in the summary and results.json") {
+    std::string text = kSiTwin;
+    text.replace(text.find("E: 210e9"), 8, "E: 210");
+    const Study s = test::solveDeckText(text, "gpa.yaml");
+    REQUIRE(s.run);
+    REQUIRE(s.run->warnings.size() == 1);
+    const std::string& w = s.run->warnings[0];
+    CHECK(w.find("gpa.yaml:3:") == 0);
+    CHECK(w.find("materials[0].E: 210 Pa is below every engineering material (1e+06 Pa, soft "
+                 "elastomers)") != std::string::npos);
+    CHECK(w.find("`E: 210 GPa`") != std::string::npos);
+    // The deflection: P L^3/(3 E I) alone is 1500 * 2.5^3 / (3 * 210 * 7.2e-7) ~ 5e10 m, far
+    // beyond the 2.5 m cantilever.
+    const auto& warnings = s.run->analyses[0].warnings;
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0].find("exceeds the structure's own size (2.5 m)") != std::string::npos);
+
+    // The plausibility bounds themselves (MaterialPlausibility.hpp): rho 7.85 (t/m^3 meant).
+    std::string light = kSiTwin;
+    light.replace(light.find("rho: 7850"), 9, "rho: 7.85");
+    const Deck d = readDeck(parseDeckText(light, "light.yaml"), {});
+    REQUIRE(d.warnings.size() == 1);
+    CHECK(d.warnings[0].find("materials[0].rho: 7.85 kg/m^3 is below") != std::string::npos);
+    CHECK(d.warnings[0].find("7.85 t/m^3") != std::string::npos);
+
+    // Through the command line: a warning line and a warnings entry.
+    const auto dir = test::scratchDir("units_warning");
+    std::ofstream(dir / "gpa.yaml") << text;
+    const test::ProcessResult r =
+        test::runBeamrotor({"solve", (dir / "gpa.yaml").string(), "--out", (dir / "out").string()});
+    CHECK(r.exitCode == 0);
+    CHECK(r.out.find("warning: " + (dir / "gpa.yaml").string() + ":3:") != std::string::npos);
+    const nlohmann::json json =
+        nlohmann::json::parse(test::fileContents(dir / "out" / "results.json"));
+    REQUIRE(json.contains("warnings"));
+    CHECK(json["warnings"][0].get<std::string>().find("materials[0].E") != std::string::npos);
+    CHECK(json["analyses"][0]["warnings"][0].get<std::string>().find("exceeds") !=
+          std::string::npos);
+    std::filesystem::remove_all(dir);
+  }
+
+  TEST_CASE("every shipped deck reads its parameters as plain muparser does") {
+    // The bare-number rule: a deck without units reads exactly as before units existed. The
+    // reference is a plain muparser (the deck functions, no units), defining the parameters
+    // and derived values one by one; values must agree exactly.
+    for (const auto& path : test::shippedDecks()) {
+      CAPTURE(path);
+      const Deck deck = readDeck(loadDeckFile(path), {});
+      const YAML::Node root = YAML::LoadFile(path.string());
+      mu::Parser plain;
+      plain.DefineConst("pi", std::numbers::pi);
+      defineSceneFunctions(plain);
+      defineDeckFunctions(plain);
+      std::vector<std::pair<std::string, double>> expected;
+      for (const char* block : {"parameters", "derived"}) {
+        if (!root[block] || !root[block].IsMap()) continue;
+        for (const auto& entry : root[block]) {
+          plain.SetExpr(entry.second.Scalar());
+          const double v = plain.Eval();
+          plain.DefineConst(entry.first.Scalar(), v);
+          expected.emplace_back(entry.first.Scalar(), v);
+        }
+      }
+      std::vector<std::pair<std::string, double>> got = deck.parameters;
+      got.insert(got.end(), deck.derived.begin(), deck.derived.end());
+      CHECK(got == expected);
+      CHECK(deck.dimensions.empty());
+      CHECK(deck.warnings.empty());
+    }
+  }
+}
