@@ -1,13 +1,14 @@
 # Thin wrapper: install missing Debian packages, build with CMake, run.
 PACKAGES := cmake g++ make libeigen3-dev libsuitesparse-dev libarpack2-dev libvtk9-dev \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
-            gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest
+            gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest \
+            dpkg-dev libpng-dev
 BUILD    := build
 JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps build run test bench clean
+.PHONY: deps build run test bench clean package
 
 # Installs what is missing and never removes anything: when Debian can install a package only by
 # removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), it
@@ -38,6 +39,10 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The Debian package (CPack, dependencies from dpkg-shlibdeps): $(BUILD)/beamrotor_<version>_<arch>.deb.
+package: build
+	cd $(BUILD) && cpack
 
 # Speed figures (never part of `make test`), side by side with SciPy on the same machine:
 # planar statics at 10^3 .. 10^6 elements and 10 modes at 10^4, medians of 3 runs; grid3d at

@@ -1,11 +1,16 @@
 #include "problems/cli/App.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <new>
+#include <string>
+#include <vector>
 
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/ReportCommand.hpp"
+#include "problems/deck/Formulations.hpp"
+#include "problems/deck/Suggest.hpp"
 #include "problems/run/DeckRunner.hpp"
 
 namespace beamrotor::cli {
@@ -31,11 +36,26 @@ void addDeckOptions(CLI::App& sub, StudyRequest& request) {
                  "NAME=FROM:TO:STEPS (STEPS intervals) or NAME=V1,V2,...")
       ->type_name("SPEC");
   sub.add_option("--formulation", request.formulation,
-                 "beam theory for every segment, replacing the deck's: timoshenko or "
-                 "euler-bernoulli")
+                 "beam theory for every segment, replacing the deck's: " +
+                     joinNames(formulationNames()))
       ->type_name("THEORY");
   sub.add_flag("--no-sweep", request.noSweep,
                "solve the parameters' own values once even if the deck has a sweep");
+}
+
+/// A first argument that is neither an option nor a subcommand (`beamrotor slove deck.yaml`):
+/// one line naming it, the closest subcommand and the list; empty when the argument is fine.
+std::string unknownCommand(const CLI::App& app, int argc, const char* const* argv) {
+  if (argc < 2 || argv[1][0] == '-' || argv[1][0] == '\0') return {};
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
+  const std::string word = argv[1];
+  if (std::find(names.begin(), names.end(), word) != names.end()) return {};
+  const std::string best = closestMatch(word, names, 2);  // five commands, far apart
+  return "beamrotor: '" + word + "' is not a command" +
+         (best.empty() ? std::string{} : "; did you mean " + best + "?") +
+         " (commands: " + joinNames(names) + "; beamrotor --help)";
 }
 
 }  // namespace
@@ -134,6 +154,10 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                    "output directory (default: out/<deck name>_converge/)")
       ->type_name("DIR");
 
+  if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
+    err << unknown << "\n";
+    return kInputError;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -8,15 +8,13 @@
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
+#include "problems/output/Reactions.hpp"
 
 namespace beamrotor::cli {
 
 namespace {
 
-/// Unit of a reaction component and of a displacement component.
-const char* forceUnit(Dof d) {
-  return isRotation(d) ? "N m" : "N";
-}
+/// Unit of a displacement component.
 const char* motionUnit(Dof d) {
   return isRotation(d) ? "rad" : "m";
 }
@@ -29,24 +27,6 @@ SystemSize sizeOf(const RunResult& run) {
     if (a.rotor && rotorSize(*a.rotor)) return *rotorSize(*a.rotor);
   }
   return {};
-}
-
-/// Supports in deck order with their reaction components.
-std::vector<std::pair<std::string, std::vector<ReactionComponent>>> bySupport(
-    const StaticResult& r) {
-  std::vector<std::pair<std::string, std::vector<ReactionComponent>>> out;
-  for (const ReactionComponent& c : r.reactions) {
-    auto it =
-        std::find_if(out.begin(), out.end(), [&](const auto& s) { return s.first == c.support; });
-    if (it == out.end()) it = out.insert(out.end(), {c.support, {}});
-    it->second.push_back(c);
-  }
-  // Components in dof order (ux before rz), whatever order the deck listed them in.
-  for (auto& [support, components] : out)
-    std::stable_sort(components.begin(), components.end(), [](const auto& a, const auto& b) {
-      return dofIndex(a.dof) < dofIndex(b.dof);
-    });
-  return out;
 }
 
 /// The points worth reporting: the deck's own, or start and end when it names none.
@@ -67,11 +47,13 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                 r.roundOff);
   out << "static analysis '" << a.name << "' (" << r.solver << ", " << conditioning << ")\n";
   out << "  reactions (force on the structure; N, N m):\n";
-  for (const auto& [support, components] : bySupport(r)) {
-    out << "    " << padded(support, 12);
-    for (const ReactionComponent& c : components)
-      out << padded(
-          std::string(dofName(c.dof)) + " " + formatValue(c.value) + " " + forceUnit(c.dof), 22);
+  // Named as in results.json and sweep.csv: fx ... mz.
+  for (const SupportReactions& support : reactionsBySupport(r)) {
+    out << "    " << padded(support.support, 12);
+    for (const auto& [dof, value] : support.components)
+      out << padded(std::string(reactionName(dof)) + " " + formatValue(value) + " " +
+                        std::string(reactionUnit(dof)),
+                    22);
     out << "\n";
   }
   out << "  displacements at points (m, rad):\n";
@@ -193,8 +175,9 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
     return nullptr;
   };
   if (const StaticResult* s = staticOf(first))
-    for (const ReactionComponent& c : s->reactions)
-      headers.push_back(c.support + " " + std::string(dofName(c.dof)));
+    for (const SupportReactions& support : reactionsBySupport(*s))
+      for (const auto& [dof, value] : support.components)
+        headers.push_back(support.support + " " + std::string(reactionName(dof)));
   int frequencies = 0;
   if (const ModalResult* m = modalOf(first)) {
     frequencies = std::min<int>(kFrequencies, int(m->modes.size()));
@@ -209,7 +192,9 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
     out << "  " << padded(formatValue(sweep.values[k]), kColumn);
     for (const auto& [name, value] : run.reported) out << padded(formatValue(value), kColumn);
     if (const StaticResult* s = staticOf(run))
-      for (const ReactionComponent& c : s->reactions) out << padded(formatValue(c.value), kColumn);
+      for (const SupportReactions& support : reactionsBySupport(*s))
+        for (const auto& [dof, value] : support.components)
+          out << padded(formatValue(value), kColumn);
     if (const ModalResult* m = modalOf(run))
       for (int i = 0; i < frequencies && i < int(m->modes.size()); ++i)
         out << padded(formatValue(m->modes[i].frequencyHz), kColumn);

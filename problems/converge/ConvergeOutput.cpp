@@ -22,6 +22,12 @@ Json optionalNumber(const std::optional<double>& v) {
 /// Relative error (log) against column `x` of every method's table (log), points joined.
 ChartScript errorChart(const ConvergeStudy& study, const std::string& name, const std::string& x,
                        const std::string& xLabel) {
+  // Both axes in whole decades of the drawn (positive) values.
+  PositiveRange xRange, errors;
+  for (const ConvergeSeries& s : study.series) {
+    for (const double v : convergenceTable(s).numbers(x)) xRange.include(v);
+    for (const ConvergeLevel& l : s.levels) errors.include(l.error);
+  }
   std::ostringstream body;
   const std::string reference = study.check.empty() ? "Richardson-extrapolated reference (estimate)"
                                                     : "closed form of check '" + study.check + "'";
@@ -29,10 +35,10 @@ ChartScript errorChart(const ConvergeStudy& study, const std::string& name, cons
        << "  set title "
        << captionText(study.deckName + ": " + study.quantity + "\nagainst the " + reference)
        << " font ',13'\n"
-       << "  set logscale xy\n  set grid mxtics mytics\n  set key outside below\n"
-       << "  set format y '10^{%L}'\n"
+       << logAxis("x", xRange) << logAxis("y", errors)
+       << "  set grid mxtics mytics\n  set key outside below\n"
        << "  set xlabel " << gnuplotText(xLabel) << "\n"
-       << "  set ylabel 'relative error'\n  plot ";
+       << "  set ylabel 'relative error [-]'\n  plot ";
   const char* separator = "";
   for (std::size_t i = 0; i < study.series.size(); ++i) {
     const ConvergeSeries& s = study.series[i];

@@ -149,12 +149,8 @@ void readDerived(Context& c) {
 }
 
 BeamTheory readFormulation(const Field& f) {
-  std::vector<std::string> names;
-  for (const auto& [name, theory] : kFormulations) names.push_back(name);
-  const std::string s = f.choice(names);
-  for (const auto& [name, theory] : kFormulations)
-    if (s == name) return theory;
-  return BeamTheory::eulerBernoulli;  // not reached: choice() accepts only these names
+  // choice() accepts only the table's names, so the lookup always finds one.
+  return formulationNamed(f.choice(formulationNames())).value_or(BeamTheory::eulerBernoulli);
 }
 
 /// 3. Model options: dimension and the default beam formulation.

@@ -34,10 +34,10 @@ std::string shortNumber(double v) {
 std::string reason(const mu::Parser::exception_type& e, std::vector<std::string> known) {
   // An unknown name is the commonest mistake: say so, and suggest a defined one.
   if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && ExpressionEvaluator::isIdentifier(e.GetToken())) {
-    const std::string defined = joinNames(known);
+    const std::string defined = known.empty() ? "" : " (defined so far: " + joinNames(known) + ")";
     known.push_back("pi");
     return "unknown name '" + e.GetToken() + "'" + didYouMean(e.GetToken(), known) +
-           " (defined so far: " + defined + ")";
+           defined;
   }
   return e.GetMsg();
 }

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "elements/Beam.hpp"
 
@@ -16,6 +18,20 @@ inline constexpr std::array<std::pair<const char*, BeamTheory>, 4> kFormulations
     {"timoshenko-linear-full", BeamTheory::timoshenkoLinearFullIntegration},
     {"timoshenko-linear-reduced", BeamTheory::timoshenkoLinearReducedIntegration},
 }};
+
+/// Every name, in the table's order (for messages and suggestions).
+inline std::vector<std::string> formulationNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, theory] : kFormulations) names.emplace_back(name);
+  return names;
+}
+
+/// The beam theory of a deck name; nullopt for a name not in the table.
+inline std::optional<BeamTheory> formulationNamed(const std::string& name) {
+  for (const auto& [n, theory] : kFormulations)
+    if (name == n) return theory;
+  return std::nullopt;
+}
 
 /// The deck name of a beam theory.
 inline std::string formulationName(BeamTheory theory) {

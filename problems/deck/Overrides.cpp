@@ -22,7 +22,11 @@ ParameterOverride parseOverride(const std::string& argument, const std::string& 
     o.value = a.si;
     if (!a.anyDimension && !a.dimension.dimensionless()) o.dimension = a.dimension;
   } catch (const ExpressionError& e) {
-    throw DeckError(deckPath, place, e.what());
+    // The deck's parameters are not known yet when the command line is read.
+    throw DeckError(deckPath, place,
+                    "cannot read the value '" + argument.substr(eq + 1) + "': " + e.what() +
+                        "; a --set value is a number or an expression of numbers, pi and "
+                        "functions, e.g. 0.4/2 or 2*pi, not of other parameters");
   }
   return o;
 }

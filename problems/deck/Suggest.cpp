@@ -31,11 +31,12 @@ std::string lower(std::string_view s) {
 
 }  // namespace
 
-std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates) {
+std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates,
+                         int leastAllowed) {
   // Typos in very long words are not worth the time (and the fuzzer feeds long ones).
   constexpr std::size_t kLongest = 64;
   if (word.empty() || word.size() > kLongest) return {};
-  const int allowed = std::max(1, int(word.size()) / 3);
+  const int allowed = std::max(leastAllowed, int(word.size()) / 3);
   std::string best;
   int bestDistance = allowed + 1;
   for (const std::string& c : candidates) {

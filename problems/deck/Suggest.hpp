@@ -11,8 +11,11 @@ namespace beamrotor {
 int editDistance(std::string_view a, std::string_view b);
 
 /// The candidate closest to `word` when it is close enough to be a plausible typo (distance at
-/// most a third of the word's length, at least 1, or equal ignoring case); empty otherwise.
-std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates);
+/// most a third of the word's length, at least 1, or equal ignoring case; at least
+/// `leastAllowed` when given, e.g. 2 for a short list of commands, where a swapped pair of
+/// letters, "slove", costs 2 and still means one thing); empty otherwise.
+std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates,
+                         int leastAllowed = 1);
 
 /// "; did you mean 'length'?" or empty, ready to append to a message.
 std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates);

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace beamrotor {
 
@@ -18,9 +19,33 @@ std::string number(double x);
 /// A caption of one or more lines (separated by '\n') as a gnuplot string expression.
 std::string captionText(const std::string& caption);
 
+/// Commands that make `axis` ("x", "y", "y2") logarithmic over data from low to high (both
+/// > 0): the range widened to whole decades, so that every major tick is a power of ten and
+/// reads 10^n (never a long decimal), with a tick every one, two, ... decades so that at most
+/// about eight are labelled, and minor ticks between. Data that is not positive and finite
+/// gets the plain log scale with labels in %g.
+std::string logAxis(const std::string& axis, double low, double high);
+
+/// The smallest and largest positive finite values given to include() (both 0 before any):
+/// what a log axis can draw.
+struct PositiveRange {
+  double low = 0, high = 0;
+  void include(double v);
+};
+/// logAxis over a PositiveRange.
+std::string logAxis(const std::string& axis, const PositiveRange& range);
+
+/// Pixels of canvas a key outside the plot needs for these titles (sample line, gap and the
+/// longest title at the 12 pt default font), so that no entry is cut at the image's edge.
+int keyWidth(const std::vector<std::string>& titles);
+
+/// Estimated width in pixels of text at the default 12 pt font (an upper bound for gnuplot's
+/// sans-serif: digits and most letters are narrower).
+int textWidth(const std::string& text);
+
 /// `set multiplot` for a grid of panels under a caption. gnuplot takes the margins as
 /// fractions of the canvas; they are set here in pixels so that labels fit whatever the
-/// chart's size.
+/// chart's size; y tick labels are compact (%g) to fit the left margin.
 std::string panelLayout(int rows, int columns, const std::string& caption, int width, int height,
                         int rightMargin = 30);
 

@@ -23,6 +23,7 @@ struct Curve {
   int xColumn = 0;    ///< 1-based gnuplot column of x
   int column = 0;     ///< 1-based gnuplot column of the value
   std::string title;  ///< key entry (enhanced text: u_y shows a subscript)
+  std::string plainTitle = {};  ///< the entry as plain text, for sizing the key
 };
 
 bool anyNonZero(const CsvTable& table, const std::string& column) {
@@ -42,7 +43,8 @@ std::string markerCommands(const std::vector<ChartMarker>& markers) {
 }
 
 /// `plot` of the curves, each column multiplied by scale; filled to the axis when `filled`
-/// (the look of a moment or stress diagram).
+/// (the look of a moment or stress diagram; only for a single curve, since stacked translucent
+/// fills of several curves mix into a muddy grey). A single curve has no key entry.
 std::string plotCommand(const std::vector<Curve>& curves, double scale, bool filled) {
   std::ostringstream s;
   s << "  plot ";
@@ -51,10 +53,12 @@ std::string plotCommand(const std::vector<Curve>& curves, double scale, bool fil
                              std::to_string(curves[i].xColumn) + ":($" +
                              std::to_string(curves[i].column) + "*" + number(scale) + ")";
     if (i) s << ", \\\n       ";
-    if (filled)
+    if (filled && curves.size() == 1)
       s << data << " with filledcurves y=0 fillstyle transparent solid 0.2 noborder " << colour(i)
         << " notitle, \\\n       ";
-    s << data << " with lines linewidth 2 " << colour(i) << " title " << curves[i].title;
+    // One curve needs no key: the axis label names it.
+    s << data << " with lines linewidth 2 " << colour(i)
+      << (curves.size() == 1 ? std::string(" notitle") : " title " + curves[i].title);
   }
   s << "\n";
   return s.str();
@@ -121,23 +125,32 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
     for (const FieldSeries& f : series)
       for (const Drawn* q : {&panel.main, other ? &*panel.other : nullptr}) {
         if (!q) continue;
-        const std::string title = series.size() == 1 ? q->title
-                                  : other            ? gnuplotText(f.title + ", " + q->column)
-                                                     : gnuplotText(f.title);
-        curves.push_back({f.csvFile, f.fields->column("x"), f.fields->column(q->column), title});
+        const std::string plain = series.size() == 1 ? q->column
+                                  : other            ? f.title + ", " + q->column
+                                                     : f.title;
+        const std::string title = series.size() == 1 ? q->title : gnuplotText(plain);
+        curves.push_back(
+            {f.csvFile, f.fields->column("x"), f.fields->column(q->column), title, plain});
       }
     return curves;
   };
 
-  // Several series: their key outside the panels, in a wider right margin, never over a line.
-  const bool overlaid = series.size() > 1;
-  const int width = overlaid ? 1000 : 900, height = 1350;
+  // Panels of several curves have their key outside, in a right margin wide enough for the
+  // longest title, never over a line; a point's name centred over the right end needs half
+  // its width there too.
+  std::vector<std::string> keyTitles;
+  for (const Panel& panel : panels)
+    if (const auto curves = curvesOf(panel); curves.size() > 1)
+      for (const Curve& c : curves) keyTitles.push_back(c.plainTitle);
+  int rightMargin = keyTitles.empty() ? 30 : keyWidth(keyTitles);
+  for (const ChartMarker& m : markers) rightMargin = std::max(rightMargin, textWidth(m.name) / 2 + 10);
+  const int width = 800 + rightMargin, height = 1350;
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << panelLayout(int(panels.size()), 1, caption, width, height, overlaid ? 150 : 30)
+       << panelLayout(int(panels.size()), 1, caption, width, height, rightMargin)
        << "  set grid\n"
        << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
-       << (overlaid ? "  set key outside right top\n" : "  set key top right opaque\n")
+       << "  set key outside right top\n"
        << "  set xrange [*:*] noextend\n"
        << markerCommands(markers);
   for (std::size_t p = 0; p < panels.size(); ++p) {
@@ -154,13 +167,19 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
 ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
                             const Model& model, const ModalResult& modal, const CsvTable& shapes,
                             const std::string& csvFile, int count) {
-  // Each mode is drawn by its dominant translation; the axis names it when all agree.
+  // Each mode is drawn by its dominant translation, a torsion mode by its rotation; the axis
+  // names the dof when all agree.
   const int shown = std::min<int>(count, int(modal.modes.size()));
   std::vector<Dof> along;
-  for (int m = 0; m < shown; ++m)
-    along.push_back(dominantTranslation(displayModeShape(model, modal.modes[m].shape)));
+  for (int m = 0; m < shown; ++m) along.push_back(chartedDof(model, modal.modes[m].shape));
   const bool same = std::all_of(along.begin(), along.end(), [&](Dof d) { return d == along[0]; });
   const std::string drawn = same && shown ? std::string(dofName(along[0])) + " " : "";
+  const bool anyRotation = std::any_of(along.begin(), along.end(), isRotation);
+  const bool anyTranslation = !std::all_of(along.begin(), along.end(), isRotation);
+  const std::string scale = anyRotation && anyTranslation
+                                ? "(largest translation = 1, torsion: largest rotation = 1 rad)"
+                            : anyRotation ? "(largest rotation = 1 rad)"
+                                          : "(largest translation = 1)";
 
   std::ostringstream body;
   body << "  set title " << captionText(caption) << " font ',13'\n"
@@ -168,7 +187,7 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
        << "  set key below\n  set xrange [*:*] noextend\n"
        << "  set offsets 0, 0, graph 0.08, graph 0.02\n"
        << "  set xlabel 'x along the line [m]'\n"
-       << "  set ylabel " << gnuplotText("mode shape " + drawn + "(largest translation = 1)")
+       << "  set ylabel " << gnuplotText("mode shape " + drawn + scale)
        << "\n"
        << markerCommands(namedPointMarkers(model)) << "  plot ";
   for (int m = 0; m < shown; ++m) {
@@ -215,24 +234,28 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   const int rows = std::max<int>(1, int((panels.size() + columns - 1) / columns));
   const int width = 1000, height = 140 + 270 * rows;
   std::ostringstream body;
-  // A key only where a panel has several curves; it sits in a wider right margin.
-  const int keyMargin = frequencies.size() > 1 ? 130 : 30;
+  // A key only where a panel has several curves; it sits in a right margin as wide as it needs.
+  std::vector<std::string> keyTitles;
+  if (frequencies.size() > 1)
+    for (const SweepQuantity* q : frequencies) keyTitles.push_back(q->label);
+  const int keyMargin = keyTitles.empty() ? 30 : keyWidth(keyTitles);
   body << "  set encoding utf8\n"
        << panelLayout(rows, columns, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n"
-       << "  set xlabel " << gnuplotText(parameter) << "\n";
+       << "  set xlabel " << gnuplotText(parameter + " (deck parameter, SI units)") << "\n";
   // Values spread over decades (a stiffness from 1e4 to 1e6) read better on a log axis.
   const auto values = table.numbers(parameter);
   const auto [low, high] = std::minmax_element(values.begin(), values.end());
-  if (low != values.end() && *low > 0 && *high >= 30 * *low) body << "  set logscale x\n";
+  if (low != values.end() && *low > 0 && *high >= 30 * *low) body << logAxis("x", *low, *high);
   for (const auto& panel : panels) {
     // Forces in kN (N m in kN m), stresses in MPa, anything else as it is.
     const std::string unit = panel.front()->column.unit;
     const bool force = unit == "N" || unit == "N m";
     const double scale = unit == "Pa" ? 1e-6 : force ? 1e-3 : 1.0;
-    const std::string shown = unit == "Pa" ? "MPa" : force ? "k" + unit : unit;
+    const std::string shown = unit == "Pa" ? "MPa" : force ? "k" + unit : unit.empty() ? "-" : unit;
     const std::string label = panel.size() == 1 ? panel.front()->label : "frequency";
-    body << "  set ylabel " << gnuplotText(shown.empty() ? label : label + " [" + shown + "]")
+    // A quantity without a unit (a ratio, a relative error) is marked [-], dimensionless.
+    body << "  set ylabel " << gnuplotText(label + " [" + shown + "]")
          << "\n  plot ";
     for (std::size_t i = 0; i < panel.size(); ++i) {
       if (i) body << ", \\\n       ";
@@ -260,7 +283,7 @@ ChartScript historyChart(const std::string& caption, const std::string& chartNam
        << "  set xrange [*:*] noextend\n";
   for (std::size_t c = 1; c < columns.size(); ++c) {
     if (c + 1 == columns.size()) body << "  set xlabel 'time t [s]'\n";
-    const std::string unit = columns[c].unit.empty() ? "" : " [" + columns[c].unit + "]";
+    const std::string unit = " [" + (columns[c].unit.empty() ? "-" : columns[c].unit) + "]";
     body << "  set ylabel " << gnuplotText(columns[c].name + unit) << "\n"
          << plotCommand({{csvFile, table.column(columns[0].name), table.column(columns[c].name),
                          gnuplotText(columns[c].name)}},

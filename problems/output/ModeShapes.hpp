@@ -14,7 +14,16 @@ namespace beamrotor {
 /// per unit of largest translation). A zero shape is returned unchanged.
 NodalField displayModeShape(const Model& model, const NodalField& shape);
 
-/// The translation kind (ux, uy or uz) with the largest value in a shape: the one to plot.
+/// Whether a shape has no translation worth the name (pure torsion: translations below 1e-9
+/// of the largest rotation times the model's size); displayModeShape scales such a shape by
+/// its rotation.
+bool isTorsionalShape(const Model& model, const NodalField& shape);
+
+/// The translation kind (ux, uy or uz) with the largest value in a shape.
 Dof dominantTranslation(const NodalField& shape);
+
+/// The dof kind a chart draws a mode by: its dominant translation, or for a torsional shape
+/// its dominant rotation (a torsion mode drawn by uy would be a flat line).
+Dof chartedDof(const Model& model, const NodalField& shape);
 
 }  // namespace beamrotor

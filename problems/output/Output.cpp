@@ -28,7 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// "pump_rod: static (eta = 0.4, w0 = 0.001)": the caption of a run's charts; `what` follows
+/// "pump_rod: static (eta = 0.4, w0 = 0.001 in SI units)": the caption of a run's charts; `what` follows
 /// the analysis' name, and the parameter `left` out is not listed. A long caption puts the
 /// parameters on lines of their own ('\n'), so that the chart's width holds them.
 std::string caption(const RunResult& run, const std::string& analysis, const std::string& what = "",
@@ -38,6 +38,8 @@ std::string caption(const RunResult& run, const std::string& analysis, const std
   std::vector<std::string> items;
   for (const auto& [name, value] : run.parameters)
     if (name != left) items.push_back(name + " = " + exactDecimal(value));
+  // A deck's bare numbers are SI (FORMAT.md): say so, since a parameter has no unit of its own.
+  if (!items.empty()) items.back() += " in SI units";
   std::string oneLine = head;
   for (std::size_t i = 0; i < items.size(); ++i)
     oneLine += (i ? ", " : " (") + items[i] + (i + 1 == items.size() ? ")" : "");

@@ -1,9 +1,14 @@
 // gnuplot scripts of the rotor analyses (see RotorCharts.hpp).
 #include "problems/output/RotorCharts.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <sstream>
+#include <utility>
 
 #include "problems/output/ChartParts.hpp"
+#include "problems/output/LabelPlacement.hpp"
 #include "problems/output/RotorTables.hpp"
 
 namespace beamrotor {
@@ -22,53 +27,104 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
   const auto rpm = campbell.numbers("speed_rpm");
   const int x = campbell.column("speed_rpm");
   const int lines = int((campbell.columns().size() - 2) / 4);
-  const auto labels = [&](int first, const char* dy) {
-    return gnuplotFile(criticalFile) + " skip 1 every 2::" + std::to_string(first) + " using " +
-           std::to_string(critical.column("speed_rpm")) + ":" +
-           std::to_string(critical.column("frequency")) + ":(sprintf('%.0f rpm', $" +
-           std::to_string(critical.column("speed_rpm")) + ")) with labels left offset 0.8," + dy +
-           " font ',9' notitle";
-  };
+  // The frequency axis is fixed here (0 to the highest line or speed line, 5 % headroom) so
+  // that data map to known pixels and the critical speeds' labels can be kept apart.
+  double top = order * std::max(std::abs(rpm.front()), std::abs(rpm.back())) / 60;
+  bool planar = false;
+  for (int l = 1; l <= lines; ++l) {
+    for (double f : campbell.numbers(campbellColumn(l, "frequency")))
+      if (std::isfinite(f)) top = std::max(top, f);
+    for (double w : campbell.numbers(campbellColumn(l, "whirl"))) planar = planar || w == 0;
+  }
+  top = top > 0 ? 1.05 * top : 1;
+
+  // Key entries only for what is drawn: a planar line only when some line is planar.
+  std::vector<std::pair<int, std::string>> senses{{kForward, "forward whirl"},
+                                                  {kBackward, "backward whirl"}};
+  if (planar) senses.emplace_back(kPlanar, "planar");
+  const std::string speedLine = number(order) + "x speed";
+  std::vector<std::string> titles{speedLine, "critical speeds"};
+  for (const auto& [slot, title] : senses) titles.push_back(title);
+  const int width = 1000, height = 640;
+  const int captionLines = 1 + int(std::count(caption.begin(), caption.end(), '\n'));
+  const PixelBox plot{90, 40.0 + 20.0 * captionLines, double(width - keyWidth(titles)),
+                      height - 60.0};
+  const double x0 = rpm.front(), x1 = rpm.back(), span = x1 > x0 ? x1 - x0 : 1;
+  const double across = plot.right - plot.left, down = plot.bottom - plot.top;
+  const auto pixelX = [&](double v) { return plot.left + (v - x0) / span * across; };
+  const auto pixelY = [&](double f) { return plot.bottom - f / top * down; };
+  const auto dataX = [&](double px) { return x0 + (px - plot.left) / across * span; };
+  const auto dataY = [&](double py) { return (plot.bottom - py) / down * top; };
+
   std::ostringstream body;
   body << "  set encoding utf8\n"
        << "  set title " << captionText(caption) << " font ',13'\n"
-       << "  set grid\n  set key below\n"
+       << "  set lmargin at screen " << number(plot.left / width) << "\n  set rmargin at screen "
+       << number(plot.right / width) << "\n  set tmargin at screen "
+       << number(1 - plot.top / height) << "\n  set bmargin at screen "
+       << number(1 - plot.bottom / height) << "\n"
+       << "  set grid\n  set key outside right top\n"
        << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'whirl frequency [Hz]'\n"
-       << "  set xrange [" << number(rpm.front()) << ":" << number(rpm.back()) << "]\n"
-       << "  set yrange [0:*]\n"
+       << "  set xrange [" << number(x0) << ":" << number(x0 + span) << "]\n"
+       << "  set yrange [0:" << number(top) << "]\n"
        << "  whirl(w) = w > 0 ? " << colourValue(kForward) << " : w < 0 ? "
-       << colourValue(kBackward) << " : " << colourValue(kPlanar) << "\n  plot ";
+       << colourValue(kBackward) << " : " << colourValue(kPlanar) << "\n";
+  // Each critical speed labelled in rpm, beside its point, clear of the other labels.
+  const auto speeds = critical.numbers("speed_rpm"), frequencies = critical.numbers("frequency");
+  constexpr double kLabelFont = 9, kLabelHeight = 13;
+  std::vector<PointLabel> labels;
+  std::vector<std::string> texts;
+  for (std::size_t k = 0; k < speeds.size(); ++k) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.0f rpm", speeds[k]);
+    const PointLabel label{pixelX(speeds[k]), pixelY(frequencies[k]),
+                           textWidth(text) * kLabelFont / 12.0, kLabelHeight};
+    // A double mode (the two planes of an isotropic rotor) crosses twice at one point: one label.
+    bool repeated = false;
+    for (std::size_t j = 0; j < labels.size(); ++j)
+      repeated = repeated || (texts[j] == text && std::abs(labels[j].x - label.x) < 1 &&
+                              std::abs(labels[j].y - label.y) < 1);
+    if (repeated) continue;
+    texts.push_back(text);
+    labels.push_back(label);
+  }
+  const std::vector<PixelBox> boxes = placeLabels(labels, plot);
+  // gnuplot centres a label's text vertically on its position.
+  for (std::size_t k = 0; k < boxes.size(); ++k)
+    body << "  set label " << gnuplotText(texts[k]) << " at first " << number(dataX(boxes[k].left))
+         << ", first " << number(dataY((boxes[k].top + boxes[k].bottom) / 2)) << " left font ',"
+         << kLabelFont << "'\n";
+  body << "  plot ";
   for (int l = 1; l <= lines; ++l)
     body << gnuplotFile(csvFile) << " skip 1 using " << x << ":"
          << campbell.column(campbellColumn(l, "frequency")) << ":(whirl($"
          << campbell.column(campbellColumn(l, "whirl"))
          << ")) with lines linewidth 2 linecolor rgb variable notitle, \\\n       ";
   // Key entries for the colours (NaN draws nothing).
-  body << "NaN with lines linewidth 2 " << colour(kForward) << " title 'forward whirl', \\\n"
-       << "       NaN with lines linewidth 2 " << colour(kBackward)
-       << " title 'backward whirl', \\\n"
-       << "       NaN with lines linewidth 2 " << colour(kPlanar) << " title 'planar', \\\n"
-       << "       x * " << number(order)
-       << " / 60 with lines dashtype 2 linecolor rgb 'gray30' title "
-       << gnuplotText(number(order) + "x speed");
+  for (const auto& [slot, title] : senses)
+    body << "NaN with lines linewidth 2 " << colour(slot) << " title " << gnuplotText(title)
+         << ", \\\n       ";
+  body << "x * " << number(order) << " / 60 with lines dashtype 2 linecolor rgb 'gray30' title "
+       << gnuplotText(speedLine);
   if (critical.rowCount() > 0)
     body << ", \\\n       " << gnuplotFile(criticalFile) << " skip 1 using "
          << critical.column("speed_rpm") << ":" << critical.column("frequency")
-         << " with points pointtype 7 pointsize 1.4 linecolor rgb 'black' title 'critical speeds', "
-            "\\\n"
-         // Labels of neighbouring crossings (a double mode crosses twice at one speed)
-         // alternate between two rows so they do not print over each other.
-         << labels(0, "-0.6") << ", \\\n       " << labels(1, "-1.6");
+         << " with points pointtype 7 pointsize 1.4 linecolor rgb 'black' title 'critical speeds'";
   body << "\n";
-  return {chartName, "Campbell diagram: whirl frequencies against spin speed", 900, 620,
+  return {chartName, "Campbell diagram: whirl frequencies against spin speed", width, height,
           body.str()};
 }
 
 ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
                                    const CsvTable& response, const std::string& csvFile,
                                    const std::vector<std::string>& points) {
-  const int width = 900, height = 800;
   const int x = response.column("speed_rpm");
+  // The amplitude axis in whole decades of the positive amplitudes (um).
+  PositiveRange amplitudes;
+  for (const std::string& p : points)
+    for (double a : response.numbers(p + "_amplitude")) amplitudes.include(a * 1e6);
+  const int keyMargin = keyWidth(points);
+  const int width = 770 + keyMargin, height = 800;
   // Amplitudes on a log scale skip the zeros (no force at rest); phases are drawn as they are.
   const auto panel = [&](const std::string& what, double scale, bool positive) {
     std::ostringstream s;
@@ -78,8 +134,10 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
       if (k) s << ", \\\n       ";
       s << gnuplotFile(csvFile) << " skip 1 using " << x << ":(";
       if (positive) s << "$" << column << " > 0 ? ";
-      s << "$" << column << "*" << number(scale);
-      if (positive) s << " : NaN";
+      if (positive)
+        s << "$" << column << "*" << number(scale) << " : NaN";
+      else  // a phase of -180 deg is +180: one side, so round-off does not draw a jump across
+        s << "$" << column << " <= -179.999 ? $" << column << " + 360 : $" << column;
       s << ") with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << colour(k) << " title "
         << gnuplotText(points[k]);
     }
@@ -87,11 +145,11 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
   };
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << panelLayout(2, 1, caption, width, height, 130) << "  set grid\n"
-       << "  set key outside right top\n"
-       << "  set logscale y\n"
+       << panelLayout(2, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n" << logAxis("y", amplitudes)
        << "  set ylabel 'orbit semi-major axis [µm]'\n"
-       << panel("amplitude", 1e6, true) << "  unset logscale y\n"
+       << panel("amplitude", 1e6, true) << "  unset logscale y\n  set format y '%g'\n"
+       << "  set ytics autofreq\n  set mytics default\n"
        << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'phase of u_y [deg]'\n"
        << "  set yrange [-180:180]\n  set ytics 90\n"
        << panel("uy_phase", 1, false) << "  unset multiplot\n";

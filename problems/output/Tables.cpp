@@ -1,6 +1,8 @@
 // The CSV tables of one run (see Tables.hpp).
 #include "problems/output/Tables.hpp"
 
+#include <optional>
+
 #include "fem/assembly/Recovery.hpp"
 #include "problems/output/ModeShapes.hpp"
 
@@ -53,24 +55,31 @@ CsvTable modesTable(const std::string& title, const ModalResult& modal) {
   return table;
 }
 
-std::string modeShapeColumn(int mode, Dof translation) {
-  return "mode" + std::to_string(mode) + "_" + std::string(dofName(translation));
+std::string modeShapeColumn(int mode, Dof dof) {
+  return "mode" + std::to_string(mode) + "_" + std::string(dofName(dof));
 }
 
 CsvTable modeShapesTable(const std::string& title, const Model& model, const ModalResult& modal) {
+  // Translations of every mode; a torsional mode also its rotation (largest 1), which is
+  // what its chart draws.
   std::vector<CsvColumn> columns{{"x", "m"}};
   std::vector<NodalField> shapes;
+  std::vector<std::optional<Dof>> rotations;
   for (std::size_t m = 0; m < modal.modes.size(); ++m) {
     shapes.push_back(displayModeShape(model, modal.modes[m].shape));
     for (int k = 0; k < 3; ++k) columns.push_back({modeShapeColumn(int(m) + 1, kAllDofs[k]), ""});
+    const Dof charted = chartedDof(model, modal.modes[m].shape);
+    rotations.push_back(isRotation(charted) ? std::optional<Dof>(charted) : std::nullopt);
+    if (rotations.back()) columns.push_back({modeShapeColumn(int(m) + 1, charted), ""});
   }
   CsvTable table(title, columns);
   for (const LinePlace& p : placesAlongLine(model, kIntervalsPerElement)) {
     const auto& line = static_cast<const LineElement&>(*model.elements()[p.element]);
     std::vector<CsvCell> row{p.x};
-    for (const NodalField& shape : shapes) {
-      const auto u = displacementAlong(line, shape, p.s, SpanLoad::none);
+    for (std::size_t m = 0; m < shapes.size(); ++m) {
+      const auto u = displacementAlong(line, shapes[m], p.s, SpanLoad::none);
       row.insert(row.end(), {u[0], u[1], u[2]});
+      if (rotations[m]) row.push_back(u[dofIndex(*rotations[m])]);
     }
     table.addRow(std::move(row));
   }

@@ -20,10 +20,11 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
 CsvTable modesTable(const std::string& title, const ModalResult& modal);
 
 /// One row per station along the line: x (m), then for every mode k columns mode<k>_ux,
-/// mode<k>_uy, mode<k>_uz: translations of the shape scaled by displayModeShape.
+/// mode<k>_uy, mode<k>_uz: translations of the shape scaled by displayModeShape; a torsional
+/// mode (isTorsionalShape) also mode<k>_rx (or _ry, _rz: its chartedDof), largest 1.
 CsvTable modeShapesTable(const std::string& title, const Model& model, const ModalResult& modal);
 
-/// Name of a mode-shape column, e.g. "mode2_uy".
-std::string modeShapeColumn(int mode, Dof translation);
+/// Name of a mode-shape column, e.g. "mode2_uy", "mode3_rx".
+std::string modeShapeColumn(int mode, Dof dof);
 
 }  // namespace beamrotor

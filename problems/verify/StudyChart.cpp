@@ -26,16 +26,22 @@ bool writeStudyChart(const std::filesystem::path& dir, const StudyChart& chart) 
     table.write(dir / seriesFile(chart, k));
     rightAxis = rightAxis || s.rightAxis;
   }
+  // The positive values on each axis, for log axes in whole decades.
+  PositiveRange x, y, y2;
+  for (const StudySeries& s : chart.series) {
+    for (double v : s.x) x.include(v);
+    for (double v : s.y) (s.rightAxis ? y2 : y).include(v);
+  }
   std::ostringstream body;
   body << "set title " << gnuplotText(chart.title) << "\n"
        << "set xlabel " << gnuplotText(chart.xLabel) << "\n"
        << "set ylabel " << gnuplotText(chart.yLabel) << "\n"
        << "set grid\nset key outside bottom center horizontal\n"
-       << (chart.logX ? "set logscale x\nset format x '10^{%L}'\n" : "")
-       << (chart.logY ? "set logscale y\nset format y '10^{%L}'\n" : "");
+       << (chart.logX ? logAxis("x", x) : "")
+       << (chart.logY ? logAxis("y", y) : "");
   if (rightAxis)
-    body << "set y2label " << gnuplotText(chart.y2Label)
-         << "\nset logscale y2\nset format y2 '10^{%L}'\nset ytics nomirror\nset y2tics\n";
+    body << "set y2label " << gnuplotText(chart.y2Label) << "\n"
+         << logAxis("y2", y2) << "set ytics nomirror\nset y2tics\n";
   body << "plot ";
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const StudySeries& s = chart.series[k];
