@@ -213,7 +213,7 @@ TEST_SUITE("hostile input: faults") {
         {"--set beyond a double", deck, set("P=1e400"), 2, R"(^deck\.yaml: --set P=1e400: )", {}},
         {"--set dividing by zero", deck, set("P=1/0"), 2, R"(^deck\.yaml: --set P=1/0: )", {}},
         {"--set NaN", deck, set("P=sqrt(-1)"), 2, R"(--set P=sqrt\(-1\): .*nan)", {}},
-        {"--set nothing", deck, set("P="), 2, R"(--set P=: empty value)", {}},
+        {"--set nothing", deck, set("P="), 2, R"(--set P=: .*empty value)", {}},
         {"--set no name", deck, set("=1"), 2, R"(--set =1: '' is not a parameter name)", {}},
         {"--set no equals", deck, set("P"), 2, R"(--set P: expected NAME=VALUE)", {}},
         {"--set an unknown name", deck, set("Q=1"), 2, R"(no parameter 'Q' in this deck)", {}},
