@@ -27,11 +27,13 @@ constexpr double kTablePrecision = 1.2e-4;
 // A 3D cantilever: tip loads N (x), Fy, Fz; at the root Mz = Fy L and My = Fz L, largest at
 // the flange corner where all three add: sigma = |N|/A + |Fy| L (h/2)/I_strong +
 // |Fz| L (b/2)/I_weak.
-// The 3D model with its IPE 300, which both decks below share.
-const std::string kIpeModel = R"(
+// A 3D model of steel, which every deck below shares, and its IPE 300.
+const std::string kSteel3d = R"(
 model: {dimension: 3d}
 materials:
   - {name: steel, E: 210e9, nu: 0.3, rho: 7850}
+)";
+const std::string kIpeModel = kSteel3d + R"(
 sections:
   - {name: ipe300, shape: I, h: 0.300, b: 0.150, tw: 0.0071, tf: 0.0107, r: 0.015}
 )";
@@ -84,10 +86,7 @@ loads:
 )";
 
 // One segment of each standard shape, its keys in an order unlike the constructors'.
-const std::string kShapesDeck = R"(
-model: {dimension: 3d}
-materials:
-  - {name: steel, E: 210e9, nu: 0.3, rho: 7850}
+const std::string kShapesDeck = kSteel3d + R"(
 sections:
   - {name: i, shape: I, r: 0.015, tf: 0.0107, tw: 0.0071, b: 0.150, h: 0.300}
   - {name: u, shape: channel, taper: 0.08, r_toe: 0.006, r: 0.0115, tf: 0.0115, tw: 0.0085,
