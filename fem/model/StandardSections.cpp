@@ -110,14 +110,18 @@ Section iSection(std::string name, const Material& m, double h, double b, double
 }
 
 Section channelSection(std::string name, const Material& m, double h, double b, double tw,
-                       double tf, double r, double rToe) {
+                       double tf, double r, double rToe, double taper) {
   require(positive(h) && positive(b) && positive(tw) && positive(tf) && nonNegative(r) &&
-              nonNegative(rToe),
-          "channel dimensions h, b, tw, tf must be positive and r, r_toe non-negative");
-  require(2 * tf < h && tw < b, "a channel needs 2 tf < h and tw < b");
-  const double y = h / 2, yi = h / 2 - tf;
-  const OutlineLoop outline{{-y, 0},  {y, 0},     {y, b},        {yi, b, rToe},
-                            {yi, tw, r}, {-yi, tw, r}, {-yi, b, rToe}, {-y, b}};
+              nonNegative(rToe) && nonNegative(taper),
+          "channel dimensions h, b, tw, tf must be positive and r, r_toe, taper non-negative");
+  require(tw < b, "a channel needs tw < b");
+  // The inner faces of the flanges: tf thick at b/2, thinner towards the toes by the taper.
+  const double y = h / 2, atRoot = y - tf - taper * (b / 2 - tw), atToe = y - tf + taper * b / 2;
+  require(atRoot > 0, "the flanges (tf, with their taper) must leave room for the web");
+  require(atToe < y, "the taper leaves the flange tips no thickness");
+  const OutlineLoop outline{{-y, 0},          {y, 0},           {y, b},
+                            {atToe, b, rToe}, {atRoot, tw, r},  {-atRoot, tw, r},
+                            {-atToe, b, rToe}, {-y, b}};
   Section s = fromOutline(std::move(name), Section::Shape::channel, m, {outline}, h);
   // The outline's centroid lies at e from the web's back; fromOutline measured the fibres
   // from it. The midline walls, from the same centroid: web at z = tw/2 - e, flanges to b - e.

@@ -19,12 +19,15 @@ namespace beamrotor {
 Section iSection(std::string name, const Material& m, double h, double b, double tw, double tf,
                  double r);
 
-/// Channel with parallel flanges (UPE, PFC): depth h, flange width b (from the web's back), web
-/// tw, flanges tf, root radius r, flange toe radius rToe (inner corner of the flange tips).
-/// The web's back lies at z = -e (e from the centroid, the tables' e or e_y); the shear centre
-/// lies behind the web and is not modelled: loads act through the centroid.
+/// Channel: depth h, flange width b (from the web's back), web tw, flanges tf, root radius r,
+/// flange toe radius rToe (inner corner of the flange tips), and the slope of the flanges'
+/// inner faces, `taper` (0 for parallel flanges as UPE and PFC; 0.08 for UPN up to 300,
+/// whose tf is measured halfway along the flange, b/2 from the web's back, DIN 1026-1). The
+/// web's back lies at z = -e (e from the centroid, the tables' e or e_y); the shear centre
+/// lies behind the web and is not modelled: loads act through the centroid. Torsion and
+/// shear take the flanges at their mean thickness tf.
 Section channelSection(std::string name, const Material& m, double h, double b, double tw,
-                       double tf, double r, double rToe);
+                       double tf, double r, double rToe, double taper = 0);
 
 /// Angle with legs h (drawn along y) and b (along z), thickness t, root radius r and toe
 /// radius rToe. Its principal axes are inclined to the legs: local y and z are the principal

@@ -60,7 +60,8 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
   if (shape == "tube") f.allowOnly(keys({"D", "t"}), "a tube section");
   if (shape == "rectangle") f.allowOnly(keys({"b", "h"}), "a rectangle section");
   if (shape == "I") f.allowOnly(keys({"h", "b", "tw", "tf", "r"}), "an I section");
-  if (shape == "channel") f.allowOnly(keys({"h", "b", "tw", "tf", "r", "r_toe"}), "a channel");
+  if (shape == "channel")
+    f.allowOnly(keys({"h", "b", "tw", "tf", "r", "r_toe", "taper"}), "a channel");
   if (shape == "angle") f.allowOnly(keys({"h", "b", "t", "r", "r_toe"}), "an angle");
   if (shape == "rhs") f.allowOnly(keys({"h", "b", "t", "r_out", "r_in"}), "a hollow rectangle");
   if (shape == "general")
@@ -90,9 +91,9 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
       return iSection(name, m, v[0], v[1], v[2], v[3], v[4]);
     });
   if (shape == "channel")
-    return readShape(c, f, {"h", "b", "tw", "tf", "r"}, {"r_toe"},
+    return readShape(c, f, {"h", "b", "tw", "tf", "r"}, {"r_toe", "taper"},
                      [&](const std::vector<double>& v) {
-                       return channelSection(name, m, v[0], v[1], v[2], v[3], v[4], v[5]);
+                       return channelSection(name, m, v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
                      });
   if (shape == "angle")
     return readShape(c, f, {"h", "b", "t", "r"}, {"r_toe"}, [&](const std::vector<double>& v) {

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "fem/model/StandardSections.hpp"
 #include "problems/deck/DeckError.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
@@ -26,11 +27,13 @@ constexpr double kTablePrecision = 1.2e-4;
 // A 3D cantilever: tip loads N (x), Fy, Fz; at the root Mz = Fy L and My = Fz L, largest at
 // the flange corner where all three add: sigma = |N|/A + |Fy| L (h/2)/I_strong +
 // |Fz| L (b/2)/I_weak.
-// The 3D model with its IPE 300, which both decks below share.
-const std::string kIpeModel = R"(
+// A 3D model of steel, which every deck below shares, and its IPE 300.
+const std::string kSteel3d = R"(
 model: {dimension: 3d}
 materials:
   - {name: steel, E: 210e9, nu: 0.3, rho: 7850}
+)";
+const std::string kIpeModel = kSteel3d + R"(
 sections:
   - {name: ipe300, shape: I, h: 0.300, b: 0.150, tw: 0.0071, tf: 0.0107, r: 0.015}
 )";
@@ -82,9 +85,51 @@ loads:
   - {type: point, at: end, fy: -1000}
 )";
 
+// One segment of each standard shape, its keys in an order unlike the constructors'.
+const std::string kShapesDeck = kSteel3d + R"(
+sections:
+  - {name: i, shape: I, r: 0.015, tf: 0.0107, tw: 0.0071, b: 0.150, h: 0.300}
+  - {name: u, shape: channel, taper: 0.08, r_toe: 0.006, r: 0.0115, tf: 0.0115, tw: 0.0085,
+     b: 0.075, h: 0.2}
+  - {name: l, shape: angle, r_toe: 0.006, r: 0.012, t: 0.01, b: 0.09, h: 0.15}
+  - {name: box, shape: rhs, r_in: 0.008, r_out: 0.016, t: 0.008, b: 0.1, h: 0.2}
+segments:
+  - {length: 1, section: i, elements: 1}
+  - {length: 1, section: u, elements: 1}
+  - {length: 1, section: l, elements: 1}
+  - {length: 1, section: box, elements: 1}
+supports:
+  - {name: root, at: start, fix: clamped}
+loads:
+  - {type: point, at: end, fy: -1000, fz: 500}
+)";
+
 }  // namespace
 
 TEST_SUITE("section decks") {
+  TEST_CASE("every standard shape read from a deck is the section its constructor makes") {
+    const Study study = test::solveDeckText(kShapesDeck, "shapes.yaml");
+    REQUIRE(study.deck.segments.size() == 4);
+    const Material steel = Material::fromEnu("steel", 210e9, 0.3, 7850);
+    const std::vector<Section> expected{
+        iSection("i", steel, 0.3, 0.15, 0.0071, 0.0107, 0.015),
+        channelSection("u", steel, 0.2, 0.075, 0.0085, 0.0115, 0.0115, 0.006, 0.08),
+        angleSection("l", steel, 0.15, 0.09, 0.01, 0.012, 0.006),
+        hollowRectangleSection("box", steel, 0.2, 0.1, 0.008, 0.016, 0.008)};
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      const Section& read = *study.deck.segments[k].section;
+      CAPTURE(read.name);
+      // The same computation on the same numbers: equal to the last bit.
+      CHECK(read.A == expected[k].A);
+      CHECK(read.Iy == expected[k].Iy);
+      CHECK(read.Iz == expected[k].Iz);
+      CHECK(read.J == expected[k].J);
+      CHECK(read.kappaY == expected[k].kappaY);
+      CHECK(read.fibres.size() == expected[k].fibres.size());
+    }
+    REQUIRE(study.run);
+  }
+
   TEST_CASE("IPE 300 bent about both axes: the flange corner's stress") {
     for (const auto& [text, reference] :
          {std::pair{kCantileverDeck, 150e3 / 53.81e-4 + 12e3 * 2 * 0.15 / 8356e-8 +
