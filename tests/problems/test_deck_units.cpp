@@ -441,3 +441,23 @@ TEST_SUITE("deck units") {
     CHECK(e.place().line == 8);
   }
 }
+
+TEST_SUITE("deck units") {
+  TEST_CASE("odd unit syntax fails with a reason, never a crash or a wrong value") {
+    ExpressionEvaluator ev;
+    for (const char* odd : {"1e", "2e+", "6 mm mm mm kg^-1 s", "1e308 km", "m", "3 (mm)", "3 .mm",
+                            "mm 3", "4 sin", "1 pi", "6 m(2)", "()", "2 2 m"}) {
+      CAPTURE(odd);
+      try {
+        const Amount a = ev.amount(odd);
+        CHECK(std::isfinite(a.si));
+      } catch (const ExpressionError& e) {
+        CHECK(std::string(e.what()).size() > 0);
+      }
+    }
+    // The ones with a definite meaning: a product of units, and a unit alone (1 m).
+    CHECK(ev.amount("6 mm mm mm kg^-1 s").dimension == Dimension::of(3, -1, 1, 0));
+    CHECK(ev.amount("m").si == 1);
+    CHECK(unitsFailure(ev, "1e305 km").find("largest number") != std::string::npos);
+  }
+}
