@@ -11,6 +11,7 @@
 #include "problems/cli/Progress.hpp"
 #include "problems/cli/Summary.hpp"
 #include "problems/deck/DeckError.hpp"
+#include "problems/deck/Units.hpp"
 #include "problems/output/AtomicDirectory.hpp"
 #include "problems/output/FileWriting.hpp"
 #include "problems/output/MatrixExport.hpp"
@@ -67,6 +68,8 @@ void printHeader(std::ostream& out, const Study& s, const StudyRequest& request)
   for (const auto& [name, value] : s.deck.parameters) {
     const bool swept = s.sweep && s.sweep->parameter == name;
     out << separator << name << " = " << (swept ? "swept" : formatValue(value));
+    for (const auto& [named, dimension] : s.deck.dimensions)  // in SI, with its unit
+      if (named == name) out << (swept ? " (" : " ") << siUnitOf(dimension) << (swept ? ")" : "");
     separator = ", ";
   }
   out << "\n";

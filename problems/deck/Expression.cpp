@@ -232,6 +232,10 @@ std::vector<double> ExpressionEvaluator::valuesInEveryScaling(const std::string&
 
 Amount ExpressionEvaluator::amount(const std::string& text) const {
   const std::vector<double> v = valuesInEveryScaling(text);
+  if (!std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
+    throw ExpressionError("'" + text +
+                          "' is too close to the largest number a double holds for its "
+                          "dimension to be checked");
   if (v[0] == 0) {
     if (std::all_of(v.begin(), v.end(), [](double x) { return x == 0; }))
       return Amount{0, Dimension{}, true};

@@ -255,7 +255,11 @@ void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
            didYouMean(q.target, names) + " (record: " + joinNames(names) + ")");
   if (q.kind != Quantity::Kind::historyAt) return;
   try {
-    q.time = c.evaluator.evaluate(q.timeText);
+    const Amount time = c.evaluator.amount(q.timeText);
+    if (!time.anyDimension && !time.dimension.dimensionless() && time.dimension != dim::time)
+      f.fail("the time expects " + describeDimension(dim::time) + ", got " +
+             describeDimension(time.dimension));
+    q.time = time.si;
   } catch (const ExpressionError& e) {
     f.fail(e.what());
   }

@@ -34,7 +34,7 @@ const std::vector<NamedDimension>& namedDimensions() {
       {dim::rotationalStiffness, "a rotational stiffness", "N m/rad"},
       {dim::damping, "a damping coefficient", "N s/m"},
       {dim::rotationalDamping, "a rotational damping coefficient", "N m s/rad"},
-      {dim::frequency, "a frequency", "1/s = Hz"},
+      {dim::frequency, "a frequency", "Hz"},
       {dim::angularSpeed, "an angular speed", "rad/s"},
       {dim::velocity, "a velocity", "m/s"},
       {dim::acceleration, "an acceleration", "m/s^2"},
