@@ -23,10 +23,11 @@ ParameterOverride parseOverride(const std::string& argument, const std::string& 
     if (!a.anyDimension && !a.dimension.dimensionless()) o.dimension = a.dimension;
   } catch (const ExpressionError& e) {
     // The deck's parameters are not known yet when the command line is read.
+    // The reason names the value ("cannot evaluate 'abc': unknown name 'abc'").
     throw DeckError(deckPath, place,
-                    "cannot read the value '" + argument.substr(eq + 1) + "': " + e.what() +
-                        "; a --set value is a number or an expression of numbers, pi and "
-                        "functions, e.g. 0.4/2 or 2*pi, not of other parameters");
+                    std::string(e.what()) +
+                        " (a --set value is a number or an expression of numbers, pi and "
+                        "functions, e.g. 0.4/2 or 2*pi, not of other parameters)");
   }
   return o;
 }

@@ -88,6 +88,8 @@ TEST_SUITE("chart layout") {
     // Tolerance: Rayleigh's error (~(5e-5)^2) plus the consistent mass's error on the shaft's
     // share (< 1e-6 of 5e-5): 1e-6 covers both and catches a wrong spring (G or Ip) or inertia.
     CHECK(test::relError(modal.modes[0].frequencyHz, f) < 1e-6);
+    MESSAGE("torsion frequency " << modal.modes[0].frequencyHz << " Hz, closed form " << f
+                                 << ", rel. error " << test::relError(modal.modes[0].frequencyHz, f));
 
     const CsvTable shapes = modeShapesTable("shapes", *run.model, modal);
     const auto x = shapes.numbers("x"), twist = shapes.numbers("mode1_rx");
@@ -98,6 +100,7 @@ TEST_SUITE("chart layout") {
     double worst = 0;
     for (std::size_t k = 0; k < x.size(); ++k) worst = std::max(worst, std::abs(twist[k] - x[k] / L));
     CHECK(worst < 2e-5);
+    MESSAGE("twist against x/L: largest difference " << worst);
     // Bending modes have no rotation column: their translations are charted.
     CHECK_FALSE(shapes.hasColumn("mode2_rx"));
     const ChartScript chart =
