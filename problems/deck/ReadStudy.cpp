@@ -78,6 +78,9 @@ void resolveSide(const Deck& deck, const Quantity& q, const Field& f) {
   const std::string rotation(dofName(q.dof));
   const auto point = std::find_if(deck.points.begin(), deck.points.end(),
                                   [&](const DeckPoint& p) { return p.name == q.target; });
+  if (deck.frame && q.side != Quantity::Side::node)
+    f.fail("in a frame, 'left' and 'right' have no meaning; release rotations per member end "
+           "(members: release:) and ask for a point's own rotation");
   double length = 0;
   for (const DeckSegment& s : deck.segments) length += s.length;
   const double slack = 1e-9 * length;
@@ -168,6 +171,21 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
              c.carriedNames() + ")");
     resolveSide(deck, q, f);
   }
+  if (q.kind == Quantity::Kind::memberForce || q.kind == Quantity::Kind::memberDeflection) {
+    if (!deck.frame)
+      f.fail("member quantities need a frame (nodes: and members:); this deck is a line");
+    std::vector<std::string> names;
+    bool found = false;
+    for (const DeckSegment& s : deck.segments) {
+      found = found || s.name == q.target;
+      names.push_back(s.name);
+    }
+    if (!found)
+      f.fail("no member named '" + q.target + "'" + didYouMean(q.target, names) +
+             " (members: " + joinNames(names) + ")");
+  }
+  if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
+    f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
   if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
   if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
