@@ -107,6 +107,14 @@ void resolveSide(const Deck& deck, const Quantity& q, const Field& f) {
     }
 }
 
+/// Fails at `f` unless `name` is one of `names` (of `what`s, e.g. "point").
+void requireNamed(const Field& f, const std::string& name, const std::vector<std::string>& names,
+                  const std::string& what) {
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    f.fail("no " + what + " named '" + name + "'" + didYouMean(name, names) + " (" + what +
+           "s: " + joinNames(names) + ")");
+}
+
 /// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
 /// returns the name of the analysis it reads.
 std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
@@ -158,14 +166,8 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
   }
   if (q.kind == Quantity::Kind::displacement) {
     std::vector<std::string> names;
-    bool found = false;
-    for (const DeckPoint& p : deck.points) {
-      found = found || p.name == q.target;
-      names.push_back(p.name);
-    }
-    if (!found)
-      f.fail("no point named '" + q.target + "'" + didYouMean(q.target, names) +
-             " (points: " + joinNames(names) + ")");
+    for (const DeckPoint& p : deck.points) names.push_back(p.name);
+    requireNamed(f, q.target, names, "point");
     if (!deck.dofs.contains(q.dof))
       f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
              c.carriedNames() + ")");
@@ -175,14 +177,8 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     if (!deck.frame)
       f.fail("member quantities need a frame (nodes: and members:); this deck is a line");
     std::vector<std::string> names;
-    bool found = false;
-    for (const DeckSegment& s : deck.segments) {
-      found = found || s.name == q.target;
-      names.push_back(s.name);
-    }
-    if (!found)
-      f.fail("no member named '" + q.target + "'" + didYouMean(q.target, names) +
-             " (members: " + joinNames(names) + ")");
+    for (const DeckSegment& s : deck.segments) names.push_back(s.name);
+    requireNamed(f, q.target, names, "member");
   }
   if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
     f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
