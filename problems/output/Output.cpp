@@ -152,7 +152,9 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
           files.push_back(directories[i] + "/" + fieldsCsv(stem));
           values.push_back(exactDecimal(sweep.values[i]));
         }
-        if (!prepared.front().analyses[k].stations.empty())
+        // Diagrams along a line; a frame's members are in its own files per value.
+        if (!prepared.front().analyses[k].stations.empty() &&
+            prepared.front().analyses[k].members.empty())
           drawOverlaidDiagrams(
               temporary,
               caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),

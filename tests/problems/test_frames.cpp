@@ -395,6 +395,34 @@ TEST_SUITE("frames") {
           doctest::Approx(P * b).epsilon(kFrameRoundOff));
   }
 
+  TEST_CASE("3d member orientation: roll and reference vectors turn a rectangle's stiff axis") {
+    // A cantilever along x, rectangle b x h (h along local y by FORMAT.md), tip force along
+    // global y: by default local y = global y and the tip deflects P L^3 / (3 E b h^3 / 12);
+    // rolled a quarter turn (or with local y given as global z, or local z as global y) the
+    // force bends it about the other axis: P L^3 / (3 E h b^3 / 12). Exact for EB elements.
+    const double L = 1.5, b = 0.02, h = 0.06, E = 2e11, P = 500;
+    const auto tip = [&](const std::string& orientation) {
+      std::ostringstream deck;
+      deck.precision(17);
+      deck << "model: {dimension: 3d}\n"
+           << "materials: [{name: steel, E: " << E << ", nu: 0.3}]\n"
+           << "sections: [{name: bar, shape: rectangle, b: " << b << ", h: " << h << "}]\n"
+           << "nodes: [{name: A, at: [0, 0, 0]}, {name: B, at: [" << L << ", 0, 0]}]\n"
+           << "members: [{name: m, from: A, to: B, section: bar, elements: 2" << orientation
+           << "}]\n"
+           << "supports: [{at: A, fix: clamped}]\n"
+           << "loads: [{type: point, at: B, fy: " << -P << "}]\n";
+      return frameMeasure(deck.str(), "displacement B uy");
+    };
+    const double stiff = P * L * L * L / (3 * E * b * h * h * h / 12);
+    const double weak = P * L * L * L / (3 * E * h * b * b * b / 12);
+    CHECK(relError(tip(""), -stiff) < kFrameRoundOff);
+    CHECK(relError(tip(", roll: pi/2"), -weak) < kFrameRoundOff);
+    CHECK(relError(tip(", y: [0, 0, 1]"), -weak) < kFrameRoundOff);
+    CHECK(relError(tip(", z: [0, 1, 0]"), -weak) < kFrameRoundOff);
+    CHECK(relError(tip(", roll: pi"), -stiff) < kFrameRoundOff);
+  }
+
   TEST_CASE("frame decks refuse what they cannot mean") {
     const std::string head =
         "materials: [{name: steel, E: 2e11, nu: 0.3}]\n"
