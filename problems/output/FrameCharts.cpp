@@ -94,7 +94,11 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
     body << "  set size ratio -1\n  set xlabel 'x [m]'\n  set ylabel 'y [m]'\n"
          << "  set offsets graph 0.08, graph 0.08, graph 0.08, graph 0.08\n";
   else
-    body << "  set view equal xyz\n  set view 64, 28\n  set xyplane at " << number(low.y())
+    // The vertical range holds the magnified shape and the diagrams (a flat frame would
+    // otherwise get a sliver of an axis crowded with ticks).
+    body << "  set view equal xyz\n  set view 64, 28\n  set zrange ["
+         << number(low.y() - 0.2 * size) << ":" << number(high.y() + 0.2 * size)
+         << "]\n  set xyplane at " << number(low.y() - 0.2 * size)
          << "\n  set xlabel 'x [m]'\n  set ylabel 'z [m]'\n  set zlabel 'y [m]'\n";
   // Coordinates shifted by k times the expressions d[axis].
   const auto at = [&](const CsvTable& t, const std::array<std::string, 3>& d, double k) {
