@@ -6,17 +6,11 @@
 
 namespace beamrotor {
 
-namespace {
-
-/// Elements for a piece of a segment: the segment's count shared out by length, or the
-/// target size.
 int elementsFor(const Segment& seg, double piece) {
   if (seg.elements > 0)
     return std::max(1, int(std::lround(seg.elements * piece / seg.length)));
   return std::max(1, int(std::ceil(piece / seg.targetSize - 1e-9)));
 }
-
-}  // namespace
 
 Line buildLine(Model& model, const LineSpec& spec) {
   // 1. Validate and find the segment boundaries.

@@ -41,6 +41,10 @@ struct Line {
   std::vector<Beam*> beams;      ///< elements from start to end (owned by the model)
 };
 
+/// Elements for a piece `piece` (m) of a segment: the segment's count shared out by length,
+/// or as many as the target size needs (at least one).
+int elementsFor(const Segment& segment, double piece);
+
 /// Adds the line's nodes and beams to model and names its points. Throws
 /// std::invalid_argument for a point outside the line or a non-positive length.
 Line buildLine(Model& model, const LineSpec& spec);

@@ -4,43 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "fem/assembly/Polynomial.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/ShearStress.hpp"
 
 namespace beamrotor {
 
 namespace {
-
-/// A polynomial in s by its coefficients, lowest degree first.
-using Polynomial = std::vector<double>;
-
-double valueAt(const Polynomial& p, double s) {
-  double v = 0;
-  for (auto c = p.rbegin(); c != p.rend(); ++c) v = v * s + *c;
-  return v;
-}
-
-Polynomial derivativeOf(const Polynomial& p) {
-  Polynomial d;
-  for (std::size_t k = 1; k < p.size(); ++k) d.push_back(double(k) * p[k]);
-  return d;
-}
-
-Polynomial productOf(const Polynomial& a, const Polynomial& b) {
-  if (a.empty() || b.empty()) return {};
-  Polynomial r(a.size() + b.size() - 1, 0.0);
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
-  return r;
-}
-
-/// x a + y b.
-Polynomial combination(double x, const Polynomial& a, double y, const Polynomial& b) {
-  Polynomial r(std::max(a.size(), b.size()), 0.0);
-  for (std::size_t k = 0; k < a.size(); ++k) r[k] += x * a[k];
-  for (std::size_t k = 0; k < b.size(); ++k) r[k] += y * b[k];
-  return r;
-}
 
 /// Appends the zeros of p in [0, 1] and those of its derivatives. Between consecutive zeros
 /// of p' the polynomial is monotone, so each sign change there holds exactly one zero, found

@@ -17,6 +17,15 @@ void Model::nameNode(const std::string& name, int node) {
     throw std::invalid_argument("point name '" + name + "' is used twice");
 }
 
+void Model::addMember(const std::string& name, std::vector<int> elements) {
+  for (const auto& [other, list] : members_)
+    if (other == name) throw std::invalid_argument("member name '" + name + "' is used twice");
+  for (int e : elements)
+    if (e < 0 || e >= int(elements_.size()))
+      throw std::out_of_range("member '" + name + "': no element " + std::to_string(e));
+  members_.emplace_back(name, std::move(elements));
+}
+
 int Model::node(const std::string& name) const {
   auto it = names_.find(name);
   if (it == names_.end()) throw std::out_of_range("no point named '" + name + "'");

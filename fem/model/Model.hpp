@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fem/model/Dof.hpp"
@@ -67,6 +68,9 @@ class Model {
   void addSupport(Support s) { supports_.push_back(std::move(s)); }
   void addLoad(const NodalLoad& l) { loads_.push_back(l); }
   void addContact(ContactConstraint c) { contacts_.push_back(std::move(c)); }
+  /// Names a member: a chain of line elements (indices into elements(), from its start to
+  /// its end) that output reports as one piece, e.g. a frame's column. Names are unique.
+  void addMember(const std::string& name, std::vector<int> elements);
 
   const std::vector<Eigen::Vector3d>& nodes() const { return nodes_; }
   const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
@@ -74,6 +78,8 @@ class Model {
   const std::vector<NodalLoad>& loads() const { return loads_; }
   const std::vector<ContactConstraint>& contacts() const { return contacts_; }
   const std::map<std::string, int>& namedNodes() const { return names_; }
+  /// The members in the order they were added: name and element indices.
+  const std::vector<std::pair<std::string, std::vector<int>>>& members() const { return members_; }
   int nodeCount() const { return int(nodes_.size()); }
 
   /// "node 4 (x = 0.575, 0, 0) uy", with the point name when there is one; for messages.
@@ -86,6 +92,7 @@ class Model {
   std::vector<NodalLoad> loads_;
   std::vector<ContactConstraint> contacts_;
   std::map<std::string, int> names_;
+  std::vector<std::pair<std::string, std::vector<int>>> members_;
 };
 
 }  // namespace beamrotor

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "fem/assembly/MemberExtrema.hpp"
 #include "problems/cli/Summary.hpp"
 #include "problems/output/LineSampling.hpp"
 
@@ -46,8 +47,13 @@ std::pair<Peak, Peak> peaksOf(const Model& model, const StaticResult& r, std::si
 void printPeak(std::ostream& out, const char* what, const Deck& deck, const Model& model,
                const Peak& p) {
   const LineElement& line = *asLine(model.elements()[p.peak.place.element]);
-  out << "  largest " << what << " " << formatValue(p.peak.value * 1e-6)
-      << " MPa at x = " << formatValue(p.peak.place.x) << " m ("
+  out << "  largest " << what << " " << formatValue(p.peak.value * 1e-6) << " MPa at ";
+  if (const auto member = memberLocation(model, p.peak.place.element, p.peak.place.s)) {
+    out << formatValue(member->second) << " m along member "
+        << model.members()[member->first].first << " (" << line.section().name << ")";
+    return;
+  }
+  out << "x = " << formatValue(p.peak.place.x) << " m ("
       << segmentAt(deck, p.peak.place.x, line.section().name) << ")";
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "problems/cli/AdequateSummary.hpp"
+#include "problems/cli/MemberSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
@@ -59,7 +60,16 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
   out << "  displacements at points (m, rad):\n";
   for (const DeckPoint* p : reportedPoints(deck)) {
     const int node = run.model->node(p->name);
-    out << "    " << padded(p->name, 12) << padded("x = " + formatValue(p->at) + " m", 16);
+    out << "    " << padded(p->name, 12);
+    if (deck.frame) {
+      // A frame's points are places in space, not stations along one line.
+      const Eigen::Vector3d& x = run.model->nodes()[node];
+      std::string at = "at (" + formatValue(x.x()) + ", " + formatValue(x.y());
+      if (deck.dimension == "3d") at += ", " + formatValue(x.z());
+      out << padded(at + ") m", 24);
+    } else {
+      out << padded("x = " + formatValue(p->at) + " m", 16);
+    }
     const auto hinge = std::find_if(r.hinges.begin(), r.hinges.end(),
                                     [&](const SideRotations& h) { return h.node == node; });
     for (Dof d : kAllDofs) {
@@ -88,6 +98,7 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
           << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
   }
   printStressPeaks(out, deck, *run.model, r);
+  printMemberExtremes(out, deck, *run.model, r);
 }
 
 /// "reported: wstar = 0.00215712, theta_p = 0.00167015" (the deck's `report:`).

@@ -16,6 +16,7 @@
 #include "fem/model/Section.hpp"
 #include "problems/deck/DeckAccuracy.hpp"
 #include "problems/deck/DeckError.hpp"
+#include "problems/deck/DeckFrame.hpp"
 #include "problems/deck/DeckRotor.hpp"
 #include "problems/deck/DeckTransient.hpp"
 #include "problems/deck/Quantity.hpp"
@@ -106,6 +107,7 @@ struct DeckLoad {
   std::string point;                               ///< point loads
   std::vector<std::pair<Dof, double>> components;  ///< point loads: N on ux.., N m on rx..
   Eigen::Vector3d q = Eigen::Vector3d::Zero();     ///< distributed: N/m, global frame
+  bool inMemberAxes = false;  ///< distributed: q is in each member's local axes instead
   double g = 9.81;                                 ///< self-weight: m/s^2, acting along -y
   std::vector<int> segments;  ///< distributed and self-weight: indices; all if empty
   DeckPlace place;
@@ -157,7 +159,8 @@ struct Deck {
   DofSet dofs = DofSet::planar();
   BeamOptions beam;  ///< the default element formulation
 
-  std::vector<DeckSegment> segments;
+  std::vector<DeckSegment> segments;  ///< the line's pieces, or a frame's members
+  std::optional<DeckFrame> frame;     ///< `nodes:` and `members:` (segments are its members)
   std::vector<DeckSectionGaps> sectionGaps;  ///< one per `general` section missing something
   std::vector<DeckPoint> points;  ///< including the automatic "start" and "end"
   std::vector<DeckSupport> supports;

@@ -17,6 +17,7 @@ namespace beamrotor {
 namespace reader {
 
 const DeckPoint& Context::point(const Field& f) const {
+  if (f.isMap()) return memberPoint(*this, f);
   const std::string name = f.name();
   std::vector<std::string> names;
   for (const DeckPoint& p : deck.points) {
@@ -34,8 +35,9 @@ int Context::segment(const Field& f) const {
     if (deck.segments[i].name == name) return i;
     if (!deck.segments[i].name.empty()) names.push_back(deck.segments[i].name);
   }
-  f.fail("no segment named '" + name + "'" + didYouMean(name, names) +
-         " (named segments: " + joinNames(names) + ")");
+  const std::string what = deck.frame ? "member" : "segment";
+  f.fail("no " + what + " named '" + name + "'" + didYouMean(name, names) + " (named " + what +
+         "s: " + joinNames(names) + ")");
 }
 
 std::string Context::carriedNames() const {
@@ -72,7 +74,8 @@ namespace {
 const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived",  "model",    "materials", "sections", "segments",
     "points", "supports",   "springs",  "masses",   "hinges",    "loads",    "analyses",
-    "checks", "sweep",      "contacts", "bearings", "damping",   "report",   "accuracy"};
+    "checks", "sweep",      "contacts", "bearings", "damping",   "report",   "accuracy",
+    "nodes",  "members"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.

@@ -14,7 +14,8 @@ namespace {
 constexpr const char* kGrammar =
     "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', "
     "'displacement POINT ROTATION left|right', 'frequency N', 'stress max', "
-    "'shear max', 'moment max', 'log_decrement N', 'critical_speed N', "
+    "'shear max', 'moment max', 'displacement max', 'member NAME N|Vy|Vz|T|My|Mz max|min|maxabs', "
+    "'member NAME deflection max', 'log_decrement N', 'critical_speed N', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
@@ -78,6 +79,30 @@ Quantity parseQuantity(const std::string& text) {
       throw std::invalid_argument("a side names one of the two rotations at a hinge; " + words[2] +
                                   " is a translation, the same on both sides");
     q.side = words[3] == "left" ? Quantity::Side::left : Quantity::Side::right;
+    return q;
+  }
+  if (head == "displacement" && words.size() == 2 && words[1] == "max") {
+    q.kind = Quantity::Kind::maxDisplacement;
+    return q;
+  }
+  if (head == "member" && words.size() == 4) {
+    q.target = words[1];
+    if (words[2] == "deflection") {
+      if (words[3] != "max")
+        throw std::invalid_argument("a member's deflection from its chord has 'max' only, not '" +
+                                    words[3] + "'");
+      q.kind = Quantity::Kind::memberDeflection;
+      return q;
+    }
+    const std::vector<std::string> components{"N", "Vy", "Vz", "T", "My", "Mz"};
+    if (std::find(components.begin(), components.end(), words[2]) == components.end())
+      throw std::invalid_argument("'" + words[2] +
+                                  "' is not a member quantity (N Vy Vz T My Mz, or deflection)");
+    if (words[3] != "max" && words[3] != "min" && words[3] != "maxabs")
+      throw std::invalid_argument("'" + words[3] + "' is not an extreme (max, min or maxabs)");
+    q.kind = Quantity::Kind::memberForce;
+    q.property = words[2];
+    q.extreme = words[3];
     return q;
   }
   if (head == "frequency" && words.size() == 2) {

@@ -8,6 +8,9 @@
 //   shear max                 largest transverse shear stress in any beam (Pa),
 //   fem/model/ShearStress moment max                largest bending moment magnitude in any beam (N
 //   m) history NAME max|min|maxabs   largest, smallest or largest |value| of a transient history
+//   displacement max          largest translation anywhere, inside elements too (m)
+//   member NAME COMP max|min|maxabs   extreme of a resultant (N Vy Vz T My Mz) along a member
+//   member NAME deflection max   largest deflection of a member from its chord (m)
 //   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
 //                             interpolated linearly between samples
 // those of the rotor analyses (RotorQuantity.cpp):
@@ -34,6 +37,9 @@ struct Quantity {
     maxStress,
     maxShear,
     maxMoment,
+    maxDisplacement,
+    memberForce,
+    memberDeflection,
     logDecrement,
     criticalSpeed,
     unbalanceAmplitude,
@@ -53,7 +59,8 @@ struct Quantity {
   Side side = Side::node;
   int mode = 1;          ///< frequency, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
-  std::string property;  ///< rigid_body: which property
+  std::string property;  ///< rigid_body: which property; memberForce: N, Vy, Vz, T, My, Mz
+  std::string extreme;   ///< memberForce: max, min or maxabs
   std::string text;      ///< as written, for reports
 
   /// The analysis type it reads by default (when a check names none).

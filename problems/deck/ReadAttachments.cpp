@@ -47,7 +47,7 @@ void readSupports(Context& c) {
   if (!supports) return;
   std::vector<std::string> names;
   // Which support already holds each (position, dof): two supports on one dof conflict.
-  std::vector<std::tuple<double, Dof, std::string>> held;
+  std::vector<std::tuple<double, Dof, std::string, std::string>> held;  // + the point's name
   const double tol = 1e-12 * std::max(1.0, c.deck.length());
   for (const Field& f : supports->items()) {
     f.allowOnly({"name", "at", "fix", "prescribe"}, "a support");
@@ -60,8 +60,8 @@ void readSupports(Context& c) {
     s.name = nameField ? nameField->name() : p.name;
     claimName(nameField ? *nameField : at, s.name, names, "a support");
     auto record = [&](const Field& where, Dof d, double value) {
-      for (const auto& [x, dof, owner] : held)
-        if (dof == d && std::abs(x - p.at) <= tol)
+      for (const auto& [x, dof, owner, point] : held)
+        if (dof == d && (c.deck.frame ? point == p.name : std::abs(x - p.at) <= tol))
           where.fail(std::string(dofName(d)) + " at point '" + p.name +
                      "' is already held by support '" + owner + "'");
       for (const auto& [dof, v] : s.dofs)
@@ -86,7 +86,7 @@ void readSupports(Context& c) {
       f.fail("support '" + s.name +
              "' holds nothing: give fix (e.g. clamped, pinned, [uy]) "
              "or prescribe (e.g. {uy: -0.001})");
-    for (const auto& [d, v] : s.dofs) held.emplace_back(p.at, d, s.name);
+    for (const auto& [d, v] : s.dofs) held.emplace_back(p.at, d, s.name, p.name);
     c.deck.supports.push_back(std::move(s));
   }
 }
@@ -128,7 +128,8 @@ const DeckSupport* holder(const Context& c, const DeckPoint& p, Dof d) {
                                  [&](const DeckPoint& q) { return q.name == s.point; });
     const bool samePlace =
         s.point == p.name ||
-        (!c.deck.segments.empty() && at != c.deck.points.end() && std::abs(at->at - p.at) <= tol);
+        (!c.deck.segments.empty() && !c.deck.frame && at != c.deck.points.end() &&
+         std::abs(at->at - p.at) <= tol);
     if (!samePlace) continue;
     for (const auto& [dof, value] : s.dofs)
       if (dof == d) return &s;
@@ -220,10 +221,16 @@ void readHinges(Context& c) {
   }
 }
 
-/// The segments a load acts on: `segment:` names one or a list; absent means all.
+/// The segments a load acts on: `segment:` (or, in a frame, `member:`) names one or a list;
+/// absent means all.
 std::vector<int> loadedSegments(const Context& c, const Field& load) {
   std::vector<int> out;
-  if (auto f = load.get("segment"))
+  auto f = load.get(c.deck.frame ? "member" : "segment");
+  if (c.deck.frame && load.has("segment"))
+    load.require("segment").fail("a frame's loads name members: write member: instead");
+  if (!c.deck.frame && load.has("member"))
+    load.require("member").fail("this deck is a line of segments (no members): write segment:");
+  if (f)
     for (const Field& item : f->itemsOrSingle()) out.push_back(c.segment(item));
   return out;
 }
@@ -260,9 +267,10 @@ void readLoads(Context& c) {
              " load acts on segments, and this deck has none (a model without "
              "beams takes point loads)");
     } else if (type == "distributed") {
-      f.allowOnly({"type", "segment", "qx", "qy", "qz"}, "a distributed load");
+      f.allowOnly({"type", "segment", "member", "axes", "qx", "qy", "qz"}, "a distributed load");
       l.kind = DeckLoad::Kind::distributed;
       l.segments = loadedSegments(c, f);
+      if (auto axes = f.get("axes")) l.inMemberAxes = axes->choice({"global", "member"}) == "member";
       bool any = false;
       for (int k = 0; k < 3; ++k) {
         const std::string key = std::string("q") + "xyz"[k];
@@ -276,7 +284,7 @@ void readLoads(Context& c) {
       }
       if (!any) f.fail("a distributed load needs at least one of qx, qy, qz (N/m)");
     } else {
-      f.allowOnly({"type", "segment", "g"}, "a self-weight load");
+      f.allowOnly({"type", "segment", "member", "g"}, "a self-weight load");
       l.kind = DeckLoad::Kind::selfWeight;
       l.segments = loadedSegments(c, f);
       if (auto g = f.get("g")) l.g = g->positive(ev);

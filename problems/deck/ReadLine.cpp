@@ -1,4 +1,5 @@
-// Deck reader, part 1: materials, cross-sections, the segments of the line and its points.
+// Deck reader, part 1: materials, cross-sections, the segments of the line and its points
+// (a frame's nodes and members: ReadFrame.cpp).
 #include <cmath>
 
 #include "fem/model/StandardSections.hpp"
@@ -186,7 +187,8 @@ void readMaterials(Context& c) {
 }
 
 void readSections(Context& c) {
-  if (!c.root.has("sections") && !c.root.has("segments")) return;  // a model without beams
+  if (!c.root.has("sections") && !c.root.has("segments") && !c.root.has("members"))
+    return;  // a model without beams
   auto block = c.root.require("sections");
   std::vector<std::string> names;
   for (const Field& f : block.items()) {
@@ -202,7 +204,45 @@ void readSections(Context& c) {
   if (c.sections.empty()) block.fail("the deck needs at least one section");
 }
 
+void readSegmentMesh(const Context& c, const Field& f, DeckSegment& s) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  const Field sf = f.require("section");
+  s.sectionName = sf.name();
+  std::vector<std::string> sectionNames;
+  for (const auto& sec : c.sections) {
+    if (sec->name == s.sectionName) s.section = sec;
+    sectionNames.push_back(sec->name);
+  }
+  if (!s.section)
+    sf.fail("no section named '" + s.sectionName + "'" + didYouMean(s.sectionName, sectionNames) +
+            " (sections: " + joinNames(sectionNames) + ")");
+  auto count = f.get("elements"), size = f.get("size");
+  if (count && size) size->fail("give either elements or size, not both");
+  if (!count && !size) {
+    DeckPlace at = f.place();
+    at.field = f.path() + ".elements";
+    throw DeckError(f.file(), at,
+                    "missing required field 'elements' (or 'size', the largest element length)");
+  }
+  if (count) s.elements = count->integer(ev, 1, kMaxElements);
+  if (size) s.size = size->positive(ev);
+  s.options = c.deck.beam;
+  if (auto form = f.get("formulation")) s.options.theory = formulationOf(*form);
+  const bool linearTimoshenko =
+      s.options.theory == BeamTheory::timoshenkoLinearFullIntegration ||
+      s.options.theory == BeamTheory::timoshenkoLinearReducedIntegration;
+  if (linearTimoshenko && !(s.section->kappaY > 0 && s.section->kappaZ > 0))
+    sf.fail("the linear Timoshenko element needs a shear coefficient: give the section kappa");
+}
+
 void readLine(Context& c) {
+  if (c.root.has("members") || c.root.has("nodes")) {
+    if (auto segments = c.root.get("segments"))
+      segments->fail("give either segments (a line along x) or nodes and members (a frame), "
+                     "not both");
+    readFrame(c);
+    return;
+  }
   if (!c.root.has("segments")) {
     readPointModel(c);
     return;
@@ -223,33 +263,7 @@ void readLine(Context& c) {
     }
     lengths.push_back(f.require("length"));
     s.length = lengths.back().positive(ev);
-    const Field sf = f.require("section");
-    s.sectionName = sf.name();
-    std::vector<std::string> sectionNames;
-    for (const auto& sec : c.sections) {
-      if (sec->name == s.sectionName) s.section = sec;
-      sectionNames.push_back(sec->name);
-    }
-    if (!s.section)
-      sf.fail("no section named '" + s.sectionName + "'" + didYouMean(s.sectionName, sectionNames) +
-              " (sections: " + joinNames(sectionNames) + ")");
-    auto count = f.get("elements"), size = f.get("size");
-    if (count && size) size->fail("give either elements or size, not both");
-    if (!count && !size) {
-      DeckPlace at = f.place();
-      at.field = f.path() + ".elements";
-      throw DeckError(f.file(), at,
-                      "missing required field 'elements' (or 'size', the largest element length)");
-    }
-    if (count) s.elements = count->integer(ev, 1, kMaxElements);
-    if (size) s.size = size->positive(ev);
-    s.options = c.deck.beam;
-    if (auto form = f.get("formulation")) s.options.theory = formulationOf(*form);
-    const bool linearTimoshenko =
-        s.options.theory == BeamTheory::timoshenkoLinearFullIntegration ||
-        s.options.theory == BeamTheory::timoshenkoLinearReducedIntegration;
-    if (linearTimoshenko && !(s.section->kappaY > 0 && s.section->kappaZ > 0))
-      sf.fail("the linear Timoshenko element needs a shear coefficient: give the section kappa");
+    readSegmentMesh(c, f, s);
     elements += s.elementEstimate();
     if (!(elements <= kMaxElements))
       f.fail("the line would have more than " + std::to_string(kMaxElements) +

@@ -79,6 +79,9 @@ void resolveSide(const Deck& deck, const Quantity& q, const Field& f) {
   const std::string rotation(dofName(q.dof));
   const auto point = std::find_if(deck.points.begin(), deck.points.end(),
                                   [&](const DeckPoint& p) { return p.name == q.target; });
+  if (deck.frame && q.side != Quantity::Side::node)
+    f.fail("in a frame, 'left' and 'right' have no meaning; release rotations per member end "
+           "(members: release:) and ask for a point's own rotation");
   double length = 0;
   for (const DeckSegment& s : deck.segments) length += s.length;
   const double slack = 1e-9 * length;
@@ -103,6 +106,14 @@ void resolveSide(const Deck& deck, const Quantity& q, const Field& f) {
              ": the beam ends there turn independently and the point has no " + rotation +
              " of its own; ask for " + sides);
     }
+}
+
+/// Fails at `f` unless `name` is one of `names` (of `what`s, e.g. "point").
+void requireNamed(const Field& f, const std::string& name, const std::vector<std::string>& names,
+                  const std::string& what) {
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    f.fail("no " + what + " named '" + name + "'" + didYouMean(name, names) + " (" + what +
+           "s: " + joinNames(names) + ")");
 }
 
 /// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
@@ -156,19 +167,22 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
   }
   if (q.kind == Quantity::Kind::displacement) {
     std::vector<std::string> names;
-    bool found = false;
-    for (const DeckPoint& p : deck.points) {
-      found = found || p.name == q.target;
-      names.push_back(p.name);
-    }
-    if (!found)
-      f.fail("no point named '" + q.target + "'" + didYouMean(q.target, names) +
-             " (points: " + joinNames(names) + ")");
+    for (const DeckPoint& p : deck.points) names.push_back(p.name);
+    requireNamed(f, q.target, names, "point");
     if (!deck.dofs.contains(q.dof))
       f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
              c.carriedNames() + ")");
     resolveSide(deck, q, f);
   }
+  if (q.kind == Quantity::Kind::memberForce || q.kind == Quantity::Kind::memberDeflection) {
+    if (!deck.frame)
+      f.fail("member quantities need a frame (nodes: and members:); this deck is a line");
+    std::vector<std::string> names;
+    for (const DeckSegment& s : deck.segments) names.push_back(s.name);
+    requireNamed(f, q.target, names, "member");
+  }
+  if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
+    f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
   if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
   if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +

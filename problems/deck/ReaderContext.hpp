@@ -37,8 +37,16 @@ struct Context {
 void readMaterials(Context& c);
 /// Cross-sections into c.sections.
 void readSections(Context& c);
-/// Segments and points (plus the automatic "start" and "end").
+/// Segments and points (plus the automatic "start" and "end"), or a frame (readFrame).
 void readLine(Context& c);
+/// A segment's section, element count or size and formulation into s (length aside).
+void readSegmentMesh(const Context& c, const Field& f, DeckSegment& s);
+/// A frame: `nodes:`, `members:` (one segment each) and `points:` along members, plus the
+/// places `{member: NAME, at: FRACTION}` that attachments name (ReadFrame.cpp).
+void readFrame(Context& c);
+/// The point a `{member: NAME, at: FRACTION}` (or `at_length: METRES`) map names; readFrame
+/// made it.
+const DeckPoint& memberPoint(const Context& c, const Field& f);
 /// Supports, springs, contacts, masses, hinges and loads.
 void readAttachments(Context& c);
 /// A mass given as a disk's geometry {D, bore, width, rho}: its m, Jp, Jd into `mass`.

@@ -48,6 +48,10 @@ inline std::string collectionPvd(const std::string& stem) {
 inline std::string diagramsChart(const std::string& stem) {
   return stem + "_diagrams";
 }
+/// Statics of a frame: deformed shape and moment diagram of the whole frame.
+inline std::string frameShapeChart(const std::string& stem) {
+  return stem + "_frame";
+}
 inline std::string shapesChart(const std::string& stem) {
   return stem + "_shapes";
 }

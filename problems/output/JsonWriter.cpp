@@ -10,6 +10,7 @@
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FileWriting.hpp"
+#include "problems/output/MemberOutput.hpp"
 #include "problems/output/Reactions.hpp"
 #include "problems/output/RotorJson.hpp"
 #include "problems/output/TransientJson.hpp"
@@ -99,6 +100,10 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   Json out = {{"type", a.type}, {"name", a.name}};
   out["reactions"] = reactionsJson(r);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
+  if (!model.members().empty()) {
+    out["max_displacement"] = maxDisplacementJson(model, r.displacement);
+    out["members"] = membersJson(model, r.displacement, stem);
+  }
   for (const auto& [key, kind] : {std::pair{"max_stress", &ElementPeaks::stress},
                                   std::pair{"max_shear", &ElementPeaks::shear}})
     if (Json top = peakJson(model, largestAlongLine(model, peaks, kind)); !top.is_null())

@@ -12,6 +12,7 @@
 #include "problems/output/Charts.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FiniteCheck.hpp"
+#include "problems/output/FrameCharts.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/LineSampling.hpp"
 #include "problems/output/OverlaidDiagrams.hpp"
@@ -62,11 +63,20 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
     if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
     if (a.statics) {
       p.fields->write(dir / fieldsCsv(p.stem));
+      for (const CsvTable& member : p.members) member.write(dir / member.title());
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations, p.peaks);
-      if (charts && !p.stations.empty())
+      if (charts && !p.stations.empty() && p.members.empty())
         drawChart(dir,
                   staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
                                  {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
+      if (charts && !p.members.empty()) {
+        // A frame: the whole structure at once, not a line coordinate through its members.
+        std::vector<MemberSeries> series;
+        for (const CsvTable& member : p.members)
+          series.push_back({member.title(), &member, member.title()});
+        drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), model,
+                                  a.statics->displacement, series, run.dimension == "planar"));
+      }
     }
     if (a.transient)
       writeTransientFiles(dir, model, p.stem, *a.transient, *p.history,
@@ -144,7 +154,9 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
           files.push_back(directories[i] + "/" + fieldsCsv(stem));
           values.push_back(exactDecimal(sweep.values[i]));
         }
-        if (!prepared.front().analyses[k].stations.empty())
+        // Diagrams along a line; a frame's members are in its own files per value.
+        if (!prepared.front().analyses[k].stations.empty() &&
+            prepared.front().analyses[k].members.empty())
           drawOverlaidDiagrams(
               temporary,
               caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),

@@ -3,6 +3,7 @@
 
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FiniteCheck.hpp"
+#include "problems/output/MemberOutput.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
 
@@ -16,6 +17,7 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
     for (const std::optional<CsvTable>* t :
          {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance})
       if (*t) all.emplace_back((*t)->title(), &**t);
+  for (const CsvTable& t : members) all.emplace_back(t.title(), &t);
   return all;
 }
 
@@ -29,12 +31,14 @@ PreparedRun prepareRun(const RunResult& run) {
   PreparedRun prepared{&run, {}, {}};
   std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}};
     if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
     if (a.statics) {
       p.stations = sampleStatics(model, a.statics->displacement);
       p.peaks = elementPeaks(model, a.statics->displacement);
       p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
+      for (const auto& [name, elements] : model.members())
+        p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
     }
     if (a.modal) {
       p.modes = modesTable(modesCsv(p.stem), *a.modal);

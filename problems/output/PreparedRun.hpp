@@ -28,6 +28,7 @@ struct PreparedAnalysis {
   std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
   std::optional<PreparedRotor> rotor;   ///< rotor analyses
+  std::vector<CsvTable> members;        ///< statics of a frame: <stem>_member_<name>.csv each
 
   /// Every table this analysis has, each with its CSV file name, in writing order.
   std::vector<std::pair<std::string, const CsvTable*>> tables() const;

@@ -13,6 +13,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "fem/assembly/Recovery.hpp"
@@ -42,6 +43,38 @@ std::vector<const LineElement*> lineElements(const Model& model, std::vector<int
     }
   return lines;
 }
+
+/// The element's local triad as cell vectors local_x, local_y, local_z, the distances to the
+/// outer fibres along local y and z (outer_y, outer_z; m) per cell, and per point the
+/// largest outer distance of the elements meeting there (tube_radius, m): ParaView's Tube
+/// filter with "Vary Radius: By Absolute Scalar" on it draws the members at their true size,
+/// and Glyph on the triad shows how each member is turned.
+namespace {
+
+void addSectionGeometry(vtkUnstructuredGrid& grid, const std::vector<const LineElement*>& lines) {
+  const vtkIdType cells = vtkIdType(lines.size());
+  std::array<vtkSmartPointer<vtkDoubleArray>, 3> axes{doubleArray("local_x", 3, cells),
+                                                      doubleArray("local_y", 3, cells),
+                                                      doubleArray("local_z", 3, cells)};
+  auto outerY = doubleArray("outer_y", 1, cells), outerZ = doubleArray("outer_z", 1, cells);
+  auto radius = doubleArray("tube_radius", 1, grid.GetNumberOfPoints());
+  radius->Fill(0);
+  for (vtkIdType c = 0; c < cells; ++c) {
+    const Eigen::Matrix3d R = lines[c]->localAxes();
+    for (int k = 0; k < 3; ++k) axes[k]->SetTuple3(c, R(k, 0), R(k, 1), R(k, 2));
+    const Section& s = lines[c]->section();
+    outerY->SetValue(c, s.outerY);
+    outerZ->SetValue(c, s.outerZ);
+    for (int node : lines[c]->endNodes())
+      radius->SetValue(node, std::max(radius->GetValue(node), std::max(s.outerY, s.outerZ)));
+  }
+  for (const auto& a : axes) grid.GetCellData()->AddArray(a);
+  grid.GetCellData()->AddArray(outerY);
+  grid.GetCellData()->AddArray(outerZ);
+  grid.GetPointData()->AddArray(radius);
+}
+
+}  // namespace
 
 /// Points, VTK_LINE cells and the cell data every file carries (element index, section).
 vtkSmartPointer<vtkUnstructuredGrid> lineGrid(const Model& model) {
@@ -73,6 +106,7 @@ vtkSmartPointer<vtkUnstructuredGrid> lineGrid(const Model& model) {
   }
   grid->GetCellData()->AddArray(element);
   for (vtkDoubleArray* a : {A.Get(), Iy.Get(), Iz.Get(), E.Get()}) grid->GetCellData()->AddArray(a);
+  addSectionGeometry(*grid, lines);
   return grid;
 }
 

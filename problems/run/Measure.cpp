@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/DofMap.hpp"
 #include "problems/run/MeasureRotor.hpp"
@@ -55,6 +56,24 @@ double measureDisplacement(const Quantity& q, const StaticResult& r, const Model
   return r.displacement(node, k);
 }
 
+/// A member quantity: an extreme of one resultant, or the deflection from the chord.
+double measureMember(const Quantity& q, const StaticResult& r, const Model& model) {
+  for (const auto& [name, elements] : model.members()) {
+    if (name != q.target) continue;
+    if (q.kind == Quantity::Kind::memberDeflection)
+      return largestChordDeflection(model, elements, r.displacement).value;
+    const auto ranges = memberForceRanges(model, elements, r.displacement);
+    for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
+      if (q.property != componentName(kForceComponents[c])) continue;
+      const ComponentRange& range = ranges[c];
+      if (q.extreme == "max") return range.max.value;
+      if (q.extreme == "min") return range.min.value;
+      return std::max(std::abs(range.max.value), std::abs(range.min.value));
+    }
+  }
+  throw std::invalid_argument("'" + q.text + "': the model has no member '" + q.target + "'");
+}
+
 }  // namespace
 
 double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
@@ -80,6 +99,11 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
       return r.reaction(q.target, q.dof);
     case Quantity::Kind::displacement:
       return measureDisplacement(q, r, model);
+    case Quantity::Kind::maxDisplacement:
+      return largestDisplacement(model, r.displacement).value;
+    case Quantity::Kind::memberForce:
+    case Quantity::Kind::memberDeflection:
+      return measureMember(q, r, model);
     default: {
       // The exact element peaks (the same numbers results.json and the summary report); a
       // value that is not finite anywhere makes the quantity NaN, and its check fail.

@@ -1,10 +1,13 @@
 #include "problems/run/ModelBuilder.hpp"
 
 #include <algorithm>
+#include <map>
+#include <vector>
 
 #include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/Spring.hpp"
+#include "meshes/FrameBuilder.hpp"
 #include "meshes/LineBuilder.hpp"
 
 namespace beamrotor {
@@ -41,6 +44,55 @@ std::vector<int> segmentOfBeams(const Deck& deck, const Line& line) {
 /// Supports, springs, contacts, masses and point loads at their nodes (model: not null).
 void addAttachments(const Deck& deck, Model* model);
 
+/// The beams of the model in order and the deck segment (a frame's member) of each.
+struct BuiltBeams {
+  std::vector<Beam*> beams;
+  std::vector<int> segmentOf;
+};
+
+/// The line: segments cut at every named point.
+BuiltBeams addLine(const Deck& deck, Model& model) {
+  LineSpec spec;
+  spec.dofs = deck.dofs;
+  for (const DeckSegment& s : deck.segments)
+    spec.segments.push_back({s.length, s.section, s.elements, s.size, s.options});
+  for (const DeckPoint& p : deck.points) spec.points.push_back({p.name, p.at});
+  Line line;
+  at(deck, deck.segments.front().place, [&] { line = buildLine(model, spec); });
+  return {line.beams, segmentOfBeams(deck, line)};
+}
+
+/// The frame: joints, members cut at their stations; each member named in the model.
+BuiltBeams addFrame(const Deck& deck, Model& model) {
+  const DeckFrame& frame = *deck.frame;
+  FrameSpec spec;
+  spec.dofs = deck.dofs;
+  for (const DeckJoint& j : frame.joints) spec.joints.push_back({j.name, j.x});
+  for (std::size_t m = 0; m < frame.members.size(); ++m) {
+    const DeckSegment& s = deck.segments[m];
+    const DeckMember& member = frame.members[m];
+    spec.members.push_back({member.from, member.to,
+                            Segment{s.length, s.section, s.elements, s.size, s.options},
+                            member.orientation, member.releases});
+  }
+  spec.stations = frame.stations;
+  FrameMesh mesh;
+  at(deck, frame.members.front().place, [&] { mesh = buildFrame(model, spec); });
+  BuiltBeams out;
+  std::map<const Element*, int> index;
+  for (std::size_t e = 0; e < model.elements().size(); ++e) index[model.elements()[e].get()] = int(e);
+  for (std::size_t m = 0; m < mesh.memberBeams.size(); ++m) {
+    std::vector<int> elements;
+    for (Beam* beam : mesh.memberBeams[m]) {
+      out.beams.push_back(beam);
+      out.segmentOf.push_back(int(m));
+      elements.push_back(index.at(beam));
+    }
+    model.addMember(deck.segments[m].name, std::move(elements));
+  }
+  return out;
+}
+
 bool acts(const DeckLoad& l, int segment) {
   return l.segments.empty() ||
          std::find(l.segments.begin(), l.segments.end(), segment) != l.segments.end();
@@ -73,25 +125,20 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
     return model;
   }
 
-  // 1. The line: segments cut at every named point.
-  LineSpec spec;
-  spec.dofs = deck.dofs;
-  for (const DeckSegment& s : deck.segments)
-    spec.segments.push_back({s.length, s.section, s.elements, s.size, s.options});
-  for (const DeckPoint& p : deck.points) spec.points.push_back({p.name, p.at});
-  Line line;
-  at(deck, deck.segments.front().place, [&] { line = buildLine(*model, spec); });
-  const std::vector<int> segmentOf = segmentOfBeams(deck, line);
+  // 1. The beams: a line of segments cut at every named point, or a frame's members.
+  const BuiltBeams beams = deck.frame ? addFrame(deck, *model) : addLine(deck, *model);
 
   // 2. Distributed loads and self-weight, summed per beam (a beam holds one uniform load).
-  for (std::size_t b = 0; b < line.beams.size(); ++b) {
+  for (std::size_t b = 0; b < beams.beams.size(); ++b) {
+    Beam& beam = *beams.beams[b];
     Eigen::Vector3d q = Eigen::Vector3d::Zero();
     for (const DeckLoad& l : deck.loads) {
-      if (!acts(l, segmentOf[b])) continue;
-      if (l.kind == DeckLoad::Kind::distributed) q += l.q;
-      if (l.kind == DeckLoad::Kind::selfWeight) q.y() -= line.beams[b]->section().rhoA() * l.g;
+      if (!acts(l, beams.segmentOf[b])) continue;
+      if (l.kind == DeckLoad::Kind::distributed)
+        q += l.inMemberAxes ? Eigen::Vector3d(beam.localAxes().transpose() * l.q) : l.q;
+      if (l.kind == DeckLoad::Kind::selfWeight) q.y() -= beam.section().rhoA() * l.g;
     }
-    if (!q.isZero()) line.beams[b]->setDistributedLoad(q);
+    if (!q.isZero()) beam.setDistributedLoad(q);
   }
 
   // 3. Hinges: release the rotations of every beam end at the point; a rotation released on
@@ -99,7 +146,7 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
   for (const DeckHinge& h : deck.hinges)
     at(deck, h.place, [&] {
       const int node = model->node(h.point);
-      for (Beam* beam : line.beams)
+      for (Beam* beam : beams.beams)
         for (int end = 0; end < 2; ++end)
           if (beam->endNodes()[end] == node)
             for (Dof d : h.released) beam->release(end, d);

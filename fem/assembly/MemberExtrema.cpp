@@ -1,0 +1,198 @@
+#include "fem/assembly/MemberExtrema.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/Polynomial.hpp"
+#include "fem/assembly/Recovery.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Values at s = 0, 1/4, .., 1 determine a polynomial of degree <= 4 exactly.
+constexpr int kDisplacementSamples = 5;
+
+/// The three translations along a line element as polynomials in s (static, span load
+/// applied): interpolated through five places, exact for degree <= 4.
+std::array<Polynomial, 3> translationSeries(const LineElement& element, const NodalField& u) {
+  Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples> V;
+  Eigen::Matrix<double, kDisplacementSamples, 3> values;
+  for (int i = 0; i < kDisplacementSamples; ++i) {
+    const double s = double(i) / (kDisplacementSamples - 1);
+    for (int k = 0; k < kDisplacementSamples; ++k) V(i, k) = std::pow(s, k);
+    const auto d = displacementAlong(element, u, s, SpanLoad::applied);
+    for (int c = 0; c < 3; ++c) values(i, c) = d[c];
+  }
+  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients =
+      V.fullPivLu().solve(values);
+  std::array<Polynomial, 3> out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = Polynomial(coefficients.col(c).data(),
+                        coefficients.col(c).data() + kDisplacementSamples);
+  return out;
+}
+
+/// The largest of sqrt(P(s)) over [0, 1] for a polynomial P >= 0: at an end or where P' = 0.
+std::pair<double, double> largestRoot(const Polynomial& P) {
+  std::vector<double> places{0, 1};
+  for (double s : zerosInUnitInterval(derivativeOf(P))) places.push_back(s);
+  std::pair<double, double> best{0, -std::numeric_limits<double>::infinity()};
+  for (double s : places) {
+    const double v = std::sqrt(std::max(0.0, valueAt(P, s)));
+    if (std::isnan(valueAt(P, s))) return {s, std::numeric_limits<double>::quiet_NaN()};
+    if (v > best.second) best = {s, v};
+  }
+  return best;
+}
+
+const LineElement& lineElement(const Model& model, int e) {
+  const LineElement* line = asLine(model.elements().at(e));
+  if (!line) throw std::invalid_argument("element " + std::to_string(e) + " is not a beam");
+  return *line;
+}
+
+/// A value at fraction s of element e, `along` m from its member's start.
+MemberValue memberValue(const Model& model, int e, double s, double along, double value) {
+  return {e, s, along, value, placeOnElement(model, e, s)};
+}
+
+}  // namespace
+
+const char* componentName(ForceComponent c) {
+  static constexpr std::array<const char*, 6> names{"N", "Vy", "Vz", "T", "My", "Mz"};
+  return names[int(c)];
+}
+
+double componentOf(const SectionForces& f, ForceComponent c) {
+  switch (c) {
+    case ForceComponent::N:
+      return f.N;
+    case ForceComponent::Vy:
+      return f.Vy;
+    case ForceComponent::Vz:
+      return f.Vz;
+    case ForceComponent::T:
+      return f.T;
+    case ForceComponent::My:
+      return f.My;
+    default:
+      return f.Mz;
+  }
+}
+
+Eigen::Vector3d placeOnElement(const Model& model, int element, double s) {
+  const auto [a, b] = lineElement(model, element).endNodes();
+  return (1 - s) * model.nodes()[a] + s * model.nodes()[b];
+}
+
+std::optional<std::pair<int, double>> memberLocation(const Model& model, int element, double s) {
+  for (std::size_t m = 0; m < model.members().size(); ++m) {
+    double start = 0;
+    for (int e : model.members()[m].second) {
+      const double length = lineElement(model, e).length();
+      if (e == element) return std::pair{int(m), start + s * length};
+      start += length;
+    }
+  }
+  return std::nullopt;
+}
+
+std::array<ComponentRange, 6> memberForceRanges(const Model& model,
+                                                const std::vector<int>& elements,
+                                                const NodalField& displacement) {
+  std::array<ComponentRange, 6> out;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (ComponentRange& r : out) r.max.value = -inf, r.min.value = inf;
+  double start = 0;
+  for (int e : elements) {
+    const LineElement& line = lineElement(model, e);
+    const SectionForceSeries series =
+        line.sectionForceSeries(elementValues(line, displacement));
+    for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
+      const ForceComponent component = kForceComponents[c];
+      const Polynomial p{componentOf(series.c[0], component), componentOf(series.c[1], component),
+                         componentOf(series.c[2], component)};
+      // A polynomial's extremes: the ends and the zeros of its derivative.
+      std::vector<double> places{0, 1};
+      for (double s : zerosInUnitInterval(derivativeOf(p))) places.push_back(s);
+      for (double s : places) {
+        const double v = valueAt(p, s);
+        const MemberValue here = memberValue(model, e, s, start + s * line.length(), v);
+        if (std::isnan(v)) out[c].max = out[c].min = here;
+        if (v > out[c].max.value) out[c].max = here;
+        if (v < out[c].min.value) out[c].min = here;
+      }
+    }
+    start += line.length();
+  }
+  return out;
+}
+
+MemberValue largestChordDeflection(const Model& model, const std::vector<int>& elements,
+                                   const NodalField& displacement) {
+  if (elements.empty()) throw std::invalid_argument("a member needs at least one element");
+  const LineElement& first = lineElement(model, elements.front());
+  const LineElement& last = lineElement(model, elements.back());
+  const Eigen::Vector3d x0 = model.nodes()[first.endNodes()[0]];
+  const Eigen::Vector3d chord = model.nodes()[last.endNodes()[1]] - x0;
+  const double length = chord.norm();
+  const Eigen::Vector3d axis = chord / length;
+  const auto endTranslation = [&](const LineElement& line, double s) {
+    const auto d = displacementAlong(line, displacement, s, SpanLoad::applied);
+    return Eigen::Vector3d(d[0], d[1], d[2]);
+  };
+  const Eigen::Vector3d u0 = endTranslation(first, 0), u1 = endTranslation(last, 1);
+
+  MemberValue best{elements.front(), 0, 0, -std::numeric_limits<double>::infinity()};
+  double start = 0;
+  for (int e : elements) {
+    const LineElement& line = lineElement(model, e);
+    // Member fraction t = t0 + s dt along this element; chord displacement linear in t.
+    const double t0 = (model.nodes()[line.endNodes()[0]] - x0).dot(axis) / length;
+    const double dt = line.length() / length;
+    const std::array<Polynomial, 3> u = translationSeries(line, displacement);
+    std::array<Polynomial, 3> deviation;
+    for (int c = 0; c < 3; ++c) {
+      const Polynomial chordPart{u0[c] + t0 * (u1[c] - u0[c]), dt * (u1[c] - u0[c])};
+      deviation[c] = combination(1, u[c], -1, chordPart);
+    }
+    // Across the chord: remove the part along its original direction.
+    Polynomial along;
+    for (int c = 0; c < 3; ++c) along = combination(1, along, axis[c], deviation[c]);
+    Polynomial squared = combination(-1, productOf(along, along), 0, {});
+    for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(deviation[c], deviation[c]));
+    const auto [s, value] = largestRoot(squared);
+    if (std::isnan(value) || value > best.value)
+      best = memberValue(model, e, s, start + s * line.length(), value);
+    if (std::isnan(value)) return best;
+    start += line.length();
+  }
+  return best;
+}
+
+MemberValue largestDisplacement(const Model& model, const NodalField& displacement) {
+  MemberValue best{-1, 0, 0, -std::numeric_limits<double>::infinity()};
+  for (int n = 0; n < model.nodeCount(); ++n) {
+    const double v = std::sqrt(std::pow(displacement(n, 0), 2) + std::pow(displacement(n, 1), 2) +
+                               std::pow(displacement(n, 2), 2));
+    if (std::isnan(v) || v > best.value) best = {-1, double(n), 0, v, model.nodes()[n]};
+    if (std::isnan(v)) return best;
+  }
+  for (int e = 0; e < int(model.elements().size()); ++e) {
+    const LineElement* line = asLine(model.elements()[e]);
+    if (!line) continue;
+    const std::array<Polynomial, 3> u = translationSeries(*line, displacement);
+    Polynomial squared;
+    for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(u[c], u[c]));
+    const auto [s, value] = largestRoot(squared);
+    if (std::isnan(value) || value > best.value)
+      best = memberValue(model, e, s, s * line->length(), value);
+    if (std::isnan(value)) return best;
+  }
+  return best;
+}
+
+}  // namespace beamrotor

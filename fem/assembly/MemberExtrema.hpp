@@ -1,0 +1,69 @@
+// The exact extrema along a model's members (Model::members, chains of line elements): the
+// largest and smallest value of each stress resultant (SectionForceSeries are polynomials in
+// the position, so the extremes lie at an element end or where a derivative vanishes), the
+// largest deflection of a member from its chord, and the largest displacement of the whole
+// structure, inside elements as well as at nodes. Displacements along an element are
+// polynomials of degree at most 4 (cubic shape functions plus the uniform span load's quartic),
+// recovered exactly from five values, so these too are found from polynomials, not samples.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <utility>
+#include <string>
+#include <vector>
+
+#include "fem/model/LineElement.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
+
+namespace beamrotor {
+
+/// The six stress resultants, in the order of SectionForces.
+enum class ForceComponent { N, Vy, Vz, T, My, Mz };
+inline constexpr std::array<ForceComponent, 6> kForceComponents{
+    ForceComponent::N,  ForceComponent::Vy, ForceComponent::Vz,
+    ForceComponent::T, ForceComponent::My, ForceComponent::Mz};
+/// "N", "Vy", "Vz", "T", "My", "Mz".
+const char* componentName(ForceComponent c);
+/// The component of f.
+double componentOf(const SectionForces& f, ForceComponent c);
+
+/// A value at a place on a member.
+struct MemberValue {
+  int element = -1;   ///< index into model.elements()
+  double s = 0;       ///< fraction of that element's length
+  double along = 0;   ///< distance from the member's start (m)
+  double value = 0;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();  ///< the place, undeformed (m, global)
+};
+
+/// The undeformed place (m, global) at fraction s of line element `element`.
+Eigen::Vector3d placeOnElement(const Model& model, int element, double s);
+
+/// Where fraction s of element `element` lies on the model's members: the member's index
+/// into Model::members() and the distance from its start (m); nullopt when no member holds it.
+std::optional<std::pair<int, double>> memberLocation(const Model& model, int element, double s);
+
+/// The largest and smallest value of one resultant along a member.
+struct ComponentRange {
+  MemberValue max, min;
+};
+
+/// Resultant ranges of member `elements` (line elements from its start to its end) in a
+/// static solution, in the order of kForceComponents.
+std::array<ComponentRange, 6> memberForceRanges(const Model& model,
+                                                const std::vector<int>& elements,
+                                                const NodalField& displacement);
+
+/// The largest distance (m) of the member's deflected axis from its deflected chord (the line
+/// through its displaced ends), measured across the chord's original direction.
+MemberValue largestChordDeflection(const Model& model, const std::vector<int>& elements,
+                                   const NodalField& displacement);
+
+/// The largest translation magnitude (m) anywhere: inside every line element (static
+/// solution with its span loads) and at every node. element is -1 for a node off the beams
+/// (then `along` is unused and s is the node index).
+MemberValue largestDisplacement(const Model& model, const NodalField& displacement);
+
+}  // namespace beamrotor
