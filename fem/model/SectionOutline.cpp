@@ -10,7 +10,6 @@ namespace beamrotor {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 /// Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial). 16 points
 /// integrate polynomials up to degree 31 exactly; along an arc the integrands below are
@@ -21,7 +20,7 @@ struct GaussRule {
   std::array<double, n> x{}, w{};
   GaussRule() {
     for (int i = 0; i < n; ++i) {
-      double t = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1;
+      double t = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1;
       for (int iteration = 0; iteration < 100; ++iteration) {
         double p0 = 1, p1 = t;
         for (int k = 2; k <= n; ++k) {
@@ -76,7 +75,7 @@ std::vector<Rounded> roundCorners(const OutlineLoop& loop) {
     const OutlineCorner& c = loop[i];
     const OutlineCorner& q = loop[(i + 1) % n];
     const double inA = std::atan2(c.z - p.z, c.y - p.y), outA = std::atan2(q.z - c.z, q.y - c.y);
-    const double turn = std::remainder(outA - inA, 2 * kPi);
+    const double turn = std::remainder(outA - inA, 2 * std::numbers::pi);
     const double r = c.radius;
     if (!(std::isfinite(r) && r >= 0))
       throw std::invalid_argument("corner radii must be non-negative");
@@ -91,7 +90,7 @@ std::vector<Rounded> roundCorners(const OutlineLoop& loop) {
     k.cy = k.y1 - side * r * std::sin(inA);
     k.cz = k.z1 + side * r * std::cos(inA);
     k.radius = r;
-    k.start = inA - side * kPi / 2;
+    k.start = inA - side * std::numbers::pi / 2;
     k.turn = r > 0 ? turn : 0;
     k.bend = turn;
     k.inAngle = inA;
@@ -170,7 +169,7 @@ std::vector<StressFibre> outlineFibres(const OutlineLoop& outer, const OutlinePr
     }
     const auto [y, z] = local(k.cy, k.cz);
     // Outward normals on the arc run from the incoming edge's right normal over the turn.
-    fibres.push_back(StressFibre{y, z, k.radius, k.inAngle - kPi / 2 - p.principalAngle, k.turn});
+    fibres.push_back(StressFibre{y, z, k.radius, k.inAngle - std::numbers::pi / 2 - p.principalAngle, k.turn});
   }
   return fibres;
 }

@@ -13,7 +13,7 @@ namespace beamrotor {
 
 namespace {
 
-void require(bool ok, const std::string& what) {
+void requireShapeValue(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
 }
 
@@ -70,11 +70,11 @@ double openTorsion(const std::vector<Wall>& walls) {
 
 Section iSection(std::string name, const Material& m, double h, double b, double tw, double tf,
                  double r) {
-  require(positive(h) && positive(b) && positive(tw) && positive(tf) && nonNegative(r),
+  requireShapeValue(positive(h) && positive(b) && positive(tw) && positive(tf) && nonNegative(r),
           "I-section dimensions h, b, tw, tf must be positive and r non-negative");
-  require(2 * tf < h, "the flanges (2 tf) must be thinner than the depth h");
-  require(tw + 2 * r <= b, "the web and its root fillets (tw + 2 r) must fit in the width b");
-  require(2 * (tf + r) <= h, "the flanges and root fillets (2 (tf + r)) must fit in the depth h");
+  requireShapeValue(2 * tf < h, "the flanges (2 tf) must be thinner than the depth h");
+  requireShapeValue(tw + 2 * r <= b, "the web and its root fillets (tw + 2 r) must fit in the width b");
+  requireShapeValue(2 * (tf + r) <= h, "the flanges and root fillets (2 (tf + r)) must fit in the depth h");
   const double y = h / 2, yi = h / 2 - tf, z = b / 2, zw = tw / 2;
   const OutlineLoop outline{{-y, -z},     {-yi, -z},    {-yi, -zw, r}, {yi, -zw, r},
                             {yi, -z},     {y, -z},      {y, z},        {yi, z},
@@ -111,14 +111,14 @@ Section iSection(std::string name, const Material& m, double h, double b, double
 
 Section channelSection(std::string name, const Material& m, double h, double b, double tw,
                        double tf, double r, double rToe, double taper) {
-  require(positive(h) && positive(b) && positive(tw) && positive(tf) && nonNegative(r) &&
+  requireShapeValue(positive(h) && positive(b) && positive(tw) && positive(tf) && nonNegative(r) &&
               nonNegative(rToe) && nonNegative(taper),
           "channel dimensions h, b, tw, tf must be positive and r, r_toe, taper non-negative");
-  require(tw < b, "a channel needs tw < b");
+  requireShapeValue(tw < b, "a channel needs tw < b");
   // The inner faces of the flanges: tf thick at b/2, thinner towards the toes by the taper.
   const double y = h / 2, atRoot = y - tf - taper * (b / 2 - tw), atToe = y - tf + taper * b / 2;
-  require(atRoot > 0, "the flanges (tf, with their taper) must leave room for the web");
-  require(atToe < y, "the taper leaves the flange tips no thickness");
+  requireShapeValue(atRoot > 0, "the flanges (tf, with their taper) must leave room for the web");
+  requireShapeValue(atToe < y, "the taper leaves the flange tips no thickness");
   const OutlineLoop outline{{-y, 0},          {y, 0},           {y, b},
                             {atToe, b, rToe}, {atRoot, tw, r},  {-atRoot, tw, r},
                             {-atToe, b, rToe}, {-y, b}};
@@ -147,9 +147,9 @@ double angleLegAngle(double h, double b, double t, double r, double rToe) {
 
 Section angleSection(std::string name, const Material& m, double h, double b, double t, double r,
                      double rToe) {
-  require(positive(h) && positive(b) && positive(t) && nonNegative(r) && nonNegative(rToe),
+  requireShapeValue(positive(h) && positive(b) && positive(t) && nonNegative(r) && nonNegative(rToe),
           "angle dimensions h, b, t must be positive and r, r_toe non-negative");
-  require(t < h && t < b, "the legs must be longer than the thickness t");
+  requireShapeValue(t < h && t < b, "the legs must be longer than the thickness t");
   const OutlineLoop outline = angleOutline(h, b, t, r, rToe);
   Section s = fromOutline(std::move(name), Section::Shape::angle, m, {outline}, std::max(h, b));
   // Midline legs from the heel's midline corner (t/2, t/2), in principal axes.
@@ -171,10 +171,10 @@ Section angleSection(std::string name, const Material& m, double h, double b, do
 
 Section hollowRectangleSection(std::string name, const Material& m, double h, double b, double t,
                                double ro, double ri) {
-  require(positive(h) && positive(b) && positive(t) && nonNegative(ro) && nonNegative(ri),
+  requireShapeValue(positive(h) && positive(b) && positive(t) && nonNegative(ro) && nonNegative(ri),
           "hollow section dimensions h, b, t must be positive and the radii non-negative");
-  require(2 * t < std::min(h, b), "the wall t must be thinner than half the smaller side");
-  require(2 * ro <= std::min(h, b) && 2 * ri <= std::min(h, b) - 2 * t,
+  requireShapeValue(2 * t < std::min(h, b), "the wall t must be thinner than half the smaller side");
+  requireShapeValue(2 * ro <= std::min(h, b) && 2 * ri <= std::min(h, b) - 2 * t,
           "the corner radii must fit the sides");
   const double y = h / 2, z = b / 2, yi = y - t, zi = z - t;
   const OutlineLoop outer{{-y, -z, ro}, {y, -z, ro}, {y, z, ro}, {-y, z, ro}};

@@ -96,7 +96,8 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   else
     // The vertical range holds the magnified shape and the diagrams (a flat frame would
     // otherwise get a sliver of an axis crowded with ticks).
-    body << "  set view equal xyz\n  set view 64, 28\n  set zrange ["
+    // Shrunk a little and the z ticks moved off the corner they share with the x axis' last tick.
+    body << "  set view equal xyz\n  set view 64, 28, 0.9\n  set ytics offset 1.5,0\n  set zrange ["
          << number(low.y() - 0.2 * size) << ":" << number(high.y() + 0.2 * size)
          << "]\n  set xyplane at " << number(low.y() - 0.2 * size)
          << "\n  set xlabel 'x [m]'\n  set ylabel 'z [m]'\n  set zlabel 'y [m]'\n";
