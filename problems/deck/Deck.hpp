@@ -113,6 +113,29 @@ struct DeckLoad {
   DeckPlace place;
 };
 
+/// A named load case (`load_cases:`): loads in the syntax of `loads:`, solved on its own by
+/// each static analysis.
+struct DeckLoadCase {
+  std::string name;
+  std::vector<DeckLoad> loads;
+  DeckPlace place;
+};
+
+/// A named combination (`combinations:`): the factored sum of load cases.
+struct DeckCombination {
+  std::string name;
+  std::vector<std::pair<std::string, double>> factors;  ///< case name, factor; deck order
+  DeckPlace place;
+};
+
+/// A load scaled by a factor (point components, q, or g for self-weight).
+inline DeckLoad scaledLoad(DeckLoad l, double factor) {
+  for (auto& [d, value] : l.components) value *= factor;
+  l.q *= factor;
+  l.g *= factor;
+  return l;
+}
+
 /// One analysis to run.
 struct DeckAnalysis {
   std::string type;  ///< "static", "modal", "transient" or a rotor analysis (isRotorAnalysis)
@@ -129,6 +152,7 @@ struct DeckCheck {
   std::string name;
   Quantity quantity;
   std::string analysis;  ///< the analysis it reads (resolved: never empty)
+  std::string loadCase;  ///< `case:`: a load case or combination of a static analysis; or empty
   double reference = 0;
   double tolerance = 0;    ///< on the relative error
   bool applicable = true;  ///< false when its `when:` condition is false
@@ -169,6 +193,8 @@ struct Deck {
   std::vector<DeckMass> masses;
   std::vector<DeckHinge> hinges;
   std::vector<DeckLoad> loads;
+  std::vector<DeckLoadCase> loadCases;        ///< `load_cases:`, deck order
+  std::vector<DeckCombination> combinations;  ///< `combinations:`, deck order
   DeckRotorModel rotor;  ///< bearings and proportional damping
   std::vector<DeckAnalysis> analyses;
   std::vector<DeckCheck> checks;

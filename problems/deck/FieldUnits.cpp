@@ -37,6 +37,10 @@ const Table& table() {
     add(t, "loads[].", {"mx", "my", "mz"}, dim::moment);
     add(t, "loads[].", {"qx", "qy", "qz"}, dim::forcePerLength);
     add(t, "loads[].", {"g"}, dim::acceleration);
+    add(t, "load_cases[].loads[].", {"fx", "fy", "fz"}, dim::force);
+    add(t, "load_cases[].loads[].", {"mx", "my", "mz"}, dim::moment);
+    add(t, "load_cases[].loads[].", {"qx", "qy", "qz"}, dim::forcePerLength);
+    add(t, "load_cases[].loads[].", {"g"}, dim::acceleration);
     add(t, "analyses[].", {"dt", "end", "period"}, dim::time);
     add(t, "analyses[].rayleigh.", {"alpha"}, dim::frequency);
     add(t, "analyses[].rayleigh.", {"beta"}, dim::time);

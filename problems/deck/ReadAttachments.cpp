@@ -235,11 +235,10 @@ std::vector<int> loadedSegments(const Context& c, const Field& load) {
   return out;
 }
 
-void readLoads(Context& c) {
-  auto loads = block(c, "loads");
-  if (!loads) return;
+/// The loads of one list (`loads:` or a load case's `loads:`), appended to out.
+void readLoadList(Context& c, const Field& list, std::vector<DeckLoad>& out) {
   const ExpressionEvaluator& ev = c.evaluator;
-  for (const Field& f : loads->items()) {
+  for (const Field& f : list.items()) {
     if (!f.isMap()) f.fail("expected a map describing a load, got " + f.describe());
     const std::string type = f.require("type").choice({"point", "distributed", "self-weight"});
     DeckLoad l;
@@ -297,8 +296,68 @@ void readLoads(Context& c) {
                  " has no rho");
       }
     }
-    c.deck.loads.push_back(std::move(l));
+    out.push_back(std::move(l));
   }
+}
+
+void readLoads(Context& c) {
+  if (auto loads = block(c, "loads")) readLoadList(c, *loads, c.deck.loads);
+}
+
+/// `load_cases:` (named lists of loads) and `combinations:` (factors on those names).
+void readLoadCases(Context& c) {
+  std::vector<std::string> names;
+  if (auto cases = block(c, "load_cases")) {
+    for (const Field& f : cases->items()) {
+      if (!f.isMap()) f.fail("expected a map {name:, loads: [...]}, got " + f.describe());
+      f.allowOnly({"name", "loads"}, "a load case");
+      DeckLoadCase lc;
+      lc.place = f.place();
+      const Field nameField = f.require("name");
+      lc.name = nameField.text();
+      if (std::find(names.begin(), names.end(), lc.name) != names.end())
+        nameField.fail("load case '" + lc.name + "' is defined twice");
+      names.push_back(lc.name);
+      const Field list = f.require("loads");
+      if (!list.isList()) list.fail("expected a list of loads, got " + list.describe());
+      readLoadList(c, list, lc.loads);
+      c.deck.loadCases.push_back(std::move(lc));
+    }
+  }
+  if (auto combos = block(c, "combinations")) {
+    if (c.deck.loadCases.empty())
+      combos->fail("combinations factor load cases: define them under load_cases:");
+    for (const Field& f : combos->items()) {
+      if (!f.isMap()) f.fail("expected a map {name:, factors: {case: factor}}, got " + f.describe());
+      f.allowOnly({"name", "factors"}, "a combination");
+      DeckCombination k;
+      k.place = f.place();
+      const Field nameField = f.require("name");
+      k.name = nameField.text();
+      if (std::find(names.begin(), names.end(), k.name) != names.end())
+        nameField.fail("'" + k.name + "' already names a load case or combination");
+      names.push_back(k.name);
+      for (const auto& [key, value] : f.require("factors").entries()) {
+        const bool known = std::any_of(c.deck.loadCases.begin(), c.deck.loadCases.end(),
+                                       [&](const DeckLoadCase& lc) { return lc.name == key; });
+        if (!known) value.fail("no load case '" + key + "' (load_cases: defines the names)");
+        k.factors.emplace_back(key, value.number(c.evaluator));
+      }
+      if (k.factors.empty()) f.require("factors").fail("a combination needs at least one factor");
+      c.deck.combinations.push_back(std::move(k));
+    }
+  }
+  if (c.deck.loadCases.empty()) return;
+  // Cases are superposed: the model must be linear in its loads.
+  if (!c.deck.contacts.empty())
+    block(c, "load_cases")->fail("load cases are superposed, and contacts are not linear: "
+                                 "remove contacts: or the load cases");
+  for (const DeckSupport& s : c.deck.supports)
+    for (const auto& [d, value] : s.dofs)
+      if (value != 0)
+        block(c, "load_cases")
+            ->fail("load cases are superposed: support '" + s.name +
+                   "' prescribes a nonzero value, which every case would repeat");
 }
 
 }  // namespace
@@ -310,6 +369,7 @@ void readAttachments(Context& c) {
   readMasses(c);
   readHinges(c);
   readLoads(c);
+  readLoadCases(c);
   // A model without beams needs something to move and something to hold it.
   if (!c.deck.segments.empty()) return;
   if (c.deck.masses.empty())

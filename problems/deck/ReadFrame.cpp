@@ -218,6 +218,9 @@ void collectInlinePlaces(Context& c) {
   for (const char* block : {"supports", "springs", "contacts", "masses", "hinges", "loads",
                             "bearings"})
     visitList(c.root.get(block));
+  if (auto cases = c.root.get("load_cases"); cases && cases->isList())
+    for (const Field& lc : cases->items())
+      if (lc.isMap()) visitList(lc.get("loads"));
   if (auto analyses = c.root.get("analyses"); analyses && analyses->isList())
     for (const Field& a : analyses->items())
       if (a.isMap())

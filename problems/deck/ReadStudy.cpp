@@ -196,7 +196,8 @@ void readChecks(Context& c) {
   if (!block || block->isNull()) return;
   std::vector<std::string> names;
   for (const Field& f : boundedItems(*block, "checks")) {
-    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis"}, "a check");
+    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis", "case"},
+                "a check");
     DeckCheck k;
     k.place = f.place();
     const Field nameField = f.require("name");
@@ -214,6 +215,17 @@ void readChecks(Context& c) {
     }
     k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
     addCheckedSpeed(c, k);
+    if (auto lc = f.get("case")) {
+      k.loadCase = lc->text();
+      bool known = false;
+      for (const DeckLoadCase& x : c.deck.loadCases) known = known || x.name == k.loadCase;
+      for (const DeckCombination& x : c.deck.combinations) known = known || x.name == k.loadCase;
+      if (!known)
+        lc->fail("no load case or combination '" + k.loadCase +
+                 "' (load_cases: and combinations: define them)");
+      if (k.quantity.analysisType() != "static")
+        lc->fail("case: names a load case, which only a static quantity reads");
+    }
     k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
     const Field tol = f.require("tolerance");
     k.tolerance = tol.positive(c.evaluator);

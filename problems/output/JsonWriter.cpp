@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
 #include "problems/output/AdequateJson.hpp"
 #include "problems/output/CsvTable.hpp"
@@ -93,6 +94,59 @@ Json peakJson(const Model& model, const std::optional<LinePeak>& top) {
           {"section", line.section().name}};
 }
 
+/// One load case or combination: its reactions, point displacements and member extremes.
+Json caseJson(const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
+              const CaseOutcome& c, const std::string& stem) {
+  const Model& model = *c.model;
+  Json out = {{"name", c.name}, {"combination", c.combination}};
+  out["reactions"] = reactionsJson(c.statics);
+  out["displacements"] = pointDisplacementsJson(model, dofs, carried, c.statics);
+  if (!model.members().empty()) {
+    out["max_displacement"] = maxDisplacementJson(model, c.statics.displacement);
+    Json members = membersJson(model, c.statics.displacement, stem);
+    for (auto& item : members.items()) item.value().erase("csv");  // written for the analysis only
+    out["members"] = members;
+  }
+  return out;
+}
+
+/// Keeps the larger (or smaller) of value and the bound's, with the case that gave it.
+void widen(Json& bound, double value, const std::string& name, bool larger) {
+  if (bound.is_null() || (larger ? value > bound.at("value").get<double>()
+                                 : value < bound.at("value").get<double>()))
+    bound = {{"value", value}, {"case", name}};
+}
+
+/// The envelope over the combinations' entries: for each reaction and point displacement
+/// component its max and min, for each member force component the max of its maxima and the
+/// min of its minima along the member; each with the combination that gives it.
+Json envelopeJson(const Json& cases) {
+  Json out = {{"reactions", Json::object()}, {"displacements", Json::object()},
+              {"members", Json::object()}};
+  for (const Json& c : cases) {
+    if (!c.at("combination").get<bool>()) continue;
+    const std::string name = c.at("name").get<std::string>();
+    for (const char* key : {"reactions", "displacements"})
+      for (const auto& where : c.at(key).items())
+        for (const auto& component : where.value().items()) {
+          Json& e = out[key][where.key()][component.key()];
+          widen(e["max"], component.value().get<double>(), name, true);
+          widen(e["min"], component.value().get<double>(), name, false);
+        }
+    if (!c.contains("members")) continue;
+    for (const auto& member : c.at("members").items())
+      for (const ForceComponent f : kForceComponents) {
+        const std::string component = componentName(f);
+        const Json& m = member.value();
+        if (!m.contains(component)) continue;
+        Json& e = out["members"][member.key()][component];
+        widen(e["max"], m.at(component).at("max").at("value").get<double>(), name, true);
+        widen(e["min"], m.at(component).at("min").at("value").get<double>(), name, false);
+      }
+  }
+  return out;
+}
+
 Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
                 const AnalysisOutcome& a, const std::vector<ElementPeaks>& peaks) {
   const StaticResult& r = *a.statics;
@@ -117,6 +171,14 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   out["solver"] = r.solver;
   out["time_s"] = r.time.total;
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
+  if (!a.cases.empty()) {
+    Json cases = Json::array();
+    for (const CaseOutcome& c : a.cases) cases.push_back(caseJson(dofs, carried, c, stem));
+    out["cases"] = cases;
+    if (std::any_of(a.cases.begin(), a.cases.end(),
+                    [](const CaseOutcome& c) { return c.combination; }))
+      out["envelope"] = envelopeJson(cases);
+  }
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "fem/assembly/Recovery.hpp"
 #include "fem/modal/Modal.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/static/Static.hpp"
@@ -22,6 +23,55 @@ namespace beamrotor {
 
 namespace {
 
+/// The deck with its `loads:` replaced by loads (the deck's other parts unchanged).
+Deck withLoads(const Deck& deck, std::vector<DeckLoad> loads) {
+  Deck d = deck;
+  d.loads = std::move(loads);
+  d.loadCases.clear();
+  d.combinations.clear();
+  return d;
+}
+
+/// Each load case solved on its own, then each combination as the factored sum of the case
+/// solutions (displacements and reactions); the combination's model carries the factored
+/// loads so that member forces recovered from it include the factored distributed loads.
+std::vector<CaseOutcome> solveCases(const Deck& deck) {
+  std::vector<CaseOutcome> out;
+  for (const DeckLoadCase& lc : deck.loadCases) {
+    CaseOutcome c;
+    c.name = lc.name;
+    auto model = buildModel(withLoads(deck, lc.loads));
+    c.statics = solveStatic(*model);
+    c.model = std::move(model);
+    out.push_back(std::move(c));
+  }
+  const std::size_t caseCount = out.size();
+  for (const DeckCombination& k : deck.combinations) {
+    std::vector<DeckLoad> loads;
+    CaseOutcome c;
+    c.name = k.name;
+    c.combination = true;
+    c.statics = out.front().statics;
+    c.statics.displacement.setZero();
+    for (ReactionComponent& r : c.statics.reactions) r.value = 0;
+    for (const auto& [name, factor] : k.factors) {
+      for (std::size_t i = 0; i < caseCount; ++i) {
+        if (out[i].name != name) continue;
+        const StaticResult& r = out[i].statics;
+        c.statics.displacement += factor * r.displacement;
+        for (std::size_t j = 0; j < r.reactions.size(); ++j)
+          c.statics.reactions[j].value += factor * r.reactions[j].value;
+        for (const DeckLoad& l : deck.loadCases[i].loads) loads.push_back(scaledLoad(l, factor));
+      }
+    }
+    auto model = buildModel(withLoads(deck, loads));
+    c.statics.hinges = hingeRotations(*model, c.statics.displacement);
+    c.model = std::move(model);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model) {
   AnalysisOutcome out;
   out.type = a.type;
@@ -31,6 +81,7 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       out.statics = solveStatic(model);
       if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
       if (auto w = displacementWarning(model, *out.statics)) out.warnings.push_back(*w);
+      out.cases = solveCases(deck);
     } else if (a.transient) {
       out.transient = runTransient(deck, a, model);
     } else if (isRotorAnalysis(a.type)) {
@@ -61,8 +112,22 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
   c.quantity = k.quantity.text;
   c.reference = k.reference;
   c.tolerance = k.tolerance;
-  for (const AnalysisOutcome& a : run.analyses)
-    if (a.name == k.analysis) c.computed = measure(k.quantity, a, model);
+  for (const AnalysisOutcome& a : run.analyses) {
+    if (a.name != k.analysis) continue;
+    if (k.loadCase.empty()) {
+      c.computed = measure(k.quantity, a, model);
+      continue;
+    }
+    c.quantity += " (case " + k.loadCase + ")";
+    for (const CaseOutcome& lc : a.cases)
+      if (lc.name == k.loadCase) {
+        AnalysisOutcome one;
+        one.type = a.type;
+        one.name = a.name;
+        one.statics = lc.statics;
+        c.computed = measure(k.quantity, one, *lc.model);
+      }
+  }
   // A NaN compares false with everything: it must never reach a pass, a table or the
   // accuracy search's convergence test.
   if (!std::isfinite(c.computed))

@@ -32,6 +32,16 @@ struct Check {
   bool pass() const { return std::isfinite(computed) && relError() <= tolerance; }
 };
 
+/// A static analysis under one load case or combination: the model carrying its loads (for
+/// member forces, which need the distributed loads) and its solution. A combination's solution
+/// is the factored sum of its cases' solutions.
+struct CaseOutcome {
+  std::string name;
+  bool combination = false;
+  std::shared_ptr<const Model> model;
+  StaticResult statics;
+};
+
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
   std::string type;  ///< "static", "modal", "rotor", "campbell", "unbalance", "rigid-body"
@@ -40,6 +50,7 @@ struct AnalysisOutcome {
   std::optional<ModalResult> modal;
   std::optional<TransientOutcome> transient;
   std::optional<RotorOutcome> rotor;  ///< the rotor analyses
+  std::vector<CaseOutcome> cases;     ///< static: the load cases, then the combinations
   std::vector<std::string> warnings;  ///< not errors, e.g. an over-refined mesh
 };
 

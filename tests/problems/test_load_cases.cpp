@@ -1,0 +1,219 @@
+// Load cases and combinations (load_cases:, combinations:): a two-span continuous beam under
+// pattern loading against the standard closed forms for two equal spans under a uniform load
+// (three-moment equation), a combination against the factored sum of its cases solved as
+// separate decks, the envelope in results.json against the extremes over the combinations,
+// and a check reading a case.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/MemberExtrema.hpp"
+#include "problems/deck/DeckError.hpp"
+#include "problems/output/JsonWriter.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+// Two equal spans L under q (N/m), EI constant: with both spans loaded the middle support
+// carries M = -q L^2 / 8 and the reactions are 3qL/8, 10qL/8, 3qL/8; with one span loaded
+// M = -q L^2 / 16, the reactions 7qL/16, 10qL/16, -qL/16 and the loaded span's largest
+// moment is (7qL/16)^2 / (2q) = 49 q L^2 / 512.
+constexpr double kL = 5, kQ = 12e3;
+
+/// The frame deck of the two spans, pinned at A, B and C; `loads` is the deck's loads part.
+std::string twoSpanDeck(const std::string& loads) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "model: {dimension: planar}\n"
+    << "materials: [{name: steel, E: 210e9, nu: 0.3}]\n"
+    << "sections: [{name: beam, shape: general, A: 53.8e-4, I: 8356e-8, J: 1e-6, depth: 0.3, "
+       "width: 0.15}]\n"
+    << "nodes: [{name: A, at: [0, 0]}, {name: B, at: [" << kL << ", 0]}, {name: C, at: ["
+    << 2 * kL << ", 0]}]\n"
+    << "members:\n"
+    << "  - {name: span1, from: A, to: B, section: beam, elements: 4}\n"
+    << "  - {name: span2, from: B, to: C, section: beam, elements: 4}\n"
+    << "supports:\n"
+    << "  - {name: A, at: A, fix: pinned}\n"
+    << "  - {name: B, at: B, fix: [uy]}\n"
+    << "  - {name: C, at: C, fix: [uy]}\n"
+    << loads << "analyses: [{type: static}]\n";
+  return d.str();
+}
+
+std::string spanLoad(const std::string& member, double q) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "{type: distributed, member: " << member << ", qy: " << -q << "}";
+  return d.str();
+}
+
+const std::string kCases = "load_cases:\n"
+                           "  - {name: one, loads: [" + spanLoad("span1", kQ) + "]}\n"
+                           "  - {name: two, loads: [" + spanLoad("span2", kQ) + "]}\n"
+                           "combinations:\n"
+                           "  - {name: both, factors: {one: 1, two: 1}}\n"
+                           "  - {name: ULS, factors: {one: 1.35, two: 1.5}}\n"
+                           "  - {name: left, factors: {one: 1.5}}\n";
+
+const RunResult& onlyRun(const Study& s) {
+  const auto runs = test::runsOf(s);
+  REQUIRE(runs.size() == 1);
+  return *runs.front();
+}
+
+const CaseOutcome& caseOf(const RunResult& run, const std::string& name) {
+  const auto& cases = run.analyses.front().cases;
+  const auto it = std::find_if(cases.begin(), cases.end(),
+                               [&](const CaseOutcome& c) { return c.name == name; });
+  REQUIRE(it != cases.end());
+  return *it;
+}
+
+double memberMaxAbsMz(const CaseOutcome& c, const std::string& member) {
+  for (const auto& [name, elements] : c.model->members())
+    if (name == member) {
+      const auto ranges = memberForceRanges(*c.model, elements, c.statics.displacement);
+      const ComponentRange& r = ranges[5];  // Mz
+      return std::max(std::abs(r.max.value), std::abs(r.min.value));
+    }
+  FAIL("no member " << member);
+  return 0;
+}
+
+}  // namespace
+
+TEST_SUITE("load cases") {
+  // Euler-Bernoulli elements under a uniform load with consistent nodal loads are exact at
+  // the nodes and the recovered moments exact between them, so what remains is round-off:
+  // the run's measured round-off is about 1e-13 here, 1e-9 leaves margin for other platforms.
+  constexpr double kExact = 1e-9;
+
+  TEST_CASE("two-span beam under pattern loading matches the closed forms") {
+    const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
+    const RunResult& run = onlyRun(s);
+    REQUIRE(run.analyses.front().cases.size() == 5);
+    const double qL = kQ * kL, qL2 = kQ * kL * kL;
+
+    const CaseOutcome& both = caseOf(run, "both");
+    CHECK(both.combination);
+    CHECK(both.statics.reaction("B", Dof::uy) == doctest::Approx(10 * qL / 8).epsilon(kExact));
+    CHECK(both.statics.reaction("A", Dof::uy) == doctest::Approx(3 * qL / 8).epsilon(kExact));
+    // The support moment qL^2/8 is the largest |Mz| of either span (the span moments are
+    // 9qL^2/128).
+    CHECK(memberMaxAbsMz(both, "span1") == doctest::Approx(qL2 / 8).epsilon(kExact));
+    CHECK(memberMaxAbsMz(both, "span2") == doctest::Approx(qL2 / 8).epsilon(kExact));
+
+    const CaseOutcome& one = caseOf(run, "one");
+    CHECK_FALSE(one.combination);
+    CHECK(one.statics.reaction("A", Dof::uy) == doctest::Approx(7 * qL / 16).epsilon(kExact));
+    CHECK(one.statics.reaction("B", Dof::uy) == doctest::Approx(10 * qL / 16).epsilon(kExact));
+    CHECK(one.statics.reaction("C", Dof::uy) == doctest::Approx(-qL / 16).epsilon(kExact));
+    CHECK(memberMaxAbsMz(one, "span1") == doctest::Approx(49 * qL2 / 512).epsilon(kExact));
+    // The unloaded span carries the support moment qL^2/16, falling linearly to C.
+    CHECK(memberMaxAbsMz(one, "span2") == doctest::Approx(qL2 / 16).epsilon(kExact));
+  }
+
+  TEST_CASE("a combination equals the factored sum of its cases solved as separate decks") {
+    const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
+    const RunResult& run = onlyRun(s);
+    const Study s1 = test::solveDeckText(twoSpanDeck("loads: [" + spanLoad("span1", kQ) + "]\n"),
+                                         "one.yaml");
+    const Study s2 = test::solveDeckText(twoSpanDeck("loads: [" + spanLoad("span2", kQ) + "]\n"),
+                                         "two.yaml");
+    const StaticResult& r1 = *onlyRun(s1).analyses.front().statics;
+    const StaticResult& r2 = *onlyRun(s2).analyses.front().statics;
+    const CaseOutcome& uls = caseOf(run, "ULS");
+    const NodalField sum = 1.35 * r1.displacement + 1.5 * r2.displacement;
+    const double du = (uls.statics.displacement - sum).cwiseAbs().maxCoeff();
+    const double scale = sum.cwiseAbs().maxCoeff();
+    MESSAGE("ULS displacement vs factored sum, max relative difference " << du / scale);
+    CHECK(du <= kExact * scale);
+    for (const char* support : {"A", "B", "C"}) {
+      const double expected = 1.35 * r1.reaction(support, Dof::uy) + 1.5 * r2.reaction(support, Dof::uy);
+      CHECK(uls.statics.reaction(support, Dof::uy) ==
+            doctest::Approx(expected).epsilon(kExact).scale(kQ * kL));
+    }
+    // Member forces of the combination (from its model with the factored loads) match those
+    // of one deck carrying the factored loads.
+    const Study sf = test::solveDeckText(
+        twoSpanDeck("loads: [" + spanLoad("span1", 1.35 * kQ) + ", " + spanLoad("span2", 1.5 * kQ) +
+                    "]\n"),
+        "factored.yaml");
+    const RunResult& f = onlyRun(sf);
+    CaseOutcome direct{"direct", false, f.model, *f.analyses.front().statics};
+    for (const char* member : {"span1", "span2"})
+      CHECK(memberMaxAbsMz(uls, member) ==
+            doctest::Approx(memberMaxAbsMz(direct, member)).epsilon(kExact));
+  }
+
+  TEST_CASE("the envelope in results.json is the extreme over the combinations") {
+    const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
+    const RunResult& run = onlyRun(s);
+    const Json doc = runJson(
+        run, {elementPeaks(*run.model, run.analyses.front().statics->displacement)});
+    const Json& analysis = doc["analyses"][0];
+    REQUIRE(analysis.contains("envelope"));
+    REQUIRE(analysis["cases"].size() == 5);
+    const Json& env = analysis["envelope"];
+    for (const char* support : {"A", "B", "C"}) {
+      double hi = -1e300, lo = 1e300;
+      for (const CaseOutcome& c : run.analyses.front().cases) {
+        if (!c.combination) continue;
+        hi = std::max(hi, c.statics.reaction(support, Dof::uy));
+        lo = std::min(lo, c.statics.reaction(support, Dof::uy));
+      }
+      CHECK(env["reactions"][support]["fy"]["max"]["value"].get<double>() == hi);
+      CHECK(env["reactions"][support]["fy"]["min"]["value"].get<double>() == lo);
+    }
+    // C's reaction: largest with both spans at their ULS factors, smallest (negative) with the
+    // first span alone.
+    CHECK(env["reactions"]["C"]["fy"]["max"]["case"] == "ULS");
+    CHECK(env["reactions"]["C"]["fy"]["min"]["case"] == "left");
+    for (const char* member : {"span1", "span2"}) {
+      double hi = -1e300, lo = 1e300;
+      for (const CaseOutcome& c : run.analyses.front().cases) {
+        if (!c.combination) continue;
+        for (const auto& [name, elements] : c.model->members())
+          if (name == member) {
+            const auto r = memberForceRanges(*c.model, elements, c.statics.displacement)[5];
+            hi = std::max(hi, r.max.value);
+            lo = std::min(lo, r.min.value);
+          }
+      }
+      CHECK(env["members"][member]["Mz"]["max"]["value"].get<double>() == hi);
+      CHECK(env["members"][member]["Mz"]["min"]["value"].get<double>() == lo);
+    }
+  }
+
+  TEST_CASE("a check names a case or a combination") {
+    const double qL = kQ * kL;
+    std::ostringstream checks;
+    checks.precision(17);
+    checks << "checks:\n"
+           << "  - {name: R_C one, quantity: reaction C uy, case: one, reference: " << -qL / 16
+           << ", tolerance: 1e-9}\n"
+           << "  - {name: R_B both, quantity: reaction B uy, case: both, reference: "
+           << 10 * qL / 8 << ", tolerance: 1e-9}\n";
+    const Study s = test::solveDeckText(twoSpanDeck(kCases) + checks.str(), "two_span.yaml");
+    CHECK(test::checkAllPass(s) == 2);
+    CHECK_THROWS_AS(test::solveDeckText(twoSpanDeck(kCases) +
+                                            "checks: [{name: x, quantity: reaction C uy, case: "
+                                            "nope, reference: 1, tolerance: 1}]\n",
+                                        "bad.yaml"),
+                    DeckError);
+  }
+
+  TEST_CASE("loads: without load cases give no case entries") {
+    const Study s = test::solveDeckText(twoSpanDeck("loads: [" + spanLoad("span1", kQ) + "]\n"),
+                                        "plain.yaml");
+    CHECK(onlyRun(s).analyses.front().cases.empty());
+  }
+}
