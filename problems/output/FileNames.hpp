@@ -26,6 +26,10 @@ inline constexpr const char* kSweepCsv = "sweep.csv";
 inline std::string fieldsCsv(const std::string& stem) {
   return stem + "_fields.csv";
 }
+/// Statics with load cases: one row per case or combination and reported value.
+inline std::string casesCsv(const std::string& stem) {
+  return stem + "_cases.csv";
+}
 /// Modal: one row per mode.
 inline std::string modesCsv(const std::string& stem) {
   return stem + "_modes.csv";

@@ -175,6 +175,7 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
     Json cases = Json::array();
     for (const CaseOutcome& c : a.cases) cases.push_back(caseJson(dofs, carried, c, stem));
     out["cases"] = cases;
+    out["files"]["cases_csv"] = casesCsv(stem);
     if (std::any_of(a.cases.begin(), a.cases.end(),
                     [](const CaseOutcome& c) { return c.combination; }))
       out["envelope"] = envelopeJson(cases);

@@ -5,11 +5,13 @@
 #include "problems/output/Output.hpp"
 
 #include <optional>
+#include <string>
 #include <stdexcept>
 
 #include "problems/deck/Suggest.hpp"
 #include "problems/output/AtomicDirectory.hpp"
 #include "problems/output/Charts.hpp"
+#include "problems/output/CsvTable.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/FrameCharts.hpp"
@@ -54,6 +56,33 @@ std::string caption(const RunResult& run, const std::string& analysis, const std
   return line.empty() ? text : text + "\n" + line;
 }
 
+/// The load cases and combinations of a static analysis's results.json entry as one table:
+/// reactions, point displacements and member resultant extremes, one value per row.
+CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
+  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
+                    {"component", ""}, {"value", ""}});
+  for (const Json& c : analysis.at("cases")) {
+    const std::string name = c.at("name").get<std::string>();
+    const long long combination = c.at("combination").get<bool>() ? 1 : 0;
+    for (const char* key : {"reactions", "displacements"})
+      for (const auto& where : c.at(key).items())
+        for (const auto& component : where.value().items())
+          t.addRow({name, combination, std::string(key == std::string("reactions")
+                                                        ? "reaction" : "displacement"),
+                    where.key(), component.key(), component.value().get<double>()});
+    if (!c.contains("members")) continue;
+    for (const auto& member : c.at("members").items())
+      for (const auto& component : member.value().items()) {
+        const Json& v = component.value();
+        if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
+        for (const char* extreme : {"max", "min"})
+          t.addRow({name, combination, std::string("member"), member.key(),
+                    component.key() + " " + extreme, v.at(extreme).at("value").get<double>()});
+      }
+  }
+  return t;
+}
+
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
   const RunResult& run = *prepared.run;
   const Model& model = *run.model;
@@ -63,6 +92,10 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
     if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
     if (a.statics) {
       p.fields->write(dir / fieldsCsv(p.stem));
+      if (!a.cases.empty())
+        for (const Json& entry : prepared.doc.at("analyses"))
+          if (entry.at("name") == a.name && entry.contains("cases"))
+            loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
       for (const CsvTable& member : p.members) member.write(dir / member.title());
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations, p.peaks);
       if (charts && !p.stations.empty() && p.members.empty())

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -215,5 +217,19 @@ TEST_SUITE("load cases") {
     const Study s = test::solveDeckText(twoSpanDeck("loads: [" + spanLoad("span1", kQ) + "]\n"),
                                         "plain.yaml");
     CHECK(onlyRun(s).analyses.front().cases.empty());
+  }
+
+  TEST_CASE("continuous_beam.yaml writes its cases, envelope and cases CSV") {
+    const test::SolvedDeck solved =
+        test::solveShippedDeckToScratch("continuous_beam.yaml", "continuous-beam");
+    const nlohmann::json doc = solved.json("results.json");
+    const auto& a = doc["analyses"][0];
+    CHECK(a["cases"].size() == 6);  // 3 cases, 3 combinations
+    CHECK(a["envelope"]["members"]["span1"]["Mz"]["min"]["case"] == "ULS_both");
+    CHECK(a["envelope"]["members"]["span1"]["Mz"]["max"]["case"] == "ULS_span1");
+    const std::string csv = solved.text(a["files"]["cases_csv"].get<std::string>());
+    CHECK(csv.rfind("case,combination,quantity,at,component,value", 0) == 0);
+    CHECK(csv.find("\"ULS_both\",1,\"member\",\"span1\",\"Mz min\"") != std::string::npos);
+    std::filesystem::remove_all(solved.dir.parent_path());
   }
 }
