@@ -128,6 +128,35 @@ SpanBending clampedSpanBending(double q, double EI, double Phi, double L, double
   return {q * a * (a + Phi * L * L) / (24 * EI), q * a * (L - 2 * x) / (12 * EI)};
 }
 
+/// The same for the antisymmetric load d (2 x / L - 1) (the linear part of a trapezoidal
+/// load; d is half the rise from start to end). With s = x / L and a = s (1 - s), solving the
+/// same equations:
+///   v = d L^4 a (2s - 1) (3 (1 + Phi) a + 5 Phi^2 + 6 Phi) / (360 EI (1 + Phi)),
+///   theta = d L^3 a (5 (1 + Phi) a - 1) / (60 EI (1 + Phi));
+/// Phi = 0 gives the Euler-Bernoulli v = d L^4 a^2 (2s - 1) / (120 EI).
+SpanBending clampedAntisymmetricBending(double d, double EI, double Phi, double L, double x) {
+  const double s = x / L, a = s * (1 - s), L3 = L * L * L;
+  return {d * L3 * L * a * (2 * s - 1) * (3 * (1 + Phi) * a + 5 * Phi * Phi + 6 * Phi) /
+              (360 * EI * (1 + Phi)),
+          d * L3 * a * (5 * (1 + Phi) * a - 1) / (60 * EI * (1 + Phi))};
+}
+
+/// Fixed-end forces of a clamped-clamped element under a linear transverse load of mean m and
+/// half rise d in one bending plane: the end forces along the load (start, end) and the end
+/// moments (start, end) about the plane's normal, positive counter-clockwise seen from its
+/// +normal, as the element's consistent load vector (which for the exact shape functions of
+/// the Euler-Bernoulli and interdependent Timoshenko elements equals the fixed-end forces;
+/// Phi = 0 gives L (7 qa + 3 qb) / 20 and L^2 (3 qa + 2 qb) / 60 at the start).
+struct FixedEnd {
+  double forceStart, forceEnd, momentStart, momentEnd;
+};
+FixedEnd fixedEndForces(double m, double d, double Phi, double L) {
+  const double shearShare = d * L * (5 * Phi + 6) / (30 * (1 + Phi));
+  const double antisymmetricMoment = d * L * L / (60 * (1 + Phi));
+  return {m * L / 2 - shearShare, m * L / 2 + shearShare,
+          m * L * L / 12 - antisymmetricMoment, -m * L * L / 12 - antisymmetricMoment};
+}
+
 /// Bending about local y uses theta = -ry = dw/dx: flip the rotation signs.
 Matrix4 flipRotations(const Matrix4& m) {
   const Eigen::Vector4d s(1, -1, 1, -1);
@@ -223,7 +252,12 @@ void Beam::release(int end, Dof rotation) {
 }
 
 void Beam::setDistributedLoad(const Eigen::Vector3d& q) {
-  qLocal_ = R_ * q;
+  setDistributedLoad(q, q);
+}
+
+void Beam::setDistributedLoad(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd) {
+  qMean_ = R_ * (qStart + qEnd) / 2;
+  qHalfRise_ = R_ * (qEnd - qStart) / 2;
 }
 
 std::string Beam::kind() const {
@@ -298,17 +332,22 @@ Matrix12 Beam::localMass() const {
 
 Vector12 Beam::localLoad() const {
   const double L = L_;
-  const Eigen::Vector3d& q = qLocal_;
+  const Eigen::Vector3d &m = qMean_, &d = qHalfRise_;
   Vector12 f = Vector12::Zero();
-  f[0] = f[6] = q.x() * L / 2;
-  f[1] = f[7] = q.y() * L / 2;
-  f[2] = f[8] = q.z() * L / 2;
+  // Linear shape functions (the bar, and the linear elements' deflections): L (2 qa + qb) / 6
+  // at the start, L (qa + 2 qb) / 6 at the end.
+  for (int k = 0; k < 3; ++k) {
+    f[k] = m[k] * L / 2 - d[k] * L / 6;
+    f[6 + k] = m[k] * L / 2 + d[k] * L / 6;
+  }
   if (!isLinear(options_.theory)) {
-    // Fixed-end moments q L^2 / 12, the same for Euler-Bernoulli and Timoshenko beams.
-    f[5] = q.y() * L * L / 12;
-    f[11] = -f[5];
-    f[4] = -q.z() * L * L / 12;
-    f[10] = -f[4];
+    // Bending in x-y (moments about z) and in x-z (about y, where theta = -ry flips the
+    // moments' signs). A uniform load's moments q L^2 / 12 are the same for both theories.
+    const auto [phiY, phiZ] = shearParameters();
+    const FixedEnd y = fixedEndForces(m.y(), d.y(), phiY, L);
+    const FixedEnd z = fixedEndForces(m.z(), d.z(), phiZ, L);
+    f[1] = y.forceStart, f[7] = y.forceEnd, f[5] = y.momentStart, f[11] = y.momentEnd;
+    f[2] = z.forceStart, f[8] = z.forceEnd, f[4] = -z.momentStart, f[10] = -z.momentEnd;
   }
   return f;
 }
@@ -417,7 +456,7 @@ ElementMatrix Beam::gyroscopic() const {
 }
 
 ElementVector Beam::load() const {
-  if (qLocal_.isZero()) return {};
+  if (qMean_.isZero() && qHalfRise_.isZero()) return {};
   Vector12 f = localLoad();
   if (!released_.empty()) {
     Matrix12 K = localStiffness();
@@ -475,13 +514,19 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
 
   // 2. The span load's share: a bar fixed at both ends (EA u'' + qx = 0) and, for the elements
   //    with fixed-end moments, the clamped-clamped bending solution.
-  if (load == SpanLoad::applied && !qLocal_.isZero()) {
+  if (load == SpanLoad::applied && !(qMean_.isZero() && qHalfRise_.isZero())) {
     const Section& sec = *section_;
-    const double x = s * L_;
-    d.x() += qLocal_.x() * x * (L_ - x) / (2 * sec.EA());
+    const double x = s * L_, a = s * (1 - s);
+    // EA u'' + qx = 0 with u = 0 at both ends: the mean's parabola and the rise's cubic.
+    d.x() += (qMean_.x() * a / 2 + qHalfRise_.x() * a * (2 * s - 1) / 6) * L_ * L_ / sec.EA();
     if (!isLinear(t)) {
-      const SpanBending y = clampedSpanBending(qLocal_.y(), sec.EIz(), phiY, L_, x);
-      const SpanBending z = clampedSpanBending(qLocal_.z(), sec.EIy(), phiZ, L_, x);
+      const auto bending = [&](int k, double EI, double Phi) {
+        const SpanBending mean = clampedSpanBending(qMean_[k], EI, Phi, L_, x);
+        const SpanBending rise = clampedAntisymmetricBending(qHalfRise_[k], EI, Phi, L_, x);
+        return SpanBending{mean.deflection + rise.deflection, mean.rotation + rise.rotation};
+      };
+      const SpanBending y = bending(1, sec.EIz(), phiY);
+      const SpanBending z = bending(2, sec.EIy(), phiZ);
       d.y() += y.deflection;
       r.z() += y.rotation;
       d.z() += z.deflection;
@@ -497,13 +542,17 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
 SectionForceSeries Beam::sectionForceSeries(const ElementVector& u) const {
   // Forces the nodes exert on the element (local frame): K l - f with the released rotations
   // recovered, which vanishes on their rows; then equilibrium of the part [0, x = s L].
+  // With q(s) = qa + (qb - qa) s: the load on [0, x] is qa L s + (qb - qa) L s^2 / 2 and its
+  // moment about the cut qa L^2 s^2 / 2 + (qb - qa) L^2 s^3 / 6.
   const Vector12 F = localStiffness() * localEndDisplacements(u, SpanLoad::applied) - localLoad();
-  const Eigen::Vector3d& q = qLocal_;
+  const Eigen::Vector3d qa = qMean_ - qHalfRise_, rise = 2 * qHalfRise_;
   const double L = L_;
   SectionForceSeries r;
   r.c[0] = {-F[0], -F[1], -F[2], -F[3], -F[4], -F[5]};
-  r.c[1] = {-q.x() * L, -q.y() * L, -q.z() * L, 0, -L * F[2], L * F[1]};
-  r.c[2] = {0, 0, 0, 0, -q.z() * L * L / 2, q.y() * L * L / 2};
+  r.c[1] = {-qa.x() * L, -qa.y() * L, -qa.z() * L, 0, -L * F[2], L * F[1]};
+  r.c[2] = {-rise.x() * L / 2, -rise.y() * L / 2, -rise.z() * L / 2, 0, -qa.z() * L * L / 2,
+            qa.y() * L * L / 2};
+  r.c[3] = {0, 0, 0, 0, -rise.z() * L * L / 6, rise.y() * L * L / 6};
   return r;
 }
 

@@ -49,6 +49,9 @@ class Beam : public LineElement {
   void release(int end, Dof rotation);
   /// Uniform load per length (N/m), global frame; replaces any earlier one.
   void setDistributedLoad(const Eigen::Vector3d& q);
+  /// Load per length varying linearly from qStart at the start node to qEnd at the end node
+  /// (N/m, global frame); replaces any earlier one.
+  void setDistributedLoad(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd);
 
   std::span<const NodeDof> dofs() const override { return {dofs_.data(), std::size_t(count_)}; }
   ElementMatrix stiffness() const override;
@@ -69,7 +72,7 @@ class Beam : public LineElement {
   /// Axial displacement and twist linear (plus the bar's share of an axial span load);
   /// deflections and section rotations by the theory's own shape functions (Hermite cubics,
   /// the interdependent interpolation, or linear), which are exact for end-loaded elements,
-  /// plus with `load` the clamped-clamped solution of the uniform span load (exact for
+  /// plus with `load` the clamped-clamped solution of the linear span load (exact for
   /// Euler-Bernoulli and interdependent Timoshenko elements; not added to the linear ones).
   std::array<double, kDofKinds> displacementAt(const ElementVector& u, double s,
                                                SpanLoad load) const override;
@@ -108,7 +111,10 @@ class Beam : public LineElement {
   BeamOptions options_;
   double L_ = 0;
   Eigen::Matrix3d R_;  // rows: local axes in global coordinates
-  Eigen::Vector3d qLocal_ = Eigen::Vector3d::Zero();
+  // The span load in the local frame: its mean and half the change from start to end, so
+  // q(s) = qMean_ + qHalfRise_ (2 s - 1).
+  Eigen::Vector3d qMean_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d qHalfRise_ = Eigen::Vector3d::Zero();
   std::vector<int> released_;  // local indices 0..11 of released rotations
   std::array<NodeDof, 12> dofs_{};
   std::array<int, 12> globalIndex_{};  // position of each carried dof in the 12 globals

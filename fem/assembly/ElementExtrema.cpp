@@ -66,7 +66,9 @@ std::vector<double> zerosInUnitInterval(const std::vector<double>& c) {
 
 ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& forces) {
   const auto series = [&](double SectionForces::*f) {
-    return Polynomial{forces.c[0].*f, forces.c[1].*f, forces.c[2].*f};
+    Polynomial p;
+    for (const SectionForces& c : forces.c) p.push_back(c.*f);
+    return p;
   };
   const Polynomial N = series(&SectionForces::N), Vy = series(&SectionForces::Vy),
                    Vz = series(&SectionForces::Vz), My = series(&SectionForces::My),
@@ -79,7 +81,7 @@ ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& 
   std::vector<double> momentAt{0, 1};
   collectZeros(dP, momentAt);
 
-  // 2. Shear stress k |V| / A, |V|^2 = Vy^2 + Vz^2 (quadratic): at an end or where its
+  // 2. Shear stress k |V| / A, |V|^2 = Vy^2 + Vz^2 (a polynomial): at an end or where its
   //    derivative vanishes.
   std::vector<double> shearAt{0, 1};
   collectZeros(derivativeOf(combination(1, productOf(Vy, Vy), 1, productOf(Vz, Vz))), shearAt);

@@ -12,11 +12,12 @@ namespace beamrotor {
 
 namespace {
 
-/// Values at s = 0, 1/4, .., 1 determine a polynomial of degree <= 4 exactly.
-constexpr int kDisplacementSamples = 5;
+/// Values at s = 0, 1/5, .., 1 determine a polynomial of degree <= 5 exactly.
+constexpr int kDisplacementSamples = 6;
 
 /// The three translations along a line element as polynomials in s (static, span load
-/// applied): interpolated through five places, exact for degree <= 4.
+/// applied): interpolated through six places, exact for degree <= 5 (cubic shape functions
+/// plus a linear span load's quintic).
 std::array<Polynomial, 3> translationSeries(const LineElement& element, const NodalField& u) {
   Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples> V;
   Eigen::Matrix<double, kDisplacementSamples, 3> values;
@@ -100,6 +101,12 @@ std::optional<std::pair<int, double>> memberLocation(const Model& model, int ele
   return std::nullopt;
 }
 
+Polynomial componentPolynomial(const SectionForceSeries& series, ForceComponent c) {
+  Polynomial p;
+  for (const SectionForces& coefficient : series.c) p.push_back(componentOf(coefficient, c));
+  return p;
+}
+
 std::array<ComponentRange, 6> memberForceRanges(const Model& model,
                                                 const std::vector<int>& elements,
                                                 const NodalField& displacement) {
@@ -113,8 +120,7 @@ std::array<ComponentRange, 6> memberForceRanges(const Model& model,
         line.sectionForceSeries(elementValues(line, displacement));
     for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
       const ForceComponent component = kForceComponents[c];
-      const Polynomial p{componentOf(series.c[0], component), componentOf(series.c[1], component),
-                         componentOf(series.c[2], component)};
+      const Polynomial p = componentPolynomial(series, component);
       // A polynomial's extremes: the ends and the zeros of its derivative.
       std::vector<double> places{0, 1};
       for (double s : zerosInUnitInterval(derivativeOf(p))) places.push_back(s);

@@ -3,8 +3,8 @@
 // the position, so the extremes lie at an element end or where a derivative vanishes), the
 // largest deflection of a member from its chord, and the largest displacement of the whole
 // structure, inside elements as well as at nodes. Displacements along an element are
-// polynomials of degree at most 4 (cubic shape functions plus the uniform span load's quartic),
-// recovered exactly from five values, so these too are found from polynomials, not samples.
+// polynomials of degree at most 5 (cubic shape functions plus a linear span load's quintic),
+// recovered exactly from six values, so these too are found from polynomials, not samples.
 #pragma once
 
 #include <array>
@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/assembly/Polynomial.hpp"
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
@@ -28,6 +29,9 @@ inline constexpr std::array<ForceComponent, 6> kForceComponents{
 const char* componentName(ForceComponent c);
 /// The component of f.
 double componentOf(const SectionForces& f, ForceComponent c);
+
+/// One resultant of a series as a polynomial in s (exact: the series is).
+Polynomial componentPolynomial(const SectionForceSeries& series, ForceComponent c);
 
 /// A value at a place on a member.
 struct MemberValue {

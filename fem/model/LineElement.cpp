@@ -9,7 +9,7 @@ namespace beamrotor {
 
 SectionForces SectionForceSeries::at(double s) const {
   const auto value = [&](double SectionForces::*f) {
-    return c[0].*f + s * (c[1].*f + s * c[2].*f);
+    return c[0].*f + s * (c[1].*f + s * (c[2].*f + s * c[3].*f));
   };
   return {value(&SectionForces::N), value(&SectionForces::Vy), value(&SectionForces::Vz),
           value(&SectionForces::T), value(&SectionForces::My), value(&SectionForces::Mz)};

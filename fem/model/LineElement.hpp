@@ -18,11 +18,11 @@ struct SectionForces {
 };
 
 /// Resultants along an element as polynomials in s, the fraction of its length:
-/// value(s) = c[0] + c[1] s + c[2] s^2 component by component. Under the span loads the
-/// elements carry (uniform per length) the forces are at most linear and the moments at most
-/// quadratic, so three coefficients are exact.
+/// value(s) = c[0] + c[1] s + c[2] s^2 + c[3] s^3 component by component. Under the span
+/// loads the elements carry (varying linearly along the element) the forces are at most
+/// quadratic and the moments at most cubic, so four coefficients are exact.
 struct SectionForceSeries {
-  std::array<SectionForces, 3> c;
+  std::array<SectionForces, 4> c;
   SectionForces at(double s) const;
 };
 

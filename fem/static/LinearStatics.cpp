@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -61,12 +62,25 @@ double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eige
 
 }  // namespace
 
-LinearStatics::LinearStatics(const Model& model) : model_(model), dofs_(model) {
+LinearStatics::LinearStatics(const Model& model) : model_(model), loaded_(&model), dofs_(model) {
   // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
   SparseAssembler(model, dofs_).assemble(MatrixKind::stiffness).swap(K_);
-  nodalLoads_ = nodalLoadVector(model, dofs_);
-  uPrescribed_ = prescribedValues(model, dofs_);
-  rhs_ = reducedRightHandSide(model, dofs_, loadVector(model, dofs_), uPrescribed_);
+  setLoads(model);
+}
+
+void LinearStatics::setLoads(const Model& loaded) {
+  if (&loaded != &model_) {
+    const bool same = loaded.nodes().size() == model_.nodes().size() &&
+                      loaded.elements().size() == model_.elements().size() &&
+                      loaded.supports().size() == model_.supports().size() &&
+                      DofMap(loaded).freeCount() == dofs_.freeCount();
+    if (!same)
+      throw std::invalid_argument("LinearStatics::setLoads: the loaded model's structure differs");
+  }
+  loaded_ = &loaded;
+  nodalLoads_ = nodalLoadVector(loaded, dofs_);
+  uPrescribed_ = prescribedValues(loaded, dofs_);
+  rhs_ = reducedRightHandSide(loaded, dofs_, loadVector(loaded, dofs_), uPrescribed_);
 }
 
 Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double singularRcond) {
@@ -79,11 +93,13 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   SparseMatrix heldMatrix;
   if (!held.empty()) heldMatrix = holdDofs(K_, held);
   const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
+  const bool reuse = held.empty() && factoredUnheld_;
   if (!analysed_) {
     solver_.analyzePattern(A);
     analysed_ = true;
   }
-  solver_.factorize(A);
+  if (!reuse) solver_.factorize(A);
+  factoredUnheld_ = held.empty();
   rcond_ = solver_.rcond();
   // A nearly singular matrix: a mechanism (named in words), or a structure that is held but
   // ill-conditioned, whose solution's measured round-off then tells how much of it holds.
@@ -96,7 +112,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     const Mechanism mechanism = findMechanism(model_, dofs_, K_, heldEquations);
     if (mechanism.count > 0) throwUnsupported(model_, dofs_, mechanism, "static analysis");
   };
-  if (!solver_.healthy(singularRcond)) requireHeld();
+  if (!reuse && !solver_.healthy(singularRcond)) requireHeld();
   factorSeconds_ += clock.lap();
 
   // 2. Right-hand side: held values move to the right like prescribed ones.
@@ -124,7 +140,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
 
 Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u, bool constrainedOnly) const {
   // Element forces already net out the loads the elements carry.
-  return elementForces(model_, dofs_, u, constrainedOnly) - nodalLoads_;
+  return elementForces(*loaded_, dofs_, u, constrainedOnly) - nodalLoads_;
 }
 
 }  // namespace beamrotor

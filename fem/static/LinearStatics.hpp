@@ -30,6 +30,12 @@ class LinearStatics {
   /// structure whose solution is not finite; otherwise roundOff() says how much of it holds.
   Eigen::VectorXd solve(const std::vector<HeldDof>& held, double singularRcond);
 
+  /// Replaces the loads (nodal, element-carried, prescribed values) by those of `loaded`, a
+  /// model of the same structure that carries other loads (a load case); the next solve
+  /// without held dofs reuses the factor. Throws std::invalid_argument when the structure
+  /// differs (node, element or support counts, or the dof numbering).
+  void setLoads(const Model& loaded);
+
   /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
   /// With `constrainedOnly`, the entries are complete at constrained dofs only (reactions).
   Eigen::VectorXd residual(const Eigen::VectorXd& u, bool constrainedOnly = false) const;
@@ -52,11 +58,13 @@ class LinearStatics {
 
  private:
   const Model& model_;
+  const Model* loaded_;  ///< the model whose loads are on the right-hand side
   DofMap dofs_;
   SparseMatrix K_;
   Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
   LinearSolver solver_;
   bool analysed_ = false;
+  bool factoredUnheld_ = false;  ///< the factor is of K itself (no held dofs)
   double rcond_ = 0, roundOff_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;
 };
 

@@ -1,5 +1,7 @@
 #include "fem/static/Static.hpp"
 
+#include <stdexcept>
+
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/static/ActiveSet.hpp"
@@ -7,6 +9,27 @@
 #include "fem/timing/Stopwatch.hpp"
 
 namespace beamrotor {
+
+namespace {
+
+/// Reactions (what each support exerts: K u - f at its dofs), the nodal field, hinge rotations
+/// and the solve's diagnostics of displacement u of `loaded`, solved by `system`.
+void recover(const Model& loaded, const LinearStatics& system, const Eigen::VectorXd& u,
+             StaticResult& result) {
+  const DofMap& dofs = system.dofs();
+  const Eigen::VectorXd r = system.residual(u, /*constrainedOnly=*/true);
+  for (const Support& s : loaded.supports())
+    for (const PrescribedDof& p : s.dofs)
+      result.reactions.push_back({s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof)]});
+  result.displacement = toNodalField(loaded, dofs, u);
+  result.hinges = hingeRotations(loaded, result.displacement);
+  result.rcond = system.rcond();
+  result.roundOff = system.roundOff();
+  result.solver = system.solverName();
+  result.size = systemSize(loaded, dofs, system.stiffness(), system.factorEntries());
+}
+
+}  // namespace
 
 StaticResult solveStatic(const Model& model, const StaticOptions& options) {
   Stopwatch clock, total;
@@ -30,20 +53,37 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
   result.time.factor = system.factorSeconds();
   result.time.solve = system.solveSeconds();
 
-  // 3. Recover reactions: what each support exerts, K u - f at its dofs.
-  const DofMap& dofs = system.dofs();
-  const Eigen::VectorXd r = system.residual(u, /*constrainedOnly=*/true);
-  for (const Support& s : model.supports())
-    for (const PrescribedDof& p : s.dofs)
-      result.reactions.push_back({s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof)]});
-  result.displacement = toNodalField(model, dofs, u);
-  result.hinges = hingeRotations(model, result.displacement);
-  result.rcond = system.rcond();
-  result.roundOff = system.roundOff();
-  result.solver = system.solverName();
-  result.size = systemSize(model, dofs, system.stiffness(), system.factorEntries());
+  // 3. Recover reactions and the nodal field.
+  recover(model, system, u, result);
   result.time.total = total.lap();
   return result;
+}
+
+std::vector<StaticResult> solveStaticCases(const std::vector<const Model*>& loadings,
+                                           const StaticOptions& options) {
+  std::vector<StaticResult> results;
+  if (loadings.empty()) return results;
+  for (const Model* m : loadings)
+    if (!m->contacts().empty())
+      throw std::invalid_argument("solveStaticCases: contacts are not linear in the loads");
+  Stopwatch clock;
+  LinearStatics system(*loadings.front());
+  const double assembly = clock.lap();
+  for (const Model* loaded : loadings) {
+    Stopwatch total;
+    StaticResult result;
+    const double factorBefore = system.factorSeconds(), solveBefore = system.solveSeconds();
+    system.setLoads(*loaded);
+    const Eigen::VectorXd u = system.solve({}, options.singularRcond);
+    result.activeSetIterations = 1;
+    result.time.factor = system.factorSeconds() - factorBefore;
+    result.time.solve = system.solveSeconds() - solveBefore;
+    recover(*loaded, system, u, result);
+    result.time.assembly = results.empty() ? assembly : 0;
+    result.time.total = total.lap() + result.time.assembly;
+    results.push_back(std::move(result));
+  }
+  return results;
 }
 
 }  // namespace beamrotor

@@ -106,8 +106,14 @@ struct DeckLoad {
   Kind kind = Kind::point;
   std::string point;                               ///< point loads
   std::vector<std::pair<Dof, double>> components;  ///< point loads: N on ux.., N m on rx..
-  Eigen::Vector3d q = Eigen::Vector3d::Zero();     ///< distributed: N/m, global frame
+  Eigen::Vector3d q = Eigen::Vector3d::Zero();     ///< distributed: N/m, global frame, at `from`
+  Eigen::Vector3d qEnd = Eigen::Vector3d::Zero();  ///< distributed: at `to`; linear between
+  double from = 0, to = 1;    ///< distributed: the loaded part of each segment or member
+                              ///< (fractions of its length from its start)
   bool inMemberAxes = false;  ///< distributed: q is in each member's local axes instead
+  /// distributed, global axes: each component acts per length of the member's projection
+  /// across that component's direction (a roof load per plan length), not per member length.
+  bool perProjectedLength = false;
   double g = 9.81;                                 ///< self-weight: m/s^2, acting along -y
   std::vector<int> segments;  ///< distributed and self-weight: indices; all if empty
   DeckPlace place;
@@ -132,6 +138,7 @@ struct DeckCombination {
 inline DeckLoad scaledLoad(DeckLoad l, double factor) {
   for (auto& [d, value] : l.components) value *= factor;
   l.q *= factor;
+  l.qEnd *= factor;
   l.g *= factor;
   return l;
 }

@@ -41,6 +41,10 @@ const Table& table() {
     add(t, "load_cases[].loads[].", {"mx", "my", "mz"}, dim::moment);
     add(t, "load_cases[].loads[].", {"qx", "qy", "qz"}, dim::forcePerLength);
     add(t, "load_cases[].loads[].", {"g"}, dim::acceleration);
+    for (const char* prefix : {"loads[].", "load_cases[].loads[]."}) {
+      add(t, prefix, {"qx[]", "qy[]", "qz[]"}, dim::forcePerLength);  // [start, end]
+      add(t, prefix, {"from_length", "to_length"}, dim::length);
+    }
     add(t, "analyses[].", {"dt", "end", "period"}, dim::time);
     add(t, "analyses[].rayleigh.", {"alpha"}, dim::frequency);
     add(t, "analyses[].rayleigh.", {"beta"}, dim::time);

@@ -2,6 +2,8 @@
 // supports, springs, masses, hinges and loads.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <tuple>
 
 #include "problems/deck/FieldUnits.hpp"
@@ -235,6 +237,95 @@ std::vector<int> loadedSegments(const Context& c, const Field& load) {
   return out;
 }
 
+/// qx, qy, qz of a distributed load: one number (uniform) or [start, end] (linear from the
+/// loaded part's start to its end: a trapezoid, or a triangle with a zero).
+void readDistributedValues(const Context& c, const Field& f, DeckLoad& l) {
+  bool any = false;
+  for (int k = 0; k < 3; ++k) {
+    const std::string key = std::string("q") + "xyz"[k];
+    auto v = f.get(key);
+    if (!v) continue;
+    if (!c.deck.dofs.contains(kAllDofs[k]))
+      v->fail(key + " acts along " + std::string(dofName(kAllDofs[k])) + ", not a dof of a " +
+              c.deck.dimension + " model");
+    if (v->isList()) {
+      const std::vector<Field> ends = v->items();
+      if (ends.size() != 2)
+        v->fail("a varying load gives two values, [at its start, at its end] (N/m), got " +
+                std::to_string(ends.size()));
+      l.q[k] = ends[0].number(c.evaluator);
+      l.qEnd[k] = ends[1].number(c.evaluator);
+    } else {
+      l.q[k] = l.qEnd[k] = v->number(c.evaluator);
+    }
+    any = true;
+  }
+  if (!any) f.fail("a distributed load needs at least one of qx, qy, qz (N/m)");
+}
+
+/// Every segment's (or member's) index.
+std::vector<int> allSegments(const Context& c) {
+  std::vector<int> out(c.deck.segments.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = int(i);
+  return out;
+}
+
+/// A mesh node where a partial load starts or ends, at `fraction` of segment or member i: a
+/// member station in a frame, a point on the line otherwise (named NAME@FRACTION).
+void addLoadBoundary(Context& c, int i, double fraction, const DeckPlace& place) {
+  if (c.deck.frame) return addMemberStation(c, i, fraction, place);
+  if (fraction == 0 || fraction == 1) return;
+  double start = 0;
+  for (int k = 0; k < i; ++k) start += c.deck.segments[k].length;
+  const double x = start + fraction * c.deck.segments[i].length;
+  for (const DeckPoint& p : c.deck.points)
+    if (p.at == x) return;
+  char digits[32];
+  std::snprintf(digits, sizeof digits, "%.17g", fraction);
+  const std::string& name = c.deck.segments[i].name;
+  c.deck.points.push_back({(name.empty() ? "segment" + std::to_string(i) : name) + "@" + digits,
+                           x, place});
+}
+
+/// `from:`/`to:` (fractions of the length) or `from_length:`/`to_length:` (m from the start):
+/// the part of each loaded segment or member the load covers (all of it by default). Its ends
+/// become mesh nodes, so that every element is loaded over its whole length or not at all.
+void readLoadedPart(Context& c, const Field& f, DeckLoad& l) {
+  const auto end = [&](const char* fractionKey, const char* lengthKey, double whole) {
+    const auto fraction = f.get(fractionKey), length = f.get(lengthKey);
+    if (fraction && length)
+      length->fail(std::string("give either ") + fractionKey + " (a fraction) or " + lengthKey +
+                   " (m), not both");
+    if (!fraction && !length) return whole;
+    const Field& given = fraction ? *fraction : *length;
+    const double value = given.number(c.evaluator);
+    if (fraction) {
+      if (!(value >= 0 && value <= 1))
+        given.fail("a fraction of the length lies in [0, 1], got " + formatNumber(value));
+      return value;
+    }
+    // A length: from the start of the one segment or member loaded.
+    if (l.segments.size() != 1)
+      given.fail(std::string(lengthKey) + " measures along one segment or member: name it (" +
+                 (c.deck.frame ? "member:" : "segment:") + "), or give " + fractionKey +
+                 " as a fraction of each");
+    const DeckSegment& s = c.deck.segments[l.segments.front()];
+    if (!(value >= 0 && value <= s.length))
+      given.fail("'" + s.name + "' is " + formatNumber(s.length) + " m long; " + lengthKey +
+                 " lies in [0, " + formatNumber(s.length) + "], got " + formatNumber(value));
+    return value / s.length;
+  };
+  l.from = end("from", "from_length", 0);
+  l.to = end("to", "to_length", 1);
+  if (!(l.from < l.to))
+    (f.has("to") ? f.require("to") : f.has("to_length") ? f.require("to_length") : f)
+        .fail("the loaded part ends where it starts or before (from " + formatNumber(l.from) +
+              ", to " + formatNumber(l.to) + " of the length)");
+  if (l.from == 0 && l.to == 1) return;
+  for (int i : l.segments.empty() ? allSegments(c) : l.segments)
+    for (double fraction : {l.from, l.to}) addLoadBoundary(c, i, fraction, f.place());
+}
+
 /// The loads of one list (`loads:` or a load case's `loads:`), appended to out.
 void readLoadList(Context& c, const Field& list, std::vector<DeckLoad>& out) {
   const ExpressionEvaluator& ev = c.evaluator;
@@ -266,22 +357,20 @@ void readLoadList(Context& c, const Field& list, std::vector<DeckLoad>& out) {
              " load acts on segments, and this deck has none (a model without "
              "beams takes point loads)");
     } else if (type == "distributed") {
-      f.allowOnly({"type", "segment", "member", "axes", "qx", "qy", "qz"}, "a distributed load");
+      f.allowOnly({"type", "segment", "member", "axes", "per", "from", "to", "from_length",
+                   "to_length", "qx", "qy", "qz"},
+                  "a distributed load");
       l.kind = DeckLoad::Kind::distributed;
       l.segments = loadedSegments(c, f);
       if (auto axes = f.get("axes")) l.inMemberAxes = axes->choice({"global", "member"}) == "member";
-      bool any = false;
-      for (int k = 0; k < 3; ++k) {
-        const std::string key = std::string("q") + "xyz"[k];
-        auto v = f.get(key);
-        if (!v) continue;
-        if (!c.deck.dofs.contains(kAllDofs[k]))
-          v->fail(key + " acts along " + std::string(dofName(kAllDofs[k])) + ", not a dof of a " +
-                  c.deck.dimension + " model");
-        l.q[k] = v->number(ev);
-        any = true;
+      if (auto per = f.get("per")) {
+        l.perProjectedLength = per->choice({"length", "projected"}) == "projected";
+        if (l.perProjectedLength && l.inMemberAxes)
+          per->fail("a load per projected length acts in global axes (axes: global): its "
+                    "components are per length of the member's projection across each of them");
       }
-      if (!any) f.fail("a distributed load needs at least one of qx, qy, qz (N/m)");
+      readDistributedValues(c, f, l);
+      readLoadedPart(c, f, l);
     } else {
       f.allowOnly({"type", "segment", "member", "g"}, "a self-weight load");
       l.kind = DeckLoad::Kind::selfWeight;
@@ -315,9 +404,7 @@ void readLoadCases(Context& c) {
       lc.place = f.place();
       const Field nameField = f.require("name");
       lc.name = nameField.text();
-      if (std::find(names.begin(), names.end(), lc.name) != names.end())
-        nameField.fail("load case '" + lc.name + "' is defined twice");
-      names.push_back(lc.name);
+      claimName(nameField, lc.name, names, "a load case or combination");
       const Field list = f.require("loads");
       if (!list.isList()) list.fail("expected a list of loads, got " + list.describe());
       readLoadList(c, list, lc.loads);
@@ -334,9 +421,7 @@ void readLoadCases(Context& c) {
       k.place = f.place();
       const Field nameField = f.require("name");
       k.name = nameField.text();
-      if (std::find(names.begin(), names.end(), k.name) != names.end())
-        nameField.fail("'" + k.name + "' already names a load case or combination");
-      names.push_back(k.name);
+      claimName(nameField, k.name, names, "a load case or combination");
       for (const auto& [key, value] : f.require("factors").entries()) {
         const bool known = std::any_of(c.deck.loadCases.begin(), c.deck.loadCases.end(),
                                        [&](const DeckLoadCase& lc) { return lc.name == key; });

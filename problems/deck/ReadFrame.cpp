@@ -242,6 +242,11 @@ void readFrame(Context& c) {
   collectInlinePlaces(c);
 }
 
+void addMemberStation(Context& c, int member, double fraction, const DeckPlace& place) {
+  if (fraction <= kEndTolerance || fraction >= 1 - kEndTolerance) return;
+  addPlace(c, placeName(c, member, fraction), member, fraction, place);
+}
+
 const DeckPoint& memberPoint(const Context& c, const Field& f) {
   if (!c.deck.frame)
     f.fail("a place on a member needs a frame (nodes: and members:); name a point instead");

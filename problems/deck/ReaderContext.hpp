@@ -47,6 +47,9 @@ void readFrame(Context& c);
 /// The point a `{member: NAME, at: FRACTION}` (or `at_length: METRES`) map names; readFrame
 /// made it.
 const DeckPoint& memberPoint(const Context& c, const Field& f);
+/// A mesh node at `fraction` (0 to 1) of member `member`, where a partial load starts or
+/// ends; nothing at its ends, which are joints already.
+void addMemberStation(Context& c, int member, double fraction, const DeckPlace& place);
 /// Supports, springs, contacts, masses, hinges and loads.
 void readAttachments(Context& c);
 /// A mass given as a disk's geometry {D, bore, width, rho}: its m, Jp, Jd into `mass`.

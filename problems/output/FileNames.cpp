@@ -46,6 +46,10 @@ std::string modeVtu(const std::string& stem, int number) {
   return numberedVtu(stem, "mode", number, 2);
 }
 
+std::string caseVtu(const std::string& stem, int number) {
+  return numberedVtu(stem, "case", number, 2);
+}
+
 std::string frameVtu(const std::string& stem, int number) {
   return numberedVtu(stem, "frame", number, 4);
 }

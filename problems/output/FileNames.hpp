@@ -44,6 +44,14 @@ inline std::string staticVtu(const std::string& stem) {
 }
 /// Modal: mode `number` (1-based).
 std::string modeVtu(const std::string& stem, int number);
+/// Statics with load cases: case or combination `number` (1-based, cases first, then
+/// combinations, in deck order).
+std::string caseVtu(const std::string& stem, int number);
+/// Statics with load cases: the ParaView collection of every case and combination, stepped
+/// through by their number.
+inline std::string casesPvd(const std::string& stem) {
+  return stem + "_cases.pvd";
+}
 /// A ParaView collection: the modes of an analysis, or one analysis over a sweep.
 inline std::string collectionPvd(const std::string& stem) {
   return stem + ".pvd";

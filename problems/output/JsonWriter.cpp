@@ -173,12 +173,22 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
   if (!a.cases.empty()) {
     Json cases = Json::array();
-    for (const CaseOutcome& c : a.cases) cases.push_back(caseJson(dofs, carried, c, stem));
+    for (const CaseOutcome& c : a.cases) {
+      cases.push_back(caseJson(dofs, carried, c, stem));
+      cases.back()["vtu"] = caseVtu(stem, int(cases.size()));
+    }
     out["cases"] = cases;
     out["files"]["cases_csv"] = casesCsv(stem);
+    out["files"]["cases_pvd"] = casesPvd(stem);
     if (std::any_of(a.cases.begin(), a.cases.end(),
-                    [](const CaseOutcome& c) { return c.combination; }))
+                    [](const CaseOutcome& c) { return c.combination; })) {
       out["envelope"] = envelopeJson(cases);
+      if (!model.members().empty()) {
+        Json files = Json::object();
+        for (const auto& [name, elements] : model.members()) files[name] = envelopeCsv(stem, name);
+        out["files"]["envelope_csv"] = files;
+      }
+    }
   }
   return out;
 }

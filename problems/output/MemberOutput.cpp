@@ -48,6 +48,36 @@ CsvTable memberTable(const std::string& title, const Model& model,
   return table;
 }
 
+std::string envelopeCsv(const std::string& stem, const std::string& member) {
+  return stem + "_envelope_" + member + ".csv";
+}
+
+CsvTable memberEnvelopeTable(const std::string& title, const std::vector<EnvelopeStation>& stations,
+                             const std::vector<std::string>& solutionNames) {
+  std::vector<CsvColumn> columns{{"s", "m"}, {"element", ""}};
+  for (ForceComponent c : kForceComponents) {
+    const std::string name = componentName(c);
+    const std::string unit = (c == ForceComponent::N || c == ForceComponent::Vy ||
+                              c == ForceComponent::Vz) ? "N" : "N m";
+    columns.push_back({name + "_max", unit});
+    columns.push_back({name + "_max_case", ""});
+    columns.push_back({name + "_min", unit});
+    columns.push_back({name + "_min_case", ""});
+  }
+  CsvTable table(title, columns);
+  for (const EnvelopeStation& st : stations) {
+    std::vector<CsvCell> row{st.along, (long long)st.element};
+    for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
+      row.push_back(st.max[c]);
+      row.push_back(solutionNames.at(st.maxBy[c]));
+      row.push_back(st.min[c]);
+      row.push_back(solutionNames.at(st.minBy[c]));
+    }
+    table.addRow(row);
+  }
+  return table;
+}
+
 Json membersJson(const Model& model, const NodalField& displacement, const std::string& stem) {
   Json out = Json::object();
   for (const auto& [name, elements] : model.members()) {

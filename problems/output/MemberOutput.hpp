@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/assembly/MemberEnvelope.hpp"
 #include "fem/model/Model.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
@@ -23,6 +24,15 @@ std::string memberCsv(const std::string& stem, const std::string& member);
 /// local y and z axes in global components (ey_x .. ez_z; the charts draw diagrams along them).
 CsvTable memberTable(const std::string& title, const Model& model,
                      const std::vector<int>& elements, const std::vector<StaticStation>& stations);
+
+/// `<stem>_envelope_<name>.csv`.
+std::string envelopeCsv(const std::string& stem, const std::string& member);
+
+/// The envelope over the combinations along one member (memberEnvelope), one row per place:
+/// s (m from its start), element, then for each of N Vy Vz T My Mz its largest value, the
+/// combination giving it, its smallest value and the combination giving that.
+CsvTable memberEnvelopeTable(const std::string& title, const std::vector<EnvelopeStation>& stations,
+                             const std::vector<std::string>& solutionNames);
 
 /// {"NAME": {"length", "elements", "from", "to", "N": {"max": {value, s, x, y, z, element},
 /// "min": {...}}, ... "Mz": ..., "chord_deflection": {value, s, x, y, z, element}, "csv"}}.

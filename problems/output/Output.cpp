@@ -12,6 +12,7 @@
 #include "problems/output/AtomicDirectory.hpp"
 #include "problems/output/Charts.hpp"
 #include "problems/output/CsvTable.hpp"
+#include "problems/output/EnvelopeCharts.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/FrameCharts.hpp"
@@ -96,8 +97,17 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
         for (const Json& entry : prepared.doc.at("analyses"))
           if (entry.at("name") == a.name && entry.contains("cases"))
             loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
-      for (const CsvTable& member : p.members) member.write(dir / member.title());
+      for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
+        for (const CsvTable& table : *list) table.write(dir / table.title());
       writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations, p.peaks);
+      if (!p.cases.empty()) {
+        std::vector<PvdEntry> entries;
+        for (const PreparedCase& c : p.cases) {
+          writeStaticVtu(dir / c.vtu, *c.outcome->model, c.outcome->statics, c.stations, c.peaks);
+          entries.push_back({double(entries.size() + 1), c.vtu});
+        }
+        writePvd(dir / casesPvd(p.stem), entries);
+      }
       if (charts && !p.stations.empty() && p.members.empty())
         drawChart(dir,
                   staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
@@ -109,6 +119,12 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
           series.push_back({member.title(), &member, member.title()});
         drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), model,
                                   a.statics->displacement, series, run.dimension == "planar"));
+        for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
+          const std::string& member = model.members()[m].first;
+          drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),
+                                             envelopeChart(p.stem, member), p.envelopes[m],
+                                             p.envelopes[m].title()));
+        }
       }
     }
     if (a.transient)

@@ -17,9 +17,36 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
     for (const std::optional<CsvTable>* t :
          {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance})
       if (*t) all.emplace_back((*t)->title(), &**t);
-  for (const CsvTable& t : members) all.emplace_back(t.title(), &t);
+  for (const std::vector<CsvTable>* list : {&members, &envelopes})
+    for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
   return all;
 }
+
+namespace {
+
+/// Each case's VTK samples and, for a frame with combinations, the envelope along every member.
+void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
+  for (std::size_t i = 0; i < a.cases.size(); ++i) {
+    const CaseOutcome& c = a.cases[i];
+    const NodalField& u = c.statics.displacement;
+    p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(*c.model, u),
+                       elementPeaks(*c.model, u)});
+  }
+  std::vector<LoadedSolution> combinations;
+  std::vector<std::string> names;
+  for (const CaseOutcome& c : a.cases)
+    if (c.combination) {
+      combinations.push_back({c.model.get(), &c.statics.displacement});
+      names.push_back(c.name);
+    }
+  if (combinations.empty()) return;
+  for (const auto& [name, elements] : combinations.front().model->members())
+    p.envelopes.push_back(memberEnvelopeTable(
+        envelopeCsv(p.stem, name), memberEnvelope(combinations, elements, kIntervalsPerElement),
+        names));
+}
+
+}  // namespace
 
 PreparedRun prepareRun(const RunResult& run) {
   // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
@@ -31,7 +58,7 @@ PreparedRun prepareRun(const RunResult& run) {
   PreparedRun prepared{&run, {}, {}};
   std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
     if (a.statics) {
       p.stations = sampleStatics(model, a.statics->displacement);
@@ -39,6 +66,7 @@ PreparedRun prepareRun(const RunResult& run) {
       p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
       for (const auto& [name, elements] : model.members())
         p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
+      prepareCases(a, p);
     }
     if (a.modal) {
       p.modes = modesTable(modesCsv(p.stem), *a.modal);

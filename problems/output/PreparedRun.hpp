@@ -17,6 +17,14 @@
 
 namespace beamrotor {
 
+/// A load case or combination of a static analysis, sampled for its VTK file.
+struct PreparedCase {
+  const CaseOutcome* outcome = nullptr;
+  std::string vtu;                      ///< <stem>_case_NN.vtu
+  std::vector<StaticStation> stations;
+  std::vector<ElementPeaks> peaks;
+};
+
 /// What one analysis writes, computed before writing.
 struct PreparedAnalysis {
   const AnalysisOutcome* outcome = nullptr;
@@ -29,6 +37,8 @@ struct PreparedAnalysis {
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
   std::optional<PreparedRotor> rotor;   ///< rotor analyses
   std::vector<CsvTable> members;        ///< statics of a frame: <stem>_member_<name>.csv each
+  std::vector<CsvTable> envelopes;      ///< frame with combinations: <stem>_envelope_<name>.csv
+  std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
 
   /// Every table this analysis has, each with its CSV file name, in writing order.
   std::vector<std::pair<std::string, const CsvTable*>> tables() const;

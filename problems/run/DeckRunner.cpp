@@ -32,43 +32,30 @@ Deck withLoads(const Deck& deck, std::vector<DeckLoad> loads) {
   return d;
 }
 
-/// Each load case solved on its own, then each combination as the factored sum of the case
-/// solutions (displacements and reactions); the combination's model carries the factored
-/// loads so that member forces recovered from it include the factored distributed loads.
+/// The loads of combination k: each factored case's loads, scaled by its factor.
+std::vector<DeckLoad> combinedLoads(const Deck& deck, const DeckCombination& k) {
+  std::vector<DeckLoad> loads;
+  for (const auto& [name, factor] : k.factors)
+    for (const DeckLoadCase& lc : deck.loadCases)
+      if (lc.name == name)
+        for (const DeckLoad& l : lc.loads) loads.push_back(scaledLoad(l, factor));
+  return loads;
+}
+
+/// Each load case and each combination (its cases' loads, factored) as a model of its own,
+/// all solved with one factorisation of K: the models differ only in their loads, so each is
+/// one more right-hand side. Each model is kept for member forces, which need its distributed
+/// loads.
 std::vector<CaseOutcome> solveCases(const Deck& deck) {
   std::vector<CaseOutcome> out;
-  for (const DeckLoadCase& lc : deck.loadCases) {
-    CaseOutcome c;
-    c.name = lc.name;
-    auto model = buildModel(withLoads(deck, lc.loads));
-    c.statics = solveStatic(*model);
-    c.model = std::move(model);
-    out.push_back(std::move(c));
-  }
-  const std::size_t caseCount = out.size();
-  for (const DeckCombination& k : deck.combinations) {
-    std::vector<DeckLoad> loads;
-    CaseOutcome c;
-    c.name = k.name;
-    c.combination = true;
-    c.statics = out.front().statics;
-    c.statics.displacement.setZero();
-    for (ReactionComponent& r : c.statics.reactions) r.value = 0;
-    for (const auto& [name, factor] : k.factors) {
-      for (std::size_t i = 0; i < caseCount; ++i) {
-        if (out[i].name != name) continue;
-        const StaticResult& r = out[i].statics;
-        c.statics.displacement += factor * r.displacement;
-        for (std::size_t j = 0; j < r.reactions.size(); ++j)
-          c.statics.reactions[j].value += factor * r.reactions[j].value;
-        for (const DeckLoad& l : deck.loadCases[i].loads) loads.push_back(scaledLoad(l, factor));
-      }
-    }
-    auto model = buildModel(withLoads(deck, loads));
-    c.statics.hinges = hingeRotations(*model, c.statics.displacement);
-    c.model = std::move(model);
-    out.push_back(std::move(c));
-  }
+  for (const DeckLoadCase& lc : deck.loadCases)
+    out.push_back({lc.name, false, buildModel(withLoads(deck, lc.loads)), {}});
+  for (const DeckCombination& k : deck.combinations)
+    out.push_back({k.name, true, buildModel(withLoads(deck, combinedLoads(deck, k))), {}});
+  std::vector<const Model*> models;
+  for (const CaseOutcome& c : out) models.push_back(c.model.get());
+  std::vector<StaticResult> results = solveStaticCases(models);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i].statics = std::move(results[i]);
   return out;
 }
 

@@ -1,6 +1,8 @@
 #include "problems/run/ModelBuilder.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -39,6 +41,43 @@ std::vector<int> segmentOfBeams(const Deck& deck, const Line& line) {
     out.push_back(std::min(int(it - ends.begin()), int(ends.size()) - 1));
   }
   return out;
+}
+
+/// Where a segment (a frame's member) lies: its start, unit direction and length.
+struct SegmentAxis {
+  Eigen::Vector3d start, direction;
+  double length = 0;
+};
+
+SegmentAxis segmentAxis(const Deck& deck, int segment) {
+  const double length = deck.segments[segment].length;
+  if (deck.frame) {
+    const DeckMember& m = deck.frame->members[segment];
+    const Eigen::Vector3d a = deck.frame->joints[m.from].x, b = deck.frame->joints[m.to].x;
+    return {a, (b - a) / length, length};
+  }
+  double x = 0;
+  for (int k = 0; k < segment; ++k) x += deck.segments[k].length;
+  return {Eigen::Vector3d(x, 0, 0), Eigen::Vector3d::UnitX(), length};
+}
+
+/// A distributed load's value (N/m, global) at end `end` of a beam spanning fractions `span`
+/// of its segment: zero outside the loaded part (whose ends are nodes, so a beam lies wholly
+/// inside or outside it), linear from q at `from` to qEnd at `to` inside; turned from member
+/// axes, or scaled per projected length (component k by the length of the segment's
+/// projection across direction k, sqrt(1 - e_k^2) per unit length).
+Eigen::Vector3d distributedLoadAt(const DeckLoad& l, const Beam& beam, const SegmentAxis& axis,
+                                  const std::array<double, 2>& span, int end) {
+  constexpr double kInside = 1e-9;  // fractions: a node at the part's end, up to round-off
+  const double middle = 0.5 * (span[0] + span[1]);
+  if (middle < l.from - kInside || middle > l.to + kInside) return Eigen::Vector3d::Zero();
+  const double t = std::clamp((span[end] - l.from) / (l.to - l.from), 0.0, 1.0);
+  Eigen::Vector3d q = (1 - t) * l.q + t * l.qEnd;
+  if (l.inMemberAxes) return beam.localAxes().transpose() * q;
+  if (l.perProjectedLength)
+    for (int k = 0; k < 3; ++k)
+      q[k] *= std::sqrt(std::max(0.0, 1 - axis.direction[k] * axis.direction[k]));
+  return q;
 }
 
 /// Supports, springs, contacts, masses and point loads at their nodes (model: not null).
@@ -128,17 +167,25 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
   // 1. The beams: a line of segments cut at every named point, or a frame's members.
   const BuiltBeams beams = deck.frame ? addFrame(deck, *model) : addLine(deck, *model);
 
-  // 2. Distributed loads and self-weight, summed per beam (a beam holds one uniform load).
+  // 2. Distributed loads and self-weight, summed per beam (a beam holds one load varying
+  //    linearly from its start to its end).
   for (std::size_t b = 0; b < beams.beams.size(); ++b) {
     Beam& beam = *beams.beams[b];
-    Eigen::Vector3d q = Eigen::Vector3d::Zero();
+    const int segment = beams.segmentOf[b];
+    const SegmentAxis axis = segmentAxis(deck, segment);
+    std::array<double, 2> span;  // the beam's ends as fractions of its segment's length
+    for (int end = 0; end < 2; ++end)
+      span[end] = (model->nodes()[beam.endNodes()[end]] - axis.start).dot(axis.direction) /
+                  axis.length;
+    std::array<Eigen::Vector3d, 2> q{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     for (const DeckLoad& l : deck.loads) {
-      if (!acts(l, beams.segmentOf[b])) continue;
+      if (!acts(l, segment)) continue;
       if (l.kind == DeckLoad::Kind::distributed)
-        q += l.inMemberAxes ? Eigen::Vector3d(beam.localAxes().transpose() * l.q) : l.q;
-      if (l.kind == DeckLoad::Kind::selfWeight) q.y() -= beam.section().rhoA() * l.g;
+        for (int end = 0; end < 2; ++end) q[end] += distributedLoadAt(l, beam, axis, span, end);
+      if (l.kind == DeckLoad::Kind::selfWeight)
+        for (Eigen::Vector3d& qe : q) qe.y() -= beam.section().rhoA() * l.g;
     }
-    if (!q.isZero()) beam.setDistributedLoad(q);
+    if (!q[0].isZero() || !q[1].isZero()) beam.setDistributedLoad(q[0], q[1]);
   }
 
   // 3. Hinges: release the rotations of every beam end at the point; a rotation released on

@@ -33,8 +33,8 @@ struct Check {
 };
 
 /// A static analysis under one load case or combination: the model carrying its loads (for
-/// member forces, which need the distributed loads) and its solution. A combination's solution
-/// is the factored sum of its cases' solutions.
+/// member forces, which need the distributed loads) and its solution. A combination's model
+/// carries its cases' loads, factored; all cases and combinations share one factorisation.
 struct CaseOutcome {
   std::string name;
   bool combination = false;

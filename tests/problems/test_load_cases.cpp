@@ -9,12 +9,26 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/MemberEnvelope.hpp"
 #include "fem/assembly/MemberExtrema.hpp"
+#include "fem/model/LineElement.hpp"
+#include "fem/assembly/Recovery.hpp"
+#include "fem/static/Static.hpp"
 #include "problems/deck/DeckError.hpp"
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/DeckSource.hpp"
+#include "problems/output/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
@@ -89,6 +103,25 @@ double memberMaxAbsMz(const CaseOutcome& c, const std::string& member) {
   FAIL("no member " << member);
   return 0;
 }
+
+/// The DeckError reading the two-span deck with `cases` as its loads part raises (REQUIREs one).
+DeckError loadCaseError(const std::string& cases) {
+  try {
+    readDeck(parseDeckText(twoSpanDeck(cases), "cases.yaml"), {});
+  } catch (const DeckError& e) {
+    return e;
+  }
+  FAIL("no DeckError for:\n" << cases);
+  throw std::logic_error("not reached");
+}
+
+/// A malformed load_cases:/combinations: part, the line (the deck's loads part starts on line
+/// 12), the field and a phrase the message must contain.
+struct BadCases {
+  std::string text;
+  int line;
+  std::string field, phrase;
+};
 
 }  // namespace
 
@@ -213,6 +246,113 @@ TEST_SUITE("load cases") {
                     DeckError);
   }
 
+  TEST_CASE("malformed load cases and combinations name file, line and field") {
+    const std::string one = "  - {name: one, loads: [" + spanLoad("span1", kQ) + "]}\n";
+    const std::vector<BadCases> cases{
+        {"load_cases:\n" + one + one, 14, "load_cases[1].name",
+         "already a load case or combination named 'one'"},
+        {"load_cases:\n" + one + "combinations:\n  - {name: one, factors: {one: 2}}\n", 15,
+         "combinations[0].name", "already a load case or combination named 'one'"},
+        {"load_cases:\n" + one + "combinations:\n  - {name: c, factors: {two: 2}}\n", 15,
+         "combinations[0].factors.two", "no load case 'two'"},
+        {"load_cases:\n" + one + "combinations:\n  - {name: c, factors: {}}\n", 15,
+         "combinations[0].factors", "at least one factor"},
+        {"load_cases:\n" + one + "combinations:\n  - {name: c, factor: {one: 1}}\n", 15,
+         "combinations[0].factor", "unknown key"},
+        {"combinations:\n  - {name: c, factors: {one: 1}}\n", 12, "combinations",
+         "define them under load_cases"},
+        {"load_cases:\n  - {name: one, loads: {type: point}}\n", 13, "load_cases[0].loads",
+         "expected a list of loads"},
+        {"load_cases:\n  - {name: one}\n", 13, "load_cases[0]", "loads"},
+        {"load_cases:\n  - {name: one, loads: [{type: distributed, member: span9, qy: 1}]}\n", 13,
+         "load_cases[0].loads[0].member", "span9"},
+        {"load_cases:\n" + one + "combinations:\n  - {name: c, factors: {one: abc}}\n", 15,
+         "combinations[0].factors.one", "abc"},
+    };
+    for (const BadCases& c : cases) {
+      CAPTURE(c.text);
+      const DeckError e = loadCaseError(c.text);
+      CHECK(e.file() == "cases.yaml");
+      CHECK(e.place().line == c.line);
+      CHECK(e.place().field == c.field);
+      CHECK(e.message().find(c.phrase) != std::string::npos);
+    }
+  }
+
+  TEST_CASE("each case, solved with the shared factor, equals its loads solved alone") {
+    const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
+    const RunResult& run = onlyRun(s);
+    const Study alone = test::solveDeckText(
+        twoSpanDeck("loads: [" + spanLoad("span2", kQ) + "]\n"), "two.yaml");
+    const StaticResult& direct = *onlyRun(alone).analyses.front().statics;
+    const CaseOutcome& two = caseOf(run, "two");
+    // Same matrix, same right-hand side: the only difference is the factor's reuse, which
+    // changes nothing in exact arithmetic; both solutions carry round-off of about 1e-15.
+    const double scale = direct.displacement.cwiseAbs().maxCoeff();
+    CHECK((two.statics.displacement - direct.displacement).cwiseAbs().maxCoeff() <=
+          1e-12 * scale);
+    for (const char* support : {"A", "B", "C"})
+      CHECK(two.statics.reaction(support, Dof::uy) ==
+            doctest::Approx(direct.reaction(support, Dof::uy)).epsilon(1e-12).scale(kQ * kL));
+    // Models of another structure cannot share a factor.
+    const Study other = test::solveDeckText(
+        "model: {dimension: planar}\nmaterials: [{name: steel, E: 210e9, nu: 0.3}]\n"
+        "sections: [{name: b, shape: rectangle, depth: 0.1, width: 0.1}]\n"
+        "segments: [{length: 1, section: b, elements: 3}]\n"
+        "supports: [{at: start, fix: clamped}]\nloads: [{type: point, at: end, fy: 1}]\n"
+        "analyses: [{type: static}]\n",
+        "other.yaml");
+    CHECK_THROWS_AS(solveStaticCases({run.model.get(), onlyRun(other).model.get()}),
+                    std::invalid_argument);
+  }
+
+  TEST_CASE("the envelope along a member against the closed forms of pattern loading") {
+    const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
+    const RunResult& run = onlyRun(s);
+    std::vector<LoadedSolution> combinations;
+    std::vector<std::string> names;
+    for (const CaseOutcome& c : run.analyses.front().cases)
+      if (c.combination) {
+        combinations.push_back({c.model.get(), &c.statics.displacement});
+        names.push_back(c.name);
+      }
+    REQUIRE(combinations.size() == 3);
+    const std::vector<int>& span1 = run.model->members().front().second;
+    // Only the element ends as even places: the sagging peaks lie inside elements, so the
+    // envelope reaches them only through the stationary points it adds.
+    const std::vector<EnvelopeStation> env = memberEnvelope(combinations, span1, 1);
+    double sagging = -1e300, hogging = 1e300;
+    std::string saggingBy, hoggingBy;
+    for (const EnvelopeStation& st : env) {
+      // At every place, the largest and smallest over the combinations, each recomputed here
+      // from the element's own resultants.
+      double hi = -1e300, lo = 1e300;
+      for (const LoadedSolution& sol : combinations) {
+        const LineElement& line = *asLine(sol.model->elements().at(st.element));
+        const double mz = line.sectionForces(elementValues(line, *sol.displacement), st.s).Mz;
+        hi = std::max(hi, mz), lo = std::min(lo, mz);
+      }
+      CHECK(st.max[5] == doctest::Approx(hi).epsilon(1e-14).scale(kQ * kL * kL));
+      CHECK(st.min[5] == doctest::Approx(lo).epsilon(1e-14).scale(kQ * kL * kL));
+      if (st.max[5] > sagging) sagging = st.max[5], saggingBy = names[st.maxBy[5]];
+      if (st.min[5] < hogging) hogging = st.min[5], hoggingBy = names[st.minBy[5]];
+    }
+    // Two equal spans, uniform p1 on span 1 and p2 on span 2 (three-moment equation):
+    // M_B = -(p1 + p2) L^2 / 16, R_A = p1 L / 2 + M_B / L, largest sagging moment R_A^2/(2 p1).
+    const auto supportMoment = [](double p1, double p2) { return -(p1 + p2) * kL * kL / 16; };
+    const auto spanMoment = [&](double p1, double p2) {
+      const double RA = p1 * kL / 2 + supportMoment(p1, p2) / kL;
+      return RA * RA / (2 * p1);
+    };
+    // Sagging: "left" (1.5 q on span 1 alone) beats ULS (1.35 q, 1.5 q) and both (q, q);
+    // hogging: ULS, the largest total load.
+    CHECK(saggingBy == "left");
+    CHECK(sagging == doctest::Approx(spanMoment(1.5 * kQ, 0)).epsilon(kExact));
+    CHECK(spanMoment(1.5 * kQ, 0) > spanMoment(1.35 * kQ, 1.5 * kQ));
+    CHECK(hoggingBy == "ULS");
+    CHECK(hogging == doctest::Approx(supportMoment(1.35 * kQ, 1.5 * kQ)).epsilon(kExact));
+  }
+
   TEST_CASE("loads: without load cases give no case entries") {
     const Study s = test::solveDeckText(twoSpanDeck("loads: [" + spanLoad("span1", kQ) + "]\n"),
                                         "plain.yaml");
@@ -230,6 +370,31 @@ TEST_SUITE("load cases") {
     const std::string csv = solved.text(a["files"]["cases_csv"].get<std::string>());
     CHECK(csv.rfind("case,combination,quantity,at,component,value", 0) == 0);
     CHECK(csv.find("\"ULS_both\",1,\"member\",\"span1\",\"Mz min\"") != std::string::npos);
+    // Every case and combination has a VTK file whose displacements are the case's own, and
+    // a ParaView collection steps through them.
+    const Study study = solveStudy(test::shippedDeckRequest("continuous_beam.yaml"));
+    const RunResult& run = onlyRun(study);
+    const auto& cases = run.analyses.front().cases;
+    REQUIRE(a["cases"].size() == cases.size());
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      vtkNew<vtkXMLUnstructuredGridReader> reader;
+      reader->SetFileName((solved.dir / a["cases"][i]["vtu"].get<std::string>()).string().c_str());
+      reader->Update();
+      vtkDataArray* u = reader->GetOutput()->GetPointData()->GetArray("displacement");
+      REQUIRE(u != nullptr);
+      REQUIRE(u->GetNumberOfTuples() == cases[i].statics.displacement.rows());
+      for (vtkIdType n = 0; n < u->GetNumberOfTuples(); ++n)
+        CHECK(u->GetComponent(n, 1) == cases[i].statics.displacement(n, 1));
+    }
+    CHECK(solved.text(a["files"]["cases_pvd"].get<std::string>()).find("case_06.vtu") !=
+          std::string::npos);
+    // The envelope along each member: its extremes are the results.json envelope's, exactly.
+    for (const char* member : {"span1", "span2"}) {
+      const std::string env = solved.text(a["files"]["envelope_csv"][member].get<std::string>());
+      CHECK(env.rfind("s [m],element,N_max [N],N_max_case,N_min [N],N_min_case", 0) == 0);
+      const double hogging = a["envelope"]["members"][member]["Mz"]["min"]["value"].get<double>();
+      CHECK(env.find(exactDecimal(hogging)) != std::string::npos);
+    }
     std::filesystem::remove_all(solved.dir.parent_path());
   }
 }

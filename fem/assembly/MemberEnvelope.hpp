@@ -1,0 +1,42 @@
+// The envelope of a member's stress resultants over several static solutions of one structure
+// (the combinations of load cases): at each place along the member, the largest and smallest
+// value of N, Vy, Vz, T, My, Mz over the solutions and which solution gives it. The places are
+// evenly spaced stations plus every place inside an element where one solution's resultant
+// has a stationary point: the envelope of polynomials peaks only where one of them does (or
+// at an element end), so the largest and smallest envelope values are exact, not sampled.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "fem/assembly/MemberExtrema.hpp"
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
+
+namespace beamrotor {
+
+/// One static solution: the model it was solved on (carrying its own span loads; every model
+/// shares the structure, so element numbers agree) and its displacement.
+struct LoadedSolution {
+  const Model* model = nullptr;
+  const NodalField* displacement = nullptr;
+};
+
+/// The envelope at one place on a member; max and min in the order of kForceComponents,
+/// maxBy and minBy the index of the solution that gives each.
+struct EnvelopeStation {
+  int element = -1;   ///< index into model.elements()
+  double s = 0;       ///< fraction of that element's length
+  double along = 0;   ///< distance from the member's start (m)
+  std::array<double, 6> max{}, min{};
+  std::array<int, 6> maxBy{}, minBy{};
+};
+
+/// The envelope along member `elements` (line elements from its start to its end) over
+/// `solutions` (at least one), at intervalsPerElement + 1 even places per element (ends
+/// included) and every interior stationary point of a solution's resultant, in order.
+std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& solutions,
+                                            const std::vector<int>& elements,
+                                            int intervalsPerElement);
+
+}  // namespace beamrotor
