@@ -30,7 +30,7 @@ import member_ends  # noqa: E402
 
 CCX_LEVELS = (32, 64, 128)  # B31 elements per member
 BEAMROTOR_ELEMENTS = 8       # Timoshenko elements per member (exact for these loads)
-TOLERANCE = 1e-2             # see README.md in this folder: measured differences and why
+TOLERANCE = 1.5e-2           # see README.md in this folder: measured differences and why
 KINDS = {"u": "displacement", "f": "force", "m": "moment", "N": "force", "V": "force",
          "T": "moment", "M": "moment"}
 
