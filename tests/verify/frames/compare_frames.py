@@ -109,8 +109,8 @@ def main():
             flag = "  <-- over" if r["rel_diff"] > TOLERANCE else ""
             print(f"{r['quantity']:<28}{r['beamrotor']:>15.6g}{r['ccx']:>15.6g}"
                   f"{r['rel_diff']:>11.2e}{r['ccx_mesh_change']:>11.2e}{flag}")
-        print(f"largest difference {worst:.2e} (tolerance {TOLERANCE:.0e}), largest ccx mesh "
-              f"change {worst_mesh:.2e} (must stay below {TOLERANCE / 2:.0e}): "
+        print(f"largest difference {worst:.2e} (tolerance {TOLERANCE:g}), largest ccx mesh "
+              f"change {worst_mesh:.2e} (must stay below {TOLERANCE / 2:g}): "
               f"{'pass' if ok else 'FAIL'}")
         record = {"title": model["title"], "passed": ok, "tolerance": TOLERANCE,
                   "largest_rel_diff": worst, "largest_ccx_mesh_change": worst_mesh,
