@@ -72,7 +72,7 @@ _COMPONENTS = {"DISP": ("D1", "D2", "D3"),
                "STRESS": ("SXX", "SYY", "SZZ", "SXY", "SYZ", "SZX")}
 
 
-def section_resultants(stress, axes):
+def section_resultants(stress):
     """Section forces of a beam node as beamrotor's member resultants (N, Vy, Vz, T, My, Mz):
     ccx's n1 is the member's local z, so n2 = t x n1 = -y."""
     sxx, syy, szz, sxy, syz, szx = stress

@@ -87,7 +87,7 @@ def ccx_quantities(model, mesh, stem):
         chain = mesh["members"][m["name"]]
         keep = [k for k, s in enumerate(chain["s"])
                 if SKIP * m["length"] <= s <= (1 - SKIP) * m["length"]]
-        local = [section_resultants(stress[chain["nodes"][k]], m["axes"]) for k in keep]
+        local = [section_resultants(stress[chain["nodes"][k]]) for k in keep]
         s = [chain["s"][k] for k in keep]
         start, end = {}, {}
         for key in ("N", "Vy", "Vz", "T", "My", "Mz"):
