@@ -87,7 +87,7 @@ report: build
 	done
 	./$(BUILD)/beamrotor report --out $(REPORT_DIR)
 
-# Frames against a second method (never part of `make test`; about 10 seconds): the two-bay
+# Frames against a second method (never part of `make test`; about 15 seconds): the two-bay
 # portal frame and the 3d base frame of tests/verify/frames/ written both as beamrotor decks and
 # as CalculiX inputs (B31 beams, 32, 64 and 128 per member), solved by both, and their joint
 # displacements, reactions and member end forces compared (after a self-test of the ccx file
