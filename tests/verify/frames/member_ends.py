@@ -5,9 +5,10 @@ at each end J of each member, in member axes (problems/deck/FORMAT.md, Frames).
 
 From ccx, the member end forces are extrapolated, never read at the joint: ccx averages a
 node's section forces over the elements that meet there, so at a joint it mixes members, and
-next to a knot or a clamp the section forces are disturbed over about a section depth. So each resultant is fitted along the member with a
-quadratic in s (exact for the loads here: nodal loads and uniform member loads) through the
-member's nodes in its middle half, and the fit is read at the ends.
+next to a knot or a clamp the section forces are disturbed over about a section depth. So
+each resultant is fitted along the member with a quadratic in s (exact for the loads here:
+nodal loads and uniform member loads) through the member's nodes in its middle half, and the
+fit is read at the ends.
 Reactions come from the supported member's end the same way: ccx's RF is not the reaction at a
 node whose rotations are held (8 elements per member: 12 % of the two-bay frame's load);
 where they are free (pinned), RF is checked against the member end, and all balance the loads.
