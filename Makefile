@@ -87,6 +87,21 @@ report: build
 	done
 	./$(BUILD)/beamrotor report --out $(REPORT_DIR)
 
+# Frames against a second method (never part of `make test`; about 15 seconds): the two-bay
+# portal frame and the 3d base frame of tests/verify/frames/ written both as beamrotor decks and
+# as CalculiX inputs (B31 beams, 32, 64 and 128 per member), solved by both, and their joint
+# displacements, reactions and member end forces compared (after a self-test of the ccx file
+# reader). Table on the terminal, JSON in out/verify/frames/; fails when a difference exceeds
+# the tolerance that README.md there justifies.
+VERIFY_FRAMES_PACKAGES := calculix-ccx
+.PHONY: verify-frames
+verify-frames: build
+	@$(MAKE) --no-print-directory deps PACKAGES="$(VERIFY_FRAMES_PACKAGES)"
+	$(PY) tests/verify/frames/test_ccx_results.py
+	$(PY) tests/verify/frames/compare_frames.py --beamrotor ./$(BUILD)/beamrotor \
+	  --out out/verify/frames tests/verify/frames/two_bay_frame.json \
+	  tests/verify/frames/base_frame_3d.json
+
 # Fuzz the deck reader and the command-line values (clang-14 + libFuzzer, ASan, UBSan),
 # FUZZ_SECONDS each: seeds are the shipped decks and malformed fixtures (fuzz_deck) and the
 # option lines in tests/problems/fuzz_inputs/ (fuzz_options); new inputs collect in
