@@ -206,7 +206,8 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
 }
 
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
-                       const std::string& parameter, const std::vector<SweepQuantity>& quantities,
+                       const std::string& parameter, const std::string& unit,
+                       const std::vector<SweepQuantity>& quantities,
                        const CsvTable& table, const std::string& csvFile) {
   // Frequencies share one panel; every reaction, the stress and each transient maximum get
   // their own, except
@@ -242,7 +243,10 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   body << "  set encoding utf8\n"
        << panelLayout(rows, columns, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n"
-       << "  set xlabel " << gnuplotText(parameter + " (deck parameter, SI units)") << "\n";
+       << "  set xlabel "
+       << gnuplotText(unit.empty() ? parameter + " (deck parameter, SI units)"
+                                   : parameter + " [" + unit + "]")
+       << "\n";
   // Values spread over decades (a stiffness from 1e4 to 1e6) read better on a log axis.
   const auto values = table.numbers(parameter);
   const auto [low, high] = std::minmax_element(values.begin(), values.end());

@@ -48,10 +48,12 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
 
 /// One panel per reaction component and the largest normal and shear stress of a static
 /// analysis, per maximum of a transient one, or the frequencies of a modal one, against the
-/// swept parameter, from sweepTable in csvFile.
+/// swept parameter (labelled with its SI unit when the deck gave one, `unit`), from sweepTable
+/// in csvFile.
 /// `quantities` are those of this analysis.
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
-                       const std::string& parameter, const std::vector<SweepQuantity>& quantities,
+                       const std::string& parameter, const std::string& unit,
+                       const std::vector<SweepQuantity>& quantities,
                        const CsvTable& table, const std::string& csvFile);
 
 /// One panel per column of a transient history table (after its first column, time t in s)

@@ -217,7 +217,8 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
         if (q.analysis == a.name) own.push_back(q);
       if (!own.empty())
         drawChart(temporary, sweepChart(first.deckName + ": " + a.name + " over " + sweep.parameter,
-                                        sweepChart(stem), sweep.parameter, own, table, kSweepCsv));
+                                        sweepChart(stem), sweep.parameter, sweep.unit, own, table,
+                                        kSweepCsv));
     }
     if (also) also(temporary);
   });

@@ -133,7 +133,7 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
 CsvTable sweepTable(const std::string& title, const SweepResult& sweep,
                     const std::vector<Json>& runDocs,
                     const std::vector<SweepQuantity>& quantities) {
-  std::vector<CsvColumn> columns{{sweep.parameter, ""}};
+  std::vector<CsvColumn> columns{{sweep.parameter, sweep.unit}};
   for (const SweepQuantity& q : quantities) columns.push_back(q.column);
   CsvTable table(title, columns);
   for (std::size_t i = 0; i < runDocs.size(); ++i) {

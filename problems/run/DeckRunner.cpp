@@ -11,6 +11,7 @@
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
+#include "problems/deck/Units.hpp"
 #include "problems/run/AdequateModel.hpp"
 #include "problems/run/Measure.hpp"
 #include "problems/run/DisplacementWarning.hpp"
@@ -170,6 +171,8 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
                      const DeckAdjustment& adjust) {
   SweepResult sweep;
   sweep.parameter = base.sweep->parameter;
+  for (const auto& [name, dimension] : base.dimensions)
+    if (name == sweep.parameter) sweep.unit = siUnitOf(dimension);
   sweep.values = base.sweep->values;
   const int total = int(sweep.values.size());
   for (int i = 0; i < total; ++i) {

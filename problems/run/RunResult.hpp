@@ -73,6 +73,9 @@ struct RunResult {
 /// A deck solved over a list of values of one parameter.
 struct SweepResult {
   std::string parameter;
+  /// The parameter's SI unit when the deck wrote it with a unit ("N", "m"); empty for a bare
+  /// number, whose unit the deck does not say (SI by convention).
+  std::string unit;
   std::vector<double> values;
   std::vector<RunResult> runs;  ///< one per value
 };

@@ -89,6 +89,22 @@ TEST_SUITE("deck sweep") {
     CHECK(single.run->parameters[0].second == 1.5);
   }
 
+  TEST_CASE("a parameter written with a unit labels its sweep with its SI unit") {
+    // The load in kN (the deck's checks, in bare numbers, are left out), swept over P.
+    std::string text = kSweepDeck;
+    text.replace(text.find("  P: 1000"), 9, "  P: 1 kN");
+    text.erase(text.find("checks:"));
+    text += "sweep: {parameter: P, values: [1000, 1500]}\n";
+    StudyRequest r;
+    r.deckPath = "sweep.yaml";
+    const Study withUnit = solveStudyText(text, r);
+    REQUIRE(withUnit.sweep);
+    CHECK(withUnit.sweep->unit == "N");
+    // A bare number says nothing of its unit: no unit is claimed.
+    const Study bare = solve("sweep: {parameter: s, values: [1, 1.5]}");
+    CHECK(bare.sweep->unit.empty());
+  }
+
   TEST_CASE("a sweep from the command line replaces the deck's") {
     StudyRequest r;
     r.sweep = "s=1:2:2";

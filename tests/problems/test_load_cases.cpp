@@ -116,7 +116,7 @@ DeckError loadCaseError(const std::string& cases) {
 }
 
 /// A malformed load_cases:/combinations: part, the line (the deck's loads part starts on line
-/// 12), the field and a phrase the message must contain.
+/// 12; a block's own place is where its value starts), the field and a phrase the message must contain.
 struct BadCases {
   std::string text;
   int line;
@@ -259,11 +259,11 @@ TEST_SUITE("load cases") {
          "combinations[0].factors", "at least one factor"},
         {"load_cases:\n" + one + "combinations:\n  - {name: c, factor: {one: 1}}\n", 15,
          "combinations[0].factor", "unknown key"},
-        {"combinations:\n  - {name: c, factors: {one: 1}}\n", 12, "combinations",
+        {"combinations:\n  - {name: c, factors: {one: 1}}\n", 13, "combinations",
          "define them under load_cases"},
         {"load_cases:\n  - {name: one, loads: {type: point}}\n", 13, "load_cases[0].loads",
          "expected a list of loads"},
-        {"load_cases:\n  - {name: one}\n", 13, "load_cases[0]", "loads"},
+        {"load_cases:\n  - {name: one}\n", 13, "load_cases[0].loads", "loads"},
         {"load_cases:\n  - {name: one, loads: [{type: distributed, member: span9, qy: 1}]}\n", 13,
          "load_cases[0].loads[0].member", "span9"},
         {"load_cases:\n" + one + "combinations:\n  - {name: c, factors: {one: abc}}\n", 15,
@@ -297,7 +297,7 @@ TEST_SUITE("load cases") {
     // Models of another structure cannot share a factor.
     const Study other = test::solveDeckText(
         "model: {dimension: planar}\nmaterials: [{name: steel, E: 210e9, nu: 0.3}]\n"
-        "sections: [{name: b, shape: rectangle, depth: 0.1, width: 0.1}]\n"
+        "sections: [{name: b, shape: rectangle, b: 0.1, h: 0.1}]\n"
         "segments: [{length: 1, section: b, elements: 3}]\n"
         "supports: [{at: start, fix: clamped}]\nloads: [{type: point, at: end, fy: 1}]\n"
         "analyses: [{type: static}]\n",

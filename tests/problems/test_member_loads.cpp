@@ -234,6 +234,33 @@ TEST_SUITE("member loads") {
     CHECK(RA == doctest::Approx(-w * (b - a) * (L - (a + b) / 2) / L).epsilon(kExact));
   }
 
+  TEST_CASE("a point force and a point moment along a member: the fixed-end closed forms") {
+    // Clamped-clamped span L, a = 0.3 L from A, b = L - a. A force P (+y): R_A = -P b^2 (3a +
+    // b) / L^3, M_A = -P a b^2 / L^2. A moment M (+z, counter-clockwise): R_A = 6 M a b / L^3,
+    // M_A = M b (2a - b) / L^2 (the support takes all of it, -M, when a = 0; none when b = 0).
+    const double L = 5, a = 0.3 * L, b = L - a, P = -8e3, M = 3e3;
+    for (int elements : {1, 4}) {
+      CAPTURE(elements);
+      const auto solved = [&](const std::string& component, double value) {
+        std::ostringstream load;
+        load.precision(17);
+        load << "{type: point, at: {member: beam, at: 0.3}, " << component << ": " << value << "}";
+        return test::solveDeckText(oneMemberDeck(L, elements, "clamped", "clamped", load.str()),
+                                   "point.yaml");
+      };
+      const Study force = solved("fy", P);
+      CHECK(test::staticReaction(theRun(force), "A", Dof::uy) ==
+            doctest::Approx(-P * b * b * (3 * a + b) / (L * L * L)).epsilon(kExact));
+      CHECK(test::staticReaction(theRun(force), "A", Dof::rz) ==
+            doctest::Approx(-P * a * b * b / (L * L)).epsilon(kExact));
+      const Study moment = solved("mz", M);
+      CHECK(test::staticReaction(theRun(moment), "A", Dof::uy) ==
+            doctest::Approx(6 * M * a * b / (L * L * L)).epsilon(kExact));
+      CHECK(test::staticReaction(theRun(moment), "A", Dof::rz) ==
+            doctest::Approx(M * b * (2 * a - b) / (L * L)).epsilon(kExact));
+    }
+  }
+
   TEST_CASE("distributed loads the reader refuses, naming the field") {
     struct Bad {
       std::string load, field, phrase;
@@ -258,7 +285,7 @@ TEST_SUITE("member loads") {
       CAPTURE(c.load);
       const DeckError e = memberLoadError(oneMemberDeck(5, 2, "clamped", "clamped", c.load));
       CHECK(e.file() == "loads.yaml");
-      CHECK(e.place().line == 8);
+      CHECK(e.place().line == 7);  // the loads line
       CHECK(e.place().field == c.field);
       CHECK(e.message().find(c.phrase) != std::string::npos);
     }
