@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -15,6 +16,7 @@ namespace {
 struct EnvelopePanel {
   std::string component;  ///< "N", ..., "Mz"
   std::string label;      ///< y axis, with its unit
+  std::string unit;       ///< "kN" or "kN m"
 };
 
 /// The panels worth drawing: resultants that are not zero (to round-off of the largest
@@ -36,15 +38,16 @@ std::vector<EnvelopePanel> panelsOf(const CsvTable& table) {
     const bool isForce = component == "N" || component[0] == 'V';
     const double scale = isForce ? forces : moments;
     constexpr double kRoundOff = 1e-10;  // relative: what a zero resultant shows after solving
-    if (largest(component) > kRoundOff * scale) out.push_back({component, label});
+    if (largest(component) > kRoundOff * scale)
+      out.push_back({component, label, isForce ? "kN" : "kN m"});
   }
   return out;
 }
 
 /// A label at the largest (side "_max") or smallest ("_min") value of the envelope, naming the
-/// combination that gives it.
+/// combination that gives it and the value in kN or kN m (`unit`).
 std::string extremeLabel(const CsvTable& table, const std::string& component,
-                         const std::string& side) {
+                         const std::string& side, const std::string& unit) {
   const std::vector<double> values = table.numbers(component + side);
   const std::vector<double> s = table.numbers("s");
   const auto it = side == "_max" ? std::max_element(values.begin(), values.end())
@@ -52,9 +55,14 @@ std::string extremeLabel(const CsvTable& table, const std::string& component,
   const std::size_t row = std::size_t(it - values.begin());
   const CsvCell& governing = table.cell(row, std::size_t(table.column(component + side + "_case") - 1));
   const std::string name = std::get<std::string>(governing);
+  // Written towards the middle of the member, so that a label at an end stays inside the plot.
+  const bool rightHalf = s[row] > 0.5 * (s.front() + s.back());
+  char value[32];
+  std::snprintf(value, sizeof value, "%.4g", *it / 1e3);
   std::ostringstream label;
-  label << "  set label " << gnuplotText(name + ": " + number(*it / 1e3)) << " at first "
-        << number(s[row]) << ", first " << number(*it / 1e3) << " point pointtype 7 offset 0.8,"
+  label << "  set label " << gnuplotText(name + ": " + value + " " + unit) << " at first "
+        << number(s[row]) << ", first " << number(*it / 1e3) << (rightHalf ? " right" : " left")
+        << " point pointtype 7 offset " << (rightHalf ? "-0.8," : "0.8,")
         << (side == "_max" ? "0.8" : "-0.8") << " front\n";
   return label.str();
 }
@@ -85,8 +93,8 @@ ChartScript memberEnvelopeChart(const std::string& caption, const std::string& c
     const std::string lo = std::to_string(table.column(panels[p].component + "_min"));
     if (p + 1 == panels.size()) body << "  set xlabel 'distance s along the member [m]'\n";
     body << "  unset label\n"
-         << extremeLabel(table, panels[p].component, "_max")
-         << extremeLabel(table, panels[p].component, "_min")
+         << extremeLabel(table, panels[p].component, "_max", panels[p].unit)
+         << extremeLabel(table, panels[p].component, "_min", panels[p].unit)
          << "  set ylabel " << gnuplotText(panels[p].label) << "\n"
          << "  plot " << file << " skip 1 using " << x << ":($" << lo << "/1e3):($" << hi
          << "/1e3) with filledcurves fillstyle transparent solid 0.15 noborder " << colour(0)
