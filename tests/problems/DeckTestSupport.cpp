@@ -9,6 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/DeckSource.hpp"
+
 namespace beamrotor::test {
 
 std::vector<std::filesystem::path> shippedDecks() {
@@ -82,6 +85,16 @@ StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string
   r.sets = std::move(sets);
   r.noSweep = true;
   return r;
+}
+
+DeckError readingError(const std::string& text, const std::string& path) {
+  try {
+    readDeck(parseDeckText(text, path), {});
+  } catch (const DeckError& e) {
+    return e;
+  }
+  FAIL("no DeckError for:\n" << text);
+  throw std::logic_error("not reached");
 }
 
 Study solveDeckText(const std::string& text, const std::string& path) {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "problems/deck/DeckError.hpp"
 #include "problems/run/Study.hpp"
 
 namespace beamrotor::test {
@@ -72,6 +73,9 @@ StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string
 /// Deck text written in a test, read and solved as if it were the file `path` (which names
 /// it in messages).
 Study solveDeckText(const std::string& text, const std::string& path);
+
+/// The DeckError that reading `text` as the file `path` raises (REQUIREs one).
+DeckError readingError(const std::string& text, const std::string& path);
 
 /// The runs of a solved study: its one run, or one per sweep value.
 std::vector<const RunResult*> runsOf(const Study& study);

@@ -84,16 +84,6 @@ const ModalResult& firstModal(const RunResult& run) {
   throw std::logic_error("no modal analysis");
 }
 
-/// The DeckError reading `text` raises (REQUIREs one).
-DeckError unitsDeckError(const std::string& text) {
-  try {
-    readDeck(parseDeckText(text, "units.yaml"), {});
-  } catch (const DeckError& e) {
-    return e;
-  }
-  FAIL("no DeckError for:\n" << text);
-  throw std::logic_error("not reached");
-}
 
 double siOf(const std::string& text) {
   return ExpressionEvaluator().evaluate(text);
@@ -255,16 +245,17 @@ TEST_SUITE("deck units") {
       const std::size_t at = text.find(c.from);
       REQUIRE(at != std::string::npos);
       text.replace(at, c.from.size(), c.to);
-      const DeckError e = unitsDeckError(text);
+      const DeckError e = test::readingError(text, "units.yaml");
       CHECK(e.place().field == c.field);
       CHECK(e.message() == c.message);
       CHECK(e.place().line == c.line);
       CHECK(e.place().column > 1);
     }
     // A check's reference has the dimension of its quantity.
-    const DeckError rpm = unitsDeckError(
+    const DeckError rpm = test::readingError(
         kUnitTwin +
-        "checks:\n  - {name: f, quantity: frequency 1, reference: 3000 rpm, tolerance: 1}\n");
+            "checks:\n  - {name: f, quantity: frequency 1, reference: 3000 rpm, tolerance: 1}\n",
+        "units.yaml");
     CHECK(rpm.message() ==
           "reference expects a frequency (Hz), got an angular speed (rad/s)");
   }
@@ -436,7 +427,7 @@ TEST_SUITE("deck units") {
     CHECK(test::checkAllPass(s) == 1);
     std::string wrong = deck;
     wrong.replace(wrong.find("at 100ms"), 8, "at 100mm");
-    const DeckError e = unitsDeckError(wrong);
+    const DeckError e = test::readingError(wrong, "units.yaml");
     CHECK(e.message() == "the time expects a time (s), got a length (m)");
     CHECK(e.place().line == 8);
   }

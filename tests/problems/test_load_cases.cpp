@@ -104,16 +104,6 @@ double memberMaxAbsMz(const CaseOutcome& c, const std::string& member) {
   return 0;
 }
 
-/// The DeckError reading the two-span deck with `cases` as its loads part raises (REQUIREs one).
-DeckError loadCaseError(const std::string& cases) {
-  try {
-    readDeck(parseDeckText(twoSpanDeck(cases), "cases.yaml"), {});
-  } catch (const DeckError& e) {
-    return e;
-  }
-  FAIL("no DeckError for:\n" << cases);
-  throw std::logic_error("not reached");
-}
 
 /// A malformed load_cases:/combinations: part, the line (the deck's loads part starts on line
 /// 12; a block's own place is where its value starts), the field and a phrase the message must contain.
@@ -271,7 +261,7 @@ TEST_SUITE("load cases") {
     };
     for (const BadCases& c : cases) {
       CAPTURE(c.text);
-      const DeckError e = loadCaseError(c.text);
+      const DeckError e = test::readingError(twoSpanDeck(c.text), "cases.yaml");
       CHECK(e.file() == "cases.yaml");
       CHECK(e.place().line == c.line);
       CHECK(e.place().field == c.field);

@@ -54,16 +54,6 @@ std::array<ComponentRange, 6> beamRanges(const RunResult& run) {
                            run.analyses.front().statics->displacement);
 }
 
-/// The DeckError reading `text` raises (REQUIREs one).
-DeckError memberLoadError(const std::string& text) {
-  try {
-    readDeck(parseDeckText(text, "loads.yaml"), {});
-  } catch (const DeckError& e) {
-    return e;
-  }
-  FAIL("no DeckError for:\n" << text);
-  throw std::logic_error("not reached");
-}
 
 }  // namespace
 
@@ -283,7 +273,7 @@ TEST_SUITE("member loads") {
     };
     for (const Bad& c : cases) {
       CAPTURE(c.load);
-      const DeckError e = memberLoadError(oneMemberDeck(5, 2, "clamped", "clamped", c.load));
+      const DeckError e = test::readingError(oneMemberDeck(5, 2, "clamped", "clamped", c.load), "loads.yaml");
       CHECK(e.file() == "loads.yaml");
       CHECK(e.place().line == 7);  // the loads line
       CHECK(e.place().field == c.field);
