@@ -32,6 +32,21 @@ void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutco
   for (const CriticalSpeed& k : r.criticalSpeeds)
     out << "    critical speed " << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz)
         << " Hz, line " << k.line + 1 << ", " << whirlName(k.whirl) << ")\n";
+  // The least damped line: its smallest log decrement over the sweep.
+  std::size_t worstLine = 0, worstSpeed = 0;
+  for (std::size_t l = 0; l < c.lines.size(); ++l)
+    for (std::size_t s = 0; s < c.speeds.size(); ++s)
+      if (c.lines[l][s].logDecrement < c.lines[worstLine][worstSpeed].logDecrement)
+        worstLine = l, worstSpeed = s;
+  if (!c.lines.empty() && !c.speeds.empty())
+    out << "    smallest log decrement " << formatValue(c.lines[worstLine][worstSpeed].logDecrement)
+        << " (line " << worstLine + 1 << " at " << formatValue(c.speeds[worstSpeed] * kRpm)
+        << " rpm)\n";
+  if (r.onset)
+    out << "    UNSTABLE above " << formatValue(r.onset->rpm) << " rpm (onset of instability: "
+        << formatValue(r.onset->frequencyHz) << " Hz " << whirlName(r.onset->whirl) << " whirl)\n";
+  else
+    out << "    stable over the sweep (no log decrement falls through zero)\n";
 }
 
 void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {

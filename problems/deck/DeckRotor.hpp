@@ -3,10 +3,12 @@
 // ask for. Plain values, read by ReadRotor.cpp and solved by RunRotor.cpp.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "elements/Bearing.hpp"
+#include "elements/PlainJournalBearing.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "problems/deck/DeckError.hpp"
 
@@ -19,6 +21,9 @@ struct DeckBearing {
   std::string point;
   std::vector<double> speeds;              ///< rad/s; empty for constant coefficients
   std::vector<BearingCoefficients> table;  ///< N/m, N s/m
+  /// A plain journal bearing (type: plain-journal): its geometry and oil; the table then holds
+  /// its short-bearing coefficients at `speeds`.
+  std::optional<PlainJournal> journal;
   DeckPlace place;
 };
 

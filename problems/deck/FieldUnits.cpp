@@ -56,6 +56,10 @@ const Table& table() {
       add(t, prefix, {"cxx", "cyy", "cxy", "cyx"}, dim::damping);
     }
     add(t, "bearings[].table[].", {"speed_rpm"}, dim::angularSpeed, kRpm);
+    add(t, "bearings[].", {"D", "L", "c"}, dim::length);
+    add(t, "bearings[].", {"mu"}, Dimension::of(-1, 1, -1, 0));  // dynamic viscosity, Pa s
+    add(t, "bearings[].", {"load"}, dim::force);
+    add(t, "bearings[].", {"from_rpm", "to_rpm"}, dim::angularSpeed, kRpm);
     add(t, "damping.", {"alpha"}, dim::frequency);
     add(t, "damping.", {"beta"}, dim::time);
     return t;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "elements/PlainJournalBearing.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
@@ -48,6 +49,40 @@ BearingCoefficients readCoefficients(const Context& c, const Field& f,
   return k;
 }
 
+std::vector<double> readSpeedRange(const Context& c, const Field& f);
+
+/// A plain journal bearing: geometry, oil and load, and the speeds of its coefficient table.
+/// The short-bearing theory (elements/PlainJournalBearing.hpp) gives the coefficients there.
+void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckBearing& b) {
+  if (type.text() != "plain-journal")
+    type.fail("unknown bearing type '" + type.text() + "'" +
+              didYouMean(type.text(), {"plain-journal"}) +
+              " (a bearing is plain-journal, or has coefficients or a table)");
+  f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "from_rpm", "to_rpm", "steps"},
+              "a plain-journal bearing");
+  const ExpressionEvaluator& ev = c.evaluator;
+  PlainJournal j;
+  j.diameter = f.require("D").positive(ev);
+  const Field length = f.require("L");
+  j.length = length.positive(ev);
+  if (j.length > j.diameter)
+    length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " +
+                formatNumber(j.length / j.diameter) + ")");
+  const Field clearance = f.require("c");
+  j.clearance = clearance.positive(ev);
+  if (!(j.clearance < 0.01 * j.diameter))
+    clearance.fail("a radial clearance of " + formatNumber(j.clearance) +
+                   " m is not small against D (c/D must be below 0.01; typical 0.001)");
+  j.viscosity = f.require("mu").positive(ev);
+  j.load = f.require("load").positive(ev);
+  b.speeds = readSpeedRange(c, f);
+  if (!(b.speeds.front() > 0))
+    f.require("from_rpm").fail("a plain journal bearing has no film at rest: from_rpm must be > 0 "
+                               "(the lowest row is held below it)");
+  for (double w : b.speeds) b.table.push_back(shortBearingCoefficients(j, w));
+  b.journal = j;
+}
+
 bool carriesLateral(const Deck& deck) {
   return deck.dofs.contains(Dof::uy) && deck.dofs.contains(Dof::uz);
 }
@@ -68,7 +103,9 @@ void readBearings(Context& c) {
     auto nameField = f.get("name");
     b.name = nameField ? nameField->name() : b.point;
     claimName(nameField ? *nameField : at, b.name, names, "a bearing");
-    if (auto table = f.get("table")) {
+    if (auto type = f.get("type")) {
+      readPlainJournal(c, f, *type, b);
+    } else if (auto table = f.get("table")) {
       f.allowOnly({"name", "at", "table"}, "a tabulated bearing");
       const std::vector<Field> rows = table->items();
       if (rows.empty()) table->fail("the bearing table is empty");

@@ -53,15 +53,17 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
   Json speeds = Json::array(), lines = Json::array(), critical = Json::array();
   for (double s : c.speeds) speeds.push_back(rpmOf(s));
   for (std::size_t l = 0; l < c.lines.size(); ++l) {
-    Json f = Json::array(), zeta = Json::array(), whirl = Json::array();
+    Json f = Json::array(), zeta = Json::array(), delta = Json::array(), whirl = Json::array();
     for (const RotorMode& m : c.lines[l]) {
       f.push_back(m.dampedFrequencyHz);
       zeta.push_back(m.dampingRatio);
+      delta.push_back(finiteOrNull(m.logDecrement));
       whirl.push_back(std::string(whirlName(m.whirl)));
     }
     lines.push_back({{"line", l + 1},
                      {"frequencies_hz", f},
                      {"damping_ratio", zeta},
+                     {"log_decrement", delta},
                      {"whirl", whirl},
                      {"mac", c.mac[l]}});
   }
@@ -72,8 +74,16 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
                         {"line", k.line + 1},
                         {"damping_ratio", k.dampingRatio},
                         {"whirl", std::string(whirlName(k.whirl))}});
+  Json onset = nullptr;
+  if (r.onset)
+    onset = {{"rpm", r.onset->rpm},
+             {"speed_rad_s", r.onset->speed},
+             {"frequency_hz", r.onset->frequencyHz},
+             {"whirl", std::string(whirlName(r.onset->whirl))},
+             {"evaluations", r.onset->evaluations}};
   return {{"order", r.order},
           {"speeds_rpm", speeds},
+          {"instability_onset", onset},
           {"lines", lines},
           {"critical_speeds", critical},
           {"symbolic_analyses", c.symbolicAnalyses},
@@ -81,7 +91,8 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
           {"files",
            {{"campbell_csv", campbellCsv(stem)},
             {"critical_speeds_csv", criticalSpeedsCsv(stem)},
-            {"chart", campbellChart(stem) + ".svg"}}}};
+            {"chart", campbellChart(stem) + ".svg"},
+            {"stability_chart", stabilityChart(stem) + ".svg"}}}};
 }
 
 Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {

@@ -14,6 +14,29 @@ double rpmOf(double speed) {
   return speed * 30 / std::numbers::pi;
 }
 
+CsvCell logDecrementCell(double delta) {
+  return std::isfinite(delta) ? CsvCell(delta) : CsvCell(std::string(delta > 0 ? "inf" : "-inf"));
+}
+
+CsvTable journalBearingsTable(const std::string& title,
+                              const std::vector<JournalBearingCurve>& journals) {
+  CsvTable table(title, {{"bearing", ""},        {"bearing_index", ""}, {"speed", "rad/s"},
+                         {"speed_rpm", "rpm"},   {"eccentricity", ""},  {"attitude_angle", "deg"},
+                         {"sommerfeld", ""},     {"kxx", "N/m"},        {"kxy", "N/m"},
+                         {"kyx", "N/m"},         {"kyy", "N/m"},        {"cxx", "N s/m"},
+                         {"cxy", "N s/m"},       {"cyx", "N s/m"},      {"cyy", "N s/m"}});
+  for (std::size_t j = 0; j < journals.size(); ++j) {
+    const JournalBearingCurve& b = journals[j];
+    for (std::size_t s = 0; s < b.speeds.size(); ++s) {
+      const BearingCoefficients& k = b.coefficients[s];
+      table.addRow({b.name, (long long)(j + 1), b.speeds[s], rpmOf(b.speeds[s]),
+                    b.eccentricity[s], b.attitude[s] * 180 / std::numbers::pi, b.sommerfeld[s],
+                    k.kyy, k.kyz, k.kzy, k.kzz, k.cyy, k.cyz, k.czy, k.czz});
+    }
+  }
+  return table;
+}
+
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
   CsvTable table(title, {{"mode", ""},
                          {"frequency", "Hz"},
@@ -24,11 +47,8 @@ CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
                          {"whirl_ratio", ""}});
   for (std::size_t m = 0; m < r.modes.size(); ++m) {
     const RotorMode& mode = r.modes[m];
-    const CsvCell decrement = std::isfinite(mode.logDecrement)
-                                  ? CsvCell(mode.logDecrement)
-                                  : CsvCell(std::string(mode.logDecrement > 0 ? "inf" : "-inf"));
     table.addRow({(long long)(m + 1), mode.dampedFrequencyHz, mode.naturalFrequencyHz,
-                  mode.dampingRatio, decrement, std::string(whirlName(mode.whirl)),
+                  mode.dampingRatio, logDecrementCell(mode.logDecrement), std::string(whirlName(mode.whirl)),
                   mode.whirlRatio});
   }
   return table;
@@ -43,6 +63,7 @@ CsvTable campbellTable(const std::string& title, const CampbellResult& c) {
   for (int l = 1; l <= int(c.lines.size()); ++l) {
     columns.push_back({campbellColumn(l, "frequency"), "Hz"});
     columns.push_back({campbellColumn(l, "damping_ratio"), ""});
+    columns.push_back({campbellColumn(l, "log_decrement"), ""});
     columns.push_back({campbellColumn(l, "whirl"), ""});
     columns.push_back({campbellColumn(l, "mac"), ""});
   }
@@ -51,7 +72,8 @@ CsvTable campbellTable(const std::string& title, const CampbellResult& c) {
     std::vector<CsvCell> row{c.speeds[s], rpmOf(c.speeds[s])};
     for (std::size_t l = 0; l < c.lines.size(); ++l) {
       const RotorMode& m = c.lines[l][s];
-      row.insert(row.end(), {m.dampedFrequencyHz, m.dampingRatio, whirlSign(m.whirl), c.mac[l][s]});
+      row.insert(row.end(), {m.dampedFrequencyHz, m.dampingRatio, logDecrementCell(m.logDecrement),
+                             whirlSign(m.whirl), c.mac[l][s]});
     }
     table.addRow(std::move(row));
   }

@@ -16,6 +16,16 @@ long long whirlSign(Whirl w);
 /// Speed in rpm of a speed in rad/s.
 double rpmOf(double speed);
 
+/// A log decrement as a CSV cell: the number, or the text "inf" / "-inf" (real eigenvalue).
+CsvCell logDecrementCell(double delta);
+
+/// Plain journal bearings: one row per bearing and table speed: bearing (name), bearing_index
+/// (1, 2, ...), speed (rad/s), speed_rpm, eccentricity (e/c), attitude_angle (deg),
+/// sommerfeld (mu Omega D L^3 / (8 W c^2)), kxx kxy kyx kyy (N/m), cxx cxy cyx cyy (N s/m) in
+/// the bearing's axes as the deck writes them (x_b = global y).
+CsvTable journalBearingsTable(const std::string& title,
+                              const std::vector<JournalBearingCurve>& journals);
+
 /// One row per mode: mode, damped and natural frequency (Hz), damping ratio, log decrement
 /// (text "inf" for a real eigenvalue), whirl (forward, backward, planar) and whirl ratio.
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r);

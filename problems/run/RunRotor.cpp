@@ -9,11 +9,28 @@
 #include "elements/Spring.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
 #include "fem/rotor/RotorModes.hpp"
+#include "fem/rotor/RotorStability.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
 
 namespace beamrotor {
 
 namespace {
+
+std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
+  std::vector<JournalBearingCurve> out;
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    if (!b.journal) continue;
+    JournalBearingCurve curve{b.name, *b.journal, b.speeds, {}, {}, {}, b.table};
+    for (double w : b.speeds) {
+      const double eps = eccentricityRatio(*b.journal, w);
+      curve.eccentricity.push_back(eps);
+      curve.attitude.push_back(attitudeAngle(eps));
+      curve.sommerfeld.push_back(b.journal->sommerfeld(w));
+    }
+    out.push_back(std::move(curve));
+  }
+  return out;
+}
 
 RotorOptions optionsOf(const Deck& deck, const DeckAnalysis& a) {
   RotorOptions o;
@@ -70,6 +87,8 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, a));
     out.order = r.order;
     out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
+    out.onset = instabilityOnset(model, *out.campbell, optionsOf(deck, a));
+    out.journals = journalCurves(deck);
   } else if (a.type == "unbalance") {
     std::vector<Unbalance> unbalance;
     for (const DeckUnbalance& u : r.unbalance)
