@@ -60,6 +60,34 @@ void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutc
         << formatValue(u.orbits[k][peak].major()) << " m at " << formatValue(u.speeds[peak] * kRpm)
         << " rpm\n";
   }
+  if (!r.operating) return;
+  out << "    API 684, operating range " << formatValue(r.operating->minimum * kRpm) << " to "
+      << formatValue(r.operating->maximum * kRpm) << " rpm:\n";
+  for (std::size_t k = 0; k < r.peaks.size(); ++k)
+    for (const ResponsePeak& p : r.peaks[k]) {
+      out << "      " << r.responsePoints[k] << ": peak " << formatValue(p.amplitude) << " m at "
+          << formatValue(p.speed * kRpm) << " rpm, ";
+      if (!p.halfPowerFound) {
+        out << "half-power points outside the sweep: AF unknown, FAIL\n";
+        continue;
+      }
+      out << "AF " << formatValue(p.amplificationFactor) << ", margin " << formatValue(p.actualMargin)
+          << " % (required " << formatValue(p.requiredMargin) << " %): "
+          << (p.pass ? "pass" : "FAIL") << "\n";
+    }
+}
+
+void printFrequencyResponse(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const FrequencyResponseResult& f = *r.frequencyResponse;
+  std::size_t peak = 0;
+  for (std::size_t i = 0; i < f.receptance.size(); ++i)
+    if (std::abs(f.receptance[i]) > std::abs(f.receptance[peak])) peak = i;
+  out << "frequency-response analysis '" << a.name << "' at " << formatValue(f.speed * kRpm)
+      << " rpm: " << r.frfOutput << " / " << r.frfInput << ", " << f.frequencies.size()
+      << " frequencies\n";
+  if (!f.receptance.empty())
+    out << "    largest receptance " << formatValue(std::abs(f.receptance[peak])) << " at "
+        << formatValue(f.frequencies[peak] / (2 * std::numbers::pi)) << " Hz\n";
 }
 
 void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
@@ -82,6 +110,7 @@ std::optional<SystemSize> rotorSize(const RotorOutcome& r) {
   if (r.modes) return r.modes->size;
   if (r.campbell) return r.campbell->size;
   if (r.unbalance) return r.unbalance->size;
+  if (r.frequencyResponse) return r.frequencyResponse->size;
   return std::nullopt;
 }
 
@@ -91,6 +120,7 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a) {
   if (r.campbell) printCampbell(out, a, r);
   if (r.unbalance) printUnbalance(out, a, r);
   if (r.rigidBody) printRigidBody(out, a, *r.rigidBody);
+  if (r.frequencyResponse) printFrequencyResponse(out, a, r);
 }
 
 }  // namespace beamrotor::cli

@@ -9,6 +9,7 @@
 
 #include "elements/Bearing.hpp"
 #include "elements/PlainJournalBearing.hpp"
+#include "fem/rotor/Api684.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "problems/deck/DeckError.hpp"
 
@@ -48,12 +49,19 @@ struct DeckRotorAnalysis {
   double order = 1;                        ///< campbell: excitation order of the critical speeds
   std::vector<DeckUnbalance> unbalance;    ///< unbalance
   std::vector<std::string> response;       ///< unbalance: points whose orbits are reported
+  /// unbalance: the operating speed range (rad/s) the API 684 margins are measured from
+  std::optional<OperatingRange> operating;
+  /// frequency-response: force on input.dof at input.point, response of output's (uy uz ry rz)
+  std::string inputPoint, outputPoint;
+  Dof inputDof = Dof::uy, outputDof = Dof::uy;
+  std::vector<double> frequencies;  ///< frequency-response: excitation (rad/s), ascending
   std::vector<std::string> bearingPoints;  ///< rigid-body: the two spring points A, B
 };
 
 /// True for the analysis types this header describes.
 inline bool isRotorAnalysis(const std::string& type) {
-  return type == "rotor" || type == "campbell" || type == "unbalance" || type == "rigid-body";
+  return type == "rotor" || type == "campbell" || type == "unbalance" || type == "rigid-body" ||
+         type == "frequency-response";
 }
 
 }  // namespace beamrotor

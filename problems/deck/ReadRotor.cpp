@@ -145,6 +145,42 @@ std::vector<double> readSpeedRange(const Context& c, const Field& f) {
   return speeds;
 }
 
+/// input / output of a frequency response: {at: POINT, dof: uy | uz | ry | rz}.
+void readResponseEnd(const Context& c, const Field& f, std::string& point, Dof& dof) {
+  if (!f.isMap()) f.fail("expected {at: POINT, dof: uy}, got " + f.describe());
+  f.allowOnly({"at", "dof"}, "an end of a frequency response");
+  point = c.point(f.require("at")).name;
+  const Field d = f.require("dof");
+  dof = c.dof(d);
+  if (dof != Dof::uy && dof != Dof::uz && dof != Dof::ry && dof != Dof::rz)
+    d.fail("a rotor's frequency response acts on uy, uz, ry or rz");
+}
+
+/// from_hz, to_hz, steps: excitation frequencies (rad/s), `to` exactly; from_hz may be 0.
+std::vector<double> readFrequencyRange(const Context& c, const Field& f) {
+  const double from = f.require("from_hz").nonNegative(c.evaluator);
+  const Field toField = f.require("to_hz");
+  const double to = toField.number(c.evaluator);
+  if (!(to > from)) toField.fail("to_hz must exceed from_hz (" + formatNumber(from) + ")");
+  const int n = f.require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
+  std::vector<double> w;
+  for (int i = 0; i <= n; ++i) w.push_back(2 * std::numbers::pi * (i == n ? to : from + (to - from) * i / n));
+  return w;
+}
+
+/// operating: {min_rpm, max_rpm}: the machine's operating speed range, 0 < min < max.
+OperatingRange readOperatingRange(const Context& c, const Field& f) {
+  if (!f.isMap()) f.fail("expected {min_rpm: RPM, max_rpm: RPM}, got " + f.describe());
+  f.allowOnly({"min_rpm", "max_rpm"}, "an operating speed range");
+  OperatingRange range;
+  range.minimum = f.require("min_rpm").positive(c.evaluator) * kRadPerRpm;
+  const Field top = f.require("max_rpm");
+  range.maximum = top.positive(c.evaluator) * kRadPerRpm;
+  if (!(range.maximum > range.minimum))
+    top.fail("max_rpm must exceed min_rpm (" + formatNumber(range.minimum / kRadPerRpm) + ")");
+  return range;
+}
+
 void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   for (const Field& u : f.require("unbalance").itemsOrSingle()) {
     if (!u.isMap()) u.fail("expected {at: POINT, me: KG_M, phase: RAD}, got " + u.describe());
@@ -216,13 +252,22 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
                 "a campbell analysis");
     r.speeds = readSpeedRange(c, f);
     if (auto o = f.get("order")) r.order = o->positive(ev);
+  } else if (a.type == "frequency-response") {
+    f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
+                "a frequency-response analysis");
+    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev) * kRadPerRpm;
+    readResponseEnd(c, f.require("input"), r.inputPoint, r.inputDof);
+    readResponseEnd(c, f.require("output"), r.outputPoint, r.outputDof);
+    r.frequencies = readFrequencyRange(c, f);
   } else {
-    f.allowOnly({"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response"},
-                "an unbalance analysis");
+    f.allowOnly(
+        {"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response", "operating"},
+        "an unbalance analysis");
     r.speeds = readSpeedRange(c, f);
     readUnbalance(c, f, r);
+    if (auto o = f.get("operating")) r.operating = readOperatingRange(c, *o);
   }
-  if (a.type != "unbalance") {
+  if (a.type != "unbalance" && a.type != "frequency-response") {
     if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);
     if (auto s = f.get("shift")) a.shift = s->number(ev);
   }

@@ -157,4 +157,34 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
           body.str()};
 }
 
+ChartScript frequencyResponseDiagram(const std::string& caption, const std::string& chartName,
+                                     const CsvTable& response, const std::string& csvFile,
+                                     const std::string& what) {
+  const int x = response.column("frequency");
+  PositiveRange magnitudes;
+  for (double m : response.numbers("magnitude")) magnitudes.include(m);
+  const std::vector<std::string> titles{what};
+  const int keyMargin = keyWidth(titles);
+  const int width = 770 + keyMargin, height = 800;
+  const auto curve = [&](const std::string& using_) {
+    return "  plot " + gnuplotFile(csvFile) + " skip 1 using " + std::to_string(x) + ":(" +
+           using_ + ") with lines linewidth 2 " + colour(0) + " title " + gnuplotText(what) + "\n";
+  };
+  const int m = response.column("magnitude"), p = response.column("phase");
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(2, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n" << logAxis("y", magnitudes)
+       << "  set ylabel 'receptance magnitude [m/N]'\n"
+       << curve("$" + std::to_string(m) + " > 0 ? $" + std::to_string(m) + " : NaN")
+       << "  unset logscale y\n  set format y '%g'\n  set ytics autofreq\n  set mytics default\n"
+       << "  set xlabel 'excitation frequency [Hz]'\n  set ylabel 'phase [deg]'\n"
+       << "  set yrange [-180:180]\n  set ytics 90\n"
+       << curve("$" + std::to_string(p) + " <= -179.999 ? $" + std::to_string(p) + " + 360 : $" +
+                std::to_string(p))
+       << "  unset multiplot\n";
+  return {chartName, "Frequency response: receptance magnitude and phase against frequency",
+          width, height, body.str()};
+}
+
 }  // namespace beamrotor

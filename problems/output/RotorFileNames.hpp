@@ -23,7 +23,18 @@ inline std::string unbalanceCsv(const std::string& stem) {
 inline std::string journalBearingsCsv(const std::string& stem) {
   return stem + "_bearings.csv";
 }
+/// Unbalance with an operating range: one row per response point and peak (API 684).
+inline std::string api684Csv(const std::string& stem) {
+  return stem + "_api684.csv";
+}
+/// Frequency response: one row per excitation frequency.
+inline std::string frequencyResponseCsv(const std::string& stem) {
+  return stem + "_frf.csv";
+}
 /// Charts (without extension).
+inline std::string frequencyResponseChart(const std::string& stem) {
+  return stem + "_frf";
+}
 inline std::string journalBearingsChart(const std::string& stem) {
   return stem + "_bearings";
 }

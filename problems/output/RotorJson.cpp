@@ -95,6 +95,30 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
             {"stability_chart", stabilityChart(stem) + ".svg"}}}};
 }
 
+/// API 684 reading: the operating range and each response point's peaks.
+Json api684Json(const std::string& stem, const RotorOutcome& r) {
+  Json points = Json::object();
+  bool pass = true;
+  for (std::size_t k = 0; k < r.peaks.size(); ++k) {
+    Json peaks = Json::array();
+    for (const ResponsePeak& p : r.peaks[k]) {
+      pass = pass && p.pass;
+      peaks.push_back({{"rpm", rpmOf(p.speed)},
+                       {"amplitude_m", p.amplitude},
+                       {"half_power_rpm", {rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower)}},
+                       {"amplification_factor", p.amplificationFactor},
+                       {"required_margin_percent", p.requiredMargin},
+                       {"actual_margin_percent", p.actualMargin},
+                       {"pass", p.pass}});
+    }
+    points[r.responsePoints[k]] = peaks;
+  }
+  return {{"operating_rpm", {rpmOf(r.operating->minimum), rpmOf(r.operating->maximum)}},
+          {"peaks", points},
+          {"pass", pass},
+          {"csv", api684Csv(stem)}};
+}
+
 Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
   const UnbalanceResult& u = *r.unbalance;
   Json speeds = Json::array(), response = Json::object();
@@ -123,8 +147,29 @@ Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
   return {
       {"speeds_rpm", speeds},
       {"response", response},
+      {"api684", r.operating ? api684Json(stem, r) : Json(nullptr)},
       {"time_s", u.time.total},
       {"files", {{"unbalance_csv", unbalanceCsv(stem)}, {"chart", unbalanceChart(stem) + ".svg"}}}};
+}
+
+Json frequencyResponseJson(const std::string& stem, const RotorOutcome& r) {
+  const FrequencyResponseResult& f = *r.frequencyResponse;
+  Json hz = Json::array(), magnitude = Json::array(), phase = Json::array();
+  for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
+    hz.push_back(f.frequencies[i] / (2 * std::numbers::pi));
+    magnitude.push_back(std::abs(f.receptance[i]));
+    phase.push_back(std::arg(f.receptance[i]) * kDegrees);
+  }
+  return {{"speed_rpm", rpmOf(f.speed)},
+          {"input", r.frfInput},
+          {"output", r.frfOutput},
+          {"frequencies_hz", hz},
+          {"magnitude", magnitude},
+          {"phase_deg", phase},
+          {"time_s", f.time.total},
+          {"files",
+           {{"frf_csv", frequencyResponseCsv(stem)},
+            {"chart", frequencyResponseChart(stem) + ".svg"}}}};
 }
 
 Json rigidBodyJson(const RigidBodyOutcome& r) {
@@ -171,6 +216,7 @@ Json rotorJson(const AnalysisOutcome& a) {
   Json body = r.modes       ? modesJson(stem, *r.modes)
               : r.campbell  ? campbellJson(stem, r)
               : r.unbalance ? unbalanceJson(stem, r)
+              : r.frequencyResponse ? frequencyResponseJson(stem, r)
                             : rigidBodyJson(*r.rigidBody);
   for (auto& [key, value] : body.items()) out[key] = value;
   return out;

@@ -23,6 +23,9 @@ PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
       p.bearings = journalBearingsTable(journalBearingsCsv(stem), r.journals);
   }
   if (r.unbalance) p.unbalance = unbalanceTable(unbalanceCsv(stem), *r.unbalance, r.responsePoints);
+  if (r.operating) p.api684 = api684Table(api684Csv(stem), r);
+  if (r.frequencyResponse)
+    p.frf = frequencyResponseTable(frequencyResponseCsv(stem), *r.frequencyResponse);
   return p;
 }
 
@@ -64,6 +67,13 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
                          caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),
                          r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt));
   }
+  if (p.frf) {
+    p.frf->write(dir / frequencyResponseCsv(stem));
+    if (charts && p.frf->rowCount() > 0)
+      drawChart(dir, frequencyResponseDiagram(caption, frequencyResponseChart(stem), *p.frf,
+                                              frequencyResponseCsv(stem),
+                                              r.frfOutput + " / " + r.frfInput));
+  }
   if (p.bearings) {
     p.bearings->write(dir / journalBearingsCsv(stem));
     std::vector<std::string> names;
@@ -74,6 +84,7 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
   }
   if (p.unbalance) {
     p.unbalance->write(dir / unbalanceCsv(stem));
+    if (p.api684) p.api684->write(dir / api684Csv(stem));
     if (charts && p.unbalance->rowCount() > 0)
       drawChart(dir, unbalanceResponseChart(caption, unbalanceChart(stem), *p.unbalance,
                                             unbalanceCsv(stem), r.responsePoints));

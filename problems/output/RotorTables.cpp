@@ -37,6 +37,42 @@ CsvTable journalBearingsTable(const std::string& title,
   return table;
 }
 
+CsvTable api684Table(const std::string& title, const RotorOutcome& r) {
+  CsvTable table(title, {{"point", ""},
+                         {"peak", ""},
+                         {"speed_rpm", "rpm"},
+                         {"amplitude", "m"},
+                         {"lower_half_power_rpm", "rpm"},
+                         {"upper_half_power_rpm", "rpm"},
+                         {"amplification_factor", ""},
+                         {"required_margin", "%"},
+                         {"actual_margin", "%"},
+                         {"pass", ""}});
+  for (std::size_t k = 0; k < r.peaks.size(); ++k)
+    for (std::size_t i = 0; i < r.peaks[k].size(); ++i) {
+      const ResponsePeak& p = r.peaks[k][i];
+      table.addRow({r.responsePoints[k], (long long)(i + 1), rpmOf(p.speed), p.amplitude,
+                    rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower), p.amplificationFactor,
+                    p.requiredMargin, p.actualMargin, (long long)(p.pass ? 1 : 0)});
+    }
+  return table;
+}
+
+CsvTable frequencyResponseTable(const std::string& title, const FrequencyResponseResult& f) {
+  CsvTable table(title, {{"frequency", "Hz"},
+                         {"omega", "rad/s"},
+                         {"magnitude", "m/N"},
+                         {"phase", "deg"},
+                         {"real", "m/N"},
+                         {"imag", "m/N"}});
+  for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
+    const std::complex<double> h = f.receptance[i];
+    table.addRow({f.frequencies[i] / (2 * std::numbers::pi), f.frequencies[i], std::abs(h),
+                  std::arg(h) * 180 / std::numbers::pi, h.real(), h.imag()});
+  }
+  return table;
+}
+
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
   CsvTable table(title, {{"mode", ""},
                          {"frequency", "Hz"},

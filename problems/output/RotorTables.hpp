@@ -26,6 +26,15 @@ CsvCell logDecrementCell(double delta);
 CsvTable journalBearingsTable(const std::string& title,
                               const std::vector<JournalBearingCurve>& journals);
 
+/// API 684: one row per response point and resonance peak: point, peak (1, 2, ... per point),
+/// speed_rpm, amplitude (m), lower/upper_half_power_rpm (0: outside the sweep),
+/// amplification_factor (0: unknown), required_margin and actual_margin (%), pass (1 or 0).
+CsvTable api684Table(const std::string& title, const RotorOutcome& r);
+
+/// Frequency response: one row per excitation frequency: frequency (Hz), omega (rad/s),
+/// magnitude, phase (deg), real, imag of the receptance (m/N for translations).
+CsvTable frequencyResponseTable(const std::string& title, const FrequencyResponseResult& f);
+
 /// One row per mode: mode, damped and natural frequency (Hz), damping ratio, log decrement
 /// (text "inf" for a real eigenvalue), whirl (forward, backward, planar) and whirl ratio.
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r);

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "elements/PlainJournalBearing.hpp"
+#include "fem/rotor/Api684.hpp"
+#include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorResults.hpp"
 #include "fem/rotor/RotorStability.hpp"
 #include "problems/scenes/FormeShaft.hpp"
@@ -49,7 +51,12 @@ struct RotorOutcome {
   std::vector<JournalBearingCurve> journals;  ///< campbell: the deck's plain journal bearings
   std::optional<UnbalanceResult> unbalance;   ///< unbalance
   std::vector<std::string> responsePoints;    ///< unbalance: names of unbalance->nodes
+  /// unbalance with an operating range: API 684 reading of each response point's peaks
+  std::optional<OperatingRange> operating;
+  std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
   std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
+  std::optional<FrequencyResponseResult> frequencyResponse;  ///< frequency-response
+  std::string frfInput, frfOutput;  ///< frequency-response: "point dof" of each end
 };
 
 }  // namespace beamrotor

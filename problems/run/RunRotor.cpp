@@ -8,6 +8,7 @@
 #include "elements/Bearing.hpp"
 #include "elements/Spring.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
+#include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorModes.hpp"
 #include "fem/rotor/RotorStability.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
@@ -97,6 +98,20 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     for (const std::string& p : r.response) nodes.push_back(model.node(p));
     out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
     out.responsePoints = r.response;
+    out.operating = r.operating;
+    if (r.operating)
+      for (const auto& orbits : out.unbalance->orbits) {
+        std::vector<double> amplitudes;
+        for (const Orbit& o : orbits) amplitudes.push_back(o.major());
+        out.peaks.push_back(readResponsePeaks(out.unbalance->speeds, amplitudes, *r.operating));
+      }
+  } else if (a.type == "frequency-response") {
+    const NodeDof in{model.node(r.inputPoint), r.inputDof};
+    const NodeDof to{model.node(r.outputPoint), r.outputDof};
+    out.frequencyResponse =
+        solveFrequencyResponse(model, r.speed, in, to, r.frequencies, deck.rotor.damping);
+    out.frfInput = r.inputPoint + " " + std::string(dofName(r.inputDof));
+    out.frfOutput = r.outputPoint + " " + std::string(dofName(r.outputDof));
   } else {
     out.rigidBody = rigidBody(r, model);
   }
