@@ -68,7 +68,8 @@ void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutc
       out << "      " << r.responsePoints[k] << ": peak " << formatValue(p.amplitude) << " m at "
           << formatValue(p.speed * kRpm) << " rpm, ";
       if (!p.halfPowerFound) {
-        out << "half-power points outside the sweep: AF unknown, FAIL\n";
+        out << "no half-power points (the orbit does not fall to peak / sqrt(2) on both sides: "
+               "a neighbouring peak or the sweep's end): AF unknown, FAIL\n";
         continue;
       }
       out << "AF " << formatValue(p.amplificationFactor) << ", margin " << formatValue(p.actualMargin)

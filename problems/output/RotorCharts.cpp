@@ -26,7 +26,7 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
                             double order) {
   const auto rpm = campbell.numbers("speed_rpm");
   const int x = campbell.column("speed_rpm");
-  const int lines = int((campbell.columns().size() - 2) / 5);
+  const int lines = campbellLineCount(campbell);
   // The frequency axis is fixed here (0 to the highest line or speed line, 5 % headroom) so
   // that data map to known pixels and the critical speeds' labels can be kept apart.
   double top = order * std::max(std::abs(rpm.front()), std::abs(rpm.back())) / 60;

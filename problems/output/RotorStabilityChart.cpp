@@ -15,7 +15,7 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
                            const CsvTable& campbell, const std::string& csvFile,
                            std::optional<double> onsetRpm) {
   const int x = campbell.column("speed_rpm");
-  const int lines = int((campbell.columns().size() - 2) / 5);
+  const int lines = campbellLineCount(campbell);
   // The decrement axis: the finite values, with zero always in view; a real eigenvalue's
   // infinite decrement is drawn at the top.
   double low = 0, high = 0.1;

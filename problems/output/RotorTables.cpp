@@ -94,6 +94,11 @@ std::string campbellColumn(int line, const std::string& what) {
   return "line" + std::to_string(line) + "_" + what;
 }
 
+int campbellLineCount(const CsvTable& campbell) {
+  constexpr int kSpeedColumns = 2, kColumnsPerLine = 5;
+  return int((campbell.columns().size() - kSpeedColumns) / kColumnsPerLine);
+}
+
 CsvTable campbellTable(const std::string& title, const CampbellResult& c) {
   std::vector<CsvColumn> columns{{"speed", "rad/s"}, {"speed_rpm", "rpm"}};
   for (int l = 1; l <= int(c.lines.size()); ++l) {

@@ -44,6 +44,8 @@ CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r);
 CsvTable campbellTable(const std::string& title, const CampbellResult& c);
 /// Column names of campbellTable for line l (1-based).
 std::string campbellColumn(int line, const std::string& what);
+/// The number of lines a campbellTable holds.
+int campbellLineCount(const CsvTable& campbell);
 
 /// One row per critical speed: speed_rpm, speed (rad/s), frequency (Hz), line, damping
 /// ratio, whirl (+1, -1, 0).
