@@ -18,7 +18,9 @@ void printModes(std::ostream& out, const AnalysisOutcome& a, const RotorModesRes
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const RotorMode& m = r.modes[i];
     out << "    mode " << i + 1 << "  " << formatValue(m.dampedFrequencyHz) << " Hz  damping "
-        << formatValue(m.dampingRatio) << "  " << whirlName(m.whirl) << "\n";
+        << formatValue(m.dampingRatio) << "  log decrement "
+        << (std::isfinite(m.logDecrement) ? formatValue(m.logDecrement) : std::string("inf"))
+        << "  " << whirlName(m.whirl) << "\n";
   }
 }
 
