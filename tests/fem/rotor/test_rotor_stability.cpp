@@ -26,10 +26,10 @@ using namespace beamrotor::test;
 namespace {
 
 struct CrossCoupledJeffcott {
-  double m = 20, k = 5e6, c = 800, q = 30;  // kg, N/m, N s/m, N s/m (Q = q Omega)
+  double m = 20, k = 5e6, c = 800, q = 400;  // kg, N/m, N s/m, N s/m (Q = q Omega)
   double top = 2000;                        // rad/s, end of the bearing table
 
-  double onset() const { return c * std::sqrt(k / m) / q; }
+  double onset() const { return c * std::sqrt(k / m) / q; }  // 1000 rad/s
 
   void build(Model& model) const {
     const int n = model.addNode(Eigen::Vector3d::Zero());
