@@ -79,6 +79,16 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
   if (!(b.speeds.front() > 0))
     f.require("from_rpm").fail("a plain journal bearing has no film at rest: from_rpm must be > 0 "
                                "(the lowest row is held below it)");
+  // Below 1 % of the clearance the film is thinner than any real surface finish allows (the
+  // journal runs on the bearing), and the linear coefficients grow without bound.
+  constexpr double kThinnestFilm = 0.01;
+  const double slowest = eccentricityRatio(j, b.speeds.front());
+  if (slowest > 1 - kThinnestFilm)
+    f.require("from_rpm")
+        .fail("at " + formatNumber(b.speeds.front() / kRadPerRpm) +
+              " rpm the film carries the load only at eccentricity " + formatNumber(slowest) +
+              " (thinner than 1 % of c: the journal touches the bearing); raise from_rpm, mu or "
+              "L, or check load and c");
   for (double w : b.speeds) b.table.push_back(shortBearingCoefficients(j, w));
   b.journal = j;
 }
