@@ -18,7 +18,9 @@ void printModes(std::ostream& out, const AnalysisOutcome& a, const RotorModesRes
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const RotorMode& m = r.modes[i];
     out << "    mode " << i + 1 << "  " << formatValue(m.dampedFrequencyHz) << " Hz  damping "
-        << formatValue(m.dampingRatio) << "  " << whirlName(m.whirl) << "\n";
+        << formatValue(m.dampingRatio) << "  log decrement "
+        << (std::isfinite(m.logDecrement) ? formatValue(m.logDecrement) : std::string("inf"))
+        << "  " << whirlName(m.whirl) << "\n";
   }
 }
 
@@ -32,6 +34,21 @@ void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutco
   for (const CriticalSpeed& k : r.criticalSpeeds)
     out << "    critical speed " << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz)
         << " Hz, line " << k.line + 1 << ", " << whirlName(k.whirl) << ")\n";
+  // The least damped line: its smallest log decrement over the sweep.
+  std::size_t worstLine = 0, worstSpeed = 0;
+  for (std::size_t l = 0; l < c.lines.size(); ++l)
+    for (std::size_t s = 0; s < c.speeds.size(); ++s)
+      if (c.lines[l][s].logDecrement < c.lines[worstLine][worstSpeed].logDecrement)
+        worstLine = l, worstSpeed = s;
+  if (!c.lines.empty() && !c.speeds.empty())
+    out << "    smallest log decrement " << formatValue(c.lines[worstLine][worstSpeed].logDecrement)
+        << " (line " << worstLine + 1 << " at " << formatValue(c.speeds[worstSpeed] * kRpm)
+        << " rpm)\n";
+  if (r.onset)
+    out << "    UNSTABLE above " << formatValue(r.onset->rpm) << " rpm (onset of instability: "
+        << formatValue(r.onset->frequencyHz) << " Hz " << whirlName(r.onset->whirl) << " whirl)\n";
+  else
+    out << "    stable over the sweep (no log decrement falls through zero)\n";
 }
 
 void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
@@ -45,6 +62,35 @@ void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutc
         << formatValue(u.orbits[k][peak].major()) << " m at " << formatValue(u.speeds[peak] * kRpm)
         << " rpm\n";
   }
+  if (!r.operating) return;
+  out << "    API 684, operating range " << formatValue(r.operating->minimum * kRpm) << " to "
+      << formatValue(r.operating->maximum * kRpm) << " rpm:\n";
+  for (std::size_t k = 0; k < r.peaks.size(); ++k)
+    for (const ResponsePeak& p : r.peaks[k]) {
+      out << "      " << r.responsePoints[k] << ": peak " << formatValue(p.amplitude) << " m at "
+          << formatValue(p.speed * kRpm) << " rpm, ";
+      if (!p.halfPowerFound) {
+        out << "no half-power points (the orbit does not fall to peak / sqrt(2) on both sides: "
+               "a neighbouring peak or the sweep's end): AF unknown, FAIL\n";
+        continue;
+      }
+      out << "AF " << formatValue(p.amplificationFactor) << ", margin " << formatValue(p.actualMargin)
+          << " % (required " << formatValue(p.requiredMargin) << " %): "
+          << (p.pass ? "pass" : "FAIL") << "\n";
+    }
+}
+
+void printFrequencyResponse(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const FrequencyResponseResult& f = *r.frequencyResponse;
+  std::size_t peak = 0;
+  for (std::size_t i = 0; i < f.receptance.size(); ++i)
+    if (std::abs(f.receptance[i]) > std::abs(f.receptance[peak])) peak = i;
+  out << "frequency-response analysis '" << a.name << "' at " << formatValue(f.speed * kRpm)
+      << " rpm: " << r.frfOutput << " / " << r.frfInput << ", " << f.frequencies.size()
+      << " frequencies\n";
+  if (!f.receptance.empty())
+    out << "    largest receptance " << formatValue(std::abs(f.receptance[peak])) << " at "
+        << formatValue(f.frequencies[peak] / (2 * std::numbers::pi)) << " Hz\n";
 }
 
 void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
@@ -67,6 +113,7 @@ std::optional<SystemSize> rotorSize(const RotorOutcome& r) {
   if (r.modes) return r.modes->size;
   if (r.campbell) return r.campbell->size;
   if (r.unbalance) return r.unbalance->size;
+  if (r.frequencyResponse) return r.frequencyResponse->size;
   return std::nullopt;
 }
 
@@ -76,6 +123,7 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a) {
   if (r.campbell) printCampbell(out, a, r);
   if (r.unbalance) printUnbalance(out, a, r);
   if (r.rigidBody) printRigidBody(out, a, *r.rigidBody);
+  if (r.frequencyResponse) printFrequencyResponse(out, a, r);
 }
 
 }  // namespace beamrotor::cli

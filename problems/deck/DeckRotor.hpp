@@ -3,10 +3,13 @@
 // ask for. Plain values, read by ReadRotor.cpp and solved by RunRotor.cpp.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "elements/Bearing.hpp"
+#include "elements/PlainJournalBearing.hpp"
+#include "fem/rotor/Api684.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "problems/deck/DeckError.hpp"
 
@@ -19,6 +22,9 @@ struct DeckBearing {
   std::string point;
   std::vector<double> speeds;              ///< rad/s; empty for constant coefficients
   std::vector<BearingCoefficients> table;  ///< N/m, N s/m
+  /// A plain journal bearing (type: plain-journal): its geometry and oil; the table then holds
+  /// its short-bearing coefficients at `speeds`.
+  std::optional<PlainJournal> journal;
   DeckPlace place;
 };
 
@@ -43,12 +49,19 @@ struct DeckRotorAnalysis {
   double order = 1;                        ///< campbell: excitation order of the critical speeds
   std::vector<DeckUnbalance> unbalance;    ///< unbalance
   std::vector<std::string> response;       ///< unbalance: points whose orbits are reported
+  /// unbalance: the operating speed range (rad/s) the API 684 margins are measured from
+  std::optional<OperatingRange> operating;
+  /// frequency-response: force on input.dof at input.point, response of output's (uy uz ry rz)
+  std::string inputPoint, outputPoint;
+  Dof inputDof = Dof::uy, outputDof = Dof::uy;
+  std::vector<double> frequencies;  ///< frequency-response: excitation (rad/s), ascending
   std::vector<std::string> bearingPoints;  ///< rigid-body: the two spring points A, B
 };
 
 /// True for the analysis types this header describes.
 inline bool isRotorAnalysis(const std::string& type) {
-  return type == "rotor" || type == "campbell" || type == "unbalance" || type == "rigid-body";
+  return type == "rotor" || type == "campbell" || type == "unbalance" || type == "rigid-body" ||
+         type == "frequency-response";
 }
 
 }  // namespace beamrotor

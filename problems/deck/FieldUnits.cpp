@@ -54,12 +54,18 @@ const Table& table() {
     add(t, "analyses[].loads[].harmonics.terms[].", {"phase"}, dim::angle);
     add(t, "analyses[].", {"speed_rpm", "from_rpm", "to_rpm"}, dim::angularSpeed, kRpm);
     add(t, "analyses[].unbalance[].", {"me"}, dim::massLength);
+    add(t, "analyses[].", {"from_hz", "to_hz"}, dim::frequency);
+    add(t, "analyses[].operating.", {"min_rpm", "max_rpm"}, dim::angularSpeed, kRpm);
     add(t, "analyses[].unbalance[].", {"phase"}, dim::angle);
     for (const char* prefix : {"bearings[].", "bearings[].table[]."}) {
       add(t, prefix, {"kxx", "kyy", "kxy", "kyx"}, dim::stiffness);
       add(t, prefix, {"cxx", "cyy", "cxy", "cyx"}, dim::damping);
     }
     add(t, "bearings[].table[].", {"speed_rpm"}, dim::angularSpeed, kRpm);
+    add(t, "bearings[].", {"D", "L", "c"}, dim::length);
+    add(t, "bearings[].", {"mu"}, Dimension::of(-1, 1, -1, 0));  // dynamic viscosity, Pa s
+    add(t, "bearings[].", {"load"}, dim::force);
+    add(t, "bearings[].", {"from_rpm", "to_rpm"}, dim::angularSpeed, kRpm);
     add(t, "damping.", {"alpha"}, dim::frequency);
     add(t, "damping.", {"beta"}, dim::time);
     return t;

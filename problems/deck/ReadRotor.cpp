@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "elements/PlainJournalBearing.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
@@ -48,6 +49,50 @@ BearingCoefficients readCoefficients(const Context& c, const Field& f,
   return k;
 }
 
+std::vector<double> readSpeedRange(const Context& c, const Field& f);
+
+/// A plain journal bearing: geometry, oil and load, and the speeds of its coefficient table.
+/// The short-bearing theory (elements/PlainJournalBearing.hpp) gives the coefficients there.
+void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckBearing& b) {
+  if (type.text() != "plain-journal")
+    type.fail("unknown bearing type '" + type.text() + "'" +
+              didYouMean(type.text(), {"plain-journal"}) +
+              " (a bearing is plain-journal, or has coefficients or a table)");
+  f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "from_rpm", "to_rpm", "steps"},
+              "a plain-journal bearing");
+  const ExpressionEvaluator& ev = c.evaluator;
+  PlainJournal j;
+  j.diameter = f.require("D").positive(ev);
+  const Field length = f.require("L");
+  j.length = length.positive(ev);
+  if (j.length > j.diameter)
+    length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " +
+                formatNumber(j.length / j.diameter) + ")");
+  const Field clearance = f.require("c");
+  j.clearance = clearance.positive(ev);
+  if (!(j.clearance < 0.01 * j.diameter))
+    clearance.fail("a radial clearance of " + formatNumber(j.clearance) +
+                   " m is not small against D (c/D must be below 0.01; typical 0.001)");
+  j.viscosity = f.require("mu").positive(ev);
+  j.load = f.require("load").positive(ev);
+  b.speeds = readSpeedRange(c, f);
+  if (!(b.speeds.front() > 0))
+    f.require("from_rpm").fail("a plain journal bearing has no film at rest: from_rpm must be > 0 "
+                               "(the lowest row is held below it)");
+  // Below 1 % of the clearance the film is thinner than any real surface finish allows (the
+  // journal runs on the bearing), and the linear coefficients grow without bound.
+  constexpr double kThinnestFilm = 0.01;
+  const double slowest = eccentricityRatio(j, b.speeds.front());
+  if (slowest > 1 - kThinnestFilm)
+    f.require("from_rpm")
+        .fail("at " + formatNumber(b.speeds.front() / kRadPerRpm) +
+              " rpm the film carries the load only at eccentricity " + formatNumber(slowest) +
+              " (thinner than 1 % of c: the journal touches the bearing); raise from_rpm, mu or "
+              "L, or check load and c");
+  for (double w : b.speeds) b.table.push_back(shortBearingCoefficients(j, w));
+  b.journal = j;
+}
+
 bool carriesLateral(const Deck& deck) {
   return deck.dofs.contains(Dof::uy) && deck.dofs.contains(Dof::uz);
 }
@@ -68,7 +113,9 @@ void readBearings(Context& c) {
     auto nameField = f.get("name");
     b.name = nameField ? nameField->name() : b.point;
     claimName(nameField ? *nameField : at, b.name, names, "a bearing");
-    if (auto table = f.get("table")) {
+    if (auto type = f.get("type")) {
+      readPlainJournal(c, f, *type, b);
+    } else if (auto table = f.get("table")) {
       f.allowOnly({"name", "at", "table"}, "a tabulated bearing");
       const std::vector<Field> rows = table->items();
       if (rows.empty()) table->fail("the bearing table is empty");
@@ -106,6 +153,42 @@ std::vector<double> readSpeedRange(const Context& c, const Field& f) {
   for (int i = 0; i < n; ++i) speeds.push_back((from + (to - from) * i / n) * kRadPerRpm);
   speeds.push_back(to * kRadPerRpm);
   return speeds;
+}
+
+/// input / output of a frequency response: {at: POINT, dof: uy | uz | ry | rz}.
+void readResponseEnd(const Context& c, const Field& f, std::string& point, Dof& dof) {
+  if (!f.isMap()) f.fail("expected {at: POINT, dof: uy}, got " + f.describe());
+  f.allowOnly({"at", "dof"}, "an end of a frequency response");
+  point = c.point(f.require("at")).name;
+  const Field d = f.require("dof");
+  dof = c.dof(d);
+  if (dof != Dof::uy && dof != Dof::uz && dof != Dof::ry && dof != Dof::rz)
+    d.fail("a rotor's frequency response acts on uy, uz, ry or rz");
+}
+
+/// from_hz, to_hz, steps: excitation frequencies (rad/s), `to` exactly; from_hz may be 0.
+std::vector<double> readFrequencyRange(const Context& c, const Field& f) {
+  const double from = f.require("from_hz").nonNegative(c.evaluator);
+  const Field toField = f.require("to_hz");
+  const double to = toField.number(c.evaluator);
+  if (!(to > from)) toField.fail("to_hz must exceed from_hz (" + formatNumber(from) + ")");
+  const int n = f.require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
+  std::vector<double> w;
+  for (int i = 0; i <= n; ++i) w.push_back(2 * std::numbers::pi * (i == n ? to : from + (to - from) * i / n));
+  return w;
+}
+
+/// operating: {min_rpm, max_rpm}: the machine's operating speed range, 0 < min < max.
+OperatingRange readOperatingRange(const Context& c, const Field& f) {
+  if (!f.isMap()) f.fail("expected {min_rpm: RPM, max_rpm: RPM}, got " + f.describe());
+  f.allowOnly({"min_rpm", "max_rpm"}, "an operating speed range");
+  OperatingRange range;
+  range.minimum = f.require("min_rpm").positive(c.evaluator) * kRadPerRpm;
+  const Field top = f.require("max_rpm");
+  range.maximum = top.positive(c.evaluator) * kRadPerRpm;
+  if (!(range.maximum > range.minimum))
+    top.fail("max_rpm must exceed min_rpm (" + formatNumber(range.minimum / kRadPerRpm) + ")");
+  return range;
 }
 
 void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
@@ -179,13 +262,22 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
                 "a campbell analysis");
     r.speeds = readSpeedRange(c, f);
     if (auto o = f.get("order")) r.order = o->positive(ev);
+  } else if (a.type == "frequency-response") {
+    f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
+                "a frequency-response analysis");
+    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev) * kRadPerRpm;
+    readResponseEnd(c, f.require("input"), r.inputPoint, r.inputDof);
+    readResponseEnd(c, f.require("output"), r.outputPoint, r.outputDof);
+    r.frequencies = readFrequencyRange(c, f);
   } else {
-    f.allowOnly({"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response"},
-                "an unbalance analysis");
+    f.allowOnly(
+        {"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response", "operating"},
+        "an unbalance analysis");
     r.speeds = readSpeedRange(c, f);
     readUnbalance(c, f, r);
+    if (auto o = f.get("operating")) r.operating = readOperatingRange(c, *o);
   }
-  if (a.type != "unbalance") {
+  if (a.type != "unbalance" && a.type != "frequency-response") {
     if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);
     if (auto s = f.get("shift")) a.shift = s->number(ev);
   }

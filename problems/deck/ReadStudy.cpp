@@ -41,7 +41,8 @@ void readAnalyses(Context& c) {
     DeckAnalysis a;
     a.place = f.place();
     a.type = f.require("type").choice(
-        {"static", "modal", "transient", "rotor", "campbell", "unbalance", "rigid-body"});
+        {"static", "modal", "transient", "rotor", "campbell", "unbalance", "rigid-body",
+         "frequency-response"});
     if (a.type == "static") {
       f.allowOnly({"type", "name"}, "a static analysis");
     } else if (a.type == "transient") {

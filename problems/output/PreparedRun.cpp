@@ -15,7 +15,8 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
     if (*t) all.emplace_back((*t)->title(), &**t);
   if (rotor)
     for (const std::optional<CsvTable>* t :
-         {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance})
+         {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance, &rotor->api684,
+          &rotor->frf, &rotor->bearings})
       if (*t) all.emplace_back((*t)->title(), &**t);
   for (const std::vector<CsvTable>* list : {&members, &envelopes})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);

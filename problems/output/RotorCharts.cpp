@@ -26,7 +26,7 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
                             double order) {
   const auto rpm = campbell.numbers("speed_rpm");
   const int x = campbell.column("speed_rpm");
-  const int lines = int((campbell.columns().size() - 2) / 4);
+  const int lines = campbellLineCount(campbell);
   // The frequency axis is fixed here (0 to the highest line or speed line, 5 % headroom) so
   // that data map to known pixels and the critical speeds' labels can be kept apart.
   double top = order * std::max(std::abs(rpm.front()), std::abs(rpm.back())) / 60;
@@ -155,6 +155,36 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
        << panel("uy_phase", 1, false) << "  unset multiplot\n";
   return {chartName, "Unbalance response: amplitude and phase against spin speed", width, height,
           body.str()};
+}
+
+ChartScript frequencyResponseDiagram(const std::string& caption, const std::string& chartName,
+                                     const CsvTable& response, const std::string& csvFile,
+                                     const std::string& what) {
+  const int x = response.column("frequency");
+  PositiveRange magnitudes;
+  for (double m : response.numbers("magnitude")) magnitudes.include(m);
+  const std::vector<std::string> titles{what};
+  const int keyMargin = keyWidth(titles);
+  const int width = 770 + keyMargin, height = 800;
+  const auto curve = [&](const std::string& using_) {
+    return "  plot " + gnuplotFile(csvFile) + " skip 1 using " + std::to_string(x) + ":(" +
+           using_ + ") with lines linewidth 2 " + colour(0) + " title " + gnuplotText(what) + "\n";
+  };
+  const int m = response.column("magnitude"), p = response.column("phase");
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(2, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n" << logAxis("y", magnitudes)
+       << "  set ylabel 'receptance magnitude [m/N]'\n"
+       << curve("$" + std::to_string(m) + " > 0 ? $" + std::to_string(m) + " : NaN")
+       << "  unset logscale y\n  set format y '%g'\n  set ytics autofreq\n  set mytics default\n"
+       << "  set xlabel 'excitation frequency [Hz]'\n  set ylabel 'phase [deg]'\n"
+       << "  set yrange [-180:180]\n  set ytics 90\n"
+       << curve("$" + std::to_string(p) + " <= -179.999 ? $" + std::to_string(p) + " + 360 : $" +
+                std::to_string(p))
+       << "  unset multiplot\n";
+  return {chartName, "Frequency response: receptance magnitude and phase against frequency",
+          width, height, body.str()};
 }
 
 }  // namespace beamrotor

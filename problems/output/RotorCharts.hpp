@@ -25,4 +25,10 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
                                    const CsvTable& response, const std::string& csvFile,
                                    const std::vector<std::string>& points);
 
+/// Two panels against frequency (Hz) from a frequencyResponseTable in csvFile: the receptance
+/// magnitude (log scale) and its phase (deg); `what` names it ("B uy / A uy").
+ChartScript frequencyResponseDiagram(const std::string& caption, const std::string& chartName,
+                                     const CsvTable& response, const std::string& csvFile,
+                                     const std::string& what);
+
 }  // namespace beamrotor

@@ -19,9 +19,31 @@ inline std::string criticalSpeedsCsv(const std::string& stem) {
 inline std::string unbalanceCsv(const std::string& stem) {
   return stem + "_unbalance.csv";
 }
+/// Campbell: one row per plain journal bearing and table speed.
+inline std::string journalBearingsCsv(const std::string& stem) {
+  return stem + "_bearings.csv";
+}
+/// Unbalance with an operating range: one row per response point and peak (API 684).
+inline std::string api684Csv(const std::string& stem) {
+  return stem + "_api684.csv";
+}
+/// Frequency response: one row per excitation frequency.
+inline std::string frequencyResponseCsv(const std::string& stem) {
+  return stem + "_frf.csv";
+}
 /// Charts (without extension).
+inline std::string frequencyResponseChart(const std::string& stem) {
+  return stem + "_frf";
+}
+inline std::string journalBearingsChart(const std::string& stem) {
+  return stem + "_bearings";
+}
 inline std::string campbellChart(const std::string& stem) {
   return stem + "_campbell";
+}
+/// Campbell: the whirl frequencies coloured by log decrement, and the decrements.
+inline std::string stabilityChart(const std::string& stem) {
+  return stem + "_stability";
 }
 inline std::string unbalanceChart(const std::string& stem) {
   return stem + "_unbalance";

@@ -53,15 +53,17 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
   Json speeds = Json::array(), lines = Json::array(), critical = Json::array();
   for (double s : c.speeds) speeds.push_back(rpmOf(s));
   for (std::size_t l = 0; l < c.lines.size(); ++l) {
-    Json f = Json::array(), zeta = Json::array(), whirl = Json::array();
+    Json f = Json::array(), zeta = Json::array(), delta = Json::array(), whirl = Json::array();
     for (const RotorMode& m : c.lines[l]) {
       f.push_back(m.dampedFrequencyHz);
       zeta.push_back(m.dampingRatio);
+      delta.push_back(finiteOrNull(m.logDecrement));
       whirl.push_back(std::string(whirlName(m.whirl)));
     }
     lines.push_back({{"line", l + 1},
                      {"frequencies_hz", f},
                      {"damping_ratio", zeta},
+                     {"log_decrement", delta},
                      {"whirl", whirl},
                      {"mac", c.mac[l]}});
   }
@@ -72,8 +74,16 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
                         {"line", k.line + 1},
                         {"damping_ratio", k.dampingRatio},
                         {"whirl", std::string(whirlName(k.whirl))}});
+  Json onset = nullptr;
+  if (r.onset)
+    onset = {{"rpm", r.onset->rpm},
+             {"speed_rad_s", r.onset->speed},
+             {"frequency_hz", r.onset->frequencyHz},
+             {"whirl", std::string(whirlName(r.onset->whirl))},
+             {"evaluations", r.onset->evaluations}};
   return {{"order", r.order},
           {"speeds_rpm", speeds},
+          {"instability_onset", onset},
           {"lines", lines},
           {"critical_speeds", critical},
           {"symbolic_analyses", c.symbolicAnalyses},
@@ -81,7 +91,32 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
           {"files",
            {{"campbell_csv", campbellCsv(stem)},
             {"critical_speeds_csv", criticalSpeedsCsv(stem)},
-            {"chart", campbellChart(stem) + ".svg"}}}};
+            {"chart", campbellChart(stem) + ".svg"},
+            {"stability_chart", stabilityChart(stem) + ".svg"}}}};
+}
+
+/// API 684 reading: the operating range and each response point's peaks.
+Json api684Json(const std::string& stem, const RotorOutcome& r) {
+  Json points = Json::object();
+  bool pass = true;
+  for (std::size_t k = 0; k < r.peaks.size(); ++k) {
+    Json peaks = Json::array();
+    for (const ResponsePeak& p : r.peaks[k]) {
+      pass = pass && p.pass;
+      peaks.push_back({{"rpm", rpmOf(p.speed)},
+                       {"amplitude_m", p.amplitude},
+                       {"half_power_rpm", {rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower)}},
+                       {"amplification_factor", p.amplificationFactor},
+                       {"required_margin_percent", p.requiredMargin},
+                       {"actual_margin_percent", p.actualMargin},
+                       {"pass", p.pass}});
+    }
+    points[r.responsePoints[k]] = peaks;
+  }
+  return {{"operating_rpm", {rpmOf(r.operating->minimum), rpmOf(r.operating->maximum)}},
+          {"peaks", points},
+          {"pass", pass},
+          {"csv", api684Csv(stem)}};
 }
 
 Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
@@ -112,8 +147,29 @@ Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
   return {
       {"speeds_rpm", speeds},
       {"response", response},
+      {"api684", r.operating ? api684Json(stem, r) : Json(nullptr)},
       {"time_s", u.time.total},
       {"files", {{"unbalance_csv", unbalanceCsv(stem)}, {"chart", unbalanceChart(stem) + ".svg"}}}};
+}
+
+Json frequencyResponseJson(const std::string& stem, const RotorOutcome& r) {
+  const FrequencyResponseResult& f = *r.frequencyResponse;
+  Json hz = Json::array(), magnitude = Json::array(), phase = Json::array();
+  for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
+    hz.push_back(f.frequencies[i] / (2 * std::numbers::pi));
+    magnitude.push_back(std::abs(f.receptance[i]));
+    phase.push_back(std::arg(f.receptance[i]) * kDegrees);
+  }
+  return {{"speed_rpm", rpmOf(f.speed)},
+          {"input", r.frfInput},
+          {"output", r.frfOutput},
+          {"frequencies_hz", hz},
+          {"magnitude", magnitude},
+          {"phase_deg", phase},
+          {"time_s", f.time.total},
+          {"files",
+           {{"frf_csv", frequencyResponseCsv(stem)},
+            {"chart", frequencyResponseChart(stem) + ".svg"}}}};
 }
 
 Json rigidBodyJson(const RigidBodyOutcome& r) {
@@ -160,6 +216,7 @@ Json rotorJson(const AnalysisOutcome& a) {
   Json body = r.modes       ? modesJson(stem, *r.modes)
               : r.campbell  ? campbellJson(stem, r)
               : r.unbalance ? unbalanceJson(stem, r)
+              : r.frequencyResponse ? frequencyResponseJson(stem, r)
                             : rigidBodyJson(*r.rigidBody);
   for (auto& [key, value] : body.items()) out[key] = value;
   return out;

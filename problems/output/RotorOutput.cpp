@@ -2,8 +2,10 @@
 #include "problems/output/RotorOutput.hpp"
 
 #include "problems/output/FileNames.hpp"
+#include "problems/output/RotorBearingChart.hpp"
 #include "problems/output/RotorCharts.hpp"
 #include "problems/output/RotorFileNames.hpp"
+#include "problems/output/RotorStabilityChart.hpp"
 #include "problems/output/RotorTables.hpp"
 #include "problems/output/RotorVtk.hpp"
 #include "problems/output/VtkWriter.hpp"
@@ -17,8 +19,13 @@ PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
   if (r.campbell) {
     p.campbell = campbellTable(campbellCsv(stem), *r.campbell);
     p.critical = criticalSpeedsTable(criticalSpeedsCsv(stem), r.criticalSpeeds);
+    if (!r.journals.empty())
+      p.bearings = journalBearingsTable(journalBearingsCsv(stem), r.journals);
   }
   if (r.unbalance) p.unbalance = unbalanceTable(unbalanceCsv(stem), *r.unbalance, r.responsePoints);
+  if (r.operating) p.api684 = api684Table(api684Csv(stem), r);
+  if (r.frequencyResponse)
+    p.frf = frequencyResponseTable(frequencyResponseCsv(stem), *r.frequencyResponse);
   return p;
 }
 
@@ -55,9 +62,29 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
     if (charts && p.campbell->rowCount() > 0)
       drawChart(dir, campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
                                      *p.critical, criticalSpeedsCsv(stem), r.order));
+    if (charts && p.campbell->rowCount() > 0)
+      drawChart(dir, stabilityDiagram(
+                         caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),
+                         r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt));
+  }
+  if (p.frf) {
+    p.frf->write(dir / frequencyResponseCsv(stem));
+    if (charts && p.frf->rowCount() > 0)
+      drawChart(dir, frequencyResponseDiagram(caption, frequencyResponseChart(stem), *p.frf,
+                                              frequencyResponseCsv(stem),
+                                              r.frfOutput + " / " + r.frfInput));
+  }
+  if (p.bearings) {
+    p.bearings->write(dir / journalBearingsCsv(stem));
+    std::vector<std::string> names;
+    for (const JournalBearingCurve& j : r.journals) names.push_back(j.name);
+    if (charts && p.bearings->rowCount() > 0)
+      drawChart(dir, journalBearingsDiagram(caption, journalBearingsChart(stem), *p.bearings,
+                                            journalBearingsCsv(stem), names));
   }
   if (p.unbalance) {
     p.unbalance->write(dir / unbalanceCsv(stem));
+    if (p.api684) p.api684->write(dir / api684Csv(stem));
     if (charts && p.unbalance->rowCount() > 0)
       drawChart(dir, unbalanceResponseChart(caption, unbalanceChart(stem), *p.unbalance,
                                             unbalanceCsv(stem), r.responsePoints));

@@ -17,6 +17,9 @@ struct PreparedRotor {
   std::optional<CsvTable> campbell;   ///< campbell: <stem>_campbell.csv
   std::optional<CsvTable> critical;   ///< campbell: <stem>_critical_speeds.csv
   std::optional<CsvTable> unbalance;  ///< unbalance: <stem>_unbalance.csv
+  std::optional<CsvTable> api684;     ///< unbalance with operating range: <stem>_api684.csv
+  std::optional<CsvTable> frf;        ///< frequency-response: <stem>_frf.csv
+  std::optional<CsvTable> bearings;   ///< campbell with plain journal bearings: <stem>_bearings.csv
 };
 
 /// Builds the tables of a solved rotor analysis (a.rotor set); throws on non-finite values.

@@ -14,6 +14,65 @@ double rpmOf(double speed) {
   return speed * 30 / std::numbers::pi;
 }
 
+CsvCell logDecrementCell(double delta) {
+  return std::isfinite(delta) ? CsvCell(delta) : CsvCell(std::string(delta > 0 ? "inf" : "-inf"));
+}
+
+CsvTable journalBearingsTable(const std::string& title,
+                              const std::vector<JournalBearingCurve>& journals) {
+  CsvTable table(title, {{"bearing", ""},        {"bearing_index", ""}, {"speed", "rad/s"},
+                         {"speed_rpm", "rpm"},   {"eccentricity", ""},  {"attitude_angle", "deg"},
+                         {"sommerfeld", ""},     {"kxx", "N/m"},        {"kxy", "N/m"},
+                         {"kyx", "N/m"},         {"kyy", "N/m"},        {"cxx", "N s/m"},
+                         {"cxy", "N s/m"},       {"cyx", "N s/m"},      {"cyy", "N s/m"}});
+  for (std::size_t j = 0; j < journals.size(); ++j) {
+    const JournalBearingCurve& b = journals[j];
+    for (std::size_t s = 0; s < b.speeds.size(); ++s) {
+      const BearingCoefficients& k = b.coefficients[s];
+      table.addRow({b.name, (long long)(j + 1), b.speeds[s], rpmOf(b.speeds[s]),
+                    b.eccentricity[s], b.attitude[s] * 180 / std::numbers::pi, b.sommerfeld[s],
+                    k.kyy, k.kyz, k.kzy, k.kzz, k.cyy, k.cyz, k.czy, k.czz});
+    }
+  }
+  return table;
+}
+
+CsvTable api684Table(const std::string& title, const RotorOutcome& r) {
+  CsvTable table(title, {{"point", ""},
+                         {"peak", ""},
+                         {"speed_rpm", "rpm"},
+                         {"amplitude", "m"},
+                         {"lower_half_power_rpm", "rpm"},
+                         {"upper_half_power_rpm", "rpm"},
+                         {"amplification_factor", ""},
+                         {"required_margin", "%"},
+                         {"actual_margin", "%"},
+                         {"pass", ""}});
+  for (std::size_t k = 0; k < r.peaks.size(); ++k)
+    for (std::size_t i = 0; i < r.peaks[k].size(); ++i) {
+      const ResponsePeak& p = r.peaks[k][i];
+      table.addRow({r.responsePoints[k], (long long)(i + 1), rpmOf(p.speed), p.amplitude,
+                    rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower), p.amplificationFactor,
+                    p.requiredMargin, p.actualMargin, (long long)(p.pass ? 1 : 0)});
+    }
+  return table;
+}
+
+CsvTable frequencyResponseTable(const std::string& title, const FrequencyResponseResult& f) {
+  CsvTable table(title, {{"frequency", "Hz"},
+                         {"omega", "rad/s"},
+                         {"magnitude", "m/N"},
+                         {"phase", "deg"},
+                         {"real", "m/N"},
+                         {"imag", "m/N"}});
+  for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
+    const std::complex<double> h = f.receptance[i];
+    table.addRow({f.frequencies[i] / (2 * std::numbers::pi), f.frequencies[i], std::abs(h),
+                  std::arg(h) * 180 / std::numbers::pi, h.real(), h.imag()});
+  }
+  return table;
+}
+
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
   CsvTable table(title, {{"mode", ""},
                          {"frequency", "Hz"},
@@ -24,11 +83,8 @@ CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
                          {"whirl_ratio", ""}});
   for (std::size_t m = 0; m < r.modes.size(); ++m) {
     const RotorMode& mode = r.modes[m];
-    const CsvCell decrement = std::isfinite(mode.logDecrement)
-                                  ? CsvCell(mode.logDecrement)
-                                  : CsvCell(std::string(mode.logDecrement > 0 ? "inf" : "-inf"));
     table.addRow({(long long)(m + 1), mode.dampedFrequencyHz, mode.naturalFrequencyHz,
-                  mode.dampingRatio, decrement, std::string(whirlName(mode.whirl)),
+                  mode.dampingRatio, logDecrementCell(mode.logDecrement), std::string(whirlName(mode.whirl)),
                   mode.whirlRatio});
   }
   return table;
@@ -38,11 +94,17 @@ std::string campbellColumn(int line, const std::string& what) {
   return "line" + std::to_string(line) + "_" + what;
 }
 
+int campbellLineCount(const CsvTable& campbell) {
+  constexpr int kSpeedColumns = 2, kColumnsPerLine = 5;
+  return int((campbell.columns().size() - kSpeedColumns) / kColumnsPerLine);
+}
+
 CsvTable campbellTable(const std::string& title, const CampbellResult& c) {
   std::vector<CsvColumn> columns{{"speed", "rad/s"}, {"speed_rpm", "rpm"}};
   for (int l = 1; l <= int(c.lines.size()); ++l) {
     columns.push_back({campbellColumn(l, "frequency"), "Hz"});
     columns.push_back({campbellColumn(l, "damping_ratio"), ""});
+    columns.push_back({campbellColumn(l, "log_decrement"), ""});
     columns.push_back({campbellColumn(l, "whirl"), ""});
     columns.push_back({campbellColumn(l, "mac"), ""});
   }
@@ -51,7 +113,8 @@ CsvTable campbellTable(const std::string& title, const CampbellResult& c) {
     std::vector<CsvCell> row{c.speeds[s], rpmOf(c.speeds[s])};
     for (std::size_t l = 0; l < c.lines.size(); ++l) {
       const RotorMode& m = c.lines[l][s];
-      row.insert(row.end(), {m.dampedFrequencyHz, m.dampingRatio, whirlSign(m.whirl), c.mac[l][s]});
+      row.insert(row.end(), {m.dampedFrequencyHz, m.dampingRatio, logDecrementCell(m.logDecrement),
+                             whirlSign(m.whirl), c.mac[l][s]});
     }
     table.addRow(std::move(row));
   }

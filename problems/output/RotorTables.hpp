@@ -16,6 +16,25 @@ long long whirlSign(Whirl w);
 /// Speed in rpm of a speed in rad/s.
 double rpmOf(double speed);
 
+/// A log decrement as a CSV cell: the number, or the text "inf" / "-inf" (real eigenvalue).
+CsvCell logDecrementCell(double delta);
+
+/// Plain journal bearings: one row per bearing and table speed: bearing (name), bearing_index
+/// (1, 2, ...), speed (rad/s), speed_rpm, eccentricity (e/c), attitude_angle (deg),
+/// sommerfeld (mu Omega D L^3 / (8 W c^2)), kxx kxy kyx kyy (N/m), cxx cxy cyx cyy (N s/m) in
+/// the bearing's axes as the deck writes them (x_b = global y).
+CsvTable journalBearingsTable(const std::string& title,
+                              const std::vector<JournalBearingCurve>& journals);
+
+/// API 684: one row per response point and resonance peak: point, peak (1, 2, ... per point),
+/// speed_rpm, amplitude (m), lower/upper_half_power_rpm (0: outside the sweep),
+/// amplification_factor (0: unknown), required_margin and actual_margin (%), pass (1 or 0).
+CsvTable api684Table(const std::string& title, const RotorOutcome& r);
+
+/// Frequency response: one row per excitation frequency: frequency (Hz), omega (rad/s),
+/// magnitude, phase (deg), real, imag of the receptance (m/N for translations).
+CsvTable frequencyResponseTable(const std::string& title, const FrequencyResponseResult& f);
+
 /// One row per mode: mode, damped and natural frequency (Hz), damping ratio, log decrement
 /// (text "inf" for a real eigenvalue), whirl (forward, backward, planar) and whirl ratio.
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r);
@@ -25,6 +44,8 @@ CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r);
 CsvTable campbellTable(const std::string& title, const CampbellResult& c);
 /// Column names of campbellTable for line l (1-based).
 std::string campbellColumn(int line, const std::string& what);
+/// The number of lines a campbellTable holds.
+int campbellLineCount(const CsvTable& campbell);
 
 /// One row per critical speed: speed_rpm, speed (rad/s), frequency (Hz), line, damping
 /// ratio, whirl (+1, -1, 0).

@@ -7,7 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "elements/PlainJournalBearing.hpp"
+#include "fem/rotor/Api684.hpp"
+#include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorResults.hpp"
+#include "fem/rotor/RotorStability.hpp"
 #include "problems/scenes/FormeShaft.hpp"
 
 namespace beamrotor {
@@ -24,15 +28,35 @@ struct RigidBodyOutcome {
   std::array<FormeShaftMode, 2> modes;
 };
 
+/// A plain journal bearing's operating points over its table speeds: what the model uses.
+struct JournalBearingCurve {
+  std::string name;
+  PlainJournal journal;
+  std::vector<double> speeds;                     ///< rad/s
+  std::vector<double> eccentricity;               ///< eccentricity ratio e / c
+  std::vector<double> attitude;                   ///< attitude angle (rad)
+  std::vector<double> sommerfeld;                 ///< mu Omega D L^3 / (8 W c^2)
+  std::vector<BearingCoefficients> coefficients;  ///< global axes
+};
+
 /// One rotor analysis, solved: exactly one of the optionals is set, by its type.
 struct RotorOutcome {
   std::optional<RotorModesResult> modes;      ///< rotor: damped modes at one speed
   std::optional<CampbellResult> campbell;     ///< campbell
   std::vector<CriticalSpeed> criticalSpeeds;  ///< campbell: where lines meet order x speed
   double order = 1;                           ///< campbell: that order
+  /// campbell: the lowest speed where a mode's log decrement falls through zero, refined on the
+  /// speed; none when every mode stays stable over the sweep
+  std::optional<InstabilityOnset> onset;
+  std::vector<JournalBearingCurve> journals;  ///< campbell: the deck's plain journal bearings
   std::optional<UnbalanceResult> unbalance;   ///< unbalance
   std::vector<std::string> responsePoints;    ///< unbalance: names of unbalance->nodes
+  /// unbalance with an operating range: API 684 reading of each response point's peaks
+  std::optional<OperatingRange> operating;
+  std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
   std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
+  std::optional<FrequencyResponseResult> frequencyResponse;  ///< frequency-response
+  std::string frfInput, frfOutput;  ///< frequency-response: "point dof" of each end
 };
 
 }  // namespace beamrotor

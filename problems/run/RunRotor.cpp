@@ -8,12 +8,30 @@
 #include "elements/Bearing.hpp"
 #include "elements/Spring.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
+#include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorModes.hpp"
+#include "fem/rotor/RotorStability.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
 
 namespace beamrotor {
 
 namespace {
+
+std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
+  std::vector<JournalBearingCurve> out;
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    if (!b.journal) continue;
+    JournalBearingCurve curve{b.name, *b.journal, b.speeds, {}, {}, {}, b.table};
+    for (double w : b.speeds) {
+      const double eps = eccentricityRatio(*b.journal, w);
+      curve.eccentricity.push_back(eps);
+      curve.attitude.push_back(attitudeAngle(eps));
+      curve.sommerfeld.push_back(b.journal->sommerfeld(w));
+    }
+    out.push_back(std::move(curve));
+  }
+  return out;
+}
 
 RotorOptions optionsOf(const Deck& deck, const DeckAnalysis& a) {
   RotorOptions o;
@@ -70,6 +88,8 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, a));
     out.order = r.order;
     out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
+    out.onset = instabilityOnset(model, *out.campbell, optionsOf(deck, a));
+    out.journals = journalCurves(deck);
   } else if (a.type == "unbalance") {
     std::vector<Unbalance> unbalance;
     for (const DeckUnbalance& u : r.unbalance)
@@ -78,6 +98,20 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     for (const std::string& p : r.response) nodes.push_back(model.node(p));
     out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
     out.responsePoints = r.response;
+    out.operating = r.operating;
+    if (r.operating)
+      for (const auto& orbits : out.unbalance->orbits) {
+        std::vector<double> amplitudes;
+        for (const Orbit& o : orbits) amplitudes.push_back(o.major());
+        out.peaks.push_back(readResponsePeaks(out.unbalance->speeds, amplitudes, *r.operating));
+      }
+  } else if (a.type == "frequency-response") {
+    const NodeDof in{model.node(r.inputPoint), r.inputDof};
+    const NodeDof to{model.node(r.outputPoint), r.outputDof};
+    out.frequencyResponse =
+        solveFrequencyResponse(model, r.speed, in, to, r.frequencies, deck.rotor.damping);
+    out.frfInput = r.inputPoint + " " + std::string(dofName(r.inputDof));
+    out.frfOutput = r.outputPoint + " " + std::string(dofName(r.outputDof));
   } else {
     out.rigidBody = rigidBody(r, model);
   }

@@ -1,0 +1,36 @@
+// The onset speed of instability: the lowest spin speed at which a damped mode's logarithmic
+// decrement falls through zero (its eigenvalue crosses into the right half-plane), typically
+// from cross-coupled bearing or seal stiffness. Bracketed on a Campbell diagram's speed grid,
+// then refined on the speed itself (not interpolated): the decay rate of the least stable
+// mode, max Re(lambda) over the modes computed, is continuous in the speed, so a sign change
+// between two speeds brackets a root, which regula falsi (Illinois variant) narrows to the
+// asked tolerance.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "fem/rotor/RotorModes.hpp"
+
+namespace beamrotor {
+
+struct InstabilityOnset {
+  double speed = 0;              ///< rad/s, where the least stable mode's Re(lambda) = 0
+  double rpm = 0;
+  double frequencyHz = 0;        ///< that mode's damped frequency there
+  Whirl whirl = Whirl::planar;   ///< and its whirl sense
+  int evaluations = 0;           ///< eigen-solutions spent on the refinement
+};
+
+/// max Re(lambda) (1/s) over a set of modes: > 0 when one of them grows.
+double leastStableDecayRate(const std::vector<RotorMode>& modes);
+
+/// The lowest onset speed within the Campbell sweep's speeds (its lines give the brackets),
+/// refined to a relative speed tolerance; none when every mode stays stable at every grid
+/// speed, or the rotor is unstable already at the first one (no bracket). The options must
+/// be those of the Campbell diagram.
+std::optional<InstabilityOnset> instabilityOnset(const Model& model, const CampbellResult& campbell,
+                                                 const RotorOptions& options,
+                                                 double tolerance = 1e-10);
+
+}  // namespace beamrotor
