@@ -21,7 +21,7 @@ void printSecondOrder(std::ostream& out, const AnalysisOutcome& a) {
   if (!a.secondOrder) return;
   const SecondOrderResult& r = *a.secondOrder;
   out << "  second order (equilibrium in the deformed state, " << r.iterations
-      << " iterations): lowest buckling factor "
+      << (r.iterations == 1 ? " iteration" : " iterations") << "): lowest buckling factor "
       << (std::isfinite(r.criticalFactor) ? formatValue(r.criticalFactor) : "none (no compression)")
       << "\n    amplification against first order (largest second-order value over the "
          "first-order one): moment "

@@ -1,5 +1,6 @@
 #include "problems/output/StabilityOutput.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "problems/output/ChartParts.hpp"
