@@ -49,8 +49,7 @@ TEST_SUITE("buckling") {
     };
     const double top = std::min(EI1 * std::pow(kPi / (2 * a), 2), EI2 * std::pow(kPi / (2 * b), 2));
     const double exact = bisectRoot(f, 1e-9 * top, top * (1 - 1e-12));
-    // Measured errors: 2.2e-5 on (4, 8) elements, 1.4e-6 on (8, 16): order 4, so 16 + 32
-    // elements leave < 1e-5.
+    // 16 + 32 elements: measured error 5.6e-9 (h^4); tolerance 1e-7.
     for (BeamTheory theory : {BeamTheory::eulerBernoulli}) {
       Model m;
       LineSpec spec;
@@ -64,7 +63,7 @@ TEST_SUITE("buckling") {
       const BucklingResult r = solveBuckling(m);
       MESSAGE("stepped column: exact " << exact << " N, FE " << r.modes.at(0).factor
                                        << ", error " << relError(r.modes[0].factor, exact));
-      CHECK(relError(r.modes.at(0).factor, exact) < 1e-5);
+      CHECK(relError(r.modes.at(0).factor, exact) < 1e-7);
       // The mode: largest translation 1 at the free top, across the column.
       CHECK(r.modes[0].shape(m.node("top"), 1) == doctest::Approx(1).epsilon(1e-12));
     }
@@ -77,10 +76,16 @@ TEST_SUITE("buckling") {
     // (E Ic / h) / (E Ib / l) and G_base = 0 (fixed) the chart's sway equation
     //   (G_A G_B x^2 - 36) / (6 (G_A + G_B)) = x / tan x,  x = pi / K
     // becomes tan x = -G x / 6, x in (pi/2, pi), and Pcr = x^2 E Ic / h^2 (AISC 360-16,
-    // Commentary to Appendix 7, eq. C-A-7-2). The FE also has axial shortening of the columns,
-    // which the chart ignores: a relative effect of order P / EA ~ 1e-5 here.
+    // Commentary to Appendix 7, eq. C-A-7-2). The chart takes the columns as inextensible; in
+    // the sway mode the beam's end shears stretch one column and shorten the other, which with
+    // the real area (0.2 x 0.2 m) lowered the FE load by 6.3e-4 (measured). The columns here
+    // keep their bending stiffness but get 1e6 times the area, which leaves that effect below
+    // 1e-9.
     const double h = 4.0, l = 6.0;
-    auto column = steelRectangle(0.2, 0.2), beamSection = steelRectangle(0.15, 0.3);
+    const auto square = steelRectangle(0.2, 0.2);
+    auto column = std::make_shared<Section>(Section::general(
+        "column", square->material, 1e6 * square->A, square->Iy, square->Iz, square->J, 0, 0, 0.2));
+    auto beamSection = steelRectangle(0.15, 0.3);
     const double G = (column->EIz() / h) / (beamSection->EIz() / l);
     const double x = bisectRoot([&](double t) { return std::tan(t) + G * t / 6; },
                                 kPi / 2 + 1e-9, kPi - 1e-12);
@@ -104,9 +109,8 @@ TEST_SUITE("buckling") {
     const BucklingResult r = solveBuckling(m, o);
     MESSAGE("portal sway: exact " << exact << " N, FE " << r.modes.at(0).factor << ", error "
                                   << relError(r.modes[0].factor, exact));
-    // Measured error 1e-5 (discretisation below 1e-7 at 16 elements per member; the rest is
-    // the columns' axial flexibility): tolerance 5e-5.
-    CHECK(relError(r.modes.at(0).factor, exact) < 5e-5);
+    // Measured error 1.2e-6 (discretisation, 16 elements per member): tolerance 5e-6.
+    CHECK(relError(r.modes.at(0).factor, exact) < 5e-6);
     // It is the sway mode: both column tops move the same way along x.
     const double topB = r.modes[0].shape(mesh.jointNodes[1], 0);
     const double topC = r.modes[0].shape(mesh.jointNodes[2], 0);
@@ -119,7 +123,7 @@ TEST_SUITE("buckling") {
   TEST_CASE("reversed load: negative factors; a load that compresses nothing has no positive one") {
     // A column fixed at both ends pulled by its load: it cannot buckle under that load; its
     // reverse is a compression with Pcr = 4 pi^2 EI / L^2, factor -Pcr / 1 N. 8 elements:
-    // measured error 6e-5 (h^4, as in the element tests).
+    // measured error 5.1e-4, as for the fixed-fixed column in the element tests (h^4).
     const double L = 2.0;
     auto sec = steelCircle(0.05);
     Model m;
@@ -135,12 +139,13 @@ TEST_SUITE("buckling") {
     REQUIRE(!r.warnings.empty());
     REQUIRE(r.reversed.size() == 2);
     const double exact = -4 * kPi * kPi * sec->EIz() / (L * L);
-    CHECK(relError(r.reversed[0].factor, exact) < 2e-4);
+    CHECK(relError(r.reversed[0].factor, exact) < 6e-4);
   }
 
   TEST_CASE("a large model takes the Lanczos path and agrees with the dense one") {
     // 150 elements (450 free dofs, above the dense limit of 200): pinned-pinned column,
-    // modes n = 1, 2, 3 at n^2 pi^2 EI / L^2 (the discretisation error is below 1e-9 here).
+    // modes n = 1, 2, 3 at n^2 pi^2 EI / L^2. The discretisation error grows as (n h)^4:
+    // measured 2.1e-8 for mode 3, 3e-10 for mode 1; tolerance 5e-8.
     const double L = 3.0;
     auto sec = steelCircle(0.05);
     Model m;
@@ -153,6 +158,6 @@ TEST_SUITE("buckling") {
     const BucklingResult r = solveBuckling(m, o);
     REQUIRE(r.modes.size() == 3);
     for (int n = 1; n <= 3; ++n)
-      CHECK(relError(r.modes[n - 1].factor, n * n * kPi * kPi * sec->EIz() / (L * L)) < 1e-8);
+      CHECK(relError(r.modes[n - 1].factor, n * n * kPi * kPi * sec->EIz() / (L * L)) < 5e-8);
   }
 }

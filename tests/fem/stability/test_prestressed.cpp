@@ -30,7 +30,8 @@ Model pinnedBeamUnderAxialLoad(double P) {
 TEST_SUITE("prestressed modes") {
   TEST_CASE("a pinned beam's bending frequencies follow f^2 = f0^2 (1 - P / Pcr_n)") {
     // Exact continuum values for modes 1..3 at P = +-0.6 Pcr_1. Measured FE errors with 32
-    // Hermite elements and consistent mass: below 3e-7 (h^4); tolerance 1e-6.
+    // Hermite elements and consistent mass: 1.6e-7, 1.2e-6, 5.6e-6 for modes 1, 2, 3 in
+    // compression (4e-8, 9e-7, 4.9e-6 in tension), growing as (n h)^4; tolerance 1e-5.
     auto sec = steelCircle(0.05);
     const double L = 2.0, EI = sec->EIz(), rhoA = sec->rhoA();
     const double Pe = kPi * kPi * EI / (L * L);
@@ -45,7 +46,7 @@ TEST_SUITE("prestressed modes") {
         const double exact = f0 * std::sqrt(1 - P / (n * n * Pe));
         MESSAGE("P = " << P / Pe << " Pe, mode " << n << ": error "
                        << relError(r.modes[n - 1].frequencyHz, exact));
-        CHECK(relError(r.modes[n - 1].frequencyHz, exact) < 1e-6);
+        CHECK(relError(r.modes[n - 1].frequencyHz, exact) < 1e-5);
       }
     }
   }
