@@ -14,19 +14,33 @@ namespace beamrotor {
 
 namespace {
 
-/// The modes of one sign, each shape scaled to a largest translation of 1 with its largest
-/// entry positive.
+/// Largest distance between two nodes along any axis (m): a length to compare rotations with.
+double extent(const Model& model) {
+  if (model.nodes().empty()) return 0;
+  Eigen::Vector3d low = model.nodes().front(), high = low;
+  for (const Eigen::Vector3d& x : model.nodes()) {
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+  }
+  return (high - low).maxCoeff();
+}
+
+/// The modes of one sign, each shape scaled to a largest translation of 1 with that entry
+/// positive; a mode that barely translates (a twist: translations below 1e-9 of its largest
+/// rotation times the model's size) to a largest rotation of 1 instead.
 std::vector<BucklingMode> toModes(const Model& model, const DofMap& dofs, const BucklingPairs& p) {
   std::vector<BucklingMode> modes;
+  const double size = extent(model);
   for (int k = 0; k < int(p.factors.size()); ++k) {
     BucklingMode m;
     m.factor = p.factors[k];
     m.shape = freeToNodalField(model, dofs, p.vectors.col(k));
-    const auto translations = m.shape.leftCols(3);
-    Eigen::Index row = 0, col = 0;
-    const double largest = translations.cwiseAbs().maxCoeff(&row, &col);
-    const double scale = largest > 0 ? largest : m.shape.cwiseAbs().maxCoeff();
-    if (scale > 0) m.shape /= (translations(row, col) < 0 ? -scale : scale);
+    Eigen::Index row = 0, col = 0, rrow = 0, rcol = 0;
+    const double translation = m.shape.leftCols(3).cwiseAbs().maxCoeff(&row, &col);
+    const double rotation = m.shape.rightCols(3).cwiseAbs().maxCoeff(&rrow, &rcol);
+    const bool twist = translation <= 1e-9 * rotation * size;
+    const double entry = twist ? m.shape(rrow, 3 + rcol) : m.shape(row, col);
+    if (entry != 0) m.shape /= entry;
     modes.push_back(std::move(m));
   }
   return modes;

@@ -14,7 +14,9 @@ namespace beamrotor {
 /// value (negative: the load reversed) and its shape.
 struct BucklingMode {
   double factor = 0;
-  NodalField shape;  ///< scaled so that its largest translation is 1 (m per m)
+  /// Scaled so that its largest translation is 1 (a twist mode without translation: its
+  /// largest rotation), that entry positive.
+  NodalField shape;
 };
 
 struct BucklingResult {

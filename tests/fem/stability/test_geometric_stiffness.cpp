@@ -195,4 +195,29 @@ TEST_SUITE("geometric stiffness") {
     CHECK(relError(columnFactor(L, sec, 8, ColumnEnds::pinnedPinned, BeamTheory::eulerBernoulli),
                    Pe) < 2e-4);
   }
+
+  TEST_CASE("3D: torsional buckling of a column at G J A / Ip (the twist term)") {
+    // A doubly symmetric column whose torsion constant is small against its bending stiffness
+    // buckles by twisting at P_T = G J A / Ip (no warping; Timoshenko and Gere, sec. 5.3, with
+    // the warping constant zero). Twist is interpolated linearly in the element and its
+    // stiffness G J / L and geometric term N Ip / (A L) have the same shape, so every mesh gives
+    // P_T to round-off. Ends held against twist and lateral motion, one end axially.
+    const auto steel = Material::fromEnu("steel", 200e9, 0.3, 7850);
+    const double A = 1e-3, I = 1e-5, J = 1e-9, L = 2.0;
+    auto sec = std::make_shared<Section>(Section::general("thin", steel, A, I, I, J, 0, 0, 0.1));
+    Model m;
+    const Line line = uniformBeam(m, L, sec, 8, DofSet::frame3d());
+    m.addSupport({"base", line.nodes.front(),
+                  {{Dof::ux, 0}, {Dof::uy, 0}, {Dof::uz, 0}, {Dof::rx, 0}}});
+    m.addSupport({"top", line.nodes.back(), {{Dof::uy, 0}, {Dof::uz, 0}, {Dof::rx, 0}}});
+    m.addLoad({line.nodes.back(), Dof::ux, -1.0});
+    const BucklingResult r = solveBuckling(m);
+    const double torsional = steel.G * J * A / (2 * I);
+    CHECK(torsional < kPi * kPi * steel.E * I / (L * L) / 100);  // far below flexural buckling
+    REQUIRE(!r.modes.empty());
+    CHECK(relError(r.modes[0].factor, torsional) < 1e-10);
+    // The mode is a twist: largest rotation about x scaled to 1, no lateral translation.
+    CHECK(r.modes[0].shape.col(3).cwiseAbs().maxCoeff() == doctest::Approx(1).epsilon(1e-12));
+    CHECK(r.modes[0].shape.leftCols(3).cwiseAbs().maxCoeff() < 1e-9);
+  }
 }
