@@ -111,6 +111,29 @@ Eigen::RowVector4d deflectionShape(BeamTheory t, double Phi, double L, double xi
          (1 + Phi);
 }
 
+/// Slope dv/dx at xi = x / L of the deflection interpolation deflectionShape (its derivative):
+/// the total slope, bending rotation plus shear strain, through which an axial force acts.
+Eigen::RowVector4d slopeShape(BeamTheory t, double Phi, double L, double xi) {
+  if (isLinear(t)) return {-1 / L, 0, 1 / L, 0};
+  const double x2 = xi * xi;
+  return Eigen::RowVector4d(6 * x2 - 6 * xi - Phi, L * (1 - 4 * xi + 3 * x2 + Phi * (1 - 2 * xi) / 2),
+                            6 * xi - 6 * x2 + Phi, L * (3 * x2 - 2 * xi - Phi * (1 - 2 * xi) / 2)) /
+         (L * (1 + Phi));
+}
+
+/// int_0^L N(x) v'^T v' dx in one bending plane for N linear from N0 to N1; the integrand is
+/// at most of degree 5, which 3 Gauss points integrate exactly.
+Matrix4 geometricBending(BeamTheory t, double Phi, double L, double N0, double N1) {
+  const double g = std::sqrt(0.15);
+  const std::array<double, 3> xi{0.5 - g, 0.5, 0.5 + g}, w{5.0 / 18, 8.0 / 18, 5.0 / 18};
+  Matrix4 k = Matrix4::Zero();
+  for (int p = 0; p < 3; ++p) {
+    const Eigen::RowVector4d B = slopeShape(t, Phi, L, xi[p]);
+    k += w[p] * L * (N0 + (N1 - N0) * xi[p]) * B.transpose() * B;
+  }
+  return k;
+}
+
 /// Deflection and section rotation at x of an element clamped at both ends under a uniform
 /// load q per length in one bending plane (EI, shear parameter Phi = 12 EI / (kappa G A L^2)).
 /// From the Timoshenko beam equations EI theta'' + kappa G A (v' - theta) = 0 and
@@ -328,6 +351,29 @@ Matrix12 Beam::localMass() const {
     place(M, kPlaneXZ, flipRotations(hermiteMass(rhoA, rhoIy, phiZ, L)));
   }
   return M;
+}
+
+Matrix12 Beam::localGeometricStiffness(double N0, double N1) const {
+  const Section& s = *section_;
+  const BeamTheory t = options_.theory;
+  const auto [phiY, phiZ] = shearParameters();
+  Matrix12 KG = Matrix12::Zero();
+  place(KG, kPlaneXY, geometricBending(t, phiY, L_, N0, N1));
+  place(KG, kPlaneXZ, flipRotations(geometricBending(t, phiZ, L_, N0, N1)));
+  // Twist is interpolated linearly: int N (Ip/A) / L^2 dx = mean N (Ip/A) / L.
+  if (s.A > 0) place(KG, kTorsion, twoNode((N0 + N1) / 2 * s.Ip() / (s.A * L_)));
+  return KG;
+}
+
+ElementMatrix Beam::geometricStiffness(const ElementVector& u) const {
+  const SectionForceSeries f = sectionForceSeries(u);
+  Matrix12 KG = localGeometricStiffness(f.at(0).N, f.at(1).N);
+  if (!released_.empty()) {
+    // Released rotations follow the kept dofs as in the mass matrix: KG -> T^T KG T.
+    Matrix12 K = localStiffness();
+    condense(K, &KG, nullptr);
+  }
+  return toCarried(toGlobal(KG, R_));
 }
 
 Vector12 Beam::localLoad() const {

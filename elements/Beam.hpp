@@ -61,6 +61,9 @@ class Beam : public LineElement {
   /// same rho I as the rotary inertia, so a beam without rotary inertia (or one that carries
   /// only one bending rotation, e.g. a planar beam) has none: empty matrix.
   ElementMatrix gyroscopic() const override;
+  /// Geometric stiffness of the axial force the state u puts in the beam (linear along it
+  /// under an axial span load), global frame, releases condensed as in mass().
+  ElementMatrix geometricStiffness(const ElementVector& u) const override;
   ElementVector load() const override;
   std::string kind() const override;
 
@@ -88,6 +91,16 @@ class Beam : public LineElement {
   /// rotary inertia.
   Matrix12 localGyroscopic() const;
   Vector12 localLoad() const;
+  /// Local geometric stiffness for an axial force varying linearly from N0 at the start to N1
+  /// at the end (N, tension positive), local dofs as localStiffness():
+  ///   bending, each plane: int N(x) v'^T v' dx with the deflection interpolation v of the
+  ///   element's own theory (Hermite cubics; the interdependent Timoshenko shapes, whose slope
+  ///   includes the shear strain, which gives Engesser's reduced buckling load; linear);
+  ///   torsion: the Wagner term int N (Ip / A) rx'^T rx' dx of a doubly symmetric section
+  ///   (shear centre at the centroid): McGuire, Gallagher and Ziemian, Matrix Structural
+  ///   Analysis, 2nd ed. (2000), sec. 9.3. Terms of the end moments (lateral-torsional
+  ///   buckling) and warping are not included.
+  Matrix12 localGeometricStiffness(double N0, double N1) const;
 
  private:
   /// Applies the end releases to local K and, when given, M and the load (static

@@ -116,11 +116,22 @@ SparseMatrix SparseAssembler::assemble(MatrixKind kind) && {
   return A;
 }
 
+SparseMatrix SparseAssembler::assembleGeometric(const Eigen::VectorXd& u) const {
+  SparseMatrix A = pattern_;
+  fillWith(A, [&](const Element& e) { return e.geometricStiffness(gather(e, dofs_, u)); });
+  return A;
+}
+
 void SparseAssembler::fill(SparseMatrix& A, MatrixKind kind) const {
+  fillWith(A, [&](const Element& e) { return elementMatrix(e, kind); });
+}
+
+template <class MatrixOf>
+void SparseAssembler::fillWith(SparseMatrix& A, MatrixOf&& matrixOf) const {
   double* values = A.valuePtr();
   std::array<int, kMaxElementDofs> eq{};
   for (const auto& e : model_.elements()) {
-    const ElementMatrix ke = elementMatrix(*e, kind);
+    const ElementMatrix ke = matrixOf(*e);
     if (ke.size() == 0) continue;
     const auto d = e->dofs();
     const int n = int(d.size());

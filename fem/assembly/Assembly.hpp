@@ -24,12 +24,18 @@ class SparseAssembler {
   SparseMatrix assemble(MatrixKind kind) const&;
   /// The same from a temporary assembler: its pattern is filled in place, not copied.
   SparseMatrix assemble(MatrixKind kind) &&;
+  /// The free-free block of the geometric stiffness of the section forces of the full-length
+  /// displacement u (ordered as DofMap): the initial-stress matrix of that state.
+  SparseMatrix assembleGeometric(const Eigen::VectorXd& u) const;
   /// Number of stored entries of the pattern.
   long long patternSize() const { return pattern_.nonZeros(); }
 
  private:
   /// Adds every element's matrix of one kind into A, which has the pattern's structure.
   void fill(SparseMatrix& A, MatrixKind kind) const;
+  /// Adds matrixOf(element) for every element into A (empty matrices skipped).
+  template <class MatrixOf>
+  void fillWith(SparseMatrix& A, MatrixOf&& matrixOf) const;
 
   const Model& model_;
   const DofMap& dofs_;

@@ -47,6 +47,15 @@ NodalField toNodalField(const Model& model, const DofMap& dofs, const Eigen::Vec
   return layOut(model, dofs, u, dofs.size());
 }
 
+Eigen::VectorXd fromNodalField(const DofMap& dofs, const NodalField& field) {
+  Eigen::VectorXd u(dofs.size());
+  for (int eq = 0; eq < dofs.size(); ++eq) {
+    const NodeDof& d = dofs.dofOf(eq);
+    u[eq] = field(d.node, dofIndex(d.dof));
+  }
+  return u;
+}
+
 NodalField freeToNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& uf) {
   return layOut(model, dofs, uf, dofs.freeCount());
 }

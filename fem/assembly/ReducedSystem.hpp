@@ -23,6 +23,9 @@ Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs,
 /// A full-length vector laid out per node (absent dofs zero).
 NodalField toNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u);
 
+/// The inverse of toNodalField: a full-length vector (ordered as DofMap) from a field per node.
+Eigen::VectorXd fromNodalField(const DofMap& dofs, const NodalField& field);
+
 /// A free-length vector (e.g. a mode shape) laid out per node; constrained dofs get zero.
 NodalField freeToNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& uf);
 

@@ -37,6 +37,11 @@ std::string describeMode(const std::array<double, kDofKinds>& share) {
 }  // namespace
 
 ModalResult solveModes(const Model& model, const ModalOptions& options) {
+  return solveModesAbout(model, options, Eigen::VectorXd());
+}
+
+ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
+                            const Eigen::VectorXd& state) {
   Stopwatch clock, total;
   ModalResult result;
   result.shift = options.shift;
@@ -44,7 +49,8 @@ ModalResult solveModes(const Model& model, const ModalOptions& options) {
   // 1. Assemble the free-free blocks of K and M.
   const DofMap dofs(model);
   const SparseAssembler assembler(model, dofs);
-  const SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
+  SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
+  if (state.size() > 0) K += assembler.assembleGeometric(state);
   const SparseMatrix M = assembler.assemble(MatrixKind::mass);
   result.time.assembly = clock.lap();
 

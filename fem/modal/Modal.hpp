@@ -15,4 +15,9 @@ struct ModalOptions {
 /// vibration is about the equilibrium. Throws SolveError for a singular K - sigma M.
 ModalResult solveModes(const Model& model, const ModalOptions& options = {});
 
+/// The same about a loaded state: the geometric stiffness of the full-length displacement
+/// `state` (ordered as DofMap) is added to K (fem/stability/Prestressed).
+ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
+                            const Eigen::VectorXd& state);
+
 }  // namespace beamrotor

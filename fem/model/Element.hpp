@@ -34,6 +34,11 @@ class Element {
   virtual ElementMatrix damping() const { return {}; }
   /// Gyroscopic matrix per unit spin speed (multiply by Omega in rad/s); empty when none.
   virtual ElementMatrix gyroscopic() const { return {}; }
+  /// Geometric (initial-stress) stiffness of the section forces that the displacement state u
+  /// (ordered as dofs()) puts in the element: the change of the nodal forces with the
+  /// displacements that the element's axial force causes by acting through its rotation
+  /// (N/m, ...). Compression softens, tension stiffens. Empty when the element has none.
+  virtual ElementMatrix geometricStiffness(const ElementVector& u) const { return {}; }
   /// Equivalent nodal loads of the loads the element carries (distributed load, self-weight);
   /// empty when none.
   virtual ElementVector load() const { return {}; }

@@ -7,6 +7,7 @@
 #include "problems/cli/AdequateSummary.hpp"
 #include "problems/cli/MemberSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
+#include "problems/cli/StabilitySummary.hpp"
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
 #include "problems/output/Reactions.hpp"
@@ -24,6 +25,7 @@ SystemSize sizeOf(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) return a.statics->size;
     if (a.modal) return a.modal->size;
+    if (a.buckling) return a.buckling->size;
     if (a.transient) return a.transient->result.size;
     if (a.rotor && rotorSize(*a.rotor)) return *rotorSize(*a.rotor);
   }
@@ -153,6 +155,8 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   if (run.adequate) printAdequateChoice(out, *run.adequate);
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.statics) printStatic(out, deck, run, a);
+    printSecondOrder(out, a);
+    if (a.buckling) printBuckling(out, a);
     if (a.modal) printModal(out, a);
     if (a.transient) printTransient(out, a);
     if (a.rotor) printRotor(out, a);

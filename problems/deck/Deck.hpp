@@ -145,13 +145,16 @@ inline DeckLoad scaledLoad(DeckLoad l, double factor) {
 
 /// One analysis to run.
 struct DeckAnalysis {
-  std::string type;  ///< "static", "modal", "transient" or a rotor analysis (isRotorAnalysis)
+  std::string type;  ///< "static", "modal", "buckling", "transient" or a rotor analysis (isRotorAnalysis)
   std::string name;  ///< defaults to the type
-  int modes = 6;     ///< modal, rotor, campbell: how many
+  int modes = 6;     ///< modal, rotor, campbell, buckling: how many
   double shift = 0;  ///< modal: rad^2/s^2; rotor, campbell: 1/s
   DeckPlace place;
   std::optional<DeckTransient> transient;  ///< transient: its settings
   DeckRotorAnalysis rotor;                 ///< rotor analyses: speeds, unbalance, points
+  bool secondOrder = false;  ///< static: equilibrium in the deformed state (fem/stability)
+  bool reversed = false;     ///< buckling: also the negative load factors (load reversed)
+  bool prestressed = false;  ///< modal: about the state the deck's loads put the structure in
 };
 
 /// A closed-form comparison.

@@ -15,7 +15,7 @@ constexpr const char* kGrammar =
     "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', "
     "'displacement POINT ROTATION left|right', 'frequency N', 'stress max', "
     "'shear max', 'moment max', 'displacement max', 'member NAME N|Vy|Vz|T|My|Mz max|min|maxabs', "
-    "'member NAME deflection max', 'log_decrement N', 'critical_speed N', "
+    "'member NAME deflection max', 'buckling_factor N', 'log_decrement N', 'critical_speed N', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
@@ -44,6 +44,7 @@ int parseOrdinal(const std::string& n, const std::string& what) {
 std::string Quantity::analysisType() const {
   if (kind >= Kind::historyMax) return "transient";
   if (auto rotor = rotorAnalysisType(*this)) return *rotor;
+  if (kind == Kind::bucklingFactor) return "buckling";
   return kind == Kind::frequency ? "modal" : "static";
 }
 
@@ -107,6 +108,11 @@ Quantity parseQuantity(const std::string& text) {
   }
   if (head == "frequency" && words.size() == 2) {
     q.kind = Quantity::Kind::frequency;
+    q.mode = parseOrdinal(words[1], "mode number");
+    return q;
+  }
+  if (head == "buckling_factor" && words.size() == 2) {
+    q.kind = Quantity::Kind::bucklingFactor;
     q.mode = parseOrdinal(words[1], "mode number");
     return q;
   }

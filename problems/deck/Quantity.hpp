@@ -11,6 +11,7 @@
 //   displacement max          largest translation anywhere, inside elements too (m)
 //   member NAME COMP max|min|maxabs   extreme of a resultant (N Vy Vz T My Mz) along a member
 //   member NAME deflection max   largest deflection of a member from its chord (m)
+//   buckling_factor N         N-th lowest positive load factor of a buckling analysis
 //   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
 //                             interpolated linearly between samples
 // those of the rotor analyses (RotorQuantity.cpp):
@@ -40,6 +41,7 @@ struct Quantity {
     maxDisplacement,
     memberForce,
     memberDeflection,
+    bucklingFactor,  // buckling analyses
     logDecrement,
     criticalSpeed,
     unbalanceAmplitude,
@@ -57,7 +59,7 @@ struct Quantity {
   /// displacement: the node's own value, or the rotation of the beam end on one side of it.
   enum class Side { node, left, right };
   Side side = Side::node;
-  int mode = 1;          ///< frequency, log_decrement, critical_speed: 1-based number
+  int mode = 1;  ///< frequency, buckling_factor, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
   std::string property;  ///< rigid_body: which property; memberForce: N, Vy, Vz, T, My, Mz
   std::string extreme;   ///< memberForce: max, min or maxabs

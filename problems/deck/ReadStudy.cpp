@@ -41,10 +41,25 @@ void readAnalyses(Context& c) {
     DeckAnalysis a;
     a.place = f.place();
     a.type = f.require("type").choice(
-        {"static", "modal", "transient", "rotor", "campbell", "unbalance", "rigid-body",
-         "frequency-response"});
+        {"static", "modal", "buckling", "transient", "rotor", "campbell", "unbalance",
+         "rigid-body", "frequency-response"});
     if (a.type == "static") {
-      f.allowOnly({"type", "name"}, "a static analysis");
+      f.allowOnly({"type", "name", "second_order"}, "a static analysis");
+      if (auto s = f.get("second_order")) {
+        a.secondOrder = s->boolean();
+        if (a.secondOrder && !c.deck.contacts.empty())
+          s->fail("second-order statics does not support contacts: remove them or the option");
+        if (a.secondOrder && !c.deck.loadCases.empty())
+          s->fail("second-order results do not superpose, so load cases and combinations "
+                  "cannot be combined from them: give the loads of one case under `loads:`");
+      }
+    } else if (a.type == "buckling") {
+      f.allowOnly({"type", "name", "modes", "reversed"}, "a buckling analysis");
+      a.modes = 4;
+      if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
+      if (auto r = f.get("reversed")) a.reversed = r->boolean();
+      if (!c.deck.contacts.empty())
+        f.fail("a buckling analysis needs a linear reference state: remove the contacts");
     } else if (a.type == "transient") {
       a.transient = readTransient(c, f);
       if (!hasMass(c.deck))
@@ -56,8 +71,13 @@ void readAnalyses(Context& c) {
                " analysis needs mass: give the materials a density rho or add masses");
     } else {
       requireSymmetricAtRest(c, f);
-      f.allowOnly({"type", "name", "modes", "shift"}, "a modal analysis");
+      f.allowOnly({"type", "name", "modes", "shift", "prestressed"}, "a modal analysis");
       if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
+      if (auto p = f.get("prestressed")) {
+        a.prestressed = p->boolean();
+        if (a.prestressed && !c.deck.contacts.empty())
+          p->fail("prestressed modes need a linear loaded state: remove the contacts");
+      }
       if (auto s = f.get("shift")) a.shift = s->number(c.evaluator);
       if (!hasMass(c.deck))
         f.fail("a modal analysis needs mass: give the materials a density rho or add masses");
@@ -185,7 +205,8 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
   if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
     f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
   if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
-  if (q.kind == Quantity::Kind::frequency && q.mode > analysis->modes)
+  if ((q.kind == Quantity::Kind::frequency || q.kind == Quantity::Kind::bucklingFactor) &&
+      q.mode > analysis->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
            "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
   resolveRotorQuantity(c, q, f, *analysis);

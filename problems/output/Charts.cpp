@@ -164,14 +164,15 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
           width, height, body.str()};
 }
 
-ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
-                            const Model& model, const ModalResult& modal, const CsvTable& shapes,
-                            const std::string& csvFile, int count) {
+ChartScript labelledShapesChart(const std::string& caption, const std::string& chartName,
+                                const Model& model, const std::vector<Mode>& modes,
+                                const std::vector<std::string>& labels, const CsvTable& shapes,
+                                const std::string& csvFile) {
   // Each mode is drawn by its dominant translation, a torsion mode by its rotation; the axis
   // names the dof when all agree.
-  const int shown = std::min<int>(count, int(modal.modes.size()));
+  const int shown = std::min<int>(int(labels.size()), int(modes.size()));
   std::vector<Dof> along;
-  for (int m = 0; m < shown; ++m) along.push_back(chartedDof(model, modal.modes[m].shape));
+  for (int m = 0; m < shown; ++m) along.push_back(chartedDof(model, modes[m].shape));
   const bool same = std::all_of(along.begin(), along.end(), [&](Dof d) { return d == along[0]; });
   const std::string drawn = same && shown ? std::string(dofName(along[0])) + " " : "";
   const bool anyRotation = std::any_of(along.begin(), along.end(), isRotation);
@@ -191,9 +192,7 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
        << "\n"
        << markerCommands(namedPointMarkers(model)) << "  plot ";
   for (int m = 0; m < shown; ++m) {
-    const Mode& mode = modal.modes[m];
-    const std::string title = "mode " + std::to_string(m + 1) + ": " +
-                              frequencyText(mode.frequencyHz) + ", " + mode.description +
+    const std::string title = "mode " + std::to_string(m + 1) + ": " + labels[m] +
                               (same ? "" : " (" + std::string(dofName(along[m])) + " drawn)");
     if (m) body << ", \\\n       ";
     body << gnuplotFile(csvFile) << " skip 1 using " << shapes.column("x") << ":"
@@ -203,6 +202,16 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
   if (shown == 0) body << "0 notitle";
   body << "\n";
   return {chartName, "The first mode shapes along the line", 900, 560, body.str()};
+}
+
+ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
+                            const Model& model, const ModalResult& modal, const CsvTable& shapes,
+                            const std::string& csvFile, int count) {
+  std::vector<std::string> labels;
+  for (int m = 0; m < std::min<int>(count, int(modal.modes.size())); ++m)
+    labels.push_back(frequencyText(modal.modes[m].frequencyHz) + ", " +
+                     modal.modes[m].description);
+  return labelledShapesChart(caption, chartName, model, modal.modes, labels, shapes, csvFile);
 }
 
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,

@@ -40,6 +40,13 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
                            const std::vector<FieldSeries>& series,
                            const std::vector<ChartMarker>& markers);
 
+/// Mode shapes from a modeShapesTable written to csvFile, each drawn by its dominant
+/// translation (largest value 1) and keyed "mode N: label N"; at most labels.size() of them.
+ChartScript labelledShapesChart(const std::string& caption, const std::string& chartName,
+                                const Model& model, const std::vector<Mode>& modes,
+                                const std::vector<std::string>& labels, const CsvTable& shapes,
+                                const std::string& csvFile);
+
 /// The first `count` mode shapes (each its dominant translation, largest value 1) from a
 /// modeShapesTable written to csvFile.
 ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,

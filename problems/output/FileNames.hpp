@@ -34,7 +34,11 @@ inline std::string casesCsv(const std::string& stem) {
 inline std::string modesCsv(const std::string& stem) {
   return stem + "_modes.csv";
 }
-/// Modal: display-scaled mode shapes along the line (the charts' data).
+/// Buckling: one row per load factor.
+inline std::string bucklingFactorsCsv(const std::string& stem) {
+  return stem + "_factors.csv";
+}
+/// Modal and buckling: display-scaled mode shapes along the line (the charts' data).
 inline std::string shapesCsv(const std::string& stem) {
   return stem + "_shapes.csv";
 }

@@ -14,6 +14,7 @@
 #include "problems/output/MemberOutput.hpp"
 #include "problems/output/Reactions.hpp"
 #include "problems/output/RotorJson.hpp"
+#include "problems/output/StabilityOutput.hpp"
 #include "problems/output/TransientJson.hpp"
 
 namespace beamrotor {
@@ -33,16 +34,6 @@ Json modelJson(const RunResult& run, const DofMap& dofs) {
           {"elements", run.model->elements().size()},
           {"dofs", dofs.size()},
           {"dimension", run.dimension}};
-}
-
-Json reactionsJson(const StaticResult& r) {
-  Json out = Json::object();
-  for (const SupportReactions& s : reactionsBySupport(r)) {
-    Json& components = out[s.support] = Json::object();
-    for (const auto& [dof, value] : s.components)
-      components[std::string(reactionName(dof))] = value;
-  }
-  return out;
 }
 
 /// Displacements of the named points, in node order (the order along a line). At a hinge each
@@ -276,7 +267,8 @@ void requireFiniteAt(const Json& node, const std::string& path, const std::strin
 /// The part of a run's analysis entry a sweep tracks.
 Json sweepAnalysisJson(const Json& analysis) {
   Json out = {{"type", analysis.at("type")}, {"name", analysis.at("name")}};
-  for (const char* key : {"reactions", "max_stress", "max_shear", "frequencies_hz", "maxima"})
+  for (const char* key : {"reactions", "max_stress", "max_shear", "frequencies_hz", "maxima",
+                          "second_order", "load_factors"})
     if (analysis.contains(key)) out[key] = analysis[key];
   return out;
 }
@@ -299,6 +291,16 @@ Json sweepWorstJson(const SweepResult& sweep, const std::vector<Json>& runDocs) 
 
 }  // namespace
 
+Json reactionsJson(const StaticResult& r) {
+  Json out = Json::object();
+  for (const SupportReactions& s : reactionsBySupport(r)) {
+    Json& components = out[s.support] = Json::object();
+    for (const auto& [dof, value] : s.components)
+      components[std::string(reactionName(dof))] = value;
+  }
+  return out;
+}
+
 Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>& peaks) {
   if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
   if (peaks.size() != run.analyses.size())
@@ -314,6 +316,8 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
     const AnalysisOutcome& a = run.analyses[i];
     if (a.statics)
       analyses.push_back(staticJson(model, dofs, carried, a, peaks[i]));
+    else if (a.buckling)
+      analyses.push_back(bucklingJson(a));
     else if (a.modal)
       analyses.push_back(modalJson(carried, a));
     else if (a.transient)
@@ -322,6 +326,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
       analyses.push_back(rotorJson(a));
     else  // a kind of analysis this writer does not know yet: at least say it ran
       analyses.push_back({{"type", a.type}, {"name", a.name}});
+    if (a.secondOrder) analyses.back()["second_order"] = secondOrderJson(*a.secondOrder);
     if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;
   }
   doc["analyses"] = analyses;

@@ -11,6 +11,7 @@
 //            | modal:  {type, name, frequencies_hz [...], total_mass_kg {ux ..}, modes [{mode,
 //              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio
 //              {ux ..}, energy_share {ux .. rz}}], time_s, files}
+//            | buckling, and a static analysis' second_order: see StabilityOutput.hpp
 //            | transient: see TransientJson.hpp ],
 //            | rotor, campbell, unbalance, rigid-body: see RotorJson.hpp ],
 //   checks [{name, quantity, computed, reference, rel_error, tolerance, pass}],
@@ -18,7 +19,8 @@
 //   beamrotor_version.
 // Only the components a model carries appear (a planar model has no fz, my, uz ...).
 // sweep.json: parameter, values, model, runs [{value, directory, parameters, reported, analyses
-// (type, name, reactions, max_stress, max_shear | frequencies_hz | maxima), checks}], worst
+// (type, name, reactions, max_stress, max_shear, second_order | frequencies_hz | maxima |
+// load_factors), checks}], worst
 // {analysis: {max_stress, max_shear}}: each the largest over the runs, with at {parameter: value}.
 #pragma once
 
@@ -33,6 +35,9 @@
 namespace beamrotor {
 
 using Json = nlohmann::ordered_json;
+
+/// Reactions per support: {support: {fx ... mz}}, the components the support holds.
+Json reactionsJson(const StaticResult& r);
 
 /// results.json of one run. `peaks[i]` are the element peaks of run.analyses[i] (empty for
 /// other analyses), see elementPeaks; the largest stress and shear are read from them.

@@ -21,6 +21,7 @@
 #include "problems/output/OverlaidDiagrams.hpp"
 #include "problems/output/PreparedRun.hpp"
 #include "problems/output/RotorOutput.hpp"
+#include "problems/output/StabilityOutput.hpp"
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
@@ -130,6 +131,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
     if (a.transient)
       writeTransientFiles(dir, model, p.stem, *a.transient, *p.history,
                           charts ? caption(run, a.name) : "");
+    if (a.buckling) writeBucklingFiles(p, model, dir, caption(run, a.name), charts);
     if (a.modal) {
       p.modes->write(dir / modesCsv(p.stem));
       p.shapes->write(dir / shapesCsv(p.stem));

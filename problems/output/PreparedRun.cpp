@@ -4,6 +4,7 @@
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/MemberOutput.hpp"
+#include "problems/output/StabilityOutput.hpp"
 #include "problems/output/Tables.hpp"
 #include "problems/output/TransientFiles.hpp"
 
@@ -72,6 +73,10 @@ PreparedRun prepareRun(const RunResult& run) {
     if (a.modal) {
       p.modes = modesTable(modesCsv(p.stem), *a.modal);
       p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
+    }
+    if (a.buckling) {
+      p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), *a.buckling);
+      p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(*a.buckling));
     }
     if (a.rotor) p.rotor = prepareRotor(a, p.stem);
     peaks.push_back(p.peaks);

@@ -32,8 +32,8 @@ struct PreparedAnalysis {
   std::vector<StaticStation> stations;  ///< statics only
   std::vector<ElementPeaks> peaks;      ///< statics only: each element's exact largest values
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
-  std::optional<CsvTable> modes;        ///< modal: <stem>_modes.csv
-  std::optional<CsvTable> shapes;       ///< modal: <stem>_shapes.csv
+  std::optional<CsvTable> modes;   ///< modal: <stem>_modes.csv; buckling: <stem>_factors.csv
+  std::optional<CsvTable> shapes;  ///< modal, buckling: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
   std::optional<PreparedRotor> rotor;   ///< rotor analyses
   std::vector<CsvTable> members;        ///< statics of a frame: <stem>_member_<name>.csv each

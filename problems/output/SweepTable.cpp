@@ -57,6 +57,41 @@ void addStatic(const Json& a, std::vector<SweepQuantity>& out) {
            }});
 }
 
+/// A second-order static analysis' amplification against first order, each on its own panel.
+void addSecondOrder(const Json& a, std::vector<SweepQuantity>& out) {
+  const std::string name = a.at("name");
+  for (const char* key : {"moment_amplification", "stress_amplification"})
+    out.push_back({SweepGroup::extreme,
+                   name,
+                   key,
+                   {name + "." + key, ""},
+                   [name, key = std::string(key)](const Json& doc) {
+                     return required(required(analysisNamed(doc, name), "second_order",
+                                              "second-order results"),
+                                     key, key)
+                         .get<double>();
+                   }});
+}
+
+/// A buckling analysis' lowest positive load factor (the one that decides), when every value
+/// of the sweep has one (a load that compresses nothing has none).
+void addBuckling(const Json& a, const std::vector<Json>& runDocs,
+                 std::vector<SweepQuantity>& out) {
+  const std::string name = a.at("name");
+  for (const Json& doc : runDocs)
+    if (analysisNamed(doc, name).at("load_factors").empty()) return;
+  out.push_back({SweepGroup::extreme,
+                 name,
+                 "lowest load factor",
+                 {name + ".load_factor_1", ""},
+                 [name](const Json& doc) {
+                   const Json& f = analysisNamed(doc, name).at("load_factors");
+                   if (f.empty())
+                     throw std::runtime_error("this sweep value has no positive load factor");
+                   return f[0].get<double>();
+                 }});
+}
+
 void addModal(const Json& a, std::vector<SweepQuantity>& out) {
   const std::string name = a.at("name");
   for (std::size_t k = 0; k < a.at("frequencies_hz").size(); ++k) {
@@ -96,6 +131,8 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
   std::vector<SweepQuantity> out;
   for (const Json& a : runDocs.at(0).at("analyses")) {
     if (a.contains("reactions")) addStatic(a, out);
+    if (a.contains("second_order")) addSecondOrder(a, out);
+    if (a.contains("load_factors")) addBuckling(a, runDocs, out);
     if (a.contains("frequencies_hz")) addModal(a, out);
     if (a.contains("maxima")) addTransient(a, out);
   }

@@ -184,17 +184,22 @@ void writeStaticVtu(const std::filesystem::path& file, const Model& model,
 
 void writeModeVtu(const std::filesystem::path& file, const Model& model, const Mode& mode,
                   int number) {
+  writeShapeVtu(file, model, mode.shape, number, "frequency_hz", mode.frequencyHz);
+}
+
+void writeShapeVtu(const std::filesystem::path& file, const Model& model, const NodalField& raw,
+                   int number, const std::string& valueName, double value) {
   auto grid = lineGrid(model);
-  const NodalField shape = displayModeShape(model, mode.shape);
+  const NodalField shape = displayModeShape(model, raw);
   grid->GetPointData()->AddArray(pointVectors("mode_shape", shape, 0));
   grid->GetPointData()->AddArray(pointVectors("mode_rotation", shape, 3));
   vtkNew<vtkIntArray> modeNumber;
   modeNumber->SetName("mode");
   modeNumber->InsertNextValue(number);
-  auto frequency = doubleArray("frequency_hz", 1, 1);
-  frequency->SetValue(0, mode.frequencyHz);
+  auto modeValue = doubleArray(valueName.c_str(), 1, 1);
+  modeValue->SetValue(0, value);
   grid->GetFieldData()->AddArray(modeNumber);
-  grid->GetFieldData()->AddArray(frequency);
+  grid->GetFieldData()->AddArray(modeValue);
   writeVtu(grid, file);
 }
 

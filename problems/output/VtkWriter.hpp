@@ -32,6 +32,10 @@ void writeStaticVtu(const std::filesystem::path& file, const Model& model,
 /// properties, field data `mode` (1-based number) and `frequency_hz`.
 void writeModeVtu(const std::filesystem::path& file, const Model& model, const Mode& mode,
                   int number);
+/// The same for any shape (display-scaled as a mode) numbered `number`, with one value of the
+/// mode in the field data under `valueName` (e.g. "load_factor" for a buckling mode).
+void writeShapeVtu(const std::filesystem::path& file, const Model& model, const NodalField& shape,
+                   int number, const std::string& valueName, double value);
 
 /// One frame of a transient run: the line elements as VTK_LINE cells, or, for a model
 /// without them (bodies on springs), one VTK_VERTEX per node; point data `displacement`

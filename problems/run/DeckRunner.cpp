@@ -7,6 +7,9 @@
 #include "fem/assembly/Recovery.hpp"
 #include "fem/modal/Modal.hpp"
 #include "fem/solvers/Errors.hpp"
+#include "fem/stability/Buckling.hpp"
+#include "fem/stability/Prestressed.hpp"
+#include "fem/stability/SecondOrder.hpp"
 #include "fem/static/Static.hpp"
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
@@ -65,11 +68,20 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
   out.type = a.type;
   out.name = a.name;
   try {
-    if (a.type == "static") {
+    if (a.type == "static" && a.secondOrder) {
+      out.secondOrder = solveSecondOrder(model);
+      out.statics = out.secondOrder->secondOrder;
+    } else if (a.type == "static") {
       out.statics = solveStatic(model);
       if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
       if (auto w = displacementWarning(model, *out.statics)) out.warnings.push_back(*w);
       out.cases = solveCases(deck);
+    } else if (a.type == "buckling") {
+      BucklingOptions options;
+      options.count = a.modes;
+      options.reversed = a.reversed;
+      out.buckling = solveBuckling(model, options);
+      out.warnings = out.buckling->warnings;
     } else if (a.transient) {
       out.transient = runTransient(deck, a, model);
     } else if (isRotorAnalysis(a.type)) {
@@ -78,7 +90,7 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       ModalOptions options;
       options.modes = a.modes;
       options.shift = a.shift;
-      out.modal = solveModes(model, options);
+      out.modal = a.prestressed ? solvePrestressedModes(model, options) : solveModes(model, options);
       out.warnings.insert(out.warnings.end(), out.modal->warnings.begin(),
                           out.modal->warnings.end());
     }

@@ -86,6 +86,15 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
                                   std::to_string(modes.size()) + " modes");
     return modes[q.mode - 1].frequencyHz;
   }
+  if (q.kind == Quantity::Kind::bucklingFactor) {
+    if (!outcome.buckling)
+      throw std::invalid_argument("analysis '" + outcome.name + "' is not a buckling analysis");
+    const auto& modes = outcome.buckling->modes;
+    if (q.mode > int(modes.size()))
+      throw std::invalid_argument("analysis '" + outcome.name + "' found only " +
+                                  std::to_string(modes.size()) + " positive load factors");
+    return modes[q.mode - 1].factor;
+  }
   if (q.analysisType() == "transient") {
     if (!outcome.transient)
       throw std::invalid_argument("analysis '" + outcome.name + "' is not transient");

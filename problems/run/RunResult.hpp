@@ -12,6 +12,7 @@
 
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
+#include "fem/stability/StabilityResults.hpp"
 #include "problems/run/AdequateChoice.hpp"
 #include "problems/run/RotorRunResult.hpp"
 #include "problems/run/TransientOutcome.hpp"
@@ -44,12 +45,15 @@ struct CaseOutcome {
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
-  std::string type;  ///< "static", "modal", "rotor", "campbell", "unbalance", "rigid-body"
+  std::string type;  ///< "static", "modal", "buckling", "rotor", "campbell", "unbalance", "rigid-body"
   std::string name;  ///< the deck's name for it (defaults to the type)
   std::optional<StaticResult> statics;
   std::optional<ModalResult> modal;
   std::optional<TransientOutcome> transient;
   std::optional<RotorOutcome> rotor;  ///< the rotor analyses
+  std::optional<BucklingResult> buckling;  ///< buckling: load factors and mode shapes
+  /// static with `second_order: true`: both states (statics holds the second-order one)
+  std::optional<SecondOrderResult> secondOrder;
   std::vector<CaseOutcome> cases;     ///< static: the load cases, then the combinations
   std::vector<std::string> warnings;  ///< not errors, e.g. an over-refined mesh
 };
