@@ -1,5 +1,19 @@
 # Thin wrapper: install missing Debian packages, build with CMake, run.
-PACKAGES := cmake g++ make libeigen3-dev libsuitesparse-dev libarpack2-dev libvtk9-dev \
+# VTK comes from one of two Debian packages that cannot be installed together on Debian 12:
+# libvtk9-dev, or paraview-dev (ParaView's own VTK; libvtk9-dev depends on python3-vtk9, which
+# ParaView's python3-paraview conflicts with). The one already installed is kept; a machine
+# with ParaView (paraview or python3-paraview) gets paraview-dev, so nothing is removed; any
+# other machine gets libvtk9-dev. `make VTK_PACKAGE=paraview-dev ...` chooses by hand.
+installed = $(shell dpkg-query -W -f='$${Status}' $(1) 2>/dev/null | grep -q 'ok installed$$' && echo $(1))
+ifeq ($(origin VTK_PACKAGE),undefined)
+  VTK_PACKAGE := $(or $(call installed,libvtk9-dev),\
+                      $(if $(or $(call installed,paraview-dev),$(call installed,python3-paraview),$(call installed,paraview)),paraview-dev),\
+                      libvtk9-dev)
+endif
+# With ParaView's VTK come pvpython, the ParaView test (tests/paraview) and, for its pictures
+# on a machine without a display, a virtual X server.
+VTK_EXTRAS := $(if $(filter paraview-dev,$(VTK_PACKAGE)),xvfb xauth)
+PACKAGES := cmake g++ make libeigen3-dev libsuitesparse-dev libarpack2-dev $(VTK_PACKAGE) $(VTK_EXTRAS) \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
             gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest \
             dpkg-dev libpng-dev
@@ -25,13 +39,14 @@ deps:
 	    for p in $$missing; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
 	    for p in $$removed; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
 	    echo "beamrotor: install the listed packages on a machine (or container) without $$removed, or remove $$removed yourself if you choose to." >&2; \
+	    case " $$missing " in *" libvtk9-dev "*) echo "beamrotor: or build against ParaView's VTK instead of libvtk9-dev: make VTK_PACKAGE=paraview-dev $(MAKECMDGOALS)" >&2;; esac; \
 	    exit 1; \
 	  fi; \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-remove $$missing; \
 	fi
 
 build: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBEAMROTOR_VTK=$(if $(filter paraview-dev,$(VTK_PACKAGE)),paraview,system) >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
 
 run: build
