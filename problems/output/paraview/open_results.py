@@ -8,15 +8,16 @@
         --state cantilever.pvsm                       # then in ParaView: File > Load State
 
 What it shows:
-- the line elements as tubes at the section's true size: the radius is the per-point array
-  `tube_radius` the .vtu files carry (the largest distance from the centroid to an outer fibre
-  of the members meeting at a point, m), so a 100 mm tube is drawn 100 mm across and an I-beam
-  as a round tube as deep as the beam; older files without it get the radius of a circular
-  section of their A and Iz (R^2 = (4 Iz / A + A / pi) / 2);
+- the line elements as tubes at the section's true size: each element's radius is the larger
+  of its outer fibre distances `outer_y`, `outer_z` (cell data of the .vtu files, m), so a
+  100 mm tube is drawn 100 mm across, a stepped shaft keeps its steps and an I-beam is a round
+  tube as deep as the beam; older files without them get the radius of a circular section of
+  their A and Iz (R^2 = (4 Iz / A + A / pi) / 2); a model without line elements (a rigid body
+  on springs) is drawn as balls at its points;
 - deformed by the displacement (static, transient) or the mode shape (modal; for rotors the
   real part of the complex shape) times --scale (default: a tenth of the model's size over the
   largest displacement, rounded to 1, 2 or 5 times a power of ten); the factor is written on
-  the picture;
+  the picture; a time series is shown at the moment of its largest displacement;
 - coloured by each element's largest normal stress in MPa (static), by the displacement
   magnitude in mm (transient) or by the mode shape's magnitude (modal, normalised), with a
   colour legend naming the quantity and its unit;
@@ -33,11 +34,12 @@ import math
 import pathlib
 import sys
 
-from paraview.simple import (Calculator, ColorBy, ExtractSurface, GetActiveViewOrCreate,
+from paraview.simple import (Calculator, CellDatatoPointData, ColorBy, ExtractSurface,
+                             GetActiveViewOrCreate,
                              GetAnimationScene, GetColorTransferFunction, GetScalarBar,
                              GetTimeKeeper, Interact, OpenDataFile, Render, ResetCamera,
-                             SaveScreenshot, SaveState, Show, Text, Tube, UpdatePipeline,
-                             WarpByVector)
+                             SaveScreenshot, SaveState, Show, Shrink, Text, Tube,
+                             UpdatePipeline, WarpByVector)
 
 
 def arguments():
@@ -89,15 +91,16 @@ def model_size(source):
     return math.dist(bounds[0::2], bounds[1::2]), bounds
 
 
-def default_scale(source, vectors, times):
-    """A tenth of the model's size over the largest displacement over all time steps."""
-    size, _ = model_size(source)
-    largest = 0.0
+def peak(source, vectors, times):
+    """The largest displacement (or mode shape) magnitude over all time steps, and its time."""
+    largest, when = 0.0, None
     for t in times or [None]:
         if t is not None:
             source.UpdatePipeline(t)
-        largest = max(largest, source.PointData[vectors].GetRange(-1)[1])
-    return round_scale(0.1 * size / largest) if largest > 0 else 1.0
+        value = source.PointData[vectors].GetRange(-1)[1]
+        if value > largest:
+            largest, when = value, t
+    return largest, when
 
 
 def place_camera(view, bounds):
@@ -118,6 +121,7 @@ def place_camera(view, bounds):
     view.CameraViewUp = [0.0, 1.0, 0.0] if direction != (0.0, 1.0, 0.0) else [0.0, 0.0, -1.0]
     view.CameraParallelProjection = 1
     ResetCamera(view)
+    view.CameraParallelScale *= 0.8  # ParaView leaves a wide margin around the model
 
 
 def label(view, text, corner):
@@ -167,26 +171,35 @@ def main():
     times = list(source.TimestepValues) if path.suffix == ".pvd" else []
     scene = GetAnimationScene()
     scene.UpdateAnimationUsingDataTimeSteps()
+    largest, largest_at = peak(source, vectors, times)
     if modal and times:
         mode = min(max(args.mode, 1), len(times))
         scene.AnimationTime = times[mode - 1]
-    elif times:
-        scene.AnimationTime = times[-1]
-
-    scale = args.scale if args.scale is not None else default_scale(source, vectors, times)
+    elif times:  # a time series: the picture shows the moment of the largest displacement
+        scene.AnimationTime = largest_at if largest_at is not None else times[-1]
+    size, _ = model_size(source)
+    if args.scale is not None:
+        scale = args.scale
+    else:  # a tenth of the model's size over the largest displacement
+        scale = round_scale(0.1 * size / largest) if largest > 0 else 1.0
     if times:
         source.UpdatePipeline(scene.AnimationTime)
 
-    # The radius: per point from the writer, or a circle of the same A and Iz.
-    if "tube_radius" in source.PointData.keys():
-        radius_input, radius_name = source, "tube_radius"
-    else:
-        from paraview.simple import CellDatatoPointData
-        points = CellDatatoPointData(Input=source)
+    # The radius, element by element: Shrink with factor 1 gives every element its own end
+    # points, so a point array taken from the cell data is that element's alone and a stepped
+    # shaft keeps its steps. The radius is the larger outer fibre distance (outer_y, outer_z);
+    # files without them get a circle of the element's A and Iz.
+    lines = "A" in source.CellData.keys()  # files of models without line elements lack it
+    radius_input, radius_name = source, "tube_radius"
+    if lines:
+        separate = Shrink(Input=source, ShrinkFactor=1.0)
+        points = CellDatatoPointData(Input=separate)
         points.PassCellData = 1
-        radius_input = Calculator(Input=points, ResultArrayName="tube_radius",
-                                  Function="sqrt((4*Iz/A + A/3.141592653589793)/2)")
-        radius_name = "tube_radius"
+        if "outer_y" in source.CellData.keys():
+            formula = "(outer_y + outer_z + abs(outer_y - outer_z)) / 2"
+        else:
+            formula = "sqrt((4*Iz/A + A/3.141592653589793)/2)"
+        radius_input = Calculator(Input=points, ResultArrayName=radius_name, Function=formula)
     warp = WarpByVector(Input=radius_input, Vectors=["POINTS", vectors], ScaleFactor=scale)
     if "stress" in source.CellData.keys():
         coloured = Calculator(Input=warp, AttributeType="Cell Data", Function="stress/1e6",
@@ -195,11 +208,11 @@ def main():
     elif modal:
         coloured = Calculator(Input=warp, Function=f"mag({vectors})",
                               ResultArrayName="shape_magnitude")
-        array, title = ("POINTS", "shape_magnitude"), "mode shape |u| (normalised, -)"
+        array, title = ("POINTS", "shape_magnitude"), "mode shape magnitude (normalised, -)"
     else:
         coloured = Calculator(Input=warp, Function=f"1000*mag({vectors})",
                               ResultArrayName="displacement_mm")
-        array, title = ("POINTS", "displacement_mm"), "displacement |u| (mm)"
+        array, title = ("POINTS", "displacement_mm"), "displacement magnitude (mm)"
     surface = ExtractSurface(Input=coloured)  # Tube takes polygonal data
     tube = Tube(Input=surface, Scalars=["POINTS", radius_name], VaryRadius="By Absolute Scalar",
                 NumberofSides=24, Capping=1)
@@ -216,9 +229,20 @@ def main():
     undeformed.SetRepresentationType("Wireframe")
     undeformed.AmbientColor = undeformed.DiffuseColor = [0.45, 0.45, 0.45]
     undeformed.LineWidth = 1.5
-    display = Show(tube, view)
-    display.Specular = 0.3
+    if lines:
+        display = Show(tube, view)
+        display.Specular = 0.3
+    else:  # a rigid body or masses on springs: points, drawn as balls
+        display = Show(coloured, view)
+        display.SetRepresentationType("Points")
+        display.RenderPointsAsSpheres = 1
+        display.PointSize = 24
     colour(display, view, array, title)
+    if times and not modal:  # one colour scale for the whole time series
+        try:
+            display.RescaleTransferFunctionToDataRangeOverTime()
+        except AttributeError:
+            pass
 
     what = {False: "deformed", True: "mode shape"}[modal]
     heading = f"{args.results.name}: {analysis}, {what} x {scale:g} (undeformed: grey line)"
@@ -227,7 +251,7 @@ def main():
 
     def describe():
         """The mode's frequency or the frame's time, from the file's field data."""
-        info = source.GetDataInformation().DataInformation
+        source.UpdatePipeline(scene.AnimationTime)
         fields = source.FieldData
         if modal and "frequency_hz" in fields.keys():
             number = int(fields["mode"].GetRange()[0]) if "mode" in fields.keys() else 0
@@ -237,7 +261,7 @@ def main():
             return text
         if "time" in fields.keys():
             return f"t = {fields['time'].GetRange()[0]:.4g} s"
-        return "tube radius = outer fibre distance of the section (true size)"
+        return "tube radius = outer fibre distance of each element's section (true size)"
 
     _, bounds = model_size(source)
     place_camera(view, bounds)
