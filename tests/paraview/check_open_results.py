@@ -89,7 +89,10 @@ def check_picture(path, what):
     pixels = [p for row in rows for p in row]
     colours = set(pixels)
     white = sum(1 for p in pixels if min(p) >= 245) / len(pixels)
-    saturated = sum(1 for p in pixels if max(p) - min(p) >= 100) / len(pixels)
+    # The structure, not the legend (which stands at the right edge): coloured pixels in the
+    # left four fifths of the picture.
+    body = [p for row in rows for p in row[:width * 4 // 5]]
+    saturated = sum(1 for p in body if max(p) - min(p) >= 100) / len(body)
     dark = sum(1 for p in pixels if max(p) <= 80) / len(pixels)
     print(f"{what}: {path.name} {width} x {height}, {len(colours)} colours, white {white:.1%}, "
           f"coloured {saturated:.2%}, dark {dark:.2%}")

@@ -260,7 +260,8 @@ def main():
                 text += " (shape: real part)"
             return text
         if "time" in fields.keys():
-            return f"t = {fields['time'].GetRange()[0]:.4g} s"
+            still = ", no point moves (rotations only: see the CSV histories)" if largest == 0 else ""
+            return f"t = {fields['time'].GetRange()[0]:.4g} s{still}"
         return "tube radius = outer fibre distance of each element's section (true size)"
 
     _, bounds = model_size(source)
