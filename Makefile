@@ -25,14 +25,21 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 .PHONY: deps build run test bench clean package
 
 # Installs what is missing and never removes anything: when Debian can install a package only by
-# removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), it
-# stops, changes nothing, and names the packages that stand in each other's way.
+# removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), or
+# cannot install it at all beside them, it stops, changes nothing, names the packages that stand
+# in each other's way and the way out.
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
 	  echo "Installing missing packages:" $$missing; \
 	  $(SUDO) apt-get update -qq || exit 1; \
-	  removed=$$(LC_ALL=C apt-get install -s $$missing 2>/dev/null | sed -n 's/^Remv \([^ ]*\).*/\1/p' | tr '\n' ' '); removed=$$(echo $$removed); \
+	  plan=$$(LC_ALL=C apt-get install -s $$missing 2>&1) || { \
+	    echo "beamrotor: Debian cannot install $$missing beside the packages this machine has; nothing was installed or removed. apt says:" >&2; \
+	    echo "$$plan" | sed -n '/unmet dependencies/,$$p' >&2; \
+	    case " $$missing " in *" libvtk9-dev "*) echo "beamrotor: build against ParaView's VTK instead of libvtk9-dev: make VTK_PACKAGE=paraview-dev $(MAKECMDGOALS)" >&2;; esac; \
+	    case " $$missing " in *" paraview-dev "*) echo "beamrotor: build against Debian's VTK instead of paraview-dev: make VTK_PACKAGE=libvtk9-dev $(MAKECMDGOALS)" >&2;; esac; \
+	    exit 1; }; \
+	  removed=$$(echo "$$plan" | sed -n 's/^Remv \([^ ]*\).*/\1/p' | tr '\n' ' '); removed=$$(echo $$removed); \
 	  if [ -n "$$removed" ]; then \
 	    echo "beamrotor: Debian can install $$missing only by removing $$removed, which this machine has." >&2; \
 	    echo "beamrotor: nothing was installed or removed. The packages stand in each other's way:" >&2; \
