@@ -28,8 +28,11 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), or
 # cannot install it at all beside them, it stops, changes nothing, names the packages that stand
 # in each other's way and the way out.
+# Prints "  PACKAGE Conflicts: ..." (or Breaks) for each stanza of apt-cache show whose
+# Conflicts or Breaks names a package matching the regular expression rx.
+export CONFLICTS_AWK := /^Package: /{p=$$2} /^(Conflicts|Breaks): /{n=split($$0,w,/[ ,:|()]+/); for(i=2;i<=n;i++) if(w[i]~rx){print "  " p " " $$0; break}}
 deps:
-	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); missing=$$(echo $$missing); \
 	if [ -n "$$missing" ]; then \
 	  echo "Installing missing packages:" $$missing; \
 	  $(SUDO) apt-get update -qq || exit 1; \
@@ -43,10 +46,13 @@ deps:
 	  if [ -n "$$removed" ]; then \
 	    echo "beamrotor: Debian can install $$missing only by removing $$removed, which this machine has." >&2; \
 	    echo "beamrotor: nothing was installed or removed. The packages stand in each other's way:" >&2; \
-	    for p in $$missing; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
-	    for p in $$removed; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
+	    installs=$$(echo "$$plan" | sed -n 's/^Inst \([^ ]*\).*/\1/p'); \
+	    gone=$$(echo $$removed | sed 's/[.+]/\\&/g; s/ /|/g'); coming=$$(echo $$installs | sed 's/[.+]/\\&/g; s/ /|/g'); \
+	    { apt-cache show --no-all-versions $$installs 2>/dev/null | awk -v rx="^($$gone)$$" "$$CONFLICTS_AWK"; \
+	      apt-cache show --no-all-versions $$removed 2>/dev/null | awk -v rx="^($$coming)$$" "$$CONFLICTS_AWK"; } >&2; \
 	    echo "beamrotor: install the listed packages on a machine (or container) without $$removed, or remove $$removed yourself if you choose to." >&2; \
 	    case " $$missing " in *" libvtk9-dev "*) echo "beamrotor: or build against ParaView's VTK instead of libvtk9-dev: make VTK_PACKAGE=paraview-dev $(MAKECMDGOALS)" >&2;; esac; \
+	    case " $$missing " in *" paraview-dev "*) echo "beamrotor: or build against Debian's VTK instead of paraview-dev: make VTK_PACKAGE=libvtk9-dev $(MAKECMDGOALS)" >&2;; esac; \
 	    exit 1; \
 	  fi; \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-remove $$missing; \
