@@ -1,8 +1,22 @@
 # Thin wrapper: install missing Debian packages, build with CMake, run.
-PACKAGES := cmake g++ make libeigen3-dev libsuitesparse-dev libarpack2-dev libvtk9-dev \
+# VTK comes from one of two Debian packages that cannot be installed together on Debian 12:
+# libvtk9-dev, or paraview-dev (ParaView's own VTK; libvtk9-dev depends on python3-vtk9, which
+# ParaView's python3-paraview conflicts with). The one already installed is kept; a machine
+# with ParaView (paraview or python3-paraview) gets paraview-dev, so nothing is removed; any
+# other machine gets libvtk9-dev. `make VTK_PACKAGE=paraview-dev ...` chooses by hand.
+installed = $(shell dpkg-query -W -f='$${Status}' $(1) 2>/dev/null | grep -q 'ok installed$$' && echo $(1))
+ifeq ($(origin VTK_PACKAGE),undefined)
+  VTK_PACKAGE := $(or $(call installed,libvtk9-dev),\
+                      $(if $(or $(call installed,paraview-dev),$(call installed,python3-paraview),$(call installed,paraview)),paraview-dev),\
+                      libvtk9-dev)
+endif
+# With ParaView's VTK come pvpython, the ParaView test (tests/paraview) and, for its pictures
+# on a machine without a display, a virtual X server.
+VTK_EXTRAS := $(if $(filter paraview-dev,$(VTK_PACKAGE)),xvfb xauth)
+PACKAGES := cmake g++ make libeigen3-dev libsuitesparse-dev libarpack2-dev $(VTK_PACKAGE) $(VTK_EXTRAS) \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
             gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest \
-            dpkg-dev libpng-dev
+            dpkg-dev file libpng-dev
 BUILD    := build
 JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml
@@ -11,27 +25,41 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 .PHONY: deps build run test bench clean package
 
 # Installs what is missing and never removes anything: when Debian can install a package only by
-# removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), it
-# stops, changes nothing, and names the packages that stand in each other's way.
+# removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), or
+# cannot install it at all beside them, it stops, changes nothing, names the packages that stand
+# in each other's way and the way out.
+# Prints "  PACKAGE Conflicts: ..." (or Breaks) for each stanza of apt-cache show whose
+# Conflicts or Breaks names a package matching the regular expression rx.
+export CONFLICTS_AWK := /^Package: /{p=$$2} /^(Conflicts|Breaks): /{n=split($$0,w,/[ ,:|()]+/); for(i=2;i<=n;i++) if(w[i]~rx){print "  " p " " $$0; break}}
 deps:
-	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); missing=$$(echo $$missing); \
 	if [ -n "$$missing" ]; then \
 	  echo "Installing missing packages:" $$missing; \
 	  $(SUDO) apt-get update -qq || exit 1; \
-	  removed=$$(LC_ALL=C apt-get install -s $$missing 2>/dev/null | sed -n 's/^Remv \([^ ]*\).*/\1/p' | tr '\n' ' '); removed=$$(echo $$removed); \
+	  plan=$$(LC_ALL=C apt-get install -s $$missing 2>&1) || { \
+	    echo "beamrotor: Debian cannot install $$missing beside the packages this machine has; nothing was installed or removed. apt says:" >&2; \
+	    echo "$$plan" | sed -n '/unmet dependencies/,$$p' >&2; \
+	    case " $$missing " in *" libvtk9-dev "*) echo "beamrotor: build against ParaView's VTK instead of libvtk9-dev: make VTK_PACKAGE=paraview-dev $(MAKECMDGOALS)" >&2;; esac; \
+	    case " $$missing " in *" paraview-dev "*) echo "beamrotor: build against Debian's VTK instead of paraview-dev: make VTK_PACKAGE=libvtk9-dev $(MAKECMDGOALS)" >&2;; esac; \
+	    exit 1; }; \
+	  removed=$$(echo "$$plan" | sed -n 's/^Remv \([^ ]*\).*/\1/p' | tr '\n' ' '); removed=$$(echo $$removed); \
 	  if [ -n "$$removed" ]; then \
 	    echo "beamrotor: Debian can install $$missing only by removing $$removed, which this machine has." >&2; \
 	    echo "beamrotor: nothing was installed or removed. The packages stand in each other's way:" >&2; \
-	    for p in $$missing; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
-	    for p in $$removed; do apt-cache show --no-all-versions $$p 2>/dev/null | sed -n "s/^\(Conflicts\|Breaks\): /  $$p \1: /p"; done >&2; \
+	    installs=$$(echo "$$plan" | sed -n 's/^Inst \([^ ]*\).*/\1/p'); \
+	    gone=$$(echo $$removed | sed 's/[.+]/\\&/g; s/ /|/g'); coming=$$(echo $$installs | sed 's/[.+]/\\&/g; s/ /|/g'); \
+	    { apt-cache show --no-all-versions $$installs 2>/dev/null | awk -v rx="^($$gone)$$" "$$CONFLICTS_AWK"; \
+	      apt-cache show --no-all-versions $$removed 2>/dev/null | awk -v rx="^($$coming)$$" "$$CONFLICTS_AWK"; } >&2; \
 	    echo "beamrotor: install the listed packages on a machine (or container) without $$removed, or remove $$removed yourself if you choose to." >&2; \
+	    case " $$missing " in *" libvtk9-dev "*) echo "beamrotor: or build against ParaView's VTK instead of libvtk9-dev: make VTK_PACKAGE=paraview-dev $(MAKECMDGOALS)" >&2;; esac; \
+	    case " $$missing " in *" paraview-dev "*) echo "beamrotor: or build against Debian's VTK instead of paraview-dev: make VTK_PACKAGE=libvtk9-dev $(MAKECMDGOALS)" >&2;; esac; \
 	    exit 1; \
 	  fi; \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-remove $$missing; \
 	fi
 
 build: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBEAMROTOR_VTK=$(if $(filter paraview-dev,$(VTK_PACKAGE)),paraview,system) >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
 
 run: build
