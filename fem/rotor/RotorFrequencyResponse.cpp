@@ -1,9 +1,8 @@
 #include "fem/rotor/RotorFrequencyResponse.hpp"
 
-#include <sstream>
 #include <stdexcept>
 
-#include "fem/solvers/Errors.hpp"
+#include "fem/rotor/DynamicStiffness.hpp"
 #include "fem/solvers/RotorFactor.hpp"
 #include "fem/timing/Stopwatch.hpp"
 
@@ -34,13 +33,8 @@ FrequencyResponseResult solveFrequencyResponse(const Model& model, double speed,
   result.time.assembly = clock.lap();
   RepeatedFactor<Complex> factor;
   for (double w : frequencies) {
-    if (!factor.factorize(K - w * w * M + Complex(0, w) * D)) {
-      std::ostringstream msg;
-      msg << "frequency response: the dynamic stiffness is singular at " << w
-          << " rad/s (rcond = " << factor.rcond()
-          << "): an undamped natural frequency coincides with the excitation";
-      throw SolveError(msg.str());
-    }
+    factorizeDynamicStiffness(factor, K - w * w * M + Complex(0, w) * D, w, "frequency response",
+                              "the excitation");
     result.time.factor += clock.lap();
     const Eigen::VectorXcd q = factor.solve(f);
     result.receptance.push_back(q[out]);

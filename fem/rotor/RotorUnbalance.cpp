@@ -1,9 +1,8 @@
 #include "fem/rotor/RotorUnbalance.hpp"
 
-#include <sstream>
 #include <stdexcept>
 
-#include "fem/solvers/Errors.hpp"
+#include "fem/rotor/DynamicStiffness.hpp"
 #include "fem/solvers/RotorFactor.hpp"
 #include "fem/timing/Stopwatch.hpp"
 
@@ -44,13 +43,8 @@ UnbalanceResult solveUnbalance(const Model& model, const std::vector<Unbalance>&
     const ComplexSparseMatrix C = system.damping(speed).cast<Complex>();
     const Complex iw(0, speed);
     result.time.assembly += clock.lap();
-    if (!factor.factorize(K - speed * speed * M + iw * (C + speed * G))) {
-      std::ostringstream msg;
-      msg << "unbalance response: the dynamic stiffness is singular at " << speed
-          << " rad/s (rcond = " << factor.rcond()
-          << "): an undamped natural frequency coincides with the speed";
-      throw SolveError(msg.str());
-    }
+    factorizeDynamicStiffness(factor, K - speed * speed * M + iw * (C + speed * G), speed,
+                              "unbalance response", "the speed");
     result.time.factor += clock.lap();
     const Eigen::VectorXcd q = factor.solve(Eigen::VectorXcd(speed * speed * f));
     for (std::size_t k = 0; k < nodes.size(); ++k) {
