@@ -367,7 +367,7 @@ Matrix12 Beam::localGeometricStiffness(double N0, double N1) const {
 
 ElementMatrix Beam::geometricStiffness(const ElementVector& u) const {
   const SectionForceSeries f = sectionForceSeries(u);
-  Matrix12 KG = localGeometricStiffness(f.at(0).N, f.at(1).N);
+  Matrix12 KG = localGeometricStiffness(f.at(0).N + axialPreload_, f.at(1).N + axialPreload_);
   if (!released_.empty()) {
     // Released rotations follow the kept dofs as in the mass matrix: KG -> T^T KG T.
     Matrix12 K = localStiffness();

@@ -61,6 +61,9 @@ class Beam : public LineElement {
   /// same rho I as the rotary inertia, so a beam without rotary inertia (or one that carries
   /// only one bending rotation, e.g. a planar beam) has none: empty matrix.
   ElementMatrix gyroscopic() const override;
+  /// A prescribed axial force (N, tension positive) added to the one a state gives: a lateral
+  /// rotor model carries no axial dof, so its shaft's axial load is given, not solved for.
+  void setAxialPreload(double N) { axialPreload_ = N; }
   /// Geometric stiffness of the axial force the state u puts in the beam (linear along it
   /// under an axial span load), global frame, releases condensed as in mass().
   ElementMatrix geometricStiffness(const ElementVector& u) const override;
@@ -126,6 +129,7 @@ class Beam : public LineElement {
   Eigen::Matrix3d R_;  // rows: local axes in global coordinates
   // The span load in the local frame: its mean and half the change from start to end, so
   // q(s) = qMean_ + qHalfRise_ (2 s - 1).
+  double axialPreload_ = 0;  // N, tension positive; see setAxialPreload
   Eigen::Vector3d qMean_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d qHalfRise_ = Eigen::Vector3d::Zero();
   std::vector<int> released_;  // local indices 0..11 of released rotations

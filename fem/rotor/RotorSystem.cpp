@@ -31,6 +31,9 @@ RotorSystem::RotorSystem(const Model& model, ProportionalDamping damping)
   M_ = assembler.assemble(MatrixKind::mass);
   G_ = assembler.assemble(MatrixKind::gyroscopic);
   K0_ = assembler.assemble(MatrixKind::stiffness);
+  // A shaft's given axial force (Beam::setAxialPreload): its geometric stiffness at rest
+  // (the zero state adds no force of its own), on K's pattern.
+  K0_ += assembler.assembleGeometric(Eigen::VectorXd::Zero(dofs_.size()));
   C0_ = assembler.assemble(MatrixKind::damping);
 
   // 2. Remember where each speed-dependent element's entries live in the pattern.

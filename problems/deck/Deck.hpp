@@ -32,6 +32,9 @@ struct DeckSegment {
   std::string sectionName;
   int elements = 0;  ///< element count, or 0 to use size
   double size = 0;   ///< largest element length (m) when elements == 0
+  /// A lateral rotor's shaft: the axial force it carries (N, tension positive), given because
+  /// lateral models have no axial dof to carry it; it enters through the geometric stiffness.
+  double axialForce = 0;
   BeamOptions options;
   DeckPlace place;
   /// Elements the line builder will make, at most (points add a cut each).

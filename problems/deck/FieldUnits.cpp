@@ -26,6 +26,7 @@ const Table& table() {
     add(t, "sections[].", {"A"}, dim::area);
     add(t, "sections[].", {"I", "Iy", "Iz", "J"}, dim::secondMoment);
     add(t, "segments[].", {"length", "size"}, dim::length);
+    add(t, "segments[].", {"axial_force"}, dim::force);
     add(t, "points[].", {"at"}, dim::length);
     add(t, "supports[].prescribe.", {"ux", "uy", "uz"}, dim::length);
     add(t, "supports[].prescribe.", {"rx", "ry", "rz"}, dim::angle);

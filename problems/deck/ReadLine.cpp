@@ -254,7 +254,8 @@ void readLine(Context& c) {
   std::vector<Field> lengths;
   double elements = 0;
   for (const Field& f : block.items()) {
-    f.allowOnly({"name", "length", "section", "elements", "size", "formulation"}, "a segment");
+    f.allowOnly({"name", "length", "section", "elements", "size", "formulation", "axial_force"},
+                "a segment");
     DeckSegment s;
     s.place = f.place();
     if (auto n = f.get("name")) {
@@ -264,6 +265,12 @@ void readLine(Context& c) {
     lengths.push_back(f.require("length"));
     s.length = lengths.back().positive(ev);
     readSegmentMesh(c, f, s);
+    if (auto axial = f.get("axial_force")) {
+      if (c.deck.dimension != "lateral")
+        axial->fail("axial_force gives a lateral rotor's shaft its axial force; planar and 3d "
+                    "models take it from their loads (buckling, second_order, prestressed)");
+      s.axialForce = axial->number(ev);
+    }
     elements += s.elementEstimate();
     if (!(elements <= kMaxElements))
       f.fail("the line would have more than " + std::to_string(kMaxElements) +

@@ -186,6 +186,7 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
         for (Eigen::Vector3d& qe : q) qe.y() -= beam.section().rhoA() * l.g;
     }
     if (!q[0].isZero() || !q[1].isZero()) beam.setDistributedLoad(q[0], q[1]);
+    beam.setAxialPreload(deck.segments[segment].axialForce);
   }
 
   // 3. Hinges: release the rotations of every beam end at the point; a rotation released on
