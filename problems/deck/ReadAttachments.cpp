@@ -2,7 +2,6 @@
 // supports, springs, masses, hinges and loads.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <tuple>
 
@@ -280,11 +279,9 @@ void addLoadBoundary(Context& c, int i, double fraction, const DeckPlace& place)
   const double x = start + fraction * c.deck.segments[i].length;
   for (const DeckPoint& p : c.deck.points)
     if (p.at == x) return;
-  char digits[32];
-  std::snprintf(digits, sizeof digits, "%.17g", fraction);
   const std::string& name = c.deck.segments[i].name;
-  c.deck.points.push_back({(name.empty() ? "segment" + std::to_string(i) : name) + "@" + digits,
-                           x, place});
+  c.deck.points.push_back(
+      {fractionPlaceName(name.empty() ? "segment" + std::to_string(i) : name, fraction), x, place});
 }
 
 /// `from:`/`to:` (fractions of the length) or `from_length:`/`to_length:` (m from the start):

@@ -141,9 +141,7 @@ std::string placeName(const Context& c, int m, double fraction) {
   const DeckMember& member = c.deck.frame->members[m];
   if (fraction <= kEndTolerance) return c.deck.frame->joints[member.from].name;
   if (fraction >= 1 - kEndTolerance) return c.deck.frame->joints[member.to].name;
-  char digits[32];
-  std::snprintf(digits, sizeof digits, "%.17g", fraction);
-  return c.deck.segments[m].name + "@" + digits;
+  return fractionPlaceName(c.deck.segments[m].name, fraction);
 }
 
 /// Member and fraction of a place: `member:` with `at:` (fraction of its length from its
@@ -240,6 +238,12 @@ void readFrame(Context& c) {
   const double elements = readMembers(c);
   readStations(c, pointNames, elements);
   collectInlinePlaces(c);
+}
+
+std::string fractionPlaceName(const std::string& owner, double fraction) {
+  char digits[32];
+  std::snprintf(digits, sizeof digits, "%.17g", fraction);
+  return owner + "@" + digits;
 }
 
 void addMemberStation(Context& c, int member, double fraction, const DeckPlace& place) {

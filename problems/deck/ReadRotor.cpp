@@ -142,17 +142,24 @@ void readDamping(Context& c) {
   if (auto b = f->get("beta")) c.deck.rotor.damping.beta = b->nonNegative(c.evaluator);
 }
 
-/// from_rpm, to_rpm, steps: steps intervals, the last speed `to` exactly.
-std::vector<double> readSpeedRange(const Context& c, const Field& f) {
-  const double from = f.require("from_rpm").nonNegative(c.evaluator);
-  const Field toField = f.require("to_rpm");
+/// `fromKey`, `toKey` and steps: steps intervals from `from` to `to` (the last value `to`
+/// exactly), each times `scale`, the SI value of the keys' unit.
+std::vector<double> readRange(const Context& c, const Field& f, const std::string& fromKey,
+                              const std::string& toKey, double scale) {
+  const double from = f.require(fromKey).nonNegative(c.evaluator);
+  const Field toField = f.require(toKey);
   const double to = toField.number(c.evaluator);
-  if (!(to > from)) toField.fail("to_rpm must exceed from_rpm (" + formatNumber(from) + ")");
+  if (!(to > from)) toField.fail(toKey + " must exceed " + fromKey + " (" + formatNumber(from) + ")");
   const int n = f.require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
-  std::vector<double> speeds;
-  for (int i = 0; i < n; ++i) speeds.push_back((from + (to - from) * i / n) * kRadPerRpm);
-  speeds.push_back(to * kRadPerRpm);
-  return speeds;
+  std::vector<double> values;
+  for (int i = 0; i < n; ++i) values.push_back((from + (to - from) * i / n) * scale);
+  values.push_back(to * scale);
+  return values;
+}
+
+/// from_rpm, to_rpm, steps: spin speeds (rad/s).
+std::vector<double> readSpeedRange(const Context& c, const Field& f) {
+  return readRange(c, f, "from_rpm", "to_rpm", kRadPerRpm);
 }
 
 /// input / output of a frequency response: {at: POINT, dof: uy | uz | ry | rz}.
@@ -166,16 +173,9 @@ void readResponseEnd(const Context& c, const Field& f, std::string& point, Dof& 
     d.fail("a rotor's frequency response acts on uy, uz, ry or rz");
 }
 
-/// from_hz, to_hz, steps: excitation frequencies (rad/s), `to` exactly; from_hz may be 0.
+/// from_hz, to_hz, steps: excitation frequencies (rad/s); from_hz may be 0.
 std::vector<double> readFrequencyRange(const Context& c, const Field& f) {
-  const double from = f.require("from_hz").nonNegative(c.evaluator);
-  const Field toField = f.require("to_hz");
-  const double to = toField.number(c.evaluator);
-  if (!(to > from)) toField.fail("to_hz must exceed from_hz (" + formatNumber(from) + ")");
-  const int n = f.require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
-  std::vector<double> w;
-  for (int i = 0; i <= n; ++i) w.push_back(2 * std::numbers::pi * (i == n ? to : from + (to - from) * i / n));
-  return w;
+  return readRange(c, f, "from_hz", "to_hz", 2 * std::numbers::pi);
 }
 
 /// operating: {min_rpm, max_rpm}: the machine's operating speed range, 0 < min < max.

@@ -47,6 +47,9 @@ void readFrame(Context& c);
 /// The point a `{member: NAME, at: FRACTION}` (or `at_length: METRES`) map names; readFrame
 /// made it.
 const DeckPoint& memberPoint(const Context& c, const Field& f);
+/// "OWNER@FRACTION" with every digit the fraction has: the name of a place inside a member or
+/// segment (two places never share a name).
+std::string fractionPlaceName(const std::string& owner, double fraction);
 /// A mesh node at `fraction` (0 to 1) of member `member`, where a partial load starts or
 /// ends; nothing at its ends, which are joints already.
 void addMemberStation(Context& c, int member, double fraction, const DeckPlace& place);
