@@ -93,17 +93,28 @@ void printFrequencyResponse(std::ostream& out, const AnalysisOutcome& a, const R
         << formatValue(f.frequencies[peak] / (2 * std::numbers::pi)) << " Hz\n";
 }
 
+/// What a two-dof mode is, in words: coupled, or (b = 0) the limits of the paper's 0/0 ratio.
+std::string modeShapeText(const FormeShaftMode& m) {
+  switch (m.kind) {
+    case FormeModeKind::bounce:
+      return "pure bounce (phi = 0: C1 l1 = C2 l2, the paper's n = 0/0 tends to infinity)";
+    case FormeModeKind::rocking:
+      return "pure rocking about the centre of mass (z = 0, n = 0)";
+    default:
+      return "n = " + formatValue(m.n) + " m/rad";
+  }
+}
+
 void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
   out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
       << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
       << " kg m^2\n";
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const FormeShaftMode& m = r.modes[i];
-    out << "    two-dof mode " << i + 1 << "  " << formatValue(m.k / (2 * std::numbers::pi))
-        << " Hz  " << formeModeKindName(m.kind) << "  n = "
-        << (std::isfinite(m.n) ? formatValue(m.n) + " m/rad" : std::string("inf (pure bounce)"))
-        << "  F_" << r.points[0] << " = " << formatValue(m.FA) << " N, F_" << r.points[1] << " = "
-        << formatValue(m.FB) << " N\n";
+    out << "    two-dof mode " << i + 1 << " (the paper's " << paperModeName(int(i)) << ")  "
+        << formatValue(m.k / (2 * std::numbers::pi)) << " Hz (k = " << formatValue(m.k)
+        << " rad/s)  " << modeShapeText(m) << "  F_" << r.points[0] << " = "
+        << formatValue(m.FA) << " N, F_" << r.points[1] << " = " << formatValue(m.FB) << " N\n";
   }
 }
 

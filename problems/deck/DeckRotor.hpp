@@ -43,6 +43,15 @@ struct DeckRotorModel {
 };
 
 /// What a rotor analysis asks for (the fields its type uses; the others stay empty).
+/// rigid-body `body:`: the spring-mounted rigid body from its own inputs, with no beams
+/// (problems/scenes/README.md section 2: weight Q, radius of gyration rho, l1, l2, C1, C2).
+struct DeckTwoDofBody {
+  double mass = 0;              ///< kg (`mass:`, or `weight:` over standard gravity)
+  double radiusOfGyration = 0;  ///< about the centre of mass, in the plane of vibration (m)
+  double l1 = 0, l2 = 0;        ///< centre of mass to spring A (-x side), to spring B (m)
+  double C1 = 0, C2 = 0;        ///< spring stiffnesses at A and B (N/m)
+};
+
 struct DeckRotorAnalysis {
   double speed = 0;                        ///< rotor: spin speed (rad/s)
   std::vector<double> speeds;              ///< campbell, unbalance: ascending (rad/s)
@@ -56,6 +65,7 @@ struct DeckRotorAnalysis {
   Dof inputDof = Dof::uy, outputDof = Dof::uy;
   std::vector<double> frequencies;  ///< frequency-response: excitation (rad/s), ascending
   std::vector<std::string> bearingPoints;  ///< rigid-body: the two spring points A, B
+  std::optional<DeckTwoDofBody> body;      ///< rigid-body: the body given directly, no model
 };
 
 /// True for the analysis types this header describes.

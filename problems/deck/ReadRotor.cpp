@@ -242,7 +242,14 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
   const ExpressionEvaluator& ev = c.evaluator;
   DeckRotorAnalysis& r = a.rotor;
   if (a.type == "rigid-body") {
-    f.allowOnly({"type", "name", "bearings"}, "a rigid-body analysis");
+    f.allowOnly({"type", "name", "bearings", "body"}, "a rigid-body analysis");
+    if (auto body = f.get("body")) {
+      if (auto b = f.get("bearings"))
+        b->fail("give either bearings: (two spring points of the model) or body: (the rigid "
+                "body's own data), not both");
+      readTwoDofBody(c, *body, r);
+      return;
+    }
     const Field list = f.require("bearings");
     const std::vector<Field> items = list.items();
     if (items.size() != 2) list.fail("expected the two spring points [A, B]");

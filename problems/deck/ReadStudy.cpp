@@ -42,7 +42,7 @@ void readAnalyses(Context& c) {
     a.place = f.place();
     a.type = f.require("type").choice(
         {"static", "modal", "buckling", "transient", "rotor", "campbell", "unbalance",
-         "rigid-body", "frequency-response"});
+         "rigid-body", "frequency-response", "crank-slider"});
     if (a.type == "static") {
       f.allowOnly({"type", "name", "second_order"}, "a static analysis");
       if (auto s = f.get("second_order")) {
@@ -64,9 +64,11 @@ void readAnalyses(Context& c) {
       a.transient = readTransient(c, f);
       if (!hasMass(c.deck))
         f.fail("a transient analysis needs mass: give the materials a density rho or add masses");
+    } else if (a.type == "crank-slider") {
+      readCrankAnalysis(c, f, a);
     } else if (isRotorAnalysis(a.type)) {
       readRotorAnalysis(c, f, a);
-      if (a.type != "unbalance" && !hasMass(c.deck))
+      if (a.type != "unbalance" && !a.rotor.body && !hasMass(c.deck))
         f.fail("a " + a.type +
                " analysis needs mass: give the materials a density rho or add masses");
     } else {
@@ -210,7 +212,22 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
            "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
   resolveRotorQuantity(c, q, f, *analysis);
+  resolveCrankQuantity(q, f, *analysis);
   return analysis->name;
+}
+
+/// `paper:` (a source's printed figure that the reference is not) and `reason:` (why they
+/// differ) come together: a differing figure without its reason would only puzzle a reader.
+void readPaperFigure(const Context& c, const Field& f, DeckCheck& k) {
+  const auto paper = f.get("paper");
+  const auto reason = f.get("reason");
+  if (paper && !reason)
+    paper->fail("a paper figure the reference differs from needs its reason: add reason:");
+  if (reason && !paper)
+    reason->fail("reason: explains a paper: figure; give the paper's value as paper:");
+  if (!paper) return;
+  k.paper = paper->number(c.evaluator, referenceUnit(k.quantity));
+  k.reason = reason->label(300);
 }
 
 void readChecks(Context& c) {
@@ -218,7 +235,8 @@ void readChecks(Context& c) {
   if (!block || block->isNull()) return;
   std::vector<std::string> names;
   for (const Field& f : boundedItems(*block, "checks")) {
-    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis", "case"},
+    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis", "case",
+                 "paper", "reason"},
                 "a check");
     DeckCheck k;
     k.place = f.place();
@@ -251,6 +269,7 @@ void readChecks(Context& c) {
     k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
     const Field tol = f.require("tolerance");
     k.tolerance = tol.positive(c.evaluator);
+    readPaperFigure(c, f, k);
     c.deck.checks.push_back(std::move(k));
   }
 }

@@ -178,6 +178,7 @@ Json rigidBodyJson(const RigidBodyOutcome& r) {
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const FormeShaftMode& m = r.modes[i];
     modes.push_back({{"mode", i + 1},
+                     {"paper_name", std::string(paperModeName(int(i)))},
                      {"frequency_hz", m.k / (2 * std::numbers::pi)},
                      {"k_rad_s", m.k},
                      {"kind", std::string(formeModeKindName(m.kind))},

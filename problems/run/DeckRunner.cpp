@@ -19,6 +19,7 @@
 #include "problems/run/Measure.hpp"
 #include "problems/run/DisplacementWarning.hpp"
 #include "problems/run/ModelBuilder.hpp"
+#include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/OverRefinementWarning.hpp"
 #include "problems/run/RunRotor.hpp"
 #include "problems/run/RunTransient.hpp"
@@ -84,6 +85,8 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       out.warnings = out.buckling->warnings;
     } else if (a.transient) {
       out.transient = runTransient(deck, a, model);
+    } else if (a.crank) {
+      out.crank = runCrankSlider(*a.crank);
     } else if (isRotorAnalysis(a.type)) {
       out.rotor = solveRotorAnalysis(deck, a, model);
     } else {
@@ -112,6 +115,8 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
   c.quantity = k.quantity.text;
   c.reference = k.reference;
   c.tolerance = k.tolerance;
+  c.paper = k.paper;
+  c.reason = k.reason;
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.name != k.analysis) continue;
     if (k.loadCase.empty()) {

@@ -54,7 +54,22 @@ double groundedStiffness(const Model& model, int node) {
   return k;
 }
 
+/// The body as the deck gives it (problems/scenes/README.md section 2): the centre of mass at
+/// x = 0, spring A at -l1 and B at +l2, J = m rho^2.
+RigidBodyOutcome givenBody(const DeckTwoDofBody& b) {
+  RigidBodyOutcome out;
+  out.body.m = b.mass;
+  out.body.J = b.mass * b.radiusOfGyration * b.radiusOfGyration;
+  out.points = {"A", "B"};
+  out.x = {-b.l1, b.l2};
+  out.stiffness = {b.C1, b.C2};
+  out.rigid = FormeShaftRigid{b.mass, out.body.J, b.C1, b.C2, b.l1, b.l2};
+  out.modes = formeShaftModes(out.rigid);
+  return out;
+}
+
 RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
+  if (r.body) return givenBody(*r.body);
   RigidBodyOutcome out;
   out.body = rigidBodyProperties(model);
   for (int i = 0; i < 2; ++i) {
