@@ -23,6 +23,21 @@ int occurrences(const std::string& text, const std::string& what) {
   return n;
 }
 
+/// A cantilever of length L under P at its tip (E I = 1e4 N m^2), written to dir/decks/name
+/// with `extra` (parameters, checks, a sweep) after it.
+void writeReportCantilever(const std::filesystem::path& dir, const std::string& name,
+                           const std::string& extra) {
+  std::filesystem::create_directories(dir / "decks");
+  std::ofstream(dir / "decks" / name)
+      << "materials: [{name: m, E: 1e11, nu: 0.3}]\n"
+         "sections: [{name: s, shape: general, A: 1e-3, I: 1e-7, depth: 0.01}]\n"
+         "segments: [{length: L, section: s, elements: 4}]\n"
+         "points: [{name: root, at: 0}, {name: tip, at: L}]\n"
+         "supports: [{name: root, at: root, fix: clamped}]\n"
+         "loads: [{type: point, at: tip, fy: -P}]\n"
+      << extra;
+}
+
 }  // namespace
 
 TEST_SUITE("verification report") {
@@ -96,28 +111,22 @@ TEST_SUITE("verification report") {
     // condition, and the headline must count them: 3 pass (tip at both values, heavy at
     // P = 2000), 0 fail, 3 did not apply (light at both values, heavy at P = 1000).
     const auto dir = test::scratchDir("report_not_applied");
-    std::filesystem::create_directories(dir / "decks");
-    std::ofstream(dir / "decks" / "cantilever_when.yaml")
-        << "title: cantilever with conditional checks\n"
-           "parameters: {P: 1000, L: 1}\n"
-           "materials: [{name: m, E: 1e11}]\n"
-           "sections: [{name: s, shape: general, A: 1e-3, I: 1e-7, depth: 0.01}]\n"
-           "segments: [{length: L, section: s, elements: 4}]\n"
-           "points: [{name: root, at: 0}, {name: tip, at: L}]\n"
-           "supports: [{name: root, at: root, fix: clamped}]\n"
-           "loads: [{type: point, at: tip, fy: -P}]\n"
-           "checks:\n"
-           "  - {name: tip, quantity: displacement tip uy, reference: -P*L^3/(3*1e4),"
-           " tolerance: 1e-9}\n"
-           "  - {name: light, quantity: reaction root uy, reference: P, tolerance: 1e-9,"
-           " when: P < 500}\n"
-           "  - {name: heavy, quantity: reaction root uy, reference: P, tolerance: 1e-9,"
-           " when: P > 1500}\n"
-           "sweep: {parameter: P, values: [1000, 2000]}\n";
+    writeReportCantilever(
+        dir, "cantilever_when.yaml",
+        "title: cantilever with conditional checks\n"
+        "parameters: {P: 1000, L: 1}\n"
+        "checks:\n"
+        "  - {name: tip, quantity: displacement tip uy, reference: -P*L^3/(3*1e4),"
+        " tolerance: 1e-9}\n"
+        "  - {name: light, quantity: reaction root uy, reference: P, tolerance: 1e-9,"
+        " when: P < 500}\n"
+        "  - {name: heavy, quantity: reaction root uy, reference: P, tolerance: 1e-9,"
+        " when: P > 1500}\n"
+        "sweep: {parameter: P, values: [1000, 2000]}\n");
     const auto rows = runDeckChecks(decksIn(dir / "decks"));
     REQUIRE(rows.size() == 1);
     REQUIRE(rows[0].error.empty());
-    CHECK(rows[0].checks.size() == 3);      // tip twice, heavy at P = 2000
+    CHECK(rows[0].checks.size() == 3);        // tip twice, heavy at P = 2000
     REQUIRE(rows[0].notApplied.size() == 3);  // light twice, heavy at P = 1000
     CHECK(rows[0].notApplied[0].name == "light");
     CHECK(rows[0].notApplied[0].label == "P = 1000");
@@ -142,17 +151,12 @@ TEST_SUITE("verification report") {
     // The tip deflection of the same cantilever, 1/30 m, with a "paper" printing 0.0335 (a
     // rounding): the page shows the printed figure, its difference 0.5 % and the reason.
     const auto dir = test::scratchDir("report_paper_note");
-    std::filesystem::create_directories(dir / "decks");
-    std::ofstream(dir / "decks" / "cantilever_paper.yaml")
-        << "materials: [{name: m, E: 1e11}]\n"
-           "sections: [{name: s, shape: general, A: 1e-3, I: 1e-7, depth: 0.01}]\n"
-           "segments: [{length: 1, section: s, elements: 4}]\n"
-           "points: [{name: root, at: 0}, {name: tip, at: 1}]\n"
-           "supports: [{name: root, at: root, fix: clamped}]\n"
-           "loads: [{type: point, at: tip, fy: -1000}]\n"
-           "checks:\n"
-           "  - {name: tip, quantity: displacement tip uy, reference: -1/30, tolerance: 1e-9,\n"
-           "     paper: -0.0335, reason: rounded up in print}\n";
+    writeReportCantilever(dir, "cantilever_paper.yaml",
+                          "parameters: {P: 1000, L: 1}\n"
+                          "checks:\n"
+                          "  - {name: tip, quantity: displacement tip uy, reference: -1/30, "
+                          "tolerance: 1e-9,\n"
+                          "     paper: -0.0335, reason: rounded up in print}\n");
     const auto rows = runDeckChecks(decksIn(dir / "decks"));
     REQUIRE(rows.size() == 1);
     REQUIRE(rows[0].checks.size() == 1);
@@ -169,5 +173,4 @@ TEST_SUITE("verification report") {
                     "rounded up in print") != std::string::npos);
     std::filesystem::remove_all(dir);
   }
-
 }
