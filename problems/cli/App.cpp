@@ -154,6 +154,27 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                    "output directory (default: out/<deck name>_converge/)")
       ->type_name("DIR");
 
+  OverlayRequest overlay;
+  CLI::App* overlayCmd = app.add_subcommand(
+      "overlay",
+      "Solve several decks (each without its sweep) and draw their static diagrams on one "
+      "chart, one line per deck; write each deck's fields CSV beside it.");
+  overlayCmd->add_option("decks", overlay.deckPaths, "two or more decks")
+      ->required()
+      ->expected(2, 100);
+  overlayCmd
+      ->add_option("--set", overlay.sets, "override a parameter of every deck (repeatable)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+  overlayCmd
+      ->add_option("--quantity", overlay.quantity,
+                   "the diagram to draw: deflection, rotation, moment, stress, shear or all "
+                   "(default)")
+      ->check(CLI::IsMember({"deflection", "rotation", "moment", "stress", "shear", "all"}))
+      ->type_name("Q");
+  overlayCmd->add_option("--out,-o", overlay.outDir, "output directory (default: out/overlay/)")
+      ->type_name("DIR");
+
   if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
     err << unknown << "\n";
     return kInputError;
@@ -171,6 +192,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);
     if (reportCmd->parsed()) return reportCommand(report, out, err);
     if (convergeCmd->parsed()) return convergeCommand(converge, out, err);
+    if (overlayCmd->parsed()) return overlayCommand(overlay, out, err);
     return checkCommand(check, out, err);
   } catch (const std::bad_alloc&) {
     err << "beamrotor: " << kOutOfMemory << "\n";

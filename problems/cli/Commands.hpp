@@ -5,6 +5,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "problems/bench/Bench.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
@@ -41,5 +42,16 @@ struct ConvergeRequest {
 /// `beamrotor converge` (ConvergeCommand.cpp): the convergence study of one deck quantity,
 /// written as convergence.json, convergence.csv and two log-log charts.
 int convergeCommand(const ConvergeRequest& request, std::ostream& out, std::ostream& err);
+
+/// What `beamrotor overlay` reads and where it writes.
+struct OverlayRequest {
+  std::vector<std::string> deckPaths;  ///< two or more decks, each solved without its sweep
+  std::vector<std::string> sets;       ///< "NAME=VALUE" overrides, applied to every deck
+  std::string quantity = "all";        ///< a diagramName or "all"
+  std::string outDir;                  ///< empty: out/overlay
+};
+
+/// `beamrotor overlay` (OverlayCommand.cpp): the static diagrams of several decks on one chart.
+int overlayCommand(const OverlayRequest& request, std::ostream& out, std::ostream& err);
 
 }  // namespace beamrotor::cli

@@ -278,7 +278,7 @@ void readChecks(Context& c) {
 void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
   auto f = c.root.get("sweep");
   if (!f || f->isNull()) return;
-  f->allowOnly({"parameter", "values", "from", "to", "steps"}, "the sweep");
+  f->allowOnly({"parameter", "values", "from", "to", "steps", "refine"}, "the sweep");
   DeckSweep s;
   s.place = f->place();
   const Field pf = f->require("parameter");

@@ -23,6 +23,7 @@
 #include "problems/run/OverRefinementWarning.hpp"
 #include "problems/run/RunRotor.hpp"
 #include "problems/run/RunTransient.hpp"
+#include "problems/run/SweepRefinement.hpp"
 
 namespace beamrotor {
 
@@ -191,23 +192,31 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
   for (const auto& [name, dimension] : base.dimensions)
     if (name == sweep.parameter) sweep.unit = siUnitOf(dimension);
   sweep.values = base.sweep->values;
-  const int total = int(sweep.values.size());
-  for (int i = 0; i < total; ++i) {
-    const double value = sweep.values[i];
+  const auto runValue = [&](double value) {
     std::vector<ParameterOverride> withValue = overrides;
     withValue.push_back({sweep.parameter, value, sweep.parameter + "=" + formatNumber(value)});
     const std::string at = "with " + sweep.parameter + " = " + formatNumber(value) + " (sweep): ";
     try {
       Deck deck = readDeck(source, withValue);
       if (adjust) adjust(deck);
-      sweep.runs.push_back(runDeck(deck));
+      return runDeck(deck);
     } catch (const DeckError& e) {
       throw DeckError(e.file(), e.place(), at + e.message());
     } catch (const DeckSolveError& e) {
       throw DeckSolveError(e.file(), e.place(), at + e.message());
     }
+  };
+  const int total = int(sweep.values.size());
+  for (int i = 0; i < total; ++i) {
+    sweep.runs.push_back(runValue(sweep.values[i]));
     if (progress) progress(i + 1, total);
   }
+  // `refine:` adds values where the result changes fast and around its peaks, to the deck's
+  // own sweep (a --sweep from the command line, placed at no line, is solved as given).
+  if (base.sweep->place.line > 0)
+    if (const auto refine = readSweepRefinement(source, base);
+        refine && refine->parameter == sweep.parameter)
+      refineSweep(sweep, *refine, runValue);
   return sweep;
 }
 
