@@ -162,16 +162,16 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
     body << "  set title " << gnuplotText(modeTitle(m, r.modes[std::size_t(m - 1)]))
          << " font ',11'\n";
     if (m == 2) body << "  unset key\n";
-    body << "  splot " << file << " skip 1 using " << cX << ":" << where(m, "", cY) << ":$" << cZ
-         << ":(0):$" << cDy << ":$" << cDz << ":(whirl($" << cW
+    body << "  splot " << file << " skip 1 using " << cX << ":" << where(m, "", cY) << ":" << cZ
+         << ":(0):" << cDy << ":" << cDz << ":(whirl($" << cW
          << ")) with vectors nohead linewidth 1.5 linecolor rgb variable notitle, \\\n"
          << "        " << file << " skip 1 using " << cX << ":"
-         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":$" << cZ << ":(0):$" << cDy
-         << ":$" << cDz << ":(whirl($" << cW
+         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":" << cZ << ":(0):" << cDy
+         << ":" << cDz << ":(whirl($" << cW
          << ")) with vectors head size screen 0.012,25 filled linewidth 1.5 linecolor rgb "
             "variable notitle, \\\n"
          << "        " << file << " skip 1 using " << cX << ":"
-         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":$" << cZ
+         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":" << cZ
          << " with lines linewidth 2.5 linecolor rgb 'black' title 'shaft at angle 0'";
     for (const auto& [slot, what] : {std::pair<int, const char*>{kForwardSlot, "forward orbit"},
                                      {kBackwardSlot, "backward orbit"},
