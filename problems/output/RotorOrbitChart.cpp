@@ -95,7 +95,7 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
                             const CsvTable& orbits, const std::string& csvFile) {
   const int count = int(r.modes.size());
   const int columns = count > 1 ? 2 : 1, rows = (count + columns - 1) / columns;
-  const int width = 620 * columns, height = 80 + 430 * std::max(rows, 1);
+  const int width = 620 * columns, height = 100 + 480 * std::max(rows, 1);
   double x0 = 0, x1 = 0;
   for (const auto& p : model.nodes()) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
   const double pad = 0.04 * std::max(x1 - x0, 1e-9);
@@ -104,15 +104,15 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   body << "  set encoding utf8\n"
        << panelLayout(rows, columns,
                       caption + "\nmodes at " + number(rpmOf(r.speed)) +
-                          " rpm: orbits along the shaft (largest orbit 1)",
+                          " rpm: orbits along the shaft, x [m] (largest orbit 1)",
                       width, height, 20)
-       << "  set view 64, 24, 1, 1.1\n  set xyplane relative 0\n  set border 1+2+4+8+16+32+64+256+512\n"
+       << "  set view 64, 24, 0.85, 1.1\n  set xyplane relative 0\n  set border 1+2+4+8+16+32+64+256+512\n"
        << "  set xrange [" << number(x0 - pad) << ":" << number(x1 + pad) << "]\n"
        << "  set yrange [" << -kOrbitRoom << ":" << kOrbitRoom << "]\n"
        << "  set zrange [" << -kOrbitRoom << ":" << kOrbitRoom << "]\n"
        << "  set xtics offset 0,-0.5\n  set ytics 1\n  set ztics 1\n  set format y '%g'\n"
        << "  set format z '%g'\n"
-       << "  set xlabel 'x along the shaft [m]' offset 0,-1\n  set ylabel 'u_y' offset 1,0\n"
+       << "  set ylabel 'u_y' offset 1,0\n"
        << "  set zlabel 'u_z' offset 1,0\n"
        << "  set key at screen 0.99, screen 0.995 top right horizontal font ',9' samplen 2\n"
        << "  whirl(w) = w > 0 ? " << colourValue(kForwardSlot) << " : w < 0 ? "
