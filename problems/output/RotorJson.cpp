@@ -46,8 +46,7 @@ Json modesJson(const std::string& stem, const RotorModesResult& r) {
             {"pvd", collectionPvd(stem)},
             {"vtu", vtus},
             {"orbits_vtu", orbits},
-            {"orbits_csv", orbitsCsv(stem)},
-            {"chart", orbitsChart(stem) + ".svg"}}}};
+            {"orbits_csv", orbitsCsv(stem)}}}};
 }
 
 Json campbellJson(const std::string& stem, const RotorOutcome& r) {
