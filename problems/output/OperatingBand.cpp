@@ -74,11 +74,8 @@ BandCommands operatingBandCommands(const std::optional<OperatingBand>& band, int
                       "fillcolor rgb '" + fill + "' title " + gnuplotText(title);
     out.titles.push_back(title);
   };
-  entry(kRangeFill, "operating " + number(band->minRpm) + "-" + number(band->maxRpm) + " rpm");
-  const auto tenth = [](double v) { return number(std::round(v * 10) / 10); };
-  if (band->marginBelow > 0 || band->marginAbove > 0)
-    entry(kMarginFill,
-          "API 684 margins -" + tenth(band->marginBelow) + " % / +" + tenth(band->marginAbove) + " %");
+  entry(kRangeFill, "operating range");
+  if (band->marginBelow > 0 || band->marginAbove > 0) entry(kMarginFill, "API margins");
   return out;
 }
 

@@ -124,7 +124,7 @@ TEST_SUITE("rotor charts") {
     CHECK(shading.setup.find("from first " + number(7000 * (1 - band.marginBelow / 100)) +
                              ", graph 0 to first 7000") != std::string::npos);
     CHECK(shading.setup.find("from first 9000, graph 0 to first 11430") != std::string::npos);
-    CHECK(shading.titles.size() == 2);
+    CHECK(shading.titles.size() == 2);  // "operating range", "API margins"
     CHECK(operatingBandCommands(std::nullopt).setup.empty());
   }
 
