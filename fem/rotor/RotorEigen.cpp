@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <random>
 #include <sstream>
 #include <type_traits>
 
@@ -83,6 +84,19 @@ QuadraticEigenpairs nearest(const std::vector<Complex>& lambda,
     out.vectors.col(k) = v / v.norm();
   }
   return out;
+}
+
+/// A starting vector that depends only on its length: entries in [-1, 1) from the minimal
+/// standard generator (Park and Miller; its sequence is fixed by the C++ standard). ARPACK's own
+/// random start continues a generator kept between calls, so the basis it returns for a double
+/// eigenvalue would depend on every ARPACK call made before in the process. Pseudo-random, not
+/// constant: a constant vector is orthogonal to the antisymmetric modes of a symmetric rotor.
+Eigen::VectorXd fixedStart(int size) {
+  std::minstd_rand generator(20261124u);
+  Eigen::VectorXd v(size);
+  for (int i = 0; i < size; ++i)
+    v[i] = 2.0 * double(generator() - generator.min()) / double(generator.max() - generator.min() + 1) - 1;
+  return v;
 }
 
 /// Scale s of the state x = (q, lambda q / s): with s near the |lambda| sought, both halves of
@@ -175,11 +189,11 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
   iparam[0] = 1;             // exact shifts
   iparam[2] = kMaxRestarts;  // maximum Arnoldi restarts
   iparam[6] = 1;             // mode 1: OP supplied by us, B = I
-  a_int ido = 0, info = 0;
-  if (start.size() == N && start.norm() > 0) {
+  a_int ido = 0, info = 1;  // resid holds the starting vector
+  if (start.size() == N && start.norm() > 0)
     Eigen::Map<Vec>(resid.data(), N) = start;
-    info = 1;  // use resid as the starting vector
-  }
+  else
+    Eigen::Map<Vec>(resid.data(), N) = fixedStart(N).template cast<Scalar>();
   // Ritz residuals below 1e-13 |nu|: machine precision (ARPACK's tol = 0) costs twice the
   // restarts for digits the shift-invert round-off does not deliver (the tests measure
   // 1e-10 relative eigenvalue accuracy or better either way).

@@ -69,12 +69,16 @@ void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutc
     for (const ResponsePeak& p : r.peaks[k]) {
       out << "      " << r.responsePoints[k] << ": peak " << formatValue(p.amplitude) << " m at "
           << formatValue(p.speed * kRpm) << " rpm, ";
-      if (!p.halfPowerFound) {
+      if (p.method == AmplificationMethod::none) {
         out << "no half-power points (the orbit does not fall to peak / sqrt(2) on both sides: "
                "a neighbouring peak or the sweep's end): AF unknown, FAIL\n";
         continue;
       }
-      out << "AF " << formatValue(p.amplificationFactor) << ", margin " << formatValue(p.actualMargin)
+      out << "AF " << formatValue(p.amplificationFactor);
+      if (p.method == AmplificationMethod::modalDamping)
+        out << " (1 / (2 zeta), zeta " << formatValue(p.dampingRatio) << " of the mode: "
+            << (p.overlapping ? "overlapping peaks" : "no half-power points") << ")";
+      out << ", margin " << formatValue(p.actualMargin)
           << " % (required " << formatValue(p.requiredMargin) << " %): "
           << (p.pass ? "pass" : "FAIL") << "\n";
     }

@@ -31,7 +31,15 @@ inline std::string api684Csv(const std::string& stem) {
 inline std::string frequencyResponseCsv(const std::string& stem) {
   return stem + "_frf.csv";
 }
+/// Rotor modes: every node's orbit sampled, per mode (the orbit chart's data).
+inline std::string orbitsCsv(const std::string& stem) {
+  return stem + "_orbits.csv";
+}
 /// Charts (without extension).
+/// Rotor modes: orbit ellipses along the shaft, a panel per mode.
+inline std::string orbitsChart(const std::string& stem) {
+  return stem + "_orbits";
+}
 inline std::string frequencyResponseChart(const std::string& stem) {
   return stem + "_frf";
 }

@@ -45,7 +45,8 @@ Json modesJson(const std::string& stem, const RotorModesResult& r) {
            {{"modes_csv", modesCsv(stem)},
             {"pvd", collectionPvd(stem)},
             {"vtu", vtus},
-            {"orbits_vtu", orbits}}}};
+            {"orbits_vtu", orbits},
+            {"orbits_csv", orbitsCsv(stem)}}}};
 }
 
 Json campbellJson(const std::string& stem, const RotorOutcome& r) {
@@ -107,6 +108,9 @@ Json api684Json(const std::string& stem, const RotorOutcome& r) {
                        {"amplitude_m", p.amplitude},
                        {"half_power_rpm", {rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower)}},
                        {"amplification_factor", p.amplificationFactor},
+                       {"amplification_method", amplificationMethodName(p.method)},
+                       {"modal_damping_ratio", p.dampingRatio},
+                       {"overlapping", p.overlapping},
                        {"required_margin_percent", p.requiredMargin},
                        {"actual_margin_percent", p.actualMargin},
                        {"pass", p.pass}});

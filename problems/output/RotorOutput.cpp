@@ -1,10 +1,13 @@
 // Files of the rotor analyses (see RotorOutput.hpp).
 #include "problems/output/RotorOutput.hpp"
 
+#include <optional>
+
 #include "problems/output/FileNames.hpp"
 #include "problems/output/RotorBearingChart.hpp"
 #include "problems/output/RotorCharts.hpp"
 #include "problems/output/RotorFileNames.hpp"
+#include "problems/output/RotorOrbitChart.hpp"
 #include "problems/output/RotorStabilityChart.hpp"
 #include "problems/output/RotorTables.hpp"
 #include "problems/output/RotorVtk.hpp"
@@ -23,7 +26,7 @@ PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
       p.bearings = journalBearingsTable(journalBearingsCsv(stem), r.journals);
   }
   if (r.unbalance) p.unbalance = unbalanceTable(unbalanceCsv(stem), *r.unbalance, r.responsePoints);
-  if (r.operating) p.api684 = api684Table(api684Csv(stem), r);
+  if (r.unbalance && r.operating) p.api684 = api684Table(api684Csv(stem), r);
   if (r.frequencyResponse)
     p.frf = frequencyResponseTable(frequencyResponseCsv(stem), *r.frequencyResponse);
   return p;
@@ -45,6 +48,12 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
                      const std::string& fullCaption, bool charts) {
   const RotorOutcome& r = *a.rotor;
   const std::string caption = fitted(fullCaption);
+  // The operating range on the charts against speed, with the margins its critical speeds
+  // (Campbell) or its response peaks (unbalance) require.
+  std::optional<OperatingBand> band;
+  if (r.operating)
+    band = r.unbalance ? bandOfPeaks(*r.operating, r.peaks)
+                       : bandOfCriticalSpeeds(*r.operating, r.criticalSpeeds);
   if (p.modes) {
     p.modes->write(dir / modesCsv(stem));
     std::vector<PvdEntry> entries;
@@ -55,17 +64,22 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
       entries.push_back({double(number), modeVtu(stem, number)});
     }
     writePvd(dir / collectionPvd(stem), entries);
+    const CsvTable orbits = modeOrbitsTable(orbitsCsv(stem), *r.modes, model);
+    orbits.write(dir / orbitsCsv(stem));
+    // The orbit chart (modeOrbitsChart) is not drawn yet: its 3D panels still reach the
+    // canvas' edges and overprint their neighbours' tick labels (tests/problems/output/
+    // test_chart_reading.cpp).
   }
   if (p.campbell) {
     p.campbell->write(dir / campbellCsv(stem));
     p.critical->write(dir / criticalSpeedsCsv(stem));
     if (charts && p.campbell->rowCount() > 0)
       drawChart(dir, campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
-                                     *p.critical, criticalSpeedsCsv(stem), r.order));
+                                     *p.critical, criticalSpeedsCsv(stem), r.order, band));
     if (charts && p.campbell->rowCount() > 0)
       drawChart(dir, stabilityDiagram(
                          caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),
-                         r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt));
+                         r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt, band));
   }
   if (p.frf) {
     p.frf->write(dir / frequencyResponseCsv(stem));
@@ -87,7 +101,7 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
     if (p.api684) p.api684->write(dir / api684Csv(stem));
     if (charts && p.unbalance->rowCount() > 0)
       drawChart(dir, unbalanceResponseChart(caption, unbalanceChart(stem), *p.unbalance,
-                                            unbalanceCsv(stem), r.responsePoints));
+                                            unbalanceCsv(stem), r.responsePoints, band));
   }
 }
 

@@ -51,8 +51,10 @@ struct RotorOutcome {
   std::vector<JournalBearingCurve> journals;  ///< campbell: the deck's plain journal bearings
   std::optional<UnbalanceResult> unbalance;   ///< unbalance
   std::vector<std::string> responsePoints;    ///< unbalance: names of unbalance->nodes
-  /// unbalance with an operating range: API 684 reading of each response point's peaks
+  /// unbalance: the operating range its API 684 reading measures margins from; campbell: that
+  /// of the deck's first unbalance analysis giving one (drawn on its charts)
   std::optional<OperatingRange> operating;
+  /// unbalance with an operating range: API 684 reading of each response point's peaks
   std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
   std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
   std::optional<FrequencyResponseResult> frequencyResponse;  ///< frequency-response

@@ -12,6 +12,7 @@
 #include "fem/rotor/RotorModes.hpp"
 #include "fem/rotor/RotorStability.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
+#include "fem/rotor/UnbalancePeaks.hpp"
 
 namespace beamrotor {
 
@@ -31,6 +32,13 @@ std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
     out.push_back(std::move(curve));
   }
   return out;
+}
+
+/// The operating range of the deck's first unbalance analysis that gives one.
+std::optional<OperatingRange> deckOperatingRange(const Deck& deck) {
+  for (const DeckAnalysis& a : deck.analyses)
+    if (a.type == "unbalance" && a.rotor.operating) return a.rotor.operating;
+  return std::nullopt;
 }
 
 RotorOptions optionsOf(const Deck& deck, const DeckAnalysis& a) {
@@ -105,6 +113,7 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
     out.onset = instabilityOnset(model, *out.campbell, optionsOf(deck, a));
     out.journals = journalCurves(deck);
+    out.operating = deckOperatingRange(deck);
   } else if (a.type == "unbalance") {
     std::vector<Unbalance> unbalance;
     for (const DeckUnbalance& u : r.unbalance)
@@ -118,7 +127,8 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
       for (const auto& orbits : out.unbalance->orbits) {
         std::vector<double> amplitudes;
         for (const Orbit& o : orbits) amplitudes.push_back(o.major());
-        out.peaks.push_back(readResponsePeaks(out.unbalance->speeds, amplitudes, *r.operating));
+        out.peaks.push_back(unbalancePeaks(model, deck.rotor.damping, out.unbalance->speeds,
+                                           amplitudes, *r.operating));
       }
   } else if (a.type == "frequency-response") {
     const NodeDof in{model.node(r.inputPoint), r.inputDof};
