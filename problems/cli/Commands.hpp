@@ -9,6 +9,7 @@
 #include "problems/bench/Bench.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
 #include "problems/run/Study.hpp"
+#include "problems/study/DesignStudyRun.hpp"
 
 namespace beamrotor::cli {
 
@@ -41,5 +42,9 @@ struct ConvergeRequest {
 /// `beamrotor converge` (ConvergeCommand.cpp): the convergence study of one deck quantity,
 /// written as convergence.json, convergence.csv and two log-log charts.
 int convergeCommand(const ConvergeRequest& request, std::ostream& out, std::ostream& err);
+
+/// `beamrotor study` (StudyCommand.cpp): a design study written as study.csv, summary.json
+/// and the worst point's results; under mpirun only rank 0 prints and writes.
+int studyCommand(const DesignStudyRequest& request, std::ostream& out, std::ostream& err);
 
 }  // namespace beamrotor::cli

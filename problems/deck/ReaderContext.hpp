@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,11 @@ void resolveRotorQuantity(const Context& c, const Quantity& q, const Field& f,
                           const DeckAnalysis& a);
 /// Adds the speed an unbalance_amplitude check reads to its analysis's speeds.
 void addCheckedSpeed(Context& c, const DeckCheck& k);
+/// Fails at `f` unless the quantity's names exist in the deck and its analysis (the one
+/// `analysisField` names, else the first that can give it) can give it; returns the name of
+/// the analysis it reads. `applicable`: whether a check's `when:` holds (history times).
+std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
+                            const std::optional<Field>& analysisField, bool applicable);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 
