@@ -97,6 +97,14 @@ bench: build
 	  --json out/bench/rotor_200.json
 	$(PY) tests/bench/compare.py out/bench
 
+# Design-study throughput (never part of `make test`; a few minutes): the pump rod's
+# stroke-and-wear grid of 10^5 points (all reactions and the largest stress per point, the
+# closed-form checks at every point) serially, with --threads 2 and under mpirun -n 2; medians
+# of 3 runs, parallel efficiency, memory per point, tables compared; out/bench/study.json.
+.PHONY: bench-study
+bench-study: build
+	$(PY) tests/bench/study_bench.py --exe ./$(BUILD)/beamrotor --json out/bench/study.json
+
 clean:
 	rm -rf $(BUILD) out
 

@@ -21,7 +21,7 @@ TEST_SUITE("study command line") {
     const auto scratch = scratchDir("study-cli");
     const ProcessResult p =
         runBeamrotor({"study", "problems/pump_rod.yaml", "--sweep", "eta=0,0.4", "--sweep",
-                      "w0=1mm,2mm", "--output", "stress max <= 100 MPa", "--out",
+                      "w0=1e-3,2e-3", "--output", "stress max <= 100 MPa", "--out",
                       (scratch / "s").string()});
     REQUIRE_MESSAGE(p.exitCode == 0, p.err);
     CHECK(says(p.out, "4 points (grid), 0 failed"));
@@ -34,17 +34,17 @@ TEST_SUITE("study command line") {
 
   TEST_CASE("bad study options name themselves and exit 2") {
     const auto badDistribution = runBeamrotor(
-        {"study", "problems/pump_rod.yaml", "--sample", "w0=normall(1mm,0.1mm)", "--samples", "5"});
+        {"study", "problems/pump_rod.yaml", "--sample", "w0=normall(1e-3,1e-4)", "--samples", "5"});
     CHECK(badDistribution.exitCode == 2);
-    CHECK(says(badDistribution.err, "--sample w0=normall(1mm,0.1mm)"));
-    CHECK(says(badDistribution.err, "did you mean normal?"));
+    CHECK(says(badDistribution.err, "--sample w0=normall(1e-3,1e-4)"));
+    CHECK(says(badDistribution.err, "did you mean 'normal'?"));
     const auto badOutput = runBeamrotor(
         {"study", "problems/pump_rod.yaml", "--sweep", "eta=0,0.4", "--output", "reaction lefft uy"});
     CHECK(badOutput.exitCode == 2);
     CHECK(says(badOutput.err, "--output reaction lefft uy"));
-    CHECK(says(badOutput.err, "did you mean left?"));
+    CHECK(says(badOutput.err, "did you mean 'left'?"));
     const auto noCount =
-        runBeamrotor({"study", "problems/pump_rod.yaml", "--sample", "w0=normal(1mm,0.1mm)"});
+        runBeamrotor({"study", "problems/pump_rod.yaml", "--sample", "w0=normal(1e-3,1e-4)"});
     CHECK(noCount.exitCode == 2);
     CHECK(says(noCount.err, "samples"));
     const auto wrongUnit = runBeamrotor(
