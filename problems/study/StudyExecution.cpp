@@ -24,6 +24,13 @@ struct ReorderBuffer {
   long long next = 0;  ///< the row the sink gets next
   bool stopped = false;
   std::exception_ptr failure;
+  /// Stops every thread, keeping the first failure.
+  void stop(std::exception_ptr why) {
+    std::lock_guard<std::mutex> guard(lock);
+    if (!failure) failure = why;
+    stopped = true;
+    changed.notify_all();
+  }
 };
 
 }  // namespace
@@ -57,10 +64,7 @@ void solvePoints(const StudyPlan& plan, const DesignPoints& points, int threads,
         }
       }
     } catch (...) {
-      std::lock_guard<std::mutex> guard(buffer.lock);
-      if (!buffer.failure) buffer.failure = std::current_exception();
-      buffer.stopped = true;
-      buffer.changed.notify_all();
+      buffer.stop(std::current_exception());
     }
   };
   std::vector<std::thread> workers;
@@ -81,10 +85,7 @@ void solvePoints(const StudyPlan& plan, const DesignPoints& points, int threads,
       buffer.changed.notify_all();
     }
   } catch (...) {
-    std::lock_guard<std::mutex> guard(buffer.lock);
-    if (!buffer.failure) buffer.failure = std::current_exception();
-    buffer.stopped = true;
-    buffer.changed.notify_all();
+    buffer.stop(std::current_exception());
   }
   for (std::thread& t : workers) t.join();
   if (buffer.failure) std::rethrow_exception(buffer.failure);
