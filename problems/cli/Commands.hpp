@@ -10,6 +10,7 @@
 #include "problems/bench/Bench.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
 #include "problems/run/Study.hpp"
+#include "problems/study/DesignStudyRun.hpp"
 
 namespace beamrotor::cli {
 
@@ -53,5 +54,9 @@ struct OverlayRequest {
 
 /// `beamrotor overlay` (OverlayCommand.cpp): the static diagrams of several decks on one chart.
 int overlayCommand(const OverlayRequest& request, std::ostream& out, std::ostream& err);
+
+/// `beamrotor study` (StudyCommand.cpp): a design study written as study.csv, summary.json
+/// and the worst point's results; under mpirun only rank 0 prints and writes.
+int studyCommand(const DesignStudyRequest& request, std::ostream& out, std::ostream& err);
 
 }  // namespace beamrotor::cli

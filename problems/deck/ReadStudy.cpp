@@ -139,83 +139,6 @@ void requireNamed(const Field& f, const std::string& name, const std::vector<std
            "s: " + joinNames(names) + ")");
 }
 
-/// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
-/// returns the name of the analysis it reads.
-std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
-                            const std::optional<Field>& analysisField, bool applicable) {
-  const Deck& deck = c.deck;
-  // 1. The analysis: named, or the first of the right type.
-  const DeckAnalysis* analysis = nullptr;
-  if (analysisField) {
-    const std::string name = analysisField->name();
-    std::vector<std::string> names;
-    for (const DeckAnalysis& a : deck.analyses) {
-      if (a.name == name) analysis = &a;
-      names.push_back(a.name);
-    }
-    if (!analysis)
-      analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
-                          " (analyses: " + joinNames(names) + ")");
-    if (!q.readsFrom(analysis->type))
-      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" + name +
-                          "' is " + analysis->type);
-  } else {
-    for (const DeckAnalysis& a : deck.analyses)
-      if (!analysis && q.readsFrom(a.type)) analysis = &a;
-    if (!analysis)
-      f.fail("'" + q.text + "' needs a " + q.analysisType() +
-             " analysis; add {type: " + q.analysisType() + "} to analyses");
-  }
-
-  // 2. The names and dofs it refers to.
-  if (q.kind == Quantity::Kind::reaction) {
-    std::vector<std::string> names;
-    const DeckSupport* support = nullptr;
-    for (const DeckSupport& s : deck.supports) {
-      if (s.name == q.target) support = &s;
-      names.push_back(s.name);
-    }
-    if (!support)
-      f.fail("no support named '" + q.target + "'" + didYouMean(q.target, names) +
-             " (supports: " + joinNames(names) + ")");
-    std::vector<std::string> held;
-    bool holds = false;
-    for (const auto& [d, v] : support->dofs) {
-      held.emplace_back(dofName(d));
-      holds = holds || d == q.dof;
-    }
-    if (!holds)
-      f.fail("support '" + q.target + "' does not hold " + std::string(dofName(q.dof)) +
-             " (it holds " + joinNames(held) + "), so its reaction there is zero by definition");
-  }
-  if (q.kind == Quantity::Kind::displacement) {
-    std::vector<std::string> names;
-    for (const DeckPoint& p : deck.points) names.push_back(p.name);
-    requireNamed(f, q.target, names, "point");
-    if (!deck.dofs.contains(q.dof))
-      f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
-             c.carriedNames() + ")");
-    resolveSide(deck, q, f);
-  }
-  if (q.kind == Quantity::Kind::memberForce || q.kind == Quantity::Kind::memberDeflection) {
-    if (!deck.frame)
-      f.fail("member quantities need a frame (nodes: and members:); this deck is a line");
-    std::vector<std::string> names;
-    for (const DeckSegment& s : deck.segments) names.push_back(s.name);
-    requireNamed(f, q.target, names, "member");
-  }
-  if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
-    f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
-  if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
-  if ((q.kind == Quantity::Kind::frequency || q.kind == Quantity::Kind::bucklingFactor) &&
-      q.mode > analysis->modes)
-    f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
-           "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
-  resolveRotorQuantity(c, q, f, *analysis);
-  resolveCrankQuantity(q, f, *analysis);
-  return analysis->name;
-}
-
 /// `paper:` (a source's printed figure that the reference is not) and `reason:` (why they
 /// differ) come together: a differing figure without its reason would only puzzle a reader.
 void readPaperFigure(const Context& c, const Field& f, DeckCheck& k) {
@@ -313,6 +236,81 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
 }
 
 }  // namespace
+
+std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
+                            const std::optional<Field>& analysisField, bool applicable) {
+  const Deck& deck = c.deck;
+  // 1. The analysis: named, or the first of the right type.
+  const DeckAnalysis* analysis = nullptr;
+  if (analysisField) {
+    const std::string name = analysisField->name();
+    std::vector<std::string> names;
+    for (const DeckAnalysis& a : deck.analyses) {
+      if (a.name == name) analysis = &a;
+      names.push_back(a.name);
+    }
+    if (!analysis)
+      analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
+                          " (analyses: " + joinNames(names) + ")");
+    if (!q.readsFrom(analysis->type))
+      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" + name +
+                          "' is " + analysis->type);
+  } else {
+    for (const DeckAnalysis& a : deck.analyses)
+      if (!analysis && q.readsFrom(a.type)) analysis = &a;
+    if (!analysis)
+      f.fail("'" + q.text + "' needs a " + q.analysisType() +
+             " analysis; add {type: " + q.analysisType() + "} to analyses");
+  }
+
+  // 2. The names and dofs it refers to.
+  if (q.kind == Quantity::Kind::reaction) {
+    std::vector<std::string> names;
+    const DeckSupport* support = nullptr;
+    for (const DeckSupport& s : deck.supports) {
+      if (s.name == q.target) support = &s;
+      names.push_back(s.name);
+    }
+    if (!support)
+      f.fail("no support named '" + q.target + "'" + didYouMean(q.target, names) +
+             " (supports: " + joinNames(names) + ")");
+    std::vector<std::string> held;
+    bool holds = false;
+    for (const auto& [d, v] : support->dofs) {
+      held.emplace_back(dofName(d));
+      holds = holds || d == q.dof;
+    }
+    if (!holds)
+      f.fail("support '" + q.target + "' does not hold " + std::string(dofName(q.dof)) +
+             " (it holds " + joinNames(held) + "), so its reaction there is zero by definition");
+  }
+  if (q.kind == Quantity::Kind::displacement) {
+    std::vector<std::string> names;
+    for (const DeckPoint& p : deck.points) names.push_back(p.name);
+    requireNamed(f, q.target, names, "point");
+    if (!deck.dofs.contains(q.dof))
+      f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
+             c.carriedNames() + ")");
+    resolveSide(deck, q, f);
+  }
+  if (q.kind == Quantity::Kind::memberForce || q.kind == Quantity::Kind::memberDeflection) {
+    if (!deck.frame)
+      f.fail("member quantities need a frame (nodes: and members:); this deck is a line");
+    std::vector<std::string> names;
+    for (const DeckSegment& s : deck.segments) names.push_back(s.name);
+    requireNamed(f, q.target, names, "member");
+  }
+  if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
+    f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
+  if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
+  if ((q.kind == Quantity::Kind::frequency || q.kind == Quantity::Kind::bucklingFactor) &&
+      q.mode > analysis->modes)
+    f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
+           "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
+  resolveRotorQuantity(c, q, f, *analysis);
+  resolveCrankQuantity(q, f, *analysis);
+  return analysis->name;
+}
 
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides) {
   readAnalyses(c);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,11 @@ void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r);
 /// Fails at `f` when a crank quantity asks for what analysis `a` was not given (masses, a
 /// plunger, a lambda outside its table).
 void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis& a);
+/// Fails at `f` unless the quantity's names exist in the deck and its analysis (the one
+/// `analysisField` names, else the first that can give it) can give it; returns the name of
+/// the analysis it reads. `applicable`: whether a check's `when:` holds (history times).
+std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
+                            const std::optional<Field>& analysisField, bool applicable);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 
