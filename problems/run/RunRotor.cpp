@@ -12,6 +12,7 @@
 #include "fem/rotor/RotorModes.hpp"
 #include "fem/rotor/RotorStability.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
+#include "fem/timing/Stopwatch.hpp"
 
 namespace beamrotor {
 
@@ -27,6 +28,21 @@ std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
       curve.eccentricity.push_back(eps);
       curve.attitude.push_back(attitudeAngle(eps));
       curve.sommerfeld.push_back(b.journal->sommerfeld(w));
+    }
+    out.push_back(std::move(curve));
+  }
+  return out;
+}
+
+/// The deck's bearings whose coefficients change with speed: their kxx and kyy.
+std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
+  std::vector<BearingStiffnessCurve> out;
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    if (b.speeds.empty()) continue;
+    BearingStiffnessCurve curve{b.name, b.speeds, {}, {}, {}, {}};
+    for (const BearingCoefficients& k : b.table) {
+      curve.kxx.push_back(k.kyy);
+      curve.kyy.push_back(k.kzz);
     }
     out.push_back(std::move(curve));
   }
@@ -105,6 +121,24 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
         for (const Orbit& o : orbits) amplitudes.push_back(o.major());
         out.peaks.push_back(readResponsePeaks(out.unbalance->speeds, amplitudes, *r.operating));
       }
+  } else if (a.type == "critical-speed-map") {
+    Stopwatch clock;
+    out.map = solveCriticalSpeedMap(model, r.stiffnesses, r.criticalSpeeds);
+    out.mapTime = clock.lap();
+    out.mapBearings = bearingStiffnessCurves(deck);
+    for (BearingStiffnessCurve& b : out.mapBearings) {
+      b.kxxCrossings = mapCrossings(*out.map, b.speeds, b.kxx);
+      b.kyyCrossings = mapCrossings(*out.map, b.speeds, b.kyy);
+    }
+  } else if (a.type == "bearing-loads") {
+    Stopwatch clock;
+    const auto& g = r.gravity;
+    out.gravityLoads = solveGravityLoads(
+        model, {g[0], g[1], g[2]},
+        r.rigidBearings ? BearingSupport::rigid : BearingSupport::elastic, r.speed);
+    out.loadsTime = clock.lap();
+    for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
+    out.rigidBearings = r.rigidBearings;
   } else if (a.type == "frequency-response") {
     const NodeDof in{model.node(r.inputPoint), r.inputDof};
     const NodeDof to{model.node(r.outputPoint), r.outputDof};

@@ -1,0 +1,139 @@
+// The undamped critical-speed map of a uniform shaft on two end bearings against closed
+// forms: pinned-pinned at high stiffness, a rigid shaft on two springs at low stiffness, the
+// free-free beam above it; and the gyroscopic (forward synchronous) asymptote of a Rayleigh
+// shaft.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "elements/Bearing.hpp"
+#include "fem/rotor/CriticalSpeedMap.hpp"
+#include "tests/Helpers.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+/// A uniform steel shaft along x (L 1 m, D 50 mm unless given) with bearings at both ends.
+struct MapShaft {
+  double L = 1.0, D = 0.05;
+  std::shared_ptr<const Section> section = steelCircle(D);
+  double rhoA() const { return section->material.rho * kPi * D * D / 4; }
+  double rhoI() const { return section->material.rho * kPi * std::pow(D, 4) / 64; }
+  double EI() const { return section->material.E * kPi * std::pow(D, 4) / 64; }
+
+  void build(Model& model, int elements, bool rotaryInertia) const {
+    const Line line = uniformBeam(model, L, section, elements, DofSet::lateral(),
+                                  {BeamTheory::eulerBernoulli, MassModel::consistent,
+                                   rotaryInertia});
+    for (int node : {line.nodes.front(), line.nodes.back()})
+      model.add<Bearing>(node, BearingCoefficients::isotropic(1e7));
+  }
+};
+
+/// Euler-Bernoulli beam of length L with (beta_n L) from its frequency equation:
+/// omega = (beta_n L)^2 / L^2 sqrt(E I / (rho A)).
+double beamFrequency(const MapShaft& s, double betaL) {
+  return betaL * betaL / (s.L * s.L) * std::sqrt(s.EI() / s.rhoA());
+}
+
+}  // namespace
+
+TEST_SUITE("critical speed map") {
+  TEST_CASE("uniform shaft without rotary inertia: pinned-pinned, rigid-body and free-free limits") {
+    // No rotary inertia, so no gyroscopic moments: the critical speeds are the natural
+    // frequencies of the non-rotating Euler-Bernoulli shaft on springs k at both ends.
+    const MapShaft shaft;
+    Model model;
+    shaft.build(model, 40, false);
+    // k from 10 N/m (1.6e-4 of the shaft's 48 E I / L^3 = 5.9e4 N/m... scale E I / L^3 =
+    // 6.1e4 N/m) to 1e12 N/m (1.6e7 times it).
+    const CriticalSpeedMap map = solveCriticalSpeedMap(model, {10, 1e5, 1e12}, 4);
+    REQUIRE(map.speeds.size() == 3);
+    REQUIRE(map.pinned.size() == 4);
+    REQUIRE(map.freeFree.size() == 4);
+    const double kShaft = shaft.EI() / std::pow(shaft.L, 3);
+
+    // Pinned asymptote: omega_n = (n pi / L)^2 sqrt(E I / (rho A)), i.e. beta_n L = n pi.
+    // 40 Hermite elements: the error grows as (n h)^4; measured 1.2e-9, 1.9e-8, 9.7e-8,
+    // 3.1e-7 for n = 1..4 (20 elements: 16x these, order 4). Asked: 1e-6.
+    for (int n = 1; n <= 4; ++n)
+      CHECK(relError(map.pinned[n - 1], beamFrequency(shaft, n * kPi)) < 1e-6);
+    // At k = 1e12 N/m the bearings deflect 1 / (1.6e7) of the shaft: the map meets the
+    // asymptote to a few 1e-7 (measured 6e-8 .. 1.3e-6 growing with n as the modes' end
+    // slopes... asked 1e-5).
+    for (int n = 0; n < 4; ++n) CHECK(relError(map.speeds[2][n], map.pinned[n]) < 1e-5);
+
+    // Free-free asymptote: beta_n L = 4.730041, 7.853205, 10.995608, 14.137165 (roots of
+    // cos(bL) cosh(bL) = 1, e.g. Blevins, Formulas for Natural Frequency and Mode Shape, table
+    // 8-1). Same discretisation error as above; asked 1e-6 (printed digits: 1e-6 relative on
+    // (beta L)^2).
+    const double freeFree[] = {4.730041, 7.853205, 10.995608, 14.137165};
+    for (int n = 0; n < 4; ++n)
+      CHECK(relError(map.freeFree[n], beamFrequency(shaft, freeFree[n])) < 2e-6);
+
+    // k = 10 N/m: a rigid shaft on two end springs. Bounce: 2 k against the mass m,
+    // omega^2 = 2 k / m; rocking about the middle: moment 2 k (L/2)^2 theta against the
+    // diametral inertia m L^2 / 12 (no rotary inertia), omega^2 = 6 k / m. The shaft's own
+    // flexibility lowers them by O(k / (E I / L^3)) = 1.6e-4; measured 2e-6 and 3e-5.
+    const double m = shaft.rhoA() * shaft.L, k = 10;
+    CHECK(relError(map.speeds[0][0], std::sqrt(2 * k / m)) < 1e-4);
+    CHECK(relError(map.speeds[0][1], std::sqrt(6 * k / m)) < 1e-4);
+    // and the next two are the free-free modes, raised by the springs by O(k / kShaft).
+    for (int n = 0; n < 2; ++n)
+      CHECK(relError(map.speeds[0][2 + n], map.freeFree[n]) < k / kShaft);
+    // In between the curves rise monotonically with k.
+    for (int n = 0; n < 4; ++n) {
+      CHECK(map.speeds[1][n] > map.speeds[0][n]);
+      CHECK(map.speeds[2][n] > map.speeds[1][n]);
+    }
+  }
+
+  TEST_CASE("Rayleigh shaft: the forward synchronous pinned asymptote with gyroscopic moments") {
+    // With rotary inertia the sections' gyroscopic moments stiffen forward whirl. The Rayleigh
+    // shaft simply supported at both ends (the equation derived in test_shaft_whirl.cpp, from
+    // Lalanne and Ferraris 1998, ch. 3) whirls at w with spin Omega where
+    //   (rho A + rho I k^2) w^2 - s rho Ip k^2 Omega w - E I k^4 = 0,  k = n pi / L, Ip = 2 I;
+    // forward (s = +1) at w = Omega: Omega^2 = E I k^4 / (rho A - rho I k^2). L / D = 10 makes
+    // the gyroscopic effect 0.6 % on n = 1 and 5.9 % on n = 3 (against the non-rotating shaft).
+    MapShaft shaft;
+    shaft.D = 0.1;
+    shaft.section = steelCircle(shaft.D);
+    Model model;
+    shaft.build(model, 40, true);
+    const CriticalSpeedMap map = solveCriticalSpeedMap(model, {1e13}, 3);
+    for (int n = 1; n <= 3; ++n) {
+      const double k = n * kPi / shaft.L;
+      const double exact = k * k * std::sqrt(shaft.EI() / (shaft.rhoA() - shaft.rhoI() * k * k));
+      // Hermite elements with consistent rotary inertia: measured 1e-9 .. 1e-7 (order 4, as in
+      // test_shaft_whirl.cpp); asked 1e-6.
+      CHECK(relError(map.pinned[n - 1], exact) < 1e-6);
+      // Non-rotating value, to show the test sees the gyroscopic term.
+      const double atRest = k * k * std::sqrt(shaft.EI() / (shaft.rhoA() + shaft.rhoI() * k * k));
+      CHECK(relError(map.pinned[n - 1], atRest) > 1e-3);
+    }
+  }
+
+  TEST_CASE("crossings of a bearing stiffness curve with the map") {
+    // A bearing whose stiffness does not change with speed, k0 = one of the map's points,
+    // tabulated over a speed range that holds the first two critical speeds there: it meets
+    // lines 1 and 2 exactly at the map's values (the interpolation passes through its points;
+    // the bisection stops at 1e-13 of the speed).
+    const MapShaft shaft;
+    Model model;
+    shaft.build(model, 20, false);
+    const CriticalSpeedMap map = solveCriticalSpeedMap(model, {1e5, 1e6, 1e7}, 3);
+    const double k0 = 1e6;
+    const double top = 0.5 * (map.speeds[1][1] + map.speeds[1][2]);
+    const auto crossings = mapCrossings(map, {0.1 * map.speeds[1][0], top}, {k0, k0});
+    REQUIRE(crossings.size() == 2);
+    for (int j = 0; j < 2; ++j) {
+      CHECK(crossings[j].line == j);
+      CHECK(relError(crossings[j].speed, map.speeds[1][j]) < 1e-12);
+      CHECK(crossings[j].stiffness == doctest::Approx(k0));
+    }
+    // A stiffness outside the map's range has no crossing.
+    CHECK(mapCrossings(map, {1, top}, {1e8, 1e8}).empty());
+  }
+}
