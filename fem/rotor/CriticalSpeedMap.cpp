@@ -98,19 +98,22 @@ std::vector<double> forwardRoots(const SynchronousProblem& p, int count, double 
     std::vector<Root> roots;
     for (int j = 0; j < int(e.values.size()); ++j) {
       const std::complex<double> lambda = e.values[j];
-      if (!(lambda.imag() > floor) || std::abs(lambda.real()) > kImaginary * std::abs(lambda))
+      // Infinite eigenvalues (a singular M2) and real ones are no critical speeds.
+      if (!std::isfinite(std::abs(lambda)) || !(lambda.imag() > floor) ||
+          std::abs(lambda.real()) > kImaginary * std::abs(lambda))
         continue;
       // Omega^2 is real, so the real and imaginary parts of the shape are both shapes.
-      const Eigen::VectorXcd& q = e.vectors.col(j);
-      const Eigen::VectorXd x = q.real().norm() >= q.imag().norm() ? q.real() : q.imag();
+      const Eigen::VectorXcd q = e.vectors.col(j);
+      Eigen::VectorXd x = q.real();
+      if (q.imag().norm() > x.norm()) x = q.imag();
       roots.push_back({lambda.imag(), whirlMeasure(p, x)});
     }
     std::sort(roots.begin(), roots.end(),
               [](const Root& a, const Root& b) { return a.speed < b.speed; });
     std::vector<double> forward;
     for (std::size_t j = 0; j < roots.size();) {
-      std::size_t end = j;
-      bool isForward = false;
+      std::size_t end = j + 1;
+      bool isForward = roots[j].whirl > kClearlyBackward;
       while (end < roots.size() && roots[end].speed - roots[j].speed <= kSameRoot * roots[j].speed)
         isForward = isForward || roots[end++].whirl > kClearlyBackward;
       if (isForward) forward.push_back(roots[j].speed);

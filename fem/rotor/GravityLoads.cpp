@@ -64,8 +64,9 @@ GravityLoads solveGravityLoads(const Model& model, const Eigen::Vector3d& gravit
   const std::vector<int> index = numberingWithout(n, rigid ? supports.equations
                                                            : std::vector<int>{});
   const int kept = n - (rigid ? int(supports.equations.size()) : 0);
+  const SparseMatrix Kkept = restrictedTo(K, index, kept);
   SparseLU lu;
-  lu.compute(restrictedTo(K, index, kept));
+  lu.compute(Kkept);
   if (!lu.healthy(kSingularRcond))
     throw SolveError("bearing loads: the rotor is not held by its bearings (and supports): " +
                      std::string(rigid ? "pinned" : "elastic") +

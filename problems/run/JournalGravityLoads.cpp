@@ -36,7 +36,8 @@ Deck withJournalLoads(const Deck& deck) {
   const auto model = buildModel(placeholder);
   GravityLoads loads;
   try {
-    loads = solveGravityLoads(*model, {0, -kStandardGravity, 0}, BearingSupport::rigid);
+    loads = solveGravityLoads(*model, Eigen::Vector3d(0.0, -kStandardGravity, 0.0),
+                              BearingSupport::rigid);
   } catch (const std::exception& e) {
     for (const DeckBearing& b : deck.rotor.bearings)
       if (waitsForLoad(b)) throw DeckError(deck.path, b.place, std::string("load: gravity: ") + e.what());

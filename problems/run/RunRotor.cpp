@@ -134,7 +134,7 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     Stopwatch clock;
     const auto& g = r.gravity;
     out.gravityLoads = solveGravityLoads(
-        model, {g[0], g[1], g[2]},
+        model, Eigen::Vector3d(g[0], g[1], g[2]),
         r.rigidBearings ? BearingSupport::rigid : BearingSupport::elastic, r.speed);
     out.loadsTime = clock.lap();
     for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
