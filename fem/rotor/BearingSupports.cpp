@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "elements/Bearing.hpp"
 #include "fem/model/Model.hpp"
+#include "fem/model/RotorElement.hpp"
 
 namespace beamrotor {
 
@@ -12,8 +12,9 @@ BearingSupports bearingSupports(const RotorSystem& system) {
   const DofMap& dofs = system.dofs();
   BearingSupports out{system.stiffness(0), {}};
   for (const auto& e : system.model().elements()) {
-    const auto* b = dynamic_cast<const Bearing*>(e.get());
-    if (!b) continue;
+    // A bearing: a speed-dependent element of kind "bearing" (elements/Bearing.hpp).
+    const auto* b = dynamic_cast<const SpeedDependentElement*>(e.get());
+    if (!b || b->kind() != "bearing") continue;
     const auto d = b->dofs();
     const ElementMatrix k = b->stiffnessAt(0);
     for (int r = 0; r < int(d.size()); ++r) {

@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "elements/Bearing.hpp"
+#include "fem/model/RotorElement.hpp"
 #include "fem/rotor/BearingSupports.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -84,8 +84,8 @@ GravityLoads solveGravityLoads(const Model& model, const Eigen::Vector3d& gravit
   const Eigen::VectorXd pinReaction = K * u - f;
   std::vector<bool> taken(n, false);
   for (int i = 0; i < int(model.elements().size()); ++i) {
-    const auto* b = dynamic_cast<const Bearing*>(model.elements()[i].get());
-    if (!b) continue;
+    const auto* b = dynamic_cast<const SpeedDependentElement*>(model.elements()[i].get());
+    if (!b || b->kind() != "bearing") continue;
     const auto d = b->dofs();  // uy, uz
     BearingForce force{i, d[0].node, model.nodes()[d[0].node].x(), 0, 0};
     const int y = dofs.equation(d[0]), z = dofs.equation(d[1]);
@@ -96,10 +96,10 @@ GravityLoads solveGravityLoads(const Model& model, const Eigen::Vector3d& gravit
           taken[eq] = true;
         }
     } else {
-      const BearingCoefficients k = b->coefficientsAt(speed);
+      const ElementMatrix k = b->stiffnessAt(speed);  // over (uy, uz)
       const double uy = dofs.isFree(y) ? u[y] : 0, uz = dofs.isFree(z) ? u[z] : 0;
-      force.fy = -(k.kyy * uy + k.kyz * uz);
-      force.fz = -(k.kzy * uy + k.kzz * uz);
+      force.fy = -(k(0, 0) * uy + k(0, 1) * uz);
+      force.fz = -(k(1, 0) * uy + k(1, 1) * uz);
     }
     out.bearings.push_back(force);
   }

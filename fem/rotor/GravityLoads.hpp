@@ -24,7 +24,7 @@ enum class BearingSupport {
 /// The force a bearing exerts on the shaft (N, global y and z): the bearing carries its
 /// opposite.
 struct BearingForce {
-  int element = -1;  ///< index into model.elements() (a Bearing)
+  int element = -1;  ///< index into model.elements() (a bearing)
   int node = -1;
   double x = 0;  ///< the node's station (m)
   double fy = 0, fz = 0;
