@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "problems/cli/Summary.hpp"
 
@@ -109,6 +110,47 @@ std::string modeShapeText(const FormeShaftMode& m) {
   }
 }
 
+void printCriticalSpeedMap(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const CriticalSpeedMap& m = *r.map;
+  out << "critical-speed-map analysis '" << a.name << "' (" << m.stiffness.size()
+      << " bearing stiffnesses " << formatValue(m.stiffness.front()) << " to "
+      << formatValue(m.stiffness.back()) << " N/m, forward synchronous, "
+      << formatValue(r.mapTime) << " s)\n";
+  const auto list = [&](const char* what, const std::vector<double>& speeds) {
+    out << "    " << what;
+    for (double s : speeds) out << " " << formatValue(s * kRpm);
+    out << " rpm\n";
+  };
+  list("pinned bearings:", m.pinned);
+  list("free-free rotor:", m.freeFree);
+  for (const BearingStiffnessCurve& b : r.mapBearings)
+    for (const auto& [what, crossings] :
+         {std::pair{"kxx", &b.kxxCrossings}, std::pair{"kyy", &b.kyyCrossings}}) {
+      out << "    bearing " << b.name << " " << what << " meets the map at";
+      if (crossings->empty()) out << " no critical speed in range";
+      for (const MapCrossing& c : *crossings)
+        out << " " << formatValue(c.speed * kRpm) << " rpm (critical speed " << c.line + 1
+            << ")";
+      out << "\n";
+    }
+}
+
+void printBearingLoads(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const GravityLoads& g = *r.gravityLoads;
+  out << "bearing-loads analysis '" << a.name << "' (" << (r.rigidBearings ? "pinned" : "elastic")
+      << " bearings, weight " << formatValue(g.weight.norm()) << " N)\n";
+  for (std::size_t i = 0; i < g.bearings.size(); ++i) {
+    const BearingForce& b = g.bearings[i];
+    out << "    bearing " << r.bearingNames.at(i) << " at x = " << formatValue(b.x)
+        << " m carries " << formatValue(std::hypot(b.fy, b.fz)) << " N (fy " << formatValue(b.fy)
+        << ", fz " << formatValue(b.fz) << " N on the shaft)\n";
+  }
+  const int worst = g.largestSag();
+  if (worst >= 0)
+    out << "    largest sag " << formatValue(std::hypot(g.uy[worst], g.uz[worst])) << " m at x = "
+        << formatValue(g.x[worst]) << " m\n";
+}
+
 void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
   out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
       << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
@@ -139,6 +181,8 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a) {
   if (r.unbalance) printUnbalance(out, a, r);
   if (r.rigidBody) printRigidBody(out, a, *r.rigidBody);
   if (r.frequencyResponse) printFrequencyResponse(out, a, r);
+  if (r.map) printCriticalSpeedMap(out, a, r);
+  if (r.gravityLoads) printBearingLoads(out, a, r);
 }
 
 }  // namespace beamrotor::cli

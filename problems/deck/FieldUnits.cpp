@@ -58,6 +58,8 @@ const Table& table() {
     add(t, "analyses[].", {"speed_rpm", "from_rpm", "to_rpm"}, dim::angularSpeed, kRpm);
     add(t, "analyses[].unbalance[].", {"me"}, dim::massLength);
     add(t, "analyses[].", {"from_hz", "to_hz"}, dim::frequency);
+    add(t, "analyses[].", {"from_k", "to_k"}, dim::stiffness);
+    add(t, "analyses[].", {"g"}, dim::acceleration);
     add(t, "analyses[].operating.", {"min_rpm", "max_rpm"}, dim::angularSpeed, kRpm);
     add(t, "analyses[].unbalance[].", {"phase"}, dim::angle);
     for (const char* prefix : {"bearings[].", "bearings[].table[]."}) {

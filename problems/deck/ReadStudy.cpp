@@ -42,7 +42,8 @@ void readAnalyses(Context& c) {
     a.place = f.place();
     a.type = f.require("type").choice(
         {"static", "modal", "buckling", "transient", "rotor", "campbell", "unbalance",
-         "rigid-body", "frequency-response", "crank-slider"});
+         "rigid-body", "frequency-response", "crank-slider", "critical-speed-map",
+         "bearing-loads"});
     if (a.type == "static") {
       f.allowOnly({"type", "name", "second_order"}, "a static analysis");
       if (auto s = f.get("second_order")) {

@@ -1,8 +1,15 @@
 // Files of the rotor analyses (see RotorOutput.hpp).
 #include "problems/output/RotorOutput.hpp"
 
+#include <algorithm>
 #include <optional>
+#include <string>
+#include <vector>
 
+#include "problems/deck/Field.hpp"
+#include "problems/output/BearingLoadTables.hpp"
+#include "problems/output/CriticalSpeedMapChart.hpp"
+#include "problems/output/CriticalSpeedMapTables.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/RotorBearingChart.hpp"
 #include "problems/output/RotorCharts.hpp"
@@ -29,6 +36,15 @@ PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
   if (r.unbalance && r.operating) p.api684 = api684Table(api684Csv(stem), r);
   if (r.frequencyResponse)
     p.frf = frequencyResponseTable(frequencyResponseCsv(stem), *r.frequencyResponse);
+  if (r.map) {
+    p.map = criticalSpeedMapTable(criticalSpeedMapCsv(stem), *r.map);
+    p.mapBearings = mapBearingsTable(mapBearingsCsv(stem), r.mapBearings);
+    p.mapCrossings = mapCrossingsTable(mapCrossingsCsv(stem), r.mapBearings);
+  }
+  if (r.gravityLoads) {
+    p.bearingLoads = bearingLoadsTable(bearingLoadsCsv(stem), *r.gravityLoads, r.bearingNames);
+    p.sag = sagTable(sagCsv(stem), *r.gravityLoads);
+  }
   return p;
 }
 
@@ -39,6 +55,20 @@ std::string fitted(const std::string& caption) {
   constexpr std::size_t kWidest = 90;  // characters across a 900-pixel chart title
   const std::size_t list = caption.find(" (");
   return caption.size() > kWidest && list != std::string::npos ? caption.substr(0, list) : caption;
+}
+
+/// x as formatNumber writes it, the exponent without '+' and leading zeros: 1e6, 2.5e-5.
+std::string stiffnessText(double x) {
+  std::string s = formatNumber(x);
+  const std::size_t e = s.find('e');
+  if (e == std::string::npos) return s;
+  std::string exponent = s.substr(e + 1), sign;
+  if (exponent[0] == '+' || exponent[0] == '-') {
+    sign = exponent[0] == '-' ? "-" : "";
+    exponent.erase(0, 1);
+  }
+  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+  return s.substr(0, e + 1) + sign + exponent;
 }
 
 }  // namespace
@@ -95,6 +125,28 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
     if (charts && p.bearings->rowCount() > 0)
       drawChart(dir, journalBearingsDiagram(caption, journalBearingsChart(stem), *p.bearings,
                                             journalBearingsCsv(stem), names));
+  }
+  if (p.map) {
+    p.map->write(dir / criticalSpeedMapCsv(stem));
+    std::vector<std::string> names;
+    for (const BearingStiffnessCurve& b : r.mapBearings) names.push_back(b.name);
+    if (!names.empty()) {
+      p.mapBearings->write(dir / mapBearingsCsv(stem));
+      p.mapCrossings->write(dir / mapCrossingsCsv(stem));
+    }
+    const std::string what = "Undamped critical-speed map, forward synchronous whirl: k = " +
+                             stiffnessText(r.map->stiffness.front()) + " to " +
+                             stiffnessText(r.map->stiffness.back()) + " N/m at every bearing, " +
+                             std::to_string(r.map->stiffness.size()) + " points";
+    if (charts && p.map->rowCount() > 0)
+      drawChart(dir, criticalSpeedMapDiagram(caption + "\n" + what, criticalSpeedMapChart(stem),
+                                             *r.map, {*p.map, criticalSpeedMapCsv(stem)},
+                                             {*p.mapBearings, mapBearingsCsv(stem)},
+                                             {*p.mapCrossings, mapCrossingsCsv(stem)}, names));
+  }
+  if (p.bearingLoads) {
+    p.bearingLoads->write(dir / bearingLoadsCsv(stem));
+    p.sag->write(dir / sagCsv(stem));
   }
   if (p.unbalance) {
     p.unbalance->write(dir / unbalanceCsv(stem));

@@ -18,6 +18,7 @@
 #include "problems/run/AdequateModel.hpp"
 #include "problems/run/Measure.hpp"
 #include "problems/run/DisplacementWarning.hpp"
+#include "problems/run/JournalGravityLoads.hpp"
 #include "problems/run/ModelBuilder.hpp"
 #include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/OverRefinementWarning.hpp"
@@ -145,6 +146,8 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
 }  // namespace
 
 RunResult runDeck(const Deck& deck) {
+  // Plain journals loaded by the rotor's weight: their tables first, for every later reader.
+  if (needsJournalLoads(deck)) return runDeck(withJournalLoads(deck));
   if (deck.accuracy) {
     RunResult adequate = runAdequateModel(deck);
     adequate.warnings = deck.warnings;

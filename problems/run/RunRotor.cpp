@@ -13,6 +13,7 @@
 #include "fem/rotor/RotorStability.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
 #include "fem/rotor/UnbalancePeaks.hpp"
+#include "fem/timing/Stopwatch.hpp"
 
 namespace beamrotor {
 
@@ -39,6 +40,21 @@ std::optional<OperatingRange> deckOperatingRange(const Deck& deck) {
   for (const DeckAnalysis& a : deck.analyses)
     if (a.type == "unbalance" && a.rotor.operating) return a.rotor.operating;
   return std::nullopt;
+}
+
+/// The deck's bearings whose coefficients change with speed: their kxx and kyy.
+std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
+  std::vector<BearingStiffnessCurve> out;
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    if (b.speeds.empty()) continue;
+    BearingStiffnessCurve curve{b.name, b.speeds, {}, {}, {}, {}};
+    for (const BearingCoefficients& k : b.table) {
+      curve.kxx.push_back(k.kyy);
+      curve.kyy.push_back(k.kzz);
+    }
+    out.push_back(std::move(curve));
+  }
+  return out;
 }
 
 RotorOptions optionsOf(const Deck& deck, const DeckAnalysis& a) {
@@ -130,6 +146,24 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
         out.peaks.push_back(unbalancePeaks(model, deck.rotor.damping, out.unbalance->speeds,
                                            amplitudes, *r.operating));
       }
+  } else if (a.type == "critical-speed-map") {
+    Stopwatch clock;
+    out.map = solveCriticalSpeedMap(model, r.stiffnesses, r.criticalSpeeds);
+    out.mapTime = clock.lap();
+    out.mapBearings = bearingStiffnessCurves(deck);
+    for (BearingStiffnessCurve& b : out.mapBearings) {
+      b.kxxCrossings = mapCrossings(*out.map, b.speeds, b.kxx);
+      b.kyyCrossings = mapCrossings(*out.map, b.speeds, b.kyy);
+    }
+  } else if (a.type == "bearing-loads") {
+    Stopwatch clock;
+    const auto& g = r.gravity;
+    out.gravityLoads = solveGravityLoads(
+        model, Eigen::Vector3d(g[0], g[1], g[2]),
+        r.rigidBearings ? BearingSupport::rigid : BearingSupport::elastic, r.speed);
+    out.loadsTime = clock.lap();
+    for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
+    out.rigidBearings = r.rigidBearings;
   } else if (a.type == "frequency-response") {
     const NodeDof in{model.node(r.inputPoint), r.inputDof};
     const NodeDof to{model.node(r.outputPoint), r.outputDof};
