@@ -70,19 +70,7 @@ struct CampbellJeffcott {
   double k() const { return 48 * E * I() / std::pow(L, 3); }
   double wn() const { return std::sqrt(k() / m); }
   int build(Model& model, double c = 0) const {
-    auto sec = std::make_shared<Section>(
-        Section::circle("shaft", Material::fromEnu("light", E, 0.3, 7850e-12), D));
-    LineSpec spec;
-    spec.dofs = DofSet::lateral();
-    spec.segments.push_back({L, sec, 8, 0, {}});
-    spec.points = {{"left", 0}, {"disk", L / 2}, {"right", L}};
-    buildLine(model, spec);
-    const int disk = model.node("disk");
-    model.add<PointInertia>(disk, DofSet::lateral(), m);
-    for (const char* end : {"left", "right"})
-      model.addSupport({end, model.node(end), {{Dof::uy, 0}, {Dof::uz, 0}}});
-    if (c > 0) model.add<Bearing>(disk, BearingCoefficients{0, 0, 0, 0, c, 0, 0, c});
-    return disk;
+    return test::buildJeffcottRotor(model, L, D, m, E, BearingCoefficients{0, 0, 0, 0, c, 0, 0, c});
   }
 };
 

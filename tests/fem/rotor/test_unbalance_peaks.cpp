@@ -17,6 +17,7 @@
 #include "fem/rotor/RotorUnbalance.hpp"
 #include "fem/rotor/UnbalancePeaks.hpp"
 #include "tests/Helpers.hpp"
+#include "tests/fem/rotor/RotorTestSupport.hpp"
 
 using namespace beamrotor;
 using namespace beamrotor::test;
@@ -32,19 +33,7 @@ struct SplitJeffcott {
   double omega(int i) const { return std::sqrt((k0() + (i == 1 ? dk() : 0)) / m); }
   double zeta(int i) const { return c / (2 * m * omega(i)); }
   int build(Model& model) const {
-    auto sec = std::make_shared<Section>(
-        Section::circle("shaft", Material::fromEnu("light", E, 0.3, 7850e-12), D));
-    LineSpec spec;
-    spec.dofs = DofSet::lateral();
-    spec.segments.push_back({L, sec, 8, 0, {}});
-    spec.points = {{"left", 0}, {"disk", L / 2}, {"right", L}};
-    buildLine(model, spec);
-    const int disk = model.node("disk");
-    model.add<PointInertia>(disk, DofSet::lateral(), m);
-    for (const char* end : {"left", "right"})
-      model.addSupport({end, model.node(end), {{Dof::uy, 0}, {Dof::uz, 0}}});
-    model.add<Bearing>(disk, BearingCoefficients{0, 0, 0, dk(), c, 0, 0, c});
-    return disk;
+    return test::buildJeffcottRotor(model, L, D, m, E, BearingCoefficients{0, 0, 0, dk(), c, 0, 0, c});
   }
 };
 
