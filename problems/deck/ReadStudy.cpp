@@ -1,6 +1,7 @@
 // Deck reader, part 3: what to compute and what to compare: analyses, checks and the sweep.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/FieldUnits.hpp"
@@ -32,7 +33,11 @@ void readAnalyses(Context& c) {
   auto block = c.root.get("analyses");
   if (!block || block->isNull()) {
     // No analyses listed: statics, the one every deck supports.
-    c.deck.analyses.push_back({"static", "static", 0, 0, c.root.place(), {}});
+    DeckAnalysis statics;
+    statics.type = statics.name = "static";
+    statics.modes = 0;
+    statics.place = c.root.place();
+    c.deck.analyses.push_back(std::move(statics));
     return;
   }
   std::vector<std::string> names;
