@@ -1,6 +1,6 @@
-// Undamped critical-speed map: the rotor's forward synchronous critical speeds against an
-// isotropic stiffness k put in place of every bearing of the model (kyy = kzz = k, no
-// cross-coupling, no damping), with its two asymptotes: bearings as pinned supports
+// Undamped critical-speed map: the rotor's critical speeds (gyroscopic moments neglected)
+// against an isotropic stiffness k put in place of every bearing of the model (kyy = kzz = k,
+// no cross-coupling, no damping), with its two asymptotes: bearings as pinned supports
 // (k -> infinity) and the free rotor's flexible modes (k -> 0).
 //
 // A critical speed is a spin speed Omega at which the undamped rotor can whirl at Omega

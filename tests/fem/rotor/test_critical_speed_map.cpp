@@ -94,7 +94,7 @@ TEST_SUITE("critical speed map") {
     // The simply supported Rayleigh shaft, E I w'''' + rho A w_tt - rho I w_xx,tt = 0, with
     // w = sin(k x) e^{i w t}, k = n pi / L: w^2 = E I k^4 / (rho A + rho I k^2). The map
     // neglects gyroscopic moments, so its pinned asymptote is this non-rotating value. L / D =
-    // 10 makes rotary inertia lower n = 1 by 0.6 % and n = 3 by 5 %.
+    // 10 makes rotary inertia lower n = 1 by 0.3 % and n = 3 by 2.7 %.
     MapShaft shaft;
     shaft.D = 0.1;
     shaft.section = steelCircle(shaft.D);
@@ -107,7 +107,7 @@ TEST_SUITE("critical speed map") {
       // Hermite elements with consistent rotary inertia: MEASURE_RAYLEIGH; asked 1e-6.
       CHECK(relError(map.pinned[n - 1], exact) < 1e-6);
       // The Euler-Bernoulli value, to show the test sees the rotary inertia.
-      CHECK(relError(map.pinned[n - 1], beamFrequency(shaft, n * kPi)) > 5e-3);
+      CHECK(relError(map.pinned[n - 1], beamFrequency(shaft, n * kPi)) > 1e-3);
     }
   }
 
