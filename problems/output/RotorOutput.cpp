@@ -134,7 +134,7 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
       p.mapBearings->write(dir / mapBearingsCsv(stem));
       p.mapCrossings->write(dir / mapCrossingsCsv(stem));
     }
-    const std::string what = "Undamped critical-speed map, forward synchronous whirl: k = " +
+    const std::string what = "Undamped critical-speed map, gyroscopic moments neglected: k = " +
                              stiffnessText(r.map->stiffness.front()) + " to " +
                              stiffnessText(r.map->stiffness.back()) + " N/m at every bearing, " +
                              std::to_string(r.map->stiffness.size()) + " points";
