@@ -154,13 +154,15 @@ void printBearingLoads(std::ostream& out, const AnalysisOutcome& a, const RotorO
 void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
   out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
       << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
-      << " kg m^2\n";
+      << " kg m^2 (mode amplitudes scaled to z^2 + rho^2 phi^2 = 1 m^2; bearing loads scale"
+         " with the amplitude)\n";
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const FormeShaftMode& m = r.modes[i];
     out << "    two-dof mode " << i + 1 << " (the paper's " << paperModeName(int(i)) << ")  "
         << formatValue(m.k / (2 * std::numbers::pi)) << " Hz (k = " << formatValue(m.k)
         << " rad/s)  " << modeShapeText(m) << "  F_" << r.points[0] << " = "
-        << formatValue(m.FA) << " N, F_" << r.points[1] << " = " << formatValue(m.FB) << " N\n";
+        << formatValue(m.FA) << " N, F_" << r.points[1] << " = " << formatValue(m.FB)
+        << " N per metre of modal amplitude\n";
   }
 }
 
