@@ -101,9 +101,8 @@ FrameMesh buildFrame(Model& model, const FrameSpec& spec) {
       for (int e = 1; e <= n; ++e) {
         const double f = e == n ? cuts[c + 1] : cuts[c] + piece * e / n;
         const int to = f == 1 ? frame.jointNodes[member.to] : model.addNode(x1 + f * (x2 - x1));
-        // Length and axis from the member, not from node coordinates (LineBuilder.cpp).
-        beams.push_back(&model.add<Beam>(from, to, x2 - x1, piece * L / n, mesh.section,
-                                         spec.dofs, mesh.options,
+        beams.push_back(&model.add<Beam>(from, model.nodes()[from], to, model.nodes()[to],
+                                         mesh.section, spec.dofs, mesh.options,
                                          Eigen::Vector3d(R.row(2).transpose())));
         fractions.push_back(f);
         from = to;
