@@ -13,7 +13,7 @@ endif
 # With ParaView's VTK come pvpython, the ParaView test (tests/paraview) and, for its pictures
 # on a machine without a display, a virtual X server.
 VTK_EXTRAS := $(if $(filter paraview-dev,$(VTK_PACKAGE)),xvfb xauth)
-PACKAGES := cmake g++ make libeigen3-dev libsuitesparse-dev libarpack2-dev $(VTK_PACKAGE) $(VTK_EXTRAS) \
+PACKAGES := cmake g++ make libopenmpi-dev openmpi-bin libeigen3-dev libsuitesparse-dev libarpack2-dev $(VTK_PACKAGE) $(VTK_EXTRAS) \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
             gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest \
             dpkg-dev file libpng-dev libopenblas0-serial
@@ -110,6 +110,14 @@ bench: build
 	$(COLD) out/bench/cold_rotor_200.json -- ./$(BUILD)/beamrotor bench --kind rotor \
 	  --elements 200 --repeat 1 --cold
 	$(PY) tests/bench/compare.py out/bench
+
+# Design-study throughput (never part of `make test`; a few minutes): the pump rod's
+# stroke-and-wear grid of 10^5 points (all reactions and the largest stress per point, the
+# closed-form checks at every point) serially, with --threads 2 and under mpirun -n 2; medians
+# of 3 runs, parallel efficiency, memory per point, tables compared; out/bench/study.json.
+.PHONY: bench-study
+bench-study: build
+	$(PY) tests/bench/study_bench.py --exe ./$(BUILD)/beamrotor --json out/bench/study.json
 
 clean:
 	rm -rf $(BUILD) out

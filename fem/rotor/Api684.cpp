@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 namespace beamrotor {
 
@@ -12,7 +13,32 @@ double crossing(double sa, double a, double sb, double b, double level) {
   return a == b ? sa : sa + (level - a) / (b - a) * (sb - sa);
 }
 
+/// The required margin for the peak's amplification factor and whether the actual one meets
+/// it.
+void judge(ResponsePeak& p, const OperatingRange& operating) {
+  p.requiredMargin = requiredSeparationMargin(p.amplificationFactor, p.speed >= operating.minimum);
+  p.pass = p.requiredMargin == 0 || p.actualMargin >= p.requiredMargin;
+}
+
 }  // namespace
+
+std::string_view amplificationMethodName(AmplificationMethod m) {
+  switch (m) {
+    case AmplificationMethod::halfPower: return "half-power";
+    case AmplificationMethod::modalDamping: return "modal-damping";
+    case AmplificationMethod::none: break;
+  }
+  return "none";
+}
+
+void useModalDamping(ResponsePeak& p, double zeta, const OperatingRange& operating) {
+  if (!(zeta > 0))
+    throw std::invalid_argument("the amplification factor 1 / (2 zeta) needs a damping ratio > 0");
+  p.method = AmplificationMethod::modalDamping;
+  p.dampingRatio = zeta;
+  p.amplificationFactor = 1 / (2 * zeta);
+  judge(p, operating);
+}
 
 double requiredSeparationMargin(double af, bool above) {
   if (af < 2.5) return 0;
@@ -58,6 +84,8 @@ std::vector<ResponsePeak> readResponsePeaks(const std::vector<double>& speeds,
       p.upperHalfPower =
           crossing(speeds[hi], amplitudes[hi], speeds[hi + 1], amplitudes[hi + 1], level);
     p.halfPowerFound = lowFound && highFound;
+    // A side that stopped above the level before the sweep's end met a rising response.
+    p.overlapping = (!lowFound && lo > 0) || (!highFound && hi + 1 < n);
     // 3. Margins against the operating range.
     const bool above = p.speed > operating.maximum;
     const bool below = p.speed < operating.minimum;
@@ -67,9 +95,9 @@ std::vector<ResponsePeak> readResponsePeaks(const std::vector<double>& speeds,
                                                operating.maximum - p.speed) /
                                    operating.maximum;
     if (p.halfPowerFound) {
+      p.method = AmplificationMethod::halfPower;
       p.amplificationFactor = p.speed / (p.upperHalfPower - p.lowerHalfPower);
-      p.requiredMargin = requiredSeparationMargin(p.amplificationFactor, !below);
-      p.pass = p.requiredMargin == 0 || p.actualMargin >= p.requiredMargin;
+      judge(p, operating);
     }
     out.push_back(p);
   }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <random>
 #include <sstream>
 #include <type_traits>
 
@@ -83,6 +84,20 @@ QuadraticEigenpairs nearest(const std::vector<Complex>& lambda,
     out.vectors.col(k) = v / v.norm();
   }
   return out;
+}
+
+/// A starting vector that depends only on its length: entries in [-1, 1) from the minimal
+/// standard generator (Park and Miller; its sequence is fixed by the C++ standard). ARPACK's own
+/// random start continues a generator kept between calls, so the basis it returns for a double
+/// eigenvalue would depend on every ARPACK call made before in the process. Pseudo-random, not
+/// constant: a constant vector is orthogonal to the antisymmetric modes of a symmetric rotor.
+/// `seed` picks another such vector (the retries below need a different start).
+Eigen::VectorXd fixedStart(int size, unsigned seed = 20261124u) {
+  std::minstd_rand generator(seed);
+  Eigen::VectorXd v(size);
+  for (int i = 0; i < size; ++i)
+    v[i] = 2.0 * double(generator() - generator.min()) / double(generator.max() - generator.min() + 1) - 1;
+  return v;
 }
 
 /// Scale s of the state x = (q, lambda q / s): with s near the |lambda| sought, both halves of
@@ -182,9 +197,10 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
   // exactly double whirl pairs, and the Jordan-like cluster at nu = 0 of nearly massless dofs
   // (eigenvalues of size sqrt(eps) |H|). Whether dlahqr's iteration budget suffices then
   // turns on the last bit of H (one ulp of dnrm2 decides it: reference BLAS passes, OpenBLAS
-  // fails, on the same H), so a warm start is retried from ARPACK's own random start, and
-  // then with a larger basis: each gives a different H; the answers are ARPACK's converged
-  // Ritz pairs either way.
+  // fails, on the same H), so the start is retried from another fixed start (not ARPACK's
+  // own random one, whose generator state would make the result depend on earlier calls),
+  // and then with a larger basis: each gives a different H; the answers are ARPACK's
+  // converged Ritz pairs either way.
   const bool warm = start.size() == N && start.norm() > 0;
   for (int attempt = 0; attempt < 3; ++attempt) {
     if (attempt == 2) ncv = std::min<a_int>(N, 2 * ncv);
@@ -200,11 +216,13 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
     iparam[2] = kMaxRestarts;  // maximum Arnoldi restarts
     iparam[6] = 1;             // mode 1: OP supplied by us, B = I
     a_int ido = 0;
-    info = 0;
-    if (warm && attempt == 0) {
+    info = 1;  // resid holds the starting vector
+    if (warm && attempt == 0)
       Eigen::Map<Vec>(resid.data(), N) = start;
-      info = 1;  // use resid as the starting vector
-    }
+    else if (attempt == 0 || (warm && attempt == 1))
+      Eigen::Map<Vec>(resid.data(), N) = fixedStart(N).template cast<Scalar>();
+    else
+      Eigen::Map<Vec>(resid.data(), N) = fixedStart(N, 19890601u + attempt).template cast<Scalar>();
     while (true) {
       if constexpr (isReal)
         arpack::naupd(ido, arpack::bmat::identity, N, arpack::which::largest_magnitude, nev, tol,

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
+#include "fem/rotor/DegenerateModes.hpp"
 #include "fem/timing/Stopwatch.hpp"
 
 namespace beamrotor {
@@ -99,10 +101,18 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
     const std::complex<double> lambda = pairs.values[k];
     if (lambda.imag() >= -kRealEigenvalue * std::abs(lambda)) kept.push_back(k);
   }
+  std::vector<std::complex<double>> lambdas;
+  Eigen::MatrixXcd vectors(system.size(), kept.size());
+  for (int m = 0; m < int(kept.size()); ++m) {
+    lambdas.push_back(pairs.values[kept[m]]);
+    vectors.col(m) = pairs.vectors.col(kept[m]);
+  }
+  // 4. Repeated eigenvalues get a basis fixed by their whirl, not by the solver's start.
+  canonicalRepeatedModes(lambdas, vectors, dofs, nodes);
   result.vectors.resize(system.size(), kept.size());
   for (int m = 0; m < int(kept.size()); ++m) {
-    std::complex<double> lambda = pairs.values[kept[m]];
-    Eigen::VectorXcd q = pairs.vectors.col(kept[m]);
+    std::complex<double> lambda = lambdas[m];
+    Eigen::VectorXcd q = vectors.col(m);
     if (std::abs(lambda.imag()) <= kRealEigenvalue * std::abs(lambda)) {
       lambda = lambda.real();
       q = q.real().cast<std::complex<double>>();

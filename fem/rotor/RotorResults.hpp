@@ -50,8 +50,8 @@ struct RotorMode {
   /// Logarithmic decrement -2 pi Re lambda / Im lambda = 2 pi zeta / sqrt(1 - zeta^2);
   /// infinite for a real eigenvalue.
   double logDecrement = 0;
-  /// Orbit sense at whirlNode. At rest an isotropic rotor's modes are double eigenvalues
-  /// whose basis (planar or circular) is arbitrary, and so is their whirl.
+  /// Orbit sense at whirlNode. At rest an isotropic rotor's modes are double eigenvalues;
+  /// their basis is fixed as circular backward, then forward whirl (DegenerateModes.hpp).
   Whirl whirl = Whirl::planar;
   /// Orbit::whirlRatio at whirlNode.
   double whirlRatio = 0;

@@ -69,6 +69,9 @@ struct TransientOptions {
   /// (0 plastic .. 1 elastic), see TransientStops; an impact's energy loss shows in the
   /// energy balance.
   double restitution = 0;
+  /// false: the contacts are left out and the model is the linear one (the period map of
+  /// PeriodicSteadyState needs it).
+  bool stops = true;
 };
 
 /// Runs the analysis. Throws std::invalid_argument for bad options (non-positive step, alpha

@@ -52,7 +52,7 @@ std::string unknownCommand(const CLI::App& app, int argc, const char* const* arg
     names.push_back(sub->get_name());
   const std::string word = argv[1];
   if (std::find(names.begin(), names.end(), word) != names.end()) return {};
-  const std::string best = closestMatch(word, names, 2);  // five commands, far apart
+  const std::string best = closestMatch(word, names, 2);  // six commands, far apart
   return "beamrotor: '" + word + "' is not a command" +
          (best.empty() ? std::string{} : "; did you mean " + best + "?") +
          " (commands: " + joinNames(names) + "; beamrotor --help)";
@@ -157,6 +157,79 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                    "output directory (default: out/<deck name>_converge/)")
       ->type_name("DIR");
 
+  OverlayRequest overlay;
+  CLI::App* overlayCmd = app.add_subcommand(
+      "overlay",
+      "Solve several decks (each without its sweep) and draw their static diagrams on one "
+      "chart, one line per deck; write each deck's fields CSV beside it.");
+  overlayCmd->add_option("decks", overlay.deckPaths, "two or more decks")
+      ->required()
+      ->expected(2, 100);
+  overlayCmd
+      ->add_option("--set", overlay.sets, "override a parameter of every deck (repeatable)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+  overlayCmd
+      ->add_option("--quantity", overlay.quantity,
+                   "the diagram to draw: deflection, rotation, moment, stress, shear or all "
+                   "(default)")
+      ->check(CLI::IsMember({"deflection", "rotation", "moment", "stress", "shear", "all"}))
+      ->type_name("Q");
+  overlayCmd->add_option("--out,-o", overlay.outDir, "output directory (default: out/overlay/)")
+      ->type_name("DIR");
+
+  DesignStudyRequest study;
+  CLI::App* studyCmd = app.add_subcommand(
+      "study",
+      "Solve a deck at every point of a design study (a grid of --sweep values, or samples "
+      "of --sample distributions) and write study.csv (a row per point), summary.json and the "
+      "worst point's results.");
+  studyCmd->add_option("deck", study.deckPath, "the deck, e.g. problems/pump_rod.yaml")
+      ->required();
+  studyCmd->add_option("--set", study.sets, "override a deck parameter (repeatable)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+  studyCmd
+      ->add_option("--sweep", study.study.sweeps,
+                   "a grid axis (repeatable; several form a grid): NAME=FROM:TO:STEPS or "
+                   "NAME=V1,V2,...")
+      ->type_name("SPEC")
+      ->allow_extra_args(false);
+  studyCmd
+      ->add_option("--sample", study.study.samples,
+                   "a sampled parameter (repeatable): NAME=uniform(LOW,HIGH), "
+                   "NAME=normal(MEAN,SD) or NAME=lognormal(MEDIAN,SIGMA), each with optional "
+                   ",LOWER,UPPER bounds")
+      ->type_name("NAME=DIST(...)")
+      ->allow_extra_args(false);
+  studyCmd->add_option("--samples", study.study.count, "how many points to sample")
+      ->type_name("N");
+  studyCmd->add_option("--seed", study.study.seed, "seed of the random engine (std::mt19937_64)")
+      ->type_name("S");
+  studyCmd
+      ->add_option("--sampling", study.study.sampling,
+                   "random (default when sampling) or latin-hypercube")
+      ->type_name("HOW");
+  studyCmd
+      ->add_option("--output", study.study.outputs,
+                   "a quantity to record at every point (repeatable; default: the checks' "
+                   "quantities), optionally with an upper limit: 'stress max <= 150 MPa'")
+      ->type_name("QUANTITY")
+      ->allow_extra_args(false);
+  studyCmd->add_option("--threads", study.threads, "threads over points (default 1)")
+      ->check(CLI::Range(1, 1024));
+  studyCmd->add_flag("--point-files", study.pointFiles,
+                     "also write every point's results directory (points/<k>/)");
+  studyCmd
+      ->add_option("--formulation", study.formulation,
+                   "beam theory for every segment, replacing the deck's: " +
+                       joinNames(formulationNames()))
+      ->type_name("THEORY");
+  studyCmd
+      ->add_option("--out,-o", study.outDir,
+                   "output directory (default: out/<deck name>_study/); replaced as a whole")
+      ->type_name("DIR");
+
   if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
     err << unknown << "\n";
     return kInputError;
@@ -174,6 +247,8 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);
     if (reportCmd->parsed()) return reportCommand(report, out, err);
     if (convergeCmd->parsed()) return convergeCommand(converge, out, err);
+    if (overlayCmd->parsed()) return overlayCommand(overlay, out, err);
+    if (studyCmd->parsed()) return studyCommand(study, out, err);
     return checkCommand(check, out, err);
   } catch (const std::bad_alloc&) {
     err << "beamrotor: " << kOutOfMemory << "\n";

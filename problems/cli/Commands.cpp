@@ -7,6 +7,7 @@
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/cli/ExitCodes.hpp"
+#include "problems/cli/PeakSummary.hpp"
 #include "problems/cli/Guarded.hpp"
 #include "problems/cli/Progress.hpp"
 #include "problems/cli/Summary.hpp"
@@ -122,6 +123,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
       printRunResults(out, s.deck, *s.run);
     else
       printSweepResults(out, s.deck, *s.sweep);
+    printSweepPeaks(out, s, options.study.deckPath);
     const auto [runs, labels] = runsOf(s);
     const int failed = printChecks(out, s.deck, runs, labels);
     char times[96];

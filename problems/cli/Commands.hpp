@@ -5,10 +5,12 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "problems/bench/Bench.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
 #include "problems/run/Study.hpp"
+#include "problems/study/DesignStudyRun.hpp"
 
 namespace beamrotor::cli {
 
@@ -41,5 +43,20 @@ struct ConvergeRequest {
 /// `beamrotor converge` (ConvergeCommand.cpp): the convergence study of one deck quantity,
 /// written as convergence.json, convergence.csv and two log-log charts.
 int convergeCommand(const ConvergeRequest& request, std::ostream& out, std::ostream& err);
+
+/// What `beamrotor overlay` reads and where it writes.
+struct OverlayRequest {
+  std::vector<std::string> deckPaths;  ///< two or more decks, each solved without its sweep
+  std::vector<std::string> sets;       ///< "NAME=VALUE" overrides, applied to every deck
+  std::string quantity = "all";        ///< a diagramName or "all"
+  std::string outDir;                  ///< empty: out/overlay
+};
+
+/// `beamrotor overlay` (OverlayCommand.cpp): the static diagrams of several decks on one chart.
+int overlayCommand(const OverlayRequest& request, std::ostream& out, std::ostream& err);
+
+/// `beamrotor study` (StudyCommand.cpp): a design study written as study.csv, summary.json
+/// and the worst point's results; under mpirun only rank 0 prints and writes.
+int studyCommand(const DesignStudyRequest& request, std::ostream& out, std::ostream& err);
 
 }  // namespace beamrotor::cli

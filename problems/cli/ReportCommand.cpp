@@ -8,7 +8,8 @@ namespace beamrotor::cli {
 int reportCommand(const verify::ReportOptions& options, std::ostream& out, std::ostream& err) {
   try {
     const verify::ReportSummary s = verify::writeReport(options, err);
-    out << "checks: " << s.checks - s.failedChecks << " of " << s.checks << " pass";
+    out << "checks: " << s.checks - s.failedChecks << " pass, " << s.failedChecks << " fail, "
+        << s.notApplied << " did not apply";
     if (s.unsolvedDecks) out << ", " << s.unsolvedDecks << " deck(s) not solved";
     out << "\nreport: " << s.page.string() << "\n";
     return kOk;

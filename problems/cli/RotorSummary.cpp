@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "problems/cli/Summary.hpp"
 
@@ -69,12 +70,16 @@ void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutc
     for (const ResponsePeak& p : r.peaks[k]) {
       out << "      " << r.responsePoints[k] << ": peak " << formatValue(p.amplitude) << " m at "
           << formatValue(p.speed * kRpm) << " rpm, ";
-      if (!p.halfPowerFound) {
+      if (p.method == AmplificationMethod::none) {
         out << "no half-power points (the orbit does not fall to peak / sqrt(2) on both sides: "
                "a neighbouring peak or the sweep's end): AF unknown, FAIL\n";
         continue;
       }
-      out << "AF " << formatValue(p.amplificationFactor) << ", margin " << formatValue(p.actualMargin)
+      out << "AF " << formatValue(p.amplificationFactor);
+      if (p.method == AmplificationMethod::modalDamping)
+        out << " (1 / (2 zeta), zeta " << formatValue(p.dampingRatio) << " of the mode: "
+            << (p.overlapping ? "overlapping peaks" : "no half-power points") << ")";
+      out << ", margin " << formatValue(p.actualMargin)
           << " % (required " << formatValue(p.requiredMargin) << " %): "
           << (p.pass ? "pass" : "FAIL") << "\n";
     }
@@ -93,17 +98,69 @@ void printFrequencyResponse(std::ostream& out, const AnalysisOutcome& a, const R
         << formatValue(f.frequencies[peak] / (2 * std::numbers::pi)) << " Hz\n";
 }
 
+/// What a two-dof mode is, in words: coupled, or (b = 0) the limits of the paper's 0/0 ratio.
+std::string modeShapeText(const FormeShaftMode& m) {
+  switch (m.kind) {
+    case FormeModeKind::bounce:
+      return "pure bounce (phi = 0: C1 l1 = C2 l2, the paper's n = 0/0 tends to infinity)";
+    case FormeModeKind::rocking:
+      return "pure rocking about the centre of mass (z = 0, n = 0)";
+    default:
+      return "n = " + formatValue(m.n) + " m/rad";
+  }
+}
+
+void printCriticalSpeedMap(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const CriticalSpeedMap& m = *r.map;
+  out << "critical-speed-map analysis '" << a.name << "' (" << m.stiffness.size()
+      << " bearing stiffnesses " << formatValue(m.stiffness.front()) << " to "
+      << formatValue(m.stiffness.back()) << " N/m, forward synchronous, "
+      << formatValue(r.mapTime) << " s)\n";
+  const auto list = [&](const char* what, const std::vector<double>& speeds) {
+    out << "    " << what;
+    for (double s : speeds) out << " " << formatValue(s * kRpm);
+    out << " rpm\n";
+  };
+  list("pinned bearings:", m.pinned);
+  list("free-free rotor:", m.freeFree);
+  for (const BearingStiffnessCurve& b : r.mapBearings)
+    for (const auto& [what, crossings] :
+         {std::pair{"kxx", &b.kxxCrossings}, std::pair{"kyy", &b.kyyCrossings}}) {
+      out << "    bearing " << b.name << " " << what << " meets the map at";
+      if (crossings->empty()) out << " no critical speed in range";
+      for (const MapCrossing& c : *crossings)
+        out << " " << formatValue(c.speed * kRpm) << " rpm (critical speed " << c.line + 1
+            << ")";
+      out << "\n";
+    }
+}
+
+void printBearingLoads(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
+  const GravityLoads& g = *r.gravityLoads;
+  out << "bearing-loads analysis '" << a.name << "' (" << (r.rigidBearings ? "pinned" : "elastic")
+      << " bearings, weight " << formatValue(g.weight.norm()) << " N)\n";
+  for (std::size_t i = 0; i < g.bearings.size(); ++i) {
+    const BearingForce& b = g.bearings[i];
+    out << "    bearing " << r.bearingNames.at(i) << " at x = " << formatValue(b.x)
+        << " m carries " << formatValue(std::hypot(b.fy, b.fz)) << " N (fy " << formatValue(b.fy)
+        << ", fz " << formatValue(b.fz) << " N on the shaft)\n";
+  }
+  const int worst = g.largestSag();
+  if (worst >= 0)
+    out << "    largest sag " << formatValue(std::hypot(g.uy[worst], g.uz[worst])) << " m at x = "
+        << formatValue(g.x[worst]) << " m\n";
+}
+
 void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
   out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
       << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
       << " kg m^2\n";
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const FormeShaftMode& m = r.modes[i];
-    out << "    two-dof mode " << i + 1 << "  " << formatValue(m.k / (2 * std::numbers::pi))
-        << " Hz  " << formeModeKindName(m.kind) << "  n = "
-        << (std::isfinite(m.n) ? formatValue(m.n) + " m/rad" : std::string("inf (pure bounce)"))
-        << "  F_" << r.points[0] << " = " << formatValue(m.FA) << " N, F_" << r.points[1] << " = "
-        << formatValue(m.FB) << " N\n";
+    out << "    two-dof mode " << i + 1 << " (the paper's " << paperModeName(int(i)) << ")  "
+        << formatValue(m.k / (2 * std::numbers::pi)) << " Hz (k = " << formatValue(m.k)
+        << " rad/s)  " << modeShapeText(m) << "  F_" << r.points[0] << " = "
+        << formatValue(m.FA) << " N, F_" << r.points[1] << " = " << formatValue(m.FB) << " N\n";
   }
 }
 
@@ -124,6 +181,8 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a) {
   if (r.unbalance) printUnbalance(out, a, r);
   if (r.rigidBody) printRigidBody(out, a, *r.rigidBody);
   if (r.frequencyResponse) printFrequencyResponse(out, a, r);
+  if (r.map) printCriticalSpeedMap(out, a, r);
+  if (r.gravityLoads) printBearingLoads(out, a, r);
 }
 
 }  // namespace beamrotor::cli

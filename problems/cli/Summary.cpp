@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "problems/cli/AdequateSummary.hpp"
+#include "problems/cli/CrankSummary.hpp"
 #include "problems/cli/MemberSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/cli/StabilitySummary.hpp"
@@ -148,8 +149,11 @@ std::string formatValue(double v) {
 
 void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) {
   const SystemSize size = sizeOf(run);
-  out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
-      << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
+  if (run.model->nodeCount() == 0)
+    out << "model: none (the deck's analyses are mechanisms that need no model)\n";
+  else
+    out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
+        << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
   printReported(out, run.reported);
   for (const std::string& w : run.warnings) out << "warning: " << w << "\n";
   if (run.adequate) printAdequateChoice(out, *run.adequate);
@@ -160,6 +164,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
     if (a.modal) printModal(out, a);
     if (a.transient) printTransient(out, a);
     if (a.rotor) printRotor(out, a);
+    if (a.crank) printCrankSlider(out, a);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }
 }
@@ -240,6 +245,10 @@ int printChecks(std::ostream& out, const Deck& deck, const std::vector<const Run
           << padded(c.quantity, quantityWidth) << padded(formatValue(c.computed), 14) << "ref "
           << padded(formatValue(c.reference), 14) << "rel.err "
           << padded(scientific(c.relError()), 10) << "tol " << scientific(c.tolerance) << "\n";
+      if (c.paper)
+        out << "        " << prefix << "paper prints " << formatValue(*c.paper) << " ("
+            << scientific(std::abs(c.computed - *c.paper) / std::abs(*c.paper))
+            << " from the computed value): " << c.reason << "\n";
     }
     if (runs.size() == 1)
       for (const std::string& name : runs[i]->skippedChecks) {

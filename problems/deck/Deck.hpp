@@ -15,6 +15,7 @@
 #include "fem/model/Dof.hpp"
 #include "fem/model/Section.hpp"
 #include "problems/deck/DeckAccuracy.hpp"
+#include "problems/deck/DeckCrank.hpp"
 #include "problems/deck/DeckError.hpp"
 #include "problems/deck/DeckFrame.hpp"
 #include "problems/deck/DeckRotor.hpp"
@@ -158,6 +159,7 @@ struct DeckAnalysis {
   bool secondOrder = false;  ///< static: equilibrium in the deformed state (fem/stability)
   bool reversed = false;     ///< buckling: also the negative load factors (load reversed)
   bool prestressed = false;  ///< modal: about the state the deck's loads put the structure in
+  std::optional<DeckCrankSlider> crank;  ///< crank-slider: the mechanism (no model needed)
 };
 
 /// A closed-form comparison.
@@ -170,6 +172,8 @@ struct DeckCheck {
   double tolerance = 0;    ///< on the relative error
   bool applicable = true;  ///< false when its `when:` condition is false
   std::string condition;   ///< the `when:` text, empty if none
+  std::optional<double> paper;  ///< `paper:` the printed figure when the reference differs
+  std::string reason;           ///< `reason:` why the reference differs from `paper:`
   DeckPlace place;
 };
 

@@ -75,7 +75,7 @@ const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived",  "model",    "materials", "sections", "segments",
     "points", "supports",   "springs",  "masses",   "hinges",    "loads",    "analyses",
     "checks", "sweep",      "contacts", "bearings", "damping",   "report",   "accuracy",
-    "nodes",  "members",    "load_cases", "combinations"};
+    "nodes",  "members",    "load_cases", "combinations", "study"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.

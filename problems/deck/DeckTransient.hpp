@@ -51,6 +51,9 @@ struct DeckTransient {
   std::vector<DeckInitialState> initial;
   std::vector<DeckTimeLoad> loads;
   std::vector<DeckHistory> histories;
+  /// Start from the periodic steady state of the loads' period `period` (s) instead of rest
+  /// (`periodic: true`, see fem/transient/PeriodicSteadyState); 0: not periodic.
+  double periodicPeriod = 0;
   DeckPlace dtPlace;  ///< where dt is given, for the explicit stability error
 };
 

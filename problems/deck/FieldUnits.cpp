@@ -4,6 +4,8 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "problems/deck/CrankQuantity.hpp"
+
 namespace beamrotor {
 
 namespace {
@@ -56,6 +58,8 @@ const Table& table() {
     add(t, "analyses[].", {"speed_rpm", "from_rpm", "to_rpm"}, dim::angularSpeed, kRpm);
     add(t, "analyses[].unbalance[].", {"me"}, dim::massLength);
     add(t, "analyses[].", {"from_hz", "to_hz"}, dim::frequency);
+    add(t, "analyses[].", {"from_k", "to_k"}, dim::stiffness);
+    add(t, "analyses[].", {"g"}, dim::acceleration);
     add(t, "analyses[].operating.", {"min_rpm", "max_rpm"}, dim::angularSpeed, kRpm);
     add(t, "analyses[].unbalance[].", {"phase"}, dim::angle);
     for (const char* prefix : {"bearings[].", "bearings[].table[]."}) {
@@ -67,6 +71,15 @@ const Table& table() {
     add(t, "bearings[].", {"mu"}, Dimension::of(-1, 1, -1, 0));  // dynamic viscosity, Pa s
     add(t, "bearings[].", {"load"}, dim::force);
     add(t, "bearings[].", {"from_rpm", "to_rpm"}, dim::angularSpeed, kRpm);
+    add(t, "analyses[].", {"r", "l", "plunger_diameter"}, dim::length);
+    add(t, "analyses[].masses.", {"eccentric", "slider", "rod"}, dim::mass);
+    add(t, "analyses[].masses.", {"eccentricity", "rod_com_to_crank_pin", "rod_com_to_slider_pin"},
+        dim::length);
+    add(t, "analyses[].masses.", {"rod_residual_inertia"}, dim::inertia);
+    add(t, "analyses[].body.", {"weight"}, dim::force);
+    add(t, "analyses[].body.", {"mass"}, dim::mass);
+    add(t, "analyses[].body.", {"radius_of_gyration", "l1", "l2"}, dim::length);
+    add(t, "analyses[].body.", {"C1", "C2"}, dim::stiffness);
     add(t, "damping.", {"alpha"}, dim::frequency);
     add(t, "damping.", {"beta"}, dim::time);
     return t;
@@ -121,10 +134,13 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
       if (p == "mass") return {dim::mass};
       if (p == "com_x") return {dim::length};
       if (p == "J_com" || p == "Jp") return {dim::inertia};
-      if (p == "f1" || p == "f2") return {dim::frequency};
-      if (p == "n1" || p == "n2") return {dim::lengthPerAngle};
+      if (p == "f1" || p == "f2" || p == "paper_f1" || p == "paper_f2") return {dim::frequency};
+      if (p == "n1" || p == "n2" || p == "paper_n1" || p == "paper_n2")
+        return {dim::lengthPerAngle};
       return {dim::force};  // FA1, FB1, FA2, FB2
     }
+    case K::crankSlider:
+      return crankReferenceUnit(q);
     default:
       return {};  // log_decrement; histories: their unit is free text
   }

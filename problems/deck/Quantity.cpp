@@ -4,6 +4,7 @@
 #include <sstream>
 #include <vector>
 
+#include "problems/deck/CrankQuantity.hpp"
 #include "problems/deck/PlainText.hpp"
 #include "problems/deck/RotorQuantity.hpp"
 
@@ -17,7 +18,8 @@ constexpr const char* kGrammar =
     "'shear max', 'moment max', 'displacement max', 'member NAME N|Vy|Vz|T|My|Mz max|min|maxabs', "
     "'member NAME deflection max', 'buckling_factor N', 'log_decrement N', 'critical_speed N', "
     "'unbalance_amplitude POINT at RPM', "
-    "'rigid_body PROPERTY', 'history NAME max|min|maxabs' or 'history NAME at TIME'";
+    "'rigid_body PROPERTY', 'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
+    "'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
 /// ux..rz, or the force/moment names fx fy fz mx my mz for the same dofs.
 Dof parseComponent(const std::string& word) {
@@ -44,6 +46,7 @@ int parseOrdinal(const std::string& n, const std::string& what) {
 std::string Quantity::analysisType() const {
   if (kind >= Kind::historyMax) return "transient";
   if (auto rotor = rotorAnalysisType(*this)) return *rotor;
+  if (kind == Kind::crankSlider) return "crank-slider";
   if (kind == Kind::bucklingFactor) return "buckling";
   return kind == Kind::frequency ? "modal" : "static";
 }
@@ -117,6 +120,7 @@ Quantity parseQuantity(const std::string& text) {
     return q;
   }
   if (parseRotorQuantity(words, q)) return q;
+  if (parseCrankQuantity(words, q)) return q;
   if ((head == "stress" || head == "shear" || head == "moment") && words.size() == 2 &&
       words[1] == "max") {
     q.kind = head == "stress"  ? Quantity::Kind::maxStress

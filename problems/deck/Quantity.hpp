@@ -21,6 +21,8 @@
 //   unbalance_amplitude POINT at RPM   orbit semi-major axis of POINT at RPM (m)
 //   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
 //                             (N, per unit modal amplitude) of a rigid-body analysis
+// and those of the crank-slider analysis (CrankQuantity.hpp):
+//   crank PROPERTY [at LAMBDA]   a figure of the mechanism, or a row of its harmonic table
 #pragma once
 
 #include <stdexcept>
@@ -46,6 +48,7 @@ struct Quantity {
     criticalSpeed,
     unbalanceAmplitude,
     rigidBody,  // rotor analyses
+    crankSlider,  // crank-slider analyses (CrankQuantity.hpp)
     historyMax,
     historyMin,
     historyMaxAbs,
@@ -63,6 +66,7 @@ struct Quantity {
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
   std::string property;  ///< rigid_body: which property; memberForce: N, Vy, Vz, T, My, Mz
   std::string extreme;   ///< memberForce: max, min or maxabs
+  double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own
   std::string text;      ///< as written, for reports
 
   /// The analysis type it reads by default (when a check names none).

@@ -452,8 +452,9 @@ void readAttachments(Context& c) {
   readHinges(c);
   readLoads(c);
   readLoadCases(c);
-  // A model without beams needs something to move and something to hold it.
-  if (!c.deck.segments.empty()) return;
+  // A model without beams needs something to move and something to hold it (a deck of
+  // mechanism analyses alone has neither beams nor points, and needs no model).
+  if (!c.deck.segments.empty() || c.deck.points.empty()) return;
   if (c.deck.masses.empty())
     block(c, "springs")
         .value_or(c.root)

@@ -137,6 +137,7 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
 /// A model without beams: named points only, `at` their x coordinate (m, default 0).
 void readPointModel(Context& c) {
   const auto points = c.root.get("points");
+  if ((!points || points->isNull()) && modelFree(c)) return;  // a mechanism alone
   if (!points || points->isNull())
     c.root.fail(
         "the deck needs segments (a line of beams) or, for a model without beams, "

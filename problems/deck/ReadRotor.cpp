@@ -1,5 +1,6 @@
 // Deck reader, rotor part: bearings and proportional damping on the model, the fields of the
-// rotor analyses (rotor, campbell, unbalance, rigid-body), and the names their check
+// rotor analyses (rotor, campbell, unbalance, rigid-body, frequency-response,
+// critical-speed-map), and the names their check
 // quantities refer to. Speeds are written in rpm in the deck and kept in rad/s.
 #include <algorithm>
 #include <cmath>
@@ -7,6 +8,7 @@
 
 #include "elements/PlainJournalBearing.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/JournalTable.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/Suggest.hpp"
 
@@ -74,23 +76,22 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
     clearance.fail("a radial clearance of " + formatNumber(j.clearance) +
                    " m is not small against D (c/D must be below 0.01; typical 0.001)");
   j.viscosity = f.require("mu").positive(ev);
-  j.load = f.require("load").positive(ev);
+  const Field load = f.require("load");
+  b.loadFromGravity = load.isScalar() && load.text() == "gravity";
+  if (!b.loadFromGravity) j.load = load.positive(ev);
   b.speeds = readSpeedRange(c, f);
   if (!(b.speeds.front() > 0))
     f.require("from_rpm").fail("a plain journal bearing has no film at rest: from_rpm must be > 0 "
                                "(the lowest row is held below it)");
-  // Below 1 % of the clearance the film is thinner than any real surface finish allows (the
-  // journal runs on the bearing), and the linear coefficients grow without bound.
-  constexpr double kThinnestFilm = 0.01;
-  const double slowest = eccentricityRatio(j, b.speeds.front());
-  if (slowest > 1 - kThinnestFilm)
-    f.require("from_rpm")
-        .fail("at " + formatNumber(b.speeds.front() / kRadPerRpm) +
-              " rpm the film carries the load only at eccentricity " + formatNumber(slowest) +
-              " (thinner than 1 % of c: the journal touches the bearing); raise from_rpm, mu or "
-              "L, or check load and c");
-  for (double w : b.speeds) b.table.push_back(shortBearingCoefficients(j, w));
   b.journal = j;
+  // With load: gravity the run fills the table once the rotor's weight share is known.
+  if (!b.loadFromGravity) {
+    try {
+      fillJournalTable(b);
+    } catch (const std::invalid_argument& e) {
+      f.require("from_rpm").fail(e.what());
+    }
+  }
 }
 
 bool carriesLateral(const Deck& deck) {
@@ -210,6 +211,48 @@ void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   }
 }
 
+/// critical-speed-map: from_k, to_k (N/m), points (log-spaced, ends included) and
+/// critical_speeds; the deck's bearings are the ones replaced by the stiffness.
+void readCriticalSpeedMap(const Context& c, const Field& f, DeckRotorAnalysis& r) {
+  f.allowOnly({"type", "name", "from_k", "to_k", "points", "critical_speeds"},
+              "a critical-speed-map analysis");
+  if (c.deck.dimension != "lateral")
+    f.fail("a critical-speed map needs model: {dimension: lateral} (here " + c.deck.dimension +
+           ": its axial and torsional dofs would have no support)");
+  if (c.deck.rotor.bearings.empty())
+    f.fail("a critical-speed map puts its stiffness in place of the deck's bearings: add "
+           "bearings");
+  const ExpressionEvaluator& ev = c.evaluator;
+  const double from = f.require("from_k").positive(ev);
+  const Field toField = f.require("to_k");
+  const double to = toField.positive(ev);
+  if (!(to > from)) toField.fail("to_k must exceed from_k (" + formatNumber(from) + " N/m)");
+  const int n = f.require("points").integer(ev, 2, kMaxSweepValues);
+  for (int i = 0; i < n; ++i)
+    r.stiffnesses.push_back(i + 1 == n ? to : from * std::pow(to / from, double(i) / (n - 1)));
+  if (auto k = f.get("critical_speeds")) r.criticalSpeeds = k->integer(ev, 1, 20);
+}
+
+/// bearing-loads: g (m/s^2, default 9.81), direction (-y, y, -z, z; default -y), bearings
+/// (rigid or elastic) and, for elastic bearings, speed_rpm (their coefficients' speed).
+void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
+  f.allowOnly({"type", "name", "g", "direction", "bearings", "speed_rpm"},
+              "a bearing-loads analysis");
+  if (c.deck.rotor.bearings.empty())
+    f.fail("a bearing-loads analysis reports the loads of the deck's bearings: add bearings");
+  double g = 9.81;
+  if (auto v = f.get("g")) g = v->positive(c.evaluator);
+  std::string direction = "-y";
+  if (auto d = f.get("direction")) direction = d->choice({"-y", "y", "-z", "z"});
+  const double sign = direction[0] == '-' ? -1 : 1;
+  r.gravity = {0, direction.back() == 'y' ? sign * g : 0, direction.back() == 'z' ? sign * g : 0};
+  if (auto b = f.get("bearings")) r.rigidBearings = b->choice({"rigid", "elastic"}) == "rigid";
+  if (auto s = f.get("speed_rpm")) {
+    if (r.rigidBearings) s->fail("speed_rpm sets the elastic bearings' coefficients: add bearings: elastic");
+    r.speed = s->nonNegative(c.evaluator) * kRadPerRpm;
+  }
+}
+
 }  // namespace
 
 void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
@@ -242,7 +285,14 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
   const ExpressionEvaluator& ev = c.evaluator;
   DeckRotorAnalysis& r = a.rotor;
   if (a.type == "rigid-body") {
-    f.allowOnly({"type", "name", "bearings"}, "a rigid-body analysis");
+    f.allowOnly({"type", "name", "bearings", "body"}, "a rigid-body analysis");
+    if (auto body = f.get("body")) {
+      if (auto b = f.get("bearings"))
+        b->fail("give either bearings: (two spring points of the model) or body: (the rigid "
+                "body's own data), not both");
+      readTwoDofBody(c, *body, r);
+      return;
+    }
     const Field list = f.require("bearings");
     const std::vector<Field> items = list.items();
     if (items.size() != 2) list.fail("expected the two spring points [A, B]");
@@ -262,6 +312,15 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
                 "a campbell analysis");
     r.speeds = readSpeedRange(c, f);
     if (auto o = f.get("order")) r.order = o->positive(ev);
+  } else if (a.type == "critical-speed-map") {
+    // Held back: its synchronous eigenproblem does not yet finish on every model (its tests,
+    // tests/fem/rotor/test_critical_speed_map.cpp.unverified, hang); refuse rather than hang.
+    f.require("type").fail(
+        "the critical-speed map is not available yet: its eigen solution does not finish on "
+        "every rotor, so it is refused until its tests pass (FORMAT.md)");
+    readCriticalSpeedMap(c, f, r);
+  } else if (a.type == "bearing-loads") {
+    readBearingLoads(c, f, r);
   } else if (a.type == "frequency-response") {
     f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
                 "a frequency-response analysis");
@@ -285,6 +344,10 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
 
 void requireSymmetricAtRest(const Context& c, const Field& analysis) {
   for (const DeckBearing& b : c.deck.rotor.bearings) {
+    if (b.loadFromGravity)  // a plain journal: cross-coupled at every speed
+      analysis.fail("bearing '" + b.name +
+                    "' is a plain journal (cross-coupled): the modal analysis needs a symmetric "
+                    "stiffness; use {type: rotor, speed_rpm: 0}");
     const Bearing atRest =
         b.speeds.empty() ? Bearing(0, b.table.front()) : Bearing(0, b.speeds, b.table);
     const BearingCoefficients k = atRest.coefficientsAt(0);

@@ -1,6 +1,7 @@
 // Deck reader, part 3: what to compute and what to compare: analyses, checks and the sweep.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/FieldUnits.hpp"
@@ -32,7 +33,11 @@ void readAnalyses(Context& c) {
   auto block = c.root.get("analyses");
   if (!block || block->isNull()) {
     // No analyses listed: statics, the one every deck supports.
-    c.deck.analyses.push_back({"static", "static", 0, 0, c.root.place(), {}});
+    DeckAnalysis statics;
+    statics.type = statics.name = "static";
+    statics.modes = 0;
+    statics.place = c.root.place();
+    c.deck.analyses.push_back(std::move(statics));
     return;
   }
   std::vector<std::string> names;
@@ -42,7 +47,8 @@ void readAnalyses(Context& c) {
     a.place = f.place();
     a.type = f.require("type").choice(
         {"static", "modal", "buckling", "transient", "rotor", "campbell", "unbalance",
-         "rigid-body", "frequency-response"});
+         "rigid-body", "frequency-response", "crank-slider", "critical-speed-map",
+         "bearing-loads"});
     if (a.type == "static") {
       f.allowOnly({"type", "name", "second_order"}, "a static analysis");
       if (auto s = f.get("second_order")) {
@@ -64,9 +70,11 @@ void readAnalyses(Context& c) {
       a.transient = readTransient(c, f);
       if (!hasMass(c.deck))
         f.fail("a transient analysis needs mass: give the materials a density rho or add masses");
+    } else if (a.type == "crank-slider") {
+      readCrankAnalysis(c, f, a);
     } else if (isRotorAnalysis(a.type)) {
       readRotorAnalysis(c, f, a);
-      if (a.type != "unbalance" && !hasMass(c.deck))
+      if (a.type != "unbalance" && !a.rotor.body && !hasMass(c.deck))
         f.fail("a " + a.type +
                " analysis needs mass: give the materials a density rho or add masses");
     } else {
@@ -137,8 +145,104 @@ void requireNamed(const Field& f, const std::string& name, const std::vector<std
            "s: " + joinNames(names) + ")");
 }
 
-/// Fails at `f` unless the quantity's names exist in the deck and its analysis can give it;
-/// returns the name of the analysis it reads.
+/// `paper:` (a source's printed figure that the reference is not) and `reason:` (why they
+/// differ) come together: a differing figure without its reason would only puzzle a reader.
+void readPaperFigure(const Context& c, const Field& f, DeckCheck& k) {
+  const auto paper = f.get("paper");
+  const auto reason = f.get("reason");
+  if (paper && !reason)
+    paper->fail("a paper figure the reference differs from needs its reason: add reason:");
+  if (reason && !paper)
+    reason->fail("reason: explains a paper: figure; give the paper's value as paper:");
+  if (!paper) return;
+  k.paper = paper->number(c.evaluator, referenceUnit(k.quantity));
+  k.reason = reason->label(300);
+}
+
+void readChecks(Context& c) {
+  auto block = c.root.get("checks");
+  if (!block || block->isNull()) return;
+  std::vector<std::string> names;
+  for (const Field& f : boundedItems(*block, "checks")) {
+    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis", "case",
+                 "paper", "reason"},
+                "a check");
+    DeckCheck k;
+    k.place = f.place();
+    const Field nameField = f.require("name");
+    k.name = nameField.label(80);
+    claimName(nameField, k.name, names, "a check");
+    const Field qf = f.require("quantity");
+    try {
+      k.quantity = parseQuantity(qf.text());
+    } catch (const std::invalid_argument& e) {
+      qf.fail(e.what());
+    }
+    if (auto when = f.get("when")) {
+      k.condition = when->text();
+      k.applicable = when->number(c.evaluator) != 0;
+    }
+    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
+    addCheckedSpeed(c, k);
+    if (auto lc = f.get("case")) {
+      k.loadCase = lc->text();
+      bool known = false;
+      for (const DeckLoadCase& x : c.deck.loadCases) known = known || x.name == k.loadCase;
+      for (const DeckCombination& x : c.deck.combinations) known = known || x.name == k.loadCase;
+      if (!known)
+        lc->fail("no load case or combination '" + k.loadCase +
+                 "' (load_cases: and combinations: define them)");
+      if (k.quantity.analysisType() != "static")
+        lc->fail("case: names a load case, which only a static quantity reads");
+    }
+    k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
+    const Field tol = f.require("tolerance");
+    k.tolerance = tol.positive(c.evaluator);
+    readPaperFigure(c, f, k);
+    c.deck.checks.push_back(std::move(k));
+  }
+}
+
+/// The sweep's values; evaluated with the deck's parameters before the sweep changes them.
+void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
+  auto f = c.root.get("sweep");
+  if (!f || f->isNull()) return;
+  f->allowOnly({"parameter", "values", "from", "to", "steps", "refine"}, "the sweep");
+  DeckSweep s;
+  s.place = f->place();
+  const Field pf = f->require("parameter");
+  s.parameter = pf.text();
+  std::vector<std::string> names;
+  for (const auto& [name, v] : c.deck.parameters) names.push_back(name);
+  if (std::find(names.begin(), names.end(), s.parameter) == names.end())
+    pf.fail("no parameter '" + s.parameter + "'" + didYouMean(s.parameter, names) +
+            " (parameters: " + joinNames(names) + ")");
+  const FieldUnit unit{c.evaluator.dimensionOf(s.parameter)};  // SI, as the parameter's value
+  auto values = f->get("values");
+  auto from = f->get("from"), to = f->get("to"), steps = f->get("steps");
+  if (values && (from || to || steps))
+    values->fail("give either values or from/to/steps, not both");
+  if (values) {
+    const std::vector<Field> items = values->items();
+    if (items.empty()) values->fail("the list of values is empty");
+    if (int(items.size()) > kMaxSweepValues)
+      values->fail("at most " + std::to_string(kMaxSweepValues) + " values");
+    for (const Field& v : items) s.values.push_back(v.number(c.evaluator, unit));
+  } else {
+    const double a = f->require("from").number(c.evaluator, unit);
+    const double b = f->require("to").number(c.evaluator, unit);
+    const int n = f->require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
+    // steps intervals, n + 1 values; the last is `to` exactly, not a rounded sum.
+    for (int i = 0; i < n; ++i) s.values.push_back(a + (b - a) * i / n);
+    s.values.push_back(b);
+  }
+  // A parameter fixed on the command line turns the sweep into a single run.
+  if (findOverride(overrides, s.parameter)) return;
+  c.deck.sweep = std::move(s);
+}
+
+}  // namespace
+
 std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
                             const std::optional<Field>& analysisField, bool applicable) {
   const Deck& deck = c.deck;
@@ -210,90 +314,9 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
            "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
   resolveRotorQuantity(c, q, f, *analysis);
+  resolveCrankQuantity(q, f, *analysis);
   return analysis->name;
 }
-
-void readChecks(Context& c) {
-  auto block = c.root.get("checks");
-  if (!block || block->isNull()) return;
-  std::vector<std::string> names;
-  for (const Field& f : boundedItems(*block, "checks")) {
-    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis", "case"},
-                "a check");
-    DeckCheck k;
-    k.place = f.place();
-    const Field nameField = f.require("name");
-    k.name = nameField.label(80);
-    claimName(nameField, k.name, names, "a check");
-    const Field qf = f.require("quantity");
-    try {
-      k.quantity = parseQuantity(qf.text());
-    } catch (const std::invalid_argument& e) {
-      qf.fail(e.what());
-    }
-    if (auto when = f.get("when")) {
-      k.condition = when->text();
-      k.applicable = when->number(c.evaluator) != 0;
-    }
-    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
-    addCheckedSpeed(c, k);
-    if (auto lc = f.get("case")) {
-      k.loadCase = lc->text();
-      bool known = false;
-      for (const DeckLoadCase& x : c.deck.loadCases) known = known || x.name == k.loadCase;
-      for (const DeckCombination& x : c.deck.combinations) known = known || x.name == k.loadCase;
-      if (!known)
-        lc->fail("no load case or combination '" + k.loadCase +
-                 "' (load_cases: and combinations: define them)");
-      if (k.quantity.analysisType() != "static")
-        lc->fail("case: names a load case, which only a static quantity reads");
-    }
-    k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
-    const Field tol = f.require("tolerance");
-    k.tolerance = tol.positive(c.evaluator);
-    c.deck.checks.push_back(std::move(k));
-  }
-}
-
-/// The sweep's values; evaluated with the deck's parameters before the sweep changes them.
-void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
-  auto f = c.root.get("sweep");
-  if (!f || f->isNull()) return;
-  f->allowOnly({"parameter", "values", "from", "to", "steps"}, "the sweep");
-  DeckSweep s;
-  s.place = f->place();
-  const Field pf = f->require("parameter");
-  s.parameter = pf.text();
-  std::vector<std::string> names;
-  for (const auto& [name, v] : c.deck.parameters) names.push_back(name);
-  if (std::find(names.begin(), names.end(), s.parameter) == names.end())
-    pf.fail("no parameter '" + s.parameter + "'" + didYouMean(s.parameter, names) +
-            " (parameters: " + joinNames(names) + ")");
-  const FieldUnit unit{c.evaluator.dimensionOf(s.parameter)};  // SI, as the parameter's value
-  auto values = f->get("values");
-  auto from = f->get("from"), to = f->get("to"), steps = f->get("steps");
-  if (values && (from || to || steps))
-    values->fail("give either values or from/to/steps, not both");
-  if (values) {
-    const std::vector<Field> items = values->items();
-    if (items.empty()) values->fail("the list of values is empty");
-    if (int(items.size()) > kMaxSweepValues)
-      values->fail("at most " + std::to_string(kMaxSweepValues) + " values");
-    for (const Field& v : items) s.values.push_back(v.number(c.evaluator, unit));
-  } else {
-    const double a = f->require("from").number(c.evaluator, unit);
-    const double b = f->require("to").number(c.evaluator, unit);
-    const int n = f->require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
-    // steps intervals, n + 1 values; the last is `to` exactly, not a rounded sum.
-    for (int i = 0; i < n; ++i) s.values.push_back(a + (b - a) * i / n);
-    s.values.push_back(b);
-  }
-  // A parameter fixed on the command line turns the sweep into a single run.
-  if (findOverride(overrides, s.parameter)) return;
-  c.deck.sweep = std::move(s);
-}
-
-}  // namespace
 
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides) {
   readAnalyses(c);

@@ -180,7 +180,7 @@ void readHistories(const Context& c, const Field& block, DeckTransient& t) {
 
 DeckTransient readTransient(const Context& c, const Field& f) {
   f.allowOnly({"type", "name", "scheme", "dt", "end", "cycles", "period", "alpha", "rayleigh",
-               "restitution", "frames", "sample_every", "initial", "loads", "record"},
+               "restitution", "frames", "sample_every", "initial", "loads", "record", "periodic"},
               "a transient analysis");
   const ExpressionEvaluator& ev = c.evaluator;
   DeckTransient t;
@@ -235,7 +235,20 @@ DeckTransient readTransient(const Context& c, const Field& f) {
             " samples; at most " + formatNumber(kMaxSamples) +
             " (set sample_every, or use a larger dt)");
 
-  // 3. Initial state, loads, histories.
+  // 3. Initial state (or the periodic one), loads, histories.
+  if (auto p = f.get("periodic"); p && p->boolean()) {
+    if (!period) p->fail("periodic: true needs the loads' period: give cycles and period");
+    if (t.scheme != TimeScheme::newmark)
+      p->fail("the periodic steady state is found with scheme: newmark (whose state is the "
+              "displacement and velocity alone)");
+    if (auto b = f.get("initial"); b && !b->isNull())
+      b->fail("a periodic run starts from its periodic state; leave out initial:");
+    t.periodicPeriod = period->positive(ev);
+    const double steps = t.periodicPeriod / t.dt;
+    if (std::abs(steps - std::round(steps)) > 1e-9 * steps)
+      dt.fail("periodic: true needs a whole number of steps per period; period / dt = " +
+              formatNumber(steps));
+  }
   if (auto b = f.get("initial"); b && !b->isNull()) readInitial(c, *b, t);
   if (auto b = f.get("loads"); b && !b->isNull()) readLoads(c, *b, t);
   if (auto b = f.get("record"); b && !b->isNull()) readHistories(c, *b, t);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,24 @@ void resolveRotorQuantity(const Context& c, const Quantity& q, const Field& f,
                           const DeckAnalysis& a);
 /// Adds the speed an unbalance_amplitude check reads to its analysis's speeds.
 void addCheckedSpeed(Context& c, const DeckCheck& k);
+/// Whether an analysis entry is one that needs no model: a crank-slider, or a rigid-body
+/// analysis given its `body:` (ReadCrank.cpp).
+bool isMechanismAnalysis(const Field& analysis);
+/// True when the deck has no segments, points or frame and only such analyses: it needs no
+/// model at all.
+bool modelFree(const Context& c);
+/// The fields of a crank-slider analysis into a.crank.
+void readCrankAnalysis(const Context& c, const Field& f, DeckAnalysis& a);
+/// A rigid-body analysis' `body:` (weight or mass, radius of gyration, l1, l2, C1, C2).
+void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r);
+/// Fails at `f` when a crank quantity asks for what analysis `a` was not given (masses, a
+/// plunger, a lambda outside its table).
+void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis& a);
+/// Fails at `f` unless the quantity's names exist in the deck and its analysis (the one
+/// `analysisField` names, else the first that can give it) can give it; returns the name of
+/// the analysis it reads. `applicable`: whether a check's `when:` holds (history times).
+std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
+                            const std::optional<Field>& analysisField, bool applicable);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 

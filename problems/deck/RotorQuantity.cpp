@@ -8,8 +8,10 @@
 namespace beamrotor {
 
 const std::vector<std::string>& rigidBodyPropertyNames() {
-  static const std::vector<std::string> names{"mass", "com_x", "J_com", "Jp",  "f1",  "f2",
-                                              "n1",   "n2",    "FA1",   "FB1", "FA2", "FB2"};
+  // paper_*: the same modes under the paper's names (its k1 is the higher frequency).
+  static const std::vector<std::string> names{
+      "mass", "com_x", "J_com",    "Jp",       "f1",       "f2",       "n1",      "n2",
+      "FA1",  "FB1",   "FA2",      "FB2",      "paper_f1", "paper_f2", "paper_n1", "paper_n2"};
   return names;
 }
 

@@ -23,6 +23,23 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 }  // namespace
 
+double parameterValueOption(const std::string& text, const std::string& parameter,
+                            const Deck& deck, const DeckPlace& place) {
+  Dimension own;  // the parameter's dimension in the deck: values with a unit must have it
+  for (const auto& [name, d] : deck.dimensions)
+    if (name == parameter) own = d;
+  Amount a;
+  try {
+    a = ExpressionEvaluator().amount(text);
+  } catch (const ExpressionError& e) {
+    throw DeckError(deck.path, place, e.what());
+  }
+  if (!a.anyDimension && !a.dimension.dimensionless())
+    if (auto why = overrideMismatch(parameter, a.dimension, own))
+      throw DeckError(deck.path, place, *why);
+  return a.si;
+}
+
 DeckSweep parseSweepOption(const std::string& argument, const Deck& deck) {
   const DeckPlace place{0, 0, "--sweep " + argument};
   auto fail = [&](const std::string& why) -> DeckError { return DeckError(deck.path, place, why); };
@@ -39,20 +56,8 @@ DeckSweep parseSweepOption(const std::string& argument, const Deck& deck) {
                didYouMean(sweep.parameter, names) + " (parameters: " + joinNames(names) + ")");
 
   const std::string spec = argument.substr(eq + 1);
-  const ExpressionEvaluator constants;
-  Dimension own;  // the parameter's dimension in the deck: values with a unit must have it
-  for (const auto& [name, d] : deck.dimensions)
-    if (name == sweep.parameter) own = d;
   auto value = [&](const std::string& text) {
-    Amount a;
-    try {
-      a = constants.amount(text);
-    } catch (const ExpressionError& e) {
-      throw fail(e.what());
-    }
-    if (!a.anyDimension && !a.dimension.dimensionless())
-      if (auto why = overrideMismatch(sweep.parameter, a.dimension, own)) throw fail(*why);
-    return a.si;
+    return parameterValueOption(text, sweep.parameter, deck, place);
   };
   const std::vector<std::string> range = split(spec, ':');
   if (range.size() == 3) {

@@ -15,4 +15,10 @@ namespace beamrotor {
 /// deck and the option.
 DeckSweep parseSweepOption(const std::string& argument, const Deck& deck);
 
+/// The SI value of `text`, typed on the command line for `parameter` of `deck`: a number or
+/// an expression of constants, with or without a unit (one with a unit must have the
+/// parameter's dimension). Throws DeckError naming the deck and `place`.
+double parameterValueOption(const std::string& text, const std::string& parameter,
+                            const Deck& deck, const DeckPlace& place);
+
 }  // namespace beamrotor

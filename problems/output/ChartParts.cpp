@@ -13,9 +13,15 @@ namespace beamrotor {
 
 namespace {
 
-/// Line colours, in the order curves are drawn.
-constexpr const char* kColours[] = {"#1f4e9c", "#c0392b", "#2e8b57", "#8e44ad", "#d35400"};
+/// Line colours, in the order curves are drawn: ten hues far apart (blue, red, green, purple,
+/// orange, teal, brown, magenta, grey, olive), dark enough to read on white.
+constexpr const char* kColours[] = {"#1f4e9c", "#c0392b", "#2e8b57", "#8e44ad", "#d35400",
+                                    "#0e8f9e", "#7b4a12", "#d0338a", "#555555", "#8a8a00"};
 constexpr int kColourCount = int(std::size(kColours));
+/// gnuplot dash types the curves cycle through: solid, dashed, dot-dash. Three against ten
+/// colours: the pair (colour, dash) repeats only after 30 curves.
+constexpr int kDashTypes[] = {1, 2, 4};
+constexpr int kDashCount = int(std::size(kDashTypes));
 
 }  // namespace
 
@@ -23,8 +29,28 @@ std::string colour(std::size_t i) {
   return std::string("linecolor rgb '") + kColours[i % kColourCount] + "'";
 }
 
+std::string lineStyle(std::size_t i) {
+  return colour(i) + " dashtype " + std::to_string(kDashTypes[i % kDashCount]);
+}
+
+std::size_t distinctLineStyles() {
+  return std::size_t(kColourCount) * kDashCount;  // 10 and 3 are coprime
+}
+
 std::string colourValue(std::size_t i) {
   return std::string("0x") + (kColours[i % kColourCount] + 1);
+}
+
+std::string phaseUnwrapping() {
+  // offset: the whole turns taken out so far; previous: the last unwrapped value.
+  return "  unwrap(p) = (jump = p + offset - previous, offset = offset + (jump > 179.9 ? -360 : "
+         "jump < -180.1 ? 360 : 0), previous = p + offset, previous)\n"
+         "  startPhase(p) = (offset = p > 179.9 ? -360 : 0, previous = p + offset, previous)\n";
+}
+
+std::string continuousPhase(int column) {
+  const std::string c = "$" + std::to_string(column);
+  return "($0 == 0 ? startPhase(" + c + ") : unwrap(" + c + "))";
 }
 
 std::string number(double x) {

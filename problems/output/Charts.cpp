@@ -92,9 +92,25 @@ std::vector<ChartMarker> namedPointMarkers(const Model& model) {
   return shown;
 }
 
+std::vector<ChartMarker> commonPointMarkers(const std::vector<const Model*>& models) {
+  std::vector<ChartMarker> common;
+  for (const ChartMarker& m : namedPointMarkers(*models.front())) {
+    bool everywhere = true;
+    for (const Model* model : models) {
+      const auto markers = namedPointMarkers(*model);
+      everywhere = everywhere && std::any_of(markers.begin(), markers.end(), [&](const auto& o) {
+                     return o.name == m.name && std::abs(o.x - m.x) <= 1e-12 * (1 + std::abs(m.x));
+                   });
+    }
+    if (everywhere) common.push_back(m);
+  }
+  return common;
+}
+
 ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
                            const std::vector<FieldSeries>& series,
-                           const std::vector<ChartMarker>& markers) {
+                           const std::vector<ChartMarker>& markers,
+                           const std::vector<Diagram>& shown) {
   // A quantity drawn in a panel: its main column and, in 3D, the other plane's, shown only
   // when it is not zero everywhere in every series.
   struct Drawn {
@@ -108,13 +124,17 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
     double scale;
     bool filled;
   };
-  const std::vector<Panel> panels{
+  const std::vector<Panel> every{
       {"deflection [mm]", {"uy", "'u_y'"}, Drawn{"uz", "'u_z'"}, 1e3, false},
       {"rotation [mrad]", {"rz", "'θ_z'"}, Drawn{"ry", "'θ_y'"}, 1e3, false},
       {"bending moment [kN m]", {"Mz", "'M_z'"}, Drawn{"My", "'M_y'"}, 1e-3, true},
-      {"normal stress [MPa]", {"stress", "'largest normal stress'"}, std::nullopt, 1e-6, true},
-      {"shear stress [MPa]", {"shear", "'largest shear stress'"}, std::nullopt, 1e-6, true},
+      // Signed, as the fibres carry them: tension above the axis, compression below.
+      {"normal stress [MPa]", {"stress_top", "'σ top fibre'"}, Drawn{"stress_bottom", "'σ bottom fibre'"},
+       1e-6, true},
+      {"shear stress [MPa]", {"shear_y", "'τ of V_y'"}, Drawn{"shear_z", "'τ of V_z'"}, 1e-6, true},
   };
+  std::vector<Panel> panels;
+  for (Diagram d : shown) panels.push_back(every.at(std::size_t(d)));
   // One series: the quantities' own names; several: the series' titles, plus the quantity's
   // name where a panel shows two.
   const auto curvesOf = [&](const Panel& panel) {
@@ -144,7 +164,8 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
       for (const Curve& c : curves) keyTitles.push_back(c.plainTitle);
   int rightMargin = keyTitles.empty() ? 30 : keyWidth(keyTitles);
   for (const ChartMarker& m : markers) rightMargin = std::max(rightMargin, textWidth(m.name) / 2 + 10);
-  const int width = 800 + rightMargin, height = 1350;
+  // 240 pixels a panel and 150 for the caption and the axis label: 1350 for all five.
+  const int width = 800 + rightMargin, height = 150 + 240 * int(panels.size());
   std::ostringstream body;
   body << "  set encoding utf8\n"
        << panelLayout(int(panels.size()), 1, caption, width, height, rightMargin)
@@ -162,6 +183,17 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
   body << "  unset multiplot\n";
   return {chartName, "Deflection, rotation, bending moment, normal and shear stress along the line",
           width, height, body.str()};
+}
+
+std::string_view diagramName(Diagram d) {
+  switch (d) {
+    case Diagram::deflection: return "deflection";
+    case Diagram::rotation: return "rotation";
+    case Diagram::moment: return "moment";
+    case Diagram::stress: return "stress";
+    case Diagram::shear: return "shear";
+  }
+  return "?";
 }
 
 ChartScript labelledShapesChart(const std::string& caption, const std::string& chartName,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fem/model/Model.hpp"
@@ -24,6 +25,17 @@ struct ChartMarker {
 /// The named points that lie on line elements, in order along the line.
 std::vector<ChartMarker> namedPointMarkers(const Model& model);
 
+/// The named points at the same place in every model (a point that moves from one model to
+/// the next would need a marker per model), as namedPointMarkers of the first.
+std::vector<ChartMarker> commonPointMarkers(const std::vector<const Model*>& models);
+
+/// The diagrams along a line, top to bottom as staticDiagrams stacks them; each named by the
+/// word `beamrotor overlay --quantity` takes.
+enum class Diagram { deflection, rotation, moment, stress, shear };
+inline const std::vector<Diagram> kAllDiagrams{Diagram::deflection, Diagram::rotation,
+                                               Diagram::moment, Diagram::stress, Diagram::shear};
+std::string_view diagramName(Diagram d);
+
 /// One static solution on the diagrams: its staticFieldsTable, the CSV file it was written
 /// to (relative to the chart's directory) and its key title (ignored for a single series).
 struct FieldSeries {
@@ -32,13 +44,15 @@ struct FieldSeries {
   std::string title;  ///< e.g. "eta = 0.2"
 };
 
-/// Five stacked diagrams along the line: deflection uy (mm), rotation rz (mrad), bending
-/// moment Mz (kN m), largest normal and largest shear stress (MPa); uz, ry and My are added
-/// when they are not zero everywhere (3D models). Several series (the values of a short
+/// Stacked diagrams along the line (those in `shown`): deflection uy (mm), rotation rz (mrad),
+/// bending moment Mz (kN m), normal stress at the top and bottom fibre and shear stress of Vy,
+/// signed (MPa); uz, ry, My and the shear of Vz are added when they are not zero everywhere
+/// (3D models). Several series (the values of a short
 /// sweep) are overlaid, one line each, like the published figures of the pump rod.
 ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
                            const std::vector<FieldSeries>& series,
-                           const std::vector<ChartMarker>& markers);
+                           const std::vector<ChartMarker>& markers,
+                           const std::vector<Diagram>& shown = kAllDiagrams);
 
 /// Mode shapes from a modeShapesTable written to csvFile, each drawn by its dominant
 /// translation (largest value 1) and keyed "mode N: label N"; at most labels.size() of them.

@@ -8,6 +8,7 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
 #include "problems/output/AdequateJson.hpp"
+#include "problems/output/CrankOutput.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FileWriting.hpp"
@@ -227,14 +228,21 @@ Json modalJson(const std::array<bool, kDofKinds>& carried, const AnalysisOutcome
 
 Json checksJson(const std::vector<Check>& checks) {
   Json out = Json::array();
-  for (const Check& c : checks)
-    out.push_back({{"name", c.name},
-                   {"quantity", c.quantity},
-                   {"computed", c.computed},
-                   {"reference", c.reference},
-                   {"rel_error", c.relError()},
-                   {"tolerance", c.tolerance},
-                   {"pass", c.pass()}});
+  for (const Check& c : checks) {
+    Json row = {{"name", c.name},
+                {"quantity", c.quantity},
+                {"computed", c.computed},
+                {"reference", c.reference},
+                {"rel_error", c.relError()},
+                {"tolerance", c.tolerance},
+                {"pass", c.pass()}};
+    if (c.paper) {
+      row["paper"] = *c.paper;
+      row["paper_rel_difference"] = std::abs(c.computed - *c.paper) / std::abs(*c.paper);
+      row["reason"] = c.reason;
+    }
+    out.push_back(std::move(row));
+  }
   return out;
 }
 
@@ -324,6 +332,8 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
       analyses.push_back(transientJson(a));
     else if (a.rotor)
       analyses.push_back(rotorJson(a));
+    else if (a.crank)
+      analyses.push_back(crankJson(a, fileStem(a.name)));
     else  // a kind of analysis this writer does not know yet: at least say it ran
       analyses.push_back({{"type", a.type}, {"name", a.name}});
     if (a.secondOrder) analyses.back()["second_order"] = secondOrderJson(*a.secondOrder);

@@ -52,8 +52,11 @@ std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& d
     const LinePlace& p = places[i];
     if (recovered[i].element != p.element)
       throw std::logic_error("recoverBeamFields sampled different elements");
-    stations.push_back({p, recovered[i].displacement, recovered[i].forces, recovered[i].stress,
-                        recovered[i].shear});
+    const Section& section = asLine(model.elements()[p.element])->section();
+    const SectionForces& forces = recovered[i].forces;
+    stations.push_back({p, recovered[i].displacement, forces, recovered[i].stress,
+                        recovered[i].shear, yFibreStresses(section, forces),
+                        signedShearY(section, forces), signedShearZ(section, forces)});
   }
   return stations;
 }

@@ -13,6 +13,7 @@
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
+#include "fem/model/SignedStress.hpp"
 
 namespace beamrotor {
 
@@ -46,6 +47,9 @@ struct StaticStation {
   SectionForces forces;                          ///< element frame, see SectionForces
   double stress = 0;                             ///< largest |normal stress| (Pa)
   double shear = 0;                              ///< largest transverse shear stress (Pa)
+  YFibreStresses fibres;  ///< signed normal stress at the top and bottom fibre (Pa)
+  double shearY = 0;      ///< shear stress of Vy alone, signed as Vy (Pa)
+  double shearZ = 0;      ///< shear stress of Vz alone, signed as Vz (Pa)
 };
 
 /// Samples a static solution at placesAlongLine(model, intervalsPerElement).

@@ -11,6 +11,7 @@
 #include "problems/deck/Suggest.hpp"
 #include "problems/output/AtomicDirectory.hpp"
 #include "problems/output/Charts.hpp"
+#include "problems/output/CrankOutput.hpp"
 #include "problems/output/CsvTable.hpp"
 #include "problems/output/EnvelopeCharts.hpp"
 #include "problems/output/FileNames.hpp"
@@ -92,6 +93,10 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
   for (const PreparedAnalysis& p : prepared.analyses) {
     const AnalysisOutcome& a = *p.outcome;
     if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
+    if (a.crank) {
+      for (const CsvTable& table : p.crank) table.write(dir / table.title());
+      if (charts) drawCrankCharts(dir, *a.crank, p.stem, caption(run, a.name));
+    }
     if (a.statics) {
       p.fields->write(dir / fieldsCsv(p.stem));
       if (!a.cases.empty())

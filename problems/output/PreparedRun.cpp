@@ -1,6 +1,7 @@
 // Preparing a run for writing (see PreparedRun.hpp).
 #include "problems/output/PreparedRun.hpp"
 
+#include "problems/output/CrankOutput.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/FiniteCheck.hpp"
 #include "problems/output/MemberOutput.hpp"
@@ -19,7 +20,7 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
          {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance, &rotor->api684,
           &rotor->frf, &rotor->bearings})
       if (*t) all.emplace_back((*t)->title(), &**t);
-  for (const std::vector<CsvTable>* list : {&members, &envelopes})
+  for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
   return all;
 }
@@ -60,7 +61,7 @@ PreparedRun prepareRun(const RunResult& run) {
   PreparedRun prepared{&run, {}, {}};
   std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
     if (a.statics) {
       p.stations = sampleStatics(model, a.statics->displacement);
@@ -79,6 +80,7 @@ PreparedRun prepareRun(const RunResult& run) {
       p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(*a.buckling));
     }
     if (a.rotor) p.rotor = prepareRotor(a, p.stem);
+    if (a.crank) p.crank = crankTables(*a.crank, p.stem);
     peaks.push_back(p.peaks);
     prepared.analyses.push_back(std::move(p));
   }

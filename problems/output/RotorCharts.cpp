@@ -9,6 +9,7 @@
 
 #include "problems/output/ChartParts.hpp"
 #include "problems/output/LabelPlacement.hpp"
+#include "problems/output/OperatingBand.hpp"
 #include "problems/output/RotorTables.hpp"
 
 namespace beamrotor {
@@ -23,7 +24,7 @@ constexpr int kForward = 1, kBackward = 0, kPlanar = 2;
 ChartScript campbellDiagram(const std::string& caption, const std::string& chartName,
                             const CsvTable& campbell, const std::string& csvFile,
                             const CsvTable& critical, const std::string& criticalFile,
-                            double order) {
+                            double order, const std::optional<OperatingBand>& band) {
   const auto rpm = campbell.numbers("speed_rpm");
   const int x = campbell.column("speed_rpm");
   const int lines = campbellLineCount(campbell);
@@ -45,6 +46,8 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
   const std::string speedLine = number(order) + "x speed";
   std::vector<std::string> titles{speedLine, "critical speeds"};
   for (const auto& [slot, title] : senses) titles.push_back(title);
+  const BandCommands shading = operatingBandCommands(band);
+  titles.insert(titles.end(), shading.titles.begin(), shading.titles.end());
   const int width = 1000, height = 640;
   const int captionLines = 1 + int(std::count(caption.begin(), caption.end(), '\n'));
   const PixelBox plot{90, 40.0 + 20.0 * captionLines, double(width - keyWidth(titles)),
@@ -94,7 +97,7 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
     body << "  set label " << gnuplotText(texts[k]) << " at first " << number(dataX(boxes[k].left))
          << ", first " << number(dataY((boxes[k].top + boxes[k].bottom) / 2)) << " left font ',"
          << kLabelFont << "'\n";
-  body << "  plot ";
+  body << shading.setup << "  plot ";
   for (int l = 1; l <= lines; ++l)
     body << gnuplotFile(csvFile) << " skip 1 using " << x << ":"
          << campbell.column(campbellColumn(l, "frequency")) << ":(whirl($"
@@ -110,38 +113,41 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
     body << ", \\\n       " << gnuplotFile(criticalFile) << " skip 1 using "
          << critical.column("speed_rpm") << ":" << critical.column("frequency")
          << " with points pointtype 7 pointsize 1.4 linecolor rgb 'black' title 'critical speeds'";
-  body << "\n";
+  body << shading.keyEntries << "\n";
   return {chartName, "Campbell diagram: whirl frequencies against spin speed", width, height,
           body.str()};
 }
 
 ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
                                    const CsvTable& response, const std::string& csvFile,
-                                   const std::vector<std::string>& points) {
+                                   const std::vector<std::string>& points,
+                                   const std::optional<OperatingBand>& band) {
   const int x = response.column("speed_rpm");
   // The amplitude axis in whole decades of the positive amplitudes (um).
   PositiveRange amplitudes;
   for (const std::string& p : points)
     for (double a : response.numbers(p + "_amplitude")) amplitudes.include(a * 1e6);
-  const int keyMargin = keyWidth(points);
+  const BandCommands shading = operatingBandCommands(band);
+  std::vector<std::string> titles = points;
+  titles.insert(titles.end(), shading.titles.begin(), shading.titles.end());
+  const int keyMargin = keyWidth(titles);
   const int width = 770 + keyMargin, height = 800;
-  // Amplitudes on a log scale skip the zeros (no force at rest); phases are drawn as they are.
+  // Amplitudes on a log scale skip the zeros (no force at rest); phases are unwrapped.
   const auto panel = [&](const std::string& what, double scale, bool positive) {
     std::ostringstream s;
-    s << "  plot ";
+    s << shading.setup << "  plot ";
     for (std::size_t k = 0; k < points.size(); ++k) {
       const int column = response.column(points[k] + "_" + what);
       if (k) s << ", \\\n       ";
-      s << gnuplotFile(csvFile) << " skip 1 using " << x << ":(";
-      if (positive) s << "$" << column << " > 0 ? ";
+      s << gnuplotFile(csvFile) << " skip 1 using " << x << ":";
       if (positive)
-        s << "$" << column << "*" << number(scale) << " : NaN";
-      else  // a phase of -180 deg is +180: one side, so round-off does not draw a jump across
-        s << "$" << column << " <= -179.999 ? $" << column << " + 360 : $" << column;
-      s << ") with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << colour(k) << " title "
-        << gnuplotText(points[k]);
+        s << "($" << column << " > 0 ? $" << column << "*" << number(scale) << " : NaN)";
+      else
+        s << continuousPhase(column);
+      s << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << lineStyle(k)
+        << " title " << gnuplotText(points[k]);
     }
-    return s.str() + "\n";
+    return s.str() + shading.keyEntries + "\n";
   };
   std::ostringstream body;
   body << "  set encoding utf8\n"
@@ -150,8 +156,8 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
        << "  set ylabel 'orbit semi-major axis [µm]'\n"
        << panel("amplitude", 1e6, true) << "  unset logscale y\n  set format y '%g'\n"
        << "  set ytics autofreq\n  set mytics default\n"
-       << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'phase of u_y [deg]'\n"
-       << "  set yrange [-180:180]\n  set ytics 90\n"
+       << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'phase of u_y, lag negative [deg]'\n"
+       << "  set yrange [*:*]\n  set ytics 90\n" << phaseUnwrapping()
        << panel("uy_phase", 1, false) << "  unset multiplot\n";
   return {chartName, "Unbalance response: amplitude and phase against spin speed", width, height,
           body.str()};
@@ -167,8 +173,8 @@ ChartScript frequencyResponseDiagram(const std::string& caption, const std::stri
   const int keyMargin = keyWidth(titles);
   const int width = 770 + keyMargin, height = 800;
   const auto curve = [&](const std::string& using_) {
-    return "  plot " + gnuplotFile(csvFile) + " skip 1 using " + std::to_string(x) + ":(" +
-           using_ + ") with lines linewidth 2 " + colour(0) + " title " + gnuplotText(what) + "\n";
+    return "  plot " + gnuplotFile(csvFile) + " skip 1 using " + std::to_string(x) + ":" +
+           using_ + " with lines linewidth 2 " + colour(0) + " title " + gnuplotText(what) + "\n";
   };
   const int m = response.column("magnitude"), p = response.column("phase");
   std::ostringstream body;
@@ -176,12 +182,11 @@ ChartScript frequencyResponseDiagram(const std::string& caption, const std::stri
        << panelLayout(2, 1, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n" << logAxis("y", magnitudes)
        << "  set ylabel 'receptance magnitude [m/N]'\n"
-       << curve("$" + std::to_string(m) + " > 0 ? $" + std::to_string(m) + " : NaN")
+       << curve("($" + std::to_string(m) + " > 0 ? $" + std::to_string(m) + " : NaN)")
        << "  unset logscale y\n  set format y '%g'\n  set ytics autofreq\n  set mytics default\n"
-       << "  set xlabel 'excitation frequency [Hz]'\n  set ylabel 'phase [deg]'\n"
-       << "  set yrange [-180:180]\n  set ytics 90\n"
-       << curve("$" + std::to_string(p) + " <= -179.999 ? $" + std::to_string(p) + " + 360 : $" +
-                std::to_string(p))
+       << "  set xlabel 'excitation frequency [Hz]'\n  set ylabel 'phase, lag negative [deg]'\n"
+       << "  set yrange [*:*]\n  set ytics 90\n" << phaseUnwrapping()
+       << curve(continuousPhase(p))
        << "  unset multiplot\n";
   return {chartName, "Frequency response: receptance magnitude and phase against frequency",
           width, height, body.str()};

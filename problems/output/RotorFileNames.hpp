@@ -31,7 +31,38 @@ inline std::string api684Csv(const std::string& stem) {
 inline std::string frequencyResponseCsv(const std::string& stem) {
   return stem + "_frf.csv";
 }
+/// Rotor modes: every node's orbit sampled, per mode (the orbit chart's data).
+inline std::string orbitsCsv(const std::string& stem) {
+  return stem + "_orbits.csv";
+}
 /// Charts (without extension).
+/// Rotor modes: orbit ellipses along the shaft, a panel per mode.
+inline std::string orbitsChart(const std::string& stem) {
+  return stem + "_orbits";
+}
+/// Critical-speed map: one row per bearing stiffness.
+inline std::string criticalSpeedMapCsv(const std::string& stem) {
+  return stem + "_map.csv";
+}
+/// Critical-speed map: the speed-dependent bearings' kxx and kyy, one row per table speed.
+inline std::string mapBearingsCsv(const std::string& stem) {
+  return stem + "_map_bearings.csv";
+}
+/// Bearing loads: one row per bearing.
+inline std::string bearingLoadsCsv(const std::string& stem) {
+  return stem + "_bearing_loads.csv";
+}
+/// Bearing loads: the shaft's sag, one row per node.
+inline std::string sagCsv(const std::string& stem) {
+  return stem + "_sag.csv";
+}
+/// Critical-speed map: where the bearings' kxx and kyy meet its lines, one row each.
+inline std::string mapCrossingsCsv(const std::string& stem) {
+  return stem + "_map_crossings.csv";
+}
+inline std::string criticalSpeedMapChart(const std::string& stem) {
+  return stem + "_map";
+}
 inline std::string frequencyResponseChart(const std::string& stem) {
   return stem + "_frf";
 }

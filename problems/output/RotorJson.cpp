@@ -45,7 +45,8 @@ Json modesJson(const std::string& stem, const RotorModesResult& r) {
            {{"modes_csv", modesCsv(stem)},
             {"pvd", collectionPvd(stem)},
             {"vtu", vtus},
-            {"orbits_vtu", orbits}}}};
+            {"orbits_vtu", orbits},
+            {"orbits_csv", orbitsCsv(stem)}}}};
 }
 
 Json campbellJson(const std::string& stem, const RotorOutcome& r) {
@@ -107,6 +108,9 @@ Json api684Json(const std::string& stem, const RotorOutcome& r) {
                        {"amplitude_m", p.amplitude},
                        {"half_power_rpm", {rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower)}},
                        {"amplification_factor", p.amplificationFactor},
+                       {"amplification_method", amplificationMethodName(p.method)},
+                       {"modal_damping_ratio", p.dampingRatio},
+                       {"overlapping", p.overlapping},
                        {"required_margin_percent", p.requiredMargin},
                        {"actual_margin_percent", p.actualMargin},
                        {"pass", p.pass}});
@@ -172,12 +176,76 @@ Json frequencyResponseJson(const std::string& stem, const RotorOutcome& r) {
             {"chart", frequencyResponseChart(stem) + ".svg"}}}};
 }
 
+Json criticalSpeedMapJson(const std::string& stem, const RotorOutcome& r) {
+  const CriticalSpeedMap& m = *r.map;
+  const auto rpms = [](const std::vector<double>& speeds) {
+    Json out = Json::array();
+    for (double s : speeds) out.push_back(rpmOf(s));
+    return out;
+  };
+  Json stiffness = Json::array(), speeds = Json::array(), bearings = Json::array();
+  for (std::size_t i = 0; i < m.stiffness.size(); ++i) {
+    stiffness.push_back(m.stiffness[i]);
+    speeds.push_back(rpms(m.speeds[i]));
+  }
+  const auto crossings = [](const std::vector<MapCrossing>& list) {
+    Json out = Json::array();
+    for (const MapCrossing& c : list)
+      out.push_back({{"critical_speed", c.line + 1}, {"rpm", rpmOf(c.speed)}, {"stiffness", c.stiffness}});
+    return out;
+  };
+  for (const BearingStiffnessCurve& b : r.mapBearings)
+    bearings.push_back({{"bearing", b.name},
+                        {"speeds_rpm", rpms(b.speeds)},
+                        {"kxx", b.kxx},
+                        {"kyy", b.kyy},
+                        {"kxx_crossings", crossings(b.kxxCrossings)},
+                        {"kyy_crossings", crossings(b.kyyCrossings)}});
+  Json files = {{"map_csv", criticalSpeedMapCsv(stem)},
+                {"chart", criticalSpeedMapChart(stem) + ".svg"}};
+  if (!r.mapBearings.empty()) {
+    files["bearings_csv"] = mapBearingsCsv(stem);
+    files["crossings_csv"] = mapCrossingsCsv(stem);
+  }
+  return {{"whirl", "forward synchronous"},
+          {"stiffness", stiffness},
+          {"critical_speeds_rpm", speeds},
+          {"pinned_rpm", rpms(m.pinned)},
+          {"free_free_rpm", rpms(m.freeFree)},
+          {"bearings", bearings},
+          {"time_s", r.mapTime},
+          {"files", files}};
+}
+
+Json bearingLoadsJson(const std::string& stem, const RotorOutcome& r) {
+  const GravityLoads& g = *r.gravityLoads;
+  Json bearings = Json::object();
+  for (std::size_t i = 0; i < g.bearings.size(); ++i) {
+    const BearingForce& b = g.bearings[i];
+    bearings[r.bearingNames.at(i)] = {
+        {"x", b.x}, {"fy", b.fy}, {"fz", b.fz}, {"load", std::hypot(b.fy, b.fz)}};
+  }
+  const int worst = g.largestSag();
+  const bool any = worst >= 0;
+  return {{"bearing_support", r.rigidBearings ? "rigid" : "elastic"},
+          {"weight", {g.weight.x(), g.weight.y(), g.weight.z()}},
+          {"bearings", bearings},
+          {"largest_sag",
+           {{"x", any ? g.x[worst] : 0.0},
+            {"uy", any ? g.uy[worst] : 0.0},
+            {"uz", any ? g.uz[worst] : 0.0},
+            {"magnitude", any ? std::hypot(g.uy[worst], g.uz[worst]) : 0.0}}},
+          {"time_s", r.loadsTime},
+          {"files", {{"bearing_loads_csv", bearingLoadsCsv(stem)}, {"sag_csv", sagCsv(stem)}}}};
+}
+
 Json rigidBodyJson(const RigidBodyOutcome& r) {
   const FormeShaftRigid& s = r.rigid;
   Json modes = Json::array();
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const FormeShaftMode& m = r.modes[i];
     modes.push_back({{"mode", i + 1},
+                     {"paper_name", std::string(paperModeName(int(i)))},
                      {"frequency_hz", m.k / (2 * std::numbers::pi)},
                      {"k_rad_s", m.k},
                      {"kind", std::string(formeModeKindName(m.kind))},
@@ -217,6 +285,8 @@ Json rotorJson(const AnalysisOutcome& a) {
               : r.campbell  ? campbellJson(stem, r)
               : r.unbalance ? unbalanceJson(stem, r)
               : r.frequencyResponse ? frequencyResponseJson(stem, r)
+              : r.map       ? criticalSpeedMapJson(stem, r)
+              : r.gravityLoads ? bearingLoadsJson(stem, r)
                             : rigidBodyJson(*r.rigidBody);
   for (auto& [key, value] : body.items()) out[key] = value;
   return out;

@@ -12,6 +12,12 @@
 //                stiffness {A, B}}, two_dof {a, b, d, rho2, decoupled, modes [{mode,
 //                frequency_hz, k_rad_s, kind, z, phi, n (null when infinite), FA, FB,
 //                inertia_force, inertia_moment}]}}
+//   critical-speed-map: {type, name, whirl ("forward synchronous"), stiffness [N/m],
+//                critical_speeds_rpm [[per stiffness, ascending]], pinned_rpm, free_free_rpm,
+//                bearings [{bearing, speeds_rpm, kxx, kyy}], time_s, files}
+//   bearing-loads: {type, name, bearing_support (rigid | elastic), weight [x, y, z] (N),
+//                bearings {NAME: {x, fy, fz, load}} (N, the force on the shaft; load its
+//                magnitude), largest_sag {x, uy, uz, magnitude} (m, over the nodes), time_s, files}
 #pragma once
 
 #include "problems/output/JsonWriter.hpp"

@@ -1,10 +1,20 @@
 // Files of the rotor analyses (see RotorOutput.hpp).
 #include "problems/output/RotorOutput.hpp"
 
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "problems/deck/Field.hpp"
+#include "problems/output/BearingLoadTables.hpp"
+#include "problems/output/CriticalSpeedMapChart.hpp"
+#include "problems/output/CriticalSpeedMapTables.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/RotorBearingChart.hpp"
 #include "problems/output/RotorCharts.hpp"
 #include "problems/output/RotorFileNames.hpp"
+#include "problems/output/RotorOrbitChart.hpp"
 #include "problems/output/RotorStabilityChart.hpp"
 #include "problems/output/RotorTables.hpp"
 #include "problems/output/RotorVtk.hpp"
@@ -23,9 +33,18 @@ PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
       p.bearings = journalBearingsTable(journalBearingsCsv(stem), r.journals);
   }
   if (r.unbalance) p.unbalance = unbalanceTable(unbalanceCsv(stem), *r.unbalance, r.responsePoints);
-  if (r.operating) p.api684 = api684Table(api684Csv(stem), r);
+  if (r.unbalance && r.operating) p.api684 = api684Table(api684Csv(stem), r);
   if (r.frequencyResponse)
     p.frf = frequencyResponseTable(frequencyResponseCsv(stem), *r.frequencyResponse);
+  if (r.map) {
+    p.map = criticalSpeedMapTable(criticalSpeedMapCsv(stem), *r.map);
+    p.mapBearings = mapBearingsTable(mapBearingsCsv(stem), r.mapBearings);
+    p.mapCrossings = mapCrossingsTable(mapCrossingsCsv(stem), r.mapBearings);
+  }
+  if (r.gravityLoads) {
+    p.bearingLoads = bearingLoadsTable(bearingLoadsCsv(stem), *r.gravityLoads, r.bearingNames);
+    p.sag = sagTable(sagCsv(stem), *r.gravityLoads);
+  }
   return p;
 }
 
@@ -38,6 +57,20 @@ std::string fitted(const std::string& caption) {
   return caption.size() > kWidest && list != std::string::npos ? caption.substr(0, list) : caption;
 }
 
+/// x as formatNumber writes it, the exponent without '+' and leading zeros: 1e6, 2.5e-5.
+std::string stiffnessText(double x) {
+  std::string s = formatNumber(x);
+  const std::size_t e = s.find('e');
+  if (e == std::string::npos) return s;
+  std::string exponent = s.substr(e + 1), sign;
+  if (exponent[0] == '+' || exponent[0] == '-') {
+    sign = exponent[0] == '-' ? "-" : "";
+    exponent.erase(0, 1);
+  }
+  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+  return s.substr(0, e + 1) + sign + exponent;
+}
+
 }  // namespace
 
 void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std::string& stem,
@@ -45,6 +78,12 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
                      const std::string& fullCaption, bool charts) {
   const RotorOutcome& r = *a.rotor;
   const std::string caption = fitted(fullCaption);
+  // The operating range on the charts against speed, with the margins its critical speeds
+  // (Campbell) or its response peaks (unbalance) require.
+  std::optional<OperatingBand> band;
+  if (r.operating)
+    band = r.unbalance ? bandOfPeaks(*r.operating, r.peaks)
+                       : bandOfCriticalSpeeds(*r.operating, r.criticalSpeeds);
   if (p.modes) {
     p.modes->write(dir / modesCsv(stem));
     std::vector<PvdEntry> entries;
@@ -55,17 +94,22 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
       entries.push_back({double(number), modeVtu(stem, number)});
     }
     writePvd(dir / collectionPvd(stem), entries);
+    const CsvTable orbits = modeOrbitsTable(orbitsCsv(stem), *r.modes, model);
+    orbits.write(dir / orbitsCsv(stem));
+    // The orbit chart (modeOrbitsChart) is not drawn yet: its 3D panels still reach the
+    // canvas' edges and overprint their neighbours' tick labels (tests/problems/output/
+    // test_chart_reading.cpp).
   }
   if (p.campbell) {
     p.campbell->write(dir / campbellCsv(stem));
     p.critical->write(dir / criticalSpeedsCsv(stem));
     if (charts && p.campbell->rowCount() > 0)
       drawChart(dir, campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
-                                     *p.critical, criticalSpeedsCsv(stem), r.order));
+                                     *p.critical, criticalSpeedsCsv(stem), r.order, band));
     if (charts && p.campbell->rowCount() > 0)
       drawChart(dir, stabilityDiagram(
                          caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),
-                         r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt));
+                         r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt, band));
   }
   if (p.frf) {
     p.frf->write(dir / frequencyResponseCsv(stem));
@@ -82,12 +126,34 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
       drawChart(dir, journalBearingsDiagram(caption, journalBearingsChart(stem), *p.bearings,
                                             journalBearingsCsv(stem), names));
   }
+  if (p.map) {
+    p.map->write(dir / criticalSpeedMapCsv(stem));
+    std::vector<std::string> names;
+    for (const BearingStiffnessCurve& b : r.mapBearings) names.push_back(b.name);
+    if (!names.empty()) {
+      p.mapBearings->write(dir / mapBearingsCsv(stem));
+      p.mapCrossings->write(dir / mapCrossingsCsv(stem));
+    }
+    const std::string what = "Undamped critical-speed map, forward synchronous whirl: k = " +
+                             stiffnessText(r.map->stiffness.front()) + " to " +
+                             stiffnessText(r.map->stiffness.back()) + " N/m at every bearing, " +
+                             std::to_string(r.map->stiffness.size()) + " points";
+    if (charts && p.map->rowCount() > 0)
+      drawChart(dir, criticalSpeedMapDiagram(caption + "\n" + what, criticalSpeedMapChart(stem),
+                                             *r.map, {*p.map, criticalSpeedMapCsv(stem)},
+                                             {*p.mapBearings, mapBearingsCsv(stem)},
+                                             {*p.mapCrossings, mapCrossingsCsv(stem)}, names));
+  }
+  if (p.bearingLoads) {
+    p.bearingLoads->write(dir / bearingLoadsCsv(stem));
+    p.sag->write(dir / sagCsv(stem));
+  }
   if (p.unbalance) {
     p.unbalance->write(dir / unbalanceCsv(stem));
     if (p.api684) p.api684->write(dir / api684Csv(stem));
     if (charts && p.unbalance->rowCount() > 0)
       drawChart(dir, unbalanceResponseChart(caption, unbalanceChart(stem), *p.unbalance,
-                                            unbalanceCsv(stem), r.responsePoints));
+                                            unbalanceCsv(stem), r.responsePoints, band));
   }
 }
 

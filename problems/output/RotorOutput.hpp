@@ -20,6 +20,11 @@ struct PreparedRotor {
   std::optional<CsvTable> api684;     ///< unbalance with operating range: <stem>_api684.csv
   std::optional<CsvTable> frf;        ///< frequency-response: <stem>_frf.csv
   std::optional<CsvTable> bearings;   ///< campbell with plain journal bearings: <stem>_bearings.csv
+  std::optional<CsvTable> map;        ///< critical-speed-map: <stem>_map.csv
+  std::optional<CsvTable> mapBearings;  ///< critical-speed-map: <stem>_map_bearings.csv
+  std::optional<CsvTable> mapCrossings;  ///< critical-speed-map: <stem>_map_crossings.csv
+  std::optional<CsvTable> bearingLoads;  ///< bearing-loads: <stem>_bearing_loads.csv
+  std::optional<CsvTable> sag;           ///< bearing-loads: <stem>_sag.csv
 };
 
 /// Builds the tables of a solved rotor analysis (a.rotor set); throws on non-finite values.

@@ -12,8 +12,9 @@
 namespace beamrotor {
 
 ChartScript stabilityDiagram(const std::string& caption, const std::string& chartName,
-                           const CsvTable& campbell, const std::string& csvFile,
-                           std::optional<double> onsetRpm) {
+                             const CsvTable& campbell, const std::string& csvFile,
+                             std::optional<double> onsetRpm,
+                             const std::optional<OperatingBand>& band) {
   const int x = campbell.column("speed_rpm");
   const int lines = campbellLineCount(campbell);
   // The decrement axis: the finite values, with zero always in view; a real eigenvalue's
@@ -28,7 +29,10 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
 
   std::vector<std::string> titles;
   for (int l = 1; l <= lines; ++l) titles.push_back("line " + std::to_string(l));
-  const int keyMargin = std::max(keyWidth(titles), 110);
+  const BandCommands shading = operatingBandCommands(band);
+  std::vector<std::string> keyTitles = titles;
+  keyTitles.push_back("stability limit");
+  const int keyMargin = std::max(keyWidth(keyTitles), 110);
   const int width = 800 + keyMargin, height = 860;
   const auto clipped = [&](int column) {
     return "($" + std::to_string(column) + " > " + number(high) + " ? " + number(high) + " : $" +
@@ -51,19 +55,21 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
        << "  set palette defined (" << number(low) << " 'dark-red', 0 'orange', "
        << number(std::max(high, 1e-3)) << " 'forest-green')\n"
        << "  set cblabel 'log decrement'\n"
-       << "  set ylabel 'whirl frequency [Hz]'\n  set yrange [0:*]\n  plot ";
+       << "  set ylabel 'whirl frequency [Hz]'\n  set yrange [0:*]\n" << shading.setup
+       << "  plot ";
   for (int l = 1; l <= lines; ++l)
     body << (l > 1 ? ", \\\n       " : "") << gnuplotFile(csvFile) << " skip 1 using " << x << ":"
          << campbell.column(campbellColumn(l, "frequency")) << ":"
          << clipped(campbell.column(campbellColumn(l, "log_decrement")))
          << " with lines linewidth 3 palette notitle";
+  // The band's key is on the Campbell diagram: here it would meet the colour box's labels.
   body << "\n  unset colorbox\n  set xlabel 'spin speed [rpm]'\n  set ylabel 'log decrement'\n"
        << "  set yrange [" << number(low) << ":" << number(high) << "]\n  plot ";
   // 2. The decrements, one colour per line, and the stability boundary.
   for (int l = 1; l <= lines; ++l)
     body << gnuplotFile(csvFile) << " skip 1 using " << x << ":"
          << clipped(campbell.column(campbellColumn(l, "log_decrement")))
-         << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << colour(l - 1)
+         << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << lineStyle(l - 1)
          << " title " << gnuplotText(titles[l - 1]) << ", \\\n       ";
   body << "0 with lines linewidth 1 linecolor rgb 'black' title 'stability limit'\n"
        << "  unset multiplot\n";

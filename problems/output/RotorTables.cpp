@@ -45,6 +45,8 @@ CsvTable api684Table(const std::string& title, const RotorOutcome& r) {
                          {"lower_half_power_rpm", "rpm"},
                          {"upper_half_power_rpm", "rpm"},
                          {"amplification_factor", ""},
+                         {"amplification_method", ""},
+                         {"modal_damping_ratio", ""},
                          {"required_margin", "%"},
                          {"actual_margin", "%"},
                          {"pass", ""}});
@@ -53,6 +55,7 @@ CsvTable api684Table(const std::string& title, const RotorOutcome& r) {
       const ResponsePeak& p = r.peaks[k][i];
       table.addRow({r.responsePoints[k], (long long)(i + 1), rpmOf(p.speed), p.amplitude,
                     rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower), p.amplificationFactor,
+                    std::string(amplificationMethodName(p.method)), p.dampingRatio,
                     p.requiredMargin, p.actualMargin, (long long)(p.pass ? 1 : 0)});
     }
   return table;

@@ -28,7 +28,9 @@ CsvTable journalBearingsTable(const std::string& title,
 
 /// API 684: one row per response point and resonance peak: point, peak (1, 2, ... per point),
 /// speed_rpm, amplitude (m), lower/upper_half_power_rpm (0: outside the sweep),
-/// amplification_factor (0: unknown), required_margin and actual_margin (%), pass (1 or 0).
+/// amplification_factor (0: unknown), amplification_method (half-power, modal-damping for
+/// overlapping peaks, none), modal_damping_ratio (the zeta behind 1 / (2 zeta); 0 for
+/// half-power), required_margin and actual_margin (%), pass (1 or 0).
 CsvTable api684Table(const std::string& title, const RotorOutcome& r);
 
 /// Frequency response: one row per excitation frequency: frequency (Hz), omega (rad/s),

@@ -24,12 +24,17 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
                          {"Mz", "N m"},
                          {"stress", "Pa"},
                          {"shear", "Pa"},
+                         {"stress_top", "Pa"},
+                         {"stress_bottom", "Pa"},
+                         {"shear_y", "Pa"},
+                         {"shear_z", "Pa"},
                          {"element", ""}});
   for (const StaticStation& st : stations) {
     const auto& u = st.displacement;
     const SectionForces& f = st.forces;
     table.addRow({st.place.x, u[0], u[1], u[2], u[3], u[4], u[5], f.N, f.Vy, f.Vz, f.T, f.My, f.Mz,
-                  st.stress, st.shear, (long long)st.place.element});
+                  st.stress, st.shear, st.fibres.top, st.fibres.bottom, st.shearY, st.shearZ,
+                  (long long)st.place.element});
   }
   return table;
 }

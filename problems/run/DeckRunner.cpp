@@ -18,10 +18,13 @@
 #include "problems/run/AdequateModel.hpp"
 #include "problems/run/Measure.hpp"
 #include "problems/run/DisplacementWarning.hpp"
+#include "problems/run/JournalGravityLoads.hpp"
 #include "problems/run/ModelBuilder.hpp"
+#include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/OverRefinementWarning.hpp"
 #include "problems/run/RunRotor.hpp"
 #include "problems/run/RunTransient.hpp"
+#include "problems/run/SweepRefinement.hpp"
 
 namespace beamrotor {
 
@@ -84,6 +87,8 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       out.warnings = out.buckling->warnings;
     } else if (a.transient) {
       out.transient = runTransient(deck, a, model);
+    } else if (a.crank) {
+      out.crank = runCrankSlider(*a.crank);
     } else if (isRotorAnalysis(a.type)) {
       out.rotor = solveRotorAnalysis(deck, a, model);
     } else {
@@ -112,6 +117,8 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
   c.quantity = k.quantity.text;
   c.reference = k.reference;
   c.tolerance = k.tolerance;
+  c.paper = k.paper;
+  c.reason = k.reason;
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.name != k.analysis) continue;
     if (k.loadCase.empty()) {
@@ -139,6 +146,8 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
 }  // namespace
 
 RunResult runDeck(const Deck& deck) {
+  // Plain journals loaded by the rotor's weight: their tables first, for every later reader.
+  if (needsJournalLoads(deck)) return runDeck(withJournalLoads(deck));
   if (deck.accuracy) {
     RunResult adequate = runAdequateModel(deck);
     adequate.warnings = deck.warnings;
@@ -186,23 +195,31 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
   for (const auto& [name, dimension] : base.dimensions)
     if (name == sweep.parameter) sweep.unit = siUnitOf(dimension);
   sweep.values = base.sweep->values;
-  const int total = int(sweep.values.size());
-  for (int i = 0; i < total; ++i) {
-    const double value = sweep.values[i];
+  const auto runValue = [&](double value) {
     std::vector<ParameterOverride> withValue = overrides;
     withValue.push_back({sweep.parameter, value, sweep.parameter + "=" + formatNumber(value)});
     const std::string at = "with " + sweep.parameter + " = " + formatNumber(value) + " (sweep): ";
     try {
       Deck deck = readDeck(source, withValue);
       if (adjust) adjust(deck);
-      sweep.runs.push_back(runDeck(deck));
+      return runDeck(deck);
     } catch (const DeckError& e) {
       throw DeckError(e.file(), e.place(), at + e.message());
     } catch (const DeckSolveError& e) {
       throw DeckSolveError(e.file(), e.place(), at + e.message());
     }
+  };
+  const int total = int(sweep.values.size());
+  for (int i = 0; i < total; ++i) {
+    sweep.runs.push_back(runValue(sweep.values[i]));
     if (progress) progress(i + 1, total);
   }
+  // `refine:` adds values where the result changes fast and around its peaks, to the deck's
+  // own sweep (a --sweep from the command line, placed at no line, is solved as given).
+  if (base.sweep->place.line > 0)
+    if (const auto refine = readSweepRefinement(source, base);
+        refine && refine->parameter == sweep.parameter)
+      refineSweep(sweep, *refine, runValue);
   return sweep;
 }
 

@@ -10,6 +10,7 @@
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/DofMap.hpp"
 #include "problems/run/MeasureRotor.hpp"
+#include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/TransientOutcome.hpp"
 
 namespace beamrotor {
@@ -78,6 +79,7 @@ double measureMember(const Quantity& q, const StaticResult& r, const Model& mode
 
 double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
   if (outcome.rotor) return measureRotor(q, outcome);
+  if (outcome.crank) return measureCrank(q, *outcome.crank);
   if (q.kind == Quantity::Kind::frequency) {
     if (!outcome.modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
     const auto& modes = outcome.modal->modes;

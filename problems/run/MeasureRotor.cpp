@@ -20,6 +20,9 @@ int speedIndex(const std::vector<double>& speeds, double rpm) {
 }
 
 double rigidBodyProperty(const RigidBodyOutcome& r, const std::string& p) {
+  if (p.rfind("paper_", 0) == 0)  // paper_f1 .. paper_n2: the paper's k1 is our mode 2
+    return rigidBodyProperty(
+        r, p.substr(6, 1) + std::to_string(ascendingIndexOfPaperMode(p.back() - '0') + 1));
   if (p == "mass") return r.body.m;
   if (p == "com_x") return r.body.xG;
   if (p == "J_com") return r.body.J;

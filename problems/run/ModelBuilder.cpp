@@ -11,6 +11,7 @@
 #include "elements/Spring.hpp"
 #include "meshes/FrameBuilder.hpp"
 #include "meshes/LineBuilder.hpp"
+#include "problems/run/JournalGravityLoads.hpp"
 
 namespace beamrotor {
 
@@ -157,6 +158,7 @@ void addPointNodes(const Deck& deck, Model& model) {
 }  // namespace
 
 std::shared_ptr<Model> buildModel(const Deck& deck) {
+  if (needsJournalLoads(deck)) return buildModel(withJournalLoads(deck));
   auto model = std::make_shared<Model>();
   if (deck.segments.empty()) {
     addPointNodes(deck, *model);

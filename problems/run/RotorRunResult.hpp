@@ -9,6 +9,8 @@
 
 #include "elements/PlainJournalBearing.hpp"
 #include "fem/rotor/Api684.hpp"
+#include "fem/rotor/CriticalSpeedMap.hpp"
+#include "fem/rotor/GravityLoads.hpp"
 #include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorResults.hpp"
 #include "fem/rotor/RotorStability.hpp"
@@ -39,6 +41,17 @@ struct JournalBearingCurve {
   std::vector<BearingCoefficients> coefficients;  ///< global axes
 };
 
+/// A bearing's direct stiffnesses against speed (tabulated or plain journal), drawn over the
+/// critical-speed map: where they cross a critical-speed line the rotor has that critical speed.
+struct BearingStiffnessCurve {
+  std::string name;
+  std::vector<double> speeds;  ///< rad/s
+  std::vector<double> kxx;     ///< N/m, the deck's kxx (global y)
+  std::vector<double> kyy;     ///< N/m, the deck's kyy (global z)
+  /// Where kxx and kyy meet the map's lines: the critical speeds on this bearing
+  std::vector<MapCrossing> kxxCrossings, kyyCrossings;
+};
+
 /// One rotor analysis, solved: exactly one of the optionals is set, by its type.
 struct RotorOutcome {
   std::optional<RotorModesResult> modes;      ///< rotor: damped modes at one speed
@@ -51,12 +64,21 @@ struct RotorOutcome {
   std::vector<JournalBearingCurve> journals;  ///< campbell: the deck's plain journal bearings
   std::optional<UnbalanceResult> unbalance;   ///< unbalance
   std::vector<std::string> responsePoints;    ///< unbalance: names of unbalance->nodes
-  /// unbalance with an operating range: API 684 reading of each response point's peaks
+  /// unbalance: the operating range its API 684 reading measures margins from; campbell: that
+  /// of the deck's first unbalance analysis giving one (drawn on its charts)
   std::optional<OperatingRange> operating;
+  /// unbalance with an operating range: API 684 reading of each response point's peaks
   std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
   std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
   std::optional<FrequencyResponseResult> frequencyResponse;  ///< frequency-response
   std::string frfInput, frfOutput;  ///< frequency-response: "point dof" of each end
+  std::optional<CriticalSpeedMap> map;  ///< critical-speed-map
+  std::vector<BearingStiffnessCurve> mapBearings;  ///< critical-speed-map: speed-dependent bearings
+  double mapTime = 0;  ///< critical-speed-map: wall time (s)
+  std::optional<GravityLoads> gravityLoads;  ///< bearing-loads
+  std::vector<std::string> bearingNames;  ///< bearing-loads: gravityLoads->bearings' names
+  bool rigidBearings = true;              ///< bearing-loads: bearings pinned (else elastic)
+  double loadsTime = 0;                   ///< bearing-loads: wall time (s)
 };
 
 }  // namespace beamrotor

@@ -14,6 +14,7 @@
 #include "fem/model/Results.hpp"
 #include "fem/stability/StabilityResults.hpp"
 #include "problems/run/AdequateChoice.hpp"
+#include "problems/run/CrankSliderOutcome.hpp"
 #include "problems/run/RotorRunResult.hpp"
 #include "problems/run/TransientOutcome.hpp"
 
@@ -26,6 +27,10 @@ struct Check {
   double reference = 0;
   double tolerance = 0;  ///< on the relative error
   std::string quantity;  ///< what was measured, in deck syntax, e.g. "reaction left rz"
+  /// `paper:` the figure a source prints when the reference is not it (e.g. the paper's own
+  /// arithmetic), with `reason:` saying why the two differ; empty when the reference is it.
+  std::optional<double> paper;
+  std::string reason;
   double relError() const {
     return reference != 0 ? std::abs(computed - reference) / std::abs(reference)
                           : std::abs(computed);
@@ -45,12 +50,13 @@ struct CaseOutcome {
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
-  std::string type;  ///< "static", "modal", "buckling", "rotor", "campbell", "unbalance", "rigid-body"
+  std::string type;  ///< "static", "modal", "buckling", "rotor", "campbell", "unbalance", "rigid-body", "crank-slider"
   std::string name;  ///< the deck's name for it (defaults to the type)
   std::optional<StaticResult> statics;
   std::optional<ModalResult> modal;
   std::optional<TransientOutcome> transient;
   std::optional<RotorOutcome> rotor;  ///< the rotor analyses
+  std::optional<CrankSliderOutcome> crank;  ///< crank-slider: the mechanism's motion and loads
   std::optional<BucklingResult> buckling;  ///< buckling: load factors and mode shapes
   /// static with `second_order: true`: both states (statics holds the second-order one)
   std::optional<SecondOrderResult> secondOrder;

@@ -12,6 +12,8 @@
 #include "fem/rotor/RotorModes.hpp"
 #include "fem/rotor/RotorStability.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
+#include "fem/rotor/UnbalancePeaks.hpp"
+#include "fem/timing/Stopwatch.hpp"
 
 namespace beamrotor {
 
@@ -27,6 +29,28 @@ std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
       curve.eccentricity.push_back(eps);
       curve.attitude.push_back(attitudeAngle(eps));
       curve.sommerfeld.push_back(b.journal->sommerfeld(w));
+    }
+    out.push_back(std::move(curve));
+  }
+  return out;
+}
+
+/// The operating range of the deck's first unbalance analysis that gives one.
+std::optional<OperatingRange> deckOperatingRange(const Deck& deck) {
+  for (const DeckAnalysis& a : deck.analyses)
+    if (a.type == "unbalance" && a.rotor.operating) return a.rotor.operating;
+  return std::nullopt;
+}
+
+/// The deck's bearings whose coefficients change with speed: their kxx and kyy.
+std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
+  std::vector<BearingStiffnessCurve> out;
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    if (b.speeds.empty()) continue;
+    BearingStiffnessCurve curve{b.name, b.speeds, {}, {}, {}, {}};
+    for (const BearingCoefficients& k : b.table) {
+      curve.kxx.push_back(k.kyy);
+      curve.kyy.push_back(k.kzz);
     }
     out.push_back(std::move(curve));
   }
@@ -54,7 +78,22 @@ double groundedStiffness(const Model& model, int node) {
   return k;
 }
 
+/// The body as the deck gives it (problems/scenes/README.md section 2): the centre of mass at
+/// x = 0, spring A at -l1 and B at +l2, J = m rho^2.
+RigidBodyOutcome givenBody(const DeckTwoDofBody& b) {
+  RigidBodyOutcome out;
+  out.body.m = b.mass;
+  out.body.J = b.mass * b.radiusOfGyration * b.radiusOfGyration;
+  out.points = {"A", "B"};
+  out.x = {-b.l1, b.l2};
+  out.stiffness = {b.C1, b.C2};
+  out.rigid = FormeShaftRigid{b.mass, out.body.J, b.C1, b.C2, b.l1, b.l2};
+  out.modes = formeShaftModes(out.rigid);
+  return out;
+}
+
 RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
+  if (r.body) return givenBody(*r.body);
   RigidBodyOutcome out;
   out.body = rigidBodyProperties(model);
   for (int i = 0; i < 2; ++i) {
@@ -90,6 +129,7 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
     out.onset = instabilityOnset(model, *out.campbell, optionsOf(deck, a));
     out.journals = journalCurves(deck);
+    out.operating = deckOperatingRange(deck);
   } else if (a.type == "unbalance") {
     std::vector<Unbalance> unbalance;
     for (const DeckUnbalance& u : r.unbalance)
@@ -103,8 +143,27 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
       for (const auto& orbits : out.unbalance->orbits) {
         std::vector<double> amplitudes;
         for (const Orbit& o : orbits) amplitudes.push_back(o.major());
-        out.peaks.push_back(readResponsePeaks(out.unbalance->speeds, amplitudes, *r.operating));
+        out.peaks.push_back(unbalancePeaks(model, deck.rotor.damping, out.unbalance->speeds,
+                                           amplitudes, *r.operating));
       }
+  } else if (a.type == "critical-speed-map") {
+    Stopwatch clock;
+    out.map = solveCriticalSpeedMap(model, r.stiffnesses, r.criticalSpeeds);
+    out.mapTime = clock.lap();
+    out.mapBearings = bearingStiffnessCurves(deck);
+    for (BearingStiffnessCurve& b : out.mapBearings) {
+      b.kxxCrossings = mapCrossings(*out.map, b.speeds, b.kxx);
+      b.kyyCrossings = mapCrossings(*out.map, b.speeds, b.kyy);
+    }
+  } else if (a.type == "bearing-loads") {
+    Stopwatch clock;
+    const auto& g = r.gravity;
+    out.gravityLoads = solveGravityLoads(
+        model, Eigen::Vector3d(g[0], g[1], g[2]),
+        r.rigidBearings ? BearingSupport::rigid : BearingSupport::elastic, r.speed);
+    out.loadsTime = clock.lap();
+    for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
+    out.rigidBearings = r.rigidBearings;
   } else if (a.type == "frequency-response") {
     const NodeDof in{model.node(r.inputPoint), r.inputDof};
     const NodeDof to{model.node(r.outputPoint), r.outputDof};

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "fem/model/DofMap.hpp"
+#include "fem/transient/PeriodicSteadyState.hpp"
 #include "problems/deck/Expression.hpp"
 #include "problems/deck/Field.hpp"
 
@@ -79,6 +81,16 @@ void noteRounding(const DeckTransient& t, TransientResult& r) {
                          "ends at t = " + formatNumber(r.steps * r.timeStep) + " s");
 }
 
+/// What the periodic start was, and when the stops spoilt it.
+void notePeriodic(const PeriodicStart& p, TransientResult& r) {
+  r.warnings.push_back("started from the periodic steady state (the fixed point of the "
+                       "one-period map; rcond of I - Phi " + formatNumber(p.rcond) +
+                       ", largest multiplier " + formatNumber(p.largestMultiplier) + ")");
+  if (!r.impacts.empty())
+    r.warnings.push_back("the motion struck a stop, which the periodic steady state leaves "
+                         "out: from the first impact on the run is not that state");
+}
+
 /// The parameters and derived values as constants, for the derived histories.
 void defineDeckNames(const Deck& deck, ExpressionEvaluator& ev) {
   for (const auto& [name, value] : deck.parameters) ev.define(name, value);
@@ -93,8 +105,16 @@ TransientOutcome runTransient(const Deck& deck, const DeckAnalysis& a, const Mod
   if (t.scheme == TimeScheme::centralDifference) requireStableStep(deck, t, model);
 
   TransientOutcome out;
-  out.result = solveTransient(model, optionsOf(t, model));
+  TransientOptions options = optionsOf(t, model);
+  std::optional<PeriodicStart> periodic;
+  if (t.periodicPeriod > 0) {
+    periodic = periodicStart(model, options, t.periodicPeriod);
+    options.initialDisplacement = periodic->displacement;
+    options.initialVelocity = periodic->velocity;
+  }
+  out.result = solveTransient(model, options);
   noteRounding(t, out.result);
+  if (periodic) notePeriodic(*periodic, out.result);
 
   // Named histories in deck order: a dof's displacement, or a value of the earlier ones and t.
   ExpressionEvaluator ev;

@@ -12,6 +12,10 @@
 
 namespace beamrotor {
 
+std::string_view paperModeName(int ascending) {
+  return ascending == 0 ? "k2 ('-' root)" : "k1 ('+' root)";
+}
+
 std::string_view formeModeKindName(FormeModeKind k) {
   switch (k) {
     case FormeModeKind::coupled:

@@ -70,6 +70,14 @@ inline constexpr double kFormeDecoupled = 1e-12;
 /// The two modes, k1 <= k2.
 std::array<FormeShaftMode, 2> formeShaftModes(const FormeShaftRigid& s);
 
+/// The paper's name of mode `ascending` (0-based) of formeShaftModes: the paper calls the "+"
+/// root of the biquadratic (the higher frequency) k1 and the "-" root k2, so our mode 1 is its
+/// k2 and our mode 2 its k1. Returns "k2 ('-' root)" or "k1 ('+' root)".
+std::string_view paperModeName(int ascending);
+
+/// Our 0-based index of the paper's mode k<paper> (paper = 1 or 2): 1 for k1, 0 for k2.
+inline int ascendingIndexOfPaperMode(int paper) { return paper == 1 ? 1 : 0; }
+
 /// Rotor extension (b = 0, isotropic springs, spin Omega in rad/s): the conical whirl
 /// ( +-Jp Omega + sqrt(Jp^2 Omega^2 + 4 J k_phi) ) / (2 J), k_phi = C1 l1^2 + C2 l2^2,
 /// sense +1 forward (rises with speed), -1 backward. The bounce stays at sqrt(a).

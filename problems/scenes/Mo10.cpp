@@ -67,7 +67,7 @@ double Mo10Parameters::phi0() const {
   return a / l;
 }
 
-Mo10ClosedForm::Mo10ClosedForm(const Mo10Parameters& p, int cycles)
+Mo10ClosedForm::Mo10ClosedForm(const Mo10Parameters& p, int cycles, Start start)
     : p_(p), k_(p.k()), mu_(p.mu()), T_(p.period()), t1_(p.t1()) {
   if (!(p.J > 0 && p.l > 0 && p.c > 0 && p.omega > 0 && p.muRatio > 0.5) || cycles < 1)
     throw std::invalid_argument(
@@ -75,8 +75,22 @@ Mo10ClosedForm::Mo10ClosedForm(const Mo10Parameters& p, int cycles)
         "blow must fit in the cycle) and cycles >= 1");
   resonant_ = std::abs(k_ - mu_) <= std::sqrt(std::numeric_limits<double>::epsilon()) * mu_;
 
-  const double h = p.H / p.J;  // rad/s^2 per unit sin(mu tau)
-  double x = p.phi0(), v = 0;  // phi + phi0 and phi' at the cycle start: phi(0) = 0 from rest
+  if (start == Start::rest) {
+    build(p.phi0(), 0, cycles);  // phi(0) = 0: x = phi + phi0 = phi0
+    return;
+  }
+  build(0, 0, 1);
+  const double x1 = shifted(0, T_, 0), v1 = shifted(0, T_, 1);
+  const double C = std::cos(k_ * T_), S = std::sin(k_ * T_), det = 2 * (1 - C);
+  if (!(det >= 1e-12))
+    throw std::domain_error("MO-10: no periodic steady state at k = n omega (k T = " +
+                            std::to_string(k_ * T_) + " rad, a multiple of 2 pi): resonance");
+  cycles_.clear();
+  build(((1 - C) * x1 + S / k_ * v1) / det, (-k_ * S * x1 + (1 - C) * v1) / det, cycles);
+}
+
+void Mo10ClosedForm::build(double x, double v, int cycles) {
+  const double h = p_.H / p_.J;  // rad/s^2 per unit sin(mu tau)
   const double s1 = std::sin(k_ * t1_), c1 = std::cos(k_ * t1_);
   for (int i = 0; i < cycles; ++i) {
     Mo10Cycle c;

@@ -58,8 +58,16 @@ struct Mo10Extremes {
 
 class Mo10ClosedForm {
  public:
-  /// The solution from rest over `cycles` cycles of the blow train.
-  Mo10ClosedForm(const Mo10Parameters& p, int cycles);
+  /// Where the motion starts: at rest (phi = phi' = 0), or in the periodic steady state, the
+  /// state to which every cycle returns.
+  enum class Start { rest, periodic };
+
+  /// The solution over `cycles` cycles of the blow train. The periodic start solves
+  /// (I - R) y0 = y1 for y = (phi + phi0, phi'): y1 the state after one cycle from y = 0 and
+  /// R the free swing over T, [[cos kT, sin kT / k], [-k sin kT, cos kT]]; det(I - R) =
+  /// 2 (1 - cos kT) vanishes at k = n omega, where no periodic state exists and the
+  /// constructor throws std::domain_error (at 2 (1 - cos kT) < 1e-12, kT within 1e-6 of n 2 pi).
+  Mo10ClosedForm(const Mo10Parameters& p, int cycles, Start start = Start::rest);
 
   /// Blow moment M(t) (N m).
   double moment(double t) const;
@@ -80,6 +88,8 @@ class Mo10ClosedForm {
   double shifted(int i, double tau, int derivative) const;
   /// The blow's particular solution (C1, C2, D terms of c) or its derivative at tau.
   double particular(const Mo10Cycle& c, double tau, int derivative) const;
+  /// The cycles' constants from x = phi + phi0 and v = phi' at t = 0.
+  void build(double x, double v, int cycles);
   /// Cycle index and cycle time of t.
   std::pair<int, double> locate(double t) const;
 

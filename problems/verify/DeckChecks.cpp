@@ -10,6 +10,17 @@ namespace beamrotor::verify {
 
 namespace {
 
+/// The checks of `run` that did not apply, each with its deck's condition.
+void collectNotApplied(const Deck& deck, const RunResult& run, const std::string& label,
+                       std::vector<NotApplied>& out) {
+  for (const std::string& name : run.skippedChecks) {
+    std::string why = "its when: condition is false here";
+    for (const DeckCheck& k : deck.checks)
+      if (k.name == name) why = "when: " + k.condition + " is false here";
+    out.push_back({label, name, why});
+  }
+}
+
 DeckChecks checkDeck(const std::filesystem::path& path) {
   DeckChecks out;
   out.deck = path.filename().string();
@@ -19,12 +30,16 @@ DeckChecks checkDeck(const std::filesystem::path& path) {
     request.deckPath = path.string();
     const Study s = solveStudy(request);
     out.title = s.deck.title;
-    if (s.run)
+    if (s.run) {
       for (const Check& c : s.run->checks) out.checks.push_back({"", c});
-    else
-      for (std::size_t i = 0; i < s.sweep->runs.size(); ++i)
-        for (const Check& c : s.sweep->runs[i].checks)
-          out.checks.push_back({s.sweep->parameter + " = " + formatNumber(s.sweep->values[i]), c});
+      collectNotApplied(s.deck, *s.run, "", out.notApplied);
+    } else {
+      for (std::size_t i = 0; i < s.sweep->runs.size(); ++i) {
+        const std::string label = s.sweep->parameter + " = " + formatNumber(s.sweep->values[i]);
+        for (const Check& c : s.sweep->runs[i].checks) out.checks.push_back({label, c});
+        collectNotApplied(s.deck, s.sweep->runs[i], label, out.notApplied);
+      }
+    }
   } catch (const std::exception& e) {  // DeckError, DeckSolveError: one line each
     out.error = e.what();
   }

@@ -68,6 +68,7 @@ ReportSummary writeReport(const ReportOptions& options, std::ostream& log) {
   for (const DeckChecks& d : content.decks) {
     log << "  " << d.deck << (d.error.empty() ? "" : ": not solved") << "\n";
     summary.unsolvedDecks += !d.error.empty();
+    summary.notApplied += int(d.notApplied.size());
     for (const auto& entry : d.checks) {
       ++summary.checks;
       summary.failedChecks += !entry.second.pass();

@@ -20,6 +20,7 @@ struct ReportOptions {
 struct ReportSummary {
   std::filesystem::path page;  ///< DIR/index.html
   int checks = 0, failedChecks = 0, unsolvedDecks = 0;
+  int notApplied = 0;  ///< checks whose `when:` was false at the decks' parameter values
 };
 
 /// Builds the report; progress lines go to `log`. Throws std::invalid_argument, before any

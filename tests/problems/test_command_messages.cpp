@@ -34,7 +34,7 @@ TEST_SUITE("command line messages") {
     CHECK(slove.exitCode == 2);
     CHECK(slove.out.empty());
     CHECK(holds(slove.err, "'slove' is not a command; did you mean solve?"));
-    CHECK(holds(slove.err, "(commands: solve, check, bench, report, converge; beamrotor --help)"));
+    CHECK(holds(slove.err, "(commands: solve, check, bench, report, converge, overlay, study; beamrotor --help)"));
     const ProcessResult chekc = runBeamrotor({"chekc", "problems/cantilever.yaml"});
     CHECK(chekc.exitCode == 2);
     CHECK(holds(chekc.err, "did you mean check?"));

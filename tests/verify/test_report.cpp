@@ -23,6 +23,21 @@ int occurrences(const std::string& text, const std::string& what) {
   return n;
 }
 
+/// A cantilever of length L under P at its tip (E I = 1e4 N m^2), written to dir/decks/name
+/// with `extra` (parameters, checks, a sweep) after it.
+void writeReportCantilever(const std::filesystem::path& dir, const std::string& name,
+                           const std::string& extra) {
+  std::filesystem::create_directories(dir / "decks");
+  std::ofstream(dir / "decks" / name)
+      << "materials: [{name: m, E: 1e11, nu: 0.3}]\n"
+         "sections: [{name: s, shape: general, A: 1e-3, I: 1e-7, depth: 0.01}]\n"
+         "segments: [{length: L, section: s, elements: 4}]\n"
+         "points: [{name: root, at: 0}, {name: tip, at: L}]\n"
+         "supports: [{name: root, at: root, fix: clamped}]\n"
+         "loads: [{type: point, at: tip, fy: -P}]\n"
+      << extra;
+}
+
 }  // namespace
 
 TEST_SUITE("verification report") {
@@ -88,4 +103,74 @@ TEST_SUITE("verification report") {
     std::filesystem::remove_all(dir);
   }
 
+  TEST_CASE("checks that did not apply are listed with their condition and counted") {
+    // A cantilever (P = 1000 N, L = 1, E I = 1e4 N m^2 through a general section) with three
+    // checks: the tip deflection P L^3 / (3 E I) = 1/30 m (exact for Hermite elements), one
+    // whose when: is false at these parameters, and a sweep of P over two values in which the
+    // third applies only at P = 2000. The page must show those left out as rows with their
+    // condition, and the headline must count them: 3 pass (tip at both values, heavy at
+    // P = 2000), 0 fail, 3 did not apply (light at both values, heavy at P = 1000).
+    const auto dir = test::scratchDir("report_not_applied");
+    writeReportCantilever(
+        dir, "cantilever_when.yaml",
+        "title: cantilever with conditional checks\n"
+        "parameters: {P: 1000, L: 1}\n"
+        "checks:\n"
+        "  - {name: tip, quantity: displacement tip uy, reference: -P*L^3/(3*1e4),"
+        " tolerance: 1e-9}\n"
+        "  - {name: light, quantity: reaction root uy, reference: P, tolerance: 1e-9,"
+        " when: P < 500}\n"
+        "  - {name: heavy, quantity: reaction root uy, reference: P, tolerance: 1e-9,"
+        " when: P > 1500}\n"
+        "sweep: {parameter: P, values: [1000, 2000]}\n");
+    const auto rows = runDeckChecks(decksIn(dir / "decks"));
+    REQUIRE(rows.size() == 1);
+    REQUIRE(rows[0].error.empty());
+    CHECK(rows[0].checks.size() == 3);        // tip twice, heavy at P = 2000
+    REQUIRE(rows[0].notApplied.size() == 3);  // light twice, heavy at P = 1000
+    CHECK(rows[0].notApplied[0].name == "light");
+    CHECK(rows[0].notApplied[0].label == "P = 1000");
+    CHECK(rows[0].notApplied[0].why == "when: P < 500 is false here");
+    for (const auto& [label, c] : rows[0].checks) {
+      CHECK(c.pass());
+      if (c.name == "tip") {
+        const double P = label == "P = 1000" ? 1000 : 2000;
+        CHECK(std::abs(c.computed + P / 3e4) <= 1e-9 * P / 3e4);
+      }
+    }
+    ReportContent content;
+    content.decks = rows;
+    const std::string html = reportHtml(content);
+    CHECK(html.find("3 of 3 checks pass, 0 fail, 3 did not apply") != std::string::npos);
+    CHECK(occurrences(html, "<td>did not apply</td>") == 3);
+    CHECK(html.find("when: P &gt; 1500 is false here") != std::string::npos);
+    std::filesystem::remove_all(dir);
+  }
+
+  TEST_CASE("a check's paper figure and reason reach the page and results.json") {
+    // The tip deflection of the same cantilever, 1/30 m, with a "paper" printing 0.0335 (a
+    // rounding): the page shows the printed figure, its difference 0.5 % and the reason.
+    const auto dir = test::scratchDir("report_paper_note");
+    writeReportCantilever(dir, "cantilever_paper.yaml",
+                          "parameters: {P: 1000, L: 1}\n"
+                          "checks:\n"
+                          "  - {name: tip, quantity: displacement tip uy, reference: -1/30, "
+                          "tolerance: 1e-9,\n"
+                          "     paper: -0.0335, reason: rounded up in print}\n");
+    const auto rows = runDeckChecks(decksIn(dir / "decks"));
+    REQUIRE(rows.size() == 1);
+    REQUIRE(rows[0].checks.size() == 1);
+    const Check& c = rows[0].checks[0].second;
+    REQUIRE(c.paper);
+    CHECK(*c.paper == -0.0335);
+    CHECK(c.reason == "rounded up in print");
+    CHECK(c.pass());  // the reference, not the paper's figure, decides
+    ReportContent content;
+    content.decks = rows;
+    const std::string html = reportHtml(content);
+    // |1/30 - 0.0335| / 0.0335 = 0.004975
+    CHECK(html.find("paper prints -0.0335 (differs from the computed value by 0.005 relative): "
+                    "rounded up in print") != std::string::npos);
+    std::filesystem::remove_all(dir);
+  }
 }

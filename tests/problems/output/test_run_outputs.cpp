@@ -120,7 +120,9 @@ TEST_SUITE("output") {
     const std::vector<std::string> expected{"x [m]",    "ux [m]",      "uy [m]",     "uz [m]",
                                             "rx [rad]", "ry [rad]",    "rz [rad]",   "N [N]",
                                             "Vy [N]",   "Vz [N]",      "T [N m]",    "My [N m]",
-                                            "Mz [N m]", "stress [Pa]", "shear [Pa]", "element"};
+                                            "Mz [N m]", "stress [Pa]", "shear [Pa]",
+                                            "stress_top [Pa]", "stress_bottom [Pa]",
+                                            "shear_y [Pa]", "shear_z [Pa]", "element"};
     CHECK(csv.header == expected);
     REQUIRE(csv.rows.size() == std::size_t(c.elements * 5));  // 4 intervals: 5 stations each
     const int x = csv.column("x [m]"), uy = csv.column("uy [m]"), rz = csv.column("rz [rad]"),

@@ -1,0 +1,44 @@
+#include "fem/rotor/BearingSupports.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "fem/model/Model.hpp"
+#include "fem/model/RotorElement.hpp"
+
+namespace beamrotor {
+
+BearingSupports bearingSupports(const RotorSystem& system) {
+  const DofMap& dofs = system.dofs();
+  BearingSupports out{system.stiffness(0), {}};
+  for (const auto& e : system.model().elements()) {
+    // A bearing: a speed-dependent element of kind "bearing" (elements/Bearing.hpp).
+    const auto* b = dynamic_cast<const SpeedDependentElement*>(e.get());
+    if (!b || b->kind() != "bearing") continue;
+    const auto d = b->dofs();
+    const ElementMatrix k = b->stiffnessAt(0);
+    for (int r = 0; r < int(d.size()); ++r) {
+      const int row = dofs.equation(d[r]);
+      if (!dofs.isFree(row)) continue;
+      out.equations.push_back(row);
+      for (int c = 0; c < int(d.size()); ++c)
+        if (const int col = dofs.equation(d[c]); dofs.isFree(col) && k(r, c) != 0)
+          out.shaft.coeffRef(row, col) -= k(r, c);
+    }
+  }
+  if (out.equations.empty())
+    throw std::invalid_argument("the rotor has no bearings (on free dofs) to replace");
+  std::sort(out.equations.begin(), out.equations.end());
+  out.equations.erase(std::unique(out.equations.begin(), out.equations.end()),
+                      out.equations.end());
+  return out;
+}
+
+std::vector<int> numberingWithout(int n, const std::vector<int>& removed) {
+  std::vector<int> index(n, -1);
+  for (int i = 0, next = 0; i < n; ++i)
+    if (!std::binary_search(removed.begin(), removed.end(), i)) index[i] = next++;
+  return index;
+}
+
+}  // namespace beamrotor

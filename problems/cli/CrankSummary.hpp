@@ -1,0 +1,14 @@
+// The lines `beamrotor solve` prints for a crank-slider analysis: the mechanism's figures at
+// its crank speed, the reduced masses, the inertia harmonics per crank and over all cranks
+// (what cancels), the rod's inertia moment and the delivery.
+#pragma once
+
+#include <ostream>
+
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor::cli {
+
+void printCrankSlider(std::ostream& out, const AnalysisOutcome& a);
+
+}  // namespace beamrotor::cli

@@ -1,0 +1,25 @@
+#include "problems/cli/PeakSummary.hpp"
+
+#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/Field.hpp"
+#include "problems/deck/ReadSweepRefinement.hpp"
+#include "problems/run/SweepRefinement.hpp"
+
+namespace beamrotor::cli {
+
+void printSweepPeaks(std::ostream& out, const Study& study, const std::string& deckPath) {
+  if (!study.sweep || !study.deck.sweep || study.deck.sweep->place.line == 0) return;
+  const auto refine = readSweepRefinement(loadDeckFile(deckPath), study.deck);
+  if (!refine || refine->parameter != study.sweep->parameter) return;
+  const auto peaks = sweepPeaks(sweepSamples(*study.sweep, *refine));
+  out << "peaks of " << refine->quantity.text << " (" << refine->analysis << "), "
+      << study.sweep->values.size() << " values, bracketed to " << formatNumber(refine->tolerance)
+      << " of " << refine->parameter << ":";
+  if (peaks.empty()) out << " none inside the range";
+  for (const auto& [value, result] : peaks)
+    out << (&value == &peaks.front().first ? " " : ", ") << refine->parameter << " = "
+        << formatNumber(value) << " (" << formatNumber(result) << ")";
+  out << "\n";
+}
+
+}  // namespace beamrotor::cli

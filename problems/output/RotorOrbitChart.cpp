@@ -1,0 +1,195 @@
+// Orbit charts of damped rotor modes (see RotorOrbitChart.hpp).
+#include "problems/output/RotorOrbitChart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <numeric>
+#include <sstream>
+#include <vector>
+
+#include "elements/Bearing.hpp"
+#include "elements/PointInertia.hpp"
+#include "problems/output/ChartParts.hpp"
+#include "problems/output/RotorTables.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Angle steps per orbit (10 degrees each): smooth at the chart's size.
+constexpr int kOrbitSteps = 36;
+/// Display limits of the normalised orbits (largest semi-major axis 1) on the y and z axes.
+constexpr double kOrbitRoom = 1.35;
+/// A whirl ratio below this is a straight line (as fem/rotor/RotorModes.cpp decides).
+constexpr double kLineOrbit = 1e-6;
+/// Palette slots of the senses (as on the Campbell diagram).
+constexpr int kForwardSlot = 1, kBackwardSlot = 0, kPlanarSlot = 2;
+
+/// Nodes that carry a lateral orbit, in the order of x.
+std::vector<int> stationsAlongShaft(const Model& model, const RotorMode& mode) {
+  std::vector<int> nodes(std::size_t(mode.shape.rows()));
+  std::iota(nodes.begin(), nodes.end(), 0);
+  std::stable_sort(nodes.begin(), nodes.end(),
+                   [&](int a, int b) { return model.nodes()[a].x() < model.nodes()[b].x(); });
+  return nodes;
+}
+
+Orbit nodeOrbit(const RotorMode& mode, int node) {
+  return {mode.shape(node, dofIndex(Dof::uy)), mode.shape(node, dofIndex(Dof::uz))};
+}
+
+long long senseOf(const Orbit& o) {
+  const double r = o.whirlRatio();
+  return r > kLineOrbit ? 1 : r < -kLineOrbit ? -1 : 0;
+}
+
+std::string modeTitle(int index, const RotorMode& m) {
+  char text[160];
+  const std::string decrement =
+      std::isfinite(m.logDecrement) ? number(m.logDecrement) : std::string("inf (overdamped)");
+  std::snprintf(text, sizeof text, "mode %d: %s Hz, log decrement %s, %s whirl", index,
+                number(m.dampedFrequencyHz).c_str(), decrement.c_str(),
+                std::string(whirlName(m.whirl)).c_str());
+  return text;
+}
+
+}  // namespace
+
+CsvTable modeOrbitsTable(const std::string& title, const RotorModesResult& r, const Model& model) {
+  CsvTable table(title, {{"mode", ""},
+                         {"node", ""},
+                         {"x", "m"},
+                         {"angle", "deg"},
+                         {"uy", ""},
+                         {"uz", ""},
+                         {"duy", ""},
+                         {"duz", ""},
+                         {"whirl", ""}});
+  for (std::size_t m = 0; m < r.modes.size(); ++m) {
+    const RotorMode& mode = r.modes[m];
+    const std::vector<int> nodes = stationsAlongShaft(model, mode);
+    double largest = 0;
+    for (int n : nodes) largest = std::max(largest, nodeOrbit(mode, n).major());
+    const double scale = largest > 0 ? 1 / largest : 1;
+    const auto at = [&](const Orbit& o, int step) {
+      const std::complex<double> turn =
+          std::polar(scale, 2 * std::numbers::pi * step / kOrbitSteps);
+      return std::pair<double, double>{(o.uy * turn).real(), (o.uz * turn).real()};
+    };
+    for (int step = 0; step < kOrbitSteps; ++step)
+      for (int n : nodes) {
+        const Orbit o = nodeOrbit(mode, n);
+        const auto [y, z] = at(o, step);
+        const auto [y1, z1] = at(o, step + 1);
+        table.addRow({(long long)(m + 1), (long long)(n + 1), model.nodes()[n].x(),
+                      360.0 * step / kOrbitSteps, y, z, y1 - y, z1 - z, senseOf(o)});
+      }
+  }
+  return table;
+}
+
+ChartScript modeOrbitsChart(const std::string& caption, const std::string& chartName,
+                            const RotorModesResult& r, const Model& model,
+                            const CsvTable& orbits, const std::string& csvFile) {
+  const int count = int(r.modes.size());
+  const int columns = count > 1 ? 2 : 1, rows = (count + columns - 1) / columns;
+  const int width = 620 * columns, height = 100 + 480 * std::max(rows, 1);
+  double x0 = 0, x1 = 0;
+  for (const auto& p : model.nodes()) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
+  const double pad = 0.04 * std::max(x1 - x0, 1e-9);
+
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(rows, columns,
+                      caption + "\nmodes at " + number(rpmOf(r.speed)) +
+                          " rpm: orbits along the shaft, x [m] (largest orbit 1)",
+                      width, height, 20)
+       << "  set view 64, 24, 0.85, 1.1\n  set xyplane relative 0\n  set border 1+2+4+8+16+32+64+256+512\n"
+       << "  set xrange [" << number(x0 - pad) << ":" << number(x1 + pad) << "]\n"
+       << "  set yrange [" << -kOrbitRoom << ":" << kOrbitRoom << "]\n"
+       << "  set zrange [" << -kOrbitRoom << ":" << kOrbitRoom << "]\n"
+       << "  set xtics offset 0,-0.5\n  set ytics 1\n  set ztics 1\n  set format y '%g'\n"
+       << "  set format z '%g'\n"
+       << "  set ylabel 'u_y' offset 1,0\n"
+       << "  set zlabel 'u_z' offset 1,0\n"
+       << "  set key at screen 0.99, screen 0.995 top right horizontal font ',9' samplen 2\n"
+       << "  whirl(w) = w > 0 ? " << colourValue(kForwardSlot) << " : w < 0 ? "
+       << colourValue(kBackwardSlot) << " : " << colourValue(kPlanarSlot) << "\n";
+  // 1. The shaft's centre line, disks (bars across it, sized by their radius of gyration about
+  //    the axis) and bearings and supports (symbols on the axis), the same in every panel.
+  body << "  set arrow 1 from " << number(x0) << ",0,0 to " << number(x1)
+       << ",0,0 nohead dashtype 2 linecolor rgb 'gray40' linewidth 1\n";
+  double widest = 0;
+  for (const auto& e : model.elements())
+    if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0)
+      widest = std::max(widest, std::sqrt(d->Jp() / d->m()));
+  int tag = 2;
+  bool disks = false, bearings = false, supports = false;
+  for (const auto& e : model.elements()) {
+    const auto dofs = e->dofs();
+    if (dofs.empty()) continue;
+    const double x = model.nodes()[dofs[0].node].x();
+    if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0) {
+      const double half = 0.35 + 0.5 * std::sqrt(d->Jp() / d->m()) / widest;
+      body << "  set arrow " << tag++ << " from " << number(x) << ",0," << number(-half) << " to "
+           << number(x) << ",0," << number(half)
+           << " nohead linewidth 7 linecolor rgb '#99555555' back\n";
+      disks = true;
+    } else if (dynamic_cast<const Bearing*>(e.get())) {
+      body << "  set label " << tag++ << " '' at " << number(x)
+           << ",0,0 point pointtype 9 pointsize 2.2 linecolor rgb 'black' front\n";
+      bearings = true;
+    }
+  }
+  for (const Support& s : model.supports()) {
+    body << "  set label " << tag++ << " '' at " << number(model.nodes()[s.node].x())
+         << ",0,0 point pointtype 5 pointsize 1.8 linecolor rgb 'black' front\n";
+    supports = true;
+  }
+  // 2. One panel per mode: the orbits as short vectors (an arrow head on the first step of each
+  //    orbit shows its sense), coloured by sense, and the deflected line at angle 0.
+  const int cMode = orbits.column("mode"), cX = orbits.column("x"), cA = orbits.column("angle");
+  const int cY = orbits.column("uy"), cZ = orbits.column("uz"), cDy = orbits.column("duy");
+  const int cDz = orbits.column("duz"), cW = orbits.column("whirl");
+  const auto where = [&](int m, const std::string& extra, int column) {
+    return "($" + std::to_string(cMode) + " == " + std::to_string(m) + extra + " ? $" +
+           std::to_string(column) + " : NaN)";
+  };
+  const std::string file = gnuplotFile(csvFile);
+  for (int m = 1; m <= count; ++m) {
+    body << "  set title " << gnuplotText(modeTitle(m, r.modes[std::size_t(m - 1)]))
+         << " font ',11'\n";
+    if (m == 2) body << "  unset key\n";
+    body << "  splot " << file << " skip 1 using " << cX << ":" << where(m, "", cY) << ":" << cZ
+         << ":(0):" << cDy << ":" << cDz << ":(whirl($" << cW
+         << ")) with vectors nohead linewidth 1.5 linecolor rgb variable notitle, \\\n"
+         << "        " << file << " skip 1 using " << cX << ":"
+         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":" << cZ << ":(0):" << cDy
+         << ":" << cDz << ":(whirl($" << cW
+         << ")) with vectors head size screen 0.012,25 filled linewidth 1.5 linecolor rgb "
+            "variable notitle, \\\n"
+         << "        " << file << " skip 1 using " << cX << ":"
+         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":" << cZ
+         << " with lines linewidth 2.5 linecolor rgb 'black' title 'shaft at angle 0'";
+    for (const auto& [slot, what] : {std::pair<int, const char*>{kForwardSlot, "forward orbit"},
+                                     {kBackwardSlot, "backward orbit"},
+                                     {kPlanarSlot, "straight-line orbit"}})
+      body << ", \\\n        NaN with lines linewidth 2 " << colour(slot) << " title '" << what
+           << "'";
+    if (disks)
+      body << ", \\\n        NaN with lines linewidth 7 linecolor rgb '#99555555' title 'disk'";
+    if (bearings)
+      body << ", \\\n        NaN with points pointtype 9 pointsize 1.6 linecolor rgb 'black' "
+              "title 'bearing'";
+    if (supports)
+      body << ", \\\n        NaN with points pointtype 5 pointsize 1.4 linecolor rgb 'black' "
+              "title 'support'";
+    body << "\n";
+  }
+  body << "  unset multiplot\n";
+  return {chartName, "Rotor modes: orbits along the shaft", width, height, body.str()};
+}
+
+}  // namespace beamrotor

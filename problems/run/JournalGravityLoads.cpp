@@ -1,0 +1,68 @@
+#include "problems/run/JournalGravityLoads.hpp"
+
+#include <stdexcept>
+
+#include "fem/rotor/GravityLoads.hpp"
+#include "problems/deck/Field.hpp"
+#include "problems/deck/JournalTable.hpp"
+#include "problems/run/ModelBuilder.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+constexpr double kStandardGravity = 9.81;  // m/s^2, along -y: the journal's load direction
+
+bool waitsForLoad(const DeckBearing& b) {
+  return b.loadFromGravity && b.table.empty();
+}
+
+}  // namespace
+
+bool needsJournalLoads(const Deck& deck) {
+  for (const DeckBearing& b : deck.rotor.bearings)
+    if (waitsForLoad(b)) return true;
+  return false;
+}
+
+Deck withJournalLoads(const Deck& deck) {
+  // 1. The rotor with placeholder bearings (they become pinned supports below).
+  Deck placeholder = deck;
+  for (DeckBearing& b : placeholder.rotor.bearings)
+    if (waitsForLoad(b)) {
+      b.speeds.clear();
+      b.table = {BearingCoefficients::isotropic(1)};
+    }
+  const auto model = buildModel(placeholder);
+  GravityLoads loads;
+  try {
+    loads = solveGravityLoads(*model, Eigen::Vector3d(0.0, -kStandardGravity, 0.0),
+                              BearingSupport::rigid);
+  } catch (const std::exception& e) {
+    for (const DeckBearing& b : deck.rotor.bearings)
+      if (waitsForLoad(b)) throw DeckError(deck.path, b.place, std::string("load: gravity: ") + e.what());
+  }
+  // 2. Bearings are the model's only Bearing elements, added in deck order.
+  Deck out = deck;
+  for (std::size_t i = 0; i < out.rotor.bearings.size(); ++i) {
+    DeckBearing& b = out.rotor.bearings[i];
+    if (!waitsForLoad(b)) continue;
+    const double W = loads.bearings.at(i).fy;
+    DeckPlace place = b.place;
+    place.field += ".load";
+    if (!(W > 0))
+      throw DeckError(deck.path, place,
+                      "load: gravity: on pinned bearings the rotor's weight gives bearing '" +
+                          b.name + "' " + formatNumber(W) +
+                          " N (the shaft lifts off it); give its load as a number");
+    b.journal->load = W;
+    try {
+      fillJournalTable(b);
+    } catch (const std::invalid_argument& e) {
+      throw DeckError(deck.path, place, "load: gravity (" + formatNumber(W) + " N): " + e.what());
+    }
+  }
+  return out;
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,40 @@
+// A design study across MPI ranks (Open MPI; compiled when CMake finds MPI, BEAMROTOR_MPI).
+// Under `mpirun -n N`, rank 0 is the manager: it hands out chunks of points to ranks that ask
+// (each request carries the rows of the rank's last chunk), solves points itself between
+// messages, restores point order and hands the rows to the sink; so the table and summary
+// are those of the serial run. Without MPI, or run without mpirun, everything here is the
+// threaded study of StudyExecution.hpp.
+#pragma once
+
+#include "problems/study/StudyExecution.hpp"
+
+namespace beamrotor {
+
+/// Starts MPI when the process was launched by mpirun (Open MPI's OMPI_COMM_WORLD_SIZE or a
+/// PMI/PMIx launcher's environment) and ends it on destruction; does nothing otherwise.
+class MpiSession {
+ public:
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  /// This process's rank and the number of ranks (0 and 1 without MPI).
+  static int rank();
+  static int size();
+};
+
+/// True where results are written: without MPI, and on rank 0.
+inline bool isStudyManager() { return MpiSession::rank() == 0; }
+
+/// The points of the study: with several MPI ranks shared among them (sink called on rank 0
+/// only, in point order; `threads` is then ignored, one point at a time per rank), otherwise
+/// solvePoints on this machine.
+void solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points, int threads,
+                       const RowSink& sink);
+
+/// A row as bytes and back (the message format between ranks; exposed for its test).
+void appendRowBytes(std::string& bytes, const StudyRow& row);
+/// Reads the row at `offset` of `bytes`, advancing offset; `shape` gives the vector sizes.
+StudyRow readRowBytes(const std::string& bytes, std::size_t& offset, const StudyRow& shape);
+
+}  // namespace beamrotor

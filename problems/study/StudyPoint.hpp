@@ -1,0 +1,67 @@
+// One point of a design study: the deck re-read with the point's parameter values (so a
+// parameter may move points, supports and loads and resize the mesh), solved with only the
+// analyses its outputs and checks read, and reduced to one row. A point that fails records
+// its error in the row's status; nothing else of it is kept.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/DesignStudy.hpp"
+#include "problems/deck/Overrides.hpp"
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor {
+
+/// What every point shares, read once.
+struct StudyPlan {
+  std::string deckPath;
+  std::string deckText;                      ///< each solver parses its own YAML tree from it
+  std::vector<ParameterOverride> overrides;  ///< --set
+  std::string formulation;                   ///< --formulation, or empty
+  DesignStudySpec spec;
+  std::vector<std::string> parameterNames;  ///< the varied parameters, in spec order
+  std::vector<std::string> checkNames;      ///< the deck's checks, deck order
+  std::vector<std::string> analyses;        ///< the analyses the outputs and checks read
+  /// Whether points must take turns solving: ARPACK (modes, buckling, rotor modes, the
+  /// central-difference step estimate) keeps its state in Fortran SAVE variables and is not
+  /// safe to call from two threads at once. False when every analysis needed is static.
+  bool exclusive = true;
+};
+
+/// One point's row.
+struct StudyRow {
+  long long index = 0;
+  std::vector<double> parameters;
+  std::vector<double> outputs;      ///< NaN where the point gave none (status says why)
+  std::vector<double> checks;       ///< computed values; NaN where the check does not apply
+  std::vector<signed char> passed;  ///< 1 pass, 0 fail, -1 does not apply
+  std::string status = "ok";        ///< "ok" or the point's error, one line
+  bool ok() const { return status == "ok"; }
+};
+
+/// The plan for `deckPath` read with `overrides` (as deck), and spec.
+StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText,
+                        const Deck& deck, std::vector<ParameterOverride> overrides,
+                        const std::string& formulation, DesignStudySpec spec);
+
+/// Solves points of one plan; one per thread (each has its own YAML tree and evaluators).
+class PointSolver {
+ public:
+  explicit PointSolver(const StudyPlan& plan);
+  /// The row of point `index` at `values` (in plan.parameterNames order). Never throws for a
+  /// point's own failure (bad input at these values, an analysis that fails): the row says it.
+  StudyRow solve(long long index, const std::vector<double>& values) const;
+  /// The deck at `values` solved with all its analyses, for the point's own results directory.
+  /// Throws as runDeck does.
+  RunResult solveFully(const std::vector<double>& values) const;
+
+ private:
+  Deck deckAt(const std::vector<double>& values) const;
+  const StudyPlan& plan_;
+  DeckSource source_;
+};
+
+}  // namespace beamrotor

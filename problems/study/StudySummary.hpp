@@ -1,0 +1,54 @@
+// summary.json of a design study, gathered row by row in point order (so a threaded or MPI
+// study sums in the serial order and gives the same file):
+//   {deck, sampling, seed, points, failed, parameters [{name, values | distribution}],
+//    outputs [{name, unit?, limit?, count, min, max, mean, sd, percentiles {p1 .. p99},
+//              worst {point, value, parameters {}}, exceedance? {count, probability, wilson95}}],
+//    checks [{name, applicable, passed, pass_rate, failure_probability? {...}}],
+//    worst_point {point, parameters, why}, failures [first 20 {point, status}]}
+// The worst point of an output is where it is largest (with a limit) or largest in magnitude
+// (without); the study's worst point is the worst of the output nearest its limit (largest
+// value / limit), or without limits the first output's. Sampled studies also give, for each
+// limit and check, the probability of exceeding or failing it with its Wilson 95 % interval.
+// Memory: one double per output per point (for the percentiles), the rest is counters.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "problems/output/JsonWriter.hpp"
+#include "problems/study/StudyPoint.hpp"
+
+namespace beamrotor {
+
+class StudySummary {
+ public:
+  explicit StudySummary(const StudyPlan& plan);
+  /// Rows must come in point order.
+  void add(const StudyRow& row);
+  /// The study's worst point (index and parameter values), if any point succeeded.
+  std::optional<std::pair<long long, std::vector<double>>> worstPoint() const;
+  Json json() const;
+  long long failed() const { return failed_; }
+  long long points() const { return points_; }
+
+ private:
+  struct OutputTally {
+    std::vector<double> values;
+    double mean = 0, m2 = 0;  // Welford's running mean and sum of squared deviations
+    long long worst = -1;
+    double worstValue = 0;   // what made it worst: the value, or its magnitude
+    double worstActual = 0;  // the value itself
+    std::vector<double> worstParameters;
+    long long exceeded = 0;
+  };
+  struct CheckTally {
+    long long applicable = 0, passed = 0;
+  };
+  const StudyPlan& plan_;
+  std::vector<OutputTally> outputs_;
+  std::vector<CheckTally> checks_;
+  long long points_ = 0, failed_ = 0;
+  std::vector<std::pair<long long, std::string>> failures_;  ///< the first few
+};
+
+}  // namespace beamrotor

@@ -1,0 +1,21 @@
+// study.csv, a design study's table: one row per point, in point order,
+//   point, <each varied parameter>, <each output>, then per check "<name>" (the computed
+//   value) and "<name> pass" (1 or 0), and status ("ok" or the point's error).
+// Numbers carry 17 significant digits, so the file gives back every double bit for bit; a cell
+// is empty where the point has no value (a failed point, a check that does not apply there).
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "problems/study/StudyPoint.hpp"
+
+namespace beamrotor {
+
+/// The header line (with its newline).
+std::string studyCsvHeader(const StudyPlan& plan);
+
+/// One row (with its newline).
+std::string studyCsvRow(const StudyRow& row);
+
+}  // namespace beamrotor

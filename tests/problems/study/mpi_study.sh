@@ -1,0 +1,33 @@
+#!/bin/sh
+# A sampled pump-rod study run serially and under `mpirun -n 2`: study.csv and summary.json
+# must agree byte for byte (ranks share the points; rank 0 restores their order). Skipped
+# (exit 77, with the reason) where mpirun is missing. Arguments: the beamrotor executable and
+# the source directory.
+exe=$1
+src=$2
+if ! command -v mpirun >/dev/null 2>&1; then
+  echo "SKIPPED: mpirun not found (install openmpi-bin to run the MPI study test)"
+  exit 77
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+set -- study "$src/problems/pump_rod.yaml" --sample 'w0=normal(1e-3,0.2e-3,0,2e-3)' \
+  --sample 'eta=uniform(0,0.4)' --samples 200 --seed 9 --output 'stress max <= 60 MPa' \
+  --output 'reaction middle uy'
+"$exe" "$@" --out "$tmp/serial" >"$tmp/serial.txt" 2>&1 || { cat "$tmp/serial.txt"; exit 1; }
+mpirun --allow-run-as-root --oversubscribe -n 2 "$exe" "$@" --out "$tmp/mpi" \
+  >"$tmp/mpi.txt" 2>&1 || { echo "mpirun failed:"; cat "$tmp/mpi.txt"; exit 1; }
+status=0
+for f in study.csv summary.json; do
+  if cmp -s "$tmp/serial/$f" "$tmp/mpi/$f"; then
+    echo "$f: identical (serial and mpirun -n 2)"
+  else
+    echo "$f differs between the serial run and mpirun -n 2:"
+    diff "$tmp/serial/$f" "$tmp/mpi/$f" | head -20
+    status=1
+  fi
+done
+# Both ranks took part: the table has every point once.
+rows=$(($(wc -l <"$tmp/mpi/study.csv") - 1))
+[ "$rows" -eq 200 ] || { echo "expected 200 rows, got $rows"; status=1; }
+exit $status
