@@ -2,174 +2,102 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "fem/rotor/BearingSupports.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "fem/solvers/Errors.hpp"
+#include "fem/solvers/SymmetricEigen.hpp"
 
 namespace beamrotor {
 
 namespace {
 
-using Triplets = std::vector<Eigen::Triplet<double>>;
+/// New numbers of the x-y plane's free equations (uy, rz of every node) that are not in
+/// `removed` (ascending): 0, 1, ... in order; -1 for every other equation.
+std::vector<int> planeNumbering(const RotorSystem& system, const std::vector<int>& removed) {
+  const DofMap& dofs = system.dofs();
+  std::vector<char> inPlane(system.size(), 0);
+  for (int node = 0; node < int(system.model().nodes().size()); ++node)
+    for (Dof d : {Dof::uy, Dof::rz})
+      if (const int eq = dofs.equation(node, d); eq >= 0 && dofs.isFree(eq)) inPlane[eq] = 1;
+  std::vector<int> index = numberingWithout(system.size(), removed);
+  int next = 0;
+  for (int i = 0; i < system.size(); ++i) index[i] = inPlane[i] && index[i] >= 0 ? next++ : -1;
+  return index;
+}
 
-/// Entries of A (rows and columns renumbered by `index`, -1 dropping them) shifted by
-/// (rowOffset, colOffset) and scaled, appended to t.
-void appendBlock(Triplets& t, const SparseMatrix& A, const std::vector<int>& index, int rowOffset,
-                 int colOffset, double scale) {
+/// A restricted to the equations `index` keeps (renumbered as it says).
+SparseMatrix restricted(const SparseMatrix& A, const std::vector<int>& index) {
+  const int n = int(std::count_if(index.begin(), index.end(), [](int i) { return i >= 0; }));
+  std::vector<Eigen::Triplet<double>> t;
   for (int col = 0; col < A.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(A, col); it; ++it)
       if (index[it.row()] >= 0 && index[col] >= 0)
-        t.emplace_back(index[it.row()] + rowOffset, index[col] + colOffset, scale * it.value());
+        t.emplace_back(index[it.row()], index[col], it.value());
+  SparseMatrix out(n, n);
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
 }
 
-/// The matrices of the synchronous problem K q0 = Omega^2 (M - i G) q0 over the dofs `index`
-/// keeps, in real form (see CriticalSpeedMap.hpp): K2 = [K 0; 0 K], M2 = [M G; -G M].
-struct SynchronousProblem {
-  SparseMatrix K2, M2;
-  int size = 0;                             ///< n, the kept dofs
-  std::vector<std::pair<int, int>> planes;  ///< (uy, uz) equations (kept numbering) per node
-};
-
-SynchronousProblem synchronousProblem(const SparseMatrix& K, const RotorSystem& system,
-                                      const std::vector<int>& index) {
-  SynchronousProblem p;
-  p.size = int(std::count_if(index.begin(), index.end(), [](int i) { return i >= 0; }));
-  const int n = p.size;
-  Triplets k, m;
-  appendBlock(k, K, index, 0, 0, 1);
-  appendBlock(k, K, index, n, n, 1);
-  appendBlock(m, system.mass(), index, 0, 0, 1);
-  appendBlock(m, system.mass(), index, n, n, 1);
-  appendBlock(m, system.gyroscopic(), index, 0, n, 1);
-  appendBlock(m, system.gyroscopic(), index, n, 0, -1);
-  p.K2.resize(2 * n, 2 * n);
-  p.M2.resize(2 * n, 2 * n);
-  p.K2.setFromTriplets(k.begin(), k.end());
-  p.M2.setFromTriplets(m.begin(), m.end());
-  const DofMap& dofs = system.dofs();
-  for (int node = 0; node < int(system.model().nodes().size()); ++node) {
-    const int y = dofs.equation(node, Dof::uy), z = dofs.equation(node, Dof::uz);
-    if (dofs.isFree(y) && dofs.isFree(z) && index[y] >= 0 && index[z] >= 0)
-      p.planes.emplace_back(index[y], index[z]);
-  }
-  return p;
-}
-
-/// Whirl of q0 = a + i b over all nodes: (forward - backward) / (forward + backward) of the
-/// squared orbit radii |uy +- i uz|^2; +1 forward, -1 backward, 0 planar.
-double whirlMeasure(const SynchronousProblem& p, const Eigen::VectorXd& x) {
-  const std::complex<double> i(0, 1);
-  double forward = 0, backward = 0;
-  for (const auto& [y, z] : p.planes) {
-    const std::complex<double> uy(x[y], x[p.size + y]), uz(x[z], x[p.size + z]);
-    forward += std::norm(uy + i * uz);
-    backward += std::norm(uy - i * uz);
-  }
-  return forward + backward > 0 ? (forward - backward) / (forward + backward) : 0;
-}
-
-// Roots closer than this (relative) are one multiple root: the real form doubles each, and a
-// model without gyroscopic moments has forward and backward whirl at one speed. ARPACK
-// resolves the eigenvalues to ~1e-12 relative.
-constexpr double kSameRoot = 1e-8;
-// Below this fraction of |lambda| the real part is round-off of an imaginary root.
-constexpr double kImaginary = 1e-6;
-// A clearly backward shape: forward whirl gives +1, a planar mix of the two about 0.
-constexpr double kClearlyBackward = -0.5;
-
-/// The lowest `count` forward synchronous roots (rad/s) at least `floor`, nearest the shift.
-std::vector<double> forwardRoots(const SynchronousProblem& p, int count, double shift,
-                                 double floor, int extra, EigenMethod method,
-                                 QuadraticEigenSolver& solver) {
-  const SparseMatrix D(2 * p.size, 2 * p.size);
-  const int states = 4 * p.size;
-  // Per forward root: two real shapes, each a conjugate pair; as many backward ones.
-  int asked = std::min(states, 8 * count + 4 + extra);
-  while (true) {
-    const QuadraticEigenpairs e = solver.solve(p.K2, D, p.M2, asked, shift, method);
-    struct Root {
-      double speed, whirl;
-    };
-    std::vector<Root> roots;
-    for (int j = 0; j < int(e.values.size()); ++j) {
-      const std::complex<double> lambda = e.values[j];
-      // Infinite eigenvalues (a singular M2) and real ones are no critical speeds.
-      if (!std::isfinite(std::abs(lambda)) || !(lambda.imag() > floor) ||
-          std::abs(lambda.real()) > kImaginary * std::abs(lambda))
-        continue;
-      // Omega^2 is real, so the real and imaginary parts of the shape are both shapes.
-      const Eigen::VectorXcd q = e.vectors.col(j);
-      Eigen::VectorXd x = q.real();
-      if (q.imag().norm() > x.norm()) x = q.imag();
-      roots.push_back({lambda.imag(), whirlMeasure(p, x)});
-    }
-    std::sort(roots.begin(), roots.end(),
-              [](const Root& a, const Root& b) { return a.speed < b.speed; });
-    std::vector<double> forward;
-    for (std::size_t j = 0; j < roots.size();) {
-      std::size_t end = j + 1;
-      bool isForward = roots[j].whirl > kClearlyBackward;
-      while (end < roots.size() && roots[end].speed - roots[j].speed <= kSameRoot * roots[j].speed)
-        isForward = isForward || roots[end++].whirl > kClearlyBackward;
-      if (isForward) forward.push_back(roots[j].speed);
-      j = end;
-    }
-    // The last root found may be missing its double: only those below it are complete.
-    if (int(forward.size()) > count || asked >= states) {
-      if (int(forward.size()) < count)
-        throw SolveError("critical-speed map: only " + std::to_string(forward.size()) +
-                         " forward critical speeds exist in this model (asked " +
-                         std::to_string(count) + ")");
-      forward.resize(count);
-      return forward;
-    }
-    asked = std::min(states, 2 * asked);
-  }
+/// The lowest `count` critical speeds (rad/s) of K q = Omega^2 M q above `floor` (rad/s),
+/// Lanczos shifted to `shift` (rad/s)^2 below the spectrum; `skipped` more eigenvalues are
+/// asked for, those below the floor (rigid-body modes) being dropped.
+std::vector<double> criticalSpeeds(const SparseMatrix& K, const SparseMatrix& M, int count,
+                                   double shift, double floor, int skipped) {
+  const int asked = std::min<int>(int(K.rows()), count + skipped);
+  const EigenPairs e = symmetricEigenpairs(K, M, asked, shift);
+  std::vector<double> out;
+  for (int j = 0; j < int(e.values.size()) && int(out.size()) < count; ++j)
+    if (e.values[j] > floor * floor) out.push_back(std::sqrt(e.values[j]));
+  if (int(out.size()) < count)
+    throw SolveError("critical-speed map: only " + std::to_string(out.size()) +
+                     " critical speeds found in this model (asked " + std::to_string(count) +
+                     ")");
+  return out;
 }
 
 }  // namespace
 
 CriticalSpeedMap solveCriticalSpeedMap(const Model& model, const std::vector<double>& stiffness,
-                                       int count, EigenMethod method) {
+                                       int count) {
   const RotorSystem system(model);
   const int n = system.size();
-  // 1. The rotor without its bearings, and the bearings' free lateral equations.
+  // 1. The rotor without its bearings, and the bearings' free lateral equations; the x-y plane.
   const BearingSupports supports = bearingSupports(system);
-  const SparseMatrix& shaft = supports.shaft;
-  const std::vector<int> all = numberingWithout(n, {});
-  QuadraticEigenSolver solver;
+  const std::vector<int> plane = planeNumbering(system, {});
+  const SparseMatrix shaft = restricted(supports.shaft, plane);
+  const SparseMatrix mass = restricted(system.mass(), plane);
   CriticalSpeedMap out;
   out.stiffness = stiffness;
 
-  // 2. Each stiffness: the shaft plus k on every bearing's uy and uz.
+  // 2. Each stiffness: the shaft plus k on every bearing's uy.
   SparseMatrix unit(n, n);
   {
-    Triplets t;
+    std::vector<Eigen::Triplet<double>> t;
     for (int eq : supports.equations) t.emplace_back(eq, eq, 1.0);
     unit.setFromTriplets(t.begin(), t.end());
   }
+  const SparseMatrix springs = restricted(unit, plane);
   for (double k : stiffness) {
-    const SynchronousProblem p = synchronousProblem(shaft + k * unit, system, all);
-    out.speeds.push_back(forwardRoots(p, count, 0, 0, 0, method, solver));
+    // K + k S is positive definite for k > 0 (the bearings hold the rigid-body motions).
+    const SparseMatrix Kk = shaft + k * springs;
+    out.speeds.push_back(criticalSpeeds(Kk, mass, count, 0, 0, 0));
   }
 
   // 3. Pinned bearings: their equations removed.
-  out.pinned = forwardRoots(
-      synchronousProblem(shaft, system, numberingWithout(n, supports.equations)), count, 0, 0, 0,
-      method, solver);
+  const std::vector<int> pinned = planeNumbering(system, supports.equations);
+  out.pinned = criticalSpeeds(restricted(supports.shaft, pinned),
+                              restricted(system.mass(), pinned), count, 0, 0, 0);
 
-  // 4. Free rotor: K is singular (rigid-body motions, Omega = 0), so the shift lies below the
-  // lowest pinned root and roots below 1e-4 of it count as rigid (their computed Omega is
-  // round-off of zero, ~1e-8 of the shift).
+  // 4. Free rotor: K is singular (two rigid-body motions in the plane, Omega = 0), so the shift
+  // lies below them, at -(0.1 Omega_1,pinned)^2; eigenvalues below (1e-4 Omega_1,pinned)^2 are
+  // rigid (their computed value is round-off of zero, ~1e-12 of the shift).
   const double scale = out.pinned.front();
-  constexpr int kRigidStates = 16;  // 4 lateral rigid motions, doubled, each a pair
-  out.freeFree = forwardRoots(synchronousProblem(shaft, system, all), count, -0.1 * scale,
-                              1e-4 * scale, kRigidStates, method, solver);
+  constexpr int kRigidModes = 2;
+  out.freeFree =
+      criticalSpeeds(shaft, mass, count, -0.01 * scale * scale, 1e-4 * scale, kRigidModes);
   return out;
 }
 

@@ -1,29 +1,22 @@
-// Undamped critical-speed map: the rotor's forward synchronous critical speeds against an
-// isotropic stiffness k put in place of every bearing of the model (kyy = kzz = k, no
-// cross-coupling, no damping), with its two asymptotes: bearings as pinned supports
+// Undamped critical-speed map: the rotor's critical speeds (gyroscopic moments neglected)
+// against an isotropic stiffness k put in place of every bearing of the model (kyy = kzz = k,
+// no cross-coupling, no damping), with its two asymptotes: bearings as pinned supports
 // (k -> infinity) and the free rotor's flexible modes (k -> 0).
 //
 // A critical speed is a spin speed Omega at which the undamped rotor can whirl at Omega
-// itself (the whirl unbalance drives). With q = q0 e^{i Omega t} in M q'' + Omega G q' + K q = 0
-// (fem/rotor/RotorSystem.hpp; G the gyroscopic matrix per unit speed):
-//   K q0 = Omega^2 (M - i G) q0,
-// a linear eigenproblem in Omega^2 whose pencil is Hermitian (G is real and skew). Written with
-// q0 = a + i b as a real problem of twice the size,
-//   [K 0; 0 K] x = Omega^2 [M G; -G M] x,      x = (a, b),
-// (both matrices symmetric; each root appears twice, as (a, b) and (-b, a)), it is solved by the
-// project's quadratic eigensolver as lambda^2 M2 + K2 = 0, lambda = i Omega. The roots include
-// backward synchronous whirl (q0 turning against the spin), which unbalance does not excite:
-// each root is kept when its shape whirls forward (or planar, when forward and backward
-// coincide because the model has no gyroscopic moments). A root with Omega^2 < 0 (a disk whose
-// polar inertia exceeds its diametral one, in a conical mode) has no critical speed.
-// Gyroscopic moments are thus included wherever the model has them (disks' Jp, shafts' rotary
-// inertia); without them the map is the non-rotating rotor's natural frequencies.
+// itself (the whirl unbalance drives). This map neglects gyroscopic moments: its critical
+// speeds are the lateral natural frequencies of the non-rotating rotor (rotary inertia of
+// shaft and disks included, as diametral inertia). With isotropic bearings and no
+// cross-coupling the x-y plane (uy, rz) is then uncoupled from the x-z plane, which has the
+// same frequencies, so the map solves the real symmetric problem of the x-y plane alone,
+//   K_y(k) q = Omega^2 M_y q,
+// by the project's shift-invert Lanczos with Sturm checks (fem/solvers/SymmetricEigen.hpp).
+// Rotors whose disks' polar inertia matters belong in a Campbell diagram instead.
 #pragma once
 
 #include <vector>
 
 #include "fem/model/Model.hpp"
-#include "fem/rotor/RotorEigen.hpp"
 
 namespace beamrotor {
 
@@ -56,6 +49,6 @@ std::vector<MapCrossing> mapCrossings(const CriticalSpeedMap& map,
 /// coefficients are ignored). Throws std::invalid_argument without bearings, SolveError when
 /// the eigensolver fails or finds fewer than `count` critical speeds.
 CriticalSpeedMap solveCriticalSpeedMap(const Model& model, const std::vector<double>& stiffness,
-                                       int count, EigenMethod method = EigenMethod::automatic);
+                                       int count);
 
 }  // namespace beamrotor

@@ -114,7 +114,7 @@ void printCriticalSpeedMap(std::ostream& out, const AnalysisOutcome& a, const Ro
   const CriticalSpeedMap& m = *r.map;
   out << "critical-speed-map analysis '" << a.name << "' (" << m.stiffness.size()
       << " bearing stiffnesses " << formatValue(m.stiffness.front()) << " to "
-      << formatValue(m.stiffness.back()) << " N/m, forward synchronous, "
+      << formatValue(m.stiffness.back()) << " N/m, gyroscopic moments neglected, "
       << formatValue(r.mapTime) << " s)\n";
   const auto list = [&](const char* what, const std::vector<double>& speeds) {
     out << "    " << what;

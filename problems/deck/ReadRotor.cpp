@@ -313,11 +313,6 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
     r.speeds = readSpeedRange(c, f);
     if (auto o = f.get("order")) r.order = o->positive(ev);
   } else if (a.type == "critical-speed-map") {
-    // Held back: its synchronous eigenproblem does not yet finish on every model (its tests,
-    // tests/fem/rotor/test_critical_speed_map.cpp.unverified, hang); refuse rather than hang.
-    f.require("type").fail(
-        "the critical-speed map is not available yet: its eigen solution does not finish on "
-        "every rotor, so it is refused until its tests pass (FORMAT.md)");
     readCriticalSpeedMap(c, f, r);
   } else if (a.type == "bearing-loads") {
     readBearingLoads(c, f, r);

@@ -53,12 +53,13 @@ ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::strin
          << map.column(mapColumn(j)) << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 "
          << colour(j - 1) << " title " << gnuplotText("critical speed " + std::to_string(j));
   // Bearings: stiffness across, speed up, so a crossing with a map line is a critical speed.
+  // Even bearings wide and black, odd ones narrow and brown on top: equal bearings stay visible.
   const int index = bearings.column("bearing_index"), speed = bearings.column("speed_rpm");
   for (std::size_t b = 0; b < bearingNames.size(); ++b)
     for (const char* d : {"kxx", "kyy"})
       body << ", \\\n       " << gnuplotFile(bearingsFile) << " skip 1 using ($" << index
            << " == " << b + 1 << " ? $" << bearings.column(d) << " : NaN):" << speed
-           << " with lines linewidth 2.5 dashtype " << (d[1] == 'x' ? 1 : 4)
+           << " with lines linewidth " << (b % 2 ? "2" : "5") << " dashtype " << (d[1] == 'x' ? 1 : 4)
            << " linecolor rgb '" << (b % 2 ? "#8c564b" : "black") << "' title "
            << gnuplotText("bearing " + bearingNames[b] + " " + d);
   if (crossingData.table.rowCount() > 0)

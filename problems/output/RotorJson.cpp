@@ -207,7 +207,7 @@ Json criticalSpeedMapJson(const std::string& stem, const RotorOutcome& r) {
     files["bearings_csv"] = mapBearingsCsv(stem);
     files["crossings_csv"] = mapCrossingsCsv(stem);
   }
-  return {{"whirl", "forward synchronous"},
+  return {{"whirl", "non-rotating (gyroscopic moments neglected)"},
           {"stiffness", stiffness},
           {"critical_speeds_rpm", speeds},
           {"pinned_rpm", rpms(m.pinned)},

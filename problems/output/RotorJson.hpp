@@ -12,8 +12,9 @@
 //                stiffness {A, B}}, two_dof {a, b, d, rho2, decoupled, modes [{mode,
 //                frequency_hz, k_rad_s, kind, z, phi, n (null when infinite), FA, FB,
 //                inertia_force, inertia_moment}]}}
-//   critical-speed-map: {type, name, whirl ("forward synchronous"), stiffness [N/m],
-//                critical_speeds_rpm [[per stiffness, ascending]], pinned_rpm, free_free_rpm,
+//   critical-speed-map: {type, name, whirl ("non-rotating (gyroscopic moments neglected)"),
+//                stiffness [N/m], critical_speeds_rpm [[per stiffness, ascending]],
+//                pinned_rpm, free_free_rpm,
 //                bearings [{bearing, speeds_rpm, kxx, kyy}], time_s, files}
 //   bearing-loads: {type, name, bearing_support (rigid | elastic), weight [x, y, z] (N),
 //                bearings {NAME: {x, fy, fz, load}} (N, the force on the shaft; load its

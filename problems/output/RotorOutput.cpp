@@ -134,9 +134,9 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
       p.mapBearings->write(dir / mapBearingsCsv(stem));
       p.mapCrossings->write(dir / mapCrossingsCsv(stem));
     }
-    const std::string what = "Undamped critical-speed map, forward synchronous whirl: k = " +
+    const std::string what = "undamped, gyroscopics neglected: k = " +
                              stiffnessText(r.map->stiffness.front()) + " to " +
-                             stiffnessText(r.map->stiffness.back()) + " N/m at every bearing, " +
+                             stiffnessText(r.map->stiffness.back()) + " N/m at all bearings, " +
                              std::to_string(r.map->stiffness.size()) + " points";
     if (charts && p.map->rowCount() > 0)
       drawChart(dir, criticalSpeedMapDiagram(caption + "\n" + what, criticalSpeedMapChart(stem),

@@ -3,6 +3,7 @@
 
 #include <complex>
 #include <memory>
+#include <optional>
 
 #include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
@@ -27,10 +28,10 @@ inline RotorOptions rotorOptions(int modes, std::complex<double> shift = 0,
 
 /// A Jeffcott rotor: a massless Euler-Bernoulli shaft (L, D, E; density 1e-12 of steel's, so
 /// its mass is ~4e-13 of the disk's) simply supported at both ends, a point mass m at mid-span,
-/// and `atDisk` (when any coefficient is set) as a bearing there. Hermite elements are exact for
+/// and `atDisk`, when given, as a bearing there. Hermite elements are exact for
 /// a point load, so the mid-span stiffness is exactly 48 E I / L^3. Returns the disk's node.
 inline int buildJeffcottRotor(Model& model, double L, double D, double m, double E,
-                              const BearingCoefficients& atDisk = {}) {
+                              const std::optional<BearingCoefficients>& atDisk = {}) {
   auto sec = std::make_shared<Section>(
       Section::circle("shaft", Material::fromEnu("light", E, 0.3, 7850e-12), D));
   LineSpec spec;
@@ -42,10 +43,7 @@ inline int buildJeffcottRotor(Model& model, double L, double D, double m, double
   model.add<PointInertia>(disk, DofSet::lateral(), m);
   for (const char* end : {"left", "right"})
     model.addSupport({end, model.node(end), {{Dof::uy, 0}, {Dof::uz, 0}}});
-  const BearingCoefficients& b = atDisk;
-  const bool any = b.kyy != 0 || b.kyz != 0 || b.kzy != 0 || b.kzz != 0 || b.cyy != 0 ||
-                   b.cyz != 0 || b.czy != 0 || b.czz != 0;
-  if (any) model.add<Bearing>(disk, atDisk);
+  if (atDisk) model.add<Bearing>(disk, *atDisk);
   return disk;
 }
 

@@ -70,6 +70,7 @@ struct CampbellJeffcott {
   double k() const { return 48 * E * I() / std::pow(L, 3); }
   double wn() const { return std::sqrt(k() / m); }
   int build(Model& model, double c = 0) const {
+    if (c == 0) return test::buildJeffcottRotor(model, L, D, m, E);
     return test::buildJeffcottRotor(model, L, D, m, E, BearingCoefficients{0, 0, 0, 0, c, 0, 0, c});
   }
 };
