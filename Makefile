@@ -16,7 +16,7 @@ VTK_EXTRAS := $(if $(filter paraview-dev,$(VTK_PACKAGE)),xvfb xauth)
 PACKAGES := cmake g++ make libopenmpi-dev openmpi-bin libeigen3-dev libsuitesparse-dev libarpack2-dev $(VTK_PACKAGE) $(VTK_EXTRAS) \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
             gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest \
-            dpkg-dev file libpng-dev
+            dpkg-dev file libpng-dev libopenblas0-serial
 BUILD    := build
 JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml
@@ -75,9 +75,13 @@ package: build
 # Speed figures (never part of `make test`), side by side with SciPy on the same machine:
 # planar statics at 10^3 .. 10^6 elements and 10 modes at 10^4, medians of 3 runs; grid3d at
 # 10^6 dofs (statics and 10 modes); rotor, 200 elements (Campbell, 50 speeds x 12 modes).
+# Warm figures are medians of repeats inside one process; cold ones (tests/bench/cold.py) the
+# median wall time of 3 fresh processes each doing one run (`bench --cold`: the heap is not
+# populated first, as in `solve`), start-up and page faults included; SciPy likewise.
 # JSON, ratios (summary.json) and the scaling chart in out/bench/.
 BENCH_PACKAGES := python3-scipy
 PY             := /usr/bin/python3
+COLD           := $(PY) tests/bench/cold.py --repeat 3 --json
 bench: build
 	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
 	mkdir -p out/bench
@@ -86,15 +90,25 @@ bench: build
 	    --json out/bench/planar_static_$$n.json || exit 1; \
 	  $(PY) tests/bench/planar_scipy.py --elements $$n --repeat 3 \
 	    --json out/bench/scipy_static_$$n.json || exit 1; \
+	  $(COLD) out/bench/cold_planar_static_$$n.json -- ./$(BUILD)/beamrotor bench --kind planar \
+	    --elements $$n --modes 0 --repeat 1 --cold || exit 1; \
+	  $(COLD) out/bench/cold_scipy_static_$$n.json -- $(PY) tests/bench/planar_scipy.py \
+	    --elements $$n --json out/bench/cold_scipy_run.json || exit 1; \
 	done
 	./$(BUILD)/beamrotor bench --kind planar --elements 10000 --modes 10 --repeat 3 \
 	  --json out/bench/planar_modal_10000.json
 	$(PY) tests/bench/planar_scipy.py --elements 10000 --modes 10 \
 	  --json out/bench/scipy_modal_10000.json
+	$(COLD) out/bench/cold_planar_modal_10000.json -- ./$(BUILD)/beamrotor bench --kind planar \
+	  --elements 10000 --modes 10 --repeat 1 --cold
+	$(COLD) out/bench/cold_scipy_modal_10000.json -- $(PY) tests/bench/planar_scipy.py \
+	  --elements 10000 --modes 10 --json out/bench/cold_scipy_run.json
 	./$(BUILD)/beamrotor bench --kind grid3d --dofs 1000000 --modes 10 --repeat 1 \
 	  --json out/bench/grid3d_1000000.json
 	./$(BUILD)/beamrotor bench --kind rotor --elements 200 --repeat 3 \
 	  --json out/bench/rotor_200.json
+	$(COLD) out/bench/cold_rotor_200.json -- ./$(BUILD)/beamrotor bench --kind rotor \
+	  --elements 200 --repeat 1 --cold
 	$(PY) tests/bench/compare.py out/bench
 
 # Design-study throughput (never part of `make test`; a few minutes): the pump rod's

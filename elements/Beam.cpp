@@ -224,12 +224,18 @@ Matrix12 toGlobal(const Matrix12& A, const Eigen::Matrix3d& R) {
 Beam::Beam(int n1, const Eigen::Vector3d& x1, int n2, const Eigen::Vector3d& x2,
            std::shared_ptr<const Section> section, DofSet carried, BeamOptions options,
            const Eigen::Vector3d& zHint)
+    : Beam(n1, n2, x2 - x1, (x2 - x1).norm(), std::move(section), carried, options, zHint) {}
+
+Beam::Beam(int n1, int n2, const Eigen::Vector3d& direction, double length,
+           std::shared_ptr<const Section> section, DofSet carried, BeamOptions options,
+           const Eigen::Vector3d& zHint)
     : nodes_{n1, n2}, section_(std::move(section)), carried_(carried), options_(options) {
-  const Eigen::Vector3d axis = x2 - x1;
-  L_ = axis.norm();
-  if (!(L_ > 0)) throw std::invalid_argument("beam element of zero length");
+  L_ = length;
+  const double directionNorm = direction.norm();
+  if (!(L_ > 0) || !(directionNorm > 0))
+    throw std::invalid_argument("beam element of zero length");
   if (!section_) throw std::invalid_argument("beam element without a section");
-  const Eigen::Vector3d ex = axis / L_;
+  const Eigen::Vector3d ex = direction / directionNorm;
   Eigen::Vector3d hint = zHint;
   if (std::abs(ex.dot(hint.normalized())) > 1 - 1e-9) hint = Eigen::Vector3d::UnitY();
   const Eigen::Vector3d ez = (hint - hint.dot(ex) * ex).normalized();

@@ -38,23 +38,27 @@ Line buildLine(Model& model, const LineSpec& spec) {
     line.stations.push_back(at);
   };
   addNode(0);
+  // Cuts are measured from the segment's start, so a piece without named points inside is
+  // the segment's own length and each element's length is piece / n to round-off, however
+  // far from the origin the segment lies (stations far out have fewer digits to spare).
   for (std::size_t k = 0; k < spec.segments.size(); ++k) {
     const Segment& seg = spec.segments[k];
-    std::vector<double> cuts{bounds[k]};
+    std::vector<double> cuts{0};
     for (const NamedPoint& p : spec.points)
-      if (p.at > bounds[k] + tol && p.at < bounds[k + 1] - tol) cuts.push_back(p.at);
+      if (p.at > bounds[k] + tol && p.at < bounds[k + 1] - tol) cuts.push_back(p.at - bounds[k]);
     std::sort(cuts.begin(), cuts.end());
-    cuts.push_back(bounds[k + 1]);
+    cuts.push_back(seg.length);
     for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
       const double piece = cuts[c + 1] - cuts[c];
       if (piece <= tol) continue;
       const int n = elementsFor(seg, piece);
       for (int e = 1; e <= n; ++e) {
-        const double at = e == n ? cuts[c + 1] : cuts[c] + piece * e / n;
+        const double at = e < n                  ? bounds[k] + cuts[c] + piece * e / n
+                          : c + 2 == cuts.size() ? bounds[k + 1]
+                                                 : bounds[k] + cuts[c + 1];
         const int from = line.nodes.back();
         addNode(at);
-        const int to = line.nodes.back();
-        line.beams.push_back(&model.add<Beam>(from, model.nodes()[from], to, model.nodes()[to],
+        line.beams.push_back(&model.add<Beam>(from, line.nodes.back(), dir, piece / n,
                                               seg.section, spec.dofs, seg.options));
       }
     }

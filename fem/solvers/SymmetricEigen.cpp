@@ -55,7 +55,18 @@ EigenPairs nearest(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors
 EigenPairs denseEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count, double sigma) {
   const Eigen::MatrixXd Kd(K), Md(M);
   Eigen::LLT<Eigen::MatrixXd> llt(Kd - sigma * Md);
-  if (llt.info() != Eigen::Success) {
+  if (llt.info() == Eigen::Success) {
+    // A positive definite factor is not enough: a singular K (free-free, shift 0) whose null
+    // space is exact in floating point (element lengths exact) can factor with round-off-sized
+    // positive pivots. Judged as the sparse path judges its LDL': the pivots of the
+    // symmetrically scaled matrix D^-1/2 A D^-1/2 (D = diag A) are L_jj^2 / A_jj, independent
+    // of the dofs' units; their smallest over largest below kSingularRcond means singular.
+    const Eigen::VectorXd a = (Kd - sigma * Md).diagonal();
+    const Eigen::VectorXd l = llt.matrixLLT().diagonal();
+    const Eigen::ArrayXd pivots = l.array().square() / a.array();
+    const double rcond = pivots.maxCoeff() > 0 ? pivots.minCoeff() / pivots.maxCoeff() : 0.0;
+    if (!(rcond > kSingularRcond)) throw SingularSystem(singularShiftMessage(sigma, rcond));
+  } else {
     // Either sigma sits inside the spectrum or on an eigenvalue: fall back on an LU check.
     Eigen::FullPivLU<Eigen::MatrixXd> lu(Kd - sigma * Md);
     if (!lu.isInvertible()) throw SingularSystem(singularShiftMessage(sigma, 0.0));

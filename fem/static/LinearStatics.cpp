@@ -36,7 +36,8 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
 ///   assembly round every entry, so A is known to about eps |A|): the response to
 ///   eps (|A| |x|)_i, the componentwise perturbation of Skeel's condition number (Higham ch. 7)
 ///   for this x, taken with one sign, which excites the smooth modes that amplify it most (on a
-///   cantilever it bounds the true error by a factor 15 to 20).
+///   cantilever with exact element lengths it bounds the true error by a factor 600 to 1100,
+///   measured at 16 and 2000 elements: the real roundings have both signs and partly cancel).
 double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
                      const LinearSolver& solver) {
   const Eigen::Index n = b.size();

@@ -49,6 +49,7 @@ std::string benchJson(const BenchReport& r) {
   j["dofs"] = r.dofs;
   j["free_dofs"] = r.freeDofs;
   j["repeat"] = r.options.repeat;
+  j["cold"] = r.options.cold;
   j["solver"] = r.solver;
   j["factor_entries"] = r.factorEntries;
   j["build_s"] = r.median.build;

@@ -16,6 +16,9 @@ struct BenchOptions {
   int repeat = 3;
   long long dofs = 0;           ///< > 0: the size whose free dof count is nearest this
   std::string exportDir;        ///< not empty: write K, M and f there (Matrix Market)
+  /// As a user's `solve` runs: the heap is not populated before each run (prepareMemory),
+  /// so first-touch page faults fall inside the timings.
+  bool cold = false;
 };
 
 /// Medians over the repeats, seconds. For rotor, modalTotal is the Campbell diagram.

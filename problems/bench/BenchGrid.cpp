@@ -59,7 +59,7 @@ BenchReport benchGrid(const BenchOptions& options) {
   double reaction = 0, totalLoad = 0, centreW = 0, pairSplit = 0;
   Deflection w;
   for (int run = 0; run < std::max(1, options.repeat); ++run) {
-    prepareMemory(estimatedStaticBytes(gridElements(bays), 6));
+    prepareMemory(options, estimatedStaticBytes(gridElements(bays), 6));
     Stopwatch clock;
     const GridBenchModel grid = gridBenchModel(bays);
     const double build = clock.lap();

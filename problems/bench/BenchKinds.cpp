@@ -29,13 +29,13 @@ BenchTimings BenchSamples::medians() const {
           median(solve_), median(total_),    median(modal_)};
 }
 
-void prepareMemory(std::size_t bytes) {
+void prepareMemory(const BenchOptions& options, std::size_t bytes) {
   const std::size_t available = availableMemoryBytes();
   if (bytes > available)
     throw std::invalid_argument("this model needs about " + memoryText(double(bytes)) + " but " +
                                 memoryText(double(available)) +
                                 " are available: use fewer --elements or --dofs");
-  prefaultHeap(bytes);
+  if (!options.cold) prefaultHeap(bytes);
 }
 
 int modesOrDefault(const BenchOptions& options, int kindDefault) {

@@ -29,8 +29,8 @@ class BenchSamples {
 
 /// Before each run: refuses a model whose estimated memory (`bytes`) is more than the process
 /// can have (std::invalid_argument with the estimate and what is available); otherwise makes
-/// that memory ready (prefaultHeap).
-void prepareMemory(std::size_t bytes);
+/// that memory ready (prefaultHeap), unless options.cold.
+void prepareMemory(const BenchOptions& options, std::size_t bytes);
 
 /// The kind's modes when options.modes is -1.
 int modesOrDefault(const BenchOptions& options, int kindDefault);

@@ -35,7 +35,7 @@ BenchReport benchPlanar(const BenchOptions& options) {
   BenchSamples samples;
   double midspanW = 0, exactMidspanW = 0, exactLowestHz = 0;
   for (int run = 0; run < std::max(1, options.repeat); ++run) {
-    prepareMemory(estimatedStaticBytes(elements, 3));
+    prepareMemory(options, estimatedStaticBytes(elements, 3));
     Stopwatch clock;
     const PlanarBenchModel bench = planarBenchModel(elements);
     const double build = clock.lap();

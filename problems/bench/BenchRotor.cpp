@@ -59,7 +59,7 @@ BenchReport benchRotor(const BenchOptions& options) {
   double bearingForce = 0, weight = 0;
   int symbolicAnalyses = 0;
   for (int run = 0; run < std::max(1, options.repeat); ++run) {
-    prepareMemory(estimatedStaticBytes(elements, 4));
+    prepareMemory(options, estimatedStaticBytes(elements, 4));
     Stopwatch clock;
     const RotorBenchModel rotor = rotorBenchModel(elements);
     const double build = clock.lap();

@@ -56,13 +56,11 @@ PlanarBenchModel planarBenchModel(int elements) {
   Model& m = *out.model;
   const auto section = std::make_shared<const Section>(
       Section::rectangle("20x20", steel(), side, side));
-  const int n = out.spans * perSpan;
-  const double h = span / perSpan;
-  for (int i = 0; i <= n; ++i) m.addNode({i * h, 0, 0});
-  for (int i = 0; i < n; ++i) {
-    auto& beam = m.add<Beam>(i, m.nodes()[i], i + 1, m.nodes()[i + 1], section, DofSet::planar());
-    beam.setDistributedLoad({0, q, 0});
-  }
+  // One segment per span: every element is span / perSpan long to round-off, at any distance
+  // from the origin (LineBuilder.hpp), and node s * perSpan ends span s.
+  LineSpec spec;
+  spec.segments.assign(out.spans, {span, section, perSpan});
+  for (Beam* beam : buildLine(m, spec).beams) beam->setDistributedLoad({0, q, 0});
   for (int s = 0; s <= out.spans; ++s)
     m.addSupport({"pin" + std::to_string(s), s * perSpan, {{Dof::ux, 0}, {Dof::uy, 0}}});
   out.midspanNode = (out.spans / 2) * perSpan + perSpan / 2;

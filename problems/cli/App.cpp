@@ -117,6 +117,9 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->add_option("--export", bench.exportDir,
                    "write the model's K, M and load vector (Matrix Market) into DIR")
       ->type_name("DIR");
+  benchCmd->add_flag("--cold", bench.cold,
+                     "leave the heap unpopulated, as `solve` does: first-touch page faults count "
+                     "(make bench times such runs as fresh processes)");
 
   verify::ReportOptions report;
   CLI::App* reportCmd =

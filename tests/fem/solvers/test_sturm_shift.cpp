@@ -1,11 +1,16 @@
 // Lowest modes of clustered spectra: Sturm counts (LDL' inertia) against a dense eigensolver,
-// the shift they move Lanczos to, and equal eigenvalues in two bending planes.
+// the shift they move Lanczos to, and equal eigenvalues in two bending planes; and the dense
+// path's judgement of a shift that sits on an eigenvalue (a free-free beam at shift 0).
 #include <doctest/doctest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <cmath>
 
+#include "fem/assembly/Assembly.hpp"
 #include "fem/modal/Modal.hpp"
 #include "fem/model/DofMap.hpp"
+#include "fem/solvers/Errors.hpp"
 #include "fem/solvers/SturmShift.hpp"
 #include "fem/solvers/SymmetricEigen.hpp"
 #include "problems/bench/StandardModels.hpp"
@@ -112,6 +117,40 @@ TEST_SUITE("sturm shift") {
       const Eigen::VectorXd x = pairs.vectors.col(k);
       CHECK((p.K * x - pairs.values[k] * (p.M * x)).norm() / (p.K * x).norm() < 1e-8);
     }
+  }
+
+  TEST_CASE("dense path: a free-free K at shift 0 is singular by its scaled pivots") {
+    // 40 elements, uy and rz: 82 dofs, the dense path. With element lengths exact the rigid
+    // translation and rotation are in K's null space to round-off, and Cholesky of K succeeds
+    // with round-off-sized pivots: a positive definite factor alone would let rigid-body
+    // eigenvalues of 1/pivot size through. The scaled pivots (smallest over largest of
+    // L_jj^2 / K_jj) name it singular, as the sparse LDL' path does.
+    const auto section = steelRectangle(0.04, 0.04);
+    Model freeFree;
+    uniformBeam(freeFree, 1.5, section, 40, DofSet{Dof::uy, Dof::rz});
+    const DofMap freeDofs(freeFree);
+    const SparseAssembler freeAssembler(freeFree, freeDofs);
+    const SparseMatrix K = freeAssembler.assemble(MatrixKind::stiffness);
+    const SparseMatrix M = freeAssembler.assemble(MatrixKind::mass);
+    REQUIRE(K.rows() == 82);
+    CHECK(Eigen::LLT<Eigen::MatrixXd>(Eigen::MatrixXd(K)).info() == Eigen::Success);
+    CHECK_THROWS_AS(symmetricEigenpairs(K, M, 3, 0.0), SingularSystem);
+
+    // A slender cantilever on the same path (99 elements, 198 dofs) is not refused: its scaled
+    // pivots fall like 1/n^3 from the clamp to the free end (a chain's end stiffness), far
+    // above round-off. Its lowest eigenvalue against beta L = 1.875104 (Blevins, Formulas for
+    // Natural Frequency and Mode Shape, table 8-1): 7 digits cost up to 7e-8 on (beta L)^2,
+    // 99 Hermite elements 1e-9 (order h^4).
+    Model cantilever;
+    const Line line = uniformBeam(cantilever, 1.5, section, 99, DofSet{Dof::uy, Dof::rz});
+    clamp(cantilever, "clamp", line.nodes.front(), DofSet{Dof::uy, Dof::rz});
+    const DofMap dofs(cantilever);
+    const SparseAssembler assembler(cantilever, dofs);
+    const EigenPairs pairs = symmetricEigenpairs(assembler.assemble(MatrixKind::stiffness),
+                                                 assembler.assemble(MatrixKind::mass), 1, 0.0);
+    REQUIRE(pairs.values.size() == 1);
+    const double omega1 = std::pow(1.875104 / 1.5, 2) * std::sqrt(section->EIz() / section->rhoA());
+    CHECK(relError(pairs.values[0], omega1 * omega1) < 1e-6);
   }
 
   TEST_CASE("equal frequencies in two bending planes are both found") {
