@@ -169,7 +169,8 @@ void ExpressionEvaluator::requireParsers() const {
 struct ExpressionMemo::Entry {
   std::size_t names = 0;  ///< how many names were defined when it was met
   std::unique_ptr<mu::Parser> parser;
-  Dimension dimension;
+  /// Found by a full evaluation at a value other than zero; unknown while every value was zero
+  std::optional<Dimension> dimension;
 };
 
 struct ExpressionMemo::State {
@@ -290,9 +291,12 @@ Amount ExpressionEvaluator::amount(const std::string& text) const {
         } catch (const mu::Parser::exception_type&) {
           break;  // said in full
         }
-        if (v == 0 || !std::isfinite(v)) break;  // said or found in full
+        if (!std::isfinite(v) || (v != 0 && !e.dimension)) break;  // said or found in full
         ++memo_->memo_;
-        return Amount{v, e.dimension, false};
+        // Zero: the full evaluation's zero in every system of units (scaling by powers of two
+        // is exact, so a consistent expression that is zero in SI is zero in all).
+        if (v == 0) return Amount{0, Dimension{}, true};
+        return Amount{v, *e.dimension, false};
       }
   }
   return amountInFull(text);
@@ -302,15 +306,16 @@ Amount ExpressionEvaluator::amountInFull(const std::string& text) const {
   const Amount a = amountInEveryScaling(text);
   if (!memo_) return a;
   ++memo_->full_;
-  if (a.anyDimension) return a;
   ExpressionMemo::State& m = *memo_->state_;
   std::vector<ExpressionMemo::Entry>& entries = m.entries[text];
-  if (std::any_of(entries.begin(), entries.end(),
-                  [&](const ExpressionMemo::Entry& e) { return e.names == names_.size(); }))
-    return a;  // remembered; its value at this reading was zero
+  for (ExpressionMemo::Entry& e : entries)
+    if (e.names == names_.size()) {  // remembered, its dimension unknown until now
+      if (!a.anyDimension) e.dimension = a.dimension;
+      return a;
+    }
   ExpressionMemo::Entry e;
   e.names = names_.size();
-  e.dimension = a.dimension;
+  if (!a.anyDimension) e.dimension = a.dimension;
   e.parser = std::make_unique<mu::Parser>();
   mu::Parser& p = *e.parser;
   p.EnableOptimizer(false);

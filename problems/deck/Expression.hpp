@@ -115,9 +115,12 @@ class ExpressionEvaluator {
 /// expression as it parses, operation by operation in evaluation order; the memo's byte code,
 /// its optimiser off (which would reorder products of variables and constants), performs the
 /// same operations in the same order. Dimensions depend only on
-/// the names' dimensions, which do not change between readings, except for a zero value
-/// (which fits any dimension): zero values, values that are not finite, names defined in
-/// another order and unseen texts are evaluated in full. Not thread-safe: one per thread.
+/// the names' dimensions, which do not change between readings; a zero value fits any
+/// dimension, as in the full evaluation (where a consistent expression that is zero in SI is
+/// zero in every system: scaling by powers of two is exact). Evaluated in full: values that
+/// are not finite, a value other than zero of an expression whose dimension is not yet known
+/// (every earlier value zero), names defined in another order, and texts not met before. Not
+/// thread-safe: one per thread.
 class ExpressionMemo {
  public:
   ExpressionMemo();
