@@ -220,6 +220,9 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->check(CLI::Range(1, 1024));
   studyCmd->add_flag("--point-files", study.pointFiles,
                      "also write every point's results directory (points/<k>/)");
+  studyCmd->add_flag("--full-path", study.fullPath,
+                     "read the deck in full at every point instead of the lean path (the "
+                     "reference the lean path equals; slower)");
   studyCmd
       ->add_option("--formulation", study.formulation,
                    "beam theory for every segment, replacing the deck's: " +

@@ -33,6 +33,12 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
   const Json& s = o.summary;
   out << "study " << s["deck"].get<std::string>() << ": " << s["points"] << " points ("
       << s["sampling"].get<std::string>() << "), " << s["failed"] << " failed\n";
+  out << "  path: "
+      << (s["path"].get<std::string>() == "lean"
+              ? "lean (the deck parsed once; each point re-evaluates its expressions from byte "
+                "code)"
+              : "full (the deck read in full at every point)")
+      << "\n";
   for (const Json& output : s["outputs"]) {
     out << "  " << output["name"].get<std::string>() << ":";
     if (!output.contains("mean")) {

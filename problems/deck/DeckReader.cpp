@@ -184,11 +184,15 @@ BeamTheory formulationOf(const Field& f) {
 
 }  // namespace reader
 
-Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& overrides) {
+namespace {
+
+Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
+                  ExpressionMemo* memo) {
   Deck deck;
   deck.path = source.path;
   deck.stem = source.stem;
-  reader::Context c{Field::root(source.root, source.path), deck, {}, {}, {}};
+  reader::Context c{Field::root(source.root, source.path), deck, ExpressionEvaluator(memo), {},
+                    {}};
 
   // 1. Top-level keys.
   c.root.allowOnly(reader::kTopKeys, "the deck");
@@ -212,6 +216,17 @@ Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& ov
   reader::readAccuracy(c);
   requireSectionValues(deck);
   return deck;
+}
+
+}  // namespace
+
+Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& overrides) {
+  return readDeckWith(source, overrides, nullptr);
+}
+
+Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
+              ExpressionMemo& memo) {
+  return readDeckWith(source, overrides, &memo);
 }
 
 }  // namespace beamrotor

@@ -7,6 +7,7 @@
 
 #include "problems/deck/Deck.hpp"
 #include "problems/deck/DeckSource.hpp"
+#include "problems/deck/Expression.hpp"
 #include "problems/deck/Overrides.hpp"
 
 namespace beamrotor {
@@ -26,5 +27,11 @@ inline constexpr int kMaxAnalyses = 1000;
 /// The deck with `overrides` replacing parameter values. Throws DeckError naming the file,
 /// line, column and field of the first problem found.
 Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& overrides = {});
+
+/// readDeck() for one of many readings of the same deck (a design study's points): what an
+/// earlier reading sharing `memo` evaluated comes from its byte code (ExpressionMemo), the
+/// rest is read as readDeck() reads it. The deck read is the same, bit for bit.
+Deck readDeck(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
+              ExpressionMemo& memo);
 
 }  // namespace beamrotor

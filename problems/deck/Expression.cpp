@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -150,9 +151,38 @@ std::optional<Dimension> dimensionFrom(const std::vector<double>& v, bool angleA
 
 }  // namespace
 
-ExpressionEvaluator::ExpressionEvaluator() {
-  for (const Scaling& s : kScalings) parsers_.push_back(parserFor(s));
+ExpressionEvaluator::ExpressionEvaluator() : ExpressionEvaluator(nullptr) {}
+
+ExpressionEvaluator::ExpressionEvaluator(ExpressionMemo* memo) : memo_(memo) {
+  if (!memo_) requireParsers();
 }
+
+void ExpressionEvaluator::requireParsers() const {
+  if (!parsers_.empty()) return;
+  for (const Scaling& s : kScalings) parsers_.push_back(parserFor(s));
+  for (std::size_t i = 0; i < names_.size(); ++i)
+    for (std::size_t k = 0; k < parsers_.size(); ++k)
+      parsers_[k]->DefineConst(names_[i], scaled(values_[i].si, values_[i].dimension, kScalings[k]));
+}
+
+/// One expression compiled for the memo: every name defined before it is a variable.
+struct ExpressionMemo::Entry {
+  std::size_t names = 0;  ///< how many names were defined when it was met
+  std::unique_ptr<mu::Parser> parser;
+  /// Found by a full evaluation at a value other than zero; unknown while every value was zero
+  std::optional<Dimension> dimension;
+};
+
+struct ExpressionMemo::State {
+  /// The current reading's values of the names, in definition order; muparser reads them
+  /// through pointers, so they live in a deque (never moved).
+  std::deque<double> values;
+  std::vector<std::string> names;  ///< the names in definition order, as first met
+  std::unordered_map<std::string, std::vector<Entry>> entries;
+};
+
+ExpressionMemo::ExpressionMemo() : state_(std::make_unique<State>()) {}
+ExpressionMemo::~ExpressionMemo() = default;
 
 ExpressionEvaluator::~ExpressionEvaluator() = default;
 
@@ -182,12 +212,30 @@ void ExpressionEvaluator::define(const std::string& name, const Amount& value) {
     throw ExpressionError("'" + name +
                           "' is not a valid name (letters, digits and '_', starting with a "
                           "letter, at most 64 characters)");
-  if (name == "pi" || parsers_[0]->GetFunDef().count(name))
+  const std::size_t index = names_.size();
+  if (memo_) {
+    ExpressionMemo::State& m = *memo_->state_;
+    // A name met at this place in an earlier reading passed the checks below there; any other
+    // needs the parsers (and makes the memo's byte code, which reads names by place, useless).
+    if (index >= m.names.size() || m.names[index] != name) {
+      m.entries.clear();
+      m.names.resize(index);
+      m.names.push_back(name);
+      requireParsers();
+    }
+  }
+  if (!parsers_.empty() && (name == "pi" || parsers_[0]->GetFunDef().count(name)))
     throw ExpressionError("'" + name + "' is reserved (a built-in function or constant)");
   if (defines(name)) throw ExpressionError("'" + name + "' is defined twice");
   if (!std::isfinite(value.si)) throw ExpressionError("'" + name + "' is not finite");
+  if (memo_) {
+    std::deque<double>& values = memo_->state_->values;
+    if (index >= values.size()) values.resize(index + 1);
+    values[index] = value.si;
+  }
   defineConstant(name, value);
   names_.push_back(name);
+  values_.push_back(value);
   defined_.emplace(name, value.dimension);
 }
 
@@ -197,6 +245,7 @@ void ExpressionEvaluator::defineConstant(const std::string& name, const Amount& 
 }
 
 std::vector<double> ExpressionEvaluator::valuesInEveryScaling(const std::string& text) const {
+  requireParsers();
   if (text.size() > kLongestExpression)
     throw ExpressionError("expression longer than " + std::to_string(kLongestExpression) +
                           " characters");
@@ -231,6 +280,68 @@ std::vector<double> ExpressionEvaluator::valuesInEveryScaling(const std::string&
 }
 
 Amount ExpressionEvaluator::amount(const std::string& text) const {
+  if (memo_) {
+    ExpressionMemo::State& m = *memo_->state_;
+    if (const auto found = m.entries.find(text); found != m.entries.end())
+      for (const ExpressionMemo::Entry& e : found->second) {
+        if (e.names != names_.size()) continue;
+        double v = 0;
+        try {
+          v = e.parser->Eval();
+        } catch (const mu::Parser::exception_type&) {
+          break;  // said in full
+        }
+        if (!std::isfinite(v) || (v != 0 && !e.dimension)) break;  // said or found in full
+        ++memo_->memo_;
+        // Zero: the full evaluation's zero in every system of units (scaling by powers of two
+        // is exact, so a consistent expression that is zero in SI is zero in all).
+        if (v == 0) return Amount{0, Dimension{}, true};
+        return Amount{v, *e.dimension, false};
+      }
+  }
+  return amountInFull(text);
+}
+
+Amount ExpressionEvaluator::amountInFull(const std::string& text) const {
+  const Amount a = amountInEveryScaling(text);
+  if (!memo_) return a;
+  ++memo_->full_;
+  ExpressionMemo::State& m = *memo_->state_;
+  std::vector<ExpressionMemo::Entry>& entries = m.entries[text];
+  for (ExpressionMemo::Entry& e : entries)
+    if (e.names == names_.size()) {  // remembered, its dimension unknown until now
+      if (!a.anyDimension) e.dimension = a.dimension;
+      return a;
+    }
+  ExpressionMemo::Entry e;
+  e.names = names_.size();
+  if (!a.anyDimension) e.dimension = a.dimension;
+  e.parser = std::make_unique<mu::Parser>();
+  mu::Parser& p = *e.parser;
+  p.EnableOptimizer(false);
+  defineDeckBuiltins(p);
+  for (const auto& [name, value] : parsers_[0]->GetConst())
+    if (name != "pi" && name != "_pi" && name != "_e" && !defines(name))
+      p.DefineConst(name, value);
+  try {
+    for (std::size_t i = 0; i < names_.size(); ++i) p.DefineVar(names_[i], &m.values[i]);
+    p.SetExpr(writeUnitProducts(text, [this](const std::string& word) {
+      return defines(word) || (parsers_[0]->GetConst().count(word) > 0 && !findUnit(word));
+    }));
+  } catch (const mu::Parser::exception_type&) {
+    return a;
+  }
+  // The first evaluation parses; a byte code that disagrees with the full evaluation is never
+  // kept (it cannot, by the argument in the header, but a wrong memo would be silent).
+  try {
+    if (p.Eval() == a.si) entries.push_back(std::move(e));
+  } catch (const mu::Parser::exception_type&) {
+    // not remembered: evaluated in full every time
+  }
+  return a;
+}
+
+Amount ExpressionEvaluator::amountInEveryScaling(const std::string& text) const {
   const std::vector<double> v = valuesInEveryScaling(text);
   if (!std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
     throw ExpressionError("'" + text +
@@ -267,6 +378,7 @@ CompiledExpression ExpressionEvaluator::compile(const std::string& text,
   if (text.size() > kLongestExpression)
     throw ExpressionError("expression longer than " + std::to_string(kLongestExpression) +
                           " characters");
+  requireParsers();
   CompiledExpression out;
   out.state_ = std::make_shared<CompiledExpression::State>();
   auto& st = *out.state_;

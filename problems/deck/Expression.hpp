@@ -35,6 +35,7 @@ class ExpressionError : public std::runtime_error {
 };
 
 class CompiledExpression;
+class ExpressionMemo;
 
 /// A value with its dimension: `si` in SI units (m, kg, s, rad and their products).
 struct Amount {
@@ -49,6 +50,10 @@ class ExpressionEvaluator {
   /// Knows the constant pi, muparser's functions (sin, sqrt, abs, min, max, ...) and the
   /// deck functions of ExpressionFunctions.hpp (crank_position, ...).
   ExpressionEvaluator();
+  /// The same, remembering in `memo` what it evaluates and taking from it what an earlier
+  /// evaluator sharing the memo already evaluated (see ExpressionMemo); null: no memo. The
+  /// memo must outlive the evaluator.
+  explicit ExpressionEvaluator(ExpressionMemo* memo);
   ~ExpressionEvaluator();
   ExpressionEvaluator(const ExpressionEvaluator&) = delete;
   ExpressionEvaluator& operator=(const ExpressionEvaluator&) = delete;
@@ -87,10 +92,51 @@ class ExpressionEvaluator {
   /// The value of `text` in each scaled system of units (see above), unit products inserted.
   std::vector<double> valuesInEveryScaling(const std::string& text) const;
   void defineConstant(const std::string& name, const Amount& value);
+  /// Creates the parsers (with the names defined so far) if a memo left them out until now.
+  void requireParsers() const;
+  /// amount() computed in full, then remembered in memo_ when there is one.
+  Amount amountInFull(const std::string& text) const;
+  /// amount() from the values in every scaling.
+  Amount amountInEveryScaling(const std::string& text) const;
 
-  std::vector<std::unique_ptr<mu::Parser>> parsers_;  // one per scaling; [0] is SI
+  mutable std::vector<std::unique_ptr<mu::Parser>> parsers_;  // one per scaling; [0] is SI
   std::vector<std::string> names_;
+  std::vector<Amount> values_;                          // of names_, for requireParsers()
   std::unordered_map<std::string, Dimension> defined_;  // names_, for lookups in constant time
+  ExpressionMemo* memo_ = nullptr;
+};
+
+/// What evaluators reading the same deck again and again (a design study: the deck at every
+/// point) share: each expression they met, keyed by its text and the number of names defined
+/// before it, compiled once into byte code that reads every name as a variable, with the
+/// dimension its first evaluation found. A later evaluator then evaluates the byte code once
+/// (in SI) instead of parsing the text in eight systems of units. Its value is bit for bit the
+/// one the full evaluation gives: there every name is a constant and muparser folds the whole
+/// expression as it parses, operation by operation in evaluation order; the memo's byte code,
+/// its optimiser off (which would reorder products of variables and constants), performs the
+/// same operations in the same order. Dimensions depend only on
+/// the names' dimensions, which do not change between readings; a zero value fits any
+/// dimension, as in the full evaluation (where a consistent expression that is zero in SI is
+/// zero in every system: scaling by powers of two is exact). Evaluated in full: values that
+/// are not finite, a value other than zero of an expression whose dimension is not yet known
+/// (every earlier value zero), names defined in another order, and texts not met before. Not
+/// thread-safe: one per thread.
+class ExpressionMemo {
+ public:
+  ExpressionMemo();
+  ~ExpressionMemo();
+  ExpressionMemo(const ExpressionMemo&) = delete;
+  ExpressionMemo& operator=(const ExpressionMemo&) = delete;
+  /// Expressions evaluated in full, and from byte code, so far.
+  long long fullEvaluations() const { return full_; }
+  long long memoEvaluations() const { return memo_; }
+
+ private:
+  friend class ExpressionEvaluator;
+  struct Entry;
+  struct State;
+  std::unique_ptr<State> state_;
+  long long full_ = 0, memo_ = 0;
 };
 
 /// An expression of a few variables, compiled (see ExpressionEvaluator::compile). Copies share

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <string_view>
 
 #include "problems/deck/Expression.hpp"
 #include "problems/deck/PlainText.hpp"
@@ -102,9 +103,22 @@ void Field::allowOnly(const std::vector<std::string>& allowed, const std::string
 }
 
 std::optional<Field> Field::get(const std::string& key) const {
-  for (auto& [name, value] : entries())
-    if (name == key) return value;
-  return std::nullopt;
+  // entries() without building a Field for every entry (a design study reads its deck at
+  // every point): the keys are checked as entries() checks them, and on the first problem
+  // entries() itself fails with its message.
+  if (!isMap()) entries();
+  std::vector<std::string_view> seen;  // the keys' text lives in the tree
+  std::optional<Field> found;
+  for (const auto& entry : node_) {
+    const YAML::Node name = entry.first;
+    if (!name.IsScalar() ||
+        std::find(seen.begin(), seen.end(), std::string_view(name.Scalar())) != seen.end())
+      entries();
+    seen.emplace_back(name.Scalar());
+    if (!found && name.Scalar() == key)
+      found = child(entry.second, path_.empty() ? key : path_ + "." + key, name);
+  }
+  return found;
 }
 
 Field Field::require(const std::string& key) const {

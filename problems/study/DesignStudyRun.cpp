@@ -39,8 +39,10 @@ StudyPlan readPlan(const DesignStudyRequest& request) {
   for (const StudyParameter& p : spec.parameters)
     if (findOverride(overrides, p.name))
       throw DeckError(source.path, p.place, "'" + p.name + "' is both set (--set) and varied");
-  return makeStudyPlan(source.path, deckFileText(request.deckPath), deck, std::move(overrides),
-                       request.formulation, std::move(spec));
+  StudyPlan plan = makeStudyPlan(source.path, deckFileText(request.deckPath), deck,
+                                 std::move(overrides), request.formulation, std::move(spec));
+  plan.lean = !request.fullPath;
+  return plan;
 }
 
 }  // namespace
@@ -78,6 +80,7 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
       });
     });
     outcome.summary = summary.json();
+    outcome.summary["path"] = plan.lean ? "lean" : "full";
     // The worst point in full: charts, VTK, CSV and results.json. Its analyses beyond those
     // the study read may fail; that is said in the summary, the study stands.
     if (auto worst = summary.worstPoint()) {

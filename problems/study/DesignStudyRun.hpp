@@ -23,6 +23,7 @@ struct DesignStudyRequest {
   std::string outDir;      ///< empty: out/<deck stem>_study
   int threads = 1;         ///< threads over points on this machine (per MPI rank)
   bool pointFiles = false; ///< also every point's results directory, points/<k>/
+  bool fullPath = false;   ///< read the deck in full at every point (StudyPlan::lean false)
 };
 
 struct DesignStudyOutcome {

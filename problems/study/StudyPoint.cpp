@@ -70,7 +70,7 @@ Deck PointSolver::deckAt(const std::vector<double>& values) const {
   for (std::size_t j = 0; j < values.size(); ++j)
     overrides.push_back({plan_.parameterNames[j], values[j],
                          plan_.parameterNames[j] + "=" + formatNumber(values[j])});
-  Deck deck = readDeck(source_, overrides);
+  Deck deck = plan_.lean ? readDeck(source_, overrides, memo_) : readDeck(source_, overrides);
   if (!plan_.formulation.empty()) applyFormulationOption(plan_.formulation, deck);
   deck.sweep.reset();
   return deck;

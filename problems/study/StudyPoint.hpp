@@ -10,6 +10,7 @@
 
 #include "problems/deck/DeckSource.hpp"
 #include "problems/deck/DesignStudy.hpp"
+#include "problems/deck/Expression.hpp"
 #include "problems/deck/Overrides.hpp"
 #include "problems/run/RunResult.hpp"
 
@@ -29,6 +30,10 @@ struct StudyPlan {
   /// central-difference step estimate) keeps its state in Fortran SAVE variables and is not
   /// safe to call from two threads at once. False when every analysis needed is static.
   bool exclusive = true;
+  /// The lean path: each point's reading of the deck takes the expressions an earlier point
+  /// met from their byte code (ExpressionMemo, one per solver) instead of parsing them again;
+  /// false: every point reads the deck in full (the reference the lean path must equal).
+  bool lean = true;
 };
 
 /// One point's row.
@@ -57,11 +62,16 @@ class PointSolver {
   /// The deck at `values` solved with all its analyses, for the point's own results directory.
   /// Throws as runDeck does.
   RunResult solveFully(const std::vector<double>& values) const;
+  /// How this solver's readings evaluated their expressions so far: from byte code (the lean
+  /// path) and in full.
+  long long expressionsFromByteCode() const { return memo_.memoEvaluations(); }
+  long long expressionsInFull() const { return memo_.fullEvaluations(); }
 
  private:
   Deck deckAt(const std::vector<double>& values) const;
   const StudyPlan& plan_;
   DeckSource source_;
+  mutable ExpressionMemo memo_;  ///< this solver's only: solvers run on threads of their own
 };
 
 }  // namespace beamrotor

@@ -1,0 +1,119 @@
+// The lean path of a design study (each point's expressions from byte code remembered by an
+// ExpressionMemo, problems/deck/Expression.hpp) against the full path (every point's deck
+// parsed and evaluated in eight systems of units): the same table and summary, bit for bit,
+// and the memo's evaluator against a plain one expression by expression.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "problems/deck/Expression.hpp"
+#include "problems/deck/Units.hpp"
+#include "problems/output/JsonWriter.hpp"
+#include "problems/study/DesignStudyRun.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+/// Runs `request` on the lean and on the full path; checks that both write the same table and
+/// the same summary (but for the path each names) and returns the lean path's outcome.
+DesignStudyOutcome studyBothWays(DesignStudyRequest request, const std::filesystem::path& out) {
+  request.outDir = (out / "lean").string();
+  request.fullPath = false;
+  DesignStudyOutcome lean = runDesignStudy(request);
+  request.outDir = (out / "full").string();
+  request.fullPath = true;
+  const DesignStudyOutcome full = runDesignStudy(request);
+  CHECK(lean.summary["path"] == "lean");
+  CHECK(full.summary["path"] == "full");
+  // study.csv carries 17 significant digits, which read back bit for bit: equal files are
+  // equal doubles in every cell.
+  CHECK(fileContents(lean.dir / "study.csv") == fileContents(full.dir / "study.csv"));
+  Json leanSummary = lean.summary, fullSummary = full.summary;
+  leanSummary.erase("path");
+  fullSummary.erase("path");
+  CHECK(leanSummary.dump() == fullSummary.dump());
+  return lean;
+}
+
+/// An evaluator's values: L (a length), E (a stress), eta and w0 (lengths).
+void defineLeanTestNames(ExpressionEvaluator& e, double L, double w0) {
+  e.define("L", Amount{L, dim::length, false});
+  e.define("E", Amount{200e9, dim::pressure, false});
+  e.define("w0", Amount{w0, dim::length, false});
+  e.define("n", 3.0);
+}
+
+}  // namespace
+
+TEST_SUITE("design study lean path") {
+  TEST_CASE("the lean path writes the full path's table and summary bit for bit") {
+    const auto scratch = scratchDir("study-lean");
+    // The pump rod over stroke and wear, w0 = 0 included: there every reaction, reference and
+    // stress is zero, which the lean path evaluates in full (a zero fits any dimension).
+    DesignStudyRequest rod;
+    rod.deckPath = (problemsDir() / "pump_rod.yaml").string();
+    rod.study.sweeps = {"eta=0:0.4:4", "w0=0,0.7e-3,1.5e-3"};
+    rod.study.outputs = {"reaction left uy", "reaction middle uy", "reaction right rz",
+                         "stress max <= 200 MPa"};
+    const DesignStudyOutcome o = studyBothWays(rod, scratch / "rod");
+    CHECK(o.points == 15);
+    CHECK(o.failed == 0);
+    // Two threads on the lean path (a memo per thread): the same table again.
+    rod.outDir = (scratch / "rod_threads").string();
+    rod.threads = 2;
+    const DesignStudyOutcome threaded = runDesignStudy(rod);
+    CHECK(fileContents(threaded.dir / "study.csv") == fileContents(o.dir / "study.csv"));
+
+    // Sampled, with a point that fails (eta beyond the rod) and values with units.
+    DesignStudyRequest sampled = rod;
+    sampled.threads = 1;
+    sampled.study.sweeps.clear();
+    sampled.study.samples = {"eta=uniform(0,1.5)", "E=lognormal(200e9,0.05)"};
+    sampled.study.count = 40;
+    sampled.study.seed = 3;
+    const DesignStudyOutcome s = studyBothWays(sampled, scratch / "sampled");
+    CHECK(s.failed > 0);  // some of the 40 put the seal beyond the rod's end
+    CHECK(s.failed < 40);
+
+    // A frame whose lateral load goes through zero and whose column height moves the joints.
+    DesignStudyRequest frame;
+    frame.deckPath = (problemsDir() / "portal_frame.yaml").string();
+    frame.study.sweeps = {"h=3,4.5", "H=-5e3,0,10e3"};
+    studyBothWays(frame, scratch / "frame");
+    std::filesystem::remove_all(scratch);
+  }
+
+  TEST_CASE("an evaluator sharing a memo gives the plain evaluator's values and dimensions") {
+    // The reference is a plain evaluator (eight parses per expression) defined with the same
+    // values; the memo must give each value bit for bit and the same dimension, on the reading
+    // that fills it and on later readings at other values (zero among them).
+    const std::vector<std::string> texts{
+        "0.715 - L/10", "E * pi * (L/20)^4 / 64", "12 kN/m * L", "sin(30 deg) * L",
+        "w0 * n",       "max(L, 2 m) - w0",       "-w0",          "E / 1 GPa + n^2"};
+    ExpressionMemo memo;
+    const double readings[][2] = {{1.7, 0.0}, {2.3, 0.4e-3}, {1.1, 0.0}, {2.3, 2e-3}};
+    for (const auto& [L, w0] : readings) {
+      ExpressionEvaluator plain, remembering(&memo);
+      defineLeanTestNames(plain, L, w0);
+      defineLeanTestNames(remembering, L, w0);
+      for (const std::string& text : texts) {
+        CAPTURE(text);
+        CAPTURE(L);
+        CAPTURE(w0);
+        const Amount expected = plain.amount(text), got = remembering.amount(text);
+        CHECK(got.si == expected.si);  // bit for bit
+        CHECK(got.anyDimension == expected.anyDimension);
+        CHECK(got.dimension.exponents == expected.dimension.exponents);
+      }
+    }
+    // The first reading evaluated all eight in full. w0 * n and -w0 were zero there, which
+    // fits any dimension, so the second (w0 != 0) evaluated those two in full to learn it;
+    // every other value came from byte code, zeros included.
+    CHECK(memo.memoEvaluations() == 3 * 8 - 2);
+    CHECK(memo.fullEvaluations() == 8 + 2);
+  }
+}
