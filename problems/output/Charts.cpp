@@ -7,6 +7,7 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "problems/output/ChartParts.hpp"
 #include "problems/output/LineSampling.hpp"
@@ -258,6 +259,17 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
     for (double v : table.numbers(q.column.name)) m = std::max(m, std::abs(v));
     return m;
   };
+  // A figure that stays the same at every value (an undamped rotor's log decrement 0): a flat
+  // line says nothing, and gnuplot warns about its empty range. Cells left empty count as
+  // changing.
+  const auto constant = [&](const SweepQuantity& q) {
+    try {
+      const auto v = table.numbers(q.column.name);
+      return !v.empty() && std::all_of(v.begin(), v.end(), [&](double x) { return x == v[0]; });
+    } catch (const std::invalid_argument&) {
+      return false;
+    }
+  };
   double largestReaction = 0;
   for (const SweepQuantity& q : quantities)
     if (q.group == SweepGroup::reaction) largestReaction = std::max(largestReaction, largest(q));
@@ -271,6 +283,8 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
       criticals.push_back(&q);
     else if (q.group == SweepGroup::peakAmplitude)
       peaks.push_back(&q);
+    else if (q.group == SweepGroup::extreme && constant(q))
+      continue;
     else if (q.group == SweepGroup::stress || q.group == SweepGroup::extreme ||
              (q.group == SweepGroup::reaction && largest(q) > 1e-12 * largestReaction))
       panels.push_back({&q});
@@ -298,7 +312,10 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   // Values spread over decades (a stiffness from 1e4 to 1e6) read better on a log axis.
   const auto values = table.numbers(parameter);
   const auto [low, high] = std::minmax_element(values.begin(), values.end());
-  if (low != values.end() && *low > 0 && *high >= 30 * *low) body << logAxis("x", *low, *high);
+  if (low != values.end() && *low > 0 && *high >= 30 * *low)
+    body << logAxis("x", *low, *high);
+  else
+    body << "  set format x '%g'\n";  // 4e+07, not the wider 4x10^7, under narrow panels
   for (const auto& panel : panels) {
     // Forces in kN (N m in kN m), stresses in MPa, anything else as it is.
     const std::string unit = panel.front()->column.unit;

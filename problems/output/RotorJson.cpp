@@ -76,11 +76,13 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
                         {"line", k.line + 1},
                         {"damping_ratio", k.dampingRatio},
                         {"whirl", std::string(whirlName(k.whirl))}});
-  // The least damped line's smallest log decrement over the sweep (what decides stability).
+  // The least damped line's smallest log decrement over the sweep (what decides stability);
+  // below 1e-9 in size it is an undamped mode's round-off, written 0 (as the API 684 stability
+  // verdict takes it, fem/rotor/RotorStability.cpp).
   Json smallest = nullptr;
   for (std::size_t l = 0; l < c.lines.size(); ++l)
     for (std::size_t s = 0; s < c.speeds.size(); ++s) {
-      const double delta = c.lines[l][s].logDecrement;
+      const double raw = c.lines[l][s].logDecrement, delta = std::abs(raw) < 1e-9 ? 0 : raw;
       if (std::isfinite(delta) && (smallest.is_null() || delta < smallest.at("value")))
         smallest = {{"value", delta}, {"rpm", rpmOf(c.speeds[s])}, {"line", l + 1}};
     }
