@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "fem/rotor/RotorCampbell.hpp"
+
 namespace beamrotor {
 
 double leastStableDecayRate(const std::vector<RotorMode>& modes) {
@@ -66,6 +68,46 @@ std::optional<InstabilityOnset> instabilityOnset(const Model& model, const Campb
   onset.frequencyHz = worst->dampedFrequencyHz;
   onset.whirl = worst->whirl;
   return onset;
+}
+
+OperatingStability operatingStability(const Model& model, const RotorOptions& options,
+                                      const OperatingRange& range, double fromSpeed,
+                                      double required, int inRange, int below) {
+  std::vector<double> speeds;
+  const double start = std::min(fromSpeed, range.minimum);
+  if (start < range.minimum)
+    for (int i = 0; i < below; ++i) speeds.push_back(start + (range.minimum - start) * i / below);
+  const std::size_t firstInRange = speeds.size();
+  for (int i = 0; i <= inRange; ++i)
+    speeds.push_back(range.minimum + (range.maximum - range.minimum) * i / inRange);
+  const CampbellResult campbell = solveCampbell(model, speeds, options);
+
+  OperatingStability out;
+  out.required = required;
+  out.smallest = std::numeric_limits<double>::infinity();
+  // An undamped mode's decrement is 0 up to the eigensolver's round-off (Re(lambda) ~ 1e-13
+  // |lambda|, a decrement of ~1e-12): below kNeutral in size it is taken as 0, neither
+  // growing nor decaying, so an undamped rotor does not fail on the sign of its round-off.
+  constexpr double kNeutral = 1e-9;
+  const auto decrement = [&](const RotorMode& mode) {
+    return std::abs(mode.logDecrement) < kNeutral ? 0 : mode.logDecrement;
+  };
+  bool growing = false;  // some mode grows at some speed checked
+  for (const auto& line : campbell.lines)
+    for (const RotorMode& mode : line) growing = growing || decrement(mode) < 0;
+  for (const auto& line : campbell.lines)
+    for (std::size_t s = firstInRange; s < speeds.size(); ++s)
+      if (const double delta = decrement(line[s]); delta < out.smallest) {
+        out.smallest = delta;
+        out.speed = speeds[s];
+        out.frequencyHz = line[s].dampedFrequencyHz;
+        out.whirl = line[s].whirl;
+      }
+  if (growing) out.onset = instabilityOnset(model, campbell, options);
+  const bool onsetInRange = out.onset && out.onset->speed >= range.minimum &&
+                            out.onset->speed <= range.maximum;
+  out.pass = out.smallest >= required && !onsetInRange;
+  return out;
 }
 
 }  // namespace beamrotor

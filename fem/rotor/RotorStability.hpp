@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "fem/rotor/Api684.hpp"
 #include "fem/rotor/RotorModes.hpp"
 
 namespace beamrotor {
@@ -32,5 +33,27 @@ double leastStableDecayRate(const std::vector<RotorMode>& modes);
 std::optional<InstabilityOnset> instabilityOnset(const Model& model, const CampbellResult& campbell,
                                                  const RotorOptions& options,
                                                  double tolerance = 1e-10);
+
+/// The stability half of an API 684 verdict: over an operating speed range every damped mode
+/// must keep a log decrement of at least `required` (0: only a growing mode fails; API 617's
+/// level I screening asks 0.1). A mode whose log decrement falls through zero inside the range
+/// fails whatever the limit, the onset speed named.
+struct OperatingStability {
+  double required = 0;      ///< smallest log decrement allowed
+  double smallest = 0;      ///< smallest log decrement of the modes at the speeds in range
+  double speed = 0;         ///< rad/s, where it occurs
+  double frequencyHz = 0;   ///< that mode's damped frequency there
+  Whirl whirl = Whirl::planar;
+  /// the lowest onset of instability between the first speed checked and the top of the range
+  std::optional<InstabilityOnset> onset;
+  bool pass = false;  ///< smallest >= required and no onset inside the range
+};
+
+/// Checks the modes of `options` (those of a Campbell diagram) at `inRange` + 1 equal steps
+/// over the operating range and at `below` + 1 equal steps from `fromSpeed` (rad/s) up to its
+/// lowest speed (the onset's brackets). Throws SolveError as solveCampbell does.
+OperatingStability operatingStability(const Model& model, const RotorOptions& options,
+                                      const OperatingRange& range, double fromSpeed,
+                                      double required, int inRange = 10, int below = 30);
 
 }  // namespace beamrotor

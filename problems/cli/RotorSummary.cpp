@@ -52,6 +52,28 @@ void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutco
     out << "    stable over the sweep (no log decrement falls through zero)\n";
 }
 
+/// The stability half of the API 684 verdict, and the verdict as a whole.
+void printOperatingStability(std::ostream& out, const OperatingStability& s,
+                             const OperatingRange& range) {
+  out << "      stability: smallest log decrement in the range "
+      << (std::isfinite(s.smallest) ? formatValue(s.smallest) : std::string("inf")) << " at "
+      << formatValue(s.speed * kRpm) << " rpm (" << formatValue(s.frequencyHz) << " Hz "
+      << whirlName(s.whirl) << " whirl; required " << formatValue(s.required) << ")";
+  if (s.onset)
+    out << ", UNSTABLE above " << formatValue(s.onset->rpm) << " rpm ("
+        << formatValue(s.onset->frequencyHz) << " Hz " << whirlName(s.onset->whirl) << " whirl)";
+  else if (s.smallest < 0)
+    out << ", unstable from the sweep's first speed";
+  out << ": " << (s.pass ? "pass" : "FAIL") << "\n";
+  if (!s.pass) {
+    out << "      API 684: FAIL (";
+    if (s.onset && s.onset->speed <= range.maximum)
+      out << "unstable above " << formatValue(s.onset->rpm) << " rpm, ";
+    out << "log decrement " << (std::isfinite(s.smallest) ? formatValue(s.smallest) : "inf")
+        << " in the operating range)\n";
+  }
+}
+
 void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
   const UnbalanceResult& u = *r.unbalance;
   out << "unbalance analysis '" << a.name << "' (" << u.speeds.size() << " speeds)\n";
@@ -83,6 +105,7 @@ void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutc
           << " % (required " << formatValue(p.requiredMargin) << " %): "
           << (p.pass ? "pass" : "FAIL") << "\n";
     }
+  if (r.stability) printOperatingStability(out, *r.stability, *r.operating);
 }
 
 void printFrequencyResponse(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {

@@ -64,6 +64,9 @@ struct DeckRotorAnalysis {
   std::vector<std::string> response;       ///< unbalance: points whose orbits are reported
   /// unbalance: the operating speed range (rad/s) the API 684 margins are measured from
   std::optional<OperatingRange> operating;
+  /// unbalance: `operating.min_log_decrement`, the smallest log decrement API 684's verdict
+  /// allows a mode over the operating range (0: only an unstable mode fails)
+  double minLogDecrement = 0;
   /// frequency-response: force on input.dof at input.point, response of output's (uy uz ry rz)
   std::string inputPoint, outputPoint;
   Dof inputDof = Dof::uy, outputDof = Dof::uy;

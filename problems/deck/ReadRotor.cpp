@@ -179,10 +179,12 @@ std::vector<double> readFrequencyRange(const Context& c, const Field& f) {
   return readRange(c, f, "from_hz", "to_hz", 2 * std::numbers::pi);
 }
 
-/// operating: {min_rpm, max_rpm}: the machine's operating speed range, 0 < min < max.
-OperatingRange readOperatingRange(const Context& c, const Field& f) {
+/// operating: {min_rpm, max_rpm, min_log_decrement}: the machine's operating speed range,
+/// 0 < min < max, and the log decrement every mode must keep over it (>= 0, default 0).
+OperatingRange readOperatingRange(const Context& c, const Field& f, double& minLogDecrement) {
   if (!f.isMap()) f.fail("expected {min_rpm: RPM, max_rpm: RPM}, got " + f.describe());
-  f.allowOnly({"min_rpm", "max_rpm"}, "an operating speed range");
+  f.allowOnly({"min_rpm", "max_rpm", "min_log_decrement"}, "an operating speed range");
+  if (auto d = f.get("min_log_decrement")) minLogDecrement = d->nonNegative(c.evaluator);
   OperatingRange range;
   range.minimum = f.require("min_rpm").positive(c.evaluator) * kRadPerRpm;
   const Field top = f.require("max_rpm");
@@ -329,7 +331,7 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
         "an unbalance analysis");
     r.speeds = readSpeedRange(c, f);
     readUnbalance(c, f, r);
-    if (auto o = f.get("operating")) r.operating = readOperatingRange(c, *o);
+    if (auto o = f.get("operating")) r.operating = readOperatingRange(c, *o, r.minLogDecrement);
   }
   if (a.type != "unbalance" && a.type != "frequency-response") {
     if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "problems/output/ChartParts.hpp"
 #include "problems/output/LineSampling.hpp"
@@ -258,19 +259,38 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
     for (double v : table.numbers(q.column.name)) m = std::max(m, std::abs(v));
     return m;
   };
+  // A figure that stays the same at every value (an undamped rotor's log decrement 0): a flat
+  // line says nothing, and gnuplot warns about its empty range. Cells left empty count as
+  // changing.
+  const auto constant = [&](const SweepQuantity& q) {
+    try {
+      const auto v = table.numbers(q.column.name);
+      return !v.empty() && std::all_of(v.begin(), v.end(), [&](double x) { return x == v[0]; });
+    } catch (const std::invalid_argument&) {
+      return false;
+    }
+  };
   double largestReaction = 0;
   for (const SweepQuantity& q : quantities)
     if (q.group == SweepGroup::reaction) largestReaction = std::max(largestReaction, largest(q));
   std::vector<std::vector<const SweepQuantity*>> panels;
-  std::vector<const SweepQuantity*> frequencies;
+  // Quantities that share a panel, by group: frequencies, critical speeds, peak orbits.
+  std::vector<const SweepQuantity*> frequencies, criticals, peaks;
   for (const SweepQuantity& q : quantities) {
     if (q.group == SweepGroup::frequency)
       frequencies.push_back(&q);
+    else if (q.group == SweepGroup::criticalSpeed)
+      criticals.push_back(&q);
+    else if (q.group == SweepGroup::peakAmplitude)
+      peaks.push_back(&q);
+    else if (q.group == SweepGroup::extreme && constant(q))
+      continue;
     else if (q.group == SweepGroup::stress || q.group == SweepGroup::extreme ||
              (q.group == SweepGroup::reaction && largest(q) > 1e-12 * largestReaction))
       panels.push_back({&q});
   }
-  if (!frequencies.empty()) panels.push_back(frequencies);
+  for (const auto* shared : {&frequencies, &criticals, &peaks})
+    if (!shared->empty()) panels.push_back(*shared);
 
   const int columns = panels.size() > 1 ? 2 : 1;
   const int rows = std::max<int>(1, int((panels.size() + columns - 1) / columns));
@@ -278,8 +298,9 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   std::ostringstream body;
   // A key only where a panel has several curves; it sits in a right margin as wide as it needs.
   std::vector<std::string> keyTitles;
-  if (frequencies.size() > 1)
-    for (const SweepQuantity* q : frequencies) keyTitles.push_back(q->label);
+  for (const auto* shared : {&frequencies, &criticals, &peaks})
+    if (shared->size() > 1)
+      for (const SweepQuantity* q : *shared) keyTitles.push_back(q->label);
   const int keyMargin = keyTitles.empty() ? 30 : keyWidth(keyTitles);
   body << "  set encoding utf8\n"
        << panelLayout(rows, columns, caption, width, height, keyMargin) << "  set grid\n"
@@ -291,14 +312,21 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   // Values spread over decades (a stiffness from 1e4 to 1e6) read better on a log axis.
   const auto values = table.numbers(parameter);
   const auto [low, high] = std::minmax_element(values.begin(), values.end());
-  if (low != values.end() && *low > 0 && *high >= 30 * *low) body << logAxis("x", *low, *high);
+  if (low != values.end() && *low > 0 && *high >= 30 * *low)
+    body << logAxis("x", *low, *high);
+  else
+    body << "  set format x '%g'\n";  // 4e+07, not the wider 4x10^7, under narrow panels
   for (const auto& panel : panels) {
     // Forces in kN (N m in kN m), stresses in MPa, anything else as it is.
     const std::string unit = panel.front()->column.unit;
     const bool force = unit == "N" || unit == "N m";
     const double scale = unit == "Pa" ? 1e-6 : force ? 1e-3 : 1.0;
     const std::string shown = unit == "Pa" ? "MPa" : force ? "k" + unit : unit.empty() ? "-" : unit;
-    const std::string label = panel.size() == 1 ? panel.front()->label : "frequency";
+    const SweepGroup group = panel.front()->group;
+    const std::string label = panel.size() == 1                       ? panel.front()->label
+                              : group == SweepGroup::criticalSpeed   ? "critical speed"
+                              : group == SweepGroup::peakAmplitude   ? "peak orbit"
+                                                                      : "frequency";
     // A quantity without a unit (a ratio, a relative error) is marked [-], dimensionless.
     body << "  set ylabel " << gnuplotText(label + " [" + shown + "]")
          << "\n  plot ";

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
@@ -276,8 +277,20 @@ void requireFiniteAt(const Json& node, const std::string& path, const std::strin
 Json sweepAnalysisJson(const Json& analysis) {
   Json out = {{"type", analysis.at("type")}, {"name", analysis.at("name")}};
   for (const char* key : {"reactions", "max_stress", "max_shear", "frequencies_hz", "maxima",
-                          "second_order", "load_factors"})
-    if (analysis.contains(key)) out[key] = analysis[key];
+                          "second_order", "load_factors", "critical_speeds", "instability_onset",
+                          "smallest_log_decrement"})
+    if (analysis.contains(key) && !(analysis.at("type") == "frequency-response" &&
+                                    std::string_view(key) == "frequencies_hz"))
+      out[key] = analysis[key];
+  // An unbalance analysis: each response point's peak and the API 684 verdict, not the curves.
+  if (analysis.contains("response")) {
+    Json peaks = Json::object();
+    for (const auto& [point, response] : analysis["response"].items())
+      peaks[point] = response.at("peak");
+    out["peaks"] = peaks;
+    const Json& api = analysis.value("api684", Json(nullptr));
+    if (!api.is_null()) out["api684_pass"] = api.at("pass");
+  }
   return out;
 }
 

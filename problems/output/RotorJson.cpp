@@ -46,7 +46,8 @@ Json modesJson(const std::string& stem, const RotorModesResult& r) {
             {"pvd", collectionPvd(stem)},
             {"vtu", vtus},
             {"orbits_vtu", orbits},
-            {"orbits_csv", orbitsCsv(stem)}}}};
+            {"orbits_csv", orbitsCsv(stem)},
+            {"orbits_chart", orbitsChart(stem) + ".svg"}}}};
 }
 
 Json campbellJson(const std::string& stem, const RotorOutcome& r) {
@@ -75,6 +76,16 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
                         {"line", k.line + 1},
                         {"damping_ratio", k.dampingRatio},
                         {"whirl", std::string(whirlName(k.whirl))}});
+  // The least damped line's smallest log decrement over the sweep (what decides stability);
+  // below 1e-9 in size it is an undamped mode's round-off, written 0 (as the API 684 stability
+  // verdict takes it, fem/rotor/RotorStability.cpp).
+  Json smallest = nullptr;
+  for (std::size_t l = 0; l < c.lines.size(); ++l)
+    for (std::size_t s = 0; s < c.speeds.size(); ++s) {
+      const double raw = c.lines[l][s].logDecrement, delta = std::abs(raw) < 1e-9 ? 0 : raw;
+      if (std::isfinite(delta) && (smallest.is_null() || delta < smallest.at("value")))
+        smallest = {{"value", delta}, {"rpm", rpmOf(c.speeds[s])}, {"line", l + 1}};
+    }
   Json onset = nullptr;
   if (r.onset)
     onset = {{"rpm", r.onset->rpm},
@@ -85,6 +96,7 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
   return {{"order", r.order},
           {"speeds_rpm", speeds},
           {"instability_onset", onset},
+          {"smallest_log_decrement", smallest},
           {"lines", lines},
           {"critical_speeds", critical},
           {"symbolic_analyses", c.symbolicAnalyses},
@@ -117,8 +129,21 @@ Json api684Json(const std::string& stem, const RotorOutcome& r) {
     }
     points[r.responsePoints[k]] = peaks;
   }
+  Json stability(nullptr);
+  if (r.stability) {
+    const OperatingStability& s = *r.stability;
+    pass = pass && s.pass;
+    stability = {{"min_log_decrement_required", s.required},
+                 {"smallest_log_decrement", finiteOrNull(s.smallest)},
+                 {"at_rpm", rpmOf(s.speed)},
+                 {"frequency_hz", s.frequencyHz},
+                 {"whirl", std::string(whirlName(s.whirl))},
+                 {"onset_rpm", s.onset ? Json(s.onset->rpm) : Json(nullptr)},
+                 {"pass", s.pass}};
+  }
   return {{"operating_rpm", {rpmOf(r.operating->minimum), rpmOf(r.operating->maximum)}},
           {"peaks", points},
+          {"stability", stability},
           {"pass", pass},
           {"csv", api684Csv(stem)}};
 }

@@ -20,8 +20,11 @@ namespace {
 
 /// Angle steps per orbit (10 degrees each): smooth at the chart's size.
 constexpr int kOrbitSteps = 36;
-/// Display limits of the normalised orbits (largest semi-major axis 1) on the y and z axes.
+/// Display limits of the normalised orbits (largest semi-major axis 1) on the y axis.
 constexpr double kOrbitRoom = 1.35;
+/// The oblique view: u_z = 1 moves a point this fraction of the shaft's length along x and
+/// kOrbitRise up, so a circular orbit shows as a narrow ellipse leaning back.
+constexpr double kOrbitDepth = 0.015, kOrbitRise = 0.3;
 /// A whirl ratio below this is a straight line (as fem/rotor/RotorModes.cpp decides).
 constexpr double kLineOrbit = 1e-6;
 /// Palette slots of the senses (as on the Campbell diagram).
@@ -95,96 +98,115 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
                             const CsvTable& orbits, const std::string& csvFile) {
   const int count = int(r.modes.size());
   const int columns = count > 1 ? 2 : 1, rows = (count + columns - 1) / columns;
-  const int width = 620 * columns, height = 100 + 480 * std::max(rows, 1);
+  // What the model has decides the key's entries: disks (point inertias with a polar moment),
+  // bearings, supports.
+  bool disks = false, bearings = false, supports = !model.supports().empty();
+  for (const auto& e : model.elements()) {
+    if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0)
+      disks = true;
+    bearings = bearings || dynamic_cast<const Bearing*>(e.get());
+  }
+  std::vector<std::string> keyTitles{"shaft at angle 0", "forward orbit", "backward orbit",
+                                     "straight-line orbit"};
+  if (disks) keyTitles.push_back("disk");
+  if (bearings) keyTitles.push_back("bearing");
+  if (supports) keyTitles.push_back("support");
+  const int keyMargin = keyWidth(keyTitles);  // the key stands right of the panels
+  const int width = 620 * columns + keyMargin, height = 150 + 330 * std::max(rows, 1);
+  const std::string caption2 = caption + "\nmodes at " + number(rpmOf(r.speed)) +
+                               " rpm: orbits along the shaft (oblique view, largest orbit 1)";
+  const auto captionLines = 1 + std::count(caption2.begin(), caption2.end(), '\n');
   double x0 = 0, x1 = 0;
   for (const auto& p : model.nodes()) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
-  const double pad = 0.04 * std::max(x1 - x0, 1e-9);
+  const double length = std::max(x1 - x0, 1e-9), pad = 0.05 * length;
+  // The oblique view: a point (x, uy, uz) of an orbit is drawn at (x + depth uz, uy + rise uz),
+  // so each circular orbit shows as a narrow tilted ellipse standing at its station, as on a
+  // shaft seen slightly from the side and above.
+  const double depth = kOrbitDepth * length, rise = kOrbitRise;
+  const double room = kOrbitRoom + rise;
 
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << panelLayout(rows, columns,
-                      caption + "\nmodes at " + number(rpmOf(r.speed)) +
-                          " rpm: orbits along the shaft, x [m] (largest orbit 1)",
-                      width, height, 20)
-       << "  set view 64, 24, 0.85, 1.1\n  set xyplane relative 0\n  set border 1+2+4+8+16+32+64+256+512\n"
+       << panelLayout(rows, columns, caption2, width, height, keyMargin + 10)
        << "  set xrange [" << number(x0 - pad) << ":" << number(x1 + pad) << "]\n"
-       << "  set yrange [" << -kOrbitRoom << ":" << kOrbitRoom << "]\n"
-       << "  set zrange [" << -kOrbitRoom << ":" << kOrbitRoom << "]\n"
-       << "  set xtics offset 0,-0.5\n  set ytics 1\n  set ztics 1\n  set format y '%g'\n"
-       << "  set format z '%g'\n"
-       << "  set ylabel 'u_y' offset 1,0\n"
-       << "  set zlabel 'u_z' offset 1,0\n"
-       << "  set key at screen 0.99, screen 0.995 top right horizontal font ',9' samplen 2\n"
+       << "  set yrange [" << number(0.3 - room) << ":" << number(room) << "]\n"
+       << "  set ytics 1\n  set grid xtics\n"
+       << "  unset xlabel\n  set ylabel 'u_y (u_z drawn obliquely)'\n"
+       // level with the panels' top (panelLayout's: 60 px and 20 px a caption line down)
+       << "  set key at screen 0.995, screen "
+       << number(1 - (60.0 + 20.0 * double(captionLines)) / height)
+       << " right top vertical samplen 2\n"
        << "  whirl(w) = w > 0 ? " << colourValue(kForwardSlot) << " : w < 0 ? "
        << colourValue(kBackwardSlot) << " : " << colourValue(kPlanarSlot) << "\n";
   // 1. The shaft's centre line, disks (bars across it, sized by their radius of gyration about
   //    the axis) and bearings and supports (symbols on the axis), the same in every panel.
-  body << "  set arrow 1 from " << number(x0) << ",0,0 to " << number(x1)
-       << ",0,0 nohead dashtype 2 linecolor rgb 'gray40' linewidth 1\n";
+  body << "  set arrow 1 from " << number(x0) << ",0 to " << number(x1)
+       << ",0 nohead dashtype 2 linecolor rgb 'gray40' linewidth 1 back\n";
   double widest = 0;
   for (const auto& e : model.elements())
     if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0)
       widest = std::max(widest, std::sqrt(d->Jp() / d->m()));
   int tag = 2;
-  bool disks = false, bearings = false, supports = false;
   for (const auto& e : model.elements()) {
     const auto dofs = e->dofs();
     if (dofs.empty()) continue;
     const double x = model.nodes()[dofs[0].node].x();
     if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0) {
       const double half = 0.35 + 0.5 * std::sqrt(d->Jp() / d->m()) / widest;
-      body << "  set arrow " << tag++ << " from " << number(x) << ",0," << number(-half) << " to "
-           << number(x) << ",0," << number(half)
+      body << "  set arrow " << tag++ << " from " << number(x) << "," << number(-half) << " to "
+           << number(x) << "," << number(half)
            << " nohead linewidth 7 linecolor rgb '#99555555' back\n";
-      disks = true;
     } else if (dynamic_cast<const Bearing*>(e.get())) {
-      body << "  set label " << tag++ << " '' at " << number(x)
-           << ",0,0 point pointtype 9 pointsize 2.2 linecolor rgb 'black' front\n";
-      bearings = true;
+      body << "  set label " << tag++ << " '' at " << number(x) << "," << number(0.3 - room)
+           << " point pointtype 9 pointsize 2.2 linecolor rgb 'black' front\n";
     }
   }
-  for (const Support& s : model.supports()) {
-    body << "  set label " << tag++ << " '' at " << number(model.nodes()[s.node].x())
-         << ",0,0 point pointtype 5 pointsize 1.8 linecolor rgb 'black' front\n";
-    supports = true;
-  }
+  for (const Support& s : model.supports())
+    body << "  set label " << tag++ << " '' at " << number(model.nodes()[s.node].x()) << ","
+         << number(0.3 - room) << " point pointtype 5 pointsize 1.8 linecolor rgb 'black' front\n";
   // 2. One panel per mode: the orbits as short vectors (an arrow head on the first step of each
   //    orbit shows its sense), coloured by sense, and the deflected line at angle 0.
   const int cMode = orbits.column("mode"), cX = orbits.column("x"), cA = orbits.column("angle");
   const int cY = orbits.column("uy"), cZ = orbits.column("uz"), cDy = orbits.column("duy");
   const int cDz = orbits.column("duz"), cW = orbits.column("whirl");
-  const auto where = [&](int m, const std::string& extra, int column) {
-    return "($" + std::to_string(cMode) + " == " + std::to_string(m) + extra + " ? $" +
-           std::to_string(column) + " : NaN)";
+  const auto col = [](int c) { return "$" + std::to_string(c); };
+  // x and y of the oblique view, for mode m (and `extra` condition), NaN elsewhere.
+  const auto viewX = [&](int m, const std::string& extra) {
+    return "(" + col(cMode) + " == " + std::to_string(m) + extra + " ? " + col(cX) + " + " +
+           number(depth) + " * " + col(cZ) + " : NaN)";
   };
+  const std::string viewY = "(" + col(cY) + " + " + number(rise) + " * " + col(cZ) + ")";
+  const std::string stepX = "(" + number(depth) + " * " + col(cDz) + ")";
+  const std::string stepY = "(" + col(cDy) + " + " + number(rise) + " * " + col(cDz) + ")";
+  const std::string first = " && " + col(cA) + " == 0";
   const std::string file = gnuplotFile(csvFile);
   for (int m = 1; m <= count; ++m) {
     body << "  set title " << gnuplotText(modeTitle(m, r.modes[std::size_t(m - 1)]))
          << " font ',11'\n";
     if (m == 2) body << "  unset key\n";
-    body << "  splot " << file << " skip 1 using " << cX << ":" << where(m, "", cY) << ":" << cZ
-         << ":(0):" << cDy << ":" << cDz << ":(whirl($" << cW
+    // x labelled under the last row only: a label above a title would crowd the next panel's
+    if ((m - 1) / columns == rows - 1) body << "  set xlabel 'x along the shaft [m]'\n";
+    body << "  plot " << file << " skip 1 using " << viewX(m, "") << ":" << viewY << ":" << stepX
+         << ":" << stepY << ":(whirl(" << col(cW)
          << ")) with vectors nohead linewidth 1.5 linecolor rgb variable notitle, \\\n"
-         << "        " << file << " skip 1 using " << cX << ":"
-         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":" << cZ << ":(0):" << cDy
-         << ":" << cDz << ":(whirl($" << cW
-         << ")) with vectors head size screen 0.012,25 filled linewidth 1.5 linecolor rgb "
+         << "       " << file << " skip 1 using " << viewX(m, first) << ":" << viewY << ":"
+         << stepX << ":" << stepY << ":(whirl(" << col(cW)
+         << ")) with vectors head size screen 0.010,25 filled linewidth 1.5 linecolor rgb "
             "variable notitle, \\\n"
-         << "        " << file << " skip 1 using " << cX << ":"
-         << where(m, " && $" + std::to_string(cA) + " == 0", cY) << ":" << cZ
+         << "       " << file << " skip 1 using " << viewX(m, first) << ":" << viewY
          << " with lines linewidth 2.5 linecolor rgb 'black' title 'shaft at angle 0'";
     for (const auto& [slot, what] : {std::pair<int, const char*>{kForwardSlot, "forward orbit"},
                                      {kBackwardSlot, "backward orbit"},
                                      {kPlanarSlot, "straight-line orbit"}})
-      body << ", \\\n        NaN with lines linewidth 2 " << colour(slot) << " title '" << what
+      body << ", \\\n       NaN with lines linewidth 2 " << colour(slot) << " title '" << what
            << "'";
     if (disks)
-      body << ", \\\n        NaN with lines linewidth 7 linecolor rgb '#99555555' title 'disk'";
+      body << ", \\\n       NaN with lines linewidth 7 linecolor rgb '#99555555' title 'disk'";
     if (bearings)
-      body << ", \\\n        NaN with points pointtype 9 pointsize 1.6 linecolor rgb 'black' "
+      body << ", \\\n       NaN with points pointtype 9 pointsize 1.6 linecolor rgb 'black' "
               "title 'bearing'";
     if (supports)
-      body << ", \\\n        NaN with points pointtype 5 pointsize 1.4 linecolor rgb 'black' "
+      body << ", \\\n       NaN with points pointtype 5 pointsize 1.4 linecolor rgb 'black' "
               "title 'support'";
     body << "\n";
   }

@@ -1,5 +1,5 @@
-// The damped modes of a rotor analysis as a reader pictures them: per mode a 3D view along the
-// shaft with each node's orbit ellipse (coloured by its sense, forward or backward whirl, an
+// The damped modes of a rotor analysis as a reader pictures them: per mode an oblique view along
+// the shaft with each node's orbit ellipse (coloured by its sense, forward or backward whirl, an
 // arrow head where it starts, so the sense also reads in grey), the shaft's deflected line at
 // the start of the period, the undeformed centre line, disks as bars at their stations and
 // bearings and supports as symbols; the mode's frequency, log decrement and whirl in its title.
@@ -23,7 +23,7 @@ CsvTable modeOrbitsTable(const std::string& title, const RotorModesResult& r, co
 
 /// The panels of the modes of `r` from a modeOrbitsTable in csvFile; disks (point inertias with
 /// a polar moment: bars sized by their radius of gyration) and bearings (triangles) and
-/// supports (squares) taken from the model.
+/// supports (squares, both under the shaft at the panel's foot) taken from the model.
 ChartScript modeOrbitsChart(const std::string& caption, const std::string& chartName,
                             const RotorModesResult& r, const Model& model,
                             const CsvTable& orbits, const std::string& csvFile);

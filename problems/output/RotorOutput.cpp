@@ -96,9 +96,9 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
     writePvd(dir / collectionPvd(stem), entries);
     const CsvTable orbits = modeOrbitsTable(orbitsCsv(stem), *r.modes, model);
     orbits.write(dir / orbitsCsv(stem));
-    // The orbit chart (modeOrbitsChart) is not drawn yet: its 3D panels still reach the
-    // canvas' edges and overprint their neighbours' tick labels (tests/problems/output/
-    // test_chart_reading.cpp).
+    if (charts && !r.modes->modes.empty())
+      drawChart(dir, modeOrbitsChart(caption, orbitsChart(stem), *r.modes, model, orbits,
+                                     orbitsCsv(stem)));
   }
   if (p.campbell) {
     p.campbell->write(dir / campbellCsv(stem));

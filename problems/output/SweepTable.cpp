@@ -125,6 +125,68 @@ void addTransient(const Json& a, std::vector<SweepQuantity>& out) {
   }
 }
 
+/// A campbell analysis: each critical speed (those some value finds; a value that finds fewer
+/// leaves the cell empty), the smallest log decrement over its speeds and, when some value has
+/// one, the onset of instability.
+void addCampbell(const Json& a, const std::vector<Json>& runDocs,
+                 std::vector<SweepQuantity>& out) {
+  const std::string name = a.at("name");
+  std::size_t count = 0;
+  bool onset = false;
+  for (const Json& doc : runDocs) {
+    const Json& c = analysisNamed(doc, name);
+    count = std::max(count, c.at("critical_speeds").size());
+    onset = onset || !c.value("instability_onset", Json(nullptr)).is_null();
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::string label = "critical speed " + std::to_string(k + 1);
+    out.push_back({SweepGroup::criticalSpeed,
+                   name,
+                   label,
+                   {name + ".critical_speed_" + std::to_string(k + 1), "rpm"},
+                   [name, k, label](const Json& doc) {
+                     const Json& c = analysisNamed(doc, name).at("critical_speeds");
+                     if (k >= c.size()) throw std::runtime_error("this sweep value has no " + label);
+                     return c[k].at("rpm").get<double>();
+                   },
+                   true});
+  }
+  // entry[field] of a figure that may be null (left empty then), on a panel of its own
+  const auto figure = [&](const std::string& label, const std::string& entry,
+                          const std::string& field, const std::string& unit) {
+    out.push_back({SweepGroup::extreme,
+                   name,
+                   label,
+                   {name + "." + entry, unit},
+                   [name, label, entry, field](const Json& doc) {
+                     const Json& f = analysisNamed(doc, name).at(entry);
+                     if (f.is_null()) throw std::runtime_error("this sweep value has no " + label);
+                     return f.at(field).get<double>();
+                   },
+                   true});
+  };
+  if (a.contains("smallest_log_decrement"))
+    figure("smallest log decrement", "smallest_log_decrement", "value", "");
+  if (onset) figure("onset of instability", "instability_onset", "rpm", "rpm");
+}
+
+/// An unbalance analysis: each response point's largest orbit (semi-major axis).
+void addUnbalance(const Json& a, std::vector<SweepQuantity>& out) {
+  const std::string name = a.at("name");
+  for (const auto& [point, response] : a.at("response").items())
+    out.push_back({SweepGroup::peakAmplitude,
+                   name,
+                   point,
+                   {name + "." + point + ".peak", "m"},
+                   [name, point](const Json& doc) {
+                     const Json& r = analysisNamed(doc, name).at("response");
+                     const std::string what = "response of " + point;
+                     return required(required(r, point, what), "peak", what)
+                         .at("amplitude_m")
+                         .get<double>();
+                   }});
+}
+
 }  // namespace
 
 std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
@@ -133,8 +195,11 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
     if (a.contains("reactions")) addStatic(a, out);
     if (a.contains("second_order")) addSecondOrder(a, out);
     if (a.contains("load_factors")) addBuckling(a, runDocs, out);
-    if (a.contains("frequencies_hz")) addModal(a, out);
+    // A frequency response's frequencies are its excitation, not the model's.
+    if (a.contains("frequencies_hz") && a.at("type") != "frequency-response") addModal(a, out);
     if (a.contains("maxima")) addTransient(a, out);
+    if (a.contains("critical_speeds")) addCampbell(a, runDocs, out);
+    if (a.contains("response") && a.at("type") == "unbalance") addUnbalance(a, out);
   }
   const Json reported = runDocs.at(0).value("reported", Json::object());
   for (const auto& [name, value] : reported.items())

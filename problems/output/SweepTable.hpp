@@ -1,7 +1,9 @@
 // What a sweep tracks across its values: each reaction component and the largest normal and
 // shear stress of every static analysis, the frequencies of every modal analysis, the maxima
-// (largest |value| of each named history) of every transient analysis, the deck's reported
-// values and each check. Read from the runs' results.json documents, so sweep.csv,
+// (largest |value| of each named history) of every transient analysis, the critical speeds,
+// smallest log decrement and onset of instability of every campbell analysis, the peak orbit
+// of each response point of every unbalance analysis, the deck's reported values and each
+// check. Read from the runs' results.json documents, so sweep.csv,
 // the sweep charts and the per-value directories report the same numbers.
 #pragma once
 
@@ -15,7 +17,18 @@
 
 namespace beamrotor {
 
-enum class SweepGroup { reaction, stress, frequency, reported, check, checkPass, extreme };
+/// frequency, criticalSpeed and peakAmplitude quantities share a chart panel per group.
+enum class SweepGroup {
+  reaction,
+  stress,
+  frequency,
+  reported,
+  check,
+  checkPass,
+  extreme,
+  criticalSpeed,
+  peakAmplitude
+};
 
 /// One quantity followed over the sweep.
 struct SweepQuantity {

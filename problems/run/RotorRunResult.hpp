@@ -69,6 +69,8 @@ struct RotorOutcome {
   std::optional<OperatingRange> operating;
   /// unbalance with an operating range: API 684 reading of each response point's peaks
   std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
+  /// unbalance with an operating range: the stability half of the API 684 verdict
+  std::optional<OperatingStability> stability;
   std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
   std::optional<FrequencyResponseResult> frequencyResponse;  ///< frequency-response
   std::string frfInput, frfOutput;  ///< frequency-response: "point dof" of each end

@@ -140,6 +140,9 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.responsePoints = r.response;
     out.operating = r.operating;
     if (r.operating)
+      out.stability = operatingStability(model, optionsOf(deck, a), *r.operating,
+                                         r.speeds.front(), r.minLogDecrement);
+    if (r.operating)
       for (const auto& orbits : out.unbalance->orbits) {
         std::vector<double> amplitudes;
         for (const Orbit& o : orbits) amplitudes.push_back(o.major());

@@ -123,6 +123,29 @@ TEST_SUITE("rotor campbell") {
     CHECK(backwardLines == 1);
   }
 
+  TEST_CASE("rigid rotor at rest: both double modes numbered backward, then forward") {
+    // At rest the bounce and the conical mode are each double (the two planes). FORMAT.md's
+    // rule (fem/rotor/DegenerateModes.hpp): each repeated pair in the basis of circular orbits,
+    // the backward one first. Closed forms: bounce sqrt((C1+C2)/m), conical sqrt(k_phi / Jd).
+    const CampbellRigidRotor r;
+    Model model;
+    r.build(model);
+    const RotorModesResult modes = solveRotorModes(model, 0, rotorOptions(4));
+    REQUIRE(modes.modes.size() == 4);
+    const double conical = std::sqrt(r.kPhi() / r.Jd());
+    REQUIRE(r.bounce() < conical);
+    for (int pair = 0; pair < 2; ++pair) {
+      CAPTURE(pair);
+      const double reference = pair == 0 ? r.bounce() : conical;
+      for (int k = 0; k < 2; ++k) {
+        const RotorMode& m = modes.modes[std::size_t(2 * pair + k)];
+        // The 4-element stiff shaft (E 2e17) is rigid to ~1e-8 of the frequencies.
+        CHECK(relError(m.dampedFrequency, reference) < 1e-6);
+        CHECK(m.whirl == (k == 0 ? Whirl::backward : Whirl::forward));
+      }
+    }
+  }
+
   TEST_CASE("rigid rotor: critical speeds where the lines meet 1x, converging as h^2") {
     const CampbellRigidRotor r;
     Model model;

@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 #include "elements/Bearing.hpp"
@@ -31,6 +32,15 @@ struct CrossCoupledJeffcott {
 
   double onset() const { return c * std::sqrt(k / m) / q; }  // 1000 rad/s
 
+  /// The least stable mode's log decrement at spin speed `w` (<= top): the root of
+  /// m lambda^2 + c lambda + (k - i q w) = 0 with the larger real part (the forward whirl),
+  /// -2 pi Re(lambda) / |Im(lambda)|.
+  double logDecrement(double w) const {
+    const std::complex<double> root =
+        (-c + std::sqrt(std::complex<double>(c * c - 4 * m * k, 4 * m * q * w))) / (2 * m);
+    return -2 * std::numbers::pi * root.real() / std::abs(root.imag());
+  }
+
   void build(Model& model) const {
     const int n = model.addNode(Eigen::Vector3d::Zero());
     model.add<PointInertia>(n, DofSet{Dof::uy, Dof::uz}, m);
@@ -41,6 +51,15 @@ struct CrossCoupledJeffcott {
                        std::vector<BearingCoefficients>{rest, fast});
   }
 };
+
+/// The stability half of the API 684 verdict of the CrossCoupledJeffcott rotor over `range`,
+/// from 100 rad/s.
+OperatingStability jeffcottStability(const OperatingRange& range, double required = 0) {
+  const CrossCoupledJeffcott j;
+  Model model;
+  j.build(model);
+  return operatingStability(model, rotorOptions(2), range, 100, required);
+}
 
 std::vector<double> grid(double top, int steps) {
   std::vector<double> s;
@@ -88,5 +107,44 @@ TEST_SUITE("rotor stability") {
     const RotorOptions options = rotorOptions(2);
     const CampbellResult campbell = solveCampbell(model, grid(3 * j.onset(), 6), options);
     CHECK_FALSE(instabilityOnset(model, campbell, options).has_value());
+  }
+
+  // The stability half of the API 684 verdict against the same closed form: the forward
+  // mode's log decrement falls steadily with the speed (Q = q Omega grows), so over a range it
+  // is smallest at the range's top, and the onset is c sqrt(k/m) / q = 1000 rad/s.
+  TEST_CASE("API 684 stability: an operating range across the onset fails, naming it") {
+    const CrossCoupledJeffcott j;
+    const OperatingStability s = jeffcottStability({0.9 * j.onset(), 1.1 * j.onset()});
+    CHECK_FALSE(s.pass);
+    REQUIRE(s.onset.has_value());
+    CHECK(s.onset->speed == doctest::Approx(j.onset()).epsilon(1e-8));  // as the onset test
+    // At the range's top, 1100 rad/s, the dense eigensolver's round-off (~1e-13 of |lambda|)
+    // is the only error; 1e-9 of the decrement (-0.0251) leaves room for it.
+    CHECK(s.speed == doctest::Approx(1.1 * j.onset()).epsilon(1e-12));
+    CHECK(s.smallest == doctest::Approx(j.logDecrement(1.1 * j.onset())).epsilon(1e-9));
+    CHECK(s.smallest < 0);
+    CHECK(s.whirl == Whirl::forward);
+  }
+
+  TEST_CASE("API 684 stability: a range below the onset passes at the required decrement") {
+    const CrossCoupledJeffcott j;
+    const OperatingRange range{0.5 * j.onset(), 0.9 * j.onset()};
+    const double top = j.logDecrement(range.maximum);  // 0.0251, the smallest in the range
+    const OperatingStability s = jeffcottStability(range);
+    CHECK(s.pass);
+    CHECK_FALSE(s.onset.has_value());
+    CHECK(s.smallest == doctest::Approx(top).epsilon(1e-9));
+    // A required log decrement just above what the rotor keeps fails it, just below passes.
+    CHECK_FALSE(jeffcottStability(range, top + 1e-4).pass);
+    CHECK(jeffcottStability(range, top - 1e-4).pass);
+  }
+
+  TEST_CASE("API 684 stability: an onset below the operating range fails it too") {
+    const CrossCoupledJeffcott j;
+    const OperatingStability s = jeffcottStability({1.2 * j.onset(), 1.5 * j.onset()});
+    CHECK_FALSE(s.pass);
+    REQUIRE(s.onset.has_value());
+    CHECK(s.onset->speed == doctest::Approx(j.onset()).epsilon(1e-8));
+    CHECK(s.smallest == doctest::Approx(j.logDecrement(1.5 * j.onset())).epsilon(1e-9));
   }
 }

@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -114,6 +115,17 @@ std::vector<TextBox> textBoxes(const std::string& svg) {
   return boxes;
 }
 
+/// A number whose decimal fraction ends in three or more zeros ("1000.0000000", "2.5000").
+bool paddedNumber(const std::string& text) {
+  std::size_t i = text[0] == '-' ? 1 : 0;
+  const std::size_t digits = i;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+  if (i == digits || i >= text.size() || text[i] != '.') return false;
+  const std::size_t point = i++;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+  return i == text.size() && i - point > 3 && text.compare(i - 3, 3, "000") == 0;
+}
+
 }  // namespace
 
 std::vector<std::string> textFaults(const fs::path& svgFile) {
@@ -130,6 +142,7 @@ std::vector<std::string> textFaults(const fs::path& svgFile) {
   const std::vector<TextBox> boxes = textBoxes(svg);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const TextBox& a = boxes[i];
+    if (paddedNumber(a.text)) faults.push_back("'" + a.text + "' is padded with zeros");
     if (a.left < 0 || a.top < 0 || a.right > width || a.bottom > height)
       faults.push_back("'" + a.text + "' reaches outside the canvas");
     for (std::size_t j = i + 1; j < boxes.size(); ++j) {

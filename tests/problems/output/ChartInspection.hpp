@@ -13,9 +13,10 @@ namespace beamrotor::test {
 /// per edge touched ("left edge, rows 532 to 541"); empty when the border is clean.
 std::vector<std::string> inkOnImageEdges(const std::filesystem::path& png, int band = 2);
 
-/// Pairs of texts in a gnuplot SVG whose boxes overlap, and texts reaching outside the
-/// canvas. A text's box is estimated from below (half an em per character, 0.6 em tall) so
-/// that what is reported certainly overlaps. One description per fault.
+/// Pairs of texts in a gnuplot SVG whose boxes overlap, texts reaching outside the canvas, and
+/// numbers padded with zeros no reader needs (a tick label `1000.0000000`: three or more zeros
+/// ending a decimal fraction). A text's box is estimated from below (half an em per character,
+/// 0.6 em tall) so that what is reported certainly overlaps. One description per fault.
 std::vector<std::string> textFaults(const std::filesystem::path& svg);
 
 }  // namespace beamrotor::test

@@ -62,6 +62,14 @@ TEST_SUITE("charts read right") {
                                       "  plot [0:20000][0:350] x/60 notitle\n");
     CHECK(textFaults(dir / "overprinted.svg").size() == 1);
     CHECK(inkOnImageEdges(dir / "overprinted.png").empty());  // overprinted, but not cut
+    // A log axis labelled with a fixed format, as the undamped unbalance chart once printed
+    // 1000.0000000: every decade's label is padded (10 to 10000: 4 labels).
+    drawTestChart(dir, "padded", "  set logscale y\n  set format y '%.7f'\n"
+                                 "  plot [1:2][10:10000] 10**(3*x-2) notitle\n");
+    std::size_t padded = 0;
+    for (const std::string& fault : textFaults(dir / "padded.svg"))
+      padded += fault.find("padded with zeros") != std::string::npos;
+    CHECK(padded == 4);
     // A clean chart has no faults (so a fault found is not the method's noise).
     drawTestChart(dir, "clean", "  set xlabel 'x [m]'\n  set ylabel 'y [m]'\n  plot x notitle\n");
     CHECK(inkOnImageEdges(dir / "clean.png").empty());
