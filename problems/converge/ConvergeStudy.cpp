@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
@@ -35,9 +36,25 @@ bool refinesTimeStep(const DeckAnalysis& a) {
 }
 
 /// Which analyses a study can refine: every kind but the rigid-body properties (integrals of
-/// the section, the same on any mesh).
+/// the section, the same on any mesh) and the crank-slider mechanism (closed forms, no mesh).
 bool studiable(const DeckAnalysis& a) {
-  return a.type != "rigid-body";
+  return a.type != "rigid-body" && a.type != "crank-slider";
+}
+
+/// Refuses a deck none of whose analyses a study can refine (e.g. a crank-slider or a rigid
+/// body given by its own inputs, problems/deck/FORMAT.md "Mechanisms without a model"): no
+/// quantity of it depends on a mesh or a time step, so any "convergence" would be a
+/// meaningless row of equal values.
+void requireSomethingToRefine(const Deck& deck) {
+  if (std::any_of(deck.analyses.begin(), deck.analyses.end(), studiable)) return;
+  std::string kinds;
+  for (const DeckAnalysis& a : deck.analyses)
+    kinds += (kinds.empty() ? "" : ", ") + a.type + " '" + a.name + "'";
+  const DeckPlace place = deck.analyses.empty() ? kQuantityOption : deck.analyses.front().place;
+  throw DeckError(deck.path, place,
+                  "nothing to converge: the deck has no mesh or time step to refine (its "
+                  "analyses, " + kinds + ", are closed forms that are the same at any "
+                  "discretisation); `beamrotor solve` gives their figures");
 }
 
 const DeckAnalysis* analysisNamed(const Deck& deck, const std::string& name) {
@@ -257,6 +274,7 @@ void measureErrors(ConvergeSeries& s, const DeckCheck* check) {
 
 ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
   // 1. What to measure and against what.
+  requireSomethingToRefine(deck);
   const Target t = resolveTarget(deck, options.quantity);
   if (options.levels < (t.check ? 2 : 3) || options.levels > 16)
     throw DeckError(deck.path, DeckPlace{0, 0, "--levels"},

@@ -55,6 +55,7 @@ struct DeckTransient {
   /// (`periodic: true`, see fem/transient/PeriodicSteadyState); 0: not periodic.
   double periodicPeriod = 0;
   DeckPlace dtPlace;  ///< where dt is given, for the explicit stability error
+  DeckPlace periodicPlace;  ///< where `periodic: true` is given, for the resonance error
 };
 
 }  // namespace beamrotor

@@ -19,6 +19,7 @@ constexpr const char* kGrammar =
     "'member NAME deflection max', 'buckling_factor N', 'log_decrement N', 'critical_speed N', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
+    "'crank PROPERTY at PHI deg', "
     "'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
 /// ux..rz, or the force/moment names fx fy fz mx my mz for the same dofs.

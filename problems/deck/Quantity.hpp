@@ -23,8 +23,10 @@
 //                             (N, per unit modal amplitude) of a rigid-body analysis
 // and those of the crank-slider analysis (CrankQuantity.hpp):
 //   crank PROPERTY [at LAMBDA]   a figure of the mechanism, or a row of its harmonic table
+//   crank PROPERTY at PHI deg    the motion or a load of the first crank at crank angle PHI
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -67,6 +69,7 @@ struct Quantity {
   std::string property;  ///< rigid_body: which property; memberForce: N, Vy, Vz, T, My, Mz
   std::string extreme;   ///< memberForce: max, min or maxabs
   double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own
+  std::optional<double> crankAngle;  ///< crankSlider `... at PHI deg`: the crank angle (rad)
   std::string text;      ///< as written, for reports
 
   /// The analysis type it reads by default (when a check names none).

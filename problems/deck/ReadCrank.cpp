@@ -131,7 +131,8 @@ void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis&
     return;
   }
   const bool needsMasses = p == "rotating_mass" || p == "reciprocating_mass" || p[0] == 'F' ||
-                           p.rfind("cranks_", 0) == 0 || p.rfind("moment_max", 0) == 0;
+                           p == "force" || p.rfind("cranks_", 0) == 0 ||
+                           p.rfind("moment", 0) == 0;
   if (needsMasses && !d.masses)
     f.fail("'" + q.text + "' needs the drive's masses: give analysis '" + a.name + "' masses:");
   if (p == "delivery" && !(d.plungerDiameter > 0))

@@ -244,6 +244,7 @@ DeckTransient readTransient(const Context& c, const Field& f) {
     if (auto b = f.get("initial"); b && !b->isNull())
       b->fail("a periodic run starts from its periodic state; leave out initial:");
     t.periodicPeriod = period->positive(ev);
+    t.periodicPlace = p->place();
     const double steps = t.periodicPeriod / t.dt;
     if (std::abs(steps - std::round(steps)) > 1e-9 * steps)
       dt.fail("periodic: true needs a whole number of steps per period; period / dt = " +

@@ -18,6 +18,15 @@ double crankPhaseSum(const std::vector<double>& phases, int k) {
   return std::abs(sum);
 }
 
+/// Sum over the cranks (phases ahead of the first) of the reciprocating inertia forces
+/// -m_rec a (N), exact kinematics, at the first crank's angle phi.
+double cranksInertiaForce(const crank::Geometry& g, const std::vector<double>& phases,
+                          double phi, double omega, double reciprocatingMass) {
+  double sum = 0;
+  for (double theta : phases) sum += -reciprocatingMass * crank::exact(g, phi + theta, omega).a;
+  return sum;
+}
+
 CrankLambdaRow crankTableRow(double lambda) {
   // v_max / v_mean does not depend on r or omega: take r = lambda, l = 1, omega = 1.
   const crank::Geometry g = crank::makeGeometry(lambda, 1.0);
@@ -72,7 +81,7 @@ CrankSliderOutcome runCrankSlider(const DeckCrankSlider& d) {
     s.exact = crank::exact(g, phi, w);
     s.approximate = crank::approximate(g, phi, w);
     s.inertiaForce = -mRec * s.exact.a;
-    for (double theta : d.phases) s.cranksForce += -mRec * crank::exact(g, phi + theta, w).a;
+    s.cranksForce = cranksInertiaForce(g, d.phases, phi, w, mRec);
     s.rodCouple = residual != 0 ? crank::rodCorrectionCouple(residual, g, phi, w) : 0.0;
     out.samples.push_back(s);
   }
@@ -80,8 +89,34 @@ CrankSliderOutcome runCrankSlider(const DeckCrankSlider& d) {
   return out;
 }
 
+namespace {
+
+/// The first crank's motion or load at crank angle phi: exact kinematics at the analysis' speed,
+/// evaluated there (not read off the sampled revolution).
+double measureCrankAtAngle(const std::string& p, double phi, const CrankSliderOutcome& c) {
+  const crank::Geometry& g = c.input.geometry;
+  const double w = c.input.speed;
+  const crank::State s = crank::exact(g, phi, w);
+  if (p == "x") return s.x;
+  if (p == "v") return s.v;
+  if (p == "a") return s.a;
+  if (p == "beta") return s.beta;
+  if (p == "beta_dot") return s.betaDot;
+  if (p == "beta_ddot") return s.betaDDot;
+  if (!c.reduced) throw std::invalid_argument("'" + p + "' at a crank angle needs the masses");
+  const double mRec = c.reduced->reciprocating;
+  if (p == "force") return -mRec * s.a;
+  if (p == "cranks_force") return cranksInertiaForce(g, c.input.phases, phi, w, mRec);
+  if (p == "moment")
+    return crank::rodCorrectionCouple(c.input.masses->rod.residualInertia, g, phi, w);
+  throw std::invalid_argument("'" + p + "' is not a crank-slider quantity at a crank angle");
+}
+
+}  // namespace
+
 double measureCrank(const Quantity& q, const CrankSliderOutcome& c) {
   const std::string& p = q.property;
+  if (q.crankAngle) return measureCrankAtAngle(p, *q.crankAngle, c);
   if (q.lambda > 0) {
     for (const CrankLambdaRow& row : c.table) {
       if (std::abs(row.lambda - q.lambda) > 1e-12) continue;

@@ -6,7 +6,9 @@
 #include <sstream>
 
 #include "fem/model/DofMap.hpp"
+#include "fem/solvers/Errors.hpp"
 #include "fem/transient/PeriodicSteadyState.hpp"
+#include "problems/deck/DeckError.hpp"
 #include "problems/deck/Expression.hpp"
 #include "problems/deck/Field.hpp"
 
@@ -83,9 +85,13 @@ void noteRounding(const DeckTransient& t, TransientResult& r) {
 
 /// What the periodic start was, and when the stops spoilt it.
 void notePeriodic(const PeriodicStart& p, TransientResult& r) {
-  r.warnings.push_back("started from the periodic steady state (the fixed point of the "
-                       "one-period map; rcond of I - Phi " + formatNumber(p.rcond) +
-                       ", largest multiplier " + formatNumber(p.largestMultiplier) + ")");
+  r.warnings.push_back(
+      "started from the periodic steady state (the fixed point of the one-period map; largest "
+      "multiplier " + formatNumber(p.largestMultiplier) + "; nearest resonance " +
+      formatNumber(p.nearestHarmonic) + " x 2 pi / period, its multiplier " +
+      formatNumber(p.resonanceDistance) + " from 1, Newmark's period error " +
+      formatNumber(p.periodError) + " rad: amplitude error about " +
+      formatNumber(p.periodError / p.resonanceDistance) + ")");
   if (!r.impacts.empty())
     r.warnings.push_back("the motion struck a stop, which the periodic steady state leaves "
                          "out: from the first impact on the run is not that state");
@@ -108,7 +114,12 @@ TransientOutcome runTransient(const Deck& deck, const DeckAnalysis& a, const Mod
   TransientOptions options = optionsOf(t, model);
   std::optional<PeriodicStart> periodic;
   if (t.periodicPeriod > 0) {
-    periodic = periodicStart(model, options, t.periodicPeriod);
+    try {
+      periodic = periodicStart(model, options, t.periodicPeriod);
+    } catch (const SolveError& e) {
+      // No periodic state for these inputs (resonance): bad input, at the field that asked.
+      throw DeckError(deck.path, t.periodicPlace, e.what());
+    }
     options.initialDisplacement = periodic->displacement;
     options.initialVelocity = periodic->velocity;
   }

@@ -1,6 +1,7 @@
 // `beamrotor converge` end to end: its files, their layout, and bad options as one-line errors.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +49,17 @@ TEST_SUITE("converge cli") {
                               "--out", dir.string()})
               .exitCode == 0);
     std::filesystem::remove_all(dir.parent_path());
+  }
+
+  TEST_CASE("a deck of mechanisms alone: nothing to refine, one line naming the deck, exit 2") {
+    for (const char* deck : {"problems/snt32_drive.yaml", "problems/forme_shaft_two_dof.yaml"}) {
+      CAPTURE(deck);
+      const test::ProcessResult p = test::runBeamrotor({"converge", deck});
+      CHECK(p.exitCode == 2);
+      CHECK(p.err.rfind(std::string(deck) + ":", 0) == 0);
+      CHECK(p.err.find("no mesh or time step to refine") != std::string::npos);
+      CHECK(std::count(p.err.begin(), p.err.end(), '\n') == 1);
+    }
   }
 
   TEST_CASE("bad converge options: one line naming the option, exit 2") {

@@ -41,12 +41,22 @@ TEST_SUITE("converge decks") {
         {"mo10", "history phi maxabs"},        // no beams: the time step
         {"simply_supported", "frequency 1"}};
     // Decks of mechanisms alone (no beams, no points: problems/deck/FORMAT.md, "Mechanisms
-    // without a model") have no mesh or time step to refine, so this study does not apply.
+    // without a model") have no mesh or time step to refine: the study refuses them, naming
+    // the deck and its first analysis' line.
     const std::set<std::string> withoutModel{"forme_shaft_two_dof", "snt32_drive"};
     for (const auto& deck : test::shippedDecks()) {
       const std::string stem = deck.stem().string();
       CAPTURE(stem);
-      if (withoutModel.count(stem)) continue;
+      if (withoutModel.count(stem)) {
+        try {
+          defaultStudyOf(deck);
+          FAIL("a deck without a model was studied");
+        } catch (const DeckError& e) {
+          CHECK(e.message().find("no mesh or time step to refine") != std::string::npos);
+          CHECK(e.place().line > 0);
+        }
+        continue;
+      }
       ConvergeStudy study;
       REQUIRE_NOTHROW(study = defaultStudyOf(deck));
       MESSAGE(stem << ": " << study.quantity << " (" << study.choice << ")");
