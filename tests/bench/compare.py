@@ -2,7 +2,8 @@
 """Side-by-side figures of `make bench`: beamrotor against SciPy on the planar model.
 
 Reads DIR/planar_static_N.json, DIR/scipy_static_N.json (N = 1e3 .. 1e6),
-DIR/planar_modal_10000.json and DIR/scipy_modal_10000.json; prints the table and ratios,
+DIR/planar_modal_10000.json and DIR/scipy_modal_10000.json, DIR/planar_modal_1000000.json
+(modes against statics in one run); prints the table and ratios,
 checks that both give the same answers, fits the log-log slope of beamrotor's static cost
 against N, and writes DIR/summary.json and the chart DIR/planar_static_scaling.{svg,png}.
 Usage: compare.py DIR
@@ -122,6 +123,15 @@ def main():
             print(f"  cold (fresh process: model, statics and modes): beamrotor "
                   f"{m['beamrotor_cold_s']:.3f} s, SciPy {m['scipy_cold_s']:.2f} s, "
                   f"{m['scipy_cold_s'] / m['beamrotor_cold_s']:.1f}x")
+    large = os.path.join(directory, "planar_modal_1000000.json")
+    if os.path.exists(large):
+        g = load(large)
+        modal_s, static_s = g["modal"]["total_s"], g["static"]["total_s"]
+        summary["planar_modal_large"] = {"elements": g["elements"], "modal_s": modal_s,
+                                         "static_s": static_s, "ratio": modal_s / static_s}
+        print(f"planar modal, {g['elements']} elements, {len(g['modal']['frequencies_hz'])} "
+              f"modes: {modal_s:.2f} s, {modal_s / static_s:.1f}x its statics "
+              f"({static_s:.2f} s; target 10x)")
     grid = os.path.join(directory, "grid3d_1000000.json")
     if os.path.exists(grid):
         g = load(grid)
