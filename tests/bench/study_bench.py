@@ -47,17 +47,14 @@ def run(command, out_dir):
 
 
 def peak_rss_mb(command, out_dir):
-    """Peak resident memory of one run (MB), from the kernel's accounting of the child."""
-    pid = os.fork()
-    if pid == 0:
-        with open(os.devnull, "w") as null:
-            os.dup2(null.fileno(), 1)
-            os.dup2(null.fileno(), 2)
-        os.execv(command[0], command + ["--out", out_dir])
-    _, status, usage = os.wait4(pid, 0)
-    if status != 0:
+    """Peak resident memory of one run (MB), as GNU time reports it (%M, kB). Not from
+    wait4's accounting after a fork of this script: the child's peak would then include the
+    memory this script holds (the tables it keeps), which exec does not reset."""
+    process = subprocess.run(["/usr/bin/time", "-f", "%M"] + command + ["--out", out_dir],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if process.returncode != 0:
         sys.exit("failed: " + " ".join(command))
-    return usage.ru_maxrss / 1024.0
+    return float(process.stderr.strip().splitlines()[-1]) / 1024.0
 
 
 def main():

@@ -92,8 +92,8 @@ TEST_SUITE("design study lean path") {
     // values; the memo must give each value bit for bit and the same dimension, on the reading
     // that fills it and on later readings at other values (zero among them).
     const std::vector<std::string> texts{
-        "0.715 - L/10", "E * pi * (L/20)^4 / 64", "12 kN/m * L", "sin(30 deg) * L",
-        "w0 * n",       "max(L, 2 m) - w0",       "-w0",          "E / 1 GPa + n^2"};
+        "0.715 m - L/10", "E * pi * (L/20)^4 / 64", "12 kN/m * L", "sin(30 deg) * L",
+        "w0 * n",       "max(L, 2 m) - w0",       "-w0",          "E / (1 GPa) + n^2"};
     ExpressionMemo memo;
     const double readings[][2] = {{1.7, 0.0}, {2.3, 0.4e-3}, {1.1, 0.0}, {2.3, 2e-3}};
     for (const auto& [L, w0] : readings) {
