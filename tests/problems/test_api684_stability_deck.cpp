@@ -44,7 +44,7 @@ struct CrossCoupledDeckRotor {
          "model: {dimension: lateral, rotary_inertia: false}\n"
          "materials: [{name: massless, E: " << E << ", nu: 0.3, rho: 7850e-12}]\n"
          "sections: [{name: shaft, shape: circle, D: " << D << "}]\n"
-         "segments: [{length: " << L << ", section: shaft, elements: 8}]\n"
+         "segments: [{length: " << L << ", section: shaft, elements: 2}]\n"
          "points: [{name: disk, at: " << L / 2 << "}]\n"
          "supports:\n"
          "  - {name: left, at: start, fix: [uy, uz]}\n"
