@@ -23,7 +23,7 @@ constexpr int kMaxRestarts = 1000;
 std::string singularShiftMessage(double sigma, double rcond) {
   std::ostringstream msg;
   msg << "modal analysis: K - sigma M is singular at shift sigma = " << sigma
-      << " (UMFPACK rcond = " << rcond << "): the shift coincides with an eigenvalue";
+      << " (reciprocal condition estimate " << rcond << "): the shift coincides with an eigenvalue";
   if (sigma == 0)
     msg << ", i.e. the structure has rigid-body modes or mechanisms; give a negative shift "
            "(e.g. shift: -1) to compute them";
