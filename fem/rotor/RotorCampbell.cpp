@@ -100,6 +100,7 @@ std::vector<CriticalSpeed> criticalSpeeds(const CampbellResult& campbell, double
       const double t = f0 == f1 ? 0 : f0 / (f0 - f1);
       CriticalSpeed c;
       c.line = l;
+      c.order = order;
       c.speed = speeds[s] + t * (speeds[s + 1] - speeds[s]);
       c.rpm = c.speed * 60 / (2 * std::numbers::pi);
       c.frequencyHz = order * c.speed / (2 * std::numbers::pi);

@@ -87,6 +87,7 @@ struct CampbellResult {
 /// Where a line's damped frequency crosses the excitation order x speed line.
 struct CriticalSpeed {
   int line = -1;
+  double order = 1;  ///< the excitation order x speed line it meets
   double speed = 0;  ///< rad/s, linearly interpolated between the bracketing speeds
   double rpm = 0;
   double frequencyHz = 0;       ///< = order * speed / (2 pi)

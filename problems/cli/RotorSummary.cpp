@@ -35,6 +35,10 @@ void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutco
   for (const CriticalSpeed& k : r.criticalSpeeds)
     out << "    critical speed " << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz)
         << " Hz, line " << k.line + 1 << ", " << whirlName(k.whirl) << ")\n";
+  for (const CriticalSpeed& k : r.furtherCriticalSpeeds)
+    out << "    " << formatValue(k.order) << "x speed meets line " << k.line + 1 << " at "
+        << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz) << " Hz, "
+        << whirlName(k.whirl) << ")\n";
   // The least damped line: its smallest log decrement over the sweep.
   std::size_t worstLine = 0, worstSpeed = 0;
   for (std::size_t l = 0; l < c.lines.size(); ++l)

@@ -60,6 +60,7 @@ struct DeckRotorAnalysis {
   double speed = 0;                        ///< rotor: spin speed (rad/s)
   std::vector<double> speeds;              ///< campbell, unbalance: ascending (rad/s)
   double order = 1;                        ///< campbell: excitation order of the critical speeds
+  std::vector<double> furtherOrders;       ///< campbell: more orders drawn, with their crossings
   std::vector<DeckUnbalance> unbalance;    ///< unbalance
   std::vector<std::string> response;       ///< unbalance: points whose orbits are reported
   /// unbalance: the operating speed range (rad/s) the API 684 margins are measured from

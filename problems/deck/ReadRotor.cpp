@@ -255,6 +255,27 @@ void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   }
 }
 
+/// campbell `order:` a positive number, or a list of distinct ones: the first gives the critical
+/// speeds (checks, API margins), the others are drawn as further excitation lines with their
+/// crossings (e.g. [1, 0.5, 2] for oil whirl and twice-per-revolution excitation).
+void readOrders(const Field& f, const ExpressionEvaluator& ev, DeckRotorAnalysis& r) {
+  if (!f.isList()) {
+    r.order = f.positive(ev);
+    return;
+  }
+  const std::vector<Field> items = f.items();
+  if (items.empty() || items.size() > 10) f.fail("expected one to ten excitation orders");
+  std::vector<double> orders;
+  for (const Field& item : items) {
+    const double order = item.positive(ev);
+    if (std::find(orders.begin(), orders.end(), order) != orders.end())
+      item.fail("this order is listed twice");
+    orders.push_back(order);
+  }
+  r.order = orders.front();
+  r.furtherOrders.assign(orders.begin() + 1, orders.end());
+}
+
 }  // namespace
 
 void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
@@ -313,7 +334,7 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
     f.allowOnly({"type", "name", "modes", "shift", "from_rpm", "to_rpm", "steps", "order"},
                 "a campbell analysis");
     r.speeds = readSpeedRange(c, f);
-    if (auto o = f.get("order")) r.order = o->positive(ev);
+    if (auto o = f.get("order")) readOrders(*o, ev, r);
   } else if (a.type == "critical-speed-map") {
     readCriticalSpeedMap(c, f, r);
   } else if (a.type == "bearing-loads") {

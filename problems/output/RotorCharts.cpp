@@ -24,13 +24,15 @@ constexpr int kForward = 1, kBackward = 0, kPlanar = 2;
 ChartScript campbellDiagram(const std::string& caption, const std::string& chartName,
                             const CsvTable& campbell, const std::string& csvFile,
                             const CsvTable& critical, const std::string& criticalFile,
-                            double order, const std::optional<OperatingBand>& band) {
+                            const std::vector<double>& orders,
+                            const std::optional<OperatingBand>& band) {
   const auto rpm = campbell.numbers("speed_rpm");
   const int x = campbell.column("speed_rpm");
   const int lines = campbellLineCount(campbell);
   // The frequency axis is fixed here (0 to the highest line or speed line, 5 % headroom) so
   // that data map to known pixels and the critical speeds' labels can be kept apart.
-  double top = order * std::max(std::abs(rpm.front()), std::abs(rpm.back())) / 60;
+  const double highestOrder = *std::max_element(orders.begin(), orders.end());
+  double top = highestOrder * std::max(std::abs(rpm.front()), std::abs(rpm.back())) / 60;
   bool planar = false;
   for (int l = 1; l <= lines; ++l) {
     for (double f : campbell.numbers(campbellColumn(l, "frequency")))
@@ -43,8 +45,9 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
   std::vector<std::pair<int, std::string>> senses{{kForward, "forward whirl"},
                                                   {kBackward, "backward whirl"}};
   if (planar) senses.emplace_back(kPlanar, "planar");
-  const std::string speedLine = number(order) + "x speed";
-  std::vector<std::string> titles{speedLine, "critical speeds"};
+  std::vector<std::string> titles{"critical speeds"};
+  if (orders.size() > 1) titles.push_back("further orders' crossings");
+  for (double order : orders) titles.push_back(number(order) + "x speed");
   for (const auto& [slot, title] : senses) titles.push_back(title);
   const BandCommands shading = operatingBandCommands(band);
   titles.insert(titles.end(), shading.titles.begin(), shading.titles.end());
@@ -107,12 +110,24 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
   for (const auto& [slot, title] : senses)
     body << "NaN with lines linewidth 2 " << colour(slot) << " title " << gnuplotText(title)
          << ", \\\n       ";
-  body << "x * " << number(order) << " / 60 with lines dashtype 2 linecolor rgb 'gray30' title "
-       << gnuplotText(speedLine);
-  if (critical.rowCount() > 0)
+  // The excitation lines: the first order (the critical speeds') darkest, further ones lighter.
+  for (std::size_t k = 0; k < orders.size(); ++k)
+    body << (k > 0 ? ", \\\n       " : "") << "x * " << number(orders[k])
+         << " / 60 with lines dashtype " << (k == 0 ? 2 : 3 + int(k % 3)) << " linecolor rgb '"
+         << (k == 0 ? "gray30" : "gray45") << "' linewidth " << (k == 0 ? 1 : 1.5) << " title "
+         << gnuplotText(number(orders[k]) + "x speed");
+  // The critical speeds (the first order's crossings) filled, the further orders' open.
+  const int orderColumn = critical.column("order");
+  const auto crossings = [&](bool first, const char* style, const std::string& title) {
     body << ", \\\n       " << gnuplotFile(criticalFile) << " skip 1 using "
-         << critical.column("speed_rpm") << ":" << critical.column("frequency")
-         << " with points pointtype 7 pointsize 1.4 linecolor rgb 'black' title 'critical speeds'";
+         << critical.column("speed_rpm") << ":($" << orderColumn << (first ? " == " : " != ")
+         << number(orders.front()) << " ? $" << critical.column("frequency") << " : NaN)"
+         << " with points " << style << " linecolor rgb 'black' title " << gnuplotText(title);
+  };
+  if (critical.rowCount() > 0) {
+    crossings(true, "pointtype 7 pointsize 1.4", "critical speeds");
+    if (orders.size() > 1) crossings(false, "pointtype 6 pointsize 1.4", "further orders' crossings");
+  }
   body << shading.keyEntries << "\n";
   return {chartName, "Campbell diagram: whirl frequencies against spin speed", width, height,
           body.str()};

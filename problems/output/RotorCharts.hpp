@@ -13,13 +13,15 @@
 namespace beamrotor {
 
 /// Whirl frequency (Hz) of each line against speed (rpm) from a campbellTable in csvFile,
-/// coloured by whirl (forward, backward, planar), the order x speed line dashed, and the
-/// critical speeds from a criticalSpeedsTable in criticalFile marked and labelled in rpm; the
+/// coloured by whirl (forward, backward, planar), an order x speed line dashed per order (the
+/// first, that of the critical speeds, darkest), and the crossings
+/// from a criticalSpeedsTable in criticalFile marked and labelled in rpm; the
 /// operating band shaded when given.
 ChartScript campbellDiagram(const std::string& caption, const std::string& chartName,
                             const CsvTable& campbell, const std::string& csvFile,
                             const CsvTable& critical, const std::string& criticalFile,
-                            double order, const std::optional<OperatingBand>& band = std::nullopt);
+                            const std::vector<double>& orders,
+                            const std::optional<OperatingBand>& band = std::nullopt);
 
 /// Two panels against speed (rpm) from an unbalanceTable in csvFile: the orbit semi-major
 /// axis (um, log scale) and the phase of uy (deg, unwrapped: continuous through the criticals,

@@ -69,13 +69,24 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
                      {"whirl", whirl},
                      {"mac", c.mac[l]}});
   }
-  for (const CriticalSpeed& k : r.criticalSpeeds)
-    critical.push_back({{"rpm", k.rpm},
-                        {"speed_rad_s", k.speed},
-                        {"frequency_hz", k.frequencyHz},
-                        {"line", k.line + 1},
-                        {"damping_ratio", k.dampingRatio},
-                        {"whirl", std::string(whirlName(k.whirl))}});
+  const auto crossing = [](const CriticalSpeed& k) {
+    return Json{{"rpm", k.rpm},
+                {"speed_rad_s", k.speed},
+                {"frequency_hz", k.frequencyHz},
+                {"line", k.line + 1},
+                {"damping_ratio", k.dampingRatio},
+                {"whirl", std::string(whirlName(k.whirl))},
+                {"order", k.order}};
+  };
+  for (const CriticalSpeed& k : r.criticalSpeeds) critical.push_back(crossing(k));
+  // Further excitation orders: their crossings, apart from the critical speeds checks read.
+  Json further = Json::array();
+  for (double order : r.furtherOrders) {
+    Json crossings = Json::array();
+    for (const CriticalSpeed& k : r.furtherCriticalSpeeds)
+      if (k.order == order) crossings.push_back(crossing(k));
+    further.push_back({{"order", order}, {"crossings", crossings}});
+  }
   // The least damped line's smallest log decrement over the sweep (what decides stability);
   // below 1e-9 in size it is an undamped mode's round-off, written 0 (as the API 684 stability
   // verdict takes it, fem/rotor/RotorStability.cpp).
@@ -99,6 +110,7 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
           {"smallest_log_decrement", smallest},
           {"lines", lines},
           {"critical_speeds", critical},
+          {"further_orders", further},
           {"symbolic_analyses", c.symbolicAnalyses},
           {"time_s", c.time.total},
           {"files",

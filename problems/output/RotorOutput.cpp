@@ -22,13 +22,26 @@
 
 namespace beamrotor {
 
+namespace {
+
+/// The excitation orders a Campbell analysis draws: its critical speeds' order, then the rest.
+std::vector<double> campbellOrders(const RotorOutcome& r) {
+  std::vector<double> orders{r.order};
+  orders.insert(orders.end(), r.furtherOrders.begin(), r.furtherOrders.end());
+  return orders;
+}
+
+}  // namespace
+
 PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
   const RotorOutcome& r = *a.rotor;
   PreparedRotor p;
   if (r.modes) p.modes = rotorModesTable(modesCsv(stem), *r.modes);
   if (r.campbell) {
     p.campbell = campbellTable(campbellCsv(stem), *r.campbell);
-    p.critical = criticalSpeedsTable(criticalSpeedsCsv(stem), r.criticalSpeeds);
+    std::vector<CriticalSpeed> all = r.criticalSpeeds;
+    all.insert(all.end(), r.furtherCriticalSpeeds.begin(), r.furtherCriticalSpeeds.end());
+    p.critical = criticalSpeedsTable(criticalSpeedsCsv(stem), all);
     if (!r.journals.empty())
       p.bearings = journalBearingsTable(journalBearingsCsv(stem), r.journals);
   }
@@ -105,7 +118,8 @@ void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std
     p.critical->write(dir / criticalSpeedsCsv(stem));
     if (charts && p.campbell->rowCount() > 0)
       drawChart(dir, campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
-                                     *p.critical, criticalSpeedsCsv(stem), r.order, band));
+                                     *p.critical, criticalSpeedsCsv(stem), campbellOrders(r),
+                                     band));
     if (charts && p.campbell->rowCount() > 0)
       drawChart(dir, stabilityDiagram(
                          caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),

@@ -130,10 +130,11 @@ CsvTable criticalSpeedsTable(const std::string& title, const std::vector<Critica
                          {"frequency", "Hz"},
                          {"line", ""},
                          {"damping_ratio", ""},
-                         {"whirl", ""}});
+                         {"whirl", ""},
+                         {"order", ""}});
   for (const CriticalSpeed& k : c)
     table.addRow({k.rpm, k.speed, k.frequencyHz, (long long)(k.line + 1), k.dampingRatio,
-                  whirlSign(k.whirl)});
+                  whirlSign(k.whirl), k.order});
   return table;
 }
 

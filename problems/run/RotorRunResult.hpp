@@ -58,6 +58,10 @@ struct RotorOutcome {
   std::optional<CampbellResult> campbell;     ///< campbell
   std::vector<CriticalSpeed> criticalSpeeds;  ///< campbell: where lines meet order x speed
   double order = 1;                           ///< campbell: that order
+  /// campbell: crossings with the deck's further orders (each tagged with its order), by order
+  /// then speed; not part of the critical speeds the checks and API margins read
+  std::vector<CriticalSpeed> furtherCriticalSpeeds;
+  std::vector<double> furtherOrders;  ///< campbell: those orders, as in the deck
   /// campbell: the lowest speed where a mode's log decrement falls through zero, refined on the
   /// speed; none when every mode stays stable over the sweep
   std::optional<InstabilityOnset> onset;

@@ -127,6 +127,10 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, a));
     out.order = r.order;
     out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
+    out.furtherOrders = r.furtherOrders;
+    for (double order : r.furtherOrders)
+      for (const CriticalSpeed& c : criticalSpeeds(*out.campbell, order))
+        out.furtherCriticalSpeeds.push_back(c);
     out.onset = instabilityOnset(model, *out.campbell, optionsOf(deck, a));
     out.journals = journalCurves(deck);
     out.operating = deckOperatingRange(deck);
