@@ -9,6 +9,11 @@
 
 namespace beamrotor {
 
+double neutralLogDecrement(double logDecrement) {
+  constexpr double kNeutral = 1e-9;
+  return std::abs(logDecrement) < kNeutral ? 0 : logDecrement;
+}
+
 double leastStableDecayRate(const std::vector<RotorMode>& modes) {
   double worst = -std::numeric_limits<double>::infinity();
   for (const RotorMode& m : modes) worst = std::max(worst, m.eigenvalue.real());
@@ -85,12 +90,9 @@ OperatingStability operatingStability(const Model& model, const RotorOptions& op
   OperatingStability out;
   out.required = required;
   out.smallest = std::numeric_limits<double>::infinity();
-  // An undamped mode's decrement is 0 up to the eigensolver's round-off (Re(lambda) ~ 1e-13
-  // |lambda|, a decrement of ~1e-12): below kNeutral in size it is taken as 0, neither
-  // growing nor decaying, so an undamped rotor does not fail on the sign of its round-off.
-  constexpr double kNeutral = 1e-9;
-  const auto decrement = [&](const RotorMode& mode) {
-    return std::abs(mode.logDecrement) < kNeutral ? 0 : mode.logDecrement;
+  // An undamped rotor does not fail on the sign of its round-off.
+  const auto decrement = [](const RotorMode& mode) {
+    return neutralLogDecrement(mode.logDecrement);
   };
   bool growing = false;  // some mode grows at some speed checked
   for (const auto& line : campbell.lines)

@@ -23,6 +23,11 @@ struct InstabilityOnset {
   int evaluations = 0;           ///< eigen-solutions spent on the refinement
 };
 
+/// A log decrement as a verdict reads it: an undamped mode's decrement is 0 up to the
+/// eigensolver's round-off (Re(lambda) ~ 1e-13 |lambda|, a decrement of ~1e-12), so below 1e-9
+/// in size it is taken as 0, neither growing nor decaying; other values as they are.
+double neutralLogDecrement(double logDecrement);
+
 /// max Re(lambda) (1/s) over a set of modes: > 0 when one of them grows.
 double leastStableDecayRate(const std::vector<RotorMode>& modes);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "fem/rotor/RotorStability.hpp"
 #include "problems/output/FileNames.hpp"
 #include "problems/output/RotorFileNames.hpp"
 #include "problems/output/RotorTables.hpp"
@@ -87,13 +88,12 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
       if (k.order == order) crossings.push_back(crossing(k));
     further.push_back({{"order", order}, {"crossings", crossings}});
   }
-  // The least damped line's smallest log decrement over the sweep (what decides stability);
-  // below 1e-9 in size it is an undamped mode's round-off, written 0 (as the API 684 stability
-  // verdict takes it, fem/rotor/RotorStability.cpp).
+  // The least damped line's smallest log decrement over the sweep (what decides stability),
+  // an undamped mode's round-off written 0 as the API 684 stability verdict reads it.
   Json smallest = nullptr;
   for (std::size_t l = 0; l < c.lines.size(); ++l)
     for (std::size_t s = 0; s < c.speeds.size(); ++s) {
-      const double raw = c.lines[l][s].logDecrement, delta = std::abs(raw) < 1e-9 ? 0 : raw;
+      const double delta = neutralLogDecrement(c.lines[l][s].logDecrement);
       if (std::isfinite(delta) && (smallest.is_null() || delta < smallest.at("value")))
         smallest = {{"value", delta}, {"rpm", rpmOf(c.speeds[s])}, {"line", l + 1}};
     }
