@@ -63,7 +63,8 @@ double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eige
 
 }  // namespace
 
-LinearStatics::LinearStatics(const Model& model) : model_(model), loaded_(&model), dofs_(model) {
+LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
+    : model_(model), loaded_(&model), dofs_(model), reuse_(reuse) {
   // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
   SparseAssembler(model, dofs_).assemble(MatrixKind::stiffness).swap(K_);
   setLoads(model);
@@ -94,14 +95,17 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   SparseMatrix heldMatrix;
   if (!held.empty()) heldMatrix = holdDofs(K_, held);
   const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
-  const bool reuse = held.empty() && factoredUnheld_;
+  const bool sameFactor = held.empty() && factoredUnheld_;
   if (!analysed_) {
-    solver_.analyzePattern(A);
+    if (reuse_)
+      solver_ = &reuse_->analysedFor(A);
+    else
+      solver_->analyzePattern(A);
     analysed_ = true;
   }
-  if (!reuse) solver_.factorize(A);
+  if (!sameFactor) solver_->factorize(A);
   factoredUnheld_ = held.empty();
-  rcond_ = solver_.rcond();
+  rcond_ = solver_->rcond();
   // A nearly singular matrix: a mechanism (named in words), or a structure that is held but
   // ill-conditioned, whose solution's measured round-off then tells how much of it holds.
   bool kinematicsChecked = false;
@@ -113,7 +117,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     const Mechanism mechanism = findMechanism(model_, dofs_, K_, heldEquations);
     if (mechanism.count > 0) throwUnsupported(model_, dofs_, mechanism, "static analysis");
   };
-  if (!reuse && !solver_.healthy(singularRcond)) requireHeld();
+  if (!sameFactor && !solver_->healthy(singularRcond)) requireHeld();
   factorSeconds_ += clock.lap();
 
   // 2. Right-hand side: held values move to the right like prescribed ones.
@@ -124,8 +128,8 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     b -= K_ * uHeld;
     for (const HeldDof& h : held) b[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
   }
-  u.head(nf) = solver_.solve(b);
-  roundOff_ = measuredError(A, b, u.head(nf), solver_);
+  u.head(nf) = solver_->solve(b);
+  roundOff_ = measuredError(A, b, u.head(nf), *solver_);
   if (!u.allFinite() || !std::isfinite(roundOff_)) {
     requireHeld();
     std::ostringstream msg;

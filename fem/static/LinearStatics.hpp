@@ -11,6 +11,7 @@
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 #include "fem/solvers/LinearSolver.hpp"
+#include "fem/solvers/SymbolicReuse.hpp"
 
 namespace beamrotor {
 
@@ -22,8 +23,10 @@ struct HeldDof {
 
 class LinearStatics {
  public:
-  /// Numbers the dofs and assembles K (free-free), the loads and the prescribed values.
-  explicit LinearStatics(const Model& model);
+  /// Numbers the dofs and assembles K (free-free), the loads and the prescribed values. With
+  /// `reuse`, K is factorised by its solver (the symbolic analysis of an earlier system of the
+  /// same pattern kept); it must outlive this object and serve no other system meanwhile.
+  explicit LinearStatics(const Model& model, SymbolicReuse* reuse = nullptr);
 
   /// Full-length displacement with the supports at their prescribed values and the held dofs
   /// at theirs. Throws UnsupportedStructure for a mechanism (named), SolveError for a held
@@ -47,10 +50,10 @@ class LinearStatics {
   /// The measured relative error of the last solution (round-off): the residual in extended
   /// precision and one correction solve, in the scaled metric sqrt(K_jj) |u_j|.
   double roundOff() const { return roundOff_; }
-  double factorEntries() const { return solver_.factorEntries(); }
+  double factorEntries() const { return solver_->factorEntries(); }
   /// The direct method chosen for K and its ordering ("CHOLMOD LDL', AMD ordering").
   std::string solverName() const {
-    return solver_.methodName() + ", " + solver_.orderingName() + " ordering";
+    return solver_->methodName() + ", " + solver_->orderingName() + " ordering";
   }
   /// Seconds spent factorising and solving so far.
   double factorSeconds() const { return factorSeconds_; }
@@ -62,7 +65,9 @@ class LinearStatics {
   DofMap dofs_;
   SparseMatrix K_;
   Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
-  LinearSolver solver_;
+  SymbolicReuse* reuse_;
+  LinearSolver ownSolver_;
+  LinearSolver* solver_ = &ownSolver_;  ///< ownSolver_, or reuse_'s once analysed
   bool analysed_ = false;
   bool factoredUnheld_ = false;  ///< the factor is of K itself (no held dofs)
   double rcond_ = 0, roundOff_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;

@@ -36,7 +36,7 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
   StaticResult result;
 
   // 1. Number the dofs, assemble K and the reduced right-hand side.
-  LinearStatics system(model);
+  LinearStatics system(model, options.reuse);
   result.time.assembly = clock.lap();
 
   // 2. Solve: once, or until the contact set settles.
@@ -67,7 +67,7 @@ std::vector<StaticResult> solveStaticCases(const std::vector<const Model*>& load
     if (!m->contacts().empty())
       throw std::invalid_argument("solveStaticCases: contacts are not linear in the loads");
   Stopwatch clock;
-  LinearStatics system(*loadings.front());
+  LinearStatics system(*loadings.front(), options.reuse);
   const double assembly = clock.lap();
   for (const Model* loaded : loadings) {
     Stopwatch total;

@@ -10,9 +10,14 @@
 
 namespace beamrotor {
 
+class SymbolicReuse;
+
 struct StaticOptions {
   /// Reject the solve when UMFPACK's rcond falls below this (see kSingularRcond).
   double singularRcond = kSingularRcond;
+  /// When set, K's symbolic analysis is taken from (and left in) this object: systems of one
+  /// pattern solved one after another (a design study's points) analyse it once.
+  SymbolicReuse* reuse = nullptr;
 };
 
 /// Solves model's statics. Throws UnsupportedStructure naming the dofs that can move freely,

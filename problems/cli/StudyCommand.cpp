@@ -70,9 +70,19 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
   for (const Json& failure : s["failures"])
     out << "  point " << failure["point"] << " failed: " << failure["status"].get<std::string>()
         << "\n";
-  char line[128];
+  char line[256];
   std::snprintf(line, sizeof line, "time: %.3f s, %.0f points/s\n", o.seconds,
                 o.seconds > 0 ? double(o.points) / o.seconds : 0.0);
+  out << line;
+  if (o.points == 0) return;
+  // Per point, on the core that solved it (microseconds).
+  const double us = 1e6 / double(o.points);
+  const PointCost& c = o.cost;
+  std::snprintf(line, sizeof line,
+                "per point (us): read deck %.1f, model %.1f, assemble %.1f, factorise %.1f, "
+                "solve and recover %.1f, checks and outputs %.1f, table row %.1f\n",
+                c.read * us, c.model * us, c.assembly * us, c.factor * us, c.solve * us,
+                c.measure * us, o.rowSeconds * us);
   out << line;
 }
 

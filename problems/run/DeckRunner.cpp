@@ -53,7 +53,7 @@ std::vector<DeckLoad> combinedLoads(const Deck& deck, const DeckCombination& k) 
 /// all solved with one factorisation of K: the models differ only in their loads, so each is
 /// one more right-hand side. Each model is kept for member forces, which need its distributed
 /// loads.
-std::vector<CaseOutcome> solveCases(const Deck& deck) {
+std::vector<CaseOutcome> solveCases(const Deck& deck, const StaticOptions& options) {
   std::vector<CaseOutcome> out;
   for (const DeckLoadCase& lc : deck.loadCases)
     out.push_back({lc.name, false, buildModel(withLoads(deck, lc.loads)), {}});
@@ -61,12 +61,13 @@ std::vector<CaseOutcome> solveCases(const Deck& deck) {
     out.push_back({k.name, true, buildModel(withLoads(deck, combinedLoads(deck, k))), {}});
   std::vector<const Model*> models;
   for (const CaseOutcome& c : out) models.push_back(c.model.get());
-  std::vector<StaticResult> results = solveStaticCases(models);
+  std::vector<StaticResult> results = solveStaticCases(models, options);
   for (std::size_t i = 0; i < out.size(); ++i) out[i].statics = std::move(results[i]);
   return out;
 }
 
-AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model) {
+AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model,
+                      RunCache* cache) {
   AnalysisOutcome out;
   out.type = a.type;
   out.name = a.name;
@@ -75,10 +76,12 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       out.secondOrder = solveSecondOrder(model);
       out.statics = out.secondOrder->secondOrder;
     } else if (a.type == "static") {
-      out.statics = solveStatic(model);
+      StaticOptions options;
+      if (cache) options.reuse = &cache->statics;
+      out.statics = solveStatic(model, options);
       if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
       if (auto w = displacementWarning(model, *out.statics)) out.warnings.push_back(*w);
-      out.cases = solveCases(deck);
+      out.cases = solveCases(deck, options);
     } else if (a.type == "buckling") {
       BucklingOptions options;
       options.count = a.modes;
@@ -145,9 +148,9 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
 
 }  // namespace
 
-RunResult runDeck(const Deck& deck) {
+RunResult runDeck(const Deck& deck, RunCache* cache) {
   // Plain journals loaded by the rotor's weight: their tables first, for every later reader.
-  if (needsJournalLoads(deck)) return runDeck(withJournalLoads(deck));
+  if (needsJournalLoads(deck)) return runDeck(withJournalLoads(deck), cache);
   if (deck.accuracy) {
     RunResult adequate = runAdequateModel(deck);
     adequate.warnings = deck.warnings;
@@ -165,9 +168,12 @@ RunResult runDeck(const Deck& deck) {
   // 1. The model.
   std::shared_ptr<const Model> model = buildModel(deck);
   run.model = model;
+  run.modelSeconds = clock.lap();
 
   // 2. The analyses, in deck order.
-  for (const DeckAnalysis& a : deck.analyses) run.analyses.push_back(solve(deck, a, *model));
+  for (const DeckAnalysis& a : deck.analyses)
+    run.analyses.push_back(solve(deck, a, *model, cache));
+  run.analysesSeconds = clock.lap();
 
   // 3. The checks that apply to these parameter values.
   for (const DeckCheck& k : deck.checks) {
@@ -183,7 +189,8 @@ RunResult runDeck(const Deck& deck) {
       throw DeckSolveError(deck.path, k.place, "check '" + k.name + "': " + e.what());
     }
   }
-  run.seconds = clock.lap();
+  run.checksSeconds = clock.lap();
+  run.seconds = run.modelSeconds + run.analysesSeconds + run.checksSeconds;
   return run;
 }
 

@@ -4,6 +4,7 @@
 #include <functional>
 #include <vector>
 
+#include "fem/solvers/SymbolicReuse.hpp"
 #include "problems/deck/Deck.hpp"
 #include "problems/deck/DeckSource.hpp"
 #include "problems/deck/Overrides.hpp"
@@ -16,9 +17,16 @@ inline constexpr const char* kOutOfMemory =
     "out of memory: the model, its factorisation or its results do not fit (use fewer "
     "elements, modes, frames or samples)";
 
+/// What a caller that runs many decks of one structure one after another keeps between the
+/// runs (the points of a design study): the symbolic analysis of the static systems.
+struct RunCache {
+  SymbolicReuse statics;
+};
+
 /// One run of a deck for its current parameter values. Throws DeckError for input the core
-/// rejects while building, DeckSolveError (naming the analysis) when an analysis fails.
-RunResult runDeck(const Deck& deck);
+/// rejects while building, DeckSolveError (naming the analysis) when an analysis fails. With
+/// `cache`, static systems of the pattern an earlier run left there skip their analysis.
+RunResult runDeck(const Deck& deck, RunCache* cache = nullptr);
 
 /// Called after each sweep value is solved: (values done, values in all).
 using SweepProgress = std::function<void(int done, int total)>;

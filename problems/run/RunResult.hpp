@@ -76,6 +76,8 @@ struct RunResult {
   std::vector<Check> checks;
   std::vector<std::string> skippedChecks;  ///< names of checks whose `when:` is false here
   double seconds = 0;                      ///< wall time to build and solve
+  /// Its parts: building the model, the analyses, the checks.
+  double modelSeconds = 0, analysesSeconds = 0, checksSeconds = 0;
   std::optional<AdequateChoice> adequate;  ///< `accuracy:` decks: the model chosen
   std::vector<std::string> warnings;       ///< the deck's own (implausible materials)
 };

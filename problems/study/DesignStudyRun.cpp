@@ -70,9 +70,12 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
       csv << studyCsvHeader(plan);
       long long done = 0;
       solvePointsOnRank(plan, points, request.threads, [&](const StudyRow& row) {
+        Stopwatch rowClock;
+        outcome.cost += row.cost;
         csv << studyCsvRow(row);
         if (!csv) throw std::runtime_error(writeFailure(table, errno));
         summary.add(row);
+        outcome.rowSeconds += rowClock.lap();
         if (pointFiles && row.ok())
           writeRunOutputs(pointFiles->solveFully(row.parameters),
                           temporary / "points" / std::to_string(row.index));

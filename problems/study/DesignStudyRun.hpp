@@ -12,6 +12,7 @@
 
 #include "problems/deck/DesignStudy.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/study/StudyPoint.hpp"
 
 namespace beamrotor {
 
@@ -31,6 +32,10 @@ struct DesignStudyOutcome {
   std::filesystem::path dir;
   long long points = 0, failed = 0;
   double seconds = 0;  ///< wall time of the whole study, writing included
+  /// Where the points' time went, summed over the points (PointCost), and the time spent
+  /// writing their rows and adding them to the summary.
+  PointCost cost;
+  double rowSeconds = 0;
   Json summary;
 };
 

@@ -37,6 +37,7 @@ void appendRowBytes(std::string& bytes, const StudyRow& row) {
   appendRaw(bytes, row.outputs.data(), row.outputs.size());
   appendRaw(bytes, row.checks.data(), row.checks.size());
   appendRaw(bytes, row.passed.data(), row.passed.size());
+  appendRaw(bytes, &row.cost, 1);
   const std::uint32_t length = std::uint32_t(row.status.size());
   appendRaw(bytes, &length, 1);
   bytes += row.status;
@@ -51,6 +52,7 @@ StudyRow readRowBytes(const std::string& bytes, std::size_t& offset, const Study
   readRaw(bytes, offset, row.outputs.data(), row.outputs.size());
   readRaw(bytes, offset, row.checks.data(), row.checks.size());
   readRaw(bytes, offset, row.passed.data(), row.passed.size());
+  readRaw(bytes, offset, &row.cost, 1);
   std::uint32_t length = 0;
   readRaw(bytes, offset, &length, 1);
   row.status.resize(length);

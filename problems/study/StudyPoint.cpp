@@ -6,6 +6,7 @@
 #include <mutex>
 #include <new>
 
+#include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/Field.hpp"
 #include "problems/deck/FormulationOption.hpp"
@@ -35,7 +36,23 @@ std::string rowStatusText(std::string text) {
   return text;
 }
 
+/// The static systems' share of a run's analyses: assembly and factorisation.
+void addStaticCost(const StaticResult& r, PointCost& cost) {
+  cost.assembly += r.time.assembly;
+  cost.factor += r.time.factor;
+}
+
 }  // namespace
+
+PointCost& PointCost::operator+=(const PointCost& other) {
+  read += other.read;
+  model += other.model;
+  assembly += other.assembly;
+  factor += other.factor;
+  solve += other.solve;
+  measure += other.measure;
+  return *this;
+}
 
 StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText,
                         const Deck& deck, std::vector<ParameterOverride> overrides,
@@ -90,6 +107,7 @@ StudyRow PointSolver::solve(long long index, const std::vector<double>& values) 
   row.outputs.assign(plan_.spec.outputs.size(), kMissing);
   row.checks.assign(plan_.checkNames.size(), kMissing);
   row.passed.assign(plan_.checkNames.size(), -1);
+  Stopwatch clock;
   try {
     Deck deck = deckAt(values);
     // Only the analyses something here reads.
@@ -97,10 +115,21 @@ StudyRow PointSolver::solve(long long index, const std::vector<double>& values) 
       return std::find(plan_.analyses.begin(), plan_.analyses.end(), a.name) ==
              plan_.analyses.end();
     });
+    row.cost.read = clock.lap();
     std::unique_lock<std::mutex> turn(arpackTurn(), std::defer_lock);
     if (plan_.exclusive) turn.lock();
-    const RunResult run = runDeck(deck);
+    const RunResult run = runDeck(deck, plan_.lean ? &cache_ : nullptr);
     if (turn.owns_lock()) turn.unlock();
+    const double runSeconds = clock.lap();
+    row.cost.model = run.modelSeconds;
+    for (const AnalysisOutcome& a : run.analyses) {
+      if (a.statics) addStaticCost(*a.statics, row.cost);
+      for (const CaseOutcome& c : a.cases) addStaticCost(c.statics, row.cost);
+    }
+    row.cost.measure = run.checksSeconds;
+    // The rest of the run (an `accuracy:` deck's whole search among them).
+    row.cost.solve = std::max(0.0, runSeconds - row.cost.model - row.cost.assembly -
+                                       row.cost.factor - row.cost.measure);
     for (std::size_t k = 0; k < plan_.spec.outputs.size(); ++k) {
       const StudyOutput& o = plan_.spec.outputs[k];
       for (const AnalysisOutcome& a : run.analyses)
@@ -115,6 +144,7 @@ StudyRow PointSolver::solve(long long index, const std::vector<double>& values) 
       row.checks[k] = c.computed;
       row.passed[k] = c.pass() ? 1 : 0;
     }
+    row.cost.measure += clock.lap();
   } catch (const std::bad_alloc&) {
     row.status = kOutOfMemory;
   } catch (const std::exception& e) {  // DeckError, DeckSolveError and the core's own

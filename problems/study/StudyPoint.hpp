@@ -12,6 +12,7 @@
 #include "problems/deck/DesignStudy.hpp"
 #include "problems/deck/Expression.hpp"
 #include "problems/deck/Overrides.hpp"
+#include "problems/run/DeckRunner.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
@@ -36,6 +37,18 @@ struct StudyPlan {
   bool lean = true;
 };
 
+/// Where one point's time went (s, wall time of the thread that solved it). Not part of the
+/// table: times differ from run to run, the table must not.
+struct PointCost {
+  double read = 0;      ///< reading the deck at the point's values
+  double model = 0;     ///< building the model: mesh, elements, supports, loads
+  double assembly = 0;  ///< static systems: numbering the dofs, assembling K and the loads
+  double factor = 0;    ///< static systems: the factorisation (and the symbolic analysis)
+  double solve = 0;     ///< the rest of the analyses: solves, error estimate, recovery
+  double measure = 0;   ///< the deck's checks and the recorded outputs
+  PointCost& operator+=(const PointCost& other);
+};
+
 /// One point's row.
 struct StudyRow {
   long long index = 0;
@@ -44,6 +57,7 @@ struct StudyRow {
   std::vector<double> checks;       ///< computed values; NaN where the check does not apply
   std::vector<signed char> passed;  ///< 1 pass, 0 fail, -1 does not apply
   std::string status = "ok";        ///< "ok" or the point's error, one line
+  PointCost cost;
   bool ok() const { return status == "ok"; }
 };
 
@@ -66,12 +80,17 @@ class PointSolver {
   /// path) and in full.
   long long expressionsFromByteCode() const { return memo_.memoEvaluations(); }
   long long expressionsInFull() const { return memo_.fullEvaluations(); }
+  /// Static systems factorised with the symbolic analysis of an earlier point's, and analysed.
+  long long symbolicReuses() const { return cache_.statics.reuses(); }
+  long long symbolicAnalyses() const { return cache_.statics.analyses(); }
 
  private:
   Deck deckAt(const std::vector<double>& values) const;
   const StudyPlan& plan_;
   DeckSource source_;
   mutable ExpressionMemo memo_;  ///< this solver's only: solvers run on threads of their own
+  /// The lean path's: what one point's static systems leave for the next (same thread).
+  mutable RunCache cache_;
 };
 
 }  // namespace beamrotor

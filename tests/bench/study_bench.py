@@ -6,8 +6,10 @@ largest stress, each reaction checked against the deck's closed form at every po
 serially, with --threads 2 and under mpirun -n 2; prints points per second, parallel
 efficiency against the serial run and memory per point (peak resident memory of 10^4 points
 less that of 10^3, per extra point), the lean path against the full path (--full-path) on a
-2000-point grid, and writes them as JSON. Points per second come from wall time and from CPU
-time (the machine may be shared; CPU time is what one core spends).
+2000-point grid, and the per-point cost split the study prints (reading the deck, building the
+model, assembly, factorisation, the rest of the solve, checks and outputs, the table row), and
+writes them as JSON. Points per second come from wall time and from CPU time (the machine may be
+shared; CPU time is what one core spends).
 """
 import argparse
 import json
@@ -44,6 +46,24 @@ def run(command, out_dir):
     with open(os.path.join(out_dir, "summary.json")) as f:
         summary = json.load(f)
     return float(match.group(2)), float(match.group(1)), cpu, summary, stdout
+
+
+COST_PHASES = ("read deck", "model", "assemble", "factorise", "solve and recover",
+               "checks and outputs", "table row")
+
+
+def cost_split(stdout):
+    """The study's `per point (us): ...` line as {phase: microseconds per point}."""
+    line = re.search(r"per point \(us\): (.*)", stdout)
+    if not line:
+        sys.exit("the study printed no per-point cost split")
+    split = {}
+    for phase in COST_PHASES:
+        match = re.search(re.escape(phase) + r" ([0-9.]+)", line.group(1))
+        if not match:
+            sys.exit("the cost split has no '%s'" % phase)
+        split[phase] = float(match.group(1))
+    return split
 
 
 def peak_rss_mb(command, out_dir):
@@ -83,11 +103,12 @@ def main():
                                 args.exe] + grid
     tables = {}
     for name, command in variants.items():
-        rates, cpu_rates = [], []
+        rates, cpu_rates, splits = [], [], []
         for r in range(args.repeat):
             out = os.path.join(scratch, "%s_%d" % (name, r))
             rate, seconds, cpu, summary, stdout = run(command, out)
             rates.append(rate)
+            splits.append(cost_split(stdout))
             cpu_rates.append(points / cpu)
             if summary.get("path") != "lean":
                 sys.exit("the study did not take the lean path: %s" % summary.get("path"))
@@ -106,6 +127,13 @@ def main():
                                  "points_per_cpu_s_all": cpu_rates}
         print("%-10s %8.0f points/s, %8.0f points per CPU second (medians of %d)"
               % (name, rates[len(rates) // 2], cpu_rates[len(cpu_rates) // 2], args.repeat))
+        # Where a point's time goes, on the core that solved it: each phase's median.
+        split = {phase: sorted(s[phase] for s in splits)[len(splits) // 2]
+                 for phase in COST_PHASES}
+        results["runs"][name]["cost_per_point_us"] = split
+        print("           per point (us, medians): " +
+              ", ".join("%s %.1f" % (phase, us) for phase, us in split.items()) +
+              "; sum %.1f" % sum(split.values()))
     serial = results["runs"]["serial"]["points_per_s_median"]
     for name in results["runs"]:
         if name != "serial":
