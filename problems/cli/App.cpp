@@ -12,6 +12,7 @@
 #include "problems/deck/Formulations.hpp"
 #include "problems/deck/Suggest.hpp"
 #include "problems/run/DeckRunner.hpp"
+#include "problems/study/StudyMpi.hpp"
 
 namespace beamrotor::cli {
 
@@ -245,6 +246,19 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
     return code == 0 ? int(kOk) : int(kInputError);
   }
 
+  // Only `study` shares its work among MPI ranks; any other command under mpirun -n N would
+  // run N times over and N processes would write the same results directory.
+  if (!studyCmd->parsed() && launchedRanks() > 1) {
+    if (launchedRank() == 0)
+      err << "beamrotor " << app.get_subcommands().front()->get_name() << ": started by mpirun as "
+          << launchedRanks() << " processes, each of which would do the same work and write the "
+             "same results; only `beamrotor study` shares its points among MPI ranks (e.g. "
+             "`mpirun -n "
+          << launchedRanks()
+          << " beamrotor study DECK --sweep NAME=FROM:TO:STEPS`). Run this command without "
+             "mpirun.\n";
+    return kInputError;
+  }
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);

@@ -1,6 +1,8 @@
 #include "problems/study/StudyMpi.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -58,6 +60,29 @@ StudyRow readRowBytes(const std::string& bytes, std::size_t& offset, const Study
   row.status.resize(length);
   readRaw(bytes, offset, row.status.data(), length);
   return row;
+}
+
+namespace {
+
+/// A positive whole number from the first of `names` set in the environment, else `absent`.
+int launcherNumber(std::initializer_list<const char*> names, int absent) {
+  for (const char* name : names)
+    if (const char* text = std::getenv(name)) {
+      char* end = nullptr;
+      const long value = std::strtol(text, &end, 10);
+      if (end != text && *end == '\0' && value >= 0 && value < (1L << 30)) return int(value);
+    }
+  return absent;
+}
+
+}  // namespace
+
+int launchedRanks() {
+  return std::max(1, launcherNumber({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}, 1));
+}
+
+int launchedRank() {
+  return launcherNumber({"OMPI_COMM_WORLD_RANK", "PMI_RANK"}, 0);
 }
 
 #ifndef BEAMROTOR_MPI

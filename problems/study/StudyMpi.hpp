@@ -23,6 +23,13 @@ class MpiSession {
   static int size();
 };
 
+/// The number of ranks mpirun started this process among, and its rank, from the launcher's
+/// environment (Open MPI's OMPI_COMM_WORLD_SIZE and _RANK, or PMI_SIZE and PMI_RANK): 1 and 0
+/// when not launched by mpirun. Known without starting MPI (and in a build without it), so
+/// that commands which do not share work among ranks can refuse to run once per rank.
+int launchedRanks();
+int launchedRank();
+
 /// True where results are written: without MPI, and on rank 0.
 inline bool isStudyManager() { return MpiSession::rank() == 0; }
 

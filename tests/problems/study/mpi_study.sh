@@ -1,6 +1,7 @@
 #!/bin/sh
 # A sampled pump-rod study run serially and under `mpirun -n 2`: study.csv and summary.json
-# must agree byte for byte (ranks share the points; rank 0 restores their order). Skipped
+# must agree byte for byte (ranks share the points; rank 0 restores their order); `solve`
+# under mpirun -n 2 must refuse. Skipped
 # (exit 77, with the reason) where mpirun is missing. Arguments: the beamrotor executable and
 # the source directory.
 exe=$1
@@ -30,4 +31,11 @@ done
 # Both ranks took part: the table has every point once.
 rows=$(($(wc -l <"$tmp/mpi/study.csv") - 1))
 [ "$rows" -eq 200 ] || { echo "expected 200 rows, got $rows"; status=1; }
+# Any other command under mpirun refuses once (rank 0 says why, naming `study`), exit 2,
+# rather than solving the deck once per rank into one results directory.
+mpirun --allow-run-as-root --oversubscribe -n 2 "$exe" solve "$src/problems/cantilever.yaml" \
+  --out "$tmp/solve" >"$tmp/solve.txt" 2>&1 && { echo "solve under mpirun -n 2 ran"; status=1; }
+said=$(grep -c "only \`beamrotor study\` shares its points among MPI ranks" "$tmp/solve.txt")
+[ "$said" -eq 1 ] || { echo "expected the refusal once, got $said times:"; cat "$tmp/solve.txt"; status=1; }
+[ ! -e "$tmp/solve" ] || { echo "solve under mpirun wrote results"; status=1; }
 exit $status
