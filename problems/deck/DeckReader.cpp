@@ -191,7 +191,7 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   Deck deck;
   deck.path = source.path;
   deck.stem = source.stem;
-  reader::Context c{Field::root(source.root, source.path), deck, ExpressionEvaluator(memo), {},
+  reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {},
                     {}};
 
   // 1. Top-level keys.

@@ -165,7 +165,7 @@ DeckSource parseDeckText(const std::string& text, const std::string& path) {
     throw DeckError(path, placeOf(root.Mark()),
                     "expected a map at the top level (model:, segments:, ...), got " +
                         std::string(root.IsSequence() ? "a list" : "a single value"));
-  return DeckSource{path, stemOf(path), root};
+  return DeckSource{path, stemOf(path), DeckTree::fromYaml(root, path)};
 }
 
 DeckSource loadDeckFile(const std::filesystem::path& path) {

@@ -1,19 +1,21 @@
-// Turning a deck file (or text) into a YAML tree, rejecting what is not a deck at all: a
-// missing or unreadable file, an empty, oversized or binary one, and YAML syntax errors.
+// Turning a deck file (or text) into its tree (DeckTree.hpp), rejecting what is not a deck at
+// all: a missing or unreadable file, an empty, oversized or binary one, YAML syntax errors, and
+// aliases that expand without end.
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
+#include "problems/deck/DeckTree.hpp"
 
 namespace beamrotor {
 
-/// A deck's YAML tree and the name it goes by in messages.
+/// A deck's tree and the name it goes by in messages.
 struct DeckSource {
   std::string path;  ///< as the user gave it, e.g. "problems/pump_rod.yaml"
   std::string stem;  ///< file name without directory and extension, e.g. "pump_rod"
-  YAML::Node root;   ///< the top-level map
+  std::shared_ptr<const DeckTree> tree;  ///< its root is the top-level map
 };
 
 /// Largest deck accepted (bytes); decks are hand-written and a few kilobytes.

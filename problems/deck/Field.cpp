@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
-#include <string_view>
 
 #include "problems/deck/Expression.hpp"
 #include "problems/deck/PlainText.hpp"
@@ -31,28 +30,31 @@ std::string formatNumber(double v) {
   return buf;
 }
 
-Field::Field(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
-             DeckPlace fallback)
-    : node_(std::move(node)),
-      path_(std::move(path)),
-      file_(std::move(file)),
-      fallback_(std::move(fallback)) {}
+namespace {
 
-Field Field::root(const YAML::Node& node, const std::string& file) {
-  return Field(node, "", std::make_shared<const std::string>(file), placeOf(node.Mark()));
+DeckPlace placeOfNode(const DeckNode& node) {
+  return {node.line, node.column, ""};
 }
 
-Field Field::child(const YAML::Node& node, const std::string& path, const YAML::Node& key) const {
+}  // namespace
+
+Field::Field(const DeckNode* node, std::string path, const std::string* file, DeckPlace fallback)
+    : node_(node), path_(std::move(path)), file_(file), fallback_(std::move(fallback)) {}
+
+Field Field::root(const DeckTree& tree) {
+  return Field(&tree.root(), "", &tree.file(), placeOfNode(tree.root()));
+}
+
+Field Field::child(const DeckNode& node, const std::string& path, const DeckNode& key) const {
   // A null value's mark points past it (often to the next line), and an alias's mark to its
   // anchor: the key is the better place for both.
-  DeckPlace fallback = key.IsDefined() ? placeOf(key.Mark()) : place();
-  return Field(node, path, file_, fallback);
+  return Field(&node, path, file_, placeOfNode(key));
 }
 
 DeckPlace Field::place() const {
   DeckPlace p = fallback_;
   if (!isNull()) {
-    const DeckPlace own = placeOf(node_.Mark());
+    const DeckPlace own = placeOfNode(*node_);
     if (own.line > 0 && (p.line == 0 || own.line >= p.line)) p = own;
   }
   p.field = path_;
@@ -67,58 +69,50 @@ std::string Field::describe() const {
   if (isNull()) return "nothing";
   if (isMap()) return "a map";
   if (isList()) return "a list";
-  return "the value " + quoted(node_.Scalar());
+  return "the value " + quoted(node_->text);
 }
 
 std::vector<std::pair<std::string, Field>> Field::entries() const {
   if (!isMap()) fail("expected a map (key: value lines), got " + describe());
   std::vector<std::pair<std::string, Field>> out;
   std::set<std::string> seen;
-  for (const auto& entry : node_) {
-    const YAML::Node key = entry.first;
-    const std::string keyPath = path_.empty() ? "" : path_ + ".";
-    if (!key.IsScalar()) {
-      Field(key, path_, file_, placeOf(key.Mark())).fail("a key must be a plain word");
-    }
-    const std::string name = key.Scalar();
-    Field value = child(entry.second, keyPath + name, key);
+  const std::string keyPath = path_.empty() ? "" : path_ + ".";
+  for (const auto& [key, value] : node_->entries) {
+    if (key->kind != DeckNode::Kind::scalar)
+      Field(key, path_, file_, placeOfNode(*key)).fail("a key must be a plain word");
+    const std::string& name = key->text;
+    Field field = child(*value, keyPath + name, *key);
     if (!seen.insert(name).second)
-      value.fail("duplicate key '" + name + "' (it appears earlier in the same map)");
-    out.emplace_back(name, std::move(value));
+      field.fail("duplicate key '" + name + "' (it appears earlier in the same map)");
+    out.emplace_back(name, std::move(field));
   }
   return out;
 }
 
+void Field::requireMapKeys() const {
+  // The tree marked each map whose keys pass entries()'s checks; entries() fails on the others.
+  if (!isMap() || !node_->plainUniqueKeys) entries();
+}
+
 void Field::allowOnly(const std::vector<std::string>& allowed, const std::string& what) const {
-  for (const auto& [key, value] : entries()) {
+  requireMapKeys();
+  for (const auto& [key, value] : node_->entries) {
     bool known = false;
-    for (const std::string& a : allowed) known = known || a == key;
+    for (const std::string& a : allowed) known = known || a == key->text;
     if (known) continue;
-    DeckPlace at = value.fallback_;  // the key itself
-    at.field = value.path_;
+    DeckPlace at = placeOfNode(*key);
+    at.field = path_.empty() ? key->text : path_ + "." + key->text;
     throw DeckError(*file_, at,
-                    "unknown key in " + what + didYouMean(key, allowed) +
+                    "unknown key in " + what + didYouMean(key->text, allowed) +
                         " (allowed: " + joinNames(allowed) + ")");
   }
 }
 
 std::optional<Field> Field::get(const std::string& key) const {
-  // entries() without building a Field for every entry (a design study reads its deck at
-  // every point): the keys are checked as entries() checks them, and on the first problem
-  // entries() itself fails with its message.
-  if (!isMap()) entries();
-  std::vector<std::string_view> seen;  // the keys' text lives in the tree
-  std::optional<Field> found;
-  for (const auto& entry : node_) {
-    const YAML::Node name = entry.first;
-    if (!name.IsScalar() ||
-        std::find(seen.begin(), seen.end(), std::string_view(name.Scalar())) != seen.end())
-      entries();
-    seen.emplace_back(name.Scalar());
-    if (!found && name.Scalar() == key)
-      found = child(entry.second, path_.empty() ? key : path_ + "." + key, name);
-  }
-  return found;
+  requireMapKeys();
+  for (const auto& [name, value] : node_->entries)
+    if (name->text == key) return child(*value, path_.empty() ? key : path_ + "." + key, *name);
+  return std::nullopt;
 }
 
 Field Field::require(const std::string& key) const {
@@ -135,9 +129,11 @@ Field Field::require(const std::string& key) const {
 std::vector<Field> Field::items() const {
   if (!isList()) fail("expected a list ('- item' lines or [a, b]), got " + describe());
   std::vector<Field> out;
+  out.reserve(node_->items.size());
+  const DeckPlace here = place();
   int index = 0;
-  for (const YAML::Node& item : node_) {
-    out.push_back(Field(item, path_ + "[" + std::to_string(index) + "]", file_, place()));
+  for (const DeckNode* item : node_->items) {
+    out.push_back(Field(item, path_ + "[" + std::to_string(index) + "]", file_, here));
     ++index;
   }
   return out;
@@ -150,7 +146,7 @@ std::vector<Field> Field::itemsOrSingle() const {
 
 std::string Field::text() const {
   if (!isScalar()) fail("expected a single value, got " + describe());
-  return node_.Scalar();
+  return node_->text;
 }
 
 std::string Field::label(std::size_t longest) const {
@@ -178,7 +174,7 @@ std::string Field::name() const {
 Amount Field::amount(const ExpressionEvaluator& evaluator) const {
   if (!isScalar()) fail("expected a number or an expression, got " + describe());
   try {
-    return evaluator.amount(node_.Scalar());
+    return evaluator.amount(node_->text);
   } catch (const ExpressionError& e) {
     fail(e.what());
   }

@@ -1,17 +1,15 @@
-// Typed, located reads from a deck's YAML tree. A Field is one node plus its dotted path
-// ("segments[1].length") and file, so every failed read becomes a DeckError that names the
-// file, line, column and field.
+// Typed, located reads from a deck's tree (DeckTree.hpp). A Field is one node plus its dotted
+// path ("segments[1].length") and file, so every failed read becomes a DeckError that names the
+// file, line, column and field. A Field points into its tree, which must outlive it.
 #pragma once
 
-#include <yaml-cpp/yaml.h>
-
-#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "problems/deck/DeckError.hpp"
+#include "problems/deck/DeckTree.hpp"
 #include "problems/deck/FieldUnits.hpp"
 
 namespace beamrotor {
@@ -21,8 +19,8 @@ struct Amount;
 
 class Field {
  public:
-  /// The top-level map of a deck read from `file`.
-  static Field root(const YAML::Node& node, const std::string& file);
+  /// The top-level node of a deck's tree.
+  static Field root(const DeckTree& tree);
 
   /// Dotted path of this field, e.g. "supports[0].prescribe.uy"; empty at the top.
   const std::string& path() const { return path_; }
@@ -32,10 +30,10 @@ class Field {
   /// Throws DeckError at this field.
   [[noreturn]] void fail(const std::string& message) const;
 
-  bool isMap() const { return node_.IsMap(); }
-  bool isList() const { return node_.IsSequence(); }
-  bool isScalar() const { return node_.IsScalar(); }
-  bool isNull() const { return !node_.IsDefined() || node_.IsNull(); }
+  bool isMap() const { return node_->kind == DeckNode::Kind::map; }
+  bool isList() const { return node_->kind == DeckNode::Kind::list; }
+  bool isScalar() const { return node_->kind == DeckNode::Kind::scalar; }
+  bool isNull() const { return node_->kind == DeckNode::Kind::null; }
   /// "a map", "a list", "the value 'x'" or "nothing", for messages.
   std::string describe() const;
 
@@ -91,13 +89,15 @@ class Field {
   std::string choice(const std::vector<std::string>& choices) const;
 
  private:
-  Field(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
-        DeckPlace fallback);
-  Field child(const YAML::Node& node, const std::string& path, const YAML::Node& key) const;
+  Field(const DeckNode* node, std::string path, const std::string* file, DeckPlace fallback);
+  Field child(const DeckNode& node, const std::string& path, const DeckNode& key) const;
+  /// Fails as entries() does when this is not a map, a key is not a plain word or a key
+  /// appears twice; builds no Field unless it fails.
+  void requireMapKeys() const;
 
-  YAML::Node node_;
+  const DeckNode* node_;
   std::string path_;
-  std::shared_ptr<const std::string> file_;
+  const std::string* file_;  ///< the tree's
   DeckPlace fallback_;  // the key's place: used when the value has no useful mark of its own
 };
 

@@ -35,7 +35,7 @@ struct StudyContext {
   Deck deck;
   reader::Context c;
   StudyContext(const DeckSource& source, const Deck& base)
-      : deck(base), c{Field::root(source.root, source.path), deck, {}, {}, {}} {
+      : deck(base), c{Field::root(*source.tree), deck, {}, {}, {}} {
     auto define = [&](const std::string& name, double value) {
       Amount a{value, {}, false};
       for (const auto& [named, d] : deck.dimensions)
@@ -179,8 +179,8 @@ StudyOutput parseOutputOption(const std::string& argument, const StudyContext& s
                             siUnitOf(unit.dimension) + ")");
       o.limit = bare ? a.si : a.si / unit.bareSize;  // in the quantity's own unit
     }
-    const YAML::Node node(o.text);
-    resolveOutput(s, o, Field::root(node, s.deck.path));
+    const auto typed = DeckTree::ofScalar(o.text, s.deck.path);
+    resolveOutput(s, o, Field::root(*typed));
   } catch (const DeckError& e) {
     throw DeckError(s.deck.path, place, e.message());
   } catch (const ExpressionError& e) {
@@ -308,7 +308,7 @@ DesignStudySpec readDesignStudy(const DeckSource& source, const Deck& deck,
                                 const StudyCommandLine& commandLine) {
   const StudyContext s(source, deck);
   DesignStudySpec spec;
-  const Field root = Field::root(source.root, source.path);
+  const Field root = Field::root(*source.tree);
   std::optional<Field> block = root.get("study");
   if (block && block->isNull()) block.reset();
   if (block) readStudyBlock(s, *block, spec);

@@ -48,7 +48,7 @@ void requireNames(const Field& qf, const Quantity& q, const Deck& deck, const De
 }  // namespace
 
 std::optional<DeckSweepRefinement> readSweepRefinement(const DeckSource& source, const Deck& deck) {
-  const Field root = Field::root(source.root, source.path);
+  const Field root = Field::root(*source.tree);
   const auto sweep = root.get("sweep");
   if (!sweep || sweep->isNull() || !sweep->isMap()) return std::nullopt;
   const auto f = sweep->get("refine");
