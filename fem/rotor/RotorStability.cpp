@@ -14,6 +14,16 @@ double neutralLogDecrement(double logDecrement) {
   return std::abs(logDecrement) < kNeutral ? 0 : logDecrement;
 }
 
+std::optional<LeastDamped> leastDamped(const CampbellResult& campbell, std::size_t firstSpeed) {
+  std::optional<LeastDamped> least;
+  for (std::size_t l = 0; l < campbell.lines.size(); ++l)
+    for (std::size_t s = firstSpeed; s < campbell.lines[l].size(); ++s) {
+      const double delta = neutralLogDecrement(campbell.lines[l][s].logDecrement);
+      if (!std::isnan(delta) && (!least || delta < least->logDecrement)) least = {l, s, delta};
+    }
+  return least;
+}
+
 double leastStableDecayRate(const std::vector<RotorMode>& modes) {
   double worst = -std::numeric_limits<double>::infinity();
   for (const RotorMode& m : modes) worst = std::max(worst, m.eigenvalue.real());
@@ -90,22 +100,19 @@ OperatingStability operatingStability(const Model& model, const RotorOptions& op
   OperatingStability out;
   out.required = required;
   out.smallest = std::numeric_limits<double>::infinity();
-  // An undamped rotor does not fail on the sign of its round-off.
-  const auto decrement = [](const RotorMode& mode) {
-    return neutralLogDecrement(mode.logDecrement);
-  };
-  bool growing = false;  // some mode grows at some speed checked
-  for (const auto& line : campbell.lines)
-    for (const RotorMode& mode : line) growing = growing || decrement(mode) < 0;
-  for (const auto& line : campbell.lines)
-    for (std::size_t s = firstInRange; s < speeds.size(); ++s)
-      if (const double delta = decrement(line[s]); delta < out.smallest) {
-        out.smallest = delta;
-        out.speed = speeds[s];
-        out.frequencyHz = line[s].dampedFrequencyHz;
-        out.whirl = line[s].whirl;
-      }
-  if (growing) out.onset = instabilityOnset(model, campbell, options);
+  // An undamped rotor does not fail on the sign of its round-off (leastDamped reads the
+  // decrements as neutralLogDecrement does).
+  if (const auto least = leastDamped(campbell, firstInRange)) {
+    const RotorMode& mode = campbell.lines[least->line][least->speed];
+    out.smallest = least->logDecrement;
+    out.speed = speeds[least->speed];
+    out.frequencyHz = mode.dampedFrequencyHz;
+    out.whirl = mode.whirl;
+  }
+  // Some mode grows at some speed checked, in the range or below it.
+  const auto leastOverall = leastDamped(campbell);
+  if (leastOverall && leastOverall->logDecrement < 0)
+    out.onset = instabilityOnset(model, campbell, options);
   const bool onsetInRange = out.onset && out.onset->speed >= range.minimum &&
                             out.onset->speed <= range.maximum;
   out.pass = out.smallest >= required && !onsetInRange;

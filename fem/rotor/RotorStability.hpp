@@ -28,6 +28,19 @@ struct InstabilityOnset {
 /// in size it is taken as 0, neither growing nor decaying; other values as they are.
 double neutralLogDecrement(double logDecrement);
 
+/// The least damped mode of a Campbell diagram over its speeds from `firstSpeed` on.
+struct LeastDamped {
+  std::size_t line = 0, speed = 0;  ///< indices into the diagram's lines and speeds
+  /// neutralLogDecrement of its log decrement: -inf for a mode that grows without oscillating
+  /// (a real eigenvalue > 0), the least damped of all.
+  double logDecrement = 0;
+};
+
+/// The least damped mode (what decides stability: the console summary, results.json and the
+/// API 684 verdict all read it from here); none without modes at those speeds. Modes whose
+/// log decrement is not a number are passed over.
+std::optional<LeastDamped> leastDamped(const CampbellResult& campbell, std::size_t firstSpeed = 0);
+
 /// max Re(lambda) (1/s) over a set of modes: > 0 when one of them grows.
 double leastStableDecayRate(const std::vector<RotorMode>& modes);
 

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <utility>
 
+#include "fem/rotor/RotorStability.hpp"
 #include "problems/cli/Summary.hpp"
 
 namespace beamrotor::cli {
@@ -40,15 +41,9 @@ void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutco
         << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz) << " Hz, "
         << whirlName(k.whirl) << ")\n";
   // The least damped line: its smallest log decrement over the sweep.
-  std::size_t worstLine = 0, worstSpeed = 0;
-  for (std::size_t l = 0; l < c.lines.size(); ++l)
-    for (std::size_t s = 0; s < c.speeds.size(); ++s)
-      if (c.lines[l][s].logDecrement < c.lines[worstLine][worstSpeed].logDecrement)
-        worstLine = l, worstSpeed = s;
-  if (!c.lines.empty() && !c.speeds.empty())
-    out << "    smallest log decrement " << formatValue(c.lines[worstLine][worstSpeed].logDecrement)
-        << " (line " << worstLine + 1 << " at " << formatValue(c.speeds[worstSpeed] * kRpm)
-        << " rpm)\n";
+  if (const auto least = leastDamped(c))
+    out << "    smallest log decrement " << formatValue(least->logDecrement) << " (line "
+        << least->line + 1 << " at " << formatValue(c.speeds[least->speed] * kRpm) << " rpm)\n";
   if (r.onset)
     out << "    UNSTABLE above " << formatValue(r.onset->rpm) << " rpm (onset of instability: "
         << formatValue(r.onset->frequencyHz) << " Hz " << whirlName(r.onset->whirl) << " whirl)\n";

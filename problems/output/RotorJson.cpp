@@ -89,14 +89,13 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
     further.push_back({{"order", order}, {"crossings", crossings}});
   }
   // The least damped line's smallest log decrement over the sweep (what decides stability),
-  // an undamped mode's round-off written 0 as the API 684 stability verdict reads it.
+  // an undamped mode's round-off written 0 as the API 684 stability verdict reads it; null
+  // for a mode that grows without oscillating (-inf).
   Json smallest = nullptr;
-  for (std::size_t l = 0; l < c.lines.size(); ++l)
-    for (std::size_t s = 0; s < c.speeds.size(); ++s) {
-      const double delta = neutralLogDecrement(c.lines[l][s].logDecrement);
-      if (std::isfinite(delta) && (smallest.is_null() || delta < smallest.at("value")))
-        smallest = {{"value", delta}, {"rpm", rpmOf(c.speeds[s])}, {"line", l + 1}};
-    }
+  if (const auto least = leastDamped(c))
+    smallest = {{"value", finiteOrNull(least->logDecrement)},
+                {"rpm", rpmOf(c.speeds[least->speed])},
+                {"line", least->line + 1}};
   Json onset = nullptr;
   if (r.onset)
     onset = {{"rpm", r.onset->rpm},

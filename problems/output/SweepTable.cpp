@@ -160,7 +160,8 @@ void addCampbell(const Json& a, const std::vector<Json>& runDocs,
                    {name + "." + entry, unit},
                    [name, label, entry, field](const Json& doc) {
                      const Json& f = analysisNamed(doc, name).at(entry);
-                     if (f.is_null()) throw std::runtime_error("this sweep value has no " + label);
+                     if (f.is_null() || f.at(field).is_null())
+                       throw std::runtime_error("this sweep value has no " + label);
                      return f.at(field).get<double>();
                    },
                    true});

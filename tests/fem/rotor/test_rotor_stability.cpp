@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <numbers>
 
 #include "elements/Bearing.hpp"
@@ -97,6 +98,54 @@ TEST_SUITE("rotor stability") {
       }
     CHECK(stableBefore);
     CHECK(unstableAfter);
+  }
+
+  TEST_CASE("the least damped mode: the forward whirl at the top speed, against the closed form") {
+    // The forward whirl's log decrement falls with the speed (Q = q Omega grows), so over the
+    // grid it is least at the top speed, and from speed index 3 on as well; below that, the
+    // diagram cut at index 2 is least damped at index 2.
+    const CrossCoupledJeffcott j;
+    Model model;
+    j.build(model);
+    const CampbellResult campbell = solveCampbell(model, grid(j.top, 7), rotorOptions(2));
+    const auto all = leastDamped(campbell);
+    REQUIRE(all.has_value());
+    CHECK(all->speed == 7);
+    CHECK(campbell.lines[all->line][all->speed].whirl == Whirl::forward);
+    // The dense eigensolver's eigenvalues are good to ~1e-13 |lambda|; the decrement, a ratio
+    // of their parts, to ~1e-12 relative here (|Re lambda| ~ |Im lambda| / 100).
+    CHECK(all->logDecrement == doctest::Approx(j.logDecrement(j.top)).epsilon(1e-9));
+    CHECK(all->logDecrement < 0);  // past the onset
+    const auto fromThird = leastDamped(campbell, 3);
+    REQUIRE(fromThird.has_value());
+    CHECK(fromThird->speed == 7);
+    CampbellResult low = campbell;
+    for (auto& line : low.lines) line.resize(3);
+    const auto lowest = leastDamped(low);
+    REQUIRE(lowest.has_value());
+    CHECK(lowest->speed == 2);
+    CHECK(lowest->logDecrement == doctest::Approx(j.logDecrement(2 * j.top / 7)).epsilon(1e-9));
+
+    // Read as the verdict reads: round-off below 1e-9 is 0, a mode that grows without
+    // oscillating (-inf) is the least damped of all, and a NaN is passed over.
+    CampbellResult table;
+    table.speeds = {0, 1};
+    table.lines.assign(2, std::vector<RotorMode>(2));
+    table.lines[0][0].logDecrement = 0.05;
+    table.lines[0][1].logDecrement = -4e-13;  // an undamped mode's round-off
+    table.lines[1][0].logDecrement = std::nan("");
+    table.lines[1][1].logDecrement = 0.01;
+    auto least = leastDamped(table);
+    REQUIRE(least.has_value());
+    CHECK(least->line == 0);
+    CHECK(least->speed == 1);
+    CHECK(least->logDecrement == 0);
+    table.lines[1][1].logDecrement = -std::numeric_limits<double>::infinity();
+    least = leastDamped(table);
+    REQUIRE(least.has_value());
+    CHECK(least->line == 1);
+    CHECK(least->logDecrement == -std::numeric_limits<double>::infinity());
+    CHECK_FALSE(leastDamped(table, 2).has_value());  // no speeds left
   }
 
   TEST_CASE("no onset when the cross-coupling stays below the damping's reach") {
