@@ -1,20 +1,78 @@
 #include "fem/solvers/SturmShift.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fem/solvers/Tolerances.hpp"
 
 namespace beamrotor {
 
-SturmCounter::SturmCounter(const SparseMatrix& K, const SparseMatrix& M) : K_(K), M_(M) {}
+namespace {
+
+/// The union of the patterns of A and B (compressed, rows sorted in each column, same size),
+/// values zero.
+SparseMatrix unionPattern(const SparseMatrix& A, const SparseMatrix& B) {
+  const int n = int(A.cols());
+  const int *ap = A.outerIndexPtr(), *ai = A.innerIndexPtr();
+  const int *bp = B.outerIndexPtr(), *bi = B.innerIndexPtr();
+  // Walks the merged rows of column `col`, calling visit(row) once per distinct row.
+  auto mergeColumn = [&](int col, auto&& visit) {
+    int a = ap[col], b = bp[col];
+    while (a < ap[col + 1] || b < bp[col + 1]) {
+      const int row = b == bp[col + 1] || (a < ap[col + 1] && ai[a] < bi[b]) ? ai[a] : bi[b];
+      if (a < ap[col + 1] && ai[a] == row) ++a;
+      if (b < bp[col + 1] && bi[b] == row) ++b;
+      visit(row);
+    }
+  };
+  long long nnz = 0;
+  for (int col = 0; col < n; ++col) mergeColumn(col, [&](int) { ++nnz; });
+  SparseMatrix U(A.rows(), n);
+  U.resizeNonZeros(Eigen::Index(nnz));
+  int* start = U.outerIndexPtr();
+  int* rows = U.innerIndexPtr();
+  int next = 0;
+  for (int col = 0; col < n; ++col) {
+    start[col] = next;
+    mergeColumn(col, [&](int row) { rows[next++] = row; });
+  }
+  start[n] = next;
+  std::fill_n(U.valuePtr(), nnz, 0.0);
+  return U;
+}
+
+/// Writes K - sigma M into `shifted`, whose pattern is the union of K's and M's: the same
+/// operations, in the same order, as Eigen's K - sigma * M.
+void fillShifted(const SparseMatrix& K, const SparseMatrix& M, double sigma,
+                 SparseMatrix& shifted) {
+  const int *kp = K.outerIndexPtr(), *ki = K.innerIndexPtr();
+  const int *mp = M.outerIndexPtr(), *mi = M.innerIndexPtr();
+  const int *sp = shifted.outerIndexPtr(), *si = shifted.innerIndexPtr();
+  const double *kx = K.valuePtr(), *mx = M.valuePtr();
+  double* out = shifted.valuePtr();
+  for (int col = 0; col < int(shifted.cols()); ++col) {
+    int k = kp[col], m = mp[col];
+    for (int e = sp[col]; e < sp[col + 1]; ++e) {
+      double value = 0;
+      if (k < kp[col + 1] && ki[k] == si[e]) value = kx[k++];
+      if (m < mp[col + 1] && mi[m] == si[e]) value -= sigma * mx[m++];
+      out[e] = value;
+    }
+  }
+}
+
+}  // namespace
+
+SturmCounter::SturmCounter(const SparseMatrix& K, const SparseMatrix& M)
+    : K_(K), M_(M), shifted_(unionPattern(K, M)) {}
 
 int SturmCounter::below(double sigma) {
-  const SparseMatrix A = K_ - sigma * M_;  // the union pattern of K and M, every time
+  fillShifted(K_, M_, sigma, shifted_);
   if (!analysed_) {
-    ldlt_.analyzePattern(A);
+    ldlt_.analyzePattern(shifted_);
     analysed_ = true;
   }
-  ldlt_.factorize(A);
+  ldlt_.factorize(shifted_);
   ++factorisations_;
   if (ldlt_.info() != Eigen::Success) return -1;
   return ldlt_.negativePivots();
