@@ -87,6 +87,8 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
   }
   colStart[nf] = next;
   std::fill_n(pattern_.valuePtr(), nnz, 0.0);
+  stiffnessSymmetric_ = std::all_of(model.elements().begin(), model.elements().end(),
+                                    [](const auto& e) { return e->symmetricStiffness(); });
 }
 
 ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {

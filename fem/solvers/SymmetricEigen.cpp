@@ -95,7 +95,8 @@ EigenPairs denseEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
 /// (K - shift M)^-1 applied to vectors, from whichever factorisation suits the shift.
 struct ShiftedInverse {
   double shift = 0;
-  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> solve;
+  /// x = (K - shift M)^-1 b; x keeps its storage from call to call.
+  std::function<void(const Eigen::VectorXd& b, Eigen::VectorXd& x)> solve;
   double factorEntries = 0;
   /// The solve uses the Sturm counter's factor, which every later count overwrites.
   bool fromCounter = false;
@@ -128,7 +129,7 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
     // Positive definite below the spectrum: judged scaled, whatever the units of the dofs.
     if (ldlt.info() == Eigen::Success && ldlt.scaledRcond() > kSingularRcond) {
       op.factorEntries = ldlt.factorEntries();
-      op.solve = [&ldlt](const Eigen::VectorXd& b) { return Eigen::VectorXd(ldlt.solve(b)); };
+      op.solve = [&ldlt](const Eigen::VectorXd& b, Eigen::VectorXd& x) { ldlt.solveInto(b, x); };
       op.fromCounter = true;
       return op;
     }
@@ -141,7 +142,7 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
   lu->compute(*shifted);
   if (!lu->healthy(kSingularRcond)) throw SingularSystem(singularShiftMessage(sigma, lu->rcond()));
   op.factorEntries = lu->factorEntries();
-  op.solve = [lu, shifted](const Eigen::VectorXd& b) { return Eigen::VectorXd(lu->solve(b)); };
+  op.solve = [lu, shifted](const Eigen::VectorXd& b, Eigen::VectorXd& x) { x = lu->solve(b); };
   return op;
 }
 
@@ -171,7 +172,7 @@ EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
   iparam[6] = 3;             // mode 3: shift-invert
   a_int ido = 0, info = 0;
   const double tol = 0.0;  // machine precision
-  Eigen::VectorXd y(n);
+  Eigen::VectorXd y(n), solution(n);
   while (true) {
     arpack::saupd(ido, arpack::bmat::generalized, n, arpack::which::largest_magnitude, nev, tol,
                   resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(), workd.data(),
@@ -179,10 +180,12 @@ EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
     Eigen::Map<Eigen::VectorXd> x(&workd[ipntr[0] - 1], n), out(&workd[ipntr[1] - 1], n);
     if (ido == -1) {
       y = M * x;
-      out = op.solve(y);
+      op.solve(y, solution);
+      out = solution;
     } else if (ido == 1) {
-      Eigen::Map<Eigen::VectorXd> Bx(&workd[ipntr[2] - 1], n);
-      out = op.solve(Bx);
+      y = Eigen::Map<Eigen::VectorXd>(&workd[ipntr[2] - 1], n);  // M x, from ARPACK
+      op.solve(y, solution);
+      out = solution;
     } else if (ido == 2) {
       out = M * x;
     } else {

@@ -65,7 +65,9 @@ double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eige
 
 LinearStatics::LinearStatics(const Model& model) : model_(model), loaded_(&model), dofs_(model) {
   // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
-  SparseAssembler(model, dofs_).assemble(MatrixKind::stiffness).swap(K_);
+  SparseAssembler assembler(model, dofs_);
+  if (assembler.stiffnessSymmetric()) symmetry_ = MatrixSymmetry::byConstruction;
+  std::move(assembler).assemble(MatrixKind::stiffness).swap(K_);
   setLoads(model);
 }
 
@@ -96,7 +98,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
   const bool reuse = held.empty() && factoredUnheld_;
   if (!analysed_) {
-    solver_.analyzePattern(A);
+    solver_.analyzePattern(A, symmetry_);  // held dofs clear rows and columns alike
     analysed_ = true;
   }
   if (!reuse) solver_.factorize(A);
