@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fem/assembly/CompressedPattern.hpp"
 #include "fem/solvers/Tolerances.hpp"
 
 namespace beamrotor {
@@ -25,20 +26,7 @@ SparseMatrix unionPattern(const SparseMatrix& A, const SparseMatrix& B) {
       visit(row);
     }
   };
-  long long nnz = 0;
-  for (int col = 0; col < n; ++col) mergeColumn(col, [&](int) { ++nnz; });
-  SparseMatrix U(A.rows(), n);
-  U.resizeNonZeros(Eigen::Index(nnz));
-  int* start = U.outerIndexPtr();
-  int* rows = U.innerIndexPtr();
-  int next = 0;
-  for (int col = 0; col < n; ++col) {
-    start[col] = next;
-    mergeColumn(col, [&](int row) { rows[next++] = row; });
-  }
-  start[n] = next;
-  std::fill_n(U.valuePtr(), nnz, 0.0);
-  return U;
+  return compressedPattern(int(A.rows()), n, mergeColumn);
 }
 
 /// Writes K - sigma M into `shifted`, whose pattern is the union of K's and M's: the same

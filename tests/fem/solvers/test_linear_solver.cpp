@@ -17,6 +17,13 @@ SparseMatrix fromDense(const Eigen::MatrixXd& D) {
   return D.sparseView();
 }
 
+/// The stiffness of the planar bench beam with `elements` elements (all beams).
+SparseMatrix planarBenchStiffness(int elements) {
+  const PlanarBenchModel bench = planarBenchModel(elements);
+  const DofMap dofs(*bench.model);
+  return SparseAssembler(*bench.model, dofs).assemble(MatrixKind::stiffness);
+}
+
 }  // namespace
 
 TEST_SUITE("linear solver") {
@@ -92,9 +99,7 @@ TEST_SUITE("linear solver") {
   }
 
   TEST_CASE("solveInto keeps its workspace between calls and solves as solve does") {
-    const PlanarBenchModel bench = planarBenchModel(200);
-    const DofMap dofs(*bench.model);
-    const SparseMatrix K = SparseAssembler(*bench.model, dofs).assemble(MatrixKind::stiffness);
+    const SparseMatrix K = planarBenchStiffness(200);
     SparseLDLT ldlt;
     ldlt.analyzePattern(K);
     ldlt.factorize(K);
