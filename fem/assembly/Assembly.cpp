@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "fem/assembly/CompressedPattern.hpp"
 #include "fem/model/Model.hpp"
 
 namespace beamrotor {
@@ -74,19 +75,9 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
         if (dofs.isFree(row)) visit(row);
       }
   };
-  long long nnz = 0;
-  for (int col = 0; col < nf; ++col) forEachRow(col, [&](int) { ++nnz; });
-  pattern_.resize(nf, nf);
-  pattern_.resizeNonZeros(Eigen::Index(nnz));
-  int* colStart = pattern_.outerIndexPtr();
-  int* rows = pattern_.innerIndexPtr();
-  int next = 0;
-  for (int col = 0; col < nf; ++col) {
-    colStart[col] = next;
-    forEachRow(col, [&](int row) { rows[next++] = row; });
-  }
-  colStart[nf] = next;
-  std::fill_n(pattern_.valuePtr(), nnz, 0.0);
+  compressedPattern(nf, nf, forEachRow).swap(pattern_);  // no copy: Eigen has no move assignment
+  stiffnessSymmetric_ = std::all_of(model.elements().begin(), model.elements().end(),
+                                    [](const auto& e) { return e->symmetricStiffness(); });
 }
 
 ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {

@@ -29,6 +29,9 @@ class SparseAssembler {
   SparseMatrix assembleGeometric(const Eigen::VectorXd& u) const;
   /// Number of stored entries of the pattern.
   long long patternSize() const { return pattern_.nonZeros(); }
+  /// True when every element says its stiffness is symmetric (Element::symmetricStiffness):
+  /// the assembled K is then symmetric by construction, up to its entries' round-off.
+  bool stiffnessSymmetric() const { return stiffnessSymmetric_; }
 
  private:
   /// Adds every element's matrix of one kind into A, which has the pattern's structure.
@@ -40,6 +43,7 @@ class SparseAssembler {
   const Model& model_;
   const DofMap& dofs_;
   SparseMatrix pattern_;  // compressed free-free block with every value zero
+  bool stiffnessSymmetric_ = true;
 };
 
 /// The element matrix of one kind (empty when the element has none).

@@ -28,6 +28,9 @@ class Element {
   virtual std::span<const NodeDof> dofs() const = 0;
   /// Stiffness (N/m, N m/rad, ...).
   virtual ElementMatrix stiffness() const = 0;
+  /// True when stiffness() is symmetric whatever the element's data (beams, springs, point
+  /// masses): a matrix assembled from such elements alone is symmetric by construction.
+  virtual bool symmetricStiffness() const { return true; }
   /// Mass (kg, kg m^2); an empty (0 x 0) matrix when the element has none.
   virtual ElementMatrix mass() const { return {}; }
   /// Viscous damping (N s/m ...); empty when none.

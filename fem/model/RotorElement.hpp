@@ -17,6 +17,8 @@ class SpeedDependentElement : public Element {
   /// At rest (Omega = 0): what statics and the non-rotating modal analysis use.
   ElementMatrix stiffness() const override { return stiffnessAt(0); }
   ElementMatrix damping() const override { return dampingAt(0); }
+  /// Cross-coupled coefficients (k_yz != k_zy) are allowed even at rest.
+  bool symmetricStiffness() const override { return false; }
 };
 
 }  // namespace beamrotor

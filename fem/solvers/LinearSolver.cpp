@@ -12,6 +12,29 @@ double SparseLDLT::rcond() const {
   return cholmod_rcond(m_cholmodFactor, &const_cast<SparseLDLT*>(this)->cholmod());
 }
 
+SparseLDLT::~SparseLDLT() {
+  cholmod_free_dense(&solution_, &cholmod());
+  cholmod_free_dense(&workY_, &cholmod());
+  cholmod_free_dense(&workE_, &cholmod());
+}
+
+void SparseLDLT::solveInto(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  cholmod_common& c = const_cast<SparseLDLT*>(this)->cholmod();
+  cholmod_dense rhs{};
+  rhs.nrow = rhs.d = std::size_t(b.size());
+  rhs.ncol = 1;
+  rhs.nzmax = rhs.nrow;
+  rhs.x = const_cast<double*>(b.data());  // read only
+  rhs.xtype = CHOLMOD_REAL;
+  rhs.dtype = CHOLMOD_DOUBLE;
+  if (!cholmod_solve2(CHOLMOD_A, m_cholmodFactor, &rhs, nullptr, &solution_, nullptr, &workY_,
+                      &workE_, &c)) {
+    x.setConstant(b.size(), std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solution_->x), b.size());
+}
+
 void SparseLDLT::factorize(const SparseMatrix& A) {
   diagonal_ = A.diagonal();
   Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper>::factorize(A);
@@ -123,8 +146,8 @@ bool isNumericallySymmetric(const SparseMatrix& A, double relTol) {
   return true;
 }
 
-void LinearSolver::analyzePattern(const SparseMatrix& A) {
-  symmetric_ = isNumericallySymmetric(A);
+void LinearSolver::analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry) {
+  symmetric_ = symmetry == MatrixSymmetry::byConstruction || isNumericallySymmetric(A);
   if (symmetric_)
     ldlt_.analyzePattern(A);
   else

@@ -18,6 +18,12 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
  public:
   /// Quiet: a zero pivot is reported through info() and rcond(), never printed.
   SparseLDLT() { cholmod().print = 0; }
+  ~SparseLDLT();
+  SparseLDLT(const SparseLDLT&) = delete;
+  SparseLDLT& operator=(const SparseLDLT&) = delete;
+  /// x = A^-1 b for the last factorisation, with CHOLMOD's solve workspace kept from one call
+  /// to the next: repeated solves (Lanczos) allocate nothing and touch no fresh pages.
+  void solveInto(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// CHOLMOD's cheap reciprocal condition estimate, min |D_ii| / max |D_ii| (0 when singular).
   /// It depends on the units of the dofs; see scaledRcond().
   double rcond() const;
@@ -43,6 +49,10 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
 
  private:
   Eigen::VectorXd diagonal_;  ///< of the matrix last factorised
+  /// solveInto's solution and workspace, allocated by its first call.
+  mutable cholmod_dense* solution_ = nullptr;
+  mutable cholmod_dense* workY_ = nullptr;
+  mutable cholmod_dense* workE_ = nullptr;
 };
 
 /// Entries in the lower envelope of a structurally symmetric A: for each row, from its first
@@ -53,11 +63,18 @@ long long lowerEnvelope(const SparseMatrix& A);
 /// within `relTol` of the largest entry in absolute value.
 bool isNumericallySymmetric(const SparseMatrix& A, double relTol = 1e-13);
 
+/// What the caller knows about a matrix's symmetry before its values are read.
+enum class MatrixSymmetry {
+  unknown,         ///< find out from the values (a scan of every entry)
+  byConstruction,  ///< assembled from symmetric parts only (SparseAssembler::stiffnessSymmetric)
+};
+
 class LinearSolver {
  public:
-  /// Chooses the method from A's values and computes the symbolic factorisation; later
-  /// factorize() calls must pass matrices with the same pattern (and the same symmetry).
-  void analyzePattern(const SparseMatrix& A);
+  /// Chooses the method (from A's values unless `symmetry` says it is symmetric by
+  /// construction) and computes the symbolic factorisation; later factorize() calls must pass
+  /// matrices with the same pattern (and the same symmetry).
+  void analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry = MatrixSymmetry::unknown);
   /// Numeric factorisation. Check healthy() before solving. A non-symmetric matrix is
   /// factorised symmetrically scaled, S A S with S = |diag(A)|^-1/2, and solved as
   /// x = S (S A S)^-1 S b.

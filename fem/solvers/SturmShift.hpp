@@ -18,12 +18,16 @@ class SturmCounter {
   int below(double sigma);
   /// Factorisations done so far.
   int factorisations() const { return factorisations_; }
-  /// The factor of K - sigma M for the last sigma counted (valid when below() was >= 0).
+  /// The factor of K - sigma M for the last sigma counted (valid when below() was >= 0). The
+  /// next below() overwrites it in place (same symbolic analysis, same storage).
   const SparseLDLT& factor() const { return ldlt_; }
 
  private:
   const SparseMatrix& K_;
   const SparseMatrix& M_;
+  /// K - sigma M on the union pattern of K and M: the pattern is built once, the values are
+  /// refilled in place for every sigma (no allocation per count).
+  SparseMatrix shifted_;
   SparseLDLT ldlt_;
   bool analysed_ = false;
   int factorisations_ = 0;

@@ -12,13 +12,15 @@ bool SymbolicReuse::samePattern(const SparseMatrix& A) const {
          std::equal(rows_.begin(), rows_.end(), A.innerIndexPtr());
 }
 
-LinearSolver& SymbolicReuse::analysedFor(const SparseMatrix& A) {
-  const bool symmetric = isNumericallySymmetric(A);
+LinearSolver& SymbolicReuse::analysedFor(const SparseMatrix& A, MatrixSymmetry symmetry) {
+  const bool symmetric =
+      symmetry == MatrixSymmetry::byConstruction || isNumericallySymmetric(A);
   if (reusable_ && symmetric && samePattern(A)) {
     ++reuses_;
     return solver_;
   }
-  solver_.analyzePattern(A);
+  // The scan above has been done: the solver need not repeat it.
+  solver_.analyzePattern(A, symmetric ? MatrixSymmetry::byConstruction : MatrixSymmetry::unknown);
   ++analyses_;
   reusable_ = symmetric && A.isCompressed();
   if (reusable_) {

@@ -21,7 +21,9 @@ class SymbolicReuse {
   /// symmetric matrix analysed here, else the kept one analysed anew for A. Either way the
   /// caller goes on with factorize(A). The reference stays valid for this object's lifetime;
   /// one caller at a time (the next call may analyse it again).
-  LinearSolver& analysedFor(const SparseMatrix& A);
+  /// `symmetry` as LinearSolver::analyzePattern takes it (byConstruction skips the scan).
+  LinearSolver& analysedFor(const SparseMatrix& A,
+                            MatrixSymmetry symmetry = MatrixSymmetry::unknown);
 
   /// Analyses done and analyses saved so far.
   long long analyses() const { return analyses_; }

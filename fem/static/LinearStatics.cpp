@@ -66,7 +66,9 @@ double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eige
 LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
     : model_(model), loaded_(&model), dofs_(model), reuse_(reuse) {
   // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
-  SparseAssembler(model, dofs_).assemble(MatrixKind::stiffness).swap(K_);
+  SparseAssembler assembler(model, dofs_);
+  if (assembler.stiffnessSymmetric()) symmetry_ = MatrixSymmetry::byConstruction;
+  std::move(assembler).assemble(MatrixKind::stiffness).swap(K_);
   setLoads(model);
 }
 
@@ -97,10 +99,11 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
   const bool sameFactor = held.empty() && factoredUnheld_;
   if (!analysed_) {
+    // Held dofs clear rows and columns alike: K's symmetry is the held matrix's.
     if (reuse_)
-      solver_ = &reuse_->analysedFor(A);
+      solver_ = &reuse_->analysedFor(A, symmetry_);
     else
-      solver_->analyzePattern(A);
+      solver_->analyzePattern(A, symmetry_);
     analysed_ = true;
   }
   if (!sameFactor) solver_->factorize(A);

@@ -64,6 +64,7 @@ class LinearStatics {
   const Model* loaded_;  ///< the model whose loads are on the right-hand side
   DofMap dofs_;
   SparseMatrix K_;
+  MatrixSymmetry symmetry_ = MatrixSymmetry::unknown;  ///< of K_, known from its elements
   Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
   SymbolicReuse* reuse_;
   LinearSolver ownSolver_;

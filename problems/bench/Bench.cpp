@@ -56,6 +56,8 @@ std::string benchJson(const BenchReport& r) {
   j["static"] = {{"assembly_s", r.median.assembly}, {"factor_s", r.median.factor},
                  {"solve_s", r.median.solve},       {"total_s", r.median.staticTotal}};
   j["modal"] = {{"total_s", r.median.modalTotal}, {"frequencies_hz", r.frequenciesHz}};
+  if (r.median.staticTotal > 0 && !r.frequenciesHz.empty())
+    j["modal"]["to_static"] = r.median.modalTotal / r.median.staticTotal;
   j["rel_error_static"] = r.relErrorStatic;
   for (const BenchFigure& f : r.figures) j[nlohmann::json::json_pointer(f.key)] = f.value;
   j["peak_rss_mb"] = r.peakRssMb;
@@ -77,7 +79,8 @@ std::string benchTable(const BenchReport& r) {
     << "\n";
   if (!r.frequenciesHz.empty())
     s << "  " << (r.options.kind == "rotor" ? "campbell   " : "modal      ") << r.median.modalTotal
-      << " s, " << r.frequenciesHz.size() << " modes, f1 = " << r.frequenciesHz[0] << " Hz\n";
+      << " s, " << r.frequenciesHz.size() << " modes, f1 = " << r.frequenciesHz[0] << " Hz ("
+      << r.median.modalTotal / r.median.staticTotal << " x static)\n";
   for (const BenchFigure& f : r.figures) s << "  " << f.label << ": " << f.value << "\n";
   s << "  peak RSS   " << r.peakRssMb << " MB\n";
   for (const std::string& w : r.warnings) s << "  warning: " << w << "\n";

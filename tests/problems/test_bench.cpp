@@ -31,6 +31,9 @@ void checkCommonJson(const BenchReport& r) {
     CHECK(j.at("static").at(key).get<double>() >= 0);
   CHECK(j.at("modal").at("total_s").get<double>() > 0);
   CHECK(j.at("modal").at("frequencies_hz").size() == r.frequenciesHz.size());
+  // The ratio the performance issue targets, from the same runs' medians.
+  CHECK(j.at("modal").at("to_static").get<double>() ==
+        doctest::Approx(r.median.modalTotal / r.median.staticTotal).epsilon(1e-12));
   CHECK(j.at("peak_rss_mb").get<double>() > 0);
   CHECK(j.at("dofs").get<int>() == r.dofs);
   CHECK(j.at("elements").get<int>() == r.elements);

@@ -2,10 +2,12 @@
 // otherwise. Each is checked against the other (a second method) and against exact algebra.
 #include <doctest/doctest.h>
 
+#include "elements/Bearing.hpp"
 #include "fem/assembly/Assembly.hpp"
 #include "fem/model/DofMap.hpp"
 #include "fem/solvers/LinearSolver.hpp"
 #include "problems/bench/StandardModels.hpp"
+#include "tests/Helpers.hpp"
 
 using namespace beamrotor;
 
@@ -13,6 +15,13 @@ namespace {
 
 SparseMatrix fromDense(const Eigen::MatrixXd& D) {
   return D.sparseView();
+}
+
+/// The stiffness of the planar bench beam with `elements` elements (all beams).
+SparseMatrix planarBenchStiffness(int elements) {
+  const PlanarBenchModel bench = planarBenchModel(elements);
+  const DofMap dofs(*bench.model);
+  return SparseAssembler(*bench.model, dofs).assemble(MatrixKind::stiffness);
 }
 
 }  // namespace
@@ -87,6 +96,64 @@ TEST_SUITE("linear solver") {
     CHECK(isNumericallySymmetric(fromDense(D)));
     D(1, 0) = 1.0 + 1e3;  // 1e-9 of the largest entry: a real asymmetry
     CHECK_FALSE(isNumericallySymmetric(fromDense(D)));
+  }
+
+  TEST_CASE("solveInto keeps its workspace between calls and solves as solve does") {
+    const SparseMatrix K = planarBenchStiffness(200);
+    SparseLDLT ldlt;
+    ldlt.analyzePattern(K);
+    ldlt.factorize(K);
+    REQUIRE(ldlt.info() == Eigen::Success);
+    SparseLU lu;  // a second method
+    lu.compute(K);
+    Eigen::VectorXd x;
+    for (const Eigen::VectorXd& b : {Eigen::VectorXd(Eigen::VectorXd::LinSpaced(K.rows(), -1, 2)),
+                                     Eigen::VectorXd(Eigen::VectorXd::Ones(K.rows()))}) {
+      ldlt.solveInto(b, x);  // the second call reuses the first one's storage
+      // The same CHOLMOD solve as solve(): bitwise the same numbers.
+      CHECK((x - Eigen::VectorXd(ldlt.solve(b))).cwiseAbs().maxCoeff() == 0.0);
+      // Against LU within cond(K) eps, as in the first test case; the residual at round-off.
+      const Eigen::VectorXd y = lu.solve(b);
+      CHECK((x - y).norm() / y.norm() < 1e-9);
+      CHECK((K * x - b).norm() / b.norm() < 1e-12);
+    }
+  }
+
+  TEST_CASE("symmetric by construction: beams say so, a cross-coupled bearing does not") {
+    // The planar bench beam: every element a beam, so the assembler vouches for K and the
+    // solver takes LDL' without reading the values; the answer is the one the value scan
+    // leads to (the same factorisation, bitwise).
+    const PlanarBenchModel bench = planarBenchModel(200);
+    const DofMap dofs(*bench.model);
+    const SparseAssembler assembler(*bench.model, dofs);
+    CHECK(assembler.stiffnessSymmetric());
+    const SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 2.0);
+    LinearSolver vouched, scanned;
+    vouched.analyzePattern(K, MatrixSymmetry::byConstruction);
+    scanned.analyzePattern(K);
+    vouched.factorize(K);
+    scanned.factorize(K);
+    CHECK(vouched.methodName() == "CHOLMOD LDL'");
+    CHECK((vouched.solve(b) - scanned.solve(b)).cwiseAbs().maxCoeff() == 0.0);
+
+    // A shaft on a bearing with k_yz != k_zy: the assembler does not vouch, and the scan finds
+    // the asymmetry, so the solver takes LU.
+    Model shaft;
+    const Line line = test::uniformBeam(shaft, 1.0, test::steelCircle(0.05), 4, DofSet::frame3d());
+    test::clamp(shaft, "left", line.nodes.front(), DofSet::frame3d());
+    BearingCoefficients c = BearingCoefficients::isotropic(1e7);
+    c.kyz = 2e6;
+    c.kzy = -2e6;
+    shaft.add<Bearing>(line.nodes.back(), c);
+    const DofMap shaftDofs(shaft);
+    const SparseAssembler shaftAssembler(shaft, shaftDofs);
+    CHECK_FALSE(shaftAssembler.stiffnessSymmetric());
+    const SparseMatrix Kb = shaftAssembler.assemble(MatrixKind::stiffness);
+    CHECK_FALSE(isNumericallySymmetric(Kb));
+    LinearSolver chosen;
+    chosen.analyzePattern(Kb);
+    CHECK(chosen.methodName() == "UMFPACK LU");
   }
 
   TEST_CASE("a singular symmetric matrix reports rcond 0, not a solution") {
