@@ -18,13 +18,19 @@ double crankPhaseSum(const std::vector<double>& phases, int k) {
   return std::abs(sum);
 }
 
-/// Sum over the cranks (phases ahead of the first) of the reciprocating inertia forces
-/// -m_rec a (N), exact kinematics, at the first crank's angle phi.
-double cranksInertiaForce(const crank::Geometry& g, const std::vector<double>& phases,
-                          double phi, double omega, double reciprocatingMass) {
-  double sum = 0;
-  for (double theta : phases) sum += -reciprocatingMass * crank::exact(g, phi + theta, omega).a;
-  return sum;
+/// The mechanism at the first crank's angle phi (exact and approximate kinematics at the
+/// crank speed) with its loads: reciprocating mass mRec and the rod's residual inertia (0
+/// without masses). The sampled revolution and `crank PROPERTY at PHI deg` both read it.
+CrankSample crankSampleAt(const DeckCrankSlider& d, double mRec, double residual, double phi) {
+  const crank::Geometry& g = d.geometry;
+  const double w = d.speed;
+  CrankSample s;
+  s.exact = crank::exact(g, phi, w);
+  s.approximate = crank::approximate(g, phi, w);
+  s.inertiaForce = -mRec * s.exact.a;
+  for (double theta : d.phases) s.cranksForce += -mRec * crank::exact(g, phi + theta, w).a;
+  s.rodCouple = residual != 0 ? crank::rodCorrectionCouple(residual, g, phi, w) : 0.0;
+  return s;
 }
 
 CrankLambdaRow crankTableRow(double lambda) {
@@ -75,16 +81,8 @@ CrankSliderOutcome runCrankSlider(const DeckCrankSlider& d) {
     out.delivery =
         crank::theoreticalDelivery(int(d.phases.size()), d.plungerDiameter, g.stroke(), w);
 
-  for (int i = 0; i <= d.steps; ++i) {
-    const double phi = 2 * std::numbers::pi * i / d.steps;
-    CrankSample s;
-    s.exact = crank::exact(g, phi, w);
-    s.approximate = crank::approximate(g, phi, w);
-    s.inertiaForce = -mRec * s.exact.a;
-    s.cranksForce = cranksInertiaForce(g, d.phases, phi, w, mRec);
-    s.rodCouple = residual != 0 ? crank::rodCorrectionCouple(residual, g, phi, w) : 0.0;
-    out.samples.push_back(s);
-  }
+  for (int i = 0; i <= d.steps; ++i)
+    out.samples.push_back(crankSampleAt(d, mRec, residual, 2 * std::numbers::pi * i / d.steps));
   for (double lambda : d.lambdas) out.table.push_back(crankTableRow(lambda));
   return out;
 }
@@ -94,9 +92,10 @@ namespace {
 /// The first crank's motion or load at crank angle phi: exact kinematics at the analysis' speed,
 /// evaluated there (not read off the sampled revolution).
 double measureCrankAtAngle(const std::string& p, double phi, const CrankSliderOutcome& c) {
-  const crank::Geometry& g = c.input.geometry;
-  const double w = c.input.speed;
-  const crank::State s = crank::exact(g, phi, w);
+  const double mRec = c.reduced ? c.reduced->reciprocating : 0;
+  const double residual = c.input.masses ? c.input.masses->rod.residualInertia : 0;
+  const CrankSample sample = crankSampleAt(c.input, mRec, residual, phi);
+  const crank::State& s = sample.exact;
   if (p == "x") return s.x;
   if (p == "v") return s.v;
   if (p == "a") return s.a;
@@ -104,11 +103,9 @@ double measureCrankAtAngle(const std::string& p, double phi, const CrankSliderOu
   if (p == "beta_dot") return s.betaDot;
   if (p == "beta_ddot") return s.betaDDot;
   if (!c.reduced) throw std::invalid_argument("'" + p + "' at a crank angle needs the masses");
-  const double mRec = c.reduced->reciprocating;
-  if (p == "force") return -mRec * s.a;
-  if (p == "cranks_force") return cranksInertiaForce(g, c.input.phases, phi, w, mRec);
-  if (p == "moment")
-    return crank::rodCorrectionCouple(c.input.masses->rod.residualInertia, g, phi, w);
+  if (p == "force") return sample.inertiaForce;
+  if (p == "cranks_force") return sample.cranksForce;
+  if (p == "moment") return sample.rodCouple;
   throw std::invalid_argument("'" + p + "' is not a crank-slider quantity at a crank angle");
 }
 
