@@ -39,6 +39,12 @@ std::vector<int> stationsAlongShaft(const Model& model, const RotorMode& mode) {
   return nodes;
 }
 
+/// The element as a disk (a point inertia with mass and a polar moment), or null.
+const PointInertia* diskOf(const Element& e) {
+  const auto* d = dynamic_cast<const PointInertia*>(&e);
+  return d && d->Jp() > 0 && d->m() > 0 ? d : nullptr;
+}
+
 Orbit nodeOrbit(const RotorMode& mode, int node) {
   return {mode.shape(node, dofIndex(Dof::uy)), mode.shape(node, dofIndex(Dof::uz))};
 }
@@ -98,14 +104,15 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
                             const CsvTable& orbits, const std::string& csvFile) {
   const int count = int(r.modes.size());
   const int columns = count > 1 ? 2 : 1, rows = (count + columns - 1) / columns;
-  // What the model has decides the key's entries: disks (point inertias with a polar moment),
-  // bearings, supports.
-  bool disks = false, bearings = false, supports = !model.supports().empty();
+  // What the model has decides the key's entries: disks (point inertias with a polar moment;
+  // the widest radius of gyration about the axis sizes their bars), bearings, supports.
+  double widest = 0;
+  bool bearings = false;
   for (const auto& e : model.elements()) {
-    if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0)
-      disks = true;
+    if (const PointInertia* d = diskOf(*e)) widest = std::max(widest, std::sqrt(d->Jp() / d->m()));
     bearings = bearings || dynamic_cast<const Bearing*>(e.get());
   }
+  const bool disks = widest > 0, supports = !model.supports().empty();
   std::vector<std::string> keyTitles{"shaft at angle 0", "forward orbit", "backward orbit",
                                      "straight-line orbit"};
   if (disks) keyTitles.push_back("disk");
@@ -124,12 +131,13 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   // shaft seen slightly from the side and above.
   const double depth = kOrbitDepth * length, rise = kOrbitRise;
   const double room = kOrbitRoom + rise;
+  const double bottom = rise - room;  // where bearings and supports are marked
 
   std::ostringstream body;
   body << "  set encoding utf8\n"
        << panelLayout(rows, columns, caption2, width, height, keyMargin + 10)
        << "  set xrange [" << number(x0 - pad) << ":" << number(x1 + pad) << "]\n"
-       << "  set yrange [" << number(0.3 - room) << ":" << number(room) << "]\n"
+       << "  set yrange [" << number(bottom) << ":" << number(room) << "]\n"
        << "  set ytics 1\n  set grid xtics\n"
        << "  unset xlabel\n  set ylabel 'u_y (u_z drawn obliquely)'\n"
        // level with the panels' top (panelLayout's: 60 px and 20 px a caption line down)
@@ -142,28 +150,24 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   //    the axis) and bearings and supports (symbols on the axis), the same in every panel.
   body << "  set arrow 1 from " << number(x0) << ",0 to " << number(x1)
        << ",0 nohead dashtype 2 linecolor rgb 'gray40' linewidth 1 back\n";
-  double widest = 0;
-  for (const auto& e : model.elements())
-    if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0)
-      widest = std::max(widest, std::sqrt(d->Jp() / d->m()));
   int tag = 2;
   for (const auto& e : model.elements()) {
     const auto dofs = e->dofs();
     if (dofs.empty()) continue;
     const double x = model.nodes()[dofs[0].node].x();
-    if (const auto* d = dynamic_cast<const PointInertia*>(e.get()); d && d->Jp() > 0 && d->m() > 0) {
+    if (const PointInertia* d = diskOf(*e)) {
       const double half = 0.35 + 0.5 * std::sqrt(d->Jp() / d->m()) / widest;
       body << "  set arrow " << tag++ << " from " << number(x) << "," << number(-half) << " to "
            << number(x) << "," << number(half)
            << " nohead linewidth 7 linecolor rgb '#99555555' back\n";
     } else if (dynamic_cast<const Bearing*>(e.get())) {
-      body << "  set label " << tag++ << " '' at " << number(x) << "," << number(0.3 - room)
+      body << "  set label " << tag++ << " '' at " << number(x) << "," << number(bottom)
            << " point pointtype 9 pointsize 2.2 linecolor rgb 'black' front\n";
     }
   }
   for (const Support& s : model.supports())
     body << "  set label " << tag++ << " '' at " << number(model.nodes()[s.node].x()) << ","
-         << number(0.3 - room) << " point pointtype 5 pointsize 1.8 linecolor rgb 'black' front\n";
+         << number(bottom) << " point pointtype 5 pointsize 1.8 linecolor rgb 'black' front\n";
   // 2. One panel per mode: the orbits as short vectors (an arrow head on the first step of each
   //    orbit shows its sense), coloured by sense, and the deflected line at angle 0.
   const int cMode = orbits.column("mode"), cX = orbits.column("x"), cA = orbits.column("angle");
