@@ -55,7 +55,7 @@ void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutco
 void printOperatingStability(std::ostream& out, const OperatingStability& s,
                              const OperatingRange& range) {
   out << "      stability: smallest log decrement in the range "
-      << (std::isfinite(s.smallest) ? formatValue(s.smallest) : std::string("inf")) << " at "
+      << formatValue(s.smallest) << " at "
       << formatValue(s.speed * kRpm) << " rpm (" << formatValue(s.frequencyHz) << " Hz "
       << whirlName(s.whirl) << " whirl; required " << formatValue(s.required) << ")";
   if (s.onset)
@@ -68,8 +68,7 @@ void printOperatingStability(std::ostream& out, const OperatingStability& s,
     out << "      API 684: FAIL (";
     if (s.onset && s.onset->speed <= range.maximum)
       out << "unstable above " << formatValue(s.onset->rpm) << " rpm, ";
-    out << "log decrement " << (std::isfinite(s.smallest) ? formatValue(s.smallest) : "inf")
-        << " in the operating range)\n";
+    out << "log decrement " << formatValue(s.smallest) << " in the operating range)\n";
   }
 }
 
