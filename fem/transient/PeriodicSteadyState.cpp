@@ -20,7 +20,7 @@ namespace {
 
 /// The free dofs' state (u then v) at the end of `run` (one period, or one step).
 Eigen::VectorXd endState(const Model& model, const TransientOptions& run,
-                                 const std::vector<NodeDof>& free) {
+                         const std::vector<NodeDof>& free) {
   const TransientResult r = solveTransient(model, run);
   const int n = int(free.size());
   Eigen::VectorXd x(2 * n);
