@@ -178,4 +178,8 @@ Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eige
   return r;
 }
 
+void dropExactZeros(SparseMatrix& A) {
+  A.prune([](int row, int col, double value) { return value != 0 || row == col; });
+}
+
 }  // namespace beamrotor

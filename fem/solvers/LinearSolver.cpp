@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace beamrotor {
 
@@ -79,21 +80,31 @@ long long lowerEnvelope(const SparseMatrix& A) {
 }
 
 void SparseLDLT::analyzePattern(const SparseMatrix& A) {
-  const SparseMatrix::Index lowerEntries = (A.nonZeros() + A.rows()) / 2;
-  const bool keepOrder = double(lowerEnvelope(A)) <= 1.2 * double(lowerEntries);
+  const double lowerEntries = double(A.nonZeros() + A.rows()) / 2;
   cholmod_common& c = cholmod();
   // No room for later updates of the factor (CHOLMOD reserves 5 entries a column by
   // default, about a third of the factor's memory here): factors are only ever recomputed.
   c.grow2 = 0;
-  if (keepOrder) {
-    c.nmethods = 1;
-    c.method[0].ordering = CHOLMOD_NATURAL;
-    c.postorder = false;
-  } else {
-    c.nmethods = 0;  // CHOLMOD's default: AMD, and METIS when AMD leaves much fill
-    c.postorder = true;
+  const auto analyseWith = [&](int ordering) {
+    c.nmethods = ordering == CHOLMOD_NATURAL ? 1 : 0;  // 0: CHOLMOD's default, AMD or METIS
+    c.method[0].ordering = ordering;
+    c.postorder = ordering != CHOLMOD_NATURAL;
+    Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper>::analyzePattern(A);
+  };
+  if (double(lowerEnvelope(A)) <= 1.2 * lowerEntries) {
+    analyseWith(CHOLMOD_NATURAL);
+    return;
   }
-  Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper>::analyzePattern(A);
+  // The envelope counts room for fill that elimination may never use: a line of beams whose
+  // exact zeros were dropped (dropExactZeros) keeps its axial dofs apart from its bending ones,
+  // and equal spans cancel each node's own bending-rotation coupling. The analysis in the
+  // matrix's own order counts the true fill (an elimination tree and column counts, linear in
+  // the entries); AMD runs only when that fill is large.
+  analyseWith(CHOLMOD_NATURAL);
+  // A symbolic factor holds its predicted column counts.
+  const int* counts = static_cast<const int*>(m_cholmodFactor->ColCount);
+  const double naturalEntries = std::accumulate(counts, counts + A.cols(), 0.0);
+  if (naturalEntries > 1.2 * lowerEntries) analyseWith(CHOLMOD_AMD);
 }
 
 int SparseLDLT::negativePivots() const {

@@ -10,27 +10,31 @@ namespace beamrotor {
 
 namespace {
 
-/// The union of the patterns of A and B (compressed, rows sorted in each column, same size),
-/// values zero.
+/// The union of the patterns of A and B (compressed, rows sorted in each column, same size)
+/// without their exact zeros off the diagonal (dropExactZeros), values zero.
 SparseMatrix unionPattern(const SparseMatrix& A, const SparseMatrix& B) {
   const int n = int(A.cols());
   const int *ap = A.outerIndexPtr(), *ai = A.innerIndexPtr();
   const int *bp = B.outerIndexPtr(), *bi = B.innerIndexPtr();
-  // Walks the merged rows of column `col`, calling visit(row) once per distinct row.
+  const double *ax = A.valuePtr(), *bx = B.valuePtr();
+  // Walks the merged rows of column `col`, calling visit(row) once per distinct row where
+  // A or B holds a value (or on the diagonal).
   auto mergeColumn = [&](int col, auto&& visit) {
     int a = ap[col], b = bp[col];
     while (a < ap[col + 1] || b < bp[col + 1]) {
       const int row = b == bp[col + 1] || (a < ap[col + 1] && ai[a] < bi[b]) ? ai[a] : bi[b];
-      if (a < ap[col + 1] && ai[a] == row) ++a;
-      if (b < bp[col + 1] && bi[b] == row) ++b;
-      visit(row);
+      bool held = row == col;
+      if (a < ap[col + 1] && ai[a] == row) held |= ax[a++] != 0;
+      if (b < bp[col + 1] && bi[b] == row) held |= bx[b++] != 0;
+      if (held) visit(row);
     }
   };
   return compressedPattern(int(A.rows()), n, mergeColumn);
 }
 
-/// Writes K - sigma M into `shifted`, whose pattern is the union of K's and M's: the same
-/// operations, in the same order, as Eigen's K - sigma * M.
+/// Writes K - sigma M into `shifted`, whose pattern holds every nonzero of K and M: the same
+/// operations, in the same order, as Eigen's K - sigma * M (entries of K or M outside it are
+/// zeros, skipped).
 void fillShifted(const SparseMatrix& K, const SparseMatrix& M, double sigma,
                  SparseMatrix& shifted) {
   const int *kp = K.outerIndexPtr(), *ki = K.innerIndexPtr();
@@ -41,6 +45,8 @@ void fillShifted(const SparseMatrix& K, const SparseMatrix& M, double sigma,
   for (int col = 0; col < int(shifted.cols()); ++col) {
     int k = kp[col], m = mp[col];
     for (int e = sp[col]; e < sp[col + 1]; ++e) {
+      while (k < kp[col + 1] && ki[k] < si[e]) ++k;
+      while (m < mp[col + 1] && mi[m] < si[e]) ++m;
       double value = 0;
       if (k < kp[col + 1] && ki[k] == si[e]) value = kx[k++];
       if (m < mp[col + 1] && mi[m] == si[e]) value -= sigma * mx[m++];
@@ -104,8 +110,14 @@ double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, 
   const bool boundHoldsOne = atHiN >= 1;
   const int atUpperBound = atHiN;
   double width = std::max(upperBound - sigma, 1e-6 * std::abs(upperBound));
-  while (atHiN < count) {
+  for (bool firstStep = true; atHiN < count; firstStep = false) {
     if (atHiN < 0 || exhausted()) return sigma;
+    // Fewer than `count` eigenvalues below sigma + 2 (upperBound - sigma): the wanted band is
+    // wider than lambda_1's distance from sigma (upperBound >= lambda_1), so at sigma the
+    // ratios that set Lanczos's convergence are already far from 1; the counts that would
+    // find lambda_1 cost more factorisations than they save (a plate's or a grillage's
+    // spectrum: 2 here, 8 to find the band's top).
+    if (!firstStep) return sigma;
     width *= 2;
     hiN = sigma + width;
     atHiN = counter.below(hiN);

@@ -25,8 +25,8 @@ class SturmCounter {
  private:
   const SparseMatrix& K_;
   const SparseMatrix& M_;
-  /// K - sigma M on the union pattern of K and M: the pattern is built once, the values are
-  /// refilled in place for every sigma (no allocation per count).
+  /// K - sigma M on the union of K's and M's nonzeros: the pattern is built once, the values
+  /// are refilled in place for every sigma (no allocation per count).
   SparseMatrix shifted_;
   SparseLDLT ldlt_;
   bool analysed_ = false;
@@ -35,7 +35,8 @@ class SturmCounter {
 
 /// For the `count` lowest eigenvalues above sigma (no eigenvalue below sigma): a shift in
 /// [sigma, lambda_1) within a few per cent of the wanted band's width below lambda_1, or sigma
-/// itself when the search cannot improve on it. `upperBound` is any value >= lambda_1 (e.g. a
+/// itself when the search cannot improve on it or the band is wider than sigma's distance
+/// from it (then sigma is near enough already). `upperBound` is any value >= lambda_1 (e.g. a
 /// Rayleigh quotient).
 double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, int count);
 

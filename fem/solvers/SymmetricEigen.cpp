@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <numeric>
+#include <random>
 #include <sstream>
 
 #include "fem/solvers/Errors.hpp"
@@ -102,15 +103,37 @@ struct ShiftedInverse {
   bool fromCounter = false;
 };
 
-/// Rayleigh quotient after a few steps of inverse iteration with a factor of K - sigma M:
-/// an upper bound on the lowest eigenvalue, close to it (within the cluster it lies in).
-double rayleighUpperBound(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
-  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(K.rows(), 1.0, 2.0);
-  for (int step = 0; step < 4; ++step) {
+/// What a few steps of inverse iteration with a factor of K - sigma M tell of the lowest
+/// eigenvalues: its Rayleigh quotients q_k approach lambda_1 from above with errors shrinking
+/// as r^2k, r = (lambda_1 - sigma) / (lambda_2 - sigma) (Parlett, The Symmetric Eigenvalue
+/// Problem, ch. 4), so the ratio of successive differences measures r^2.
+struct InverseIteration {
+  double upperBound = 0;  ///< the last Rayleigh quotient, >= lambda_1, within its cluster
+  double settling = 1;    ///< (q3 - q4) / (q2 - q3), about r^2; 1 when that is all round-off
+};
+
+InverseIteration inverseIteration(const SparseLDLT& factor, const SparseMatrix& K,
+                                  const SparseMatrix& M) {
+  // A start with every mode in it, the same on every run: a smooth one (a straight ramp)
+  // holds little of a line's lowest, alternating modes and made a tight band look separated.
+  std::minstd_rand generator(20261125);
+  Eigen::VectorXd x(K.rows());
+  for (double& entry : x) entry = double(generator()) / double(generator.max()) - 0.5;
+  double quotient[5] = {};
+  for (int step = 1; step <= 4; ++step) {
     x = factor.solve(M * x);
     x /= x.norm();
+    if (step >= 2) quotient[step] = x.dot(K * x) / x.dot(M * x);
   }
-  return x.dot(K * x) / x.dot(M * x);
+  InverseIteration out;
+  out.upperBound = quotient[4];
+  const double earlier = quotient[2] - quotient[3], later = quotient[3] - quotient[4];
+  // Differences at round-off level tell nothing: q moves that little inside a tight cluster
+  // (counted as one), and as little once a very well separated lambda_1 is found (then the
+  // shift search's first counts end it).
+  const double noise = 1e-12 * std::abs(quotient[4]);
+  out.settling = earlier > noise ? std::max(0.0, later) / earlier : 1.0;
+  return out;
 }
 
 /// Below the spectrum (the usual request: the lowest modes), LDL' at a shift moved up to just
@@ -120,11 +143,20 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
                               const SparseMatrix& M, int count, double sigma) {
   ShiftedInverse op;
   if (below == 0) {
-    const double upper = rayleighUpperBound(counter.factor(), K, M);
-    op.shift = shiftBelowLowest(counter, sigma, upper, count);
-    // The counter's own factor, refactorised at the shift: its symbolic analysis and storage
-    // serve again. A later count overwrites it; the caller refactorises it at the shift then.
-    counter.below(op.shift);
+    // When lambda_2 - sigma is over twice lambda_1 - sigma (r^2 < 1/4), the lowest
+    // eigenvalues are not clustered as seen from sigma and Lanczos converges fast there: the
+    // factor at sigma serves as it is, without the counts of a shift search (a plate's or a
+    // grillage's spectrum). Otherwise (a long line of equal spans, a degenerate lowest pair)
+    // the shift moves up to just below lambda_1.
+    constexpr double kSeparated = 0.25;
+    const InverseIteration iteration = inverseIteration(counter.factor(), K, M);
+    op.shift = sigma;
+    if (!(iteration.settling < kSeparated)) {
+      op.shift = shiftBelowLowest(counter, sigma, iteration.upperBound, count);
+      // The counter's own factor, refactorised at the shift: its symbolic analysis and
+      // storage serve again. A later count overwrites it; the caller refactorises it then.
+      counter.below(op.shift);
+    }
     const SparseLDLT& ldlt = counter.factor();
     // Positive definite below the spectrum: judged scaled, whatever the units of the dofs.
     if (ldlt.info() == Eigen::Success && ldlt.scaledRcond() > kSingularRcond) {
@@ -146,24 +178,50 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
   return op;
 }
 
-/// How many eigenvalues a Sturm count finds below (just under) the largest of `values` beyond
-/// those of `values` that lie there: modes Lanczos missed (0 when none).
-int missedBelow(SturmCounter& counter, const Eigen::VectorXd& values, double shift) {
-  if (values.size() == 0) return 0;
-  const double top = values.maxCoeff();
-  const double justBelow = top - 1e-9 * std::abs(top - shift) - 1e-12 * std::abs(top);
-  const int found = int((values.array() < justBelow).count());
+/// How many eigenvalues a Sturm count finds below the `count`-th lowest of `values` (all
+/// above the shift, ascending) beyond those of `values` that lie there: modes Lanczos missed
+/// (0 when none). The count is taken in the first gap above the `count`-th among the computed
+/// eigenvalues and `ritzFloors` (where the unconverged Ritz values place the next ones), where
+/// it cannot be off: next to an eigenvalue the inertia of a nearly singular K - tau M, and
+/// the computed eigenvalue itself, are uncertain by the round-off of a solve, about 1e-9
+/// relative on an ill-conditioned model (a degenerate pair at the top of the list then looked
+/// like two missed modes). Without such a gap (a cluster), just below the `count`-th.
+int missedBelow(SturmCounter& counter, const Eigen::VectorXd& values,
+                const std::vector<double>& ritzFloors, int count, double shift) {
+  if (values.size() == 0 || count <= 0) return 0;
+  // Points closer than this (relative to their distance from the shift) may be one
+  // eigenvalue computed twice or a pair: no gap between them.
+  constexpr double kGap = 1e-6;
+  const int top = std::min<int>(count, int(values.size())) - 1;
+  const double highest = values[top];
+  std::vector<double> points(values.begin() + top, values.end());
+  for (const double floor : ritzFloors)
+    if (floor >= highest) points.push_back(floor);
+  std::sort(points.begin(), points.end());
+  for (std::size_t j = 0; j + 1 < points.size(); ++j)
+    if (points[j + 1] - points[j] > kGap * std::abs(points[j + 1] - shift)) {
+      const double tau = 0.5 * (points[j] + points[j + 1]);
+      const int found = int((values.array() < tau).count());
+      return std::max(0, counter.below(tau) - found);
+    }
+  const double justBelow = highest - 1e-9 * std::abs(highest - shift) - 1e-12 * std::abs(highest);
+  const int found = int((values.head(top + 1).array() < justBelow).count());
   return std::max(0, counter.below(justBelow) - found);
 }
 
-/// The nev eigenpairs of (K - shift M)^-1 M of largest magnitude (those nearest the shift) by
-/// reverse-communication Lanczos with the M inner product, M-normalised.
-EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWanted) {
+struct LanczosRun {
+  EigenPairs pairs;
+  /// Where the run's Ritz values, converged or not, place eigenvalues: each Ritz value's
+  /// lambda less its error estimate, a point at or below an eigenvalue of the pencil's
+  /// (Parlett ch. 10: a Ritz value with residual norm e lies within e of an eigenvalue).
+  std::vector<double> ritzFloors;
+};
+
+LanczosRun lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWanted, int basis,
+                   const Eigen::MatrixXd& locked) {
   const a_int n = a_int(M.rows());
   const a_int nev = nevWanted;
-  // A generous Lanczos basis: clustered spectra (long continuous beams) converge in a few
-  // restarts with it, and it costs only n x ncv doubles.
-  const a_int ncv = std::min<a_int>(n, std::max<a_int>(4 * nev + 1, 40));
+  const a_int ncv = std::min<a_int>(n, std::max<a_int>(basis, nev + 2));
   const a_int lworkl = ncv * (ncv + 8);
   std::vector<double> resid(n), v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
   std::array<a_int, 11> iparam{}, ipntr{};
@@ -173,6 +231,10 @@ EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
   a_int ido = 0, info = 0;
   const double tol = 0.0;  // machine precision
   Eigen::VectorXd y(n), solution(n);
+  const Eigen::MatrixXd massLocked = M * locked;  // M X, for X' M z = (M X)' z
+  auto project = [&](Eigen::VectorXd& z) {
+    if (locked.cols() > 0) z -= locked * (massLocked.transpose() * z);
+  };
   while (true) {
     arpack::saupd(ido, arpack::bmat::generalized, n, arpack::which::largest_magnitude, nev, tol,
                   resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(), workd.data(),
@@ -181,10 +243,12 @@ EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
     if (ido == -1) {
       y = M * x;
       op.solve(y, solution);
+      project(solution);
       out = solution;
     } else if (ido == 1) {
       y = Eigen::Map<Eigen::VectorXd>(&workd[ipntr[2] - 1], n);  // M x, from ARPACK
       op.solve(y, solution);
+      project(solution);
       out = solution;
     } else if (ido == 2) {
       out = M * x;
@@ -199,6 +263,15 @@ EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
                      " restarts (" + std::to_string(iparam[4]) + " of " + std::to_string(nev) +
                      " modes)");
 
+  // The Ritz values of (K - shift M)^-1 M the run ended with, and their error estimates
+  // (dsaupd leaves them in workl at ipntr[5] and ipntr[6]); mu +- e is lambda = shift + 1/mu
+  // within about e / mu^2.
+  LanczosRun run;
+  for (a_int k = 0; k < ncv; ++k) {
+    const double mu = workl[ipntr[5] - 1 + k], estimate = std::abs(workl[ipntr[6] - 1 + k]);
+    if (std::abs(mu) > estimate) run.ritzFloors.push_back(op.shift + 1 / mu - estimate / (mu * mu));
+  }
+
   // Ritz vectors.
   std::vector<a_int> select(ncv);
   Eigen::VectorXd d(nev);
@@ -210,10 +283,9 @@ EigenPairs lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
   if (info != 0)
     throw SolveError("modal analysis: ARPACK dseupd failed with info = " + std::to_string(info));
   for (int k = 0; k < nev; ++k) z.col(k) /= std::sqrt(z.col(k).dot(M * z.col(k)));
-  EigenPairs out;
-  out.values = d;
-  out.vectors = std::move(z);
-  return out;
+  run.pairs.values = d;
+  run.pairs.vectors = std::move(z);
+  return run;
 }
 
 }  // namespace
@@ -235,20 +307,25 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
   const ShiftedInverse op = shiftedInverse(counter, belowSigma, K, M, count, sigma);
 
   // 2. Lanczos; when a Sturm count shows that it missed eigenvalues among the lowest (it can,
-  //    with multiple or tightly clustered ones), again with a larger subspace.
+  //    with multiple or tightly clustered ones), again in the complement of those it found.
   // Lanczos multiplies by M about three times per step (its M inner product): without the
   // pattern's exact zeros (in a planar beam the axial dofs never couple with the bending
   // ones, over 40 % of the entries) the products read less memory and give the same sums.
   const SparseMatrix massNonzeros = M.pruned();
-  int nev = count;
+  // A generous Lanczos basis: clustered spectra (long continuous beams) converge in a few
+  // restarts with it, and it costs only n x ncv doubles.
+  const int basis = std::max(4 * count + 1, 40);
+  LanczosRun run = lanczos(massNonzeros, op, count, basis, Eigen::MatrixXd(n, 0));
+  EigenPairs& all = run.pairs;
   for (int attempt = 0;; ++attempt) {
-    // The Sturm check of the previous attempt refactorised the counter away from the shift.
-    if (attempt > 0 && op.fromCounter) counter.below(op.shift);
-    const EigenPairs all = lanczos(massNonzeros, op, nev);
     // The shift was only moved within [sigma, lambda_1): nearest it is still nearest sigma.
     EigenPairs out = nearest(all.values, all.vectors, count, op.shift);
-    const int missed = belowSigma == 0 ? missedBelow(counter, out.values, op.shift) : 0;
-    if (missed == 0 || attempt == 2 || nev >= n - 2) {
+    Eigen::VectorXd ascending = all.values;
+    std::sort(ascending.begin(), ascending.end());
+    const int missed =
+        belowSigma == 0 ? missedBelow(counter, ascending, run.ritzFloors, count, op.shift) : 0;
+    const int room = n - 2 - int(all.values.size());
+    if (missed == 0 || attempt == 2 || room < 1) {
       // Still missing after the retries: the caller reports it (the count itself can be off
       // by a few for a matrix this near singular, so the modes found are not thrown away).
       out.factorEntries = op.factorEntries;
@@ -256,7 +333,16 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
       out.missedBySturmCount = missed;
       return out;
     }
-    nev = std::min(n - 2, nev + 2 * missed + 2);
+    // The Sturm check refactorised the counter away from the shift.
+    if (op.fromCounter) counter.below(op.shift);
+    LanczosRun more = lanczos(massNonzeros, op, std::min(room, missed + 2), basis, all.vectors);
+    const Eigen::Index found = all.values.size(), added = more.pairs.values.size();
+    all.values.conservativeResize(found + added);
+    all.values.tail(added) = more.pairs.values;
+    all.vectors.conservativeResize(Eigen::NoChange, found + added);
+    all.vectors.rightCols(added) = more.pairs.vectors;
+    // The complement's Ritz values place the eigenvalues not yet found.
+    run.ritzFloors = std::move(more.ritzFloors);
   }
 }
 
