@@ -53,6 +53,9 @@ double SparseLDLT::scaledRcond() const {
     const double a = diagonal_[perm ? perm[j] : int(j)];
     if (!(a > 0)) return 0;
     const double pivot = std::abs(x[start[j]]) / a;
+    // An infinite entry (stiffnesses summing past the largest double) leaves inf / inf here;
+    // nothing about such a matrix is well conditioned.
+    if (!std::isfinite(pivot)) return 0;
     smallest = std::min(smallest, pivot);
     largest = std::max(largest, pivot);
   }
