@@ -37,6 +37,21 @@ double mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
   return den > 0 ? std::norm(a.dot(b)) / den : 0.0;
 }
 
+int candidatesAtGap(const std::vector<RotorMode>& modes, int lines, std::complex<double> shift) {
+  const int widest = int(modes.size());
+  int best = widest;
+  double widestGap = 0;
+  for (int c = lines + std::max(2, lines / 4); c < widest; ++c) {
+    const double gap = std::abs(modes[c].eigenvalue - shift) /
+                       std::abs(modes[c - 1].eigenvalue - shift);
+    if (gap > widestGap) {
+      widestGap = gap;
+      best = c;
+    }
+  }
+  return best;
+}
+
 CampbellResult solveCampbell(const Model& model, const std::vector<double>& speeds,
                              const RotorOptions& options) {
   Stopwatch clock, total;
@@ -46,11 +61,12 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
   result.time.assembly = clock.lap();
   if (speeds.empty() || options.modes <= 0) return result;
 
-  // Candidates per speed: the asked-for modes plus a margin for reordering.
-  RotorOptions wider = options;
-  wider.modes = options.modes + std::max(2, options.modes / 2);
-  QuadraticEigenSolver solver;
+  // Candidates per speed: the asked-for modes plus a margin for reordering; after the first
+  // speed the margin ends at the widest gap of the spectrum there (candidatesAtGap).
   const int lines = options.modes;
+  RotorOptions wider = options;
+  wider.modes = lines + std::max(2, lines / 2);
+  QuadraticEigenSolver solver;
   result.lines.assign(lines, {});
   result.mac.assign(lines, {});
   Eigen::MatrixXcd previous;  // each line's vector at the previous speed
@@ -78,6 +94,7 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
       next.col(l) = at.vectors.col(pick[l].first);
     }
     previous = std::move(next);
+    if (s == 0) wider.modes = candidatesAtGap(at.modes, lines, options.shift);
   }
   result.symbolicAnalyses = solver.analyses();
   result.time.total = total.lap();
