@@ -13,6 +13,8 @@ namespace beamrotor {
 /// Modal assurance criterion |a^H b|^2 / (|a|^2 |b|^2) of two complex vectors: 1 for parallel
 /// vectors whatever their complex scale, 0 for orthogonal ones.
 double mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b);
+/// mac(a_k, b_l) of every column k of a and l of b.
+Eigen::MatrixXd macTable(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b);
 
 /// How many modes a Campbell sweep computes per speed after the first, given the first
 /// speed's `modes` (nearest `shift` first, `lines` of them followed plus a margin): the count
