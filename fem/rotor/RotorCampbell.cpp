@@ -16,9 +16,7 @@ namespace {
 std::vector<std::pair<int, double>> match(const Eigen::MatrixXcd& lines,
                                           const Eigen::MatrixXcd& candidates) {
   const int nl = int(lines.cols()), nc = int(candidates.cols());
-  Eigen::MatrixXd table(nl, nc);
-  for (int l = 0; l < nl; ++l)
-    for (int c = 0; c < nc; ++c) table(l, c) = mac(lines.col(l), candidates.col(c));
+  Eigen::MatrixXd table = macTable(lines, candidates);
   std::vector<std::pair<int, double>> out(nl, {-1, 0.0});
   for (int k = 0; k < std::min(nl, nc); ++k) {
     Eigen::Index l = 0, c = 0;
@@ -32,9 +30,35 @@ std::vector<std::pair<int, double>> match(const Eigen::MatrixXcd& lines,
 
 }  // namespace
 
-double mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
-  const double den = a.squaredNorm() * b.squaredNorm();
-  return den > 0 ? std::norm(a.dot(b)) / den : 0.0;
+Eigen::MatrixXd macTable(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
+  // One product for every a_k^H b_l (a sweep's lines against its candidates: 12 x 16
+  // columns of 3204 entries at 800 elements), each column's norm once.
+  const Eigen::MatrixXcd overlap = a.adjoint() * b;
+  const Eigen::VectorXd na = a.colwise().squaredNorm(), nb = b.colwise().squaredNorm();
+  Eigen::MatrixXd table(a.cols(), b.cols());
+  for (Eigen::Index k = 0; k < a.cols(); ++k)
+    for (Eigen::Index l = 0; l < b.cols(); ++l) {
+      const double den = na[k] * nb[l];
+      table(k, l) = den > 0 ? std::norm(overlap(k, l)) / den : 0.0;
+    }
+  return table;
+}
+
+double mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) { return macTable(a, b)(0, 0); }
+
+int candidatesAtGap(const std::vector<RotorMode>& modes, int lines, std::complex<double> shift) {
+  const int widest = int(modes.size());
+  int best = widest;
+  double widestGap = 0;
+  for (int c = lines + std::max(2, lines / 4); c < widest; ++c) {
+    const double gap = std::abs(modes[c].eigenvalue - shift) /
+                       std::abs(modes[c - 1].eigenvalue - shift);
+    if (gap > widestGap) {
+      widestGap = gap;
+      best = c;
+    }
+  }
+  return best;
 }
 
 CampbellResult solveCampbell(const Model& model, const std::vector<double>& speeds,
@@ -46,11 +70,12 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
   result.time.assembly = clock.lap();
   if (speeds.empty() || options.modes <= 0) return result;
 
-  // Candidates per speed: the asked-for modes plus a margin for reordering.
-  RotorOptions wider = options;
-  wider.modes = options.modes + std::max(2, options.modes / 2);
-  QuadraticEigenSolver solver;
+  // Candidates per speed: the asked-for modes plus a margin for reordering; after the first
+  // speed the margin ends at the widest gap of the spectrum there (candidatesAtGap).
   const int lines = options.modes;
+  RotorOptions wider = options;
+  wider.modes = lines + std::max(2, lines / 2);
+  QuadraticEigenSolver solver;
   result.lines.assign(lines, {});
   result.mac.assign(lines, {});
   Eigen::MatrixXcd previous;  // each line's vector at the previous speed
@@ -78,6 +103,7 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
       next.col(l) = at.vectors.col(pick[l].first);
     }
     previous = std::move(next);
+    if (s == 0) wider.modes = candidatesAtGap(at.modes, lines, options.shift);
   }
   result.symbolicAnalyses = solver.analyses();
   result.time.total = total.lap();

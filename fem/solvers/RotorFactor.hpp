@@ -28,14 +28,19 @@ class RepeatedFactor {
   }
 
   /// Factorises A (kept inside: UMFPACK's solve reads the matrix for iterative refinement).
-  /// Returns false when the factorisation fails or rcond <= kSingularRcond.
+  /// Returns false when the factorisation fails or rcond <= kSingularRcond. A matrix equal to
+  /// the last one, entry for entry, keeps its factor (a Campbell sweep at a real shift 0 on
+  /// speed-independent bearings factorises K once).
   bool factorize(Matrix A) {
+    if (!A.isCompressed()) A.makeCompressed();
+    const bool samePattern = analysed_ && outer_.size() == std::size_t(A.outerSize() + 1) &&
+                             inner_.size() == std::size_t(A.nonZeros()) &&
+                             std::equal(outer_.begin(), outer_.end(), A.outerIndexPtr()) &&
+                             std::equal(inner_.begin(), inner_.end(), A.innerIndexPtr());
+    if (samePattern && factorizations_ > 0 &&
+        std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), A_.valuePtr()))
+      return factored_;
     A_ = std::move(A);
-    if (!A_.isCompressed()) A_.makeCompressed();
-    const bool samePattern = analysed_ && outer_.size() == std::size_t(A_.outerSize() + 1) &&
-                             inner_.size() == std::size_t(A_.nonZeros()) &&
-                             std::equal(outer_.begin(), outer_.end(), A_.outerIndexPtr()) &&
-                             std::equal(inner_.begin(), inner_.end(), A_.innerIndexPtr());
     if (!samePattern) {
       lu_.analyzePattern(A_);
       outer_.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + A_.outerSize() + 1);
@@ -44,7 +49,9 @@ class RepeatedFactor {
       ++analyses_;
     }
     lu_.factorize(A_);
-    return lu_.info() == Eigen::Success && lu_.rcond() > kSingularRcond;
+    ++factorizations_;
+    factored_ = lu_.info() == Eigen::Success && lu_.rcond() > kSingularRcond;
+    return factored_;
   }
 
   template <class Rhs>
@@ -55,6 +62,8 @@ class RepeatedFactor {
   double factorEntries() const { return lu_.factorEntries(); }
   /// How many symbolic analyses were needed so far (1 for a whole sweep on one pattern).
   int analyses() const { return analyses_; }
+  /// How many numeric factorisations were done so far (a repeated matrix is not redone).
+  int factorizations() const { return factorizations_; }
 
  private:
   /// Eigen's wrapper plus the UMFPACK statistics it keeps to itself.
@@ -68,8 +77,8 @@ class RepeatedFactor {
   Matrix A_;
   Lu lu_;
   std::vector<int> outer_, inner_;
-  bool analysed_ = false;
-  int analyses_ = 0;
+  bool analysed_ = false, factored_ = false;
+  int analyses_ = 0, factorizations_ = 0;
 };
 
 }  // namespace beamrotor

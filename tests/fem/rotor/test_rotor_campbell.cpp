@@ -78,6 +78,31 @@ struct CampbellJeffcott {
 }  // namespace
 
 TEST_SUITE("rotor campbell") {
+  TEST_CASE("MAC table: |a^H b|^2 / (|a|^2 |b|^2) of small complex vectors, worked by hand") {
+    const Complex i(0, 1);
+    Eigen::MatrixXcd a(3, 2), b(3, 4);
+    a.col(0) << 1, 0, 0;
+    a.col(1) << 1, i, 0;
+    b.col(0) << 2.0 * i, 0, 0;  // a0 times a complex scale
+    b.col(1) << 1, -i, 0;       // a1^H b1 = 1 + (-i)(-i) = 0
+    b.col(2) << 0, 0, 0;        // no shape: 0, not 0 / 0
+    b.col(3) << 1, 1, 1;
+    // Rows a0, a1; by hand: a0^H b = (2i, 1, 0, 1), a1^H b = (2i, 0, 0, 1 - i); |a|^2 = 1, 2;
+    // |b|^2 = 4, 2, 0, 3.
+    const double expected[2][4] = {{1, 0.5, 0, 1.0 / 3}, {0.5, 0, 0, 1.0 / 3}};
+    const Eigen::MatrixXd table = macTable(a, b);
+    REQUIRE(table.rows() == 2);
+    REQUIRE(table.cols() == 4);
+    for (int k = 0; k < 2; ++k)
+      for (int l = 0; l < 4; ++l) {
+        CAPTURE(k);
+        CAPTURE(l);
+        // A few roundings of numbers of size 1.
+        CHECK(table(k, l) == doctest::Approx(expected[k][l]).epsilon(1e-15));
+        CHECK(mac(a.col(k), b.col(l)) == table(k, l));
+      }
+  }
+
   TEST_CASE("rigid rotor: lines keep their identity through crossings (MAC tracking)") {
     const CampbellRigidRotor r;
     Model model;
