@@ -1,8 +1,10 @@
 // Eigenpairs of the generalised symmetric problem K x = lambda M x nearest a shift sigma:
 // ARPACK's implicitly restarted Lanczos (dsaupd/dseupd) in shift-invert mode 3, with
-// K - sigma M factorised once: CHOLMOD LDL' at a shift moved up just below the lowest
-// eigenvalue by Sturm counts when sigma lies below them all (fem/solvers/SturmShift), UMFPACK LU at
-// sigma otherwise. Small problems go to a dense solver instead, since
+// K - sigma M factorised once: CHOLMOD LDL' when sigma lies below every eigenvalue, at sigma
+// when the lowest are well separated from it and otherwise at a shift moved up just below them
+// by Sturm counts (fem/solvers/SturmShift); UMFPACK LU at sigma inside the spectrum. A final
+// Sturm count proves that no mode was missed, and modes it shows missing are found by Lanczos
+// in the complement of those found. Small problems go to a dense solver instead, since
 // ARPACK needs more Lanczos vectors than wanted eigenpairs.
 #pragma once
 
@@ -18,7 +20,8 @@ struct EigenPairs {
   double factorEntries = 0;  ///< fill of the factor of K - shift M (0 for the dense path)
   double shiftUsed = 0;      ///< the shift Lanczos ran at (moved up below the lowest eigenvalue)
   /// Eigenvalues a Sturm count places below the highest one returned that Lanczos did not
-  /// return, after its retries with larger subspaces (0: none missed, or not checked).
+  /// return, after its runs in the complement of those found (0: none missed, or not
+  /// checked).
   int missedBySturmCount = 0;
 };
 
