@@ -103,19 +103,27 @@ struct ShiftedInverse {
   bool fromCounter = false;
 };
 
-/// What a few steps of inverse iteration with a factor of K - sigma M tell of the lowest
-/// eigenvalues: its Rayleigh quotients q_k approach lambda_1 from above with errors shrinking
-/// as r^2k, r = (lambda_1 - sigma) / (lambda_2 - sigma) (Parlett, The Symmetric Eigenvalue
-/// Problem, ch. 4), so the ratio of successive differences measures r^2.
-struct InverseIteration {
-  double upperBound = 0;  ///< the last Rayleigh quotient, >= lambda_1, within its cluster
-  double settling = 1;    ///< (q3 - q4) / (q2 - q3), about r^2; 1 when that is all round-off
-};
+/// Rayleigh quotient after a few steps of inverse iteration with a factor of K - sigma M from
+/// a smooth start: an upper bound on the lowest eigenvalue, close to it (within the cluster it
+/// lies in; on a line of spans, high enough in the band that the counts there place its edge).
+double rayleighUpperBound(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
+  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(K.rows(), 1.0, 2.0);
+  for (int step = 0; step < 4; ++step) {
+    x = factor.solve(M * x);
+    x /= x.norm();
+  }
+  return x.dot(K * x) / x.dot(M * x);
+}
 
-InverseIteration inverseIteration(const SparseLDLT& factor, const SparseMatrix& K,
-                                  const SparseMatrix& M) {
-  // A start with every mode in it, the same on every run: a smooth one (a straight ramp)
-  // holds little of a line's lowest, alternating modes and made a tight band look separated.
+/// How fast inverse iteration with a factor of K - sigma M settles: its Rayleigh quotients q_k
+/// approach lambda_1 from above with errors shrinking as r^2k, r = (lambda_1 - sigma) /
+/// (lambda_2 - sigma) (Parlett, The Symmetric Eigenvalue Problem, ch. 4), so the ratio of
+/// successive differences, (q3 - q4) / (q2 - q3), measures r^2. The start holds every mode and
+/// is the same on every run: a smooth one (a straight ramp) holds little of a line's lowest,
+/// alternating modes and made a tight band look separated. 1 when the differences are all
+/// round-off: q moves that little inside a tight cluster (counted as one), and as little once a
+/// very well separated lambda_1 is found (then the shift search's first counts end it).
+double settlingRatio(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
   std::minstd_rand generator(20261125);
   Eigen::VectorXd x(K.rows());
   for (double& entry : x) entry = double(generator()) / double(generator.max()) - 0.5;
@@ -125,15 +133,9 @@ InverseIteration inverseIteration(const SparseLDLT& factor, const SparseMatrix& 
     x /= x.norm();
     if (step >= 2) quotient[step] = x.dot(K * x) / x.dot(M * x);
   }
-  InverseIteration out;
-  out.upperBound = quotient[4];
   const double earlier = quotient[2] - quotient[3], later = quotient[3] - quotient[4];
-  // Differences at round-off level tell nothing: q moves that little inside a tight cluster
-  // (counted as one), and as little once a very well separated lambda_1 is found (then the
-  // shift search's first counts end it).
   const double noise = 1e-12 * std::abs(quotient[4]);
-  out.settling = earlier > noise ? std::max(0.0, later) / earlier : 1.0;
-  return out;
+  return earlier > noise ? std::max(0.0, later) / earlier : 1.0;
 }
 
 /// Below the spectrum (the usual request: the lowest modes), LDL' at a shift moved up to just
@@ -149,10 +151,10 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
     // grillage's spectrum). Otherwise (a long line of equal spans, a degenerate lowest pair)
     // the shift moves up to just below lambda_1.
     constexpr double kSeparated = 0.25;
-    const InverseIteration iteration = inverseIteration(counter.factor(), K, M);
     op.shift = sigma;
-    if (!(iteration.settling < kSeparated)) {
-      op.shift = shiftBelowLowest(counter, sigma, iteration.upperBound, count);
+    if (!(settlingRatio(counter.factor(), K, M) < kSeparated)) {
+      const double upper = rayleighUpperBound(counter.factor(), K, M);
+      op.shift = shiftBelowLowest(counter, sigma, upper, count);
       // The counter's own factor, refactorised at the shift: its symbolic analysis and
       // storage serve again. A later count overwrites it; the caller refactorises it then.
       counter.below(op.shift);
