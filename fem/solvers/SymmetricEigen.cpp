@@ -138,8 +138,9 @@ double settlingRatio(const SparseLDLT& factor, const SparseMatrix& K, const Spar
   return earlier > noise ? std::max(0.0, later) / earlier : 1.0;
 }
 
-/// Below the spectrum (the usual request: the lowest modes), LDL' at a shift moved up to just
-/// below the lowest eigenvalue by Sturm counts; inside it, UMFPACK's LU at sigma itself.
+/// Below the spectrum (the usual request: the lowest modes), LDL' at sigma when the lowest
+/// eigenvalues are separated as seen from it, else at a shift moved up to just below the
+/// lowest eigenvalue by Sturm counts; inside the spectrum, UMFPACK's LU at sigma itself.
 /// `counter` has factorised K - sigma M already; `below` is its count there.
 ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatrix& K,
                               const SparseMatrix& M, int count, double sigma) {
