@@ -104,23 +104,21 @@ double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, 
   constexpr double kStraddle = 0.02;
   auto exhausted = [&] { return counter.factorisations() > kMaxFactorisations; };
 
-  // 1. hiN: widen from the upper bound until the wanted band lies below it.
+  // 1. hiN: at or above the wanted band's top, at the upper bound or one doubling of its
+  //    distance from sigma. Fewer than `count` eigenvalues below sigma + 2 (upperBound -
+  //    sigma) mean the wanted band is wider than lambda_1's distance from sigma (upperBound >=
+  //    lambda_1), so at sigma the ratios that set Lanczos's convergence are already far from 1;
+  //    the counts that would find lambda_1 cost more factorisations than they save (a plate's
+  //    or a grillage's spectrum: 2 here, 8 to find the band's top).
   double hiN = upperBound;
   int atHiN = counter.below(hiN);
   const bool boundHoldsOne = atHiN >= 1;
   const int atUpperBound = atHiN;
-  double width = std::max(upperBound - sigma, 1e-6 * std::abs(upperBound));
-  for (bool firstStep = true; atHiN < count; firstStep = false) {
+  if (atHiN < count) {
     if (atHiN < 0 || exhausted()) return sigma;
-    // Fewer than `count` eigenvalues below sigma + 2 (upperBound - sigma): the wanted band is
-    // wider than lambda_1's distance from sigma (upperBound >= lambda_1), so at sigma the
-    // ratios that set Lanczos's convergence are already far from 1; the counts that would
-    // find lambda_1 cost more factorisations than they save (a plate's or a grillage's
-    // spectrum: 2 here, 8 to find the band's top).
-    if (!firstStep) return sigma;
-    width *= 2;
-    hiN = sigma + width;
+    hiN = sigma + 2 * std::max(upperBound - sigma, 1e-6 * std::abs(upperBound));
     atHiN = counter.below(hiN);
+    if (atHiN < count) return sigma;
   }
   // 2. Narrow [lo, hi1] onto lambda_1. A probe goes to the middle (bisection) or, once two
   //    counts above lambda_1 differ, just below or just above where they place a band edge,
