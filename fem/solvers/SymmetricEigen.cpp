@@ -103,16 +103,24 @@ struct ShiftedInverse {
   bool fromCounter = false;
 };
 
+/// One step of inverse iteration with a factor of K - sigma M: x <- (K - sigma M)^-1 M x,
+/// normalised.
+void inverseIterationStep(const SparseLDLT& factor, const SparseMatrix& M, Eigen::VectorXd& x) {
+  x = factor.solve(M * x);
+  x /= x.norm();
+}
+
+double rayleighQuotient(const SparseMatrix& K, const SparseMatrix& M, const Eigen::VectorXd& x) {
+  return x.dot(K * x) / x.dot(M * x);
+}
+
 /// Rayleigh quotient after a few steps of inverse iteration with a factor of K - sigma M from
 /// a smooth start: an upper bound on the lowest eigenvalue, close to it (within the cluster it
 /// lies in; on a line of spans, high enough in the band that the counts there place its edge).
 double rayleighUpperBound(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
   Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(K.rows(), 1.0, 2.0);
-  for (int step = 0; step < 4; ++step) {
-    x = factor.solve(M * x);
-    x /= x.norm();
-  }
-  return x.dot(K * x) / x.dot(M * x);
+  for (int step = 0; step < 4; ++step) inverseIterationStep(factor, M, x);
+  return rayleighQuotient(K, M, x);
 }
 
 /// How fast inverse iteration with a factor of K - sigma M settles: its Rayleigh quotients q_k
@@ -129,9 +137,8 @@ double settlingRatio(const SparseLDLT& factor, const SparseMatrix& K, const Spar
   for (double& entry : x) entry = double(generator()) / double(generator.max()) - 0.5;
   double quotient[5] = {};
   for (int step = 1; step <= 4; ++step) {
-    x = factor.solve(M * x);
-    x /= x.norm();
-    if (step >= 2) quotient[step] = x.dot(K * x) / x.dot(M * x);
+    inverseIterationStep(factor, M, x);
+    if (step >= 2) quotient[step] = rayleighQuotient(K, M, x);
   }
   const double earlier = quotient[2] - quotient[3], later = quotient[3] - quotient[4];
   const double noise = 1e-12 * std::abs(quotient[4]);
