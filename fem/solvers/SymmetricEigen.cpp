@@ -250,13 +250,12 @@ LanczosRun lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
                   resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(), workd.data(),
                   workl.data(), lworkl, info);
     Eigen::Map<Eigen::VectorXd> x(&workd[ipntr[0] - 1], n), out(&workd[ipntr[1] - 1], n);
-    if (ido == -1) {
-      y = M * x;
-      op.solve(y, solution);
-      project(solution);
-      out = solution;
-    } else if (ido == 1) {
-      y = Eigen::Map<Eigen::VectorXd>(&workd[ipntr[2] - 1], n);  // M x, from ARPACK
+    if (ido == -1 || ido == 1) {
+      // M x: computed at the start, from ARPACK (which keeps it) after that.
+      if (ido == -1)
+        y = M * x;
+      else
+        y = Eigen::Map<Eigen::VectorXd>(&workd[ipntr[2] - 1], n);
       op.solve(y, solution);
       project(solution);
       out = solution;
@@ -328,8 +327,6 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
   LanczosRun run = lanczos(massNonzeros, op, count, basis, Eigen::MatrixXd(n, 0));
   EigenPairs& all = run.pairs;
   for (int attempt = 0;; ++attempt) {
-    // The shift was only moved within [sigma, lambda_1): nearest it is still nearest sigma.
-    EigenPairs out = nearest(all.values, all.vectors, count, op.shift);
     Eigen::VectorXd ascending = all.values;
     std::sort(ascending.begin(), ascending.end());
     const int missed =
@@ -338,6 +335,8 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
     if (missed == 0 || attempt == 2 || room < 1) {
       // Still missing after the retries: the caller reports it (the count itself can be off
       // by a few for a matrix this near singular, so the modes found are not thrown away).
+      // The shift was only moved within [sigma, lambda_1): nearest it is still nearest sigma.
+      EigenPairs out = nearest(all.values, all.vectors, count, op.shift);
       out.factorEntries = op.factorEntries;
       out.shiftUsed = op.shift;
       out.missedBySturmCount = missed;
