@@ -4,9 +4,10 @@
 #pragma once
 
 #include <Eigen/UmfPackSupport>
+#include <algorithm>
 #include <complex>
-#include <vector>
 
+#include "fem/solvers/KeptPattern.hpp"
 #include "fem/solvers/SparseLU.hpp"
 
 namespace beamrotor {
@@ -33,19 +34,14 @@ class RepeatedFactor {
   /// speed-independent bearings factorises K once).
   bool factorize(Matrix A) {
     if (!A.isCompressed()) A.makeCompressed();
-    const bool samePattern = analysed_ && outer_.size() == std::size_t(A.outerSize() + 1) &&
-                             inner_.size() == std::size_t(A.nonZeros()) &&
-                             std::equal(outer_.begin(), outer_.end(), A.outerIndexPtr()) &&
-                             std::equal(inner_.begin(), inner_.end(), A.innerIndexPtr());
+    const bool samePattern = pattern_.matches(A);  // false before the first analysis
     if (samePattern && factorizations_ > 0 &&
         std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), A_.valuePtr()))
       return factored_;
     A_ = std::move(A);
     if (!samePattern) {
       lu_.analyzePattern(A_);
-      outer_.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + A_.outerSize() + 1);
-      inner_.assign(A_.innerIndexPtr(), A_.innerIndexPtr() + A_.nonZeros());
-      analysed_ = true;
+      pattern_.keep(A_);
       ++analyses_;
     }
     lu_.factorize(A_);
@@ -76,8 +72,8 @@ class RepeatedFactor {
 
   Matrix A_;
   Lu lu_;
-  std::vector<int> outer_, inner_;
-  bool analysed_ = false, factored_ = false;
+  KeptPattern pattern_;  ///< of the matrix last analysed
+  bool factored_ = false;
   int analyses_ = 0, factorizations_ = 0;
 };
 

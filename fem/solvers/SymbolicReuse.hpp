@@ -9,8 +9,7 @@
 // non-symmetric system is always analysed anew.
 #pragma once
 
-#include <vector>
-
+#include "fem/solvers/KeptPattern.hpp"
 #include "fem/solvers/LinearSolver.hpp"
 
 namespace beamrotor {
@@ -30,11 +29,9 @@ class SymbolicReuse {
   long long reuses() const { return reuses_; }
 
  private:
-  bool samePattern(const SparseMatrix& A) const;
-
   LinearSolver solver_;
   bool reusable_ = false;  ///< solver_ holds a symmetric analysis of the pattern below
-  std::vector<int> columnStarts_, rows_;
+  KeptPattern pattern_;
   long long analyses_ = 0, reuses_ = 0;
 };
 
