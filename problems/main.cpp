@@ -4,9 +4,11 @@
 
 #include "fem/solvers/HeapReserve.hpp"
 #include "problems/cli/App.hpp"
+#include "problems/cli/HugePages.hpp"
 #include "problems/output/Interruption.hpp"
 
 int main(int argc, char** argv) {
+  beamrotor::cli::restartWithHugePages(argv);
   beamrotor::keepFreedMemory();
   const int code = beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
   // Interrupted while writing: the temporary directory is gone; now end as the signal asked.
