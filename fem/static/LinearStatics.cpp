@@ -41,19 +41,22 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
 double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
                      const LinearSolver& solver) {
   const Eigen::Index n = b.size();
-  std::vector<long double> r(b.data(), b.data() + n);
-  Eigen::VectorXd magnitude = Eigen::VectorXd::Zero(n);  // (|A| |x|)_i
-  for (int col = 0; col < A.outerSize(); ++col) {
-    const long double xc = x[col];
-    for (SparseMatrix::InnerIterator it(A, col); it; ++it) {
-      r[it.row()] -= static_cast<long double>(it.value()) * xc;
-      magnitude[it.row()] += std::abs(it.value() * x[col]);
+  // (|A| |x|)_i first, then |r_i| + eps (|A| |x|)_i in its place; r is freed before the solve
+  // (at 10^6 elements r is 45 MB, and the solve is when a static run's memory peaks).
+  Eigen::VectorXd perturbation = Eigen::VectorXd::Zero(n);
+  {
+    std::vector<long double> r(b.data(), b.data() + n);
+    for (int col = 0; col < A.outerSize(); ++col) {
+      const long double xc = x[col];
+      for (SparseMatrix::InnerIterator it(A, col); it; ++it) {
+        r[it.row()] -= static_cast<long double>(it.value()) * xc;
+        perturbation[it.row()] += std::abs(it.value() * x[col]);
+      }
     }
+    const double eps = std::numeric_limits<double>::epsilon();
+    for (Eigen::Index i = 0; i < n; ++i)
+      perturbation[i] = double(std::abs(r[i])) + eps * perturbation[i];
   }
-  const double eps = std::numeric_limits<double>::epsilon();
-  Eigen::VectorXd perturbation(n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    perturbation[i] = double(std::abs(r[i])) + eps * magnitude[i];
   const Eigen::VectorXd weight = A.diagonal().cwiseAbs().cwiseSqrt();
   const double size = weight.cwiseProduct(x).cwiseAbs().maxCoeff();
   const double error = weight.cwiseProduct(solver.solve(perturbation)).cwiseAbs().maxCoeff();
@@ -69,8 +72,10 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
   SparseAssembler assembler(model, dofs_);
   if (assembler.stiffnessSymmetric()) symmetry_ = MatrixSymmetry::byConstruction;
   std::move(assembler).assemble(MatrixKind::stiffness).swap(K_);
-  // The factor needs only the pairs that couple (its fill and flops fall by up to 3x).
+  // The factor needs only the pairs that couple (its fill and flops fall by up to 3x), and K
+  // keeps only their storage: a planar line's 40 % less, which the factor then reuses.
   dropExactZeros(K_);
+  K_.data().squeeze();
   setLoads(model);
 }
 
