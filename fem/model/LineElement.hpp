@@ -73,11 +73,11 @@ class LineElement : public Element {
                                                        SpanLoad load) const = 0;
   /// Whether some rotation of end 0 (start) or 1 (end) is released (a hinge).
   virtual bool releases(int end) const = 0;
+
+  const LineElement* asLineElement() const final { return this; }
 };
 
 /// The element as a line element, or null (springs, masses, bearings).
-inline const LineElement* asLine(const std::unique_ptr<Element>& e) {
-  return dynamic_cast<const LineElement*>(e.get());
-}
+inline const LineElement* asLine(const std::unique_ptr<Element>& e) { return e->asLineElement(); }
 
 }  // namespace beamrotor

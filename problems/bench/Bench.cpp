@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
@@ -16,6 +17,17 @@ double peakRssMb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
+}
+
+/// Anonymous memory now on transparent huge pages (AnonHugePages of /proc/self/smaps_rollup),
+/// MB; 0 where the file is missing.
+double hugePagesMb() {
+  std::ifstream rollup("/proc/self/smaps_rollup");
+  std::string field;
+  double kilobytes = 0;
+  while (rollup >> field)
+    if (field == "AnonHugePages:" && rollup >> kilobytes) return kilobytes / 1024.0;
+  return 0;
 }
 
 }  // namespace
@@ -39,6 +51,7 @@ BenchReport runBench(const BenchOptions& options) {
                                 "' is not available (available: planar, grid3d, rotor)");
   report.options = options;
   report.peakRssMb = peakRssMb();
+  report.hugePagesMb = hugePagesMb();
   return report;
 }
 
@@ -61,6 +74,7 @@ std::string benchJson(const BenchReport& r) {
   j["rel_error_static"] = r.relErrorStatic;
   for (const BenchFigure& f : r.figures) j[nlohmann::json::json_pointer(f.key)] = f.value;
   j["peak_rss_mb"] = r.peakRssMb;
+  j["huge_pages_mb"] = r.hugePagesMb;
   j["warnings"] = r.warnings;
   if (!r.exported.empty()) j["exported"] = r.exported;
   return j.dump(2);
@@ -82,7 +96,7 @@ std::string benchTable(const BenchReport& r) {
       << " s, " << r.frequenciesHz.size() << " modes, f1 = " << r.frequenciesHz[0] << " Hz ("
       << r.median.modalTotal / r.median.staticTotal << " x static)\n";
   for (const BenchFigure& f : r.figures) s << "  " << f.label << ": " << f.value << "\n";
-  s << "  peak RSS   " << r.peakRssMb << " MB\n";
+  s << "  peak RSS   " << r.peakRssMb << " MB (" << r.hugePagesMb << " MB on huge pages at the end)\n";
   for (const std::string& w : r.warnings) s << "  warning: " << w << "\n";
   for (const std::string& file : r.exported) s << "  exported   " << file << "\n";
   return s.str();

@@ -44,6 +44,7 @@ struct BenchReport {
   double relErrorStatic = 0;                 ///< the kind's exact static reference
   std::vector<BenchFigure> figures;
   double peakRssMb = 0;
+  double hugePagesMb = 0;                    ///< of the memory held at the end (MB)
   std::vector<std::string> exported;         ///< files written by --export
   std::vector<std::string> warnings;         ///< from the analyses (e.g. skipped modes)
 

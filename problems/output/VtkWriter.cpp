@@ -37,7 +37,7 @@ vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, int components, vt
 std::vector<const LineElement*> lineElements(const Model& model, std::vector<int>* indices) {
   std::vector<const LineElement*> lines;
   for (int i = 0; i < int(model.elements().size()); ++i)
-    if (const auto* line = dynamic_cast<const LineElement*>(model.elements()[i].get())) {
+    if (const auto* line = model.elements()[i]->asLineElement()) {
       lines.push_back(line);
       indices->push_back(i);
     }
