@@ -96,7 +96,8 @@ std::string benchTable(const BenchReport& r) {
       << " s, " << r.frequenciesHz.size() << " modes, f1 = " << r.frequenciesHz[0] << " Hz ("
       << r.median.modalTotal / r.median.staticTotal << " x static)\n";
   for (const BenchFigure& f : r.figures) s << "  " << f.label << ": " << f.value << "\n";
-  s << "  peak RSS   " << r.peakRssMb << " MB (" << r.hugePagesMb << " MB on huge pages at the end)\n";
+  s << "  peak RSS   " << r.peakRssMb << " MB (" << r.hugePagesMb
+    << " MB on huge pages at the end)\n";
   for (const std::string& w : r.warnings) s << "  warning: " << w << "\n";
   for (const std::string& file : r.exported) s << "  exported   " << file << "\n";
   return s.str();
