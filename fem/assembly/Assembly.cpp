@@ -65,15 +65,23 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
   std::vector<int> start, adj;
   nodeAdjacency(model, start, adj);
   // Free equations are numbered node by node, so walking a column's neighbour nodes in
-  // ascending order yields ascending row numbers. Count first, then fill in place.
+  // ascending order yields ascending row numbers. Count first, then fill in place. The
+  // columns of one node (consecutive) share their rows, listed once for the node.
   const int nf = dofs.freeCount();
+  std::vector<int> rows;
+  int rowsOfNode = -1;
   auto forEachRow = [&](int col, auto&& visit) {
     const int node = dofs.dofOf(col).node;
-    for (int k = start[node]; k < start[node + 1]; ++k)
-      for (Dof d : kAllDofs) {
-        const int row = dofs.equation(adj[k], d);
-        if (dofs.isFree(row)) visit(row);
-      }
+    if (node != rowsOfNode) {
+      rows.clear();
+      for (int k = start[node]; k < start[node + 1]; ++k)
+        for (Dof d : kAllDofs) {
+          const int row = dofs.equation(adj[k], d);
+          if (dofs.isFree(row)) rows.push_back(row);
+        }
+      rowsOfNode = node;
+    }
+    for (int row : rows) visit(row);
   };
   compressedPattern(nf, nf, forEachRow).swap(pattern_);  // no copy: Eigen has no move assignment
   stiffnessSymmetric_ = std::all_of(model.elements().begin(), model.elements().end(),

@@ -39,7 +39,12 @@ DofMap::DofMap(const Model& model) {
                                   ", which a support already holds");
   }
 
-  // 2. Number free dofs node by node, then constrained ones.
+  // 2. Number free dofs node by node, then constrained ones (the list sized once: pushed one
+  //    by one, its capacity would end up to twice its size, 16 MB more at 10^6 elements).
+  std::size_t count = 0;
+  for (const auto& node : slots_)
+    for (int slot : node) count += slot != kAbsent;
+  dofs_.reserve(count);
   for (int pass = 0; pass < 2; ++pass) {
     const int wanted = pass == 0 ? kPresent : kConstrained;
     for (int n = 0; n < int(slots_.size()); ++n)
