@@ -176,7 +176,16 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
 Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
                               bool constrainedOnly) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
-  const auto constrained = [&](const NodeDof& d) { return dofs.isConstrained(dofs.equation(d)); };
+  // Constrained dofs are the supports' (DofMap): an element touches one only at a supported
+  // node, which a byte a node tells without reading the dof map for every element dof.
+  std::vector<char> supported;
+  if (constrainedOnly) {
+    supported.assign(model.nodeCount(), 0);
+    for (const Support& s : model.supports()) supported[s.node] = 1;
+  }
+  const auto constrained = [&](const NodeDof& d) {
+    return supported[d.node] && dofs.isConstrained(dofs.equation(d));
+  };
   for (const auto& e : model.elements()) {
     const auto d = e->dofs();
     if (constrainedOnly && std::none_of(d.begin(), d.end(), constrained)) continue;
