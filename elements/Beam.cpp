@@ -266,7 +266,7 @@ void Beam::buildDofs() {
       }
       if (dropped) continue;
       dofs_[count_] = {nodes_[end], d};
-      globalIndex_[count_] = 6 * end + dofIndex(d);
+      globalIndex_[count_] = std::uint8_t(6 * end + dofIndex(d));
       ++count_;
     }
 }

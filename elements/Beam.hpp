@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -141,8 +142,9 @@ class Beam : public LineElement {
   Eigen::Vector3d qHalfRise_ = Eigen::Vector3d::Zero();
   std::vector<int> released_;  // local indices 0..11 of released rotations
   std::array<NodeDof, 12> dofs_{};
-  std::array<int, 12> globalIndex_{};  // position of each carried dof in the 12 globals
-  int count_ = 0;
+  // Position of each carried dof in the 12 globals (a byte each: 10^6 beams hold 36 MB less).
+  std::array<std::uint8_t, 12> globalIndex_{};
+  std::uint8_t count_ = 0;
 };
 
 }  // namespace beamrotor

@@ -57,9 +57,10 @@ double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eige
     for (Eigen::Index i = 0; i < n; ++i)
       perturbation[i] = double(std::abs(r[i])) + eps * perturbation[i];
   }
-  const Eigen::VectorXd weight = A.diagonal().cwiseAbs().cwiseSqrt();
+  const Eigen::VectorXd response = solver.solve(perturbation);
+  const Eigen::VectorXd weight = A.diagonal().cwiseAbs().cwiseSqrt();  // after the solve's peak
   const double size = weight.cwiseProduct(x).cwiseAbs().maxCoeff();
-  const double error = weight.cwiseProduct(solver.solve(perturbation)).cwiseAbs().maxCoeff();
+  const double error = weight.cwiseProduct(response).cwiseAbs().maxCoeff();
   if (!std::isfinite(error)) return std::numeric_limits<double>::infinity();
   return size > 0 ? error / size : (error > 0 ? std::numeric_limits<double>::infinity() : 0.0);
 }
@@ -130,14 +131,17 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   if (!sameFactor && !solver_->healthy(singularRcond)) requireHeld();
   factorSeconds_ += clock.lap();
 
-  // 2. Right-hand side: held values move to the right like prescribed ones.
-  Eigen::VectorXd b = rhs_;
+  // 2. Right-hand side: held values move to the right like prescribed ones (rhs_ itself, not
+  //    a copy, when nothing is held).
+  Eigen::VectorXd heldRhs;
   if (!held.empty()) {
     Eigen::VectorXd uHeld = Eigen::VectorXd::Zero(nf);
     for (const HeldDof& h : held) uHeld[h.equation] = h.value;
-    b -= K_ * uHeld;
-    for (const HeldDof& h : held) b[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
+    heldRhs = rhs_ - K_ * uHeld;
+    for (const HeldDof& h : held)
+      heldRhs[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
   }
+  const Eigen::VectorXd& b = held.empty() ? rhs_ : heldRhs;
   u.head(nf) = solver_->solve(b);
   roundOff_ = measuredError(A, b, u.head(nf), *solver_);
   if (!u.allFinite() || !std::isfinite(roundOff_)) {
