@@ -41,21 +41,22 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
 double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
                      const LinearSolver& solver) {
   const Eigen::Index n = b.size();
-  // (|A| |x|)_i first, then |r_i| + eps (|A| |x|)_i in its place; r is freed before the solve
-  // (at 10^6 elements r is 45 MB, and the solve is when a static run's memory peaks).
-  Eigen::VectorXd perturbation = Eigen::VectorXd::Zero(n);
-  {
-    std::vector<long double> r(b.data(), b.data() + n);
-    for (int col = 0; col < A.outerSize(); ++col) {
-      const long double xc = x[col];
-      for (SparseMatrix::InnerIterator it(A, col); it; ++it) {
-        r[it.row()] -= static_cast<long double>(it.value()) * xc;
-        perturbation[it.row()] += std::abs(it.value() * x[col]);
-      }
+  // Row i of A is column i of A' (of A itself when the solver took it as symmetric): each
+  // residual entry is one sum over a column, kept in extended precision in a register, with
+  // (|A| |x|)_i beside it, and no full-length extended-precision vector is stored.
+  SparseMatrix transposed;
+  if (!solver.symmetric()) transposed = A.transpose();
+  const SparseMatrix& rows = solver.symmetric() ? A : transposed;
+  const double eps = std::numeric_limits<double>::epsilon();
+  Eigen::VectorXd perturbation(n);
+  for (int i = 0; i < rows.outerSize(); ++i) {
+    long double r = b[i];
+    double magnitude = 0;
+    for (SparseMatrix::InnerIterator it(rows, i); it; ++it) {
+      r -= static_cast<long double>(it.value()) * x[it.index()];
+      magnitude += std::abs(it.value() * x[it.index()]);
     }
-    const double eps = std::numeric_limits<double>::epsilon();
-    for (Eigen::Index i = 0; i < n; ++i)
-      perturbation[i] = double(std::abs(r[i])) + eps * perturbation[i];
+    perturbation[i] = double(std::abs(r)) + eps * magnitude;
   }
   const Eigen::VectorXd response = solver.solve(perturbation);
   const Eigen::VectorXd weight = A.diagonal().cwiseAbs().cwiseSqrt();  // after the solve's peak
