@@ -18,11 +18,11 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
  public:
   /// Quiet: a zero pivot is reported through info() and rcond(), never printed.
   SparseLDLT() { cholmod().print = 0; }
-  ~SparseLDLT();
   SparseLDLT(const SparseLDLT&) = delete;
   SparseLDLT& operator=(const SparseLDLT&) = delete;
-  /// x = A^-1 b for the last factorisation, with CHOLMOD's solve workspace kept from one call
-  /// to the next: repeated solves (Lanczos) allocate nothing and touch no fresh pages.
+  /// x = A^-1 b for the last factorisation, with no workspace beyond x (and, under a
+  /// fill-reducing ordering, one vector for the permutation): repeated solves (Lanczos) into
+  /// the same x allocate nothing.
   void solveInto(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// CHOLMOD's cheap reciprocal condition estimate, min |D_ii| / max |D_ii| (0 when singular).
   /// It depends on the units of the dofs; see scaledRcond().
@@ -49,10 +49,6 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
 
  private:
   Eigen::VectorXd diagonal_;  ///< of the matrix last factorised
-  /// solveInto's solution and workspace, allocated by its first call.
-  mutable cholmod_dense* solution_ = nullptr;
-  mutable cholmod_dense* workY_ = nullptr;
-  mutable cholmod_dense* workE_ = nullptr;
 };
 
 /// Entries in the lower envelope of a structurally symmetric A: for each row, from its first
