@@ -91,16 +91,17 @@ void LinearStatics::setLoads(const Model& loaded) {
       throw std::invalid_argument("LinearStatics::setLoads: the loaded model's structure differs");
   }
   loaded_ = &loaded;
-  nodalLoads_ = nodalLoadVector(loaded, dofs_);
-  uPrescribed_ = prescribedValues(loaded, dofs_);
-  rhs_ = reducedRightHandSide(loaded, dofs_, loadVector(loaded, dofs_), uPrescribed_);
+  // Only the reduced right-hand side is kept: the nodal loads and the prescribed values are
+  // made again where needed (a pass over the loads or the supports), not held through the
+  // factorisation, when a static run's memory peaks.
+  rhs_ = reducedRightHandSide(loaded, dofs_, loadVector(loaded, dofs_),
+                              prescribedValues(loaded, dofs_));
 }
 
 Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double singularRcond) {
   Stopwatch clock;
-  Eigen::VectorXd u = uPrescribed_;
   const int nf = dofs_.freeCount();
-  if (nf == 0) return u;
+  if (nf == 0) return prescribedValues(*loaded_, dofs_);
 
   // 1. Factorise (symbolic analysis once, numeric every time).
   SparseMatrix heldMatrix;
@@ -143,6 +144,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
       heldRhs[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
   }
   const Eigen::VectorXd& b = held.empty() ? rhs_ : heldRhs;
+  Eigen::VectorXd u = prescribedValues(*loaded_, dofs_);
   u.head(nf) = solver_->solve(b);
   roundOff_ = measuredError(A, b, u.head(nf), *solver_);
   if (!u.allFinite() || !std::isfinite(roundOff_)) {
@@ -160,7 +162,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
 
 Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u, bool constrainedOnly) const {
   // Element forces already net out the loads the elements carry.
-  return elementForces(*loaded_, dofs_, u, constrainedOnly) - nodalLoads_;
+  return elementForces(*loaded_, dofs_, u, constrainedOnly) - nodalLoadVector(*loaded_, dofs_);
 }
 
 }  // namespace beamrotor

@@ -65,7 +65,7 @@ class LinearStatics {
   DofMap dofs_;
   SparseMatrix K_;
   MatrixSymmetry symmetry_ = MatrixSymmetry::unknown;  ///< of K_, known from its elements
-  Eigen::VectorXd nodalLoads_, uPrescribed_, rhs_;
+  Eigen::VectorXd rhs_;  ///< the free equations' loads less K_fc u_c (prescribed values)
   SymbolicReuse* reuse_;
   LinearSolver ownSolver_;
   LinearSolver* solver_ = &ownSolver_;  ///< ownSolver_, or reuse_'s once analysed
