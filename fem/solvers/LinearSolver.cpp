@@ -41,25 +41,24 @@ void SparseLDLT::solveInto(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
 }
 
 void SparseLDLT::factorize(const SparseMatrix& A) {
+  diagonal_ = A.diagonal();
   Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Upper>::factorize(A);
   // CHOLMOD keeps the analysis's workspace in its Common until told (24 bytes a row: 67 MB at
   // 10^6 planar elements, held through the solves, when a static run's memory peaks); the next
   // factorisation allocates what it needs again, from the heap this process keeps.
   cholmod_free_work(&cholmod());
-  // A's diagonal read now, not copied and kept through the factorisation.
-  scaledRcond_ = scaledRcondOf(A.diagonal());
 }
 
-double SparseLDLT::scaledRcondOf(const Eigen::VectorXd& diagonal) const {
+double SparseLDLT::scaledRcond() const {
   if (!m_factorizationIsOk || info() != Eigen::Success) return 0;
   const cholmod_factor& L = *m_cholmodFactor;
-  if (std::size_t(diagonal.size()) != L.n) return 0;
+  if (std::size_t(diagonal_.size()) != L.n) return 0;
   const int* start = static_cast<const int*>(L.p);
   const double* x = static_cast<const double*>(L.x);
   const int* perm = static_cast<const int*>(L.Perm);
   double smallest = std::numeric_limits<double>::infinity(), largest = 0;
   for (std::size_t j = 0; j < L.n; ++j) {
-    const double a = diagonal[perm ? perm[j] : int(j)];
+    const double a = diagonal_[perm ? perm[j] : int(j)];
     if (!(a > 0)) return 0;
     const double pivot = std::abs(x[start[j]]) / a;
     // An infinite entry (stiffnesses summing past the largest double) leaves inf / inf here;

@@ -27,14 +27,14 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   /// CHOLMOD's cheap reciprocal condition estimate, min |D_ii| / max |D_ii| (0 when singular).
   /// It depends on the units of the dofs; see scaledRcond().
   double rcond() const;
-  /// Numeric factorisation, and scaledRcond() of it.
+  /// Numeric factorisation; keeps A's diagonal for scaledRcond().
   void factorize(const SparseMatrix& A);
   /// The same estimate for the symmetrically scaled matrix D^-1/2 A D^-1/2, D = diag(A),
   /// from this factor: with P A P' = L D L', the scaled matrix factors as (S L S^-1) (S D S)
   /// (S L S^-1)' with S = D^-1/2 permuted, whose pivots are D_jj / A_pp. Independent of the
   /// units (and of any diagonal scaling) of the dofs; 0 when singular or when a diagonal
   /// entry of A is not positive (a dof nothing holds).
-  double scaledRcond() const { return scaledRcond_; }
+  double scaledRcond() const;
   /// Entries in the factor L (including its unit diagonal, which holds D).
   double factorEntries() const;
   /// Negative entries of D. By Sylvester's law of inertia, for A = K - sigma M this is the
@@ -48,9 +48,7 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   const char* orderingName() const;
 
  private:
-  /// scaledRcond of the factor just made, A's diagonal given.
-  double scaledRcondOf(const Eigen::VectorXd& diagonal) const;
-  double scaledRcond_ = 0;  ///< of the last factorisation (factorize)
+  Eigen::VectorXd diagonal_;  ///< of the matrix last factorised
 };
 
 /// Entries in the lower envelope of a structurally symmetric A: for each row, from its first
