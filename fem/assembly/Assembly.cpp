@@ -65,23 +65,15 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
   std::vector<int> start, adj;
   nodeAdjacency(model, start, adj);
   // Free equations are numbered node by node, so walking a column's neighbour nodes in
-  // ascending order yields ascending row numbers. Count first, then fill in place. The
-  // columns of one node (consecutive) share their rows, listed once for the node.
+  // ascending order yields ascending row numbers. Count first, then fill in place.
   const int nf = dofs.freeCount();
-  std::vector<int> rows;
-  int rowsOfNode = -1;
   auto forEachRow = [&](int col, auto&& visit) {
     const int node = dofs.dofOf(col).node;
-    if (node != rowsOfNode) {
-      rows.clear();
-      for (int k = start[node]; k < start[node + 1]; ++k)
-        for (Dof d : kAllDofs) {
-          const int row = dofs.equation(adj[k], d);
-          if (dofs.isFree(row)) rows.push_back(row);
-        }
-      rowsOfNode = node;
-    }
-    for (int row : rows) visit(row);
+    for (int k = start[node]; k < start[node + 1]; ++k)
+      for (Dof d : kAllDofs) {
+        const int row = dofs.equation(adj[k], d);
+        if (dofs.isFree(row)) visit(row);
+      }
   };
   compressedPattern(nf, nf, forEachRow).swap(pattern_);  // no copy: Eigen has no move assignment
   stiffnessSymmetric_ = std::all_of(model.elements().begin(), model.elements().end(),
@@ -176,16 +168,7 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
 Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
                               bool constrainedOnly) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
-  // Constrained dofs are the supports' (DofMap): an element touches one only at a supported
-  // node, which a byte a node tells without reading the dof map for every element dof.
-  std::vector<char> supported;
-  if (constrainedOnly) {
-    supported.assign(model.nodeCount(), 0);
-    for (const Support& s : model.supports()) supported[s.node] = 1;
-  }
-  const auto constrained = [&](const NodeDof& d) {
-    return supported[d.node] && dofs.isConstrained(dofs.equation(d));
-  };
+  const auto constrained = [&](const NodeDof& d) { return dofs.isConstrained(dofs.equation(d)); };
   for (const auto& e : model.elements()) {
     const auto d = e->dofs();
     if (constrainedOnly && std::none_of(d.begin(), d.end(), constrained)) continue;
