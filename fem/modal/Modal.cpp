@@ -72,8 +72,9 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
     result.warnings.push_back(
         "a Sturm count finds " + std::to_string(pairs.missedBySturmCount) +
         " eigenvalue(s) below the highest frequency listed that Lanczos did not return, even "
-        "when run again away from the modes it found: the list may skip modes (or the count is off, for a matrix "
-        "this near singular); give a shift near that frequency to compute them");
+        "when run again away from the modes it found: the list may skip modes (or the count "
+        "is off, for a matrix this near singular); give a shift near that frequency to "
+        "compute them");
 
   // 3. Describe each mode: frequency, effective masses, energy share per dof kind.
   std::array<Eigen::VectorXd, 3> Mr;

@@ -41,8 +41,9 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   /// number of eigenvalues of K x = lambda M x below sigma (M positive definite).
   int negativePivots() const;
   /// Symbolic analysis. When the matrix as numbered already has (almost) no room for fill,
-  /// or creates none, as a line of beams numbered node by node does, its own order is kept and the fill-
-  /// reducing ordering (AMD/METIS), which would cost more than the factorisation, is skipped.
+  /// or creates none, as a line of beams numbered node by node does, its own order is kept
+  /// and the fill-reducing ordering (AMD/METIS), which would cost more than the
+  /// factorisation, is skipped.
   void analyzePattern(const SparseMatrix& A);
   /// The fill-reducing ordering the analysis chose: "natural", "AMD", "METIS", "NESDIS".
   const char* orderingName() const;

@@ -140,8 +140,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     Eigen::VectorXd uHeld = Eigen::VectorXd::Zero(nf);
     for (const HeldDof& h : held) uHeld[h.equation] = h.value;
     heldRhs = rhs_ - K_ * uHeld;
-    for (const HeldDof& h : held)
-      heldRhs[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
+    for (const HeldDof& h : held) heldRhs[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
   }
   const Eigen::VectorXd& b = held.empty() ? rhs_ : heldRhs;
   Eigen::VectorXd u = prescribedValues(*loaded_, dofs_);
