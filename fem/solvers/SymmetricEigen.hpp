@@ -5,7 +5,9 @@
 // by Sturm counts (fem/solvers/SturmShift); UMFPACK LU at sigma inside the spectrum. A final
 // Sturm count proves that no mode was missed, and modes it shows missing are found by Lanczos
 // in the complement of those found. Small problems go to a dense solver instead, since
-// ARPACK needs more Lanczos vectors than wanted eigenpairs.
+// ARPACK needs more Lanczos vectors than wanted eigenpairs. Dofs that neither K nor M couples
+// (a straight line's axial and bending dofs) are solved block by block
+// (fem/solvers/DecoupledBlocks).
 #pragma once
 
 #include <Eigen/Dense>
