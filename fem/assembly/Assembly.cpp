@@ -180,6 +180,7 @@ Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eige
 
 void dropExactZeros(SparseMatrix& A) {
   A.prune([](int row, int col, double value) { return value != 0 || row == col; });
+  A.data().squeeze();
 }
 
 }  // namespace beamrotor

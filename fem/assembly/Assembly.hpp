@@ -52,7 +52,8 @@ class SparseAssembler {
 /// apart, so a flat grillage's K is two independent systems and a straight line's axial dofs
 /// are a chain of their own. Factorising without those entries gives the same solution with
 /// a half or a third of the fill and flops (see the performance issue's closing notes).
-/// Diagonal entries stay, so that a dof keeps its place in the pattern.
+/// Diagonal entries stay, so that a dof keeps its place in the pattern. The storage the
+/// dropped entries took is released.
 void dropExactZeros(SparseMatrix& A);
 
 /// The element matrix of one kind (empty when the element has none).

@@ -47,11 +47,16 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
   result.shift = options.shift;
 
   // 1. Assemble the free-free blocks of K and M.
+  // M takes over the assembler's pattern, which is not held while the eigensolver runs, and
+  // both keep only the entries that couple, as the statics keep K (a straight line's
+  // axial-bending pairs are over 40 % of its pattern): every product and copy reads less.
   const DofMap dofs(model);
-  const SparseAssembler assembler(model, dofs);
+  SparseAssembler assembler(model, dofs);
   SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
   if (state.size() > 0) K += assembler.assembleGeometric(state);
-  const SparseMatrix M = assembler.assemble(MatrixKind::mass);
+  SparseMatrix M = std::move(assembler).assemble(MatrixKind::mass);
+  dropExactZeros(K);
+  dropExactZeros(M);
   result.time.assembly = clock.lap();
 
   // 2. Eigenpairs nearest the shift. At shift 0 a singular K is a mechanism: name its dofs.

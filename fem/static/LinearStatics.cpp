@@ -77,7 +77,6 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
   // The factor needs only the pairs that couple (its fill and flops fall by up to 3x), and K
   // keeps only their storage: a planar line's 40 % less, which the factor then reuses.
   dropExactZeros(K_);
-  K_.data().squeeze();
   setLoads(model);
 }
 
