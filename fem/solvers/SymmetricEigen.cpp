@@ -320,8 +320,8 @@ EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
   // ones, over 40 % of the entries) the products read less memory and give the same sums.
   // A copy only when M holds such zeros (modal analysis passes M without them).
   SparseMatrix pruned;
-  const bool holdsZeros = std::find(M.valuePtr(), M.valuePtr() + M.nonZeros(), 0.0) !=
-                          M.valuePtr() + M.nonZeros();
+  const bool holdsZeros =
+      std::find(M.valuePtr(), M.valuePtr() + M.nonZeros(), 0.0) != M.valuePtr() + M.nonZeros();
   if (holdsZeros) {
     pruned = M;
     dropExactZeros(pruned);  // the rule the counter's pattern and the statics use
