@@ -94,10 +94,16 @@ double bandEdgeEstimate(const CountAbove& near, const CountAbove& far) {
 double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, int count) {
   // The search keeps three points: lo with no eigenvalue below it, hi1 with at least one and
   // hiN with at least `count`. It stops once [lo, hi1] (which holds lambda_1) is narrow next to
-  // [lo, hiN] (which holds the wanted band): then lo is a good shift.
+  // [lo, hiN] (which holds the wanted band): then lo is a good shift. hiN's count is often
+  // well above `count` (76 for 10 on the benchmark's 10^5 spans), so narrow means 1 %: at 5 %
+  // lo ended 2.5 widths of the wanted band below lambda_1 there, and Lanczos took 91 steps
+  // instead of 51.
   constexpr int kMaxFactorisations = 60;
-  constexpr double kNarrow = 0.05;
-  // Closer than this (relative) to lambda_1, K - sigma M is too near singular to trust rcond.
+  constexpr double kNarrow = 0.01;
+  // Probes stop this close (relative) to lambda_1, the level of a count's round-off on an
+  // ill-conditioned model; the wanted band of the benchmark's 10^5 spans is 4.7e-8 wide.
+  constexpr double kResolution = 1e-9;
+  // The margin below hi1 when lo's factor is not healthy enough to serve as the shift.
   constexpr double kClosest = 1e-7;
   // Probes placed by the band-edge estimate straddle it by this fraction of its distance to
   // hi1 (on the benchmark's 10^5 spans the estimate is within 0.2 % of that distance).
@@ -131,14 +137,15 @@ double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, 
   CountAbove far{hi1, 0};                                      // a larger count, or none yet
   bool aimAbove = false, bisectNext = false;
   double loRcond = 0;  // of the factor at lo, once a probe has moved lo up from sigma
-  while (hi1 - lo > kNarrow * (hiN - lo) && hi1 - lo > kClosest * std::abs(hi1) && !exhausted()) {
+  while (hi1 - lo > kNarrow * (hiN - lo) && hi1 - lo > kResolution * std::abs(hi1) &&
+         !exhausted()) {
     const double before = hi1 - lo;
     double probe = 0.5 * (lo + hi1);
     bool placed = false;
     if (!bisectNext && far.count > near.count && near.count >= 1) {
       const double edge = bandEdgeEstimate(near, far);
       const double margin =
-          std::max(kStraddle * (near.at - edge), 0.4 * kClosest * std::abs(edge));
+          std::max(kStraddle * (near.at - edge), 0.4 * kResolution * std::abs(edge));
       const double at = aimAbove ? edge + margin : edge - margin;
       if (at > lo && at < hi1) {
         probe = at;
@@ -161,10 +168,9 @@ double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, 
   }
   // lo lies below lambda_1 (its count is 0), and its factor, positive definite, is the one
   // Lanczos will use: healthy on the scaled system, it serves however close to lambda_1 lo
-  // lies. (On the benchmark's 10^5 spans lo was 5e-9 below lambda_1, a tenth of the wanted
-  // band's width, with scaled rcond 7e-6; the margin below hi1 put the shift 1.5 band widths
-  // down, and Lanczos took 71 steps where it takes 51 at lo.) Otherwise a relative margin
-  // below hi1.
+  // lies. (On the benchmark's 10^5 spans lo ends 6e-9 below lambda_1, a tenth of the wanted
+  // band's width, with scaled rcond 8e-6; a margin of 1e-7 below hi1 put the shift 1.5 band
+  // widths down, and Lanczos took 71 steps where it takes 51 at lo.) Otherwise that margin.
   constexpr double kHealthyShift = 1e4 * kSingularRcond;
   if (lo > sigma && loRcond > kHealthyShift) return lo;
   return std::max(sigma, std::min(lo, hi1 - kClosest * std::abs(hi1)));

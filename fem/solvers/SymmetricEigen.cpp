@@ -115,15 +115,6 @@ double rayleighQuotient(const SparseMatrix& K, const SparseMatrix& M, const Eige
   return x.dot(K * x) / x.dot(M * x);
 }
 
-/// Rayleigh quotient after a few steps of inverse iteration with a factor of K - sigma M from
-/// a smooth start: an upper bound on the lowest eigenvalue, close to it (within the cluster it
-/// lies in; on a line of spans, high enough in the band that the counts there place its edge).
-double rayleighUpperBound(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
-  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(K.rows(), 1.0, 2.0);
-  for (int step = 0; step < 4; ++step) inverseIterationStep(factor, M, x);
-  return rayleighQuotient(K, M, x);
-}
-
 /// How fast inverse iteration with a factor of K - sigma M settles: its Rayleigh quotients q_k
 /// approach lambda_1 from above with errors shrinking as r^2k, r = (lambda_1 - sigma) /
 /// (lambda_2 - sigma) (Parlett, The Symmetric Eigenvalue Problem, ch. 4), so the ratio of
@@ -132,7 +123,15 @@ double rayleighUpperBound(const SparseLDLT& factor, const SparseMatrix& K, const
 /// alternating modes and made a tight band look separated. 1 when the differences are all
 /// round-off: q moves that little inside a tight cluster (counted as one), and as little once a
 /// very well separated lambda_1 is found (then the shift search's first counts end it).
-double settlingRatio(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
+struct Settling {
+  double ratio = 1;
+  /// q4, a Rayleigh quotient: an upper bound on lambda_1, and from a start that holds every
+  /// mode a close one (on the benchmark's line of spans near the band's lower edge, where a
+  /// smooth start's quotient lay 3.3 lambda_1 up and cost the search two more counts).
+  double quotient = 0;
+};
+
+Settling settling(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
   std::minstd_rand generator(20261125);
   Eigen::VectorXd x(K.rows());
   for (double& entry : x) entry = double(generator()) / double(generator.max()) - 0.5;
@@ -143,7 +142,7 @@ double settlingRatio(const SparseLDLT& factor, const SparseMatrix& K, const Spar
   }
   const double earlier = quotient[2] - quotient[3], later = quotient[3] - quotient[4];
   const double noise = 1e-12 * std::abs(quotient[4]);
-  return earlier > noise ? std::max(0.0, later) / earlier : 1.0;
+  return {earlier > noise ? std::max(0.0, later) / earlier : 1.0, quotient[4]};
 }
 
 /// Below the spectrum (the usual request: the lowest modes), LDL' at sigma when the lowest
@@ -161,9 +160,9 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
     // the shift moves up to just below lambda_1.
     constexpr double kSeparated = 0.25;
     op.shift = sigma;
-    if (!(settlingRatio(counter.factor(), K, M) < kSeparated)) {
-      const double upper = rayleighUpperBound(counter.factor(), K, M);
-      op.shift = shiftBelowLowest(counter, sigma, upper, count);
+    const Settling settled = settling(counter.factor(), K, M);
+    if (!(settled.ratio < kSeparated)) {
+      op.shift = shiftBelowLowest(counter, sigma, settled.quotient, count);
       // The counter's own factor, refactorised at the shift: its symbolic analysis and
       // storage serve again. A later count overwrites it; the caller refactorises it then.
       counter.below(op.shift);
