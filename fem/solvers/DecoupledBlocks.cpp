@@ -40,14 +40,14 @@ void joinCoupled(const SparseMatrix& A, DofSets& sets) {
 
 LargestBlock largestBlock(const SparseMatrix& K, const SparseMatrix& M) {
   const int n = int(K.rows());
+  LargestBlock out;
+  if (n == 0) return out;
   DofSets sets(n);
   joinCoupled(K, sets);
   joinCoupled(M, sets);
   int largest = 0;
   for (int i = 1; i < n; ++i)
     if (sets.size(i) > sets.size(largest)) largest = i;
-  LargestBlock out;
-  if (n == 0) return out;
   const int root = sets.root(largest);
   out.dofs.reserve(sets.size(root));
   out.rest.reserve(n - sets.size(root));

@@ -300,10 +300,15 @@ LanczosRun lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
   return run;
 }
 
+/// Whether `count` eigenpairs of an n-dof pencil go to the dense solver.
+bool densePathSuits(int n, int count) {
+  return n <= kDenseLimit || count >= n - 1;
+}
+
 /// The pencil taken whole: a dense solve or shift-invert Lanczos.
 EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count, double sigma) {
   const int n = int(K.rows());
-  if (n <= kDenseLimit || count >= n - 1) {
+  if (densePathSuits(n, count)) {
     EigenPairs dense = denseEigenpairs(K, M, count, sigma);
     dense.shiftUsed = sigma;
     return dense;
@@ -398,14 +403,14 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
                                double sigma) {
   const int n = int(K.rows());
   if (count <= 0 || n == 0) return {};
-  if (n <= kDenseLimit || count >= n - 1) return wholeEigenpairs(K, M, count, sigma);
+  if (densePathSuits(n, count)) return wholeEigenpairs(K, M, count, sigma);
   // Blocks that do not couple are solved apart (fem/solvers/DecoupledBlocks): Lanczos on the
   // largest, where a structure's lowest modes usually all lie, and the rest only when Sturm
   // counts find eigenvalues of it nearer sigma than the farthest the largest gave. Each
   // Lanczos step then reads only its block's vectors: a straight planar line's bending block
   // is two thirds of its dofs, and its axial chains, far stiffer, cost two factorisations.
   // Small blocks (under the dense limit) or many wanted modes are not worth a split.
-  LargestBlock split = largestBlock(K, M);
+  const LargestBlock split = largestBlock(K, M);
   if (split.rest.empty() || int(split.dofs.size()) <= kDenseLimit ||
       2 * count > int(split.dofs.size()))
     return wholeEigenpairs(K, M, count, sigma);
