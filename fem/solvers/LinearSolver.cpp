@@ -13,29 +13,31 @@ double SparseLDLT::rcond() const {
   return cholmod_rcond(m_cholmodFactor, &const_cast<SparseLDLT*>(this)->cholmod());
 }
 
-void SparseLDLT::solveInto(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-  // P A P' = L D L' (L unit lower, D on its diagonal): x = P' L'^-1 D^-1 L^-1 P b, by Eigen's
-  // sparse triangular solves on CHOLMOD's columns (each starts at its diagonal; a simplicial
-  // factor may leave room after a column, so its length is L.nz, not the next start).
-  // cholmod_solve would do the same with a workspace of four vectors (four times the memory
-  // of x: 90 MB at 10^6 planar elements, when a static run's memory peaks).
+SparseLDLT::FactorView SparseLDLT::factorView() const {
   const cholmod_factor& f = *m_cholmodFactor;
   const int n = int(f.n);
-  const auto* start = static_cast<const int*>(f.p);
-  const auto* values = static_cast<const double*>(f.x);
-  const Eigen::Map<const SparseMatrix> L(n, n, Eigen::Index(f.nzmax), start,
-                                         static_cast<const int*>(f.i), values,
-                                         static_cast<const int*>(f.nz));
   const auto* perm = static_cast<const int*>(f.Perm);
-  const bool permuted = perm && f.ordering != CHOLMOD_NATURAL;
+  return {Eigen::Map<const SparseMatrix>(
+              n, n, Eigen::Index(f.nzmax), static_cast<const int*>(f.p),
+              static_cast<const int*>(f.i), static_cast<const double*>(f.x),
+              static_cast<const int*>(f.nz)),
+          f.ordering != CHOLMOD_NATURAL ? perm : nullptr};
+}
+
+void SparseLDLT::solveInto(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // x = P' L'^-1 D^-1 L^-1 P b, by Eigen's sparse triangular solves on CHOLMOD's columns.
+  // cholmod_solve would do the same with a workspace of four vectors (four times the memory
+  // of x: 90 MB at 10^6 planar elements, when a static run's memory peaks).
+  const FactorView f = factorView();
+  const Eigen::Index n = f.L.cols();
   x.resize(n);
-  for (int k = 0; k < n; ++k) x[k] = b[permuted ? perm[k] : k];
-  L.triangularView<Eigen::UnitLower>().solveInPlace(x);
-  for (int j = 0; j < n; ++j) x[j] /= values[start[j]];
-  L.transpose().triangularView<Eigen::UnitUpper>().solveInPlace(x);
-  if (permuted) {
+  for (Eigen::Index k = 0; k < n; ++k) x[k] = b[f.perm ? f.perm[k] : k];
+  f.L.triangularView<Eigen::UnitLower>().solveInPlace(x);
+  for (Eigen::Index j = 0; j < n; ++j) x[j] /= f.pivot(j);
+  f.L.transpose().triangularView<Eigen::UnitUpper>().solveInPlace(x);
+  if (f.perm) {
     Eigen::VectorXd y(n);
-    for (int k = 0; k < n; ++k) y[perm[k]] = x[k];
+    for (Eigen::Index k = 0; k < n; ++k) y[f.perm[k]] = x[k];
     x.swap(y);
   }
 }
@@ -79,6 +81,13 @@ double SparseLDLT::factorEntries() const {
   return entries;
 }
 
+double SparseLDLT::predictedFactorEntries() const {
+  if (!m_cholmodFactor) return 0;
+  // A symbolic factor holds its predicted column counts.
+  const int* counts = static_cast<const int*>(m_cholmodFactor->ColCount);
+  return std::accumulate(counts, counts + m_cholmodFactor->n, 0.0);
+}
+
 long long lowerEnvelope(const SparseMatrix& A) {
   long long entries = 0;
   for (int j = 0; j < A.cols(); ++j) {
@@ -112,10 +121,7 @@ void SparseLDLT::analyzePattern(const SparseMatrix& A) {
   // matrix's own order counts the true fill (an elimination tree and column counts, linear in
   // the entries); AMD runs only when that fill is large.
   analyseWith(CHOLMOD_NATURAL);
-  // A symbolic factor holds its predicted column counts.
-  const int* counts = static_cast<const int*>(m_cholmodFactor->ColCount);
-  const double naturalEntries = std::accumulate(counts, counts + A.cols(), 0.0);
-  if (naturalEntries > 1.2 * lowerEntries) analyseWith(CHOLMOD_AMD);
+  if (predictedFactorEntries() > 1.2 * lowerEntries) analyseWith(CHOLMOD_AMD);
 }
 
 int SparseLDLT::negativePivots() const {

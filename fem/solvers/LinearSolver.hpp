@@ -37,6 +37,8 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   double scaledRcond() const;
   /// Entries in the factor L (including its unit diagonal, which holds D).
   double factorEntries() const;
+  /// The same, as the symbolic analysis predicts it (before factorize()).
+  double predictedFactorEntries() const;
   /// Negative entries of D. By Sylvester's law of inertia, for A = K - sigma M this is the
   /// number of eigenvalues of K x = lambda M x below sigma (M positive definite).
   int negativePivots() const;
@@ -47,6 +49,17 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   void analyzePattern(const SparseMatrix& A);
   /// The fill-reducing ordering the analysis chose: "natural", "AMD", "METIS", "NESDIS".
   const char* orderingName() const;
+
+  /// The last factorisation as CHOLMOD holds it, P A P' = L D L': L unit lower, each column
+  /// starting at its diagonal entry, which holds D (a simplicial factor may leave room after a
+  /// column, so its length is its inner count, not the next start); `perm` lists P (row k of
+  /// P A P' is row perm[k] of A), null in A's own order.
+  struct FactorView {
+    Eigen::Map<const SparseMatrix> L;
+    const int* perm;
+    double pivot(Eigen::Index j) const { return L.valuePtr()[L.outerIndexPtr()[j]]; }
+  };
+  FactorView factorView() const;
 
  private:
   Eigen::VectorXd diagonal_;  ///< of the matrix last factorised

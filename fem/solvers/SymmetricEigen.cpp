@@ -11,6 +11,7 @@
 
 #include "fem/solvers/DecoupledBlocks.hpp"
 #include "fem/solvers/Errors.hpp"
+#include "fem/solvers/MassFactor.hpp"
 #include "fem/solvers/SparseLU.hpp"
 #include "fem/solvers/SturmShift.hpp"
 
@@ -234,33 +235,52 @@ struct LanczosRun {
   std::vector<double> ritzFloors;
 };
 
-LanczosRun lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWanted, int basis,
-                   const Eigen::MatrixXd& locked) {
+/// Shift-invert Lanczos for the `nevWanted` eigenpairs nearest op.shift, in the complement of
+/// the M-orthonormal columns of `locked`. With a factor M = G G' (`massFactor`), in standard
+/// form on G' (K - shift M)^-1 G (ARPACK's mode 1); else on (K - shift M)^-1 M in the M inner
+/// product (mode 3).
+LanczosRun lanczos(const SparseMatrix& M, const MassFactor* massFactor, const ShiftedInverse& op,
+                   int nevWanted, int basis, const Eigen::MatrixXd& locked) {
   const a_int n = a_int(M.rows());
   const a_int nev = nevWanted;
   const a_int ncv = std::min<a_int>(n, std::max<a_int>(basis, nev + 2));
   const a_int lworkl = ncv * (ncv + 8);
+  const bool standard = massFactor != nullptr;
+  const arpack::bmat form = standard ? arpack::bmat::identity : arpack::bmat::generalized;
   Eigen::VectorXd resid = fixedStart(n);
   std::vector<double> v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
   std::array<a_int, 11> iparam{}, ipntr{};
-  iparam[0] = 1;             // exact shifts
-  iparam[2] = kMaxRestarts;  // maximum Arnoldi restarts
-  iparam[6] = 3;             // mode 3: shift-invert
+  iparam[0] = 1;                   // exact shifts
+  iparam[2] = kMaxRestarts;        // maximum Arnoldi restarts
+  iparam[6] = standard ? 1 : 3;    // mode 1 on the symmetric operator, or 3: shift-invert
   // ARPACK's own random start (info = 0) goes on from its last state, so a second run in one
   // process started elsewhere: on the benchmark's line of 10^5 spans it took 51 or 72 steps.
   a_int ido = 0, info = 1;  // start from resid
   const double tol = 0.0;  // machine precision
   Eigen::VectorXd y(n), solution(n);
-  const Eigen::MatrixXd massLocked = M * locked;  // M X, for X' M z = (M X)' z
-  auto project = [&](Eigen::VectorXd& z) {
-    if (locked.cols() > 0) z -= locked * (massLocked.transpose() * z);
+  // The complement of the locked X: z -= B (C' z), with B = X and C = M X (X' M z = (M X)' z),
+  // or, in standard form, where the vectors are G' x, B = C = G' X.
+  Eigen::MatrixXd lockedBasis(n, locked.cols());
+  if (standard)
+    for (Eigen::Index k = 0; k < locked.cols(); ++k)
+      massFactor->multiplyTransposed(locked.col(k), lockedBasis.col(k));
+  else
+    lockedBasis = locked;
+  const Eigen::MatrixXd lockedDual = standard ? lockedBasis : Eigen::MatrixXd(M * locked);
+  auto project = [&](auto&& z) {
+    if (locked.cols() > 0) z -= lockedBasis * (lockedDual.transpose() * z);
   };
   while (true) {
-    arpack::saupd(ido, arpack::bmat::generalized, n, arpack::which::largest_magnitude, nev, tol,
-                  resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(), workd.data(),
-                  workl.data(), lworkl, info);
+    arpack::saupd(ido, form, n, arpack::which::largest_magnitude, nev, tol, resid.data(), ncv,
+                  v.data(), n, iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl,
+                  info);
     Eigen::Map<Eigen::VectorXd> x(&workd[ipntr[0] - 1], n), out(&workd[ipntr[1] - 1], n);
-    if (ido == -1 || ido == 1) {
+    if (standard && (ido == -1 || ido == 1)) {
+      massFactor->multiply(x, y);
+      op.solve(y, solution);
+      massFactor->multiplyTransposed(solution, out);
+      project(out);
+    } else if (ido == -1 || ido == 1) {
       // M x: computed at the start, from ARPACK (which keeps it) after that.
       if (ido == -1)
         y = M * x;
@@ -285,25 +305,28 @@ LanczosRun lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nevWante
                      " restarts (" + std::to_string(iparam[4]) + " of " + std::to_string(nev) +
                      " modes)");
 
-  // The Ritz values of (K - shift M)^-1 M the run ended with, and their error estimates
-  // (dsaupd leaves them in workl at ipntr[5] and ipntr[6]); mu +- e is lambda = shift + 1/mu
-  // within about e / mu^2.
+  // The Ritz values of the operator the run ended with, mu = 1 / (lambda - shift) in either
+  // form, and their error estimates (dsaupd leaves them in workl at ipntr[5] and ipntr[6]);
+  // mu +- e is lambda = shift + 1/mu within about e / mu^2.
   LanczosRun run;
   for (a_int k = 0; k < ncv; ++k) {
     const double mu = workl[ipntr[5] - 1 + k], estimate = std::abs(workl[ipntr[6] - 1 + k]);
     if (std::abs(mu) > estimate) run.ritzFloors.push_back(op.shift + 1 / mu - estimate / (mu * mu));
   }
 
-  // Ritz vectors.
+  // Ritz vectors (mode 3 returns lambda; mode 1 the operator's mu and G' x).
   std::vector<a_int> select(ncv);
   Eigen::VectorXd d(nev);
   Eigen::MatrixXd z(n, nev);
   arpack::seupd(1, arpack::howmny::ritz_vectors, select.data(), d.data(), z.data(), n, op.shift,
-                arpack::bmat::generalized, n, arpack::which::largest_magnitude, nev, tol,
-                resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(), workd.data(),
-                workl.data(), lworkl, info);
+                form, n, arpack::which::largest_magnitude, nev, tol, resid.data(), ncv, v.data(),
+                n, iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl, info);
   if (info != 0)
     throw SolveError("modal analysis: ARPACK dseupd failed with info = " + std::to_string(info));
+  if (standard) {
+    d = (op.shift + d.array().inverse()).matrix();
+    for (int k = 0; k < nev; ++k) massFactor->solveTransposed(z.col(k));
+  }
   for (int k = 0; k < nev; ++k) z.col(k) /= std::sqrt(z.col(k).dot(M * z.col(k)));
   run.pairs.values = d;
   run.pairs.vectors = std::move(z);
@@ -344,13 +367,14 @@ EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
     dropExactZeros(pruned);  // the rule the counter's pattern and the statics use
   }
   const SparseMatrix& massNonzeros = holdsZeros ? pruned : M;
+  const std::unique_ptr<MassFactor> massFactor = MassFactor::ofMass(massNonzeros);
   // The Lanczos basis: three vectors per wanted mode (at least 20). Every step
   // reorthogonalises against the whole basis, so a larger one costs more per step than it
   // saves in steps: on the benchmark's line of 10^5 spans (10 modes in a band 5e-8 wide) 30
   // vectors took 71 steps and 4.0 s inside ARPACK, 41 took 105 steps and 9.2 s, 50 took 91
   // steps and 10 s; below 3 per mode (24) Lanczos missed a mode of the band and ran again.
   const int basis = std::max(3 * count, 20);
-  LanczosRun run = lanczos(massNonzeros, op, count, basis, Eigen::MatrixXd(n, 0));
+  LanczosRun run = lanczos(massNonzeros, massFactor.get(), op, count, basis, Eigen::MatrixXd(n, 0));
   EigenPairs& all = run.pairs;
   for (int attempt = 0;; ++attempt) {
     Eigen::VectorXd ascending = all.values;
@@ -370,7 +394,8 @@ EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
     }
     // The Sturm check refactorised the counter away from the shift.
     if (op.fromCounter) counter.below(op.shift);
-    LanczosRun more = lanczos(massNonzeros, op, std::min(room, missed + 2), basis, all.vectors);
+    LanczosRun more =
+        lanczos(massNonzeros, massFactor.get(), op, std::min(room, missed + 2), basis, all.vectors);
     const Eigen::Index found = all.values.size(), added = more.pairs.values.size();
     all.values.conservativeResize(found + added);
     all.values.tail(added) = more.pairs.values;
