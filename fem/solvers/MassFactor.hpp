@@ -8,19 +8,18 @@
 #pragma once
 
 #include <memory>
-#include <vector>
 
 #include "fem/solvers/LinearSolver.hpp"
 
 namespace beamrotor {
 
-/// G = P' L D^1/2 from CHOLMOD's P M P' = L D L'.
+/// G = L D^1/2 from CHOLMOD's M = L D L', in M's own order.
 class MassFactor {
  public:
   /// The factor of M when Lanczos in standard form suits it: M positive definite and well
   /// conditioned on the scaled system (the eigenvectors come back through G'^-1), and its
-  /// factor holding no more entries than M (little fill); null otherwise (a lumped M with
-  /// massless rotations, a 3D frame's fill).
+  /// factor in its own order holding no more entries than M (little fill); null otherwise (a
+  /// lumped M with massless rotations, a 3D frame's fill, a numbering without a band).
   static std::unique_ptr<MassFactor> ofMass(const SparseMatrix& M);
 
   /// y = G x.
@@ -32,8 +31,7 @@ class MassFactor {
 
  private:
   MassFactor() = default;
-  SparseMatrix lower_;    ///< L D^1/2
-  std::vector<int> perm_;  ///< P as a list (row k of P M P' is row perm_[k] of M); empty: none
+  SparseMatrix lower_;  ///< L D^1/2
 };
 
 }  // namespace beamrotor
