@@ -13,12 +13,11 @@ namespace beamrotor {
 
 namespace {
 
-/// Free-length vector that moves every free dof of kind d by one (a rigid translation).
-Eigen::VectorXd unitTranslation(const DofMap& dofs, Dof d) {
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.freeCount());
-  for (int eq = 0; eq < dofs.freeCount(); ++eq)
-    if (dofs.dofOf(eq).dof == d) r[eq] = 1;
-  return r;
+/// The kind (dofIndex) of each free dof.
+std::vector<int> kindOfEachEquation(const DofMap& dofs) {
+  std::vector<int> kind(dofs.freeCount());
+  for (int eq = 0; eq < dofs.freeCount(); ++eq) kind[eq] = dofIndex(dofs.dofOf(eq).dof);
+  return kind;
 }
 
 std::string describeMode(const std::array<double, kDofKinds>& share) {
@@ -81,27 +80,31 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
         "is off, for a matrix this near singular); give a shift near that frequency to "
         "compute them");
 
-  // 3. Describe each mode: frequency, effective masses, energy share per dof kind.
-  std::array<Eigen::VectorXd, 3> Mr;
-  for (int k = 0; k < 3; ++k) {
-    const Eigen::VectorXd r = unitTranslation(dofs, kAllDofs[k]);
-    Mr[k] = M * r;
-    result.totalMass[k] = r.dot(Mr[k]);
-  }
+  // 3. Describe each mode: frequency, effective masses, energy share per dof kind. With r_k
+  // the rigid translation along axis k (1 on each free dof of that kind), the total mass is
+  // r_k' M r_k, the sum of M's entries between dofs of kind k, and a mode's participation
+  // r_k' M phi is the sum of M phi over those dofs: one pass over M for all modes.
+  const std::vector<int> kind = kindOfEachEquation(dofs);
+  for (int col = 0; col < M.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(M, col); it; ++it)
+      if (kind[col] < 3 && kind[it.row()] == kind[col]) result.totalMass[kind[col]] += it.value();
+  const Eigen::MatrixXd massTimesModes = M * pairs.vectors;
   for (int m = 0; m < int(pairs.values.size()); ++m) {
     Mode mode;
-    const Eigen::VectorXd phi = pairs.vectors.col(m);
+    const auto phi = pairs.vectors.col(m);
+    const auto Mphi = massTimesModes.col(m);
     mode.eigenvalue = pairs.values[m];
     mode.frequencyHz = std::sqrt(std::max(0.0, mode.eigenvalue)) / (2 * std::numbers::pi);
     mode.shape = freeToNodalField(model, dofs, phi);
-    for (int k = 0; k < 3; ++k) mode.effectiveMass[k] = std::pow(phi.dot(Mr[k]), 2);
-    const Eigen::VectorXd Mphi = M * phi;
+    std::array<double, 3> participation{};
     double sum = 0;
     for (int eq = 0; eq < dofs.freeCount(); ++eq) {
+      if (kind[eq] < 3) participation[kind[eq]] += Mphi[eq];
       const double e = std::abs(phi[eq] * Mphi[eq]);
-      mode.energyShare[dofIndex(dofs.dofOf(eq).dof)] += e;
+      mode.energyShare[kind[eq]] += e;
       sum += e;
     }
+    for (int k = 0; k < 3; ++k) mode.effectiveMass[k] = participation[k] * participation[k];
     if (sum > 0)
       for (double& s : mode.energyShare) s /= sum;
     mode.description = describeMode(mode.energyShare);

@@ -61,6 +61,7 @@ SturmCounter::SturmCounter(const SparseMatrix& K, const SparseMatrix& M)
     : K_(K), M_(M), shifted_(unionPattern(K, M)) {}
 
 int SturmCounter::below(double sigma) {
+  if (sigma == factorisedAt_) return countThere_;
   fillShifted(K_, M_, sigma, shifted_);
   if (!analysed_) {
     ldlt_.analyzePattern(shifted_);
@@ -68,8 +69,9 @@ int SturmCounter::below(double sigma) {
   }
   ldlt_.factorize(shifted_);
   ++factorisations_;
-  if (ldlt_.info() != Eigen::Success) return -1;
-  return ldlt_.negativePivots();
+  factorisedAt_ = sigma;
+  countThere_ = ldlt_.info() != Eigen::Success ? -1 : ldlt_.negativePivots();
+  return countThere_;
 }
 
 namespace {

@@ -5,6 +5,8 @@
 // of each other as spans), while just below the cluster they are far from 1.
 #pragma once
 
+#include <limits>
+
 #include "fem/assembly/Assembly.hpp"
 #include "fem/solvers/LinearSolver.hpp"
 
@@ -15,6 +17,7 @@ class SturmCounter {
   /// K, M symmetric with M positive definite on the free dofs; both must outlive this.
   SturmCounter(const SparseMatrix& K, const SparseMatrix& M);
   /// Number of eigenvalues below sigma; -1 when K - sigma M is singular to working precision.
+  /// The sigma of the last count again costs nothing (its factor is still held).
   int below(double sigma);
   /// Factorisations done so far.
   int factorisations() const { return factorisations_; }
@@ -31,6 +34,8 @@ class SturmCounter {
   SparseLDLT ldlt_;
   bool analysed_ = false;
   int factorisations_ = 0;
+  double factorisedAt_ = std::numeric_limits<double>::quiet_NaN();  ///< sigma of ldlt_
+  int countThere_ = -1;
 };
 
 /// For the `count` lowest eigenvalues above sigma (no eigenvalue below sigma): a shift in

@@ -171,8 +171,9 @@ ShiftedInverse shiftedInverse(SturmCounter& counter, int below, const SparseMatr
     const Settling settled = settling(counter.factor(), K, M);
     if (!(settled.ratio < kSeparated)) {
       op.shift = shiftBelowLowest(counter, sigma, settled.quotient, count);
-      // The counter's own factor, refactorised at the shift: its symbolic analysis and
-      // storage serve again. A later count overwrites it; the caller refactorises it then.
+      // The counter's own factor at the shift (the search's last count is often there): its
+      // symbolic analysis and storage serve again. A later count overwrites it; the caller
+      // refactorises it then.
       counter.below(op.shift);
     }
     const SparseLDLT& ldlt = counter.factor();
@@ -324,10 +325,12 @@ LanczosRun lanczos(const SparseMatrix& M, const MassFactor* massFactor, const Sh
   if (info != 0)
     throw SolveError("modal analysis: ARPACK dseupd failed with info = " + std::to_string(info));
   if (standard) {
+    // x = G'^-1 (G' x): x' M x = (G' x)' (G' x) = 1 already, as ARPACK's vectors are unit.
     d = (op.shift + d.array().inverse()).matrix();
     for (int k = 0; k < nev; ++k) massFactor->solveTransposed(z.col(k));
+  } else {
+    for (int k = 0; k < nev; ++k) z.col(k) /= std::sqrt(z.col(k).dot(M * z.col(k)));
   }
-  for (int k = 0; k < nev; ++k) z.col(k) /= std::sqrt(z.col(k).dot(M * z.col(k)));
   run.pairs.values = d;
   run.pairs.vectors = std::move(z);
   return run;

@@ -119,6 +119,11 @@ TEST_SUITE("sturm shift") {
         CHECK(fresh.below(sigma) == k);
       }
       CHECK(reused.factorisations() == 8);
+      // The last shift again: the same count from the factor held, none computed.
+      const double last = 0.5 * (p.exact[1] + p.exact[2]);
+      CHECK(reused.below(last) == 2);
+      CHECK(reused.factorisations() == 8);
+      CHECK(reused.factor().negativePivots() == 2);
     }
   }
 
