@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <arpack/arpack.hpp>
 #include <functional>
 #include <memory>
@@ -336,6 +337,21 @@ LanczosRun lanczos(const SparseMatrix& M, const MassFactor* massFactor, const Sh
   return run;
 }
 
+}  // namespace
+
+int lanczosBasisSize(int count) {
+  // Every step reorthogonalises against the whole basis, so a larger one costs more per step
+  // than it saves in steps, and a smaller one restarts more often. Steps for 10 modes on the
+  // planar benchmark's lines of 10^3, 3x10^3, 10^4, 3x10^4 and 10^5 spans (fixed start, shift
+  // as found): 21 vectors 55-106, 24 vectors 53-72, 26 vectors 43-57, 28 vectors 46-47, 30
+  // vectors 49-51 (4.5 s against 4.7 s inside ARPACK at 10^5 spans); 41 and 50 vectors took
+  // 105 and 91 steps at 10^5 spans, and twice the time. With 2.8 a mode also 20 modes (56
+  // vectors: 90 steps against 98 with 60) and the 3D grid benchmark's 10 (63 against 69).
+  return std::max(int(std::lround(2.8 * count)), 20);
+}
+
+namespace {
+
 /// Whether `count` eigenpairs of an n-dof pencil go to the dense solver.
 bool densePathSuits(int n, int count) {
   return n <= kDenseLimit || count >= n - 1;
@@ -371,12 +387,7 @@ EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
   }
   const SparseMatrix& massNonzeros = holdsZeros ? pruned : M;
   const std::unique_ptr<MassFactor> massFactor = MassFactor::ofMass(massNonzeros);
-  // The Lanczos basis: three vectors per wanted mode (at least 20). Every step
-  // reorthogonalises against the whole basis, so a larger one costs more per step than it
-  // saves in steps: on the benchmark's line of 10^5 spans (10 modes in a band 5e-8 wide) 30
-  // vectors took 71 steps and 4.0 s inside ARPACK, 41 took 105 steps and 9.2 s, 50 took 91
-  // steps and 10 s; below 3 per mode (24) Lanczos missed a mode of the band and ran again.
-  const int basis = std::max(3 * count, 20);
+  const int basis = lanczosBasisSize(count);
   LanczosRun run = lanczos(massNonzeros, massFactor.get(), op, count, basis, Eigen::MatrixXd(n, 0));
   EigenPairs& all = run.pairs;
   for (int attempt = 0;; ++attempt) {

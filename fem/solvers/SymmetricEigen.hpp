@@ -27,6 +27,9 @@ struct EigenPairs {
   int missedBySturmCount = 0;
 };
 
+/// Lanczos vectors held for `count` wanted eigenpairs (each as long as the pencil).
+int lanczosBasisSize(int count);
+
 /// The `count` eigenpairs nearest sigma (for sigma below the spectrum: the lowest ones).
 /// K symmetric, M symmetric positive semi-definite. Throws SolveError when K - sigma M is
 /// singular (sigma equals an eigenvalue, e.g. sigma = 0 with rigid-body modes) or when ARPACK

@@ -7,6 +7,7 @@
 
 #include "fem/solvers/AvailableMemory.hpp"
 #include "fem/solvers/HeapReserve.hpp"
+#include "fem/solvers/SymmetricEigen.hpp"
 
 namespace beamrotor {
 
@@ -47,9 +48,8 @@ std::vector<MemoryPart> estimateRunMemory(const Deck& deck) {
                              std::to_string(static_cast<long long>(nodes)) + " nodes",
                          double(t.frames + 1) * nodes * kDofKinds * kDouble, a.place});
     } else if (a.type == "modal" || a.type == "rotor" || a.type == "campbell") {
-      // Lanczos vectors (as fem/solvers/SymmetricEigen.cpp sizes them), the shapes kept and,
-      // for rotors, complex numbers.
-      const double lanczos = std::min(dofs, std::max(4.0 * a.modes + 1, 40.0));
+      // Lanczos vectors, the shapes kept and, for rotors, complex numbers.
+      const double lanczos = std::min(dofs, double(lanczosBasisSize(a.modes)));
       const double complex = a.type == "modal" ? 1 : 2;
       const double speeds = a.type == "campbell" ? double(a.rotor.speeds.size()) : 1;
       parts.push_back(
