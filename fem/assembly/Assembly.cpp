@@ -107,30 +107,57 @@ SparseMatrix SparseAssembler::assemble(MatrixKind kind) && {
   return A;
 }
 
+std::pair<SparseMatrix, SparseMatrix> SparseAssembler::assemble(MatrixKind first,
+                                                               MatrixKind second) && {
+  std::pair<SparseMatrix, SparseMatrix> out;
+  out.first = pattern_;
+  out.second.swap(pattern_);  // this assembler is not used again
+  fillWith<2>({&out.first, &out.second}, [&](const Element& e) {
+    return std::array<ElementMatrix, 2>{elementMatrix(e, first), elementMatrix(e, second)};
+  });
+  return out;
+}
+
 SparseMatrix SparseAssembler::assembleGeometric(const Eigen::VectorXd& u) const {
   SparseMatrix A = pattern_;
-  fillWith(A, [&](const Element& e) { return e.geometricStiffness(gather(e, dofs_, u)); });
+  fillWith<1>({&A}, [&](const Element& e) {
+    return std::array<ElementMatrix, 1>{e.geometricStiffness(gather(e, dofs_, u))};
+  });
   return A;
 }
 
 void SparseAssembler::fill(SparseMatrix& A, MatrixKind kind) const {
-  fillWith(A, [&](const Element& e) { return elementMatrix(e, kind); });
+  fillWith<1>({&A},
+              [&](const Element& e) { return std::array<ElementMatrix, 1>{elementMatrix(e, kind)}; });
 }
 
-template <class MatrixOf>
-void SparseAssembler::fillWith(SparseMatrix& A, MatrixOf&& matrixOf) const {
-  double* values = A.valuePtr();
+template <std::size_t N, class MatricesOf>
+void SparseAssembler::fillWith(const std::array<SparseMatrix*, N>& targets,
+                               MatricesOf&& matricesOf) const {
+  std::array<double*, N> values;
+  for (std::size_t i = 0; i < N; ++i) values[i] = targets[i]->valuePtr();
+  const SparseMatrix& structure = *targets[0];
   std::array<int, kMaxElementDofs> eq{};
   for (const auto& e : model_.elements()) {
-    const ElementMatrix ke = matrixOf(*e);
-    if (ke.size() == 0) continue;
+    const std::array<ElementMatrix, N> matrices = matricesOf(*e);
+    if (std::all_of(matrices.begin(), matrices.end(),
+                    [](const ElementMatrix& m) { return m.size() == 0; }))
+      continue;
     const auto d = e->dofs();
     const int n = int(d.size());
     for (int a = 0; a < n; ++a) eq[a] = dofs_.equation(d[a]);
     for (int b = 0; b < n; ++b) {
       if (!dofs_.isFree(eq[b])) continue;
-      for (int a = 0; a < n; ++a)
-        if (dofs_.isFree(eq[a]) && ke(a, b) != 0.0) values[slot(A, eq[a], eq[b])] += ke(a, b);
+      for (int a = 0; a < n; ++a) {
+        if (!dofs_.isFree(eq[a])) continue;
+        int place = -1;  // found once, for the first matrix with an entry here
+        for (std::size_t i = 0; i < N; ++i) {
+          const ElementMatrix& m = matrices[i];
+          if (m.size() == 0 || m(a, b) == 0.0) continue;
+          if (place < 0) place = slot(structure, eq[a], eq[b]);
+          values[i][place] += m(a, b);
+        }
+      }
     }
   }
 }

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <Eigen/Sparse>
+#include <array>
+#include <utility>
 #include <vector>
 
 #include "fem/model/DofMap.hpp"
@@ -24,6 +26,9 @@ class SparseAssembler {
   SparseMatrix assemble(MatrixKind kind) const&;
   /// The same from a temporary assembler: its pattern is filled in place, not copied.
   SparseMatrix assemble(MatrixKind kind) &&;
+  /// Two global matrices (the modal path's K and M) in one pass over the elements, each
+  /// entry's place in the pattern found once for both; the second fills the pattern in place.
+  std::pair<SparseMatrix, SparseMatrix> assemble(MatrixKind first, MatrixKind second) &&;
   /// The free-free block of the geometric stiffness of the section forces of the full-length
   /// displacement u (ordered as DofMap): the initial-stress matrix of that state.
   SparseMatrix assembleGeometric(const Eigen::VectorXd& u) const;
@@ -36,9 +41,10 @@ class SparseAssembler {
  private:
   /// Adds every element's matrix of one kind into A, which has the pattern's structure.
   void fill(SparseMatrix& A, MatrixKind kind) const;
-  /// Adds matrixOf(element) for every element into A (empty matrices skipped).
-  template <class MatrixOf>
-  void fillWith(SparseMatrix& A, MatrixOf&& matrixOf) const;
+  /// Adds the i-th of matricesOf(element) into *targets[i] for every element (empty matrices
+  /// skipped); the targets have the pattern's structure.
+  template <std::size_t N, class MatricesOf>
+  void fillWith(const std::array<SparseMatrix*, N>& targets, MatricesOf&& matricesOf) const;
 
   const Model& model_;
   const DofMap& dofs_;

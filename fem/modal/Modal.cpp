@@ -45,15 +45,16 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
   ModalResult result;
   result.shift = options.shift;
 
-  // 1. Assemble the free-free blocks of K and M.
+  // 1. Assemble the free-free blocks of K and M, in one pass over the elements.
   // M takes over the assembler's pattern, which is not held while the eigensolver runs, and
   // both keep only the entries that couple, as the statics keep K (a straight line's
   // axial-bending pairs are over 40 % of its pattern): every product and copy reads less.
   const DofMap dofs(model);
   SparseAssembler assembler(model, dofs);
-  SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
-  if (state.size() > 0) K += assembler.assembleGeometric(state);
-  SparseMatrix M = std::move(assembler).assemble(MatrixKind::mass);
+  const SparseMatrix geometric =
+      state.size() > 0 ? assembler.assembleGeometric(state) : SparseMatrix();
+  auto [K, M] = std::move(assembler).assemble(MatrixKind::stiffness, MatrixKind::mass);
+  if (state.size() > 0) K += geometric;
   dropExactZeros(K);
   dropExactZeros(M);
   result.time.assembly = clock.lap();
