@@ -6,12 +6,12 @@
 #include <array>
 #include <cmath>
 #include <numeric>
-#include <random>
 #include <sstream>
 #include <type_traits>
 
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/RotorFactor.hpp"
+#include "fem/solvers/StartVector.hpp"
 
 namespace beamrotor {
 
@@ -84,20 +84,6 @@ QuadraticEigenpairs nearest(const std::vector<Complex>& lambda,
     out.vectors.col(k) = v / v.norm();
   }
   return out;
-}
-
-/// A starting vector that depends only on its length: entries in [-1, 1) from the minimal
-/// standard generator (Park and Miller; its sequence is fixed by the C++ standard). ARPACK's own
-/// random start continues a generator kept between calls, so the basis it returns for a double
-/// eigenvalue would depend on every ARPACK call made before in the process. Pseudo-random, not
-/// constant: a constant vector is orthogonal to the antisymmetric modes of a symmetric rotor.
-/// `seed` picks another such vector (the retries below need a different start).
-Eigen::VectorXd fixedStart(int size, unsigned seed = 20261124u) {
-  std::minstd_rand generator(seed);
-  Eigen::VectorXd v(size);
-  for (int i = 0; i < size; ++i)
-    v[i] = 2.0 * double(generator() - generator.min()) / double(generator.max() - generator.min() + 1) - 1;
-  return v;
 }
 
 /// Scale s of the state x = (q, lambda q / s): with s near the |lambda| sought, both halves of

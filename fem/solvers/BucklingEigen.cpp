@@ -9,6 +9,7 @@
 
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/LinearSolver.hpp"
+#include "fem/solvers/StartVector.hpp"
 
 namespace beamrotor {
 
@@ -79,13 +80,14 @@ BucklingPairs lanczosBuckling(const SparseMatrix& K, const SparseMatrix& KG, int
   const a_int nev = std::min<a_int>(count, n - 2);
   const a_int ncv = std::min<a_int>(n, std::max<a_int>(4 * nev + 1, 40));
   const a_int lworkl = ncv * (ncv + 8);
-  std::vector<double> resid(n), v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
+  Eigen::VectorXd resid = fixedStart(n);
+  std::vector<double> v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
   std::array<a_int, 11> iparam{}, ipntr{};
   iparam[0] = 1;
   iparam[2] = kBucklingRestarts;
   iparam[6] = 2;  // mode 2: regular inverse with B = K
   const auto which = sign > 0 ? arpack::which::largest_algebraic : arpack::which::smallest_algebraic;
-  a_int ido = 0, info = 0;
+  a_int ido = 0, info = 1;  // start from resid (ARPACK's own start would vary from run to run)
   const double tol = 0.0;
   Eigen::VectorXd y(n);
   while (true) {

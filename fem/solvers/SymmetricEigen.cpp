@@ -7,13 +7,13 @@
 #include <functional>
 #include <memory>
 #include <numeric>
-#include <random>
 #include <sstream>
 
 #include "fem/solvers/DecoupledBlocks.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/MassFactor.hpp"
 #include "fem/solvers/SparseLU.hpp"
+#include "fem/solvers/StartVector.hpp"
 #include "fem/solvers/SturmShift.hpp"
 
 namespace beamrotor {
@@ -133,17 +133,12 @@ struct Settling {
   double quotient = 0;
 };
 
-/// A start vector that holds every mode (entries uniform in [-1/2, 1/2]) and is the same on
-/// every run, so that a run's answers and step counts repeat.
-Eigen::VectorXd fixedStart(Eigen::Index n) {
-  std::minstd_rand generator(20261125);
-  Eigen::VectorXd x(n);
-  for (double& entry : x) entry = double(generator()) / double(generator.max()) - 0.5;
-  return x;
-}
+/// The seed of every start here (fem/solvers/StartVector.hpp); the step counts measured for
+/// lanczosBasisSize were taken with it.
+constexpr unsigned kStartSeed = 20261125u;
 
 Settling settling(const SparseLDLT& factor, const SparseMatrix& K, const SparseMatrix& M) {
-  Eigen::VectorXd x = fixedStart(K.rows());
+  Eigen::VectorXd x = fixedStart(K.rows(), kStartSeed);
   double quotient[5] = {};
   for (int step = 1; step <= 4; ++step) {
     inverseIterationStep(factor, M, x);
@@ -249,15 +244,13 @@ LanczosRun lanczos(const SparseMatrix& M, const MassFactor* massFactor, const Sh
   const a_int lworkl = ncv * (ncv + 8);
   const bool standard = massFactor != nullptr;
   const arpack::bmat form = standard ? arpack::bmat::identity : arpack::bmat::generalized;
-  Eigen::VectorXd resid = fixedStart(n);
+  Eigen::VectorXd resid = fixedStart(n, kStartSeed);
   std::vector<double> v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
   std::array<a_int, 11> iparam{}, ipntr{};
   iparam[0] = 1;                   // exact shifts
   iparam[2] = kMaxRestarts;        // maximum Arnoldi restarts
   iparam[6] = standard ? 1 : 3;    // mode 1 on the symmetric operator, or 3: shift-invert
-  // ARPACK's own random start (info = 0) goes on from its last state, so a second run in one
-  // process started elsewhere: on the benchmark's line of 10^5 spans it took 51 or 72 steps.
-  a_int ido = 0, info = 1;  // start from resid
+  a_int ido = 0, info = 1;  // start from resid (ARPACK's own start would vary from run to run)
   const double tol = 0.0;  // machine precision
   Eigen::VectorXd y(n), solution(n);
   // The complement of the locked X: z -= B (C' z), with B = X and C = M X (X' M z = (M X)' z),

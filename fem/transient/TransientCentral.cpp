@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fem/solvers/Errors.hpp"
+#include "fem/solvers/StartVector.hpp"
 
 namespace beamrotor {
 
@@ -35,12 +36,13 @@ std::array<int, 2> firstOffDiagonal(const SparseMatrix& A) {
 double largestEigenvalueLanczos(const SparseMatrix& A) {
   const a_int n = a_int(A.rows()), nev = 1, ncv = std::min<a_int>(n, 20);
   const a_int lworkl = ncv * (ncv + 8);
-  std::vector<double> resid(n), v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
+  Eigen::VectorXd resid = fixedStart(n);
+  std::vector<double> v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
   std::array<a_int, 11> iparam{}, ipntr{};
   iparam[0] = 1;  // exact shifts
   iparam[2] = kMaxRestarts;
   iparam[6] = 1;  // mode 1: A x = lambda x
-  a_int ido = 0, info = 0;
+  a_int ido = 0, info = 1;  // start from resid (ARPACK's own start would vary from run to run)
   while (true) {
     arpack::saupd(ido, arpack::bmat::identity, n, arpack::which::largest_algebraic, nev,
                   kLanczosTol, resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(),
