@@ -53,16 +53,13 @@ void SparseLDLT::factorize(const SparseMatrix& A) {
 
 double SparseLDLT::scaledRcond() const {
   if (!m_factorizationIsOk || info() != Eigen::Success) return 0;
-  const cholmod_factor& L = *m_cholmodFactor;
-  if (std::size_t(diagonal_.size()) != L.n) return 0;
-  const int* start = static_cast<const int*>(L.p);
-  const double* x = static_cast<const double*>(L.x);
-  const int* perm = static_cast<const int*>(L.Perm);
+  const FactorView f = factorView();
+  if (diagonal_.size() != f.L.cols()) return 0;
   double smallest = std::numeric_limits<double>::infinity(), largest = 0;
-  for (std::size_t j = 0; j < L.n; ++j) {
-    const double a = diagonal_[perm ? perm[j] : int(j)];
+  for (Eigen::Index j = 0; j < f.L.cols(); ++j) {
+    const double a = diagonal_[f.perm ? f.perm[j] : j];
     if (!(a > 0)) return 0;
-    const double pivot = std::abs(x[start[j]]) / a;
+    const double pivot = std::abs(f.pivot(j)) / a;
     // An infinite entry (stiffnesses summing past the largest double) leaves inf / inf here;
     // nothing about such a matrix is well conditioned.
     if (!std::isfinite(pivot)) return 0;
@@ -125,12 +122,9 @@ void SparseLDLT::analyzePattern(const SparseMatrix& A) {
 }
 
 int SparseLDLT::negativePivots() const {
-  // Simplicial LDL': each column of L starts with its diagonal entry, which holds D(j, j).
-  const cholmod_factor& L = *m_cholmodFactor;
-  const int* start = static_cast<const int*>(L.p);
-  const double* x = static_cast<const double*>(L.x);
+  const FactorView f = factorView();
   int negative = 0;
-  for (std::size_t j = 0; j < L.n; ++j) negative += x[start[j]] < 0;
+  for (Eigen::Index j = 0; j < f.L.cols(); ++j) negative += f.pivot(j) < 0;
   return negative;
 }
 

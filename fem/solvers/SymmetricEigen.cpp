@@ -2,8 +2,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <cmath>
 #include <arpack/arpack.hpp>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <numeric>
