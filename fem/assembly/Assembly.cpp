@@ -3,12 +3,24 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "fem/assembly/CompressedPattern.hpp"
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/model/Model.hpp"
 
 namespace beamrotor {
 
 namespace {
+
+/// Column bounds 0 = c_0 <= c_1 <= ... <= c_parts = cols splitting A's entries evenly.
+std::vector<int> balancedColumnRanges(const SparseMatrix& A, int parts) {
+  std::vector<int> bounds(parts + 1, int(A.cols()));
+  bounds[0] = 0;
+  const int* colStart = A.outerIndexPtr();
+  for (int p = 1; p < parts; ++p) {
+    const long long wanted = A.nonZeros() * p / parts;
+    bounds[p] = int(std::lower_bound(colStart, colStart + A.cols(), wanted) - colStart);
+  }
+  return bounds;
+}
 
 /// Node adjacency (each node lists itself and every node it shares an element with), as
 /// compressed rows with sorted, unique entries.
@@ -50,32 +62,52 @@ void nodeAdjacency(const Model& model, std::vector<int>& start, std::vector<int>
   adj.resize(out);
 }
 
-/// Position of (row, col) in the value array of a compressed matrix holding that entry.
-int slot(const SparseMatrix& A, int row, int col) {
-  const int* rows = A.innerIndexPtr();
-  const int* first = rows + A.outerIndexPtr()[col];
-  const int* last = rows + A.outerIndexPtr()[col + 1];
-  return int(std::lower_bound(first, last, row) - rows);
-}
-
 }  // namespace
 
 SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
     : model_(model), dofs_(dofs) {
   std::vector<int> start, adj;
   nodeAdjacency(model, start, adj);
-  // Free equations are numbered node by node, so walking a column's neighbour nodes in
-  // ascending order yields ascending row numbers. Count first, then fill in place.
+  // Free equations are numbered node by node, so each node's free equations are one range,
+  // [freeBegin[node], freeBegin[node + 1]), and walking a node's neighbours in ascending
+  // order yields ascending rows. Every free dof of a node has the same rows: the list is
+  // written once for its first column and copied for the others.
+  const int nodes = model.nodeCount();
+  std::vector<int>& freeBegin = freeBegin_;
+  freeBegin.assign(nodes + 1, 0);
+  for (int node = 0; node < nodes; ++node) {
+    int count = 0;
+    for (Dof d : kAllDofs) count += dofs.isFree(dofs.equation(node, d));
+    freeBegin[node + 1] = freeBegin[node] + count;
+  }
+  const auto freeOf = [&](int node) { return freeBegin[node + 1] - freeBegin[node]; };
+  long long entries = 0;
+  for (int node = 0; node < nodes; ++node) {
+    long long rows = 0;
+    for (int k = start[node]; k < start[node + 1]; ++k) rows += freeOf(adj[k]);
+    entries += rows * freeOf(node);
+  }
   const int nf = dofs.freeCount();
-  auto forEachRow = [&](int col, auto&& visit) {
-    const int node = dofs.dofOf(col).node;
+  SparseMatrix A(nf, nf);
+  A.resizeNonZeros(Eigen::Index(entries));
+  int* colStart = A.outerIndexPtr();
+  int* rowOf = A.innerIndexPtr();
+  int next = 0;
+  for (int node = 0; node < nodes; ++node) {
+    if (freeOf(node) == 0) continue;
+    const int first = next;
     for (int k = start[node]; k < start[node + 1]; ++k)
-      for (Dof d : kAllDofs) {
-        const int row = dofs.equation(adj[k], d);
-        if (dofs.isFree(row)) visit(row);
-      }
-  };
-  compressedPattern(nf, nf, forEachRow).swap(pattern_);  // no copy: Eigen has no move assignment
+      for (int row = freeBegin[adj[k]]; row < freeBegin[adj[k] + 1]; ++row) rowOf[next++] = row;
+    const int rows = next - first;
+    colStart[freeBegin[node]] = first;
+    for (int col = freeBegin[node] + 1; col < freeBegin[node + 1]; ++col) {
+      colStart[col] = next;
+      next = int(std::copy_n(rowOf + first, rows, rowOf + next) - rowOf);
+    }
+  }
+  colStart[nf] = next;
+  std::fill_n(A.valuePtr(), entries, 0.0);
+  A.swap(pattern_);  // no copy: Eigen has no move assignment
   stiffnessSymmetric_ = std::all_of(model.elements().begin(), model.elements().end(),
                                     [](const auto& e) { return e->symmetricStiffness(); });
 }
@@ -136,30 +168,70 @@ void SparseAssembler::fillWith(const std::array<SparseMatrix*, N>& targets,
                                MatricesOf&& matricesOf) const {
   std::array<double*, N> values;
   for (std::size_t i = 0; i < N; ++i) values[i] = targets[i]->valuePtr();
+  // The targets have the pattern's structure: a column of node p holds, for each neighbour q
+  // in ascending order, q's free equations as one block. An entry's place is its column's
+  // start, plus the block's offset (found once per pair of the element's nodes), plus the
+  // row's place among q's free equations.
   const SparseMatrix& structure = *targets[0];
-  std::array<int, kMaxElementDofs> eq{};
-  for (const auto& e : model_.elements()) {
-    const std::array<ElementMatrix, N> matrices = matricesOf(*e);
-    if (std::all_of(matrices.begin(), matrices.end(),
-                    [](const ElementMatrix& m) { return m.size() == 0; }))
-      continue;
-    const auto d = e->dofs();
-    const int n = int(d.size());
-    for (int a = 0; a < n; ++a) eq[a] = dofs_.equation(d[a]);
-    for (int b = 0; b < n; ++b) {
-      if (!dofs_.isFree(eq[b])) continue;
+  const int* colStart = structure.outerIndexPtr();
+  const int* rowOf = structure.innerIndexPtr();
+  // Each part adds into its own range of columns, element by element in the model's order:
+  // every entry is summed in the same order whatever the number of parts (the result is
+  // the same to the last bit), and an element whose columns fall in two parts is computed
+  // by both.
+  const auto fillColumns = [&](int firstColumn, int endColumn) {
+    const auto owned = [&](int equation) {
+      return equation >= firstColumn && equation < endColumn && dofs_.isFree(equation);
+    };
+    std::array<int, kMaxElementDofs> eq{}, nodeOf{}, inBlock{}, nodes{};
+    std::array<std::array<int, kMaxElementDofs>, kMaxElementDofs> blockAt{};
+    for (const auto& e : model_.elements()) {
+      const auto d = e->dofs();
+      const int n = int(d.size());
+      bool any = false;
       for (int a = 0; a < n; ++a) {
-        if (!dofs_.isFree(eq[a])) continue;
-        int place = -1;  // found once, for the first matrix with an entry here
-        for (std::size_t i = 0; i < N; ++i) {
-          const ElementMatrix& m = matrices[i];
-          if (m.size() == 0 || m(a, b) == 0.0) continue;
-          if (place < 0) place = slot(structure, eq[a], eq[b]);
-          values[i][place] += m(a, b);
+        eq[a] = dofs_.equation(d[a]);
+        any = any || owned(eq[a]);
+      }
+      if (!any) continue;
+      const std::array<ElementMatrix, N> matrices = matricesOf(*e);
+      if (std::all_of(matrices.begin(), matrices.end(),
+                      [](const ElementMatrix& m) { return m.size() == 0; }))
+        continue;
+      int k = 0;
+      for (int a = 0; a < n; ++a) {
+        const int node = d[a].node;
+        const int i = int(std::find(nodes.begin(), nodes.begin() + k, node) - nodes.begin());
+        if (i == k) nodes[k++] = node;
+        nodeOf[a] = i;
+        inBlock[a] = eq[a] - freeBegin_[node];
+      }
+      for (int i = 0; i < k; ++i) {
+        const int column = freeBegin_[nodes[i]];
+        if (column == freeBegin_[nodes[i] + 1]) continue;  // no free dof: no column
+        const int* first = rowOf + colStart[column];
+        const int* last = rowOf + colStart[column + 1];
+        for (int j = 0; j < k; ++j)
+          blockAt[i][j] = int(std::lower_bound(first, last, freeBegin_[nodes[j]]) - first);
+      }
+      for (int b = 0; b < n; ++b) {
+        if (!owned(eq[b])) continue;
+        const int column = colStart[eq[b]];
+        for (int a = 0; a < n; ++a) {
+          if (!dofs_.isFree(eq[a])) continue;
+          const int place = column + blockAt[nodeOf[b]][nodeOf[a]] + inBlock[a];
+          for (std::size_t i = 0; i < N; ++i) {
+            const ElementMatrix& m = matrices[i];
+            if (m.size() == 0 || m(a, b) == 0.0) continue;
+            values[i][place] += m(a, b);
+          }
         }
       }
     }
-  }
+  };
+  const std::vector<int> bounds =
+      balancedColumnRanges(structure, partsFor(model_.elements().size()));
+  runParts(int(bounds.size()) - 1, [&](int part) { fillColumns(bounds[part], bounds[part + 1]); });
 }
 
 ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd& u) {
@@ -183,25 +255,69 @@ Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs) {
 
 Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
   Eigen::VectorXd f = nodalLoadVector(model, dofs);
-  for (const auto& e : model.elements()) {
-    const ElementVector fe = e->load();
-    if (fe.size() == 0) continue;
-    const auto d = e->dofs();
-    for (int a = 0; a < int(d.size()); ++a) f[dofs.equation(d[a])] += fe[a];
-  }
+  // Each part adds into its own range of equations, element by element in the model's order.
+  forEvenParts(dofs.size(), [&](int first, int end) {
+    for (const auto& e : model.elements()) {
+      const auto d = e->dofs();
+      const auto owned = [&](const NodeDof& n) {
+        const int eq = dofs.equation(n);
+        return eq >= first && eq < end;
+      };
+      if (std::none_of(d.begin(), d.end(), owned)) continue;
+      const ElementVector fe = e->load();
+      if (fe.size() == 0) continue;
+      for (int a = 0; a < int(d.size()); ++a)
+        if (owned(d[a])) f[dofs.equation(d[a])] += fe[a];
+    }
+  });
   return f;
 }
 
-Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
-                              bool constrainedOnly) {
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
-  const auto constrained = [&](const NodeDof& d) { return dofs.isConstrained(dofs.equation(d)); };
   for (const auto& e : model.elements()) {
     const auto d = e->dofs();
-    if (constrainedOnly && std::none_of(d.begin(), d.end(), constrained)) continue;
     const ElementVector fe = e->endForces(gather(*e, dofs, u));
     for (int a = 0; a < int(d.size()); ++a) r[dofs.equation(d[a])] += fe[a];
   }
+  return r;
+}
+
+Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
+                                         const Eigen::VectorXd& u) {
+  // The elements touching a constrained dof are found part by part (a pass over every
+  // element). Their forces are then added by parts that each own a range of the constrained
+  // equations, in the model's order.
+  const auto& elements = model.elements();
+  const auto constrained = [&](const NodeDof& d) { return dofs.isConstrained(dofs.equation(d)); };
+  const std::vector<int> bounds = evenRanges(int(elements.size()), partsFor(elements.size()));
+  std::vector<std::vector<int>> touchingPart(bounds.size() - 1);
+  runParts(int(touchingPart.size()), [&](int part) {
+    for (int i = bounds[part]; i < bounds[part + 1]; ++i) {
+      const auto d = elements[i]->dofs();
+      if (std::any_of(d.begin(), d.end(), constrained)) touchingPart[part].push_back(i);
+    }
+  });
+  std::vector<int> touching;
+  for (const std::vector<int>& list : touchingPart)
+    touching.insert(touching.end(), list.begin(), list.end());
+  const int firstConstrained = dofs.freeCount();
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.constrainedCount());
+  const std::vector<int> owners = evenRanges(int(r.size()), partsFor(touching.size()));
+  runParts(int(owners.size()) - 1, [&](int part) {
+    const auto owned = [&](const NodeDof& d) {
+      const int k = dofs.equation(d) - firstConstrained;
+      return k >= owners[part] && k < owners[part + 1];
+    };
+    for (int i : touching) {
+      const Element& e = *elements[i];
+      const auto d = e.dofs();
+      if (std::none_of(d.begin(), d.end(), owned)) continue;
+      const ElementVector fe = e.endForces(gather(e, dofs, u));
+      for (int a = 0; a < int(d.size()); ++a)
+        if (owned(d[a])) r[dofs.equation(d[a]) - firstConstrained] += fe[a];
+    }
+  });
   return r;
 }
 

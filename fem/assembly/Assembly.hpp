@@ -49,6 +49,8 @@ class SparseAssembler {
   const Model& model_;
   const DofMap& dofs_;
   SparseMatrix pattern_;  // compressed free-free block with every value zero
+  // Free equations are numbered node by node: node i's are [freeBegin_[i], freeBegin_[i + 1]).
+  std::vector<int> freeBegin_;
   bool stiffnessSymmetric_ = true;
 };
 
@@ -75,11 +77,12 @@ Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs);
 Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs);
 
 /// Full-length vector of the element forces K u - f_elem for a full-length displacement u;
-/// at a constrained dof, this minus the nodal loads there is the support reaction. With
-/// `constrainedOnly`, only elements touching a constrained dof are visited (the entries at
-/// constrained dofs are complete, the others are not): reactions of a large model in the time
-/// of its few supported elements.
-Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
-                              bool constrainedOnly = false);
+/// at a constrained dof, this minus the nodal loads there is the support reaction.
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u);
+
+/// The same at the constrained dofs alone (entry k for equation freeCount + k), from the
+/// elements that touch one: a large model's reactions in the time of its supported elements.
+Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
+                                         const Eigen::VectorXd& u);
 
 }  // namespace beamrotor

@@ -1,5 +1,6 @@
 #include "fem/assembly/Recovery.hpp"
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/model/ShearStress.hpp"
 
 namespace beamrotor {
@@ -47,11 +48,20 @@ SideRotations rotationsBeside(const Model& model, const NodalField& displacement
 }
 
 std::vector<SideRotations> hingeRotations(const Model& model, const NodalField& displacement) {
+  // The released ends are found part by part (a pass over every element, which is most of
+  // the time when there are none).
+  const auto& elements = model.elements();
+  const std::vector<int> bounds = evenRanges(int(elements.size()), partsFor(elements.size()));
+  std::vector<std::vector<int>> hingedNodes(bounds.size() - 1);
+  runParts(int(hingedNodes.size()), [&](int part) {
+    for (int i = bounds[part]; i < bounds[part + 1]; ++i)
+      if (const LineElement* line = asLine(elements[i]))
+        for (int end : {0, 1})
+          if (line->releases(end)) hingedNodes[part].push_back(line->endNodes()[end]);
+  });
   std::vector<bool> hinged(model.nodeCount(), false);
-  for (const auto& e : model.elements())
-    if (const LineElement* line = asLine(e))
-      for (int end : {0, 1})
-        if (line->releases(end)) hinged[line->endNodes()[end]] = true;
+  for (const std::vector<int>& nodes : hingedNodes)
+    for (int node : nodes) hinged[node] = true;
   std::vector<SideRotations> out;
   for (int n = 0; n < model.nodeCount(); ++n)
     if (hinged[n]) out.push_back({n, {}, {}});

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/model/Model.hpp"
 
 namespace beamrotor {
@@ -35,10 +36,12 @@ namespace {
 /// Lays out the first `count` entries of a vector ordered by equation number per node.
 NodalField layOut(const Model& model, const DofMap& dofs, const Eigen::VectorXd& v, int count) {
   NodalField field = NodalField::Zero(model.nodeCount(), kDofKinds);
-  for (int eq = 0; eq < count; ++eq) {
-    const NodeDof& d = dofs.dofOf(eq);
-    field(d.node, dofIndex(d.dof)) = v[eq];
-  }
+  forEvenParts(count, [&](int first, int end) {
+    for (int eq = first; eq < end; ++eq) {
+      const NodeDof& d = dofs.dofOf(eq);
+      field(d.node, dofIndex(d.dof)) = v[eq];
+    }
+  });
   return field;
 }
 }  // namespace

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/SupportCheck.hpp"
@@ -49,15 +50,17 @@ double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eige
   const SparseMatrix& rows = solver.symmetric() ? A : transposed;
   const double eps = std::numeric_limits<double>::epsilon();
   Eigen::VectorXd perturbation(n);
-  for (int i = 0; i < rows.outerSize(); ++i) {
-    long double r = b[i];
-    double magnitude = 0;
-    for (SparseMatrix::InnerIterator it(rows, i); it; ++it) {
-      r -= static_cast<long double>(it.value()) * x[it.index()];
-      magnitude += std::abs(it.value() * x[it.index()]);
+  forEvenParts(int(rows.outerSize()), [&](int first, int end) {
+    for (int i = first; i < end; ++i) {
+      long double r = b[i];
+      double magnitude = 0;
+      for (SparseMatrix::InnerIterator it(rows, i); it; ++it) {
+        r -= static_cast<long double>(it.value()) * x[it.index()];
+        magnitude += std::abs(it.value() * x[it.index()]);
+      }
+      perturbation[i] = double(std::abs(r)) + eps * magnitude;
     }
-    perturbation[i] = double(std::abs(r)) + eps * magnitude;
-  }
+  });
   const Eigen::VectorXd response = solver.solve(perturbation);
   const Eigen::VectorXd weight = A.diagonal().cwiseAbs().cwiseSqrt();  // after the solve's peak
   const double size = weight.cwiseProduct(x).cwiseAbs().maxCoeff();
@@ -158,9 +161,18 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   return u;
 }
 
-Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u, bool constrainedOnly) const {
+Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u) const {
   // Element forces already net out the loads the elements carry.
-  return elementForces(*loaded_, dofs_, u, constrainedOnly) - nodalLoadVector(*loaded_, dofs_);
+  return elementForces(*loaded_, dofs_, u) - nodalLoadVector(*loaded_, dofs_);
+}
+
+Eigen::VectorXd LinearStatics::reactions(const Eigen::VectorXd& u) const {
+  Eigen::VectorXd r = constrainedElementForces(*loaded_, dofs_, u);
+  for (const NodalLoad& l : loaded_->loads()) {
+    const int eq = dofs_.equation(l.node, l.dof);
+    if (dofs_.isConstrained(eq)) r[eq - dofs_.freeCount()] -= l.value;
+  }
+  return r;
 }
 
 }  // namespace beamrotor

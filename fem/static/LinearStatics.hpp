@@ -40,8 +40,10 @@ class LinearStatics {
   void setLoads(const Model& loaded);
 
   /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
-  /// With `constrainedOnly`, the entries are complete at constrained dofs only (reactions).
-  Eigen::VectorXd residual(const Eigen::VectorXd& u, bool constrainedOnly = false) const;
+  Eigen::VectorXd residual(const Eigen::VectorXd& u) const;
+  /// The same at the constrained dofs alone (entry k for equation freeCount + k): the support
+  /// reactions, from the elements that touch a support.
+  Eigen::VectorXd reactions(const Eigen::VectorXd& u) const;
 
   const DofMap& dofs() const { return dofs_; }
   const SparseMatrix& stiffness() const { return K_; }

@@ -17,10 +17,11 @@ namespace {
 void recover(const Model& loaded, const LinearStatics& system, const Eigen::VectorXd& u,
              StaticResult& result) {
   const DofMap& dofs = system.dofs();
-  const Eigen::VectorXd r = system.residual(u, /*constrainedOnly=*/true);
+  const Eigen::VectorXd r = system.reactions(u);
   for (const Support& s : loaded.supports())
     for (const PrescribedDof& p : s.dofs)
-      result.reactions.push_back({s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof)]});
+      result.reactions.push_back(
+          {s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof) - dofs.freeCount()]});
   result.displacement = toNodalField(loaded, dofs, u);
   result.hinges = hingeRotations(loaded, result.displacement);
   result.rcond = system.rcond();

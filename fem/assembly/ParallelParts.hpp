@@ -1,0 +1,51 @@
+// Work split into parts that run on the machine's cores. Each part owns a range (of elements,
+// equations or columns), so that no two parts write the same place and every sum is taken in
+// the same order whatever the number of parts: results are the same to the last bit on one
+// core or many.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace beamrotor {
+
+/// How many parts a pass over `items` items (elements, equations) runs in: one per core this
+/// process may use (its CPU affinity, or BEAMROTOR_THREADS when set to a positive number), and
+/// at most one per 50 000 items: starting a thread costs about what a few thousand elements
+/// take, and a study's small models stay on one thread each.
+int partsFor(std::size_t items);
+
+/// Bounds 0 = b_0 <= b_1 <= ... <= b_parts = n of `parts` ranges of [0, n) of equal length.
+std::vector<int> evenRanges(int n, int parts);
+
+/// Runs work(0), ..., work(parts - 1) on as many threads (the last on the caller's) and then
+/// rethrows the exception of the first part that threw, if any.
+template <class Work>
+void runParts(int parts, Work&& work) {
+  std::vector<std::exception_ptr> failures(parts);
+  const auto guarded = [&](int part) {
+    try {
+      work(part);
+    } catch (...) {
+      failures[part] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int part = 0; part + 1 < parts; ++part) threads.emplace_back(guarded, part);
+  if (parts > 0) guarded(parts - 1);
+  for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+}
+
+/// Runs work(first, end) over the ranges of evenRanges(n, partsFor(n)).
+template <class Work>
+void forEvenParts(int n, Work&& work) {
+  const std::vector<int> bounds = evenRanges(n, partsFor(std::size_t(std::max(n, 0))));
+  runParts(int(bounds.size()) - 1, [&](int part) { work(bounds[part], bounds[part + 1]); });
+}
+
+}  // namespace beamrotor
