@@ -1,7 +1,9 @@
 #include "fem/assembly/Assembly.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "fem/assembly/ParallelParts.hpp"
 #include "fem/model/Model.hpp"
@@ -23,43 +25,63 @@ std::vector<int> balancedColumnRanges(const SparseMatrix& A, int parts) {
 }
 
 /// Node adjacency (each node lists itself and every node it shares an element with), as
-/// compressed rows with sorted, unique entries.
+/// compressed rows with sorted, unique entries. Built part by part: each part counts and
+/// writes the entries of its own range of elements into its own place in every node's list.
 void nodeAdjacency(const Model& model, std::vector<int>& start, std::vector<int>& adj) {
   const int n = model.nodeCount();
-  std::vector<int> count(n + 1, 0);
-  std::array<int, kMaxElementDofs> nodes{};
-  auto elementNodes = [&](const Element& e) {
-    int k = 0;
-    for (const NodeDof& d : e.dofs())
-      if (std::find(nodes.begin(), nodes.begin() + k, d.node) == nodes.begin() + k)
-        nodes[k++] = d.node;
-    return k;
+  const auto& elements = model.elements();
+  const std::vector<int> bounds = evenRanges(int(elements.size()), partsFor(elements.size()));
+  const int parts = int(bounds.size()) - 1;
+  const auto forEachElement = [&](int part, auto&& visit) {
+    std::array<int, kMaxElementDofs> nodes{};
+    for (int i = bounds[part]; i < bounds[part + 1]; ++i) {
+      int k = 0;
+      for (const NodeDof& d : elements[i]->dofs())
+        if (std::find(nodes.begin(), nodes.begin() + k, d.node) == nodes.begin() + k)
+          nodes[k++] = d.node;
+      visit(nodes, k);
+    }
   };
-  for (const auto& e : model.elements()) {
-    const int k = elementNodes(*e);
-    for (int a = 0; a < k; ++a) count[nodes[a] + 1] += k;
-  }
-  for (int i = 0; i < n; ++i) count[i + 1] += count[i] + 1;  // +1: the node itself
-  std::vector<int> fill(count.begin(), count.end() - 1);
-  adj.assign(count[n], 0);
-  for (int i = 0; i < n; ++i) adj[fill[i]++] = i;
-  for (const auto& e : model.elements()) {
-    const int k = elementNodes(*e);
-    for (int a = 0; a < k; ++a)
-      for (int b = 0; b < k; ++b) adj[fill[nodes[a]]++] = nodes[b];
-  }
-  // Sort and deduplicate each node's list in place, compacting as we go.
-  start.assign(n + 1, 0);
-  int out = 0;
+  // 1. What each part adds to each node's list; then where it writes it: after the node
+  //    itself and after the parts before it.
+  std::vector<std::vector<int>> place(parts, std::vector<int>(n, 0));
+  runParts(parts, [&](int part) {
+    forEachElement(part, [&](const auto& nodes, int k) {
+      for (int a = 0; a < k; ++a) place[part][nodes[a]] += k;
+    });
+  });
+  std::vector<int> listStart(n + 1, 0);
   for (int i = 0; i < n; ++i) {
-    auto first = adj.begin() + count[i], last = adj.begin() + count[i + 1];
-    std::sort(first, last);
-    last = std::unique(first, last);
-    start[i] = out;
-    out = int(std::copy(first, last, adj.begin() + out) - adj.begin());
+    int next = listStart[i] + 1;  // +1: the node itself
+    for (int part = 0; part < parts; ++part) next += std::exchange(place[part][i], next);
+    listStart[i + 1] = next;
   }
-  start[n] = out;
-  adj.resize(out);
+  std::vector<int> lists(listStart[n]);
+  for (int i = 0; i < n; ++i) lists[listStart[i]] = i;
+  runParts(parts, [&](int part) {
+    forEachElement(part, [&](const auto& nodes, int k) {
+      for (int a = 0; a < k; ++a)
+        for (int b = 0; b < k; ++b) lists[place[part][nodes[a]]++] = nodes[b];
+    });
+  });
+  place.clear();
+  // 2. Each list sorted and made unique in its place, node range by node range; then the
+  //    unique entries packed.
+  std::vector<int> unique(n, 0);
+  forEvenParts(n, [&](int first, int end) {
+    for (int i = first; i < end; ++i) {
+      const auto begin = lists.begin() + listStart[i], last = lists.begin() + listStart[i + 1];
+      std::sort(begin, last);
+      unique[i] = int(std::unique(begin, last) - begin);
+    }
+  });
+  start.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) start[i + 1] = start[i] + unique[i];
+  adj.resize(start[n]);
+  forEvenParts(n, [&](int first, int end) {
+    for (int i = first; i < end; ++i)
+      std::copy_n(lists.begin() + listStart[i], unique[i], adj.begin() + start[i]);
+  });
 }
 
 }  // namespace
@@ -81,32 +103,40 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
     freeBegin[node + 1] = freeBegin[node] + count;
   }
   const auto freeOf = [&](int node) { return freeBegin[node + 1] - freeBegin[node]; };
-  long long entries = 0;
+  // Where each node's columns start among the entries; then the columns, node range by
+  // node range.
+  std::vector<int> nodeEntries(nodes + 1, 0);
   for (int node = 0; node < nodes; ++node) {
     long long rows = 0;
     for (int k = start[node]; k < start[node + 1]; ++k) rows += freeOf(adj[k]);
-    entries += rows * freeOf(node);
+    const long long entries = nodeEntries[node] + rows * freeOf(node);
+    if (entries > std::numeric_limits<int>::max())
+      throw std::length_error("the stiffness pattern has more than 2^31 entries");
+    nodeEntries[node + 1] = int(entries);
   }
   const int nf = dofs.freeCount();
+  const int entries = nodeEntries[nodes];
   SparseMatrix A(nf, nf);
   A.resizeNonZeros(Eigen::Index(entries));
   int* colStart = A.outerIndexPtr();
   int* rowOf = A.innerIndexPtr();
-  int next = 0;
-  for (int node = 0; node < nodes; ++node) {
-    if (freeOf(node) == 0) continue;
-    const int first = next;
-    for (int k = start[node]; k < start[node + 1]; ++k)
-      for (int row = freeBegin[adj[k]]; row < freeBegin[adj[k] + 1]; ++row) rowOf[next++] = row;
-    const int rows = next - first;
-    colStart[freeBegin[node]] = first;
-    for (int col = freeBegin[node] + 1; col < freeBegin[node + 1]; ++col) {
-      colStart[col] = next;
-      next = int(std::copy_n(rowOf + first, rows, rowOf + next) - rowOf);
+  forEvenParts(nodes, [&](int firstNode, int endNode) {
+    for (int node = firstNode; node < endNode; ++node) {
+      if (freeOf(node) == 0) continue;
+      const int first = nodeEntries[node];
+      int next = first;
+      for (int k = start[node]; k < start[node + 1]; ++k)
+        for (int row = freeBegin[adj[k]]; row < freeBegin[adj[k] + 1]; ++row) rowOf[next++] = row;
+      const int rows = next - first;
+      colStart[freeBegin[node]] = first;
+      for (int col = freeBegin[node] + 1; col < freeBegin[node + 1]; ++col) {
+        colStart[col] = next;
+        next = int(std::copy_n(rowOf + first, rows, rowOf + next) - rowOf);
+      }
+      std::fill(A.valuePtr() + first, A.valuePtr() + next, 0.0);
     }
-  }
-  colStart[nf] = next;
-  std::fill_n(A.valuePtr(), entries, 0.0);
+  });
+  colStart[nf] = entries;
   A.swap(pattern_);  // no copy: Eigen has no move assignment
   stiffnessSymmetric_ = std::all_of(model.elements().begin(), model.elements().end(),
                                     [](const auto& e) { return e->symmetricStiffness(); });
@@ -322,8 +352,36 @@ Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
 }
 
 void dropExactZeros(SparseMatrix& A) {
-  A.prune([](int row, int col, double value) { return value != 0 || row == col; });
-  A.data().squeeze();
+  A.makeCompressed();
+  const int cols = int(A.cols());
+  const int* start = A.outerIndexPtr();
+  const int* rowOf = A.innerIndexPtr();
+  const double* valueOf = A.valuePtr();
+  const auto kept = [&](int k, int col) { return valueOf[k] != 0 || rowOf[k] == col; };
+  // Count what each column keeps, part by part; then copy it into storage of that size.
+  std::vector<int> keptStart(cols + 1, 0);
+  const std::vector<int> bounds = balancedColumnRanges(A, partsFor(std::size_t(cols)));
+  const int parts = int(bounds.size()) - 1;
+  runParts(parts, [&](int part) {
+    for (int col = bounds[part]; col < bounds[part + 1]; ++col)
+      for (int k = start[col]; k < start[col + 1]; ++k) keptStart[col + 1] += kept(k, col);
+  });
+  for (int col = 0; col < cols; ++col) keptStart[col + 1] += keptStart[col];
+  if (keptStart[cols] == A.nonZeros()) return;
+  SparseMatrix B(A.rows(), A.cols());
+  B.resizeNonZeros(keptStart[cols]);
+  std::copy(keptStart.begin(), keptStart.end(), B.outerIndexPtr());
+  runParts(parts, [&](int part) {
+    for (int col = bounds[part]; col < bounds[part + 1]; ++col) {
+      int next = keptStart[col];
+      for (int k = start[col]; k < start[col + 1]; ++k)
+        if (kept(k, col)) {
+          B.innerIndexPtr()[next] = rowOf[k];
+          B.valuePtr()[next++] = valueOf[k];
+        }
+    }
+  });
+  A.swap(B);
 }
 
 }  // namespace beamrotor

@@ -54,14 +54,14 @@ class SparseAssembler {
   bool stiffnessSymmetric_ = true;
 };
 
-/// Removes A's off-diagonal entries that are exactly zero, in place (no allocation). An
+/// Removes A's off-diagonal entries that are exactly zero (A unchanged when it has none). An
 /// assembled pattern holds every dof pair of nodes that share an element, but many such pairs
 /// never couple: a member along a global axis keeps its axial, in-plane and out-of-plane dofs
 /// apart, so a flat grillage's K is two independent systems and a straight line's axial dofs
 /// are a chain of their own. Factorising without those entries gives the same solution with
 /// a half or a third of the fill and flops (see the performance issue's closing notes).
-/// Diagonal entries stay, so that a dof keeps its place in the pattern. The storage the
-/// dropped entries took is released.
+/// Diagonal entries stay, so that a dof keeps its place in the pattern. What is kept is
+/// copied into storage of its own size, part by part, and the old storage is released.
 void dropExactZeros(SparseMatrix& A);
 
 /// The element matrix of one kind (empty when the element has none).
