@@ -41,6 +41,18 @@ void runParts(int parts, Work&& work) {
     if (failure) std::rethrow_exception(failure);
 }
 
+/// Runs first() and second() at the same time when `items` items make two parts worth it
+/// (first() on a thread of its own), else one after the other; exceptions as runParts.
+template <class First, class Second>
+void runTogether(std::size_t items, First&& first, Second&& second) {
+  if (partsFor(items) < 2) {
+    first();
+    second();
+    return;
+  }
+  runParts(2, [&](int part) { part == 0 ? first() : second(); });
+}
+
 /// Runs work(first, end) over the ranges of evenRanges(n, partsFor(n)).
 template <class Work>
 void forEvenParts(int n, Work&& work) {

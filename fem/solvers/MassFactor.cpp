@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "fem/assembly/ParallelParts.hpp"
+
 namespace beamrotor {
 
 std::unique_ptr<MassFactor> MassFactor::ofMass(const SparseMatrix& M) {
@@ -38,18 +40,40 @@ std::unique_ptr<MassFactor> MassFactor::ofMass(const SparseMatrix& M) {
     for (++below; below; ++below) G.insert(below.row(), j) = below.value() * root;
   }
   G.makeCompressed();
+  factor->rows_ = G;
   return factor;
 }
 
+namespace {
+
+/// y_i = sum over the stored entries of row (or column) i of A, in their stored order: one
+/// dot product per entry of y, entries split over the cores.
+template <class Compressed>
+void dotPerOuter(const Compressed& A, Eigen::Ref<const Eigen::VectorXd> x,
+                 Eigen::Ref<Eigen::VectorXd> y) {
+  const int* start = A.outerIndexPtr();
+  const int* index = A.innerIndexPtr();
+  const double* value = A.valuePtr();
+  forEvenParts(int(A.outerSize()), [&](int first, int end) {
+    for (int i = first; i < end; ++i) {
+      double sum = 0;
+      for (int k = start[i]; k < start[i + 1]; ++k) sum += value[k] * x[index[k]];
+      y[i] = sum;
+    }
+  });
+}
+
+}  // namespace
+
 void MassFactor::multiply(Eigen::Ref<const Eigen::VectorXd> x,
                           Eigen::Ref<Eigen::VectorXd> y) const {
-  y.noalias() = lower_ * x;
+  dotPerOuter(rows_, x, y);
 }
 
 void MassFactor::multiplyTransposed(Eigen::Ref<const Eigen::VectorXd> x,
                                     Eigen::Ref<Eigen::VectorXd> y) const {
-  // Each stored column read as a row: a dot product per entry of y.
-  y.noalias() = lower_.transpose() * x;
+  // Each stored column read as a row of G'.
+  dotPerOuter(lower_, x, y);
 }
 
 void MassFactor::solveTransposed(Eigen::Ref<Eigen::VectorXd> x) const {

@@ -32,6 +32,9 @@ class MassFactor {
  private:
   MassFactor() = default;
   SparseMatrix lower_;  ///< L D^1/2
+  /// The same by rows: G x as one dot product a row, rows split over the cores, each sum in
+  /// the order of the product by columns (the same bits).
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> rows_;
 };
 
 }  // namespace beamrotor

@@ -7,8 +7,10 @@
 #include <functional>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/solvers/DecoupledBlocks.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/MassFactor.hpp"
@@ -361,12 +363,7 @@ EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
 
   // 1. Factorise K - shift M once, with the shift moved up to the lowest eigenvalues when
   //    sigma lies below all of them.
-  SturmCounter counter(K, M);
-  const int belowSigma = counter.below(sigma);
-  const ShiftedInverse op = shiftedInverse(counter, belowSigma, K, M, count, sigma);
-
-  // 2. Lanczos; when a Sturm count shows that it missed eigenvalues among the lowest (it can,
-  //    with multiple or tightly clustered ones), again in the complement of those it found.
+  //    Meanwhile, on another core, the factor of M for Lanczos in standard form (below).
   // Lanczos multiplies by M about three times per step (its M inner product): without the
   // pattern's exact zeros (in a planar beam the axial dofs never couple with the bending
   // ones, over 40 % of the entries) the products read less memory and give the same sums.
@@ -379,7 +376,20 @@ EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
     dropExactZeros(pruned);  // the rule the counter's pattern and the statics use
   }
   const SparseMatrix& massNonzeros = holdsZeros ? pruned : M;
-  const std::unique_ptr<MassFactor> massFactor = MassFactor::ofMass(massNonzeros);
+  std::unique_ptr<MassFactor> massFactor;
+  SturmCounter counter(K, M);
+  int belowSigma = 0;
+  std::optional<ShiftedInverse> shifted;
+  runTogether(
+      std::size_t(n), [&] { massFactor = MassFactor::ofMass(massNonzeros); },
+      [&] {
+        belowSigma = counter.below(sigma);
+        shifted = shiftedInverse(counter, belowSigma, K, M, count, sigma);
+      });
+  const ShiftedInverse& op = *shifted;
+
+  // 2. Lanczos; when a Sturm count shows that it missed eigenvalues among the lowest (it can,
+  //    with multiple or tightly clustered ones), again in the complement of those it found.
   const int basis = lanczosBasisSize(count);
   LanczosRun run = lanczos(massNonzeros, massFactor.get(), op, count, basis, Eigen::MatrixXd(n, 0));
   EigenPairs& all = run.pairs;

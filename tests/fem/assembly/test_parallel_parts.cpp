@@ -4,9 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
-#include <cstdlib>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "elements/Beam.hpp"
@@ -17,30 +15,12 @@
 #include "fem/model/DofMap.hpp"
 #include "fem/model/Model.hpp"
 #include "problems/bench/StandardModels.hpp"
+#include "tests/ThreadsSetting.hpp"
 
 using namespace beamrotor;
+using beamrotor::test::ThreadsSetting;
 
 namespace {
-
-/// Sets BEAMROTOR_THREADS for the scope of the object, and puts back what was there.
-class ThreadsSetting {
- public:
-  explicit ThreadsSetting(const std::string& value) {
-    if (const char* old = std::getenv("BEAMROTOR_THREADS")) old_ = old;
-    setenv("BEAMROTOR_THREADS", value.c_str(), 1);
-  }
-  ~ThreadsSetting() {
-    if (old_)
-      setenv("BEAMROTOR_THREADS", old_->c_str(), 1);
-    else
-      unsetenv("BEAMROTOR_THREADS");
-  }
-  ThreadsSetting(const ThreadsSetting&) = delete;
-  ThreadsSetting& operator=(const ThreadsSetting&) = delete;
-
- private:
-  std::optional<std::string> old_;
-};
 
 /// The planar bench line of `elements` elements with what a line's passes must get right
 /// besides: a hinge (a released end rotation), a spring between two nodes far apart (an
