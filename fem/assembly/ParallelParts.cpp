@@ -11,9 +11,8 @@ namespace {
 
 constexpr std::size_t kItemsPerPart = 50000;
 
-/// Cores this process may run on: BEAMROTOR_THREADS when it is a positive number, else the
-/// CPU affinity (which taskset, cgroups and batch schedulers narrow; hardware_concurrency
-/// does not see it).
+}  // namespace
+
 int usableCores() {
   if (const char* text = std::getenv("BEAMROTOR_THREADS")) {
     char* end = nullptr;
@@ -24,8 +23,6 @@ int usableCores() {
   if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
   return std::max(1u, std::thread::hardware_concurrency());
 }
-
-}  // namespace
 
 int partsFor(std::size_t items) {
   return int(std::clamp<std::size_t>(items / kItemsPerPart, 1, std::size_t(usableCores())));

@@ -12,10 +12,13 @@
 
 namespace beamrotor {
 
-/// How many parts a pass over `items` items (elements, equations) runs in: one per core this
-/// process may use (its CPU affinity, or BEAMROTOR_THREADS when set to a positive number), and
-/// at most one per 50 000 items: starting a thread costs about what a few thousand elements
-/// take, and a study's small models stay on one thread each.
+/// Cores this process may use: BEAMROTOR_THREADS when it is a positive number, else the CPU
+/// affinity (which taskset, cgroups and batch schedulers narrow).
+int usableCores();
+
+/// How many parts a pass over `items` items (elements, equations) runs in: one per usable
+/// core, and at most one per 50 000 items: starting a thread costs about what a few thousand
+/// elements take, and a study's small models stay on one thread each.
 int partsFor(std::size_t items);
 
 /// Bounds 0 = b_0 <= b_1 <= ... <= b_parts = n of `parts` ranges of [0, n) of equal length.

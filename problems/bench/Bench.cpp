@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "problems/bench/BenchKinds.hpp"
 
 namespace beamrotor {
@@ -52,6 +53,7 @@ BenchReport runBench(const BenchOptions& options) {
   report.options = options;
   report.peakRssMb = peakRssMb();
   report.hugePagesMb = hugePagesMb();
+  report.threads = usableCores();
   return report;
 }
 
@@ -75,6 +77,7 @@ std::string benchJson(const BenchReport& r) {
   for (const BenchFigure& f : r.figures) j[nlohmann::json::json_pointer(f.key)] = f.value;
   j["peak_rss_mb"] = r.peakRssMb;
   j["huge_pages_mb"] = r.hugePagesMb;
+  j["threads"] = r.threads;
   j["warnings"] = r.warnings;
   if (!r.exported.empty()) j["exported"] = r.exported;
   return j.dump(2);
@@ -96,6 +99,8 @@ std::string benchTable(const BenchReport& r) {
       << " s, " << r.frequenciesHz.size() << " modes, f1 = " << r.frequenciesHz[0] << " Hz ("
       << r.median.modalTotal / r.median.staticTotal << " x static)\n";
   for (const BenchFigure& f : r.figures) s << "  " << f.label << ": " << f.value << "\n";
+  s << "  threads    " << r.threads
+    << " (the cores a pass over elements or equations splits over; BEAMROTOR_THREADS)\n";
   s << "  peak RSS   " << r.peakRssMb << " MB (" << r.hugePagesMb
     << " MB on huge pages at the end)\n";
   for (const std::string& w : r.warnings) s << "  warning: " << w << "\n";

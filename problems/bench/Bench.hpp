@@ -45,6 +45,7 @@ struct BenchReport {
   std::vector<BenchFigure> figures;
   double peakRssMb = 0;
   double hugePagesMb = 0;                    ///< of the memory held at the end (MB)
+  int threads = 1;                           ///< cores a pass may split over (usableCores)
   std::vector<std::string> exported;         ///< files written by --export
   std::vector<std::string> warnings;         ///< from the analyses (e.g. skipped modes)
 

@@ -140,6 +140,25 @@ TEST_SUITE("bench") {
     checkCommonJson(r);
   }
 
+  TEST_CASE("the threads stated, and the answer the same to the last bit on one or three") {
+    // 150 000 elements: three parts of 50 000 for each pass over the elements.
+    const auto file = test::scratchDir("bench-threads") / "bench.json";
+    const auto run = [&](const std::string& threads) {
+      const auto r = test::runBeamrotor({"bench", "--kind", "planar", "--elements", "150000",
+                                         "--modes", "2", "--repeat", "1", "--json",
+                                         file.string()},
+                                        BEAMROTOR_SOURCE_DIR, {"BEAMROTOR_THREADS=" + threads});
+      REQUIRE(r.exitCode == 0);
+      return nlohmann::json::parse(test::fileContents(file));
+    };
+    const nlohmann::json one = run("1"), three = run("3");
+    CHECK(one.at("threads") == 1);
+    CHECK(three.at("threads") == 3);
+    CHECK(one.at("midspan_w").get<double>() == three.at("midspan_w").get<double>());
+    CHECK(one.at("modal").at("frequencies_hz") == three.at("modal").at("frequencies_hz"));
+    CHECK(three.at("rel_error_static").get<double>() < 1e-12);
+  }
+
   TEST_CASE("a size the kind cannot build is an input error (exit 2)") {
     CHECK_THROWS_AS(runBench(benchOptions("planar", 5, 0)), std::invalid_argument);
     CHECK_THROWS_AS(runBench(benchOptions("tetrahedra", 1000, 0)), std::invalid_argument);
