@@ -12,6 +12,14 @@ using Matrix4 = Eigen::Matrix4d;
 using Matrix12 = Beam::Matrix12;
 using Vector12 = Beam::Vector12;
 
+/// The three-point Gauss-Legendre rule mapped to [0, 1] (points 1/2 -+ sqrt(3/5)/2, weights
+/// 5/18, 8/18, 5/18): exact for polynomials of degree 5.
+struct UnitGauss3 {
+  std::array<double, 3> xi, w;
+};
+const UnitGauss3 kUnitGauss3{{0.5 - std::sqrt(0.15), 0.5, 0.5 + std::sqrt(0.15)},
+                             {5.0 / 18, 8.0 / 18, 5.0 / 18}};
+
 // Local dof positions: u v w rx ry rz at the start (0..5) and at the end (6..11).
 constexpr std::array<int, 4> kPlaneXY{1, 5, 7, 11};  // v, rz: bending about local z
 constexpr std::array<int, 4> kPlaneXZ{2, 4, 8, 10};  // w, ry: bending about local y
@@ -124,8 +132,7 @@ Eigen::RowVector4d slopeShape(BeamTheory t, double Phi, double L, double xi) {
 /// int_0^L N(x) v'^T v' dx in one bending plane for N linear from N0 to N1; the integrand is
 /// at most of degree 5, which 3 Gauss points integrate exactly.
 Matrix4 geometricBending(BeamTheory t, double Phi, double L, double N0, double N1) {
-  const double g = std::sqrt(0.15);
-  const std::array<double, 3> xi{0.5 - g, 0.5, 0.5 + g}, w{5.0 / 18, 8.0 / 18, 5.0 / 18};
+  const auto& [xi, w] = kUnitGauss3;
   Matrix4 k = Matrix4::Zero();
   for (int p = 0; p < 3; ++p) {
     const Eigen::RowVector4d B = slopeShape(t, Phi, L, xi[p]);
@@ -479,8 +486,7 @@ Matrix12 Beam::localGyroscopic() const {
   // -ry2), so ry = -N (w1, -ry1, w2, -ry2). Rotation shapes are quadratic: 3 Gauss points
   // integrate the products exactly.
   const Eigen::Vector4d flip(1, -1, 1, -1);
-  const double g = std::sqrt(0.15);
-  const std::array<double, 3> xi{0.5 - g, 0.5, 0.5 + g}, w{5.0 / 18, 8.0 / 18, 5.0 / 18};
+  const auto& [xi, w] = kUnitGauss3;
   Matrix4 B = Matrix4::Zero();  // int Ny^T Nz dx: rows (w1, ry1, w2, ry2), cols (v1, rz1, v2, rz2)
   for (int p = 0; p < 3; ++p) {
     const Eigen::RowVector4d Nz = rotationShape(t, phiY, L, xi[p]);

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <new>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -25,7 +27,9 @@ int partsFor(std::size_t items);
 std::vector<int> evenRanges(int n, int parts);
 
 /// Runs work(0), ..., work(parts - 1) on as many threads (the last on the caller's) and then
-/// rethrows the exception of the first part that threw, if any.
+/// rethrows the exception of the first part that threw, if any. A part whose thread cannot be
+/// started (a process limit, address space under `ulimit -v`) runs on the caller's thread:
+/// the parts own their ranges, so the result is the same.
 template <class Work>
 void runParts(int parts, Work&& work) {
   std::vector<std::exception_ptr> failures(parts);
@@ -37,8 +41,14 @@ void runParts(int parts, Work&& work) {
     }
   };
   std::vector<std::thread> threads;
-  for (int part = 0; part + 1 < parts; ++part) threads.emplace_back(guarded, part);
-  if (parts > 0) guarded(parts - 1);
+  int started = 0;
+  try {
+    threads.reserve(std::size_t(std::max(parts - 1, 0)));
+    for (; started + 1 < parts; ++started) threads.emplace_back(guarded, started);
+  } catch (const std::system_error&) {
+  } catch (const std::bad_alloc&) {
+  }
+  for (int part = started; part < parts; ++part) guarded(part);
   for (std::thread& t : threads) t.join();
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);
