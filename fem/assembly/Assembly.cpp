@@ -320,17 +320,11 @@ Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
   // equations, in the model's order.
   const auto& elements = model.elements();
   const auto constrained = [&](const NodeDof& d) { return dofs.isConstrained(dofs.equation(d)); };
-  const std::vector<int> bounds = evenRanges(int(elements.size()), partsFor(elements.size()));
-  std::vector<std::vector<int>> touchingPart(bounds.size() - 1);
-  runParts(int(touchingPart.size()), [&](int part) {
-    for (int i = bounds[part]; i < bounds[part + 1]; ++i) {
-      const auto d = elements[i]->dofs();
-      if (std::any_of(d.begin(), d.end(), constrained)) touchingPart[part].push_back(i);
-    }
-  });
-  std::vector<int> touching;
-  for (const std::vector<int>& list : touchingPart)
-    touching.insert(touching.end(), list.begin(), list.end());
+  const std::vector<int> touching =
+      pickInParts(int(elements.size()), [&](int i, std::vector<int>& out) {
+        const auto d = elements[i]->dofs();
+        if (std::any_of(d.begin(), d.end(), constrained)) out.push_back(i);
+      });
   const int firstConstrained = dofs.freeCount();
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.constrainedCount());
   const std::vector<int> owners = evenRanges(int(r.size()), partsFor(touching.size()));

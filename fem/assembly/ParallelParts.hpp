@@ -66,6 +66,20 @@ void runTogether(std::size_t items, First&& first, Second&& second) {
   runParts(2, [&](int part) { part == 0 ? first() : second(); });
 }
 
+/// What pick(i, out) appends to `out` for i = 0, ..., n - 1, in the order of i: each part
+/// picks from its own range of i into a list of its own, and the lists are joined.
+template <class Pick>
+std::vector<int> pickInParts(int n, Pick&& pick) {
+  const std::vector<int> bounds = evenRanges(n, partsFor(std::size_t(std::max(n, 0))));
+  std::vector<std::vector<int>> picked(bounds.size() - 1);
+  runParts(int(picked.size()), [&](int part) {
+    for (int i = bounds[part]; i < bounds[part + 1]; ++i) pick(i, picked[part]);
+  });
+  std::vector<int> all;
+  for (const std::vector<int>& list : picked) all.insert(all.end(), list.begin(), list.end());
+  return all;
+}
+
 /// Runs work(first, end) over the ranges of evenRanges(n, partsFor(n)).
 template <class Work>
 void forEvenParts(int n, Work&& work) {

@@ -51,17 +51,14 @@ std::vector<SideRotations> hingeRotations(const Model& model, const NodalField& 
   // The released ends are found part by part (a pass over every element, which is most of
   // the time when there are none).
   const auto& elements = model.elements();
-  const std::vector<int> bounds = evenRanges(int(elements.size()), partsFor(elements.size()));
-  std::vector<std::vector<int>> hingedNodes(bounds.size() - 1);
-  runParts(int(hingedNodes.size()), [&](int part) {
-    for (int i = bounds[part]; i < bounds[part + 1]; ++i)
-      if (const LineElement* line = asLine(elements[i]))
-        for (int end : {0, 1})
-          if (line->releases(end)) hingedNodes[part].push_back(line->endNodes()[end]);
-  });
+  const std::vector<int> releasedEnds =
+      pickInParts(int(elements.size()), [&](int i, std::vector<int>& out) {
+        if (const LineElement* line = asLine(elements[i]))
+          for (int end : {0, 1})
+            if (line->releases(end)) out.push_back(line->endNodes()[end]);
+      });
   std::vector<bool> hinged(model.nodeCount(), false);
-  for (const std::vector<int>& nodes : hingedNodes)
-    for (int node : nodes) hinged[node] = true;
+  for (int node : releasedEnds) hinged[node] = true;
   std::vector<SideRotations> out;
   for (int n = 0; n < model.nodeCount(); ++n)
     if (hinged[n]) out.push_back({n, {}, {}});
