@@ -138,8 +138,12 @@ SparseAssembler::SparseAssembler(const Model& model, const DofMap& dofs)
   });
   colStart[nf] = entries;
   A.swap(pattern_);  // no copy: Eigen has no move assignment
-  stiffnessSymmetric_ = std::all_of(model.elements().begin(), model.elements().end(),
-                                    [](const auto& e) { return e->symmetricStiffness(); });
+  stiffnessSymmetric_ = stiffnessSymmetricByConstruction(model);
+}
+
+bool stiffnessSymmetricByConstruction(const Model& model) {
+  return std::all_of(model.elements().begin(), model.elements().end(),
+                     [](const auto& e) { return e->symmetricStiffness(); });
 }
 
 ElementMatrix elementMatrix(const Element& e, MatrixKind kind) {

@@ -64,6 +64,9 @@ class SparseAssembler {
 /// copied into storage of its own size, part by part, and the old storage is released.
 void dropExactZeros(SparseMatrix& A);
 
+/// True when every element says its stiffness is symmetric (Element::symmetricStiffness).
+bool stiffnessSymmetricByConstruction(const Model& model);
+
 /// The element matrix of one kind (empty when the element has none).
 ElementMatrix elementMatrix(const Element& e, MatrixKind kind);
 

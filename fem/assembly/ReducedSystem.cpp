@@ -63,11 +63,11 @@ NodalField freeToNodalField(const Model& model, const DofMap& dofs, const Eigen:
   return layOut(model, dofs, uf, dofs.freeCount());
 }
 
-SystemSize systemSize(const Model& model, const DofMap& dofs, const SparseMatrix& Kff,
+SystemSize systemSize(const Model& model, const DofMap& dofs, long long stiffnessEntries,
                       double factorEntries) {
   return SystemSize{model.nodeCount(), int(model.elements().size()),
                     dofs.size(),       dofs.freeCount(),
-                    Kff.nonZeros(),    factorEntries};
+                    stiffnessEntries,  factorEntries};
 }
 
 }  // namespace beamrotor

@@ -29,7 +29,8 @@ Eigen::VectorXd fromNodalField(const DofMap& dofs, const NodalField& field);
 /// A free-length vector (e.g. a mode shape) laid out per node; constrained dofs get zero.
 NodalField freeToNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& uf);
 
-SystemSize systemSize(const Model& model, const DofMap& dofs, const SparseMatrix& Kff,
+/// stiffnessEntries: stored entries of the free-free K (both triangles).
+SystemSize systemSize(const Model& model, const DofMap& dofs, long long stiffnessEntries,
                       double factorEntries);
 
 }  // namespace beamrotor

@@ -111,7 +111,7 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
     mode.description = describeMode(mode.energyShare);
     result.modes.push_back(std::move(mode));
   }
-  result.size = systemSize(model, dofs, K, pairs.factorEntries);
+  result.size = systemSize(model, dofs, K.nonZeros(), pairs.factorEntries);
   result.time.total = total.lap();
   return result;
 }

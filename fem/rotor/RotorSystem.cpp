@@ -80,7 +80,7 @@ SparseMatrix RotorSystem::damping(double speed) const {
 }
 
 SystemSize RotorSystem::systemSize(double factorEntries) const {
-  return beamrotor::systemSize(model_, dofs_, K0_, factorEntries);
+  return beamrotor::systemSize(model_, dofs_, K0_.nonZeros(), factorEntries);
 }
 
 }  // namespace beamrotor

@@ -94,7 +94,7 @@ BucklingResult solveBuckling(const Model& model, const BucklingOptions& options)
     result.warnings.push_back(
         "buckling: the reference load puts nothing in tension, so the reversed load cannot "
         "buckle the structure: no negative load factor exists");
-  result.size = systemSize(model, dofs, K, positive.factorEntries);
+  result.size = systemSize(model, dofs, K.nonZeros(), positive.factorEntries);
   result.time.total = total.lap();
   return result;
 }

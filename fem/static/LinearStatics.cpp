@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fem/assembly/BandAssembly.hpp"
 #include "fem/assembly/ParallelParts.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -26,6 +27,18 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
   return A;
 }
 
+/// The same for a band.
+SymmetricBand holdDofs(const SymmetricBand& K, const std::vector<HeldDof>& held) {
+  SymmetricBand A = K;
+  const int n = A.size(), kd = A.halfBandwidth();
+  for (const HeldDof& h : held) {
+    const int eq = h.equation;
+    for (int i = eq + 1; i <= eq + kd && i < n; ++i) A.lower(i, eq) = 0;
+    for (int j = std::max(eq - kd, 0); j < eq; ++j) A.lower(eq, j) = 0;
+  }
+  return A;
+}
+
 /// An upper estimate of the relative error of x as a solution of A x = b, measured with one
 /// more solve with the same factor (sizes in the scaled metric sqrt(A_jj) |x_j|, so units do
 /// not matter: largest |error| over largest |x|). Two sources, their right-hand sides added
@@ -39,40 +52,66 @@ SparseMatrix holdDofs(const SparseMatrix& K, const std::vector<HeldDof>& held) {
 ///   for this x, taken with one sign, which excites the smooth modes that amplify it most (on a
 ///   cantilever with exact element lengths it bounds the true error by a factor 600 to 1100,
 ///   measured at 16 and 2000 elements: the real roundings have both signs and partly cancel).
-double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
-                     const LinearSolver& solver) {
+/// forRow(i, visit) calls visit(j, A_ij) for the entries of row i; `diagonal` is A's.
+template <class ForRow, class Solve>
+double measuredError(ForRow&& forRow, const Eigen::VectorXd& diagonal, const Eigen::VectorXd& b,
+                     const Eigen::VectorXd& x, Solve&& solve) {
   const Eigen::Index n = b.size();
-  // Row i of A is column i of A' (of A itself when the solver took it as symmetric): each
-  // residual entry is one sum over a column, kept in extended precision in a register, with
+  // Each residual entry is one sum over a row, kept in extended precision in a register, with
   // (|A| |x|)_i beside it, and no full-length extended-precision vector is stored.
-  SparseMatrix transposed;
-  if (!solver.symmetric()) transposed = A.transpose();
-  const SparseMatrix& rows = solver.symmetric() ? A : transposed;
   const double eps = std::numeric_limits<double>::epsilon();
   Eigen::VectorXd perturbation(n);
-  forEvenParts(int(rows.outerSize()), [&](int first, int end) {
+  forEvenParts(int(n), [&](int first, int end) {
     for (int i = first; i < end; ++i) {
       long double r = b[i];
       double magnitude = 0;
-      for (SparseMatrix::InnerIterator it(rows, i); it; ++it) {
-        r -= static_cast<long double>(it.value()) * x[it.index()];
-        magnitude += std::abs(it.value() * x[it.index()]);
-      }
+      forRow(i, [&](int j, double a) {
+        r -= static_cast<long double>(a) * x[j];
+        magnitude += std::abs(a * x[j]);
+      });
       perturbation[i] = double(std::abs(r)) + eps * magnitude;
     }
   });
-  const Eigen::VectorXd response = solver.solve(perturbation);
-  const Eigen::VectorXd weight = A.diagonal().cwiseAbs().cwiseSqrt();  // after the solve's peak
+  const Eigen::VectorXd response = solve(perturbation);
+  const Eigen::VectorXd weight = diagonal.cwiseAbs().cwiseSqrt();  // after the solve's peak
   const double size = weight.cwiseProduct(x).cwiseAbs().maxCoeff();
   const double error = weight.cwiseProduct(response).cwiseAbs().maxCoeff();
   if (!std::isfinite(error)) return std::numeric_limits<double>::infinity();
   return size > 0 ? error / size : (error > 0 ? std::numeric_limits<double>::infinity() : 0.0);
 }
 
+double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
+                     const LinearSolver& solver) {
+  // Row i of A is column i of A' (of A itself when the solver took it as symmetric).
+  SparseMatrix transposed;
+  if (!solver.symmetric()) transposed = A.transpose();
+  const SparseMatrix& rows = solver.symmetric() ? A : transposed;
+  const auto forRow = [&](int i, auto&& visit) {
+    for (SparseMatrix::InnerIterator it(rows, i); it; ++it) visit(int(it.index()), it.value());
+  };
+  return measuredError(forRow, A.diagonal(), b, x,
+                       [&](const Eigen::VectorXd& r) { return solver.solve(r); });
+}
+
+double measuredError(const SymmetricBand& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
+                     const BandCholesky& factor) {
+  const auto forRow = [&](int i, auto&& visit) { A.forRow(i, visit); };
+  return measuredError(forRow, A.diagonal(), b, x,
+                       [&](const Eigen::VectorXd& r) { return factor.solve(r); });
+}
+
 }  // namespace
 
 LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
     : model_(model), loaded_(&model), dofs_(model), reuse_(reuse) {
+  // A line numbered node by node goes into a band, without a pattern (fem/assembly/
+  // BandAssembly); other structures into the sparse pattern.
+  if (const std::optional<int> kd = stiffnessBand(model, dofs_)) {
+    bandK_ = assembleBand(model, dofs_, MatrixKind::stiffness, *kd);
+    banded_ = true;
+    setLoads(model);
+    return;
+  }
   // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
   SparseAssembler assembler(model, dofs_);
   if (assembler.stiffnessSymmetric()) symmetry_ = MatrixSymmetry::byConstruction;
@@ -105,22 +144,6 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   const int nf = dofs_.freeCount();
   if (nf == 0) return prescribedValues(*loaded_, dofs_);
 
-  // 1. Factorise (symbolic analysis once, numeric every time).
-  SparseMatrix heldMatrix;
-  if (!held.empty()) heldMatrix = holdDofs(K_, held);
-  const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
-  const bool sameFactor = held.empty() && factoredUnheld_;
-  if (!analysed_) {
-    // Held dofs clear rows and columns alike: K's symmetry is the held matrix's.
-    if (reuse_)
-      solver_ = &reuse_->analysedFor(A, symmetry_);
-    else
-      solver_->analyzePattern(A, symmetry_);
-    analysed_ = true;
-  }
-  if (!sameFactor) solver_->factorize(A);
-  factoredUnheld_ = held.empty();
-  rcond_ = solver_->rcond();
   // A nearly singular matrix: a mechanism (named in words), or a structure that is held but
   // ill-conditioned, whose solution's measured round-off then tells how much of it holds.
   bool kinematicsChecked = false;
@@ -129,10 +152,51 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     kinematicsChecked = true;
     std::vector<int> heldEquations;
     for (const HeldDof& h : held) heldEquations.push_back(h.equation);
-    const Mechanism mechanism = findMechanism(model_, dofs_, K_, heldEquations);
+    const SparseMatrix fromBand = banded_ ? bandK_.toSparse() : SparseMatrix();
+    const Mechanism mechanism =
+        findMechanism(model_, dofs_, banded_ ? fromBand : K_, heldEquations);
     if (mechanism.count > 0) throwUnsupported(model_, dofs_, mechanism, "static analysis");
   };
-  if (!sameFactor && !solver_->healthy(singularRcond)) requireHeld();
+
+  // 1. Factorise (the band's Cholesky; or the sparse factor: symbolic analysis once, numeric
+  //    every time). Held dofs keep their place: their rows and columns are cleared.
+  const bool sameFactor = held.empty() && factoredUnheld_;
+  SymmetricBand heldBand;
+  if (banded_ && !held.empty()) heldBand = holdDofs(bandK_, held);
+  if (banded_ && !sameFactor) {
+    if (bandFactor_.factorize(held.empty() ? bandK_ : heldBand)) {
+      rcond_ = bandFactor_.scaledRcond();
+      if (!(rcond_ > singularRcond)) requireHeld();
+    } else {
+      // Not positive definite: a mechanism (thrown in words), else a held structure made
+      // indefinite (negative springs), which the sparse LDL' factorises.
+      requireHeld();
+      K_ = bandK_.toSparse();
+      bandK_ = SymmetricBand();
+      heldBand = SymmetricBand();
+      banded_ = false;
+      symmetry_ = MatrixSymmetry::byConstruction;
+    }
+  }
+  SparseMatrix heldMatrix;
+  if (!banded_) {
+    if (!held.empty()) heldMatrix = holdDofs(K_, held);
+    const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
+    if (!analysed_) {
+      // Held dofs clear rows and columns alike: K's symmetry is the held matrix's.
+      if (reuse_)
+        solver_ = &reuse_->analysedFor(A, symmetry_);
+      else
+        solver_->analyzePattern(A, symmetry_);
+      analysed_ = true;
+    }
+    if (!sameFactor) {
+      solver_->factorize(A);
+      rcond_ = solver_->rcond();
+      if (!solver_->healthy(singularRcond)) requireHeld();
+    }
+  }
+  factoredUnheld_ = held.empty();
   factorSeconds_ += clock.lap();
 
   // 2. Right-hand side: held values move to the right like prescribed ones (rhs_ itself, not
@@ -141,13 +205,22 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   if (!held.empty()) {
     Eigen::VectorXd uHeld = Eigen::VectorXd::Zero(nf);
     for (const HeldDof& h : held) uHeld[h.equation] = h.value;
-    heldRhs = rhs_ - K_ * uHeld;
-    for (const HeldDof& h : held) heldRhs[h.equation] = K_.coeff(h.equation, h.equation) * h.value;
+    heldRhs = rhs_ - (banded_ ? bandK_ * uHeld : Eigen::VectorXd(K_ * uHeld));
+    for (const HeldDof& h : held) {
+      const double diagonal =
+          banded_ ? bandK_.lower(h.equation, h.equation) : K_.coeff(h.equation, h.equation);
+      heldRhs[h.equation] = diagonal * h.value;
+    }
   }
   const Eigen::VectorXd& b = held.empty() ? rhs_ : heldRhs;
   Eigen::VectorXd u = prescribedValues(*loaded_, dofs_);
-  u.head(nf) = solver_->solve(b);
-  roundOff_ = measuredError(A, b, u.head(nf), *solver_);
+  if (banded_) {
+    u.head(nf) = bandFactor_.solve(b);
+    roundOff_ = measuredError(held.empty() ? bandK_ : heldBand, b, u.head(nf), bandFactor_);
+  } else {
+    u.head(nf) = solver_->solve(b);
+    roundOff_ = measuredError(held.empty() ? K_ : heldMatrix, b, u.head(nf), *solver_);
+  }
   if (!u.allFinite() || !std::isfinite(roundOff_)) {
     requireHeld();
     std::ostringstream msg;

@@ -1,15 +1,21 @@
 // The linear static system of a model with supports eliminated, factorised so that it can be
 // solved again with some free dofs held at given values (active contacts) without a new
 // symbolic analysis: held dofs keep their place in the matrix, their rows and columns are
-// replaced by the diagonal, so the sparsity pattern never changes.
+// replaced by the diagonal, so the sparsity pattern never changes. K is stored as a band
+// and factorised by LAPACK's banded Cholesky when its free equations couple only near the
+// diagonal (a line numbered node by node: fem/assembly/BandAssembly), else sparse and
+// factorised by CHOLMOD or UMFPACK (fem/solvers/LinearSolver).
 #pragma once
 
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/model/Model.hpp"
+#include "fem/assembly/SymmetricBand.hpp"
 #include "fem/model/Results.hpp"
+#include "fem/solvers/BandCholesky.hpp"
 #include "fem/solvers/LinearSolver.hpp"
 #include "fem/solvers/SymbolicReuse.hpp"
 
@@ -46,15 +52,20 @@ class LinearStatics {
   Eigen::VectorXd reactions(const Eigen::VectorXd& u) const;
 
   const DofMap& dofs() const { return dofs_; }
-  const SparseMatrix& stiffness() const { return K_; }
+  /// Stored entries of K (free-free, both triangles, without exact zeros off the diagonal).
+  long long stiffnessEntries() const { return banded_ ? bandK_.nonZeros() : K_.nonZeros(); }
   /// Reciprocal condition estimate of the last factorisation, symmetrically scaled.
   double rcond() const { return rcond_; }
   /// The measured relative error of the last solution (round-off): the residual in extended
   /// precision and one correction solve, in the scaled metric sqrt(K_jj) |u_j|.
   double roundOff() const { return roundOff_; }
-  double factorEntries() const { return solver_->factorEntries(); }
+  double factorEntries() const {
+    return banded_ ? bandFactor_.factorEntries() : solver_->factorEntries();
+  }
   /// The direct method chosen for K and its ordering ("CHOLMOD LDL', AMD ordering").
   std::string solverName() const {
+    if (banded_)
+      return "LAPACK band Cholesky, half-bandwidth " + std::to_string(bandK_.halfBandwidth());
     return solver_->methodName() + ", " + solver_->orderingName() + " ordering";
   }
   /// Seconds spent factorising and solving so far.
@@ -65,6 +76,9 @@ class LinearStatics {
   const Model& model_;
   const Model* loaded_;  ///< the model whose loads are on the right-hand side
   DofMap dofs_;
+  bool banded_ = false;  ///< K is bandK_ (factorised by bandFactor_), else K_
+  SymmetricBand bandK_;
+  BandCholesky bandFactor_;
   SparseMatrix K_;
   MatrixSymmetry symmetry_ = MatrixSymmetry::unknown;  ///< of K_, known from its elements
   Eigen::VectorXd rhs_;  ///< the free equations' loads less K_fc u_c (prescribed values)

@@ -27,7 +27,7 @@ void recover(const Model& loaded, const LinearStatics& system, const Eigen::Vect
   result.rcond = system.rcond();
   result.roundOff = system.roundOff();
   result.solver = system.solverName();
-  result.size = systemSize(loaded, dofs, system.stiffness(), system.factorEntries());
+  result.size = systemSize(loaded, dofs, system.stiffnessEntries(), system.factorEntries());
 }
 
 }  // namespace

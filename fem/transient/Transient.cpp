@@ -174,7 +174,7 @@ TransientResult solveTransient(const Model& model, const TransientOptions& optio
     factorEntries = implicit->factorEntries();
     advance = [&](TransientState& st) { implicit->step(st); };
   }
-  result.size = systemSize(model, dofs, system.stiffness(), factorEntries);
+  result.size = systemSize(model, dofs, system.stiffness().nonZeros(), factorEntries);
   result.time.factor = clock.lap();
 
   // 4. Step, recording every `every` steps, the frames on their own schedule.

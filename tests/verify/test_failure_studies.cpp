@@ -34,12 +34,15 @@ TEST_SUITE("failure studies") {
     // reduced integration converges at order 2 (error 1/(4 n^2)) until round-off, which grows
     // with the condition number ~ (L/h)^2 n^2, overtakes the shrinking error: measured
     // departures from 1/(4 n^2) of 6.4e-7, 1.3e-5 and 7.0e-3 at n = 8, 32, 128, and 1.2 (the
-    // error doubled) at n = 512. Asked to 1e-2 where the discretisation error dominates.
+    // error doubled) at n = 512 (sparse LDL'; LAPACK's band Cholesky, which solves these lines
+    // now: 4.1e-7, 4.5e-5, 1.1e-2 and 0.52). Asked to 1e-3 where the discretisation error
+    // dominates (n = 8, 32); at n = 128 the round-off, about eps cond = 2.2e-16 x 1.6e10 of
+    // the deflection, is a quarter of the 1.5e-5 error itself at worst: asked to 0.1.
     const auto byMesh = lockingAgainstElements(1000, {8, 32, 128, 512});
     CHECK(byMesh.back().fullIntegration > 0.5);
     for (int i = 0; i < 3; ++i)
       CHECK(relError(byMesh[i].reducedIntegration,
-                     0.25 / (byMesh[i].elements * byMesh[i].elements)) < 1e-2);
+                     0.25 / (byMesh[i].elements * byMesh[i].elements)) < (i < 2 ? 1e-3 : 0.1));
   }
 
   TEST_CASE("penalty joint: modelling error 3.75/ratio, then round-off; elimination exact") {

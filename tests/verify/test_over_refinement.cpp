@@ -20,8 +20,10 @@ TEST_SUITE("over-refinement") {
     CHECK(p[2].error > 2 * p[2].discretisation);
     CHECK(p[3].error > 1e-2);
     CHECK(p[3].error > p[1].error);
-    // rcond falls about like N^-3 (CHOLMOD's min/max pivot ratio).
-    CHECK(p[3].rcond < 1e-12);
+    // rcond falls about like N^-3 (the min/max ratio of the scaled pivots): measured 1.3e-12
+    // at 10^4 elements with LAPACK's band Cholesky (below 1e-12 with CHOLMOD's LDL', whose
+    // smallest pivot, round-off by then, came out otherwise).
+    CHECK(p[3].rcond < 1e-11);
     CHECK(p[1].rcond / p[2].rcond > 100);
   }
 

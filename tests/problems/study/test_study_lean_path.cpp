@@ -94,7 +94,11 @@ TEST_SUITE("design study lean path") {
 
   TEST_CASE("a study's static systems share one symbolic analysis while their pattern holds") {
     // A simply supported beam under a uniform load whose element count is a parameter: the
-    // span changes K's values only, the element count its pattern.
+    // span changes K's values only, the element count its pattern. A rotational spring joins
+    // the two ends: K is then no narrow band (a plain line would be stored as one and
+    // factorised with no symbolic analysis at all, fem/assembly/BandAssembly) and goes to the
+    // sparse LDL'. Its end moments are equal and opposite, so each support still carries
+    // half the load.
     const std::string text = R"(title: symbolic analysis shared among points
 parameters:
   n: 4
@@ -104,6 +108,7 @@ materials: [{name: steel, E: 210e9, nu: 0.3, rho: 7850}]
 sections: [{name: bar, shape: rectangle, b: 0.04, h: 0.06}]
 segments: [{length: L, section: bar, elements: n}]
 supports: [{name: left, at: start, fix: [ux, uy]}, {name: right, at: end, fix: [uy]}]
+springs: [{at: start, to: end, dof: rz, k: 1e4}]
 loads: [{type: distributed, qy: -5000}]
 analyses: [{type: static}]
 )";

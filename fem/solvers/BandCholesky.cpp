@@ -1,0 +1,82 @@
+#include "fem/solvers/BandCholesky.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fem/assembly/ParallelParts.hpp"
+
+extern "C" {
+// LAPACK (Debian's OpenBLAS or reference LAPACK, 32-bit integers).
+void dpbtrf_(const char* uplo, const int* n, const int* kd, double* ab, const int* ldab, int* info);
+}
+
+namespace beamrotor {
+
+bool BandCholesky::factorize(const SymmetricBand& A) {
+  factorized_ = false;
+  L_ = SparseMatrix();
+  SymmetricBand band = A;
+  const int n = band.size(), kd = band.halfBandwidth(), ld = band.leading();
+  int info = 0;
+  if (n > 0) dpbtrf_("L", &n, &kd, band.data(), &ld, &info);
+  if (info < 0) throw std::logic_error("dpbtrf: argument " + std::to_string(-info) + " is wrong");
+  if (info > 0) return false;
+  pivots_.resize(n);
+  for (int j = 0; j < n; ++j) {
+    const double l = band.lower(j, j);
+    pivots_[j] = l * l / A.lower(j, j);
+  }
+  // L compressed by columns, part by part: count what each column keeps, then copy it.
+  const auto keeps = [&](int i, int j) { return i == j || band.lower(i, j) != 0.0; };
+  L_.resize(n, n);
+  std::vector<int> start(std::size_t(n) + 1, 0);
+  forEvenParts(n, [&](int first, int end) {
+    for (int j = first; j < end; ++j)
+      for (int i = j; i <= j + kd && i < n; ++i) start[j + 1] += keeps(i, j);
+  });
+  for (int j = 0; j < n; ++j) start[j + 1] += start[j];
+  L_.resizeNonZeros(start[n]);
+  std::copy(start.begin(), start.end(), L_.outerIndexPtr());
+  forEvenParts(n, [&](int first, int end) {
+    for (int j = first; j < end; ++j) {
+      int next = start[j];
+      for (int i = j; i <= j + kd && i < n; ++i)
+        if (keeps(i, j)) {
+          L_.innerIndexPtr()[next] = i;
+          L_.valuePtr()[next++] = band.lower(i, j);
+        }
+    }
+  });
+  factorized_ = true;
+  return true;
+}
+
+Eigen::VectorXd BandCholesky::solve(const Eigen::VectorXd& b) const {
+  if (!factorized_) throw std::logic_error("BandCholesky::solve: no factorisation");
+  Eigen::VectorXd x = b;
+  L_.triangularView<Eigen::Lower>().solveInPlace(x);
+  L_.transpose().triangularView<Eigen::Upper>().solveInPlace(x);
+  return x;
+}
+
+double BandCholesky::scaledRcond() const {
+  if (!factorized_) return 0;
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for (Eigen::Index j = 0; j < pivots_.size(); ++j) {
+    const double pivot = pivots_[j];
+    // A diagonal entry that is not positive, or infinite entries, leave no finite positive
+    // pivot: nothing about such a matrix is well conditioned.
+    if (!(pivot > 0) || !std::isfinite(pivot)) return 0;
+    smallest = std::min(smallest, pivot);
+    largest = std::max(largest, pivot);
+  }
+  return largest > 0 ? smallest / largest : 0;
+}
+
+double BandCholesky::factorEntries() const { return double(L_.nonZeros()); }
+
+}  // namespace beamrotor

@@ -1,0 +1,90 @@
+// Assembly into a band: chosen for a line numbered node by node and for nothing wider, and the
+// same entries as the sparse assembler's, to the last bit, on one part or several.
+#include <doctest/doctest.h>
+
+#include <memory>
+
+#include "elements/Spring.hpp"
+#include "fem/assembly/Assembly.hpp"
+#include "fem/assembly/BandAssembly.hpp"
+#include "fem/model/DofMap.hpp"
+#include "fem/model/Model.hpp"
+#include "problems/bench/StandardModels.hpp"
+#include "tests/ThreadsSetting.hpp"
+
+using namespace beamrotor;
+using beamrotor::test::ThreadsSetting;
+
+namespace {
+
+/// Every entry of the band against the sparse matrix's upper triangle (the one LDL' reads),
+/// exactly, and no entry of the sparse matrix outside the band.
+void checkEqual(const SymmetricBand& band, const SparseMatrix& sparse) {
+  REQUIRE(band.size() == sparse.rows());
+  long long outside = 0, differ = 0;
+  for (int col = 0; col < sparse.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(sparse, col); it; ++it) {
+      const int row = int(it.row());
+      if (row > col) continue;
+      if (col - row > band.halfBandwidth())
+        outside += it.value() != 0.0;
+      else
+        differ += band.lower(col, row) != it.value();
+    }
+  CHECK(outside == 0);
+  CHECK(differ == 0);
+  SparseMatrix dropped = sparse;
+  dropExactZeros(dropped);
+  CHECK(band.nonZeros() == dropped.nonZeros());
+  CHECK(band.toSparse().nonZeros() == dropped.nonZeros());
+}
+
+}  // namespace
+
+TEST_SUITE("band assembly") {
+  TEST_CASE("a planar line: half-bandwidth 5, K and M equal the sparse assembler's") {
+    const PlanarBenchModel bench = planarBenchModel(200);
+    const Model& m = *bench.model;
+    const DofMap dofs(m);
+    const std::optional<int> kd = stiffnessBand(m, dofs);
+    REQUIRE(kd.has_value());
+    // A node's ux, uy, rz are three consecutive equations: an element spans 6 of them
+    // (fewer at a support), so its first and last are 5 apart.
+    CHECK(*kd == 5);
+    const auto [K, M] = SparseAssembler(m, dofs).assemble(MatrixKind::stiffness, MatrixKind::mass);
+    checkEqual(assembleBand(m, dofs, MatrixKind::stiffness, *kd), K);
+    checkEqual(assembleBand(m, dofs, MatrixKind::mass, *kd), M);
+    // The band's product is the sparse one's (the same entries, summed in another order).
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 3.0);
+    const Eigen::VectorXd y = assembleBand(m, dofs, MatrixKind::stiffness, *kd) * x;
+    CHECK((y - K * x).norm() <= 1e-14 * (K.cwiseAbs() * x.cwiseAbs()).norm());
+  }
+
+  TEST_CASE("a spring between far nodes makes the band too wide: the sparse path serves") {
+    PlanarBenchModel bench = planarBenchModel(200);
+    Model& m = *bench.model;
+    m.addElement(std::make_unique<Spring>(NodeDof{3, Dof::uy}, NodeDof{195, Dof::uy}, 2e5));
+    const DofMap dofs(m);
+    REQUIRE(dofs.isFree(dofs.equation({195, Dof::uy})));  // not a span end: those are pinned
+    // Hundreds of equations apart: a band that wide per equation against about 8 entries an
+    // equation in the elements.
+    CHECK_FALSE(stiffnessBand(m, dofs).has_value());
+  }
+
+  TEST_CASE("one part or three: the same bits") {
+    const PlanarBenchModel bench = planarBenchModel(150000);
+    const DofMap dofs(*bench.model);
+    const int kd = stiffnessBand(*bench.model, dofs).value();
+    SymmetricBand one, three;
+    {
+      const ThreadsSetting threads("1");
+      one = assembleBand(*bench.model, dofs, MatrixKind::stiffness, kd);
+    }
+    {
+      const ThreadsSetting threads("3");
+      three = assembleBand(*bench.model, dofs, MatrixKind::stiffness, kd);
+    }
+    const std::size_t entries = std::size_t(one.size()) * std::size_t(one.leading());
+    CHECK(std::equal(one.data(), one.data() + entries, three.data()));
+  }
+}

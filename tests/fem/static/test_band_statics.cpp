@@ -1,0 +1,70 @@
+// The static solve of a line stored as a band (LAPACK's Cholesky) against closed forms, and
+// against the sparse path's solution of the same K: a spring of zero stiffness between far
+// nodes widens the band past what suits it and leaves every entry of K as it was.
+#include <doctest/doctest.h>
+
+#include <memory>
+
+#include "elements/Spring.hpp"
+#include "fem/assembly/Assembly.hpp"
+#include "fem/static/Static.hpp"
+#include "problems/bench/StandardModels.hpp"
+#include "tests/Helpers.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+bool startsWith(const std::string& text, const std::string& head) {
+  return text.rfind(head, 0) == 0;
+}
+
+}  // namespace
+
+TEST_SUITE("band statics") {
+  TEST_CASE("a cantilever line is solved on its band: exact tip deflection, sizes reported") {
+    // Hermite cubics give the end-loaded cantilever's deflection exactly: round-off remains
+    // (K's condition number ~1e6 here).
+    const double L = 2.0, P = 1500.0;
+    const auto sec = steelCircle(0.05);
+    Model m;
+    const Line line = uniformBeam(m, L, sec, 7);
+    clamp(m, "root", line.nodes.front(), DofSet::planar());
+    m.addLoad({line.nodes.back(), Dof::uy, -P});
+    const StaticResult r = solveStatic(m);
+    CHECK(r.solver == "LAPACK band Cholesky, half-bandwidth 5");
+    CHECK(relError(r.displacement(line.nodes.back(), 1), -P * L * L * L / (3 * sec->EIz())) <
+          1e-10);
+    CHECK(relError(r.reaction("root", Dof::rz), P * L) < 1e-10);
+    // Sizes as the sparse path reports them: K's entries without exact zeros.
+    const DofMap dofs(m);
+    SparseMatrix K = SparseAssembler(m, dofs).assemble(MatrixKind::stiffness);
+    dropExactZeros(K);
+    CHECK(r.size.nonzeros == K.nonZeros());
+    // L: K's lower triangle and one fill a node after the first: a node's uy and rz do not
+    // couple in K (the two elements' terms cancel exactly) but do once uy of the node before
+    // is eliminated. 52 + 5 here; CHOLMOD's LDL' has the same (next test).
+    CHECK(r.size.factorEntries == (K.nonZeros() + K.rows()) / 2 + 5);
+  }
+
+  TEST_CASE("the band and the sparse path solve the same K alike") {
+    PlanarBenchModel bench = planarBenchModel(400);
+    const StaticResult band = solveStatic(*bench.model);
+    bench.model->addElement(
+        std::make_unique<Spring>(NodeDof{2, Dof::uy}, NodeDof{395, Dof::uy}, 0.0));
+    const StaticResult sparse = solveStatic(*bench.model);
+    REQUIRE(startsWith(band.solver, "LAPACK band Cholesky"));
+    REQUIRE(startsWith(sparse.solver, "CHOLMOD LDL'"));
+    CHECK(band.size.nonzeros == sparse.size.nonzeros);
+    CHECK(band.size.factorEntries == sparse.size.factorEntries);
+    CHECK(band.rcond == doctest::Approx(sparse.rcond).epsilon(1e-12));
+    // Each solution within its measured round-off of the other, and the midspan deflection
+    // of the middle span at the closed form q s^4 / (384 E I) of a span between two
+    // neighbours alike (the discrete model is exact at the nodes).
+    const double scale = sparse.displacement.cwiseAbs().maxCoeff();
+    CHECK((band.displacement - sparse.displacement).cwiseAbs().maxCoeff() <=
+          (band.roundOff + sparse.roundOff) * scale);
+    CHECK(relError(band.displacement(bench.midspanNode, 1), bench.exactMidspanW) < 1e-10);
+  }
+}
