@@ -220,14 +220,9 @@ void SparseAssembler::fillWith(const std::array<SparseMatrix*, N>& targets,
     std::array<int, kMaxElementDofs> eq{}, nodeOf{}, inBlock{}, nodes{};
     std::array<std::array<int, kMaxElementDofs>, kMaxElementDofs> blockAt{};
     for (const auto& e : model_.elements()) {
+      if (!elementEquations(*e, dofs_, eq, owned)) continue;
       const auto d = e->dofs();
       const int n = int(d.size());
-      bool any = false;
-      for (int a = 0; a < n; ++a) {
-        eq[a] = dofs_.equation(d[a]);
-        any = any || owned(eq[a]);
-      }
-      if (!any) continue;
       const std::array<ElementMatrix, N> matrices = matricesOf(*e);
       if (std::all_of(matrices.begin(), matrices.end(),
                       [](const ElementMatrix& m) { return m.size() == 0; }))

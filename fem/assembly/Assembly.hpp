@@ -64,6 +64,20 @@ class SparseAssembler {
 /// copied into storage of its own size, part by part, and the old storage is released.
 void dropExactZeros(SparseMatrix& A);
 
+/// Writes the equations of e's dofs into eq (in the order of e.dofs()); true when owned(eq)
+/// holds for any of them: a part's test of whether an element adds to its range.
+template <class Owned>
+bool elementEquations(const Element& e, const DofMap& dofs, std::array<int, kMaxElementDofs>& eq,
+                      Owned&& owned) {
+  bool any = false;
+  const auto d = e.dofs();
+  for (std::size_t a = 0; a < d.size(); ++a) {
+    eq[a] = dofs.equation(d[a]);
+    any = any || owned(eq[a]);
+  }
+  return any;
+}
+
 /// True when every element says its stiffness is symmetric (Element::symmetricStiffness).
 bool stiffnessSymmetricByConstruction(const Model& model);
 

@@ -69,14 +69,9 @@ SymmetricBand assembleBand(const Model& model, const DofMap& dofs, MatrixKind ki
     const auto owned = [&](int eq) { return eq >= firstColumn && eq < endColumn; };
     std::array<int, kMaxElementDofs> eq{};
     for (const auto& e : model.elements()) {
-      const auto d = e->dofs();
-      const int n = int(d.size());
-      bool any = false;
-      for (int a = 0; a < n; ++a) {
-        eq[a] = dofs.equation(d[a]);
-        any = any || owned(eq[a]);  // owned equations are free: free ones come first
-      }
-      if (!any) continue;
+      // Owned equations are free ones: those are numbered first.
+      if (!elementEquations(*e, dofs, eq, owned)) continue;
+      const int n = int(e->dofs().size());
       const ElementMatrix m = elementMatrix(*e, kind);
       if (m.size() == 0) continue;
       // Entry (i, j), i >= j, takes the element's (j, i): the upper triangle, the one the
