@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <typeinfo>
 
 namespace beamrotor {
 
@@ -612,6 +613,14 @@ SectionForceSeries Beam::sectionForceSeries(const ElementVector& u) const {
             qa.y() * L * L / 2};
   r.c[3] = {0, 0, 0, 0, -rise.z() * L * L / 6, rise.y() * L * L / 6};
   return r;
+}
+
+bool Beam::sameMatricesAs(const Element& other) const {
+  if (typeid(other) != typeid(Beam)) return false;
+  const Beam& b = static_cast<const Beam&>(other);
+  return section_ == b.section_ && carried_ == b.carried_ && options_ == b.options_ &&
+         L_ == b.L_ && R_ == b.R_ && axialPreload_ == b.axialPreload_ && qMean_ == b.qMean_ &&
+         qHalfRise_ == b.qHalfRise_ && released_ == b.released_;
 }
 
 }  // namespace beamrotor

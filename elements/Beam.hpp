@@ -34,6 +34,7 @@ struct BeamOptions {
   MassModel mass = MassModel::consistent;
   /// Include the rotary inertia of the cross-sections (rho I per length) in bending.
   bool rotaryInertia = false;
+  bool operator==(const BeamOptions&) const = default;
 };
 
 class Beam : public LineElement {
@@ -77,6 +78,9 @@ class Beam : public LineElement {
   ElementMatrix geometricStiffness(const ElementVector& u) const override;
   ElementVector load() const override;
   std::string kind() const override;
+  /// Same section object, carried dofs, options, length, axes, preload, span load and
+  /// releases.
+  bool sameMatricesAs(const Element& other) const override;
 
   std::array<int, 2> endNodes() const override { return nodes_; }
   double length() const override { return L_; }

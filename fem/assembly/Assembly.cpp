@@ -178,7 +178,7 @@ std::pair<SparseMatrix, SparseMatrix> SparseAssembler::assemble(MatrixKind first
   std::pair<SparseMatrix, SparseMatrix> out;
   out.first = pattern_;
   out.second.swap(pattern_);  // this assembler is not used again
-  fillWith<2>({&out.first, &out.second}, [&](const Element& e) {
+  fillWith<2>({&out.first, &out.second}, true, [&](const Element& e) {
     return std::array<ElementMatrix, 2>{elementMatrix(e, first), elementMatrix(e, second)};
   });
   return out;
@@ -186,19 +186,20 @@ std::pair<SparseMatrix, SparseMatrix> SparseAssembler::assemble(MatrixKind first
 
 SparseMatrix SparseAssembler::assembleGeometric(const Eigen::VectorXd& u) const {
   SparseMatrix A = pattern_;
-  fillWith<1>({&A}, [&](const Element& e) {
+  fillWith<1>({&A}, false, [&](const Element& e) {
     return std::array<ElementMatrix, 1>{e.geometricStiffness(gather(e, dofs_, u))};
   });
   return A;
 }
 
 void SparseAssembler::fill(SparseMatrix& A, MatrixKind kind) const {
-  fillWith<1>({&A},
-              [&](const Element& e) { return std::array<ElementMatrix, 1>{elementMatrix(e, kind)}; });
+  fillWith<1>({&A}, true, [&](const Element& e) {
+    return std::array<ElementMatrix, 1>{elementMatrix(e, kind)};
+  });
 }
 
 template <std::size_t N, class MatricesOf>
-void SparseAssembler::fillWith(const std::array<SparseMatrix*, N>& targets,
+void SparseAssembler::fillWith(const std::array<SparseMatrix*, N>& targets, bool reuseForEqual,
                                MatricesOf&& matricesOf) const {
   std::array<double*, N> values;
   for (std::size_t i = 0; i < N; ++i) values[i] = targets[i]->valuePtr();
@@ -219,11 +220,14 @@ void SparseAssembler::fillWith(const std::array<SparseMatrix*, N>& targets,
     };
     std::array<int, kMaxElementDofs> eq{}, nodeOf{}, inBlock{}, nodes{};
     std::array<std::array<int, kMaxElementDofs>, kMaxElementDofs> blockAt{};
+    ReusedForEqual<std::array<ElementMatrix, N>> reused;
+    std::array<ElementMatrix, N> computed;
     for (const auto& e : model_.elements()) {
       if (!elementEquations(*e, dofs_, eq, owned)) continue;
       const auto d = e->dofs();
       const int n = int(d.size());
-      const std::array<ElementMatrix, N> matrices = matricesOf(*e);
+      const std::array<ElementMatrix, N>& matrices =
+          reuseForEqual ? reused.of(*e, matricesOf) : (computed = matricesOf(*e));
       if (std::all_of(matrices.begin(), matrices.end(),
                       [](const ElementMatrix& m) { return m.size() == 0; }))
         continue;
@@ -286,6 +290,7 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
   Eigen::VectorXd f = nodalLoadVector(model, dofs);
   // Each part adds into its own range of equations, element by element in the model's order.
   forEvenParts(dofs.size(), [&](int first, int end) {
+    ReusedForEqual<ElementVector> loadOf;
     for (const auto& e : model.elements()) {
       const auto d = e->dofs();
       const auto owned = [&](const NodeDof& n) {
@@ -293,7 +298,7 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
         return eq >= first && eq < end;
       };
       if (std::none_of(d.begin(), d.end(), owned)) continue;
-      const ElementVector fe = e->load();
+      const ElementVector& fe = loadOf.of(*e, [](const Element& x) { return x.load(); });
       if (fe.size() == 0) continue;
       for (int a = 0; a < int(d.size()); ++a)
         if (owned(d[a])) f[dofs.equation(d[a])] += fe[a];

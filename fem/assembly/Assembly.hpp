@@ -42,9 +42,12 @@ class SparseAssembler {
   /// Adds every element's matrix of one kind into A, which has the pattern's structure.
   void fill(SparseMatrix& A, MatrixKind kind) const;
   /// Adds the i-th of matricesOf(element) into *targets[i] for every element (empty matrices
-  /// skipped); the targets have the pattern's structure.
+  /// skipped); the targets have the pattern's structure. With `reuseForEqual` the matrices
+  /// of a run of equal elements are computed once (ReusedForEqual): not for matrices of a
+  /// displacement state, which differ from element to element.
   template <std::size_t N, class MatricesOf>
-  void fillWith(const std::array<SparseMatrix*, N>& targets, MatricesOf&& matricesOf) const;
+  void fillWith(const std::array<SparseMatrix*, N>& targets, bool reuseForEqual,
+                MatricesOf&& matricesOf) const;
 
   const Model& model_;
   const DofMap& dofs_;
@@ -77,6 +80,24 @@ bool elementEquations(const Element& e, const DofMap& dofs, std::array<int, kMax
   }
   return any;
 }
+
+/// One element quantity (a matrix of one kind, the load) computed once for a run of equal
+/// elements (Element::sameMatricesAs): a uniform segment's beams have the same matrices, and
+/// computing them is most of an assembly pass. Each part of a pass keeps one of these.
+template <class Value>
+class ReusedForEqual {
+ public:
+  template <class Compute>
+  const Value& of(const Element& e, Compute&& compute) {
+    if (last_ == nullptr || (last_ != &e && !e.sameMatricesAs(*last_))) value_ = compute(e);
+    last_ = &e;
+    return value_;
+  }
+
+ private:
+  const Element* last_ = nullptr;
+  Value value_{};
+};
 
 /// True when every element says its stiffness is symmetric (Element::symmetricStiffness).
 bool stiffnessSymmetricByConstruction(const Model& model);

@@ -68,11 +68,13 @@ SymmetricBand assembleBand(const Model& model, const DofMap& dofs, MatrixKind ki
   const auto fillColumns = [&](int firstColumn, int endColumn) {
     const auto owned = [&](int eq) { return eq >= firstColumn && eq < endColumn; };
     std::array<int, kMaxElementDofs> eq{};
+    ReusedForEqual<ElementMatrix> matrixOf;
     for (const auto& e : model.elements()) {
       // Owned equations are free ones: those are numbered first.
       if (!elementEquations(*e, dofs, eq, owned)) continue;
       const int n = int(e->dofs().size());
-      const ElementMatrix m = elementMatrix(*e, kind);
+      const ElementMatrix& m =
+          matrixOf.of(*e, [&](const Element& x) { return elementMatrix(x, kind); });
       if (m.size() == 0) continue;
       // Entry (i, j), i >= j, takes the element's (j, i): the upper triangle, the one the
       // sparse path's LDL' reads, so both factorise the same numbers.

@@ -52,6 +52,12 @@ class Element {
   virtual ElementVector load() const { return {}; }
   /// A short kind name for messages and output, e.g. "beam-eb", "spring".
   virtual std::string kind() const = 0;
+  /// True when `other` has this element's matrices of every kind and its load, each for its
+  /// own dofs: another element of a uniform segment (the same type, properties, length,
+  /// orientation, releases and span load; other nodes). A pass over the elements computes
+  /// such a quantity once for a run of them (ReusedForEqual, fem/assembly/Assembly.hpp).
+  /// False unless an element type knows better.
+  virtual bool sameMatricesAs(const Element& other) const { return false; }
 
   /// Nodal forces the element exerts against its nodes' displacement u (ordered as dofs()):
   /// K u - f_load. Summed over elements these give internal forces and support reactions.
