@@ -1,5 +1,6 @@
 #include "fem/assembly/SymmetricBand.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -36,27 +37,44 @@ Eigen::VectorXd SymmetricBand::operator*(const Eigen::VectorXd& x) const {
   return y;
 }
 
+std::vector<int> SymmetricBand::keptColumnStarts() const {
+  std::vector<int> start(std::size_t(n_) + 1, 0);
+  forEvenParts(n_, [&](int first, int end) {
+    for (int j = first; j < end; ++j) {
+      int kept = 1;  // the diagonal
+      for (int i = j + 1; i <= j + kd_ && i < n_; ++i) kept += lower(i, j) != 0.0;
+      start[j + 1] = kept;
+    }
+  });
+  for (int j = 0; j < n_; ++j) start[j + 1] += start[j];
+  return start;
+}
+
 long long SymmetricBand::nonZeros() const {
-  long long count = n_;
-  for (int j = 0; j < n_; ++j)
-    for (int i = j + 1; i <= j + kd_ && i < n_; ++i) count += lower(i, j) != 0.0 ? 2 : 0;
-  return count;
+  return 2 * (long long)keptColumnStarts()[n_] - n_;
+}
+
+SparseMatrix SymmetricBand::lowerWithoutZeros() const {
+  const std::vector<int> start = keptColumnStarts();
+  SparseMatrix L(n_, n_);
+  L.resizeNonZeros(start[n_]);
+  std::copy(start.begin(), start.end(), L.outerIndexPtr());
+  forEvenParts(n_, [&](int first, int end) {
+    for (int j = first; j < end; ++j) {
+      int next = start[j];
+      for (int i = j; i <= j + kd_ && i < n_; ++i)
+        if (i == j || lower(i, j) != 0.0) {
+          L.innerIndexPtr()[next] = i;
+          L.valuePtr()[next++] = lower(i, j);
+        }
+    }
+  });
+  return L;
 }
 
 SparseMatrix SymmetricBand::toSparse() const {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(std::size_t(nonZeros()));
-  for (int j = 0; j < n_; ++j) {
-    entries.emplace_back(j, j, lower(j, j));
-    for (int i = j + 1; i <= j + kd_ && i < n_; ++i)
-      if (lower(i, j) != 0.0) {
-        entries.emplace_back(i, j, lower(i, j));
-        entries.emplace_back(j, i, lower(i, j));
-      }
-  }
-  SparseMatrix A(n_, n_);
-  A.setFromTriplets(entries.begin(), entries.end());
-  return A;
+  // Eigen writes the full matrix column by column, each in ascending rows.
+  return SparseMatrix(lowerWithoutZeros().selfadjointView<Eigen::Lower>());
 }
 
 }  // namespace beamrotor

@@ -43,13 +43,18 @@ class SymmetricBand {
   /// A x, row range by row range (each entry one sum in ascending column order, so the same
   /// bits on any number of cores).
   Eigen::VectorXd operator*(const Eigen::VectorXd& x) const;
-  /// Compressed, both triangles, without the exact zeros off the diagonal (the pattern
+  /// The lower triangle compressed by columns, without the exact zeros below the diagonal
+  /// (the diagonal always kept), column range by column range.
+  SparseMatrix lowerWithoutZeros() const;
+  /// Both triangles, compressed, without the exact zeros off the diagonal (the pattern
   /// dropExactZeros leaves): the matrix for the sparse methods (mechanism search, LDL').
   SparseMatrix toSparse() const;
   /// Its stored entries that dropExactZeros would keep, counted in both triangles.
   long long nonZeros() const;
 
  private:
+  /// Start of each column of lowerWithoutZeros() (n + 1 entries).
+  std::vector<int> keptColumnStarts() const;
   std::size_t place(int row, int column) const {
     return std::size_t(column) * std::size_t(kd_ + 1) + std::size_t(row - column);
   }

@@ -5,9 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
-#include "fem/assembly/ParallelParts.hpp"
 
 extern "C" {
 // LAPACK (Debian's OpenBLAS or reference LAPACK, 32-bit integers).
@@ -30,27 +28,7 @@ bool BandCholesky::factorize(const SymmetricBand& A) {
     const double l = band.lower(j, j);
     pivots_[j] = l * l / A.lower(j, j);
   }
-  // L compressed by columns, part by part: count what each column keeps, then copy it.
-  const auto keeps = [&](int i, int j) { return i == j || band.lower(i, j) != 0.0; };
-  L_.resize(n, n);
-  std::vector<int> start(std::size_t(n) + 1, 0);
-  forEvenParts(n, [&](int first, int end) {
-    for (int j = first; j < end; ++j)
-      for (int i = j; i <= j + kd && i < n; ++i) start[j + 1] += keeps(i, j);
-  });
-  for (int j = 0; j < n; ++j) start[j + 1] += start[j];
-  L_.resizeNonZeros(start[n]);
-  std::copy(start.begin(), start.end(), L_.outerIndexPtr());
-  forEvenParts(n, [&](int first, int end) {
-    for (int j = first; j < end; ++j) {
-      int next = start[j];
-      for (int i = j; i <= j + kd && i < n; ++i)
-        if (keeps(i, j)) {
-          L_.innerIndexPtr()[next] = i;
-          L_.valuePtr()[next++] = band.lower(i, j);
-        }
-    }
-  });
+  L_ = band.lowerWithoutZeros();
   factorized_ = true;
   return true;
 }
