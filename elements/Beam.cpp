@@ -9,6 +9,9 @@ namespace beamrotor {
 
 namespace {
 
+/// The place of an element dof (elementDofCode) among a beam's 12 global ones.
+int globalPlace(std::uint8_t code) { return 6 * (code >> 3) + (code & 7); }
+
 using Matrix4 = Eigen::Matrix4d;
 using Matrix12 = Beam::Matrix12;
 using Vector12 = Beam::Vector12;
@@ -237,55 +240,68 @@ Beam::Beam(int n1, const Eigen::Vector3d& x1, int n2, const Eigen::Vector3d& x2,
 Beam::Beam(int n1, int n2, const Eigen::Vector3d& direction, double length,
            std::shared_ptr<const Section> section, DofSet carried, BeamOptions options,
            const Eigen::Vector3d& zHint)
-    : nodes_{n1, n2}, section_(std::move(section)), carried_(carried), options_(options) {
-  L_ = length;
+    : nodes_{n1, n2} {
+  Properties p;
+  p.section = std::move(section);
+  p.carried = carried;
+  p.options = options;
+  p.L = length;
   const double directionNorm = direction.norm();
-  if (!(L_ > 0) || !(directionNorm > 0))
+  if (!(p.L > 0) || !(directionNorm > 0))
     throw std::invalid_argument("beam element of zero length");
-  if (!section_) throw std::invalid_argument("beam element without a section");
+  if (!p.section) throw std::invalid_argument("beam element without a section");
   const Eigen::Vector3d ex = direction / directionNorm;
   Eigen::Vector3d hint = zHint;
   if (std::abs(ex.dot(hint.normalized())) > 1 - 1e-9) hint = Eigen::Vector3d::UnitY();
   const Eigen::Vector3d ez = (hint - hint.dot(ex) * ex).normalized();
   const Eigen::Vector3d ey = ez.cross(ex);
-  R_.row(0) = ex;
-  R_.row(1) = ey;
-  R_.row(2) = ez;
+  p.R.row(0) = ex;
+  p.R.row(1) = ey;
+  p.R.row(2) = ez;
   // The carried dofs must not couple to the dropped ones.
-  if (carried_ == DofSet::planar() && (std::abs(ex.z()) > 1e-12 || ez.z() < 1 - 1e-12))
+  if (carried == DofSet::planar() && (std::abs(ex.z()) > 1e-12 || ez.z() < 1 - 1e-12))
     throw std::invalid_argument("a planar beam must lie in the x-y plane");
-  if (carried_ == DofSet::lateral() && ex.x() < 1 - 1e-12)
+  if (carried == DofSet::lateral() && ex.x() < 1 - 1e-12)
     throw std::invalid_argument("a rotor shaft element must lie along the x axis");
-  buildDofs();
+  setProperties(std::move(p));
 }
 
-void Beam::buildDofs() {
-  count_ = 0;
+void Beam::Properties::numberDofs() {
+  count = 0;
   for (int end = 0; end < 2; ++end)
     for (Dof d : kAllDofs) {
-      if (!carried_.contains(d)) continue;
+      if (!carried.contains(d)) continue;
       // A released rotation whose local axis is a global axis is not touched at all, so a
       // node where every element is hinged about it does not get that dof.
       bool dropped = false;
-      for (int r : released_) {
+      for (int r : released) {
         const int axis = r % 6 - 3;
-        if (r / 6 == end && isRotation(d) && std::abs(R_(axis, dofIndex(d) - 3)) > 1 - 1e-12)
+        if (r / 6 == end && isRotation(d) && std::abs(R(axis, dofIndex(d) - 3)) > 1 - 1e-12)
           dropped = true;
       }
-      if (dropped) continue;
-      dofs_[count_] = {nodes_[end], d};
-      globalIndex_[count_] = std::uint8_t(6 * end + dofIndex(d));
-      ++count_;
+      if (!dropped) dofCodes[count++] = elementDofCode(end, d);
     }
+}
+
+void Beam::setProperties(Properties p) {
+  p.numberDofs();
+  thread_local std::weak_ptr<const Properties> lastMade;
+  if (std::shared_ptr<const Properties> last = lastMade.lock(); last && *last == p) {
+    p_ = std::move(last);
+    return;
+  }
+  p_ = std::make_shared<const Properties>(std::move(p));
+  lastMade = p_;
 }
 
 void Beam::release(int end, Dof rotation) {
   if ((end != 0 && end != 1) || !isRotation(rotation))
     throw std::invalid_argument("a beam end release needs end 0 or 1 and a rotation rx, ry, rz");
   const int local = 6 * end + dofIndex(rotation);
-  if (std::find(released_.begin(), released_.end(), local) == released_.end())
-    released_.push_back(local);
-  buildDofs();
+  Properties p = *p_;
+  if (std::find(p.released.begin(), p.released.end(), local) == p.released.end())
+    p.released.push_back(local);
+  setProperties(std::move(p));
 }
 
 void Beam::setDistributedLoad(const Eigen::Vector3d& q) {
@@ -293,12 +309,20 @@ void Beam::setDistributedLoad(const Eigen::Vector3d& q) {
 }
 
 void Beam::setDistributedLoad(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd) {
-  qMean_ = R_ * (qStart + qEnd) / 2;
-  qHalfRise_ = R_ * (qEnd - qStart) / 2;
+  Properties p = *p_;
+  p.qMean = p.R * (qStart + qEnd) / 2;
+  p.qHalfRise = p.R * (qEnd - qStart) / 2;
+  setProperties(std::move(p));
+}
+
+void Beam::setAxialPreload(double N) {
+  Properties p = *p_;
+  p.axialPreload = N;
+  setProperties(std::move(p));
 }
 
 std::string Beam::kind() const {
-  switch (options_.theory) {
+  switch (p_->options.theory) {
     case BeamTheory::eulerBernoulli:
       return "beam-eb";
     case BeamTheory::timoshenko:
@@ -312,20 +336,20 @@ std::string Beam::kind() const {
 }
 
 std::array<double, 2> Beam::shearParameters() const {
-  if (options_.theory != BeamTheory::timoshenko) return {0, 0};
-  const Section& s = *section_;
-  const double GAL2 = s.material.G * s.A * L_ * L_;
+  if (p_->options.theory != BeamTheory::timoshenko) return {0, 0};
+  const Section& s = *p_->section;
+  const double GAL2 = s.material.G * s.A * p_->L * p_->L;
   return {s.kappaY > 0 ? 12 * s.EIz() / (s.kappaY * GAL2) : 0,
           s.kappaZ > 0 ? 12 * s.EIy() / (s.kappaZ * GAL2) : 0};
 }
 
 Matrix12 Beam::localStiffness() const {
-  const Section& s = *section_;
-  const double L = L_, G = s.material.G;
+  const Section& s = *p_->section;
+  const double L = p_->L, G = s.material.G;
   Matrix12 K = Matrix12::Zero();
   place(K, kAxial, twoNode(s.EA() / L));
   place(K, kTorsion, twoNode(s.GJ() / L));
-  const BeamTheory t = options_.theory;
+  const BeamTheory t = p_->options.theory;
   if (isLinear(t)) {
     const bool reduced = t == BeamTheory::timoshenkoLinearReducedIntegration;
     if (s.kappaY <= 0 || s.kappaZ <= 0)
@@ -341,11 +365,11 @@ Matrix12 Beam::localStiffness() const {
 }
 
 Matrix12 Beam::localMass() const {
-  const Section& s = *section_;
-  const double L = L_, rho = s.material.rho, rhoA = s.rhoA();
-  const bool lumped = options_.mass == MassModel::lumped;
-  const double rhoIz = options_.rotaryInertia ? rho * s.Iz : 0;
-  const double rhoIy = options_.rotaryInertia ? rho * s.Iy : 0;
+  const Section& s = *p_->section;
+  const double L = p_->L, rho = s.material.rho, rhoA = s.rhoA();
+  const bool lumped = p_->options.mass == MassModel::lumped;
+  const double rhoIz = p_->options.rotaryInertia ? rho * s.Iz : 0;
+  const double rhoIy = p_->options.rotaryInertia ? rho * s.Iy : 0;
   Matrix12 M = Matrix12::Zero();
   place(M, kAxial, twoNodeMass(rhoA * L, lumped));
   place(M, kTorsion, twoNodeMass(rho * s.Ip() * L, lumped));
@@ -355,7 +379,7 @@ Matrix12 Beam::localMass() const {
     for (int i : {4, 10}) M(i, i) = rhoIy * L / 2;
     return M;
   }
-  const BeamTheory t = options_.theory;
+  const BeamTheory t = p_->options.theory;
   if (isLinear(t)) {
     place(M, kPlaneXY, linearMass(rhoA, rhoIz, L));
     place(M, kPlaneXZ, linearMass(rhoA, rhoIy, L));
@@ -368,31 +392,31 @@ Matrix12 Beam::localMass() const {
 }
 
 Matrix12 Beam::localGeometricStiffness(double N0, double N1) const {
-  const Section& s = *section_;
-  const BeamTheory t = options_.theory;
+  const Section& s = *p_->section;
+  const BeamTheory t = p_->options.theory;
   const auto [phiY, phiZ] = shearParameters();
   Matrix12 KG = Matrix12::Zero();
-  place(KG, kPlaneXY, geometricBending(t, phiY, L_, N0, N1));
-  place(KG, kPlaneXZ, flipRotations(geometricBending(t, phiZ, L_, N0, N1)));
+  place(KG, kPlaneXY, geometricBending(t, phiY, p_->L, N0, N1));
+  place(KG, kPlaneXZ, flipRotations(geometricBending(t, phiZ, p_->L, N0, N1)));
   // Twist is interpolated linearly: int N (Ip/A) / L^2 dx = mean N (Ip/A) / L.
-  if (s.A > 0) place(KG, kTorsion, twoNode((N0 + N1) / 2 * s.Ip() / (s.A * L_)));
+  if (s.A > 0) place(KG, kTorsion, twoNode((N0 + N1) / 2 * s.Ip() / (s.A * p_->L)));
   return KG;
 }
 
 ElementMatrix Beam::geometricStiffness(const ElementVector& u) const {
   const SectionForceSeries f = sectionForceSeries(u);
-  Matrix12 KG = localGeometricStiffness(f.at(0).N + axialPreload_, f.at(1).N + axialPreload_);
-  if (!released_.empty()) {
+  Matrix12 KG = localGeometricStiffness(f.at(0).N + p_->axialPreload, f.at(1).N + p_->axialPreload);
+  if (!p_->released.empty()) {
     // Released rotations follow the kept dofs as in the mass matrix: KG -> T^T KG T.
     Matrix12 K = localStiffness();
     condense(K, &KG, nullptr);
   }
-  return toCarried(toGlobal(KG, R_));
+  return toCarried(toGlobal(KG, p_->R));
 }
 
 Vector12 Beam::localLoad() const {
-  const double L = L_;
-  const Eigen::Vector3d &m = qMean_, &d = qHalfRise_;
+  const double L = p_->L;
+  const Eigen::Vector3d &m = p_->qMean, &d = p_->qHalfRise;
   Vector12 f = Vector12::Zero();
   // Linear shape functions (the bar, and the linear elements' deflections): L (2 qa + qb) / 6
   // at the start, L (qa + 2 qb) / 6 at the end.
@@ -400,7 +424,7 @@ Vector12 Beam::localLoad() const {
     f[k] = m[k] * L / 2 - d[k] * L / 6;
     f[6 + k] = m[k] * L / 2 + d[k] * L / 6;
   }
-  if (!isLinear(options_.theory)) {
+  if (!isLinear(p_->options.theory)) {
     // Bending in x-y (moments about z) and in x-z (about y, where theta = -ry flips the
     // moments' signs). A uniform load's moments q L^2 / 12 are the same for both theories.
     const auto [phiY, phiZ] = shearParameters();
@@ -413,21 +437,21 @@ Vector12 Beam::localLoad() const {
 }
 
 void Beam::condense(Matrix12& K, Matrix12* M, Vector12* f) const {
-  if (released_.empty()) return;
+  if (p_->released.empty()) return;
   // Kept dofs a, released dofs b: u_b = Kbb^-1 (f_b - Kba u_a), so with T = [I; -Kbb^-1 Kba]
   // the condensed matrices are T^T K T (= Kaa - Kab Kbb^-1 Kba), T^T M T and T^T f.
-  const int nb = int(released_.size());
+  const int nb = int(p_->released.size());
   Eigen::MatrixXd Kbb(nb, nb), Kba(nb, 12);
   for (int i = 0; i < nb; ++i) {
-    Kba.row(i) = K.row(released_[i]);
-    for (int j = 0; j < nb; ++j) Kbb(i, j) = K(released_[i], released_[j]);
+    Kba.row(i) = K.row(p_->released[i]);
+    for (int j = 0; j < nb; ++j) Kbb(i, j) = K(p_->released[i], p_->released[j]);
   }
   Eigen::MatrixXd X = Kbb.ldlt().solve(Kba);  // Kbb^-1 Kba (released columns give identity)
   Matrix12 T = Matrix12::Identity();
-  for (int i = 0; i < nb; ++i) T.row(released_[i]) = -X.row(i);
-  for (int i = 0; i < nb; ++i) T(released_[i], released_[i]) = 0;
+  for (int i = 0; i < nb; ++i) T.row(p_->released[i]) = -X.row(i);
+  for (int i = 0; i < nb; ++i) T(p_->released[i], p_->released[i]) = 0;
   // Rows of T for released dofs express them through the kept ones; their own columns vanish.
-  for (int i = 0; i < nb; ++i) T.col(released_[i]).setZero();
+  for (int i = 0; i < nb; ++i) T.col(p_->released[i]).setZero();
   const Eigen::VectorXd before = K.diagonal().cwiseAbs();
   K = T.transpose() * K * T;
   // Kaa - Kab Kbb^-1 Kba cancels exactly where the releases leave no stiffness (a bar hinged
@@ -442,25 +466,28 @@ void Beam::condense(Matrix12& K, Matrix12* M, Vector12* f) const {
 }
 
 ElementMatrix Beam::toCarried(const Matrix12& global) const {
-  ElementMatrix out(count_, count_);
-  for (int a = 0; a < count_; ++a)
-    for (int b = 0; b < count_; ++b) out(a, b) = global(globalIndex_[a], globalIndex_[b]);
+  const int n = p_->count;
+  std::array<int, 12> at{};  // each kept dof's place among the 12 global ones
+  for (int a = 0; a < n; ++a) at[a] = globalPlace(p_->dofCodes[a]);
+  ElementMatrix out(n, n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) out(a, b) = global(at[a], at[b]);
   return out;
 }
 
 ElementMatrix Beam::stiffness() const {
   Matrix12 K = localStiffness();
   condense(K, nullptr, nullptr);
-  return toCarried(toGlobal(K, R_));
+  return toCarried(toGlobal(K, p_->R));
 }
 
 ElementMatrix Beam::mass() const {
   Matrix12 M = localMass();
-  if (!released_.empty()) {
+  if (!p_->released.empty()) {
     Matrix12 K = localStiffness();
     condense(K, &M, nullptr);
   }
-  return toCarried(toGlobal(M, R_));
+  return toCarried(toGlobal(M, p_->R));
 }
 
 Matrix12 Beam::localGyroscopic() const {
@@ -471,17 +498,17 @@ Matrix12 Beam::localGyroscopic() const {
   // Ny, Nz interpolating ry and rz from the element dofs. Sign: for a rigid body this is
   // Jp [0 1; -1 0] on (ry, rz), which makes forward whirl stiffen with speed.
   Matrix12 G = Matrix12::Zero();
-  if (!options_.rotaryInertia) return G;
-  const Section& s = *section_;
-  const double rhoIp = s.material.rho * s.Ip(), L = L_;
-  if (options_.mass == MassModel::lumped) {
+  if (!p_->options.rotaryInertia) return G;
+  const Section& s = *p_->section;
+  const double rhoIp = s.material.rho * s.Ip(), L = p_->L;
+  if (p_->options.mass == MassModel::lumped) {
     for (int end : {0, 6}) {
       G(end + 4, end + 5) = rhoIp * L / 2;
       G(end + 5, end + 4) = -rhoIp * L / 2;
     }
     return G;
   }
-  const BeamTheory t = options_.theory;
+  const BeamTheory t = p_->options.theory;
   const auto [phiY, phiZ] = shearParameters();
   // rz = Nz (v1, rz1, v2, rz2); the x-z plane interpolates theta = -ry from (w1, -ry1, w2,
   // -ry2), so ry = -N (w1, -ry1, w2, -ry2). Rotation shapes are quadratic: 3 Gauss points
@@ -503,59 +530,59 @@ Matrix12 Beam::localGyroscopic() const {
 }
 
 ElementMatrix Beam::gyroscopic() const {
-  if (!options_.rotaryInertia || !carried_.contains(Dof::ry) || !carried_.contains(Dof::rz))
+  if (!p_->options.rotaryInertia || !p_->carried.contains(Dof::ry) || !p_->carried.contains(Dof::rz))
     return {};
   Matrix12 G = localGyroscopic();
-  if (!released_.empty()) {
+  if (!p_->released.empty()) {
     // Released rotations follow the kept dofs as in the mass matrix: G -> T^T G T.
     Matrix12 K = localStiffness();
     condense(K, &G, nullptr);
   }
-  return toCarried(toGlobal(G, R_));
+  return toCarried(toGlobal(G, p_->R));
 }
 
 ElementVector Beam::load() const {
-  if (qMean_.isZero() && qHalfRise_.isZero()) return {};
+  if (p_->qMean.isZero() && p_->qHalfRise.isZero()) return {};
   Vector12 f = localLoad();
-  if (!released_.empty()) {
+  if (!p_->released.empty()) {
     Matrix12 K = localStiffness();
     condense(K, nullptr, &f);
   }
   Vector12 g;
-  for (int i = 0; i < 4; ++i) g.segment<3>(3 * i) = R_.transpose() * f.segment<3>(3 * i);
-  ElementVector out(count_);
-  for (int a = 0; a < count_; ++a) out[a] = g[globalIndex_[a]];
+  for (int i = 0; i < 4; ++i) g.segment<3>(3 * i) = p_->R.transpose() * f.segment<3>(3 * i);
+  ElementVector out(p_->count);
+  for (int a = 0; a < p_->count; ++a) out[a] = g[globalPlace(p_->dofCodes[a])];
   return out;
 }
 
 Vector12 Beam::toLocal(const ElementVector& u) const {
   Vector12 g = Vector12::Zero();
-  for (int a = 0; a < count_; ++a) g[globalIndex_[a]] = u[a];
+  for (int a = 0; a < p_->count; ++a) g[globalPlace(p_->dofCodes[a])] = u[a];
   Vector12 l;
-  for (int i = 0; i < 4; ++i) l.segment<3>(3 * i) = R_ * g.segment<3>(3 * i);
+  for (int i = 0; i < 4; ++i) l.segment<3>(3 * i) = p_->R * g.segment<3>(3 * i);
   return l;
 }
 
 Vector12 Beam::localEndDisplacements(const ElementVector& u, SpanLoad load) const {
   Vector12 l = toLocal(u);
-  if (released_.empty()) return l;
+  if (p_->released.empty()) return l;
   const Matrix12 K = localStiffness();
   const Vector12 f = load == SpanLoad::applied ? localLoad() : Vector12::Zero();
-  for (int b : released_) l[b] = 0;  // a node may carry the axis: its value is not the end's
-  const int nb = int(released_.size());
+  for (int b : p_->released) l[b] = 0;  // a node may carry the axis: its value is not the end's
+  const int nb = int(p_->released.size());
   Eigen::MatrixXd Kbb(nb, nb);
   Eigen::VectorXd rhs(nb);
   for (int i = 0; i < nb; ++i) {
-    rhs[i] = f[released_[i]] - K.row(released_[i]).dot(l);
-    for (int j = 0; j < nb; ++j) Kbb(i, j) = K(released_[i], released_[j]);
+    rhs[i] = f[p_->released[i]] - K.row(p_->released[i]).dot(l);
+    for (int j = 0; j < nb; ++j) Kbb(i, j) = K(p_->released[i], p_->released[j]);
   }
   const Eigen::VectorXd lb = Kbb.ldlt().solve(rhs);
-  for (int i = 0; i < nb; ++i) l[released_[i]] = lb[i];
+  for (int i = 0; i < nb; ++i) l[p_->released[i]] = lb[i];
   return l;
 }
 
 bool Beam::releases(int end) const {
-  return std::any_of(released_.begin(), released_.end(), [&](int r) { return r / 6 == end; });
+  return std::any_of(p_->released.begin(), p_->released.end(), [&](int r) { return r / 6 == end; });
 }
 
 std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, double s,
@@ -563,25 +590,25 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
   // 1. End values in the element frame; bending about local z interpolates (v, rz), about
   //    local y (w, -ry) (right-hand rule: dw/dx = -ry).
   const Vector12 l = localEndDisplacements(u, load);
-  const BeamTheory t = options_.theory;
+  const BeamTheory t = p_->options.theory;
   const auto [phiY, phiZ] = shearParameters();
   const Eigen::Vector4d xy(l[1], l[5], l[7], l[11]), xz(l[2], -l[4], l[8], -l[10]);
-  Eigen::Vector3d d((1 - s) * l[0] + s * l[6], (deflectionShape(t, phiY, L_, s) * xy).value(),
-                    (deflectionShape(t, phiZ, L_, s) * xz).value());
-  Eigen::Vector3d r((1 - s) * l[3] + s * l[9], -(rotationShape(t, phiZ, L_, s) * xz).value(),
-                    (rotationShape(t, phiY, L_, s) * xy).value());
+  Eigen::Vector3d d((1 - s) * l[0] + s * l[6], (deflectionShape(t, phiY, p_->L, s) * xy).value(),
+                    (deflectionShape(t, phiZ, p_->L, s) * xz).value());
+  Eigen::Vector3d r((1 - s) * l[3] + s * l[9], -(rotationShape(t, phiZ, p_->L, s) * xz).value(),
+                    (rotationShape(t, phiY, p_->L, s) * xy).value());
 
   // 2. The span load's share: a bar fixed at both ends (EA u'' + qx = 0) and, for the elements
   //    with fixed-end moments, the clamped-clamped bending solution.
-  if (load == SpanLoad::applied && !(qMean_.isZero() && qHalfRise_.isZero())) {
-    const Section& sec = *section_;
-    const double x = s * L_, a = s * (1 - s);
+  if (load == SpanLoad::applied && !(p_->qMean.isZero() && p_->qHalfRise.isZero())) {
+    const Section& sec = *p_->section;
+    const double x = s * p_->L, a = s * (1 - s);
     // EA u'' + qx = 0 with u = 0 at both ends: the mean's parabola and the rise's cubic.
-    d.x() += (qMean_.x() * a / 2 + qHalfRise_.x() * a * (2 * s - 1) / 6) * L_ * L_ / sec.EA();
+    d.x() += (p_->qMean.x() * a / 2 + p_->qHalfRise.x() * a * (2 * s - 1) / 6) * p_->L * p_->L / sec.EA();
     if (!isLinear(t)) {
       const auto bending = [&](int k, double EI, double Phi) {
-        const SpanBending mean = clampedSpanBending(qMean_[k], EI, Phi, L_, x);
-        const SpanBending rise = clampedAntisymmetricBending(qHalfRise_[k], EI, Phi, L_, x);
+        const SpanBending mean = clampedSpanBending(p_->qMean[k], EI, Phi, p_->L, x);
+        const SpanBending rise = clampedAntisymmetricBending(p_->qHalfRise[k], EI, Phi, p_->L, x);
         return SpanBending{mean.deflection + rise.deflection, mean.rotation + rise.rotation};
       };
       const SpanBending y = bending(1, sec.EIz(), phiY);
@@ -594,7 +621,7 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
   }
 
   // 3. Back to the global frame.
-  const Eigen::Vector3d dg = R_.transpose() * d, rg = R_.transpose() * r;
+  const Eigen::Vector3d dg = p_->R.transpose() * d, rg = p_->R.transpose() * r;
   return {dg.x(), dg.y(), dg.z(), rg.x(), rg.y(), rg.z()};
 }
 
@@ -604,8 +631,8 @@ SectionForceSeries Beam::sectionForceSeries(const ElementVector& u) const {
   // With q(s) = qa + (qb - qa) s: the load on [0, x] is qa L s + (qb - qa) L s^2 / 2 and its
   // moment about the cut qa L^2 s^2 / 2 + (qb - qa) L^2 s^3 / 6.
   const Vector12 F = localStiffness() * localEndDisplacements(u, SpanLoad::applied) - localLoad();
-  const Eigen::Vector3d qa = qMean_ - qHalfRise_, rise = 2 * qHalfRise_;
-  const double L = L_;
+  const Eigen::Vector3d qa = p_->qMean - p_->qHalfRise, rise = 2 * p_->qHalfRise;
+  const double L = p_->L;
   SectionForceSeries r;
   r.c[0] = {-F[0], -F[1], -F[2], -F[3], -F[4], -F[5]};
   r.c[1] = {-qa.x() * L, -qa.y() * L, -qa.z() * L, 0, -L * F[2], L * F[1]};
@@ -618,9 +645,7 @@ SectionForceSeries Beam::sectionForceSeries(const ElementVector& u) const {
 bool Beam::sameMatricesAs(const Element& other) const {
   if (typeid(other) != typeid(Beam)) return false;
   const Beam& b = static_cast<const Beam&>(other);
-  return section_ == b.section_ && carried_ == b.carried_ && options_ == b.options_ &&
-         L_ == b.L_ && R_ == b.R_ && axialPreload_ == b.axialPreload_ && qMean_ == b.qMean_ &&
-         qHalfRise_ == b.qHalfRise_ && released_ == b.released_;
+  return p_ == b.p_ || *p_ == *b.p_;
 }
 
 }  // namespace beamrotor

@@ -62,7 +62,7 @@ class Beam : public LineElement {
   /// (N/m, global frame); replaces any earlier one.
   void setDistributedLoad(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd);
 
-  std::span<const NodeDof> dofs() const override { return {dofs_.data(), std::size_t(count_)}; }
+  ElementDofs dofs() const override { return {nodes_, p_->dofCodes.data(), p_->count}; }
   ElementMatrix stiffness() const override;
   ElementMatrix mass() const override;
   /// Gyroscopic matrix per unit spin speed (kg m^2: N m per rad/s of spin and rad/s of tilt
@@ -72,7 +72,7 @@ class Beam : public LineElement {
   ElementMatrix gyroscopic() const override;
   /// A prescribed axial force (N, tension positive) added to the one a state gives: a lateral
   /// rotor model carries no axial dof, so its shaft's axial load is given, not solved for.
-  void setAxialPreload(double N) { axialPreload_ = N; }
+  void setAxialPreload(double N);
   /// Geometric stiffness of the axial force the state u puts in the beam (linear along it
   /// under an axial span load), global frame, releases condensed as in mass().
   ElementMatrix geometricStiffness(const ElementVector& u) const override;
@@ -83,9 +83,9 @@ class Beam : public LineElement {
   bool sameMatricesAs(const Element& other) const override;
 
   std::array<int, 2> endNodes() const override { return nodes_; }
-  double length() const override { return L_; }
-  const Section& section() const override { return *section_; }
-  Eigen::Matrix3d localAxes() const override { return R_; }
+  double length() const override { return p_->L; }
+  const Section& section() const override { return *p_->section; }
+  Eigen::Matrix3d localAxes() const override { return p_->R; }
   SectionForceSeries sectionForceSeries(const ElementVector& u) const override;
   /// Axial displacement and twist linear (plus the bar's share of an axial span load);
   /// deflections and section rotations by the theory's own shape functions (Hermite cubics,
@@ -95,7 +95,7 @@ class Beam : public LineElement {
   std::array<double, kDofKinds> displacementAt(const ElementVector& u, double s,
                                                SpanLoad load) const override;
   bool releases(int end) const override;
-  const BeamOptions& options() const { return options_; }
+  const BeamOptions& options() const { return p_->options; }
 
   using Matrix12 = Eigen::Matrix<double, 12, 12>;
   using Vector12 = Eigen::Matrix<double, 12, 1>;
@@ -131,24 +131,37 @@ class Beam : public LineElement {
   /// condensation: the released rows of K l = f (no end moment there) give
   /// Kbb l_b = f_b - Kba l_a, f the span load's fixed-end forces when `load` is applied.
   Vector12 localEndDisplacements(const ElementVector& u, SpanLoad load) const;
-  void buildDofs();
+
+  /// Everything a beam has but its nodes. The beams of a uniform run (a line's segment) share
+  /// one, so each holds 32 bytes, where a beam with its own took 320 (a planar line of 10^6
+  /// beams: 290 MB less, and passes over the beams read a tenth of the memory).
+  struct Properties {
+    std::shared_ptr<const Section> section;
+    DofSet carried;
+    BeamOptions options;
+    double L = 0;
+    Eigen::Matrix3d R;  // rows: local axes in global coordinates
+    double axialPreload = 0;  // N, tension positive; see setAxialPreload
+    // The span load in the local frame: its mean and half the change from start to end, so
+    // q(s) = qMean + qHalfRise (2 s - 1).
+    Eigen::Vector3d qMean = Eigen::Vector3d::Zero();
+    Eigen::Vector3d qHalfRise = Eigen::Vector3d::Zero();
+    std::vector<int> released;  // local indices 0..11 of released rotations
+    // The dofs kept (elementDofCode), from carried, released and R (numberDofs).
+    std::array<std::uint8_t, 12> dofCodes{};
+    std::uint8_t count = 0;
+
+    /// The carried dofs, less a released rotation about a global axis, in dofCodes.
+    void numberDofs();
+    bool operator==(const Properties&) const = default;
+  };
+  /// Takes p, numbering its dofs; when it equals the properties this thread made last, this
+  /// beam shares those (a mesh builder makes a segment's beams one after another, so they
+  /// all share one, and so do their span loads when set one by one).
+  void setProperties(Properties p);
 
   std::array<int, 2> nodes_;
-  std::shared_ptr<const Section> section_;
-  DofSet carried_;
-  BeamOptions options_;
-  double L_ = 0;
-  Eigen::Matrix3d R_;  // rows: local axes in global coordinates
-  // The span load in the local frame: its mean and half the change from start to end, so
-  // q(s) = qMean_ + qHalfRise_ (2 s - 1).
-  double axialPreload_ = 0;  // N, tension positive; see setAxialPreload
-  Eigen::Vector3d qMean_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d qHalfRise_ = Eigen::Vector3d::Zero();
-  std::vector<int> released_;  // local indices 0..11 of released rotations
-  std::array<NodeDof, 12> dofs_{};
-  // Position of each carried dof in the 12 globals (a byte each: 10^6 beams hold 36 MB less).
-  std::array<std::uint8_t, 12> globalIndex_{};
-  std::uint8_t count_ = 0;
+  std::shared_ptr<const Properties> p_;
 };
 
 }  // namespace beamrotor

@@ -27,7 +27,7 @@ ElementMatrix twoByTwo(double yy, double yz, double zy, double zz) {
 Bearing::Bearing(int node, const BearingCoefficients& c) : Bearing(node, {0.0}, {c}) {}
 
 Bearing::Bearing(int node, std::vector<double> speeds, std::vector<BearingCoefficients> table)
-    : dofs_{NodeDof{node, Dof::uy}, NodeDof{node, Dof::uz}},
+    : node_(node),
       speeds_(std::move(speeds)),
       table_(std::move(table)) {
   if (speeds_.empty() || speeds_.size() != table_.size())

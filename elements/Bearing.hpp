@@ -33,7 +33,7 @@ class Bearing : public SpeedDependentElement {
   /// between rows, the end rows held beyond the table (bearing data are not extrapolated).
   Bearing(int node, std::vector<double> speeds, std::vector<BearingCoefficients> table);
 
-  std::span<const NodeDof> dofs() const override { return dofs_; }
+  ElementDofs dofs() const override { return lateralDofs(node_); }
   ElementMatrix stiffnessAt(double speed) const override;
   ElementMatrix dampingAt(double speed) const override;
   std::string kind() const override { return "bearing"; }
@@ -42,7 +42,7 @@ class Bearing : public SpeedDependentElement {
   BearingCoefficients coefficientsAt(double speed) const;
 
  private:
-  std::array<NodeDof, 2> dofs_;
+  int node_;
   std::vector<double> speeds_;
   std::vector<BearingCoefficients> table_;
 };

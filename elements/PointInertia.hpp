@@ -3,7 +3,8 @@
 // perpendicular axis through the node) on the rotations. A point mass is Jp = Jd = 0.
 #pragma once
 
-#include <vector>
+#include <array>
+#include <cstdint>
 
 #include "fem/model/Element.hpp"
 
@@ -15,7 +16,7 @@ class PointInertia : public Element {
   PointInertia(int node, DofSet carried, double m, double Jp = 0, double Jd = 0,
                const Eigen::Vector3d& axis = Eigen::Vector3d::UnitX());
 
-  std::span<const NodeDof> dofs() const override { return dofs_; }
+  ElementDofs dofs() const override { return {{node_, node_}, codes_.data(), count_}; }
   ElementMatrix stiffness() const override;
   ElementMatrix mass() const override;
   /// Gyroscopic matrix per unit spin speed about `axis` (kg m^2), on the carried rotations:
@@ -30,7 +31,9 @@ class PointInertia : public Element {
   const Eigen::Vector3d& axis() const { return axis_; }
 
  private:
-  std::vector<NodeDof> dofs_;
+  int node_;
+  std::array<std::uint8_t, kDofKinds> codes_{};
+  int count_ = 0;
   double m_, Jp_, Jd_;
   Eigen::Vector3d axis_;
 };

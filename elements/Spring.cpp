@@ -13,12 +13,20 @@ void check(double k, double c) {
 }  // namespace
 
 Spring::Spring(NodeDof a, double stiffness, double damping)
-    : dofs_{a, a}, count_(1), k_(stiffness), c_(damping) {
+    : nodes_{a.node, a.node},
+      codes_{elementDofCode(0, a.dof)},
+      count_(1),
+      k_(stiffness),
+      c_(damping) {
   check(k_, c_);
 }
 
 Spring::Spring(NodeDof a, NodeDof b, double stiffness, double damping)
-    : dofs_{a, b}, count_(2), k_(stiffness), c_(damping) {
+    : nodes_{a.node, b.node},
+      codes_{elementDofCode(0, a.dof), elementDofCode(1, b.dof)},
+      count_(2),
+      k_(stiffness),
+      c_(damping) {
   check(k_, c_);
   if (a == b) throw std::invalid_argument("a two-node spring needs two different dofs");
 }

@@ -16,7 +16,7 @@ class Spring : public Element {
   /// Spring between dof `a` and dof `b` (same kind on two nodes, usually).
   Spring(NodeDof a, NodeDof b, double stiffness, double damping = 0);
 
-  std::span<const NodeDof> dofs() const override { return {dofs_.data(), std::size_t(count_)}; }
+  ElementDofs dofs() const override { return {nodes_, codes_.data(), count_}; }
   ElementMatrix stiffness() const override { return pattern(k_); }
   ElementMatrix damping() const override { return c_ != 0 ? pattern(c_) : ElementMatrix{}; }
   std::string kind() const override { return count_ == 1 ? "spring-grounded" : "spring"; }
@@ -25,7 +25,8 @@ class Spring : public Element {
  private:
   ElementMatrix pattern(double value) const;
 
-  std::array<NodeDof, 2> dofs_{};
+  std::array<int, 2> nodes_{};
+  std::array<std::uint8_t, 2> codes_{};
   int count_ = 0;
   double k_ = 0, c_ = 0;
 };

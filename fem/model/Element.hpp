@@ -3,7 +3,6 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <span>
 #include <string>
 
 #include "fem/model/Dof.hpp"
@@ -27,7 +26,7 @@ class Element {
   virtual ~Element() = default;
 
   /// The dofs this element couples, in the order of its matrices.
-  virtual std::span<const NodeDof> dofs() const = 0;
+  virtual ElementDofs dofs() const = 0;
   /// This element as a line element (LineElement.hpp), or null: one virtual call where a
   /// dynamic_cast costs 40 ns (0.05 s a pass over 10^6 beams).
   virtual const LineElement* asLineElement() const { return nullptr; }

@@ -6,6 +6,12 @@
 
 namespace beamrotor {
 
+/// uy and uz at `node`: the dofs a bearing acts on.
+inline ElementDofs lateralDofs(int node) {
+  static constexpr std::uint8_t codes[] = {elementDofCode(0, Dof::uy), elementDofCode(0, Dof::uz)};
+  return {{node, node}, codes, 2};
+}
+
 class SpeedDependentElement : public Element {
  public:
   /// Stiffness at spin speed Omega (rad/s), global frame, ordered as dofs(); may be

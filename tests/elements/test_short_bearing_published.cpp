@@ -48,10 +48,10 @@ double thresholdMass(const BearingCoefficients& k) {
 class ExactJournal : public SpeedDependentElement {
  public:
   ExactJournal(int node, PlainJournal journal, double restSpeed)
-      : dofs_{NodeDof{node, Dof::uy}, NodeDof{node, Dof::uz}},
+      : node_(node),
         journal_(journal),
         rest_(restSpeed) {}
-  std::span<const NodeDof> dofs() const override { return dofs_; }
+  ElementDofs dofs() const override { return lateralDofs(node_); }
   ElementMatrix stiffnessAt(double speed) const override { return at(speed).stiffnessAt(0); }
   ElementMatrix dampingAt(double speed) const override { return at(speed).dampingAt(0); }
   std::string kind() const override { return "bearing"; }
@@ -59,9 +59,9 @@ class ExactJournal : public SpeedDependentElement {
  private:
   /// Below `rest_` (the film needs spin) the coefficients there: any finite baseline will do.
   Bearing at(double speed) const {
-    return Bearing(dofs_[0].node, shortBearingCoefficients(journal_, std::max(speed, rest_)));
+    return Bearing(node_, shortBearingCoefficients(journal_, std::max(speed, rest_)));
   }
-  std::array<NodeDof, 2> dofs_;
+  int node_;
   PlainJournal journal_;
   double rest_;
 };
