@@ -14,9 +14,11 @@ Eigen::VectorXd prescribedValues(const Model& model, const DofMap& dofs) {
   return u;
 }
 
-Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs,
-                                     const Eigen::VectorXd& f, const Eigen::VectorXd& uPrescribed) {
-  Eigen::VectorXd rhs = f.head(dofs.freeCount());
+Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs, Eigen::VectorXd f,
+                                     const Eigen::VectorXd& uPrescribed) {
+  // f's own storage, shortened where it lies (realloc): no second vector of its length.
+  Eigen::VectorXd rhs = std::move(f);
+  rhs.conservativeResize(dofs.freeCount());
   if (uPrescribed.tail(dofs.constrainedCount()).any()) {
     // K u_C computed element by element (element loads excluded: they are already in f).
     Eigen::VectorXd push = Eigen::VectorXd::Zero(dofs.size());

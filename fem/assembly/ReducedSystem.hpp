@@ -16,9 +16,9 @@ class Model;
 Eigen::VectorXd prescribedValues(const Model& model, const DofMap& dofs);
 
 /// f_F - K_FC u_C: the free part of the loads minus what the prescribed displacements
-/// (given in the full-length uPrescribed) push onto the free dofs.
-Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs,
-                                     const Eigen::VectorXd& f, const Eigen::VectorXd& uPrescribed);
+/// (given in the full-length uPrescribed) push onto the free dofs; made in f's storage.
+Eigen::VectorXd reducedRightHandSide(const Model& model, const DofMap& dofs, Eigen::VectorXd f,
+                                     const Eigen::VectorXd& uPrescribed);
 
 /// A full-length vector laid out per node (absent dofs zero).
 NodalField toNodalField(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u);

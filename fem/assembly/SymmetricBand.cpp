@@ -9,7 +9,7 @@
 namespace beamrotor {
 
 SymmetricBand::SymmetricBand(int n, int halfBandwidth)
-    : n_(n), kd_(halfBandwidth), lower_(std::size_t(n) * std::size_t(halfBandwidth + 1), 0.0) {
+    : n_(n), kd_(halfBandwidth), lower_(Eigen::VectorXd::Zero(Eigen::Index(n) * (halfBandwidth + 1))) {
   if (n < 0 || halfBandwidth < 0)
     throw std::invalid_argument("SymmetricBand: negative size or bandwidth");
 }
@@ -54,27 +54,31 @@ long long SymmetricBand::nonZeros() const {
   return 2 * (long long)keptColumnStarts()[n_] - n_;
 }
 
-SparseMatrix SymmetricBand::lowerWithoutZeros() const {
-  const std::vector<int> start = keptColumnStarts();
-  SparseMatrix L(n_, n_);
-  L.resizeNonZeros(start[n_]);
-  std::copy(start.begin(), start.end(), L.outerIndexPtr());
-  forEvenParts(n_, [&](int first, int end) {
-    for (int j = first; j < end; ++j) {
-      int next = start[j];
-      for (int i = j; i <= j + kd_ && i < n_; ++i)
-        if (i == j || lower(i, j) != 0.0) {
-          L.innerIndexPtr()[next] = i;
-          L.valuePtr()[next++] = lower(i, j);
-        }
-    }
-  });
-  return L;
+CompressedLower SymmetricBand::lowerWithoutZeros() && {
+  CompressedLower out;
+  out.size = n_;
+  out.columnStarts = keptColumnStarts();
+  out.rows.resize(std::size_t(out.columnStarts[n_]));
+  // One pass in column order: an entry never moves up (column j starts at or before j
+  // (kd + 1)), so each is read before anything is written over it; in parts, a part could
+  // write where the part before it has still to read.
+  Eigen::Index next = 0;
+  for (int j = 0; j < n_; ++j)
+    for (int i = j; i <= j + kd_ && i < n_; ++i)
+      if (const double a = lower(i, j); i == j || a != 0.0) {
+        out.rows[next] = i;
+        lower_[next++] = a;
+      }
+  lower_.conservativeResize(next);
+  out.values = std::move(lower_);
+  *this = SymmetricBand();
+  return out;
 }
 
 SparseMatrix SymmetricBand::toSparse() const {
   // Eigen writes the full matrix column by column, each in ascending rows.
-  return SparseMatrix(lowerWithoutZeros().selfadjointView<Eigen::Lower>());
+  const CompressedLower lower = SymmetricBand(*this).lowerWithoutZeros();
+  return SparseMatrix(lower.view().selfadjointView<Eigen::Lower>());
 }
 
 }  // namespace beamrotor

@@ -11,6 +11,18 @@
 
 namespace beamrotor {
 
+/// A lower triangle compressed by columns, in Eigen's layout, owning its arrays.
+struct CompressedLower {
+  int size = 0;
+  std::vector<int> columnStarts;  ///< size + 1 entries
+  std::vector<int> rows;
+  Eigen::VectorXd values;
+  long long nonZeros() const { return columnStarts.empty() ? 0 : columnStarts.back(); }
+  Eigen::Map<const SparseMatrix> view() const {
+    return {size, size, columnStarts.back(), columnStarts.data(), rows.data(), values.data()};
+  }
+};
+
 class SymmetricBand {
  public:
   SymmetricBand() = default;
@@ -44,8 +56,10 @@ class SymmetricBand {
   /// bits on any number of cores).
   Eigen::VectorXd operator*(const Eigen::VectorXd& x) const;
   /// The lower triangle compressed by columns, without the exact zeros below the diagonal
-  /// (the diagonal always kept), column range by column range.
-  SparseMatrix lowerWithoutZeros() const;
+  /// (the diagonal always kept), made in place: the band's storage becomes the values and is
+  /// then shortened where it lies (realloc), so no second array of the band's size is ever
+  /// held and what the zeros took is free for what comes next (the band is left empty).
+  CompressedLower lowerWithoutZeros() &&;
   /// Both triangles, compressed, without the exact zeros off the diagonal (the pattern
   /// dropExactZeros leaves): the matrix for the sparse methods (mechanism search, LDL').
   SparseMatrix toSparse() const;
@@ -55,11 +69,11 @@ class SymmetricBand {
  private:
   /// Start of each column of lowerWithoutZeros() (n + 1 entries).
   std::vector<int> keptColumnStarts() const;
-  std::size_t place(int row, int column) const {
-    return std::size_t(column) * std::size_t(kd_ + 1) + std::size_t(row - column);
+  Eigen::Index place(int row, int column) const {
+    return Eigen::Index(column) * (kd_ + 1) + (row - column);
   }
   int n_ = 0, kd_ = 0;
-  std::vector<double> lower_;
+  Eigen::VectorXd lower_;
 };
 
 }  // namespace beamrotor

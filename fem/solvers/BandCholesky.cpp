@@ -16,7 +16,7 @@ namespace beamrotor {
 
 bool BandCholesky::factorize(const SymmetricBand& A) {
   factorized_ = false;
-  L_ = SparseMatrix();
+  L_ = CompressedLower();
   SymmetricBand band = A;
   const int n = band.size(), kd = band.halfBandwidth(), ld = band.leading();
   int info = 0;
@@ -28,17 +28,21 @@ bool BandCholesky::factorize(const SymmetricBand& A) {
     const double l = band.lower(j, j);
     pivots_[j] = l * l / A.lower(j, j);
   }
-  L_ = band.lowerWithoutZeros();
+  L_ = std::move(band).lowerWithoutZeros();
   factorized_ = true;
   return true;
 }
 
-Eigen::VectorXd BandCholesky::solve(const Eigen::VectorXd& b) const {
+Eigen::VectorXd BandCholesky::solve(Eigen::VectorXd b) const {
+  solveInPlace(b);
+  return b;
+}
+
+void BandCholesky::solveInPlace(Eigen::Ref<Eigen::VectorXd> x) const {
   if (!factorized_) throw std::logic_error("BandCholesky::solve: no factorisation");
-  Eigen::VectorXd x = b;
-  L_.triangularView<Eigen::Lower>().solveInPlace(x);
-  L_.transpose().triangularView<Eigen::Upper>().solveInPlace(x);
-  return x;
+  const Eigen::Map<const SparseMatrix> L = L_.view();
+  L.triangularView<Eigen::Lower>().solveInPlace(x);
+  L.transpose().triangularView<Eigen::Upper>().solveInPlace(x);
 }
 
 double BandCholesky::scaledRcond() const {

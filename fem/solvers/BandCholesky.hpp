@@ -16,16 +16,18 @@ class BandCholesky {
  public:
   /// A = L L' by dpbtrf in a copy of A's band (A is kept by the caller for residuals). False
   /// when a pivot is not positive (A not positive definite: a mechanism, or a structure made
-  /// indefinite by negative stiffnesses), and nothing can be solved then. L is then kept
-  /// compressed, without the band's zeros (a planar line's axial dofs couple with none of its
-  /// bending ones, so half its band stays zero in L), and the band is released: solves read
-  /// half the memory, in Eigen's sparse triangular solves: 0.037 s a solve for 2.8x10^6
-  /// equations with 5 places below the diagonal, where dpbtrs's column-by-column BLAS calls
-  /// took 0.064 s.
+  /// indefinite by negative stiffnesses), and nothing can be solved then. L is then
+  /// compressed in the copy, without the band's zeros (a planar line's axial dofs couple with
+  /// none of its bending ones, so half its band stays zero in L): solves read half the
+  /// memory, in Eigen's sparse triangular solves: 0.037 s a solve for 2.8x10^6 equations
+  /// with 5 places below the diagonal, where dpbtrs's column-by-column BLAS calls took
+  /// 0.064 s.
   bool factorize(const SymmetricBand& A);
   bool factorized() const { return factorized_; }
-  /// A^-1 b for the last successful factorisation.
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// A^-1 b for the last successful factorisation, in b's storage.
+  Eigen::VectorXd solve(Eigen::VectorXd b) const;
+  /// The same, where x holds b.
+  void solveInPlace(Eigen::Ref<Eigen::VectorXd> x) const;
   /// The reciprocal condition estimate of SparseLDLT::scaledRcond for this factor: with
   /// A = L L', the pivots of an LDL' are L_jj^2, and those of the scaled matrix
   /// D^-1/2 A D^-1/2 (D = diag(A)) are L_jj^2 / A_jj; their smallest over their largest.
@@ -35,7 +37,7 @@ class BandCholesky {
   double factorEntries() const;
 
  private:
-  SparseMatrix L_;            ///< lower triangular, compressed
+  CompressedLower L_;
   Eigen::VectorXd pivots_;    ///< L_jj^2 / A_jj
   bool factorized_ = false;
 };

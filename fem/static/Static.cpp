@@ -13,9 +13,11 @@ namespace beamrotor {
 namespace {
 
 /// Reactions (what each support exerts: K u - f at its dofs), the nodal field, hinge rotations
-/// and the solve's diagnostics of displacement u of `loaded`, solved by `system`.
-void recover(const Model& loaded, const LinearStatics& system, const Eigen::VectorXd& u,
-             StaticResult& result) {
+/// and the solve's diagnostics of displacement u of `loaded`, solved by `system`, whose
+/// matrices are freed first when `lastSolve`.
+void recover(const Model& loaded, LinearStatics& system, const Eigen::VectorXd& u,
+             StaticResult& result, bool lastSolve) {
+  if (lastSolve) system.releaseMatrices();
   const DofMap& dofs = system.dofs();
   const Eigen::VectorXd r = system.reactions(u);
   for (const Support& s : loaded.supports())
@@ -55,7 +57,7 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
   result.time.solve = system.solveSeconds();
 
   // 3. Recover reactions and the nodal field.
-  recover(model, system, u, result);
+  recover(model, system, u, result, true);
   result.time.total = total.lap();
   return result;
 }
@@ -79,7 +81,7 @@ std::vector<StaticResult> solveStaticCases(const std::vector<const Model*>& load
     result.activeSetIterations = 1;
     result.time.factor = system.factorSeconds() - factorBefore;
     result.time.solve = system.solveSeconds() - solveBefore;
-    recover(*loaded, system, u, result);
+    recover(*loaded, system, u, result, loaded == loadings.back());
     result.time.assembly = results.empty() ? assembly : 0;
     result.time.total = total.lap() + result.time.assembly;
     results.push_back(std::move(result));

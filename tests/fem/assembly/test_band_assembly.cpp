@@ -60,6 +60,36 @@ TEST_SUITE("band assembly") {
     CHECK((y - K * x).norm() <= 1e-14 * (K.cwiseAbs() * x.cwiseAbs()).norm());
   }
 
+  TEST_CASE("compressed in place: the band's entries without its zeros, in its own storage") {
+    const PlanarBenchModel bench = planarBenchModel(30);
+    const Model& m = *bench.model;
+    const DofMap dofs(m);
+    const int kd = stiffnessBand(m, dofs).value();
+    SymmetricBand band = assembleBand(m, dofs, MatrixKind::stiffness, kd);
+    const SymmetricBand kept = band;
+    const CompressedLower L = std::move(band).lowerWithoutZeros();
+    CHECK(band.size() == 0);
+    // Every entry of the lower band that is not an exact zero off the diagonal, in column
+    // order, and nothing else; the storage shortened to just those.
+    long long expected = 0, differ = 0;
+    const Eigen::Map<const SparseMatrix> view = L.view();
+    const Eigen::MatrixXd dense(view);
+    for (int j = 0; j < kept.size(); ++j)
+      for (int i = 0; i < kept.size(); ++i) {
+        const bool inBand = i >= j && i <= j + kd;
+        const bool keptEntry = inBand && (i == j || kept.lower(i, j) != 0.0);
+        expected += keptEntry;
+        differ += dense(i, j) != (inBand ? kept.lower(i, j) : 0.0);
+      }
+    CHECK(differ == 0);
+    CHECK(L.nonZeros() == expected);
+    CHECK(L.values.size() == expected);
+    CHECK(L.rows.size() == std::size_t(expected));
+    // A planar line: a node's axial dof couples with none of its bending ones, so the kept
+    // entries are far fewer than the band's n (kd + 1).
+    CHECK(expected < (long long)kept.size() * (kd + 1) * 2 / 3);
+  }
+
   TEST_CASE("a spring between far nodes makes the band too wide: the sparse path serves") {
     PlanarBenchModel bench = planarBenchModel(200);
     Model& m = *bench.model;

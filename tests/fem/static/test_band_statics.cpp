@@ -7,6 +7,7 @@
 
 #include "elements/Spring.hpp"
 #include "fem/assembly/Assembly.hpp"
+#include "fem/static/LinearStatics.hpp"
 #include "fem/static/Static.hpp"
 #include "problems/bench/StandardModels.hpp"
 #include "tests/Helpers.hpp"
@@ -46,6 +47,30 @@ TEST_SUITE("band statics") {
     // couple in K (the two elements' terms cancel exactly) but do once uy of the node before
     // is eliminated. 52 + 5 here; CHOLMOD's LDL' has the same (next test).
     CHECK(r.size.factorEntries == (K.nonZeros() + K.rows()) / 2 + 5);
+  }
+
+  TEST_CASE("matrices freed after the last solve: reactions and diagnostics stay") {
+    const double L = 2.0, P = 1500.0;
+    Model m;
+    const Line line = uniformBeam(m, L, steelCircle(0.05), 7);
+    clamp(m, "root", line.nodes.front(), DofSet::planar());
+    m.addLoad({line.nodes.back(), Dof::uy, -P});
+    LinearStatics system(m);
+    const Eigen::VectorXd u = system.solve({}, 1e-14);
+    const std::string solver = system.solverName();
+    const long long entries = system.stiffnessEntries();
+    const double factorEntries = system.factorEntries(), roundOff = system.roundOff();
+    const Eigen::VectorXd reactions = system.reactions(u);
+    system.releaseMatrices();
+    CHECK(system.solverName() == solver);
+    CHECK(system.stiffnessEntries() == entries);
+    CHECK(system.factorEntries() == factorEntries);
+    CHECK(system.roundOff() == roundOff);
+    CHECK(system.reactions(u) == reactions);
+    // The root's moment reaction: P L (statics).
+    const int rz = system.dofs().equation({line.nodes.front(), Dof::rz});
+    CHECK(relError(reactions[rz - system.dofs().freeCount()], P * L) < 1e-10);
+    CHECK_THROWS_AS(system.solve({}, 1e-14), std::logic_error);
   }
 
   TEST_CASE("the band and the sparse path solve the same K alike") {
