@@ -309,9 +309,12 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
 
 Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
+  ReusedForEqual<std::pair<ElementMatrix, ElementVector>> equations;
   for (const auto& e : model.elements()) {
     const auto d = e->dofs();
-    const ElementVector fe = e->endForces(gather(*e, dofs, u));
+    const auto& [K, load] =
+        equations.of(*e, [](const Element& x) { return std::pair(x.stiffness(), x.load()); });
+    const ElementVector fe = endForces(K, load, gather(*e, dofs, u));
     for (int a = 0; a < int(d.size()); ++a) r[dofs.equation(d[a])] += fe[a];
   }
   return r;
@@ -337,11 +340,15 @@ Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
       const int k = dofs.equation(d) - firstConstrained;
       return k >= owners[part] && k < owners[part + 1];
     };
+    // The supported elements of a uniform line are equal: their K and load computed once.
+    ReusedForEqual<std::pair<ElementMatrix, ElementVector>> equations;
     for (int i : touching) {
       const Element& e = *elements[i];
       const auto d = e.dofs();
       if (std::none_of(d.begin(), d.end(), owned)) continue;
-      const ElementVector fe = e.endForces(gather(e, dofs, u));
+      const auto& [K, load] = equations.of(
+          e, [](const Element& x) { return std::pair(x.stiffness(), x.load()); });
+      const ElementVector fe = endForces(K, load, gather(e, dofs, u));
       for (int a = 0; a < int(d.size()); ++a)
         if (owned(d[a])) r[dofs.equation(d[a]) - firstConstrained] += fe[a];
     }

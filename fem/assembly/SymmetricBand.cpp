@@ -1,6 +1,7 @@
 #include "fem/assembly/SymmetricBand.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -58,18 +59,29 @@ CompressedLower SymmetricBand::lowerWithoutZeros() && {
   CompressedLower out;
   out.size = n_;
   out.columnStarts = keptColumnStarts();
-  out.rows.resize(std::size_t(out.columnStarts[n_]));
-  // One pass in column order: an entry never moves up (column j starts at or before j
-  // (kd + 1)), so each is read before anything is written over it; in parts, a part could
-  // write where the part before it has still to read.
-  Eigen::Index next = 0;
-  for (int j = 0; j < n_; ++j)
-    for (int i = j; i <= j + kd_ && i < n_; ++i)
-      if (const double a = lower(i, j); i == j || a != 0.0) {
-        out.rows[next] = i;
-        lower_[next++] = a;
-      }
-  lower_.conservativeResize(next);
+  const std::vector<int>& start = out.columnStarts;
+  out.rows.resize(std::size_t(start[n_]));
+  // Each part packs its columns to the front of its own stretch of the storage: an entry
+  // never moves up, so it is read before anything is written over it, and no part writes
+  // where another reads. The parts' packed runs are then moved down into place in order.
+  const std::vector<int> bounds = evenRanges(n_, partsFor(std::size_t(n_)));
+  runParts(int(bounds.size()) - 1, [&](int part) {
+    const int first = bounds[part], end = bounds[part + 1];
+    Eigen::Index next = place(first, first);
+    for (int j = first; j < end; ++j)
+      for (int i = j; i <= j + kd_ && i < n_; ++i)
+        if (const double a = lower(i, j); i == j || a != 0.0) {
+          out.rows[std::size_t(next - place(first, first) + start[first])] = i;
+          lower_[next++] = a;
+        }
+  });
+  for (std::size_t part = 1; part + 1 < bounds.size(); ++part) {
+    const int first = bounds[part], end = bounds[part + 1];
+    double* data = lower_.data();
+    std::memmove(data + start[first], data + place(first, first),
+                 sizeof(double) * std::size_t(start[end] - start[first]));
+  }
+  lower_.conservativeResize(start[n_]);
   out.values = std::move(lower_);
   *this = SymmetricBand();
   return out;

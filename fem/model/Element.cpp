@@ -2,11 +2,15 @@
 
 namespace beamrotor {
 
-ElementVector Element::endForces(const ElementVector& u) const {
-  ElementVector f = stiffness() * u;
-  ElementVector q = load();
-  if (q.size() > 0) f -= q;
+ElementVector endForces(const ElementMatrix& K, const ElementVector& load,
+                        const ElementVector& u) {
+  ElementVector f = K * u;
+  if (load.size() > 0) f -= load;
   return f;
+}
+
+ElementVector Element::endForces(const ElementVector& u) const {
+  return beamrotor::endForces(stiffness(), load(), u);
 }
 
 }  // namespace beamrotor

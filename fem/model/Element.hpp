@@ -63,4 +63,8 @@ class Element {
   ElementVector endForces(const ElementVector& u) const;
 };
 
+/// The same from an element's stiffness K and load (empty when none), computed once for a run
+/// of equal elements (ReusedForEqual, fem/assembly/Assembly.hpp).
+ElementVector endForces(const ElementMatrix& K, const ElementVector& load, const ElementVector& u);
+
 }  // namespace beamrotor

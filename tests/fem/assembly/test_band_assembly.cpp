@@ -116,5 +116,19 @@ TEST_SUITE("band assembly") {
     }
     const std::size_t entries = std::size_t(one.size()) * std::size_t(one.leading());
     CHECK(std::equal(one.data(), one.data() + entries, three.data()));
+    // Compressed in place: three parts pack their stretches apart and move them into place.
+    CompressedLower packedOne, packedThree;
+    {
+      const ThreadsSetting threads("1");
+      packedOne = std::move(one).lowerWithoutZeros();
+    }
+    {
+      const ThreadsSetting threads("3");
+      packedThree = std::move(three).lowerWithoutZeros();
+    }
+    CHECK(packedOne.columnStarts == packedThree.columnStarts);
+    CHECK(packedOne.rows == packedThree.rows);
+    CHECK(packedOne.values == packedThree.values);
+    CHECK(packedThree.values.size() == packedThree.nonZeros());
   }
 }
