@@ -9,10 +9,14 @@
 
 namespace beamrotor {
 
-SymmetricBand::SymmetricBand(int n, int halfBandwidth)
-    : n_(n), kd_(halfBandwidth), lower_(Eigen::VectorXd::Zero(Eigen::Index(n) * (halfBandwidth + 1))) {
+SymmetricBand::SymmetricBand(int n, int halfBandwidth) : n_(n), kd_(halfBandwidth) {
   if (n < 0 || halfBandwidth < 0)
     throw std::invalid_argument("SymmetricBand: negative size or bandwidth");
+  // Zeroed by parts, each its own columns: 134 MB for a planar line of 10^6 elements.
+  lower_.resize(Eigen::Index(n) * leading());
+  forEvenParts(n, [&](int first, int end) {
+    std::fill(lower_.data() + place(first, first), lower_.data() + place(end, end), 0.0);
+  });
 }
 
 double SymmetricBand::operator()(int i, int j) const {
