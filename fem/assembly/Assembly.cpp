@@ -307,13 +307,19 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
   return f;
 }
 
+namespace {
+/// What an element's end forces are made of (endForces).
+std::pair<ElementMatrix, ElementVector> stiffnessAndLoad(const Element& e) {
+  return {e.stiffness(), e.load()};
+}
+}  // namespace
+
 Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
   ReusedForEqual<std::pair<ElementMatrix, ElementVector>> equations;
   for (const auto& e : model.elements()) {
     const auto d = e->dofs();
-    const auto& [K, load] =
-        equations.of(*e, [](const Element& x) { return std::pair(x.stiffness(), x.load()); });
+    const auto& [K, load] = equations.of(*e, stiffnessAndLoad);
     const ElementVector fe = endForces(K, load, gather(*e, dofs, u));
     for (int a = 0; a < int(d.size()); ++a) r[dofs.equation(d[a])] += fe[a];
   }
@@ -346,8 +352,7 @@ Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
       const Element& e = *elements[i];
       const auto d = e.dofs();
       if (std::none_of(d.begin(), d.end(), owned)) continue;
-      const auto& [K, load] = equations.of(
-          e, [](const Element& x) { return std::pair(x.stiffness(), x.load()); });
+      const auto& [K, load] = equations.of(e, stiffnessAndLoad);
       const ElementVector fe = endForces(K, load, gather(e, dofs, u));
       for (int a = 0; a < int(d.size()); ++a)
         if (owned(d[a])) r[dofs.equation(d[a]) - firstConstrained] += fe[a];
