@@ -80,9 +80,10 @@ inline constexpr std::uint8_t elementDofCode(int end, Dof d) {
   return std::uint8_t(8 * end + dofIndex(d));
 }
 
-/// The dofs an element couples, in the order of its matrices: its two node numbers and a
-/// code a dof (elementDofCode). The codes of a beam are shared by every beam like it, so a
-/// beam keeps 8 bytes of dofs where a list of NodeDofs took 96 (10^6 beams: 88 MB).
+/// The dofs an element couples, in the order of its matrices: its two node numbers and one
+/// code for each dof (elementDofCode). A beam's codes are shared by every beam like it, so a
+/// beam keeps 8 bytes of dofs where a list of NodeDofs took 96 (10^6 beams: 88 MB). Read
+/// through it, a dof is a NodeDof made on the spot (a value, not a reference).
 class ElementDofs {
  public:
   ElementDofs(std::array<int, 2> nodes, const std::uint8_t* codes, int count)
@@ -93,7 +94,8 @@ class ElementDofs {
 
   class iterator {
    public:
-    using iterator_category = std::forward_iterator_tag;
+    using iterator_category = std::input_iterator_tag;  // its dofs are values
+    using iterator_concept = std::forward_iterator_tag;
     using value_type = NodeDof;
     using difference_type = std::ptrdiff_t;
     using pointer = void;

@@ -41,7 +41,7 @@ void prefaultHeap(std::size_t bytes) {
 
 std::size_t estimatedStaticBytes(long long elements, int dofsPerNode) {
   // Memory per element grows with the square of the dofs a node carries (matrix entries).
-  const double perElement = 1050.0 * dofsPerNode * dofsPerNode / 9.0;
+  const double perElement = 600.0 * dofsPerNode * dofsPerNode / 9.0;
   return std::size_t(perElement * double(elements));
 }
 
