@@ -10,7 +10,9 @@ namespace beamrotor {
 namespace {
 
 /// The place of an element dof (elementDofCode) among a beam's 12 global ones.
-int globalPlace(std::uint8_t code) { return 6 * (code >> 3) + (code & 7); }
+int globalPlace(std::uint8_t code) {
+  return 6 * (code >> 3) + (code & 7);
+}
 
 using Matrix4 = Eigen::Matrix4d;
 using Matrix12 = Beam::Matrix12;
@@ -530,7 +532,8 @@ Matrix12 Beam::localGyroscopic() const {
 }
 
 ElementMatrix Beam::gyroscopic() const {
-  if (!p_->options.rotaryInertia || !p_->carried.contains(Dof::ry) || !p_->carried.contains(Dof::rz))
+  if (!p_->options.rotaryInertia || !p_->carried.contains(Dof::ry) ||
+      !p_->carried.contains(Dof::rz))
     return {};
   Matrix12 G = localGyroscopic();
   if (!p_->released.empty()) {
@@ -604,7 +607,8 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
     const Section& sec = *p_->section;
     const double x = s * p_->L, a = s * (1 - s);
     // EA u'' + qx = 0 with u = 0 at both ends: the mean's parabola and the rise's cubic.
-    d.x() += (p_->qMean.x() * a / 2 + p_->qHalfRise.x() * a * (2 * s - 1) / 6) * p_->L * p_->L / sec.EA();
+    d.x() += (p_->qMean.x() * a / 2 + p_->qHalfRise.x() * a * (2 * s - 1) / 6) * p_->L * p_->L /
+             sec.EA();
     if (!isLinear(t)) {
       const auto bending = [&](int k, double EI, double Phi) {
         const SpanBending mean = clampedSpanBending(p_->qMean[k], EI, Phi, p_->L, x);

@@ -140,7 +140,7 @@ class Beam : public LineElement {
     DofSet carried;
     BeamOptions options;
     double L = 0;
-    Eigen::Matrix3d R;  // rows: local axes in global coordinates
+    Eigen::Matrix3d R;        // rows: local axes in global coordinates
     double axialPreload = 0;  // N, tension positive; see setAxialPreload
     // The span load in the local frame: its mean and half the change from start to end, so
     // q(s) = qMean + qHalfRise (2 s - 1).

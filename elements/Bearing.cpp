@@ -27,9 +27,7 @@ ElementMatrix twoByTwo(double yy, double yz, double zy, double zz) {
 Bearing::Bearing(int node, const BearingCoefficients& c) : Bearing(node, {0.0}, {c}) {}
 
 Bearing::Bearing(int node, std::vector<double> speeds, std::vector<BearingCoefficients> table)
-    : node_(node),
-      speeds_(std::move(speeds)),
-      table_(std::move(table)) {
+    : node_(node), speeds_(std::move(speeds)), table_(std::move(table)) {
   if (speeds_.empty() || speeds_.size() != table_.size())
     throw std::invalid_argument("a bearing table needs one row of coefficients per speed");
   for (std::size_t i = 0; i < speeds_.size(); ++i) {

@@ -71,12 +71,13 @@ CompressedLower SymmetricBand::lowerWithoutZeros() && {
   const std::vector<int> bounds = evenRanges(n_, partsFor(std::size_t(n_)));
   runParts(int(bounds.size()) - 1, [&](int part) {
     const int first = bounds[part], end = bounds[part + 1];
-    Eigen::Index next = place(first, first);
+    Eigen::Index packed = place(first, first);     // where this part's next value goes
+    std::size_t kept = std::size_t(start[first]);  // and its row, at its final place
     for (int j = first; j < end; ++j)
       for (int i = j; i <= j + kd_ && i < n_; ++i)
         if (const double a = lower(i, j); i == j || a != 0.0) {
-          out.rows[std::size_t(next - place(first, first) + start[first])] = i;
-          lower_[next++] = a;
+          out.rows[kept++] = i;
+          lower_[packed++] = a;
         }
   });
   for (std::size_t part = 1; part + 1 < bounds.size(); ++part) {

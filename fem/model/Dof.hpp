@@ -103,8 +103,15 @@ class ElementDofs {
     iterator() = default;
     iterator(std::array<int, 2> nodes, const std::uint8_t* code) : nodes_(nodes), code_(code) {}
     NodeDof operator*() const { return decode(nodes_, *code_); }
-    iterator& operator++() { ++code_; return *this; }
-    iterator operator++(int) { iterator old = *this; ++code_; return old; }
+    iterator& operator++() {
+      ++code_;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++code_;
+      return old;
+    }
     bool operator==(const iterator& o) const { return code_ == o.code_; }
     difference_type operator-(const iterator& o) const { return code_ - o.code_; }
 

@@ -2,8 +2,7 @@
 
 namespace beamrotor {
 
-ElementVector endForces(const ElementMatrix& K, const ElementVector& load,
-                        const ElementVector& u) {
+ElementVector endForces(const ElementMatrix& K, const ElementVector& load, const ElementVector& u) {
   ElementVector f = K * u;
   if (load.size() > 0) f -= load;
   return f;

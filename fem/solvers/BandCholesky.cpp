@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-
 extern "C" {
 // LAPACK (Debian's OpenBLAS or reference LAPACK, 32-bit integers).
 void dpbtrf_(const char* uplo, const int* n, const int* kd, double* ab, const int* ldab, int* info);

@@ -112,6 +112,9 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
   if (const std::optional<int> kd = stiffnessBand(model, dofs_)) {
     bandK_ = assembleBand(model, dofs_, MatrixKind::stiffness, *kd);
     banded_ = true;
+    // The sparse K a fallback makes of it keeps the same entries.
+    stiffnessEntries_ = bandK_.nonZeros();
+    solverName_ = "LAPACK band Cholesky, half-bandwidth " + std::to_string(*kd);
     setLoads(model);
     return;
   }
@@ -122,6 +125,7 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
   // The factor needs only the pairs that couple (its fill and flops fall by up to 3x), and K
   // keeps only their storage: a planar line's 40 % less, which the factor then reuses.
   dropExactZeros(K_);
+  stiffnessEntries_ = K_.nonZeros();
   setLoads(model);
 }
 
@@ -194,6 +198,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
       else
         solver_->analyzePattern(A, symmetry_);
       analysed_ = true;
+      solverName_ = solver_->methodName() + ", " + solver_->orderingName() + " ordering";
     }
     if (!sameFactor) {
       solver_->factorize(A);
@@ -202,15 +207,8 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     }
   }
   factoredUnheld_ = held.empty();
-  if (!sameFactor && banded_) {
-    stiffnessEntries_ = bandK_.nonZeros();
-    factorEntries_ = bandFactor_.factorEntries();
-    solverName_ = "LAPACK band Cholesky, half-bandwidth " + std::to_string(bandK_.halfBandwidth());
-  } else if (!sameFactor) {
-    stiffnessEntries_ = K_.nonZeros();
-    factorEntries_ = solver_->factorEntries();
-    solverName_ = solver_->methodName() + ", " + solver_->orderingName() + " ordering";
-  }
+  if (!sameFactor)
+    factorEntries_ = banded_ ? bandFactor_.factorEntries() : solver_->factorEntries();
   factorSeconds_ += clock.lap();
 
   // 2. Right-hand side: held values move to the right like prescribed ones (rhs_ itself, not

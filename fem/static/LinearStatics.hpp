@@ -90,7 +90,8 @@ class LinearStatics {
   bool factoredUnheld_ = false;  ///< the factor is of K itself (no held dofs)
   bool released_ = false;
   double rcond_ = 0, roundOff_ = 0, factorSeconds_ = 0, solveSeconds_ = 0;
-  // Of the last factorisation, kept past releaseMatrices().
+  // Set where K, its analysis and its last factorisation are made; kept past
+  // releaseMatrices().
   long long stiffnessEntries_ = 0;
   double factorEntries_ = 0;
   std::string solverName_;

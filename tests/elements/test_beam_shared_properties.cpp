@@ -68,8 +68,10 @@ TEST_SUITE("beam shared properties") {
     line.beams[2]->release(0, Dof::rz);
     const ElementDofs d = line.beams[2]->dofs();
     // ux, uy of node 2 (its rz released about global z), then ux, uy, rz of node 3.
-    const std::vector<NodeDof> expected{{line.nodes[2], Dof::ux}, {line.nodes[2], Dof::uy},
-                                        {line.nodes[3], Dof::ux}, {line.nodes[3], Dof::uy},
+    const std::vector<NodeDof> expected{{line.nodes[2], Dof::ux},
+                                        {line.nodes[2], Dof::uy},
+                                        {line.nodes[3], Dof::ux},
+                                        {line.nodes[3], Dof::uy},
                                         {line.nodes[3], Dof::rz}};
     CHECK((std::vector<NodeDof>(d.begin(), d.end()) == expected));
     for (std::size_t k = 0; k < expected.size(); ++k) CHECK((d[k] == expected[k]));

@@ -48,9 +48,7 @@ double thresholdMass(const BearingCoefficients& k) {
 class ExactJournal : public SpeedDependentElement {
  public:
   ExactJournal(int node, PlainJournal journal, double restSpeed)
-      : node_(node),
-        journal_(journal),
-        rest_(restSpeed) {}
+      : node_(node), journal_(journal), rest_(restSpeed) {}
   ElementDofs dofs() const override { return lateralDofs(node_); }
   ElementMatrix stiffnessAt(double speed) const override { return at(speed).stiffnessAt(0); }
   ElementMatrix dampingAt(double speed) const override { return at(speed).dampingAt(0); }
