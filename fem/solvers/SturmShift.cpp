@@ -132,20 +132,21 @@ double shiftBelowLowest(SturmCounter& counter, double sigma, double upperBound, 
   //    counts above lambda_1 differ, just below or just above where they place a band edge,
   //    which on a long line of spans takes a few probes where bisection takes 25. A placed
   //    probe that fails to halve the bracket is followed by a bisection, so the search takes
-  //    at most twice bisection's probes whatever the spectrum.
+  //    at most twice bisection's probes, and one more for the first probe (below), whatever
+  //    the spectrum.
+  //    The first probe goes a sixteenth of the bracket below an upper bound that is a
+  //    Rayleigh quotient, not to the middle: from a start that holds every mode the quotient
+  //    lies close above lambda_1 (7.7 % on the benchmark's 10^5 spans), so the probe either
+  //    finds a second count above lambda_1, from which the band edge is placed, or lifts lo to
+  //    within that sixteenth. Bisection spent three probes below lambda_1 there first.
   double lo = sigma;
   double hi1 = boundHoldsOne ? upperBound : hiN;
   CountAbove near{hi1, boundHoldsOne ? atUpperBound : atHiN};  // always at hi1
   CountAbove far{hi1, 0};                                      // a larger count, or none yet
   bool aimAbove = false, bisectNext = false;
   double loRcond = 0;  // of the factor at lo, once a probe has moved lo up from sigma
-  // The first probe goes a sixteenth of the bracket below an upper bound that is a Rayleigh
-  // quotient, not to the middle: from a start that holds every mode the quotient lies close
-  // above lambda_1 (7.7 % on the benchmark's 10^5 spans), so the probe either finds a second
-  // count above lambda_1, from which the band edge is placed, or lifts lo to within that
-  // sixteenth. Bisection spent three probes below lambda_1 there first.
   constexpr double kBelowQuotient = 1.0 / 16;
-  bool first = boundHoldsOne;
+  bool first = boundHoldsOne;  // the next probe is the first, below a Rayleigh quotient
   while (hi1 - lo > kNarrow * (hiN - lo) && hi1 - lo > kResolution * std::abs(hi1) &&
          !exhausted()) {
     const double before = hi1 - lo;
