@@ -62,7 +62,8 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
   // 2. Eigenpairs nearest the shift. At shift 0 a singular K is a mechanism: name its dofs.
   EigenPairs pairs;
   try {
-    pairs = symmetricEigenpairs(K, M, std::min(options.modes, dofs.freeCount()), options.shift);
+    pairs = symmetricEigenpairs(K, M, std::min(options.modes, dofs.freeCount()), options.shift,
+                                dofs.freeNodes());
   } catch (const SingularSystem& e) {
     if (options.shift == 0) {
       const Mechanism mechanism = findMechanism(model, dofs, K);

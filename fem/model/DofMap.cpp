@@ -58,4 +58,10 @@ DofMap::DofMap(const Model& model) {
   }
 }
 
+std::vector<int> DofMap::freeNodes() const {
+  std::vector<int> nodes(static_cast<std::size_t>(freeCount_));
+  for (int e = 0; e < freeCount_; ++e) nodes[std::size_t(e)] = dofs_[std::size_t(e)].node;
+  return nodes;
+}
+
 }  // namespace beamrotor

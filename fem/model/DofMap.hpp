@@ -27,6 +27,8 @@ class DofMap {
   bool isFree(int equation) const { return equation >= 0 && equation < freeCount_; }
   bool isConstrained(int equation) const { return equation >= freeCount_; }
   int freeCount() const { return freeCount_; }
+  /// The node of each free equation, in equation order (a node's equations are consecutive).
+  std::vector<int> freeNodes() const;
   int constrainedCount() const { return size() - freeCount_; }
   int size() const { return int(dofs_.size()); }
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "fem/solvers/NodeOrdering.hpp"
+
 namespace beamrotor {
 
 double SparseLDLT::rcond() const {
@@ -17,11 +19,11 @@ SparseLDLT::FactorView SparseLDLT::factorView() const {
   const cholmod_factor& f = *m_cholmodFactor;
   const int n = int(f.n);
   const auto* perm = static_cast<const int*>(f.Perm);
-  return {Eigen::Map<const SparseMatrix>(
-              n, n, Eigen::Index(f.nzmax), static_cast<const int*>(f.p),
-              static_cast<const int*>(f.i), static_cast<const double*>(f.x),
-              static_cast<const int*>(f.nz)),
-          f.ordering != CHOLMOD_NATURAL ? perm : nullptr};
+  return {
+      Eigen::Map<const SparseMatrix>(n, n, Eigen::Index(f.nzmax), static_cast<const int*>(f.p),
+                                     static_cast<const int*>(f.i), static_cast<const double*>(f.x),
+                                     static_cast<const int*>(f.nz)),
+      f.ordering != CHOLMOD_NATURAL ? perm : nullptr};
 }
 
 void SparseLDLT::solveInto(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
@@ -96,12 +98,13 @@ long long lowerEnvelope(const SparseMatrix& A) {
   return entries;
 }
 
-void SparseLDLT::analyzePattern(const SparseMatrix& A) {
+void SparseLDLT::analyzePattern(const SparseMatrix& A, std::span<const int> nodeOfRow) {
   const double lowerEntries = double(A.nonZeros() + A.rows()) / 2;
   cholmod_common& c = cholmod();
   // No room for later updates of the factor (CHOLMOD reserves 5 entries a column by
   // default, about a third of the factor's memory here): factors are only ever recomputed.
   c.grow2 = 0;
+  byNode_ = false;
   const auto analyseWith = [&](int ordering) {
     c.nmethods = ordering == CHOLMOD_NATURAL ? 1 : 0;  // 0: CHOLMOD's default, AMD or METIS
     c.method[0].ordering = ordering;
@@ -116,9 +119,30 @@ void SparseLDLT::analyzePattern(const SparseMatrix& A) {
   // exact zeros were dropped (dropExactZeros) keeps its axial dofs apart from its bending ones,
   // and equal spans cancel each node's own bending-rotation coupling. The analysis in the
   // matrix's own order counts the true fill (an elimination tree and column counts, linear in
-  // the entries); AMD runs only when that fill is large.
+  // the entries); a fill-reducing order is sought only when that fill is large.
   analyseWith(CHOLMOD_NATURAL);
-  if (predictedFactorEntries() > 1.2 * lowerEntries) analyseWith(CHOLMOD_AMD);
+  if (predictedFactorEntries() <= 1.2 * lowerEntries) return;
+  if (nodeOfRow.empty()) {
+    analyseWith(CHOLMOD_AMD);
+    return;
+  }
+  analyseInOrder(A, nodeByNodeOrdering(A, nodeOfRow));
+  byNode_ = true;
+}
+
+void SparseLDLT::analyseInOrder(const SparseMatrix& A, std::vector<int> order) {
+  // Eigen's analyzePattern() with CHOLMOD's analysis in a given order (postordered).
+  cholmod_common& c = cholmod();
+  c.nmethods = 1;
+  c.method[0].ordering = CHOLMOD_GIVEN;
+  c.postorder = 1;
+  if (m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &c);
+  cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Upper>());
+  m_cholmodFactor = cholmod_analyze_p(&view, order.data(), nullptr, 0, &c);
+  m_isInitialized = true;
+  m_info = m_cholmodFactor ? Eigen::Success : Eigen::NumericalIssue;
+  m_analysisIsOk = m_cholmodFactor != nullptr;
+  m_factorizationIsOk = false;
 }
 
 int SparseLDLT::negativePivots() const {
@@ -129,6 +153,7 @@ int SparseLDLT::negativePivots() const {
 }
 
 const char* SparseLDLT::orderingName() const {
+  if (byNode_) return "AMD by node";
   switch (m_cholmodFactor ? m_cholmodFactor->ordering : -1) {
     case CHOLMOD_NATURAL:
       return "natural";
@@ -168,10 +193,11 @@ bool isNumericallySymmetric(const SparseMatrix& A, double relTol) {
   return true;
 }
 
-void LinearSolver::analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry) {
+void LinearSolver::analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry,
+                                  std::span<const int> nodeOfRow) {
   symmetric_ = symmetry == MatrixSymmetry::byConstruction || isNumericallySymmetric(A);
   if (symmetric_)
-    ldlt_.analyzePattern(A);
+    ldlt_.analyzePattern(A, nodeOfRow);
   else
     lu_.analyzePattern(A);
 }

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <Eigen/CholmodSupport>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/solvers/SparseLU.hpp"
@@ -44,10 +46,12 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   int negativePivots() const;
   /// Symbolic analysis. When the matrix as numbered already has (almost) no room for fill,
   /// or creates none, as a line of beams numbered node by node does, its own order is kept
-  /// and the fill-reducing ordering (AMD/METIS), which would cost more than the
-  /// factorisation, is skipped.
-  void analyzePattern(const SparseMatrix& A);
-  /// The fill-reducing ordering the analysis chose: "natural", "AMD", "METIS", "NESDIS".
+  /// and the fill-reducing ordering, which would cost more than the factorisation, is
+  /// skipped. Otherwise the order is AMD's: on the graph of nodes when `nodeOfRow` names each
+  /// row's node (fem/solvers/NodeOrdering), else on the graph of equations.
+  void analyzePattern(const SparseMatrix& A, std::span<const int> nodeOfRow = {});
+  /// The fill-reducing ordering the analysis chose: "natural", "AMD", "AMD by node", "METIS",
+  /// "NESDIS".
   const char* orderingName() const;
 
   /// The last factorisation as CHOLMOD holds it, P A P' = L D L': L unit lower, each column
@@ -62,7 +66,11 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   FactorView factorView() const;
 
  private:
+  /// CHOLMOD's analysis in `order` (row k of P A P' is row order[k] of A), then postordered.
+  void analyseInOrder(const SparseMatrix& A, std::vector<int> order);
+
   Eigen::VectorXd diagonal_;  ///< of the matrix last factorised
+  bool byNode_ = false;       ///< the analysis ordered the graph of nodes
 };
 
 /// Entries in the lower envelope of a structurally symmetric A: for each row, from its first
@@ -84,7 +92,10 @@ class LinearSolver {
   /// Chooses the method (from A's values unless `symmetry` says it is symmetric by
   /// construction) and computes the symbolic factorisation; later factorize() calls must pass
   /// matrices with the same pattern (and the same symmetry).
-  void analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry = MatrixSymmetry::unknown);
+  /// `nodeOfRow` (optional) names each row's node, rows of a node consecutive: a sparse
+  /// factor's fill-reducing order is then found on the graph of nodes (SparseLDLT).
+  void analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry = MatrixSymmetry::unknown,
+                      std::span<const int> nodeOfRow = {});
   /// Numeric factorisation. Check healthy() before solving. A non-symmetric matrix is
   /// factorised symmetrically scaled, S A S with S = |diag(A)|^-1/2, and solved as
   /// x = S (S A S)^-1 S b.

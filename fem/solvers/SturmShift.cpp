@@ -57,14 +57,15 @@ void fillShifted(const SparseMatrix& K, const SparseMatrix& M, double sigma,
 
 }  // namespace
 
-SturmCounter::SturmCounter(const SparseMatrix& K, const SparseMatrix& M)
-    : K_(K), M_(M), shifted_(unionPattern(K, M)) {}
+SturmCounter::SturmCounter(const SparseMatrix& K, const SparseMatrix& M,
+                           std::span<const int> nodeOfRow)
+    : K_(K), M_(M), shifted_(unionPattern(K, M)), nodeOfRow_(nodeOfRow.begin(), nodeOfRow.end()) {}
 
 int SturmCounter::below(double sigma) {
   if (sigma == factorisedAt_) return countThere_;
   fillShifted(K_, M_, sigma, shifted_);
   if (!analysed_) {
-    ldlt_.analyzePattern(shifted_);
+    ldlt_.analyzePattern(shifted_, nodeOfRow_);
     analysed_ = true;
   }
   ldlt_.factorize(shifted_);

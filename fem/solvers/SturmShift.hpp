@@ -15,7 +15,8 @@ namespace beamrotor {
 class SturmCounter {
  public:
   /// K, M symmetric with M positive definite on the free dofs; both must outlive this.
-  SturmCounter(const SparseMatrix& K, const SparseMatrix& M);
+  /// `nodeOfRow` (optional) names each row's node, for the factor's ordering (SparseLDLT).
+  SturmCounter(const SparseMatrix& K, const SparseMatrix& M, std::span<const int> nodeOfRow = {});
   /// Number of eigenvalues below sigma; -1 when K - sigma M is singular to working precision.
   /// The sigma of the last count again costs nothing (its factor is still held).
   int below(double sigma);
@@ -32,6 +33,7 @@ class SturmCounter {
   /// are refilled in place for every sigma (no allocation per count).
   SparseMatrix shifted_;
   SparseLDLT ldlt_;
+  std::vector<int> nodeOfRow_;
   bool analysed_ = false;
   int factorisations_ = 0;
   double factorisedAt_ = std::numeric_limits<double>::quiet_NaN();  ///< sigma of ldlt_

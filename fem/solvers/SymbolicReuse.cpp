@@ -2,15 +2,16 @@
 
 namespace beamrotor {
 
-LinearSolver& SymbolicReuse::analysedFor(const SparseMatrix& A, MatrixSymmetry symmetry) {
-  const bool symmetric =
-      symmetry == MatrixSymmetry::byConstruction || isNumericallySymmetric(A);
+LinearSolver& SymbolicReuse::analysedFor(const SparseMatrix& A, MatrixSymmetry symmetry,
+                                         std::span<const int> nodeOfRow) {
+  const bool symmetric = symmetry == MatrixSymmetry::byConstruction || isNumericallySymmetric(A);
   if (reusable_ && symmetric && A.rows() == A.cols() && pattern_.matches(A)) {
     ++reuses_;
     return solver_;
   }
   // The scan above has been done: the solver need not repeat it.
-  solver_.analyzePattern(A, symmetric ? MatrixSymmetry::byConstruction : MatrixSymmetry::unknown);
+  solver_.analyzePattern(A, symmetric ? MatrixSymmetry::byConstruction : MatrixSymmetry::unknown,
+                         nodeOfRow);
   ++analyses_;
   reusable_ = symmetric && A.isCompressed();
   if (reusable_) pattern_.keep(A);

@@ -20,9 +20,11 @@ class SymbolicReuse {
   /// symmetric matrix analysed here, else the kept one analysed anew for A. Either way the
   /// caller goes on with factorize(A). The reference stays valid for this object's lifetime;
   /// one caller at a time (the next call may analyse it again).
-  /// `symmetry` as LinearSolver::analyzePattern takes it (byConstruction skips the scan).
+  /// `symmetry` and `nodeOfRow` as LinearSolver::analyzePattern takes them (byConstruction
+  /// skips the scan).
   LinearSolver& analysedFor(const SparseMatrix& A,
-                            MatrixSymmetry symmetry = MatrixSymmetry::unknown);
+                            MatrixSymmetry symmetry = MatrixSymmetry::unknown,
+                            std::span<const int> nodeOfRow = {});
 
   /// Analyses done and analyses saved so far.
   long long analyses() const { return analyses_; }

@@ -249,11 +249,11 @@ LanczosRun lanczos(const SparseMatrix& M, const MassFactor* massFactor, const Sh
   Eigen::VectorXd resid = fixedStart(n, kStartSeed);
   std::vector<double> v(std::size_t(n) * ncv), workd(3 * std::size_t(n)), workl(lworkl);
   std::array<a_int, 11> iparam{}, ipntr{};
-  iparam[0] = 1;                   // exact shifts
-  iparam[2] = kMaxRestarts;        // maximum Arnoldi restarts
-  iparam[6] = standard ? 1 : 3;    // mode 1 on the symmetric operator, or 3: shift-invert
-  a_int ido = 0, info = 1;  // start from resid (ARPACK's own start would vary from run to run)
-  const double tol = 0.0;  // machine precision
+  iparam[0] = 1;                 // exact shifts
+  iparam[2] = kMaxRestarts;      // maximum Arnoldi restarts
+  iparam[6] = standard ? 1 : 3;  // mode 1 on the symmetric operator, or 3: shift-invert
+  a_int ido = 0, info = 1;       // start from resid (ARPACK's own start would vary from run to run)
+  const double tol = 0.0;        // machine precision
   Eigen::VectorXd y(n), solution(n);
   // The complement of the locked X: z -= B (C' z), with B = X and C = M X (X' M z = (M X)' z),
   // or, in standard form, where the vectors are G' x, B = C = G' X.
@@ -316,8 +316,8 @@ LanczosRun lanczos(const SparseMatrix& M, const MassFactor* massFactor, const Sh
   Eigen::VectorXd d(nev);
   Eigen::MatrixXd z(n, nev);
   arpack::seupd(1, arpack::howmny::ritz_vectors, select.data(), d.data(), z.data(), n, op.shift,
-                form, n, arpack::which::largest_magnitude, nev, tol, resid.data(), ncv, v.data(),
-                n, iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl, info);
+                form, n, arpack::which::largest_magnitude, nev, tol, resid.data(), ncv, v.data(), n,
+                iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl, info);
   if (info != 0)
     throw SolveError("modal analysis: ARPACK dseupd failed with info = " + std::to_string(info));
   if (standard) {
@@ -353,7 +353,8 @@ bool densePathSuits(int n, int count) {
 }
 
 /// The pencil taken whole: a dense solve or shift-invert Lanczos.
-EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count, double sigma) {
+EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count, double sigma,
+                           std::span<const int> nodeOfRow) {
   const int n = int(K.rows());
   if (densePathSuits(n, count)) {
     EigenPairs dense = denseEigenpairs(K, M, count, sigma);
@@ -377,7 +378,7 @@ EigenPairs wholeEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int cou
   }
   const SparseMatrix& massNonzeros = holdsZeros ? pruned : M;
   std::unique_ptr<MassFactor> massFactor;
-  SturmCounter counter(K, M);
+  SturmCounter counter(K, M, nodeOfRow);
   int belowSigma = 0;
   std::optional<ShiftedInverse> shifted;
   runTogether(
@@ -442,8 +443,9 @@ void appendBlockPairs(const EigenPairs& pairs, const std::vector<int>& dofs, Eig
 /// count is not taken on an eigenvalue equal to the farthest one found in another block (two
 /// equal bending planes), where K - tau M is singular: such an equal one is counted instead,
 /// and costs one more mode of the rest.
-int countWithin(const SparseMatrix& K, const SparseMatrix& M, double sigma, double reach) {
-  SturmCounter counter(K, M);
+int countWithin(const SparseMatrix& K, const SparseMatrix& M, double sigma, double reach,
+                std::span<const int> nodeOfRow) {
+  SturmCounter counter(K, M, nodeOfRow);
   const double widened = reach + 1e-9 * (reach + std::abs(sigma));
   const int above = counter.below(sigma + widened), below = counter.below(sigma - widened);
   return above < 0 || below < 0 ? -1 : above - below;
@@ -452,10 +454,10 @@ int countWithin(const SparseMatrix& K, const SparseMatrix& M, double sigma, doub
 }  // namespace
 
 EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count,
-                               double sigma) {
+                               double sigma, std::span<const int> nodeOfRow) {
   const int n = int(K.rows());
   if (count <= 0 || n == 0) return {};
-  if (densePathSuits(n, count)) return wholeEigenpairs(K, M, count, sigma);
+  if (densePathSuits(n, count)) return wholeEigenpairs(K, M, count, sigma, nodeOfRow);
   // Blocks that do not couple are solved apart (fem/solvers/DecoupledBlocks): Lanczos on the
   // largest, where a structure's lowest modes usually all lie, and the rest only when Sturm
   // counts find eigenvalues of it nearer sigma than the farthest the largest gave. Each
@@ -465,22 +467,31 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
   const LargestBlock split = largestBlock(K, M);
   if (split.rest.empty() || int(split.dofs.size()) <= kDenseLimit ||
       2 * count > int(split.dofs.size()))
-    return wholeEigenpairs(K, M, count, sigma);
+    return wholeEigenpairs(K, M, count, sigma, nodeOfRow);
+  // A block's rows keep their order, so a node's rows stay consecutive in it.
+  const auto nodesOf = [&](const std::vector<int>& rows) {
+    std::vector<int> nodes;
+    if (!nodeOfRow.empty())
+      for (const int row : rows) nodes.push_back(nodeOfRow[std::size_t(row)]);
+    return nodes;
+  };
   EigenPairs all;
   all.vectors.resize(n, 0);
-  appendBlockPairs(wholeEigenpairs(principalSubmatrix(K, split.dofs),
-                                   principalSubmatrix(M, split.dofs), count, sigma),
-                   split.dofs, all);
+  appendBlockPairs(
+      wholeEigenpairs(principalSubmatrix(K, split.dofs), principalSubmatrix(M, split.dofs), count,
+                      sigma, nodesOf(split.dofs)),
+      split.dofs, all);
   const SparseMatrix restK = principalSubmatrix(K, split.rest);
   const SparseMatrix restM = principalSubmatrix(M, split.rest);
+  const std::vector<int> restNodes = nodesOf(split.rest);
   int wanted = count;
   if (all.values.size() == count) {
     const double reach = (all.values.array() - sigma).abs().maxCoeff();
-    const int within = countWithin(restK, restM, sigma, reach);
+    const int within = countWithin(restK, restM, sigma, reach, restNodes);
     if (within >= 0) wanted = std::min(count, within);
   }
   if (wanted > 0)
-    appendBlockPairs(symmetricEigenpairs(restK, restM, wanted, sigma), split.rest, all);
+    appendBlockPairs(symmetricEigenpairs(restK, restM, wanted, sigma, restNodes), split.rest, all);
   EigenPairs out = nearest(all.values, all.vectors, count, sigma);
   out.factorEntries = all.factorEntries;
   out.shiftUsed = all.shiftUsed;

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <span>
 
 #include "fem/assembly/Assembly.hpp"
 
@@ -33,8 +34,9 @@ int lanczosBasisSize(int count);
 /// The `count` eigenpairs nearest sigma (for sigma below the spectrum: the lowest ones).
 /// K symmetric, M symmetric positive semi-definite. Throws SolveError when K - sigma M is
 /// singular (sigma equals an eigenvalue, e.g. sigma = 0 with rigid-body modes) or when ARPACK
-/// does not converge.
+/// does not converge. `nodeOfRow` (optional) names each row's node, rows of a node
+/// consecutive, for the factors' fill-reducing order (fem/solvers/NodeOrdering).
 EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int count,
-                               double sigma);
+                               double sigma, std::span<const int> nodeOfRow = {});
 
 }  // namespace beamrotor

@@ -39,6 +39,54 @@ SymmetricBand holdDofs(const SymmetricBand& K, const std::vector<HeldDof>& held)
   return A;
 }
 
+/// Calls visit(i, r_i, (|A| |x|)_i) for every row i of A x = b, r = b - A x with each row's
+/// sum kept in extended precision in a register (long double products of the double entries;
+/// no full-length extended-precision vector is stored). forRow(i, visit) calls visit(j, A_ij)
+/// for the entries of row i. Rows are split over the cores; each row's sum keeps its order.
+template <class ForRow, class Visit>
+void forResidualRows(ForRow&& forRow, const Eigen::VectorXd& b,
+                     const Eigen::Ref<const Eigen::VectorXd>& x, Visit&& visit) {
+  forEvenParts(int(b.size()), [&](int first, int end) {
+    for (int i = first; i < end; ++i) {
+      long double r = b[i];
+      double magnitude = 0;
+      forRow(i, [&](int j, double a) {
+        r -= static_cast<long double>(a) * x[j];
+        magnitude += std::abs(a * x[j]);
+      });
+      visit(i, r, magnitude);
+    }
+  });
+}
+
+/// Row access to a sparse A for forResidualRows: row i of A is column i of A' (of A itself
+/// when the solver took it as symmetric, as every assembled pattern is structurally).
+template <class Visit>
+void withSparseRows(const SparseMatrix& A, const LinearSolver& solver, Visit&& visit) {
+  SparseMatrix transposed;
+  if (!solver.symmetric()) transposed = A.transpose();
+  const SparseMatrix& rows = solver.symmetric() ? A : transposed;
+  visit([&](int i, auto&& entry) {
+    for (SparseMatrix::InnerIterator it(rows, i); it; ++it) entry(int(it.index()), it.value());
+  });
+}
+
+/// One step of iterative refinement, x += A^-1 (b - A x), the residual in extended precision
+/// (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., ch. 12). A backward-stable
+/// factor leaves a residual of about eps |L| |D| |L'| |x|, which an ill-conditioned system (a
+/// large flexible frame) turns into an error of many digits and a visible imbalance of
+/// reactions against loads; one step brings the solution to what A's entries resolve. On the
+/// bench's 3D grillage at 10^6 equations (deflections of 3e5 m), the reactions balance the
+/// load to 8e-13 instead of 2e-7 to 5e-7, for one more solve (0.07 s of 3 s).
+void refineOnce(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::Ref<Eigen::VectorXd> x,
+                const LinearSolver& solver) {
+  Eigen::VectorXd residual(b.size());
+  withSparseRows(A, solver, [&](auto&& forRow) {
+    forResidualRows(forRow, b, x, [&](int i, long double r, double) { residual[i] = double(r); });
+  });
+  x += solver.solve(residual);
+}
+
 /// An upper estimate of the relative error of x as a solution of A x = b, measured with one
 /// more solve with the same factor (sizes in the scaled metric sqrt(A_jj) |x_j|, so units do
 /// not matter: largest |error| over largest |x|). Two sources, their right-hand sides added
@@ -56,21 +104,10 @@ SymmetricBand holdDofs(const SymmetricBand& K, const std::vector<HeldDof>& held)
 template <class ForRow, class Solve>
 double measuredError(ForRow&& forRow, Eigen::VectorXd diagonal, const Eigen::VectorXd& b,
                      const Eigen::Ref<const Eigen::VectorXd>& x, Solve&& solve) {
-  const Eigen::Index n = b.size();
-  // Each residual entry is one sum over a row, kept in extended precision in a register, with
-  // (|A| |x|)_i beside it, and no full-length extended-precision vector is stored.
   const double eps = std::numeric_limits<double>::epsilon();
-  Eigen::VectorXd perturbation(n);
-  forEvenParts(int(n), [&](int first, int end) {
-    for (int i = first; i < end; ++i) {
-      long double r = b[i];
-      double magnitude = 0;
-      forRow(i, [&](int j, double a) {
-        r -= static_cast<long double>(a) * x[j];
-        magnitude += std::abs(a * x[j]);
-      });
-      perturbation[i] = double(std::abs(r)) + eps * magnitude;
-    }
+  Eigen::VectorXd perturbation(b.size());
+  forResidualRows(forRow, b, x, [&](int i, long double r, double magnitude) {
+    perturbation[i] = double(std::abs(r)) + eps * magnitude;
   });
   // Each vector of the equations' length is 22 MB at 10^6 elements: the perturbation is
   // solved in its own storage, and the weights are made in the diagonal's.
@@ -85,15 +122,12 @@ double measuredError(ForRow&& forRow, Eigen::VectorXd diagonal, const Eigen::Vec
 
 double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b,
                      const Eigen::Ref<const Eigen::VectorXd>& x, const LinearSolver& solver) {
-  // Row i of A is column i of A' (of A itself when the solver took it as symmetric).
-  SparseMatrix transposed;
-  if (!solver.symmetric()) transposed = A.transpose();
-  const SparseMatrix& rows = solver.symmetric() ? A : transposed;
-  const auto forRow = [&](int i, auto&& visit) {
-    for (SparseMatrix::InnerIterator it(rows, i); it; ++it) visit(int(it.index()), it.value());
-  };
-  return measuredError(forRow, A.diagonal(), b, x,
-                       [&](const Eigen::VectorXd& r) { return solver.solve(r); });
+  double error = 0;
+  withSparseRows(A, solver, [&](auto&& forRow) {
+    error = measuredError(forRow, A.diagonal(), b, x,
+                          [&](const Eigen::VectorXd& r) { return solver.solve(r); });
+  });
+  return error;
 }
 
 double measuredError(const SymmetricBand& A, const Eigen::VectorXd& b,
@@ -193,10 +227,11 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
     if (!analysed_) {
       // Held dofs clear rows and columns alike: K's symmetry is the held matrix's.
+      const std::vector<int> nodeOfRow = dofs_.freeNodes();
       if (reuse_)
-        solver_ = &reuse_->analysedFor(A, symmetry_);
+        solver_ = &reuse_->analysedFor(A, symmetry_, nodeOfRow);
       else
-        solver_->analyzePattern(A, symmetry_);
+        solver_->analyzePattern(A, symmetry_, nodeOfRow);
       analysed_ = true;
       solverName_ = solver_->methodName() + ", " + solver_->orderingName() + " ordering";
     }
@@ -231,8 +266,10 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     bandFactor_.solveInPlace(u.head(nf));
     roundOff_ = measuredError(held.empty() ? bandK_ : heldBand, b, u.head(nf), bandFactor_);
   } else {
+    const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
     u.head(nf) = solver_->solve(b);
-    roundOff_ = measuredError(held.empty() ? K_ : heldMatrix, b, u.head(nf), *solver_);
+    refineOnce(A, b, u.head(nf), *solver_);
+    roundOff_ = measuredError(A, b, u.head(nf), *solver_);
   }
   if (!u.allFinite() || !std::isfinite(roundOff_)) {
     requireHeld();

@@ -173,9 +173,13 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
                                               : Eigen::Vector3d(R.row(2).transpose()));
       char value[32];
       std::snprintf(value, sizeof value, "%.3g", top.value * 1e-3);
+      // A peak in the right third of the frame is labelled leftwards, into the chart: equal
+      // peaks (a symmetric frame's) may land on a member's right end, at the canvas' edge.
+      const bool rightmost = tip.x() > low.x() + (high.x() - low.x()) * 2 / 3;
       labels += "  set label " +
                 gnuplotText((planar ? "" : std::string(componentName(k)) + " ") + value) +
-                " at " + placeText(tip) + " offset 0.4,0.4 textcolor " +
+                " at " + placeText(tip) +
+                (rightmost ? " right offset -0.4,0.4" : " offset 0.4,0.4") + " textcolor " +
                 colour(c + 1).substr(std::string("linecolor ").size()) + "\n";
     }
   }
