@@ -30,21 +30,16 @@ class DofSets {
   std::vector<int> parent_, size_;
 };
 
-void joinCoupled(const SparseMatrix& A, DofSets& sets) {
+/// Joins the dofs of every nonzero entry of A, or of every stored one (`stored`).
+void joinCoupled(const SparseMatrix& A, DofSets& sets, bool stored = false) {
   for (int col = 0; col < int(A.outerSize()); ++col)
     for (SparseMatrix::InnerIterator it(A, col); it; ++it)
-      if (it.value() != 0) sets.join(int(it.row()), col);
+      if (stored || it.value() != 0) sets.join(int(it.row()), col);
 }
 
-}  // namespace
-
-LargestBlock largestBlock(const SparseMatrix& K, const SparseMatrix& M) {
-  const int n = int(K.rows());
+/// The largest of the sets and the rest, each ascending.
+LargestBlock largestOf(DofSets& sets, int n) {
   LargestBlock out;
-  if (n == 0) return out;
-  DofSets sets(n);
-  joinCoupled(K, sets);
-  joinCoupled(M, sets);
   int largest = 0;
   for (int i = 1; i < n; ++i)
     if (sets.size(i) > sets.size(largest)) largest = i;
@@ -53,6 +48,25 @@ LargestBlock largestBlock(const SparseMatrix& K, const SparseMatrix& M) {
   out.rest.reserve(n - sets.size(root));
   for (int i = 0; i < n; ++i) (sets.root(i) == root ? out.dofs : out.rest).push_back(i);
   return out;
+}
+
+}  // namespace
+
+LargestBlock largestBlock(const SparseMatrix& K, const SparseMatrix& M) {
+  const int n = int(K.rows());
+  if (n == 0) return {};
+  DofSets sets(n);
+  joinCoupled(K, sets);
+  joinCoupled(M, sets);
+  return largestOf(sets, n);
+}
+
+LargestBlock largestBlockOfPattern(const SparseMatrix& A) {
+  const int n = int(A.rows());
+  if (n == 0) return {};
+  DofSets sets(n);
+  joinCoupled(A, sets, true);
+  return largestOf(sets, n);
 }
 
 SparseMatrix principalSubmatrix(const SparseMatrix& A, const std::vector<int>& dofs) {

@@ -21,6 +21,10 @@ struct LargestBlock {
 /// K, M square, of the same size, compressed by columns.
 LargestBlock largestBlock(const SparseMatrix& K, const SparseMatrix& M);
 
+/// The same for one matrix's pattern: every stored entry couples, whatever its value, so the
+/// blocks hold for every matrix of that pattern (a held dof's cleared row and column too).
+LargestBlock largestBlockOfPattern(const SparseMatrix& A);
+
 /// A(dofs, dofs) for ascending dofs: the rows and columns kept, in their order.
 SparseMatrix principalSubmatrix(const SparseMatrix& A, const std::vector<int>& dofs);
 

@@ -6,8 +6,10 @@
 #pragma once
 
 #include <Eigen/CholmodSupport>
+#include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fem/assembly/Assembly.hpp"
@@ -37,6 +39,9 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   /// units (and of any diagonal scaling) of the dofs; 0 when singular or when a diagonal
   /// entry of A is not positive (a dof nothing holds).
   double scaledRcond() const;
+  /// The smallest and largest |pivot| of that scaled matrix ({0, 0} when scaledRcond() is 0):
+  /// the range of a factor made of several, whose estimate is the least over the most.
+  std::pair<double, double> scaledPivotRange() const;
   /// Entries in the factor L (including its unit diagonal, which holds D).
   double factorEntries() const;
   /// The same, as the symbolic analysis predicts it (before factorize()).
@@ -116,7 +121,24 @@ class LinearSolver {
   double factorEntries() const;
 
  private:
+  /// A symmetric matrix whose pattern falls into two large blocks that no entry couples (a
+  /// flat grillage: in-plane and out-of-plane; fem/solvers/DecoupledBlocks) is factorised as
+  /// two systems, on two cores at once: each block's factor is the one the whole matrix would
+  /// have in an order that keeps the blocks apart, so the answers are those of one factor.
+  struct Block {
+    std::vector<int> rows;  ///< ascending
+    SparseMatrix A;         ///< the matrix's block
+    std::unique_ptr<SparseLDLT> ldlt = std::make_unique<SparseLDLT>();
+  };
+  bool splitIfDecoupled(const SparseMatrix& A, std::span<const int> nodeOfRow);
+  /// work(block) for both blocks, at the same time when there are cores for it.
+  template <class Work>
+  void forEachBlock(Work&& work);
+  template <class Work>
+  void forEachBlock(Work&& work) const;
+
   bool symmetric_ = false;
+  std::vector<Block> blocks_;  ///< two when split, else empty (ldlt_ holds the factor)
   SparseLDLT ldlt_;
   SparseLU lu_;
   Eigen::VectorXd luScale_;  ///< S of the scaled non-symmetric matrix
