@@ -30,6 +30,21 @@ SparseMatrix planarBenchStiffness(int elements) {
   return SparseAssembler(*bench.model, dofs).assemble(MatrixKind::stiffness);
 }
 
+/// The stiffness of the bench grillage with `bays` bays, without its exact zeros, and the node
+/// of each of its equations.
+struct Grillage {
+  SparseMatrix K;
+  std::vector<int> nodes;
+};
+Grillage grillageStiffness(int bays) {
+  const GridBenchModel grid = gridBenchModel(bays);
+  const DofMap dofs(*grid.model);
+  Grillage out{SparseAssembler(*grid.model, dofs).assemble(MatrixKind::stiffness),
+               dofs.freeNodes()};
+  dropExactZeros(out.K);
+  return out;
+}
+
 }  // namespace
 
 TEST_SUITE("linear solver") {
@@ -135,11 +150,9 @@ TEST_SUITE("linear solver") {
     // Without exact zeros a node's equations no longer share their neighbours (a member along x
     // couples torsion with torsion only), so AMD on equations orders each apart; on the graph
     // of nodes it eliminates them together.
-    const GridBenchModel grid = gridBenchModel(20);
-    const DofMap dofs(*grid.model);
-    SparseMatrix K = SparseAssembler(*grid.model, dofs).assemble(MatrixKind::stiffness);
-    dropExactZeros(K);
-    const std::vector<int> nodes = dofs.freeNodes();
+    const Grillage grillage = grillageStiffness(20);
+    const SparseMatrix& K = grillage.K;
+    const std::vector<int>& nodes = grillage.nodes;
     const std::vector<int> order = nodeByNodeOrdering(K, nodes);
     REQUIRE(order.size() == std::size_t(K.rows()));
     std::vector<int> seen(order.size(), 0);
@@ -188,11 +201,9 @@ TEST_SUITE("linear solver") {
 
   TEST_CASE("a grillage whose pattern splits in two is factorised as two blocks, same answers") {
     // 40 bays: 67206 equations, in-plane and out-of-plane halves that no entry couples.
-    const GridBenchModel grid = gridBenchModel(40);
-    const DofMap dofs(*grid.model);
-    SparseMatrix K = SparseAssembler(*grid.model, dofs).assemble(MatrixKind::stiffness);
-    dropExactZeros(K);
-    const std::vector<int> nodes = dofs.freeNodes();
+    const Grillage grillage = grillageStiffness(40);
+    const SparseMatrix& K = grillage.K;
+    const std::vector<int>& nodes = grillage.nodes;
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 2.0);
     // A second method: one factor of the whole matrix.
     SparseLDLT whole;
