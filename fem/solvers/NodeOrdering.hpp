@@ -6,9 +6,9 @@
 // equations of one node are not once K's exact zeros are dropped (a member along x couples
 // torsion only with torsion, bending only with bending), so on equations it orders up to six
 // times the vertices, one by one. On nodes it orders a sixth of them and eliminates a node's
-// equations together, which is what a good order does anyway: on the 3D grillage of the bench
-// (10^6 equations) the order costs about a quarter of the time and the factorisation needs a
-// fifth fewer operations (see README, issue 21).
+// equations together, which is what a good order does anyway. On the 3D grillage of the bench
+// (10^6 equations) the order and analysis take a quarter to a half of the time, and the
+// factorisation a fifth fewer operations (see README, issue 21).
 #pragma once
 
 #include <span>
