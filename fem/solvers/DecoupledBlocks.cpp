@@ -69,6 +69,14 @@ LargestBlock largestBlockOfPattern(const SparseMatrix& A) {
   return largestOf(sets, n);
 }
 
+std::vector<int> entriesAt(std::span<const int> values, const std::vector<int>& rows) {
+  std::vector<int> out;
+  if (values.empty()) return out;
+  out.reserve(rows.size());
+  for (const int row : rows) out.push_back(values[std::size_t(row)]);
+  return out;
+}
+
 SparseMatrix principalSubmatrix(const SparseMatrix& A, const std::vector<int>& dofs) {
   std::vector<int> position(A.rows(), -1);
   for (int k = 0; k < int(dofs.size()); ++k) position[dofs[k]] = k;

@@ -6,6 +6,7 @@
 // the blocks, each eigenvector zero outside its block.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "fem/assembly/Assembly.hpp"
@@ -24,6 +25,10 @@ LargestBlock largestBlock(const SparseMatrix& K, const SparseMatrix& M);
 /// The same for one matrix's pattern: every stored entry couples, whatever its value, so the
 /// blocks hold for every matrix of that pattern (a held dof's cleared row and column too).
 LargestBlock largestBlockOfPattern(const SparseMatrix& A);
+
+/// values[row] for each of `rows`: a block's share of a list kept per row (the node of each
+/// equation); empty when `values` is. Ascending rows keep a node's rows consecutive.
+std::vector<int> entriesAt(std::span<const int> values, const std::vector<int>& rows);
 
 /// A(dofs, dofs) for ascending dofs: the rows and columns kept, in their order.
 SparseMatrix principalSubmatrix(const SparseMatrix& A, const std::vector<int>& dofs);

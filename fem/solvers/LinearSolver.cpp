@@ -200,19 +200,18 @@ bool isNumericallySymmetric(const SparseMatrix& A, double relTol) {
   return true;
 }
 
-template <class Work>
-void LinearSolver::forEachBlock(Work&& work) {
+namespace {
+
+/// work(block) for both of LinearSolver's blocks (const or not), at the same time when there
+/// are cores for it.
+template <class Blocks, class Work>
+void forBothBlocks(Blocks& blocks, Work&& work) {
   runTogether(
-      blocks_[0].rows.size() + blocks_[1].rows.size(), [&] { work(blocks_[0]); },
-      [&] { work(blocks_[1]); });
+      blocks[0].rows.size() + blocks[1].rows.size(), [&] { work(blocks[0]); },
+      [&] { work(blocks[1]); });
 }
 
-template <class Work>
-void LinearSolver::forEachBlock(Work&& work) const {
-  runTogether(
-      blocks_[0].rows.size() + blocks_[1].rows.size(), [&] { work(blocks_[0]); },
-      [&] { work(blocks_[1]); });
-}
+}  // namespace
 
 bool LinearSolver::splitIfDecoupled(const SparseMatrix& A, std::span<const int> nodeOfRow) {
   // Below ~5e4 equations a factorisation takes milliseconds, less than splitting it; a second
@@ -226,13 +225,9 @@ bool LinearSolver::splitIfDecoupled(const SparseMatrix& A, std::span<const int> 
   blocks_.resize(2);
   blocks_[0].rows = std::move(split.dofs);
   blocks_[1].rows = std::move(split.rest);
-  forEachBlock([&](Block& b) {
+  forBothBlocks(blocks_, [&](Block& b) {
     b.A = principalSubmatrix(A, b.rows);
-    // A block's rows keep their order, so a node's rows stay consecutive in it.
-    std::vector<int> nodes;
-    if (!nodeOfRow.empty())
-      for (const int row : b.rows) nodes.push_back(nodeOfRow[std::size_t(row)]);
-    b.ldlt->analyzePattern(b.A, nodes);
+    b.ldlt->analyzePattern(b.A, entriesAt(nodeOfRow, b.rows));
   });
   return true;
 }
@@ -250,7 +245,7 @@ void LinearSolver::analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry
 
 void LinearSolver::factorize(const SparseMatrix& A) {
   if (!blocks_.empty()) {
-    forEachBlock([&](Block& b) {
+    forBothBlocks(blocks_, [&](Block& b) {
       b.A = principalSubmatrix(A, b.rows);  // the same pattern, so nothing couples the blocks
       b.ldlt->factorize(b.A);
     });
@@ -272,7 +267,7 @@ void LinearSolver::factorize(const SparseMatrix& A) {
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
   if (!blocks_.empty()) {
     Eigen::VectorXd x(b.size());
-    forEachBlock([&](const Block& block) {
+    forBothBlocks(blocks_, [&](const Block& block) {
       Eigen::VectorXd blockB(Eigen::Index(block.rows.size())), blockX;
       for (std::size_t k = 0; k < block.rows.size(); ++k)
         blockB[Eigen::Index(k)] = b[block.rows[k]];
@@ -314,10 +309,12 @@ double LinearSolver::rcond() const {
 }
 
 bool LinearSolver::healthy(double tol) const {
-  bool factorised = symmetric_ ? ldlt_.info() == Eigen::Success : lu_.info() == Eigen::Success;
-  if (!blocks_.empty())
-    factorised = std::all_of(blocks_.begin(), blocks_.end(),
-                             [](const Block& b) { return b.ldlt->info() == Eigen::Success; });
+  const bool factorised =
+      !blocks_.empty()
+          ? std::all_of(blocks_.begin(), blocks_.end(),
+                        [](const Block& b) { return b.ldlt->info() == Eigen::Success; })
+      : symmetric_ ? ldlt_.info() == Eigen::Success
+                   : lu_.info() == Eigen::Success;
   return factorised && rcond() > tol;
 }
 

@@ -131,11 +131,6 @@ class LinearSolver {
     std::unique_ptr<SparseLDLT> ldlt = std::make_unique<SparseLDLT>();
   };
   bool splitIfDecoupled(const SparseMatrix& A, std::span<const int> nodeOfRow);
-  /// work(block) for both blocks, at the same time when there are cores for it.
-  template <class Work>
-  void forEachBlock(Work&& work);
-  template <class Work>
-  void forEachBlock(Work&& work) const;
 
   bool symmetric_ = false;
   std::vector<Block> blocks_;  ///< two when split, else empty (ldlt_ holds the factor)

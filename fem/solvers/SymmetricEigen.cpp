@@ -468,22 +468,15 @@ EigenPairs symmetricEigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
   if (split.rest.empty() || int(split.dofs.size()) <= kDenseLimit ||
       2 * count > int(split.dofs.size()))
     return wholeEigenpairs(K, M, count, sigma, nodeOfRow);
-  // A block's rows keep their order, so a node's rows stay consecutive in it.
-  const auto nodesOf = [&](const std::vector<int>& rows) {
-    std::vector<int> nodes;
-    if (!nodeOfRow.empty())
-      for (const int row : rows) nodes.push_back(nodeOfRow[std::size_t(row)]);
-    return nodes;
-  };
   EigenPairs all;
   all.vectors.resize(n, 0);
   appendBlockPairs(
       wholeEigenpairs(principalSubmatrix(K, split.dofs), principalSubmatrix(M, split.dofs), count,
-                      sigma, nodesOf(split.dofs)),
+                      sigma, entriesAt(nodeOfRow, split.dofs)),
       split.dofs, all);
   const SparseMatrix restK = principalSubmatrix(K, split.rest);
   const SparseMatrix restM = principalSubmatrix(M, split.rest);
-  const std::vector<int> restNodes = nodesOf(split.rest);
+  const std::vector<int> restNodes = entriesAt(nodeOfRow, split.rest);
   int wanted = count;
   if (all.values.size() == count) {
     const double reach = (all.values.array() - sigma).abs().maxCoeff();

@@ -59,18 +59,6 @@ void forResidualRows(ForRow&& forRow, const Eigen::VectorXd& b,
   });
 }
 
-/// Row access to a sparse A for forResidualRows: row i of A is column i of A' (of A itself
-/// when the solver took it as symmetric, as every assembled pattern is structurally).
-template <class Visit>
-void withSparseRows(const SparseMatrix& A, const LinearSolver& solver, Visit&& visit) {
-  SparseMatrix transposed;
-  if (!solver.symmetric()) transposed = A.transpose();
-  const SparseMatrix& rows = solver.symmetric() ? A : transposed;
-  visit([&](int i, auto&& entry) {
-    for (SparseMatrix::InnerIterator it(rows, i); it; ++it) entry(int(it.index()), it.value());
-  });
-}
-
 /// One step of iterative refinement, x += A^-1 (b - A x), the residual in extended precision
 /// (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., ch. 12). A backward-stable
 /// factor leaves a residual of about eps |L| |D| |L'| |x|, which an ill-conditioned system (a
@@ -78,13 +66,13 @@ void withSparseRows(const SparseMatrix& A, const LinearSolver& solver, Visit&& v
 /// reactions against loads; one step brings the solution to what A's entries resolve. On the
 /// bench's 3D grillage at 10^6 equations (deflections of 3e5 m), the reactions balance the
 /// load to 8e-13 instead of 2e-7 to 5e-7, for one more solve (0.07 s of 3 s).
-void refineOnce(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::Ref<Eigen::VectorXd> x,
-                const LinearSolver& solver) {
+/// forRow as forResidualRows takes it; solve(r) returns A^-1 r.
+template <class ForRow, class Solve>
+void refineOnce(ForRow&& forRow, const Eigen::VectorXd& b, Eigen::Ref<Eigen::VectorXd> x,
+                Solve&& solve) {
   Eigen::VectorXd residual(b.size());
-  withSparseRows(A, solver, [&](auto&& forRow) {
-    forResidualRows(forRow, b, x, [&](int i, long double r, double) { residual[i] = double(r); });
-  });
-  x += solver.solve(residual);
+  forResidualRows(forRow, b, x, [&](int i, long double r, double) { residual[i] = double(r); });
+  x += solve(residual);
 }
 
 /// An upper estimate of the relative error of x as a solution of A x = b, measured with one
@@ -120,14 +108,20 @@ double measuredError(ForRow&& forRow, Eigen::VectorXd diagonal, const Eigen::Vec
   return size > 0 ? error / size : (error > 0 ? std::numeric_limits<double>::infinity() : 0.0);
 }
 
-double measuredError(const SparseMatrix& A, const Eigen::VectorXd& b,
-                     const Eigen::Ref<const Eigen::VectorXd>& x, const LinearSolver& solver) {
-  double error = 0;
-  withSparseRows(A, solver, [&](auto&& forRow) {
-    error = measuredError(forRow, A.diagonal(), b, x,
-                          [&](const Eigen::VectorXd& r) { return solver.solve(r); });
-  });
-  return error;
+/// x refined once (refineOnce), then its measured error (measuredError), for a sparse A
+/// factorised by `solver`.
+double refineAndMeasure(const SparseMatrix& A, const Eigen::VectorXd& b,
+                        Eigen::Ref<Eigen::VectorXd> x, const LinearSolver& solver) {
+  // Row i of A is column i of A' (of A itself when the solver took it as symmetric).
+  SparseMatrix transposed;
+  if (!solver.symmetric()) transposed = A.transpose();
+  const SparseMatrix& rows = solver.symmetric() ? A : transposed;
+  const auto forRow = [&](int i, auto&& visit) {
+    for (SparseMatrix::InnerIterator it(rows, i); it; ++it) visit(int(it.index()), it.value());
+  };
+  const auto solve = [&](const Eigen::VectorXd& r) { return solver.solve(r); };
+  refineOnce(forRow, b, x, solve);
+  return measuredError(forRow, A.diagonal(), b, x, solve);
 }
 
 double measuredError(const SymmetricBand& A, const Eigen::VectorXd& b,
@@ -266,10 +260,8 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     bandFactor_.solveInPlace(u.head(nf));
     roundOff_ = measuredError(held.empty() ? bandK_ : heldBand, b, u.head(nf), bandFactor_);
   } else {
-    const SparseMatrix& A = held.empty() ? K_ : heldMatrix;
     u.head(nf) = solver_->solve(b);
-    refineOnce(A, b, u.head(nf), *solver_);
-    roundOff_ = measuredError(A, b, u.head(nf), *solver_);
+    roundOff_ = refineAndMeasure(held.empty() ? K_ : heldMatrix, b, u.head(nf), *solver_);
   }
   if (!u.allFinite() || !std::isfinite(roundOff_)) {
     requireHeld();
