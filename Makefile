@@ -16,7 +16,7 @@ VTK_EXTRAS := $(if $(filter paraview-dev,$(VTK_PACKAGE)),xvfb xauth)
 PACKAGES := cmake g++ make libopenmpi-dev openmpi-bin libeigen3-dev libsuitesparse-dev libarpack2-dev $(VTK_PACKAGE) $(VTK_EXTRAS) \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
             gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest \
-            dpkg-dev file libpng-dev libopenblas0-serial
+            dpkg-dev file libpng-dev libopenblas0-pthread
 BUILD    := build
 JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml

@@ -2,6 +2,7 @@
 // `--version`. Everything lives in problems/cli; this only connects it to the process.
 #include <iostream>
 
+#include "fem/solvers/BlasThreads.hpp"
 #include "fem/solvers/HeapReserve.hpp"
 #include "problems/cli/App.hpp"
 #include "problems/cli/HugePages.hpp"
@@ -10,6 +11,7 @@
 int main(int argc, char** argv) {
   beamrotor::cli::restartWithHugePages(argv);
   beamrotor::keepFreedMemory();
+  beamrotor::useOneBlasThreadPerCall();
   const int code = beamrotor::cli::runCommandLine(argc, argv, std::cout, std::cerr);
   // Interrupted while writing: the temporary directory is gone; now end as the signal asked.
   std::cout.flush();

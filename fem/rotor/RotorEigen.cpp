@@ -9,6 +9,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "fem/solvers/ArpackTurn.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/RotorFactor.hpp"
 #include "fem/solvers/StartVector.hpp"
@@ -224,6 +225,7 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
   // and then with a larger basis: each gives a different H; the answers are ARPACK's
   // converged Ritz pairs either way.
   const bool warm = start.size() == N && start.norm() > 0;
+  const ArpackTurn turn;  // from the first dnaupd to dneupd (or znaupd to zneupd)
   for (int attempt = 0; attempt < 3; ++attempt) {
     if (attempt == 2) ncv = std::min<a_int>(N, 2 * ncv);
     lworkl = isReal ? 3 * ncv * ncv + 6 * ncv : 3 * ncv * ncv + 5 * ncv;

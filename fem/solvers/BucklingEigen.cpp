@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/solvers/ArpackTurn.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/LinearSolver.hpp"
 #include "fem/solvers/StartVector.hpp"
@@ -90,6 +91,7 @@ BucklingPairs lanczosBuckling(const SparseMatrix& K, const SparseMatrix& KG, int
   a_int ido = 0, info = 1;  // start from resid (ARPACK's own start would vary from run to run)
   const double tol = 0.0;
   Eigen::VectorXd y(n);
+  const ArpackTurn turn;  // from the first dsaupd to dseupd
   while (true) {
     arpack::saupd(ido, arpack::bmat::generalized, n, which, nev, tol, resid.data(), ncv, v.data(),
                   n, iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl, info);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "fem/assembly/ParallelParts.hpp"
+#include "fem/solvers/ArpackTurn.hpp"
 #include "fem/solvers/DecoupledBlocks.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/MassFactor.hpp"
@@ -255,6 +256,7 @@ LanczosRun lanczos(const SparseMatrix& M, const MassFactor* massFactor, const Sh
   a_int ido = 0, info = 1;       // start from resid (ARPACK's own start would vary from run to run)
   const double tol = 0.0;        // machine precision
   Eigen::VectorXd y(n), solution(n);
+  const ArpackTurn turn;  // from the first dsaupd to dseupd
   // The complement of the locked X: z -= B (C' z), with B = X and C = M X (X' M z = (M X)' z),
   // or, in standard form, where the vectors are G' x, B = C = G' X.
   Eigen::MatrixXd lockedBasis(n, locked.cols());

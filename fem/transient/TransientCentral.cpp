@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "fem/solvers/ArpackTurn.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/StartVector.hpp"
 
@@ -43,6 +44,7 @@ double largestEigenvalueLanczos(const SparseMatrix& A) {
   iparam[2] = kMaxRestarts;
   iparam[6] = 1;  // mode 1: A x = lambda x
   a_int ido = 0, info = 1;  // start from resid (ARPACK's own start would vary from run to run)
+  const ArpackTurn turn;    // from the first dsaupd to dseupd
   while (true) {
     arpack::saupd(ido, arpack::bmat::identity, n, arpack::which::largest_algebraic, nev,
                   kLanczosTol, resid.data(), ncv, v.data(), n, iparam.data(), ipntr.data(),

@@ -23,6 +23,7 @@
 #include <variant>
 #include <vector>
 
+#include "fem/solvers/BlasThreads.hpp"
 #include "problems/deck/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/output/Output.hpp"
@@ -72,19 +73,21 @@ std::string tableKey(const std::string& file, const std::string& stem) {
   return key;
 }
 
-/// A table's columns: numbers as NumPy arrays, text as lists of str.
+/// A table's columns: numbers as NumPy arrays; a column holding text as a list, of str and
+/// float (a log decrement is the text "inf" in a row where the damped frequency is zero).
 py::dict columnsOf(const CsvTable& table) {
   py::dict columns;
   for (const CsvColumn& c : table.columns()) {
     try {
       const std::vector<double> values = table.numbers(c.name);
       columns[py::str(c.name)] = py::array_t<double>(py::ssize_t(values.size()), values.data());
-    } catch (const std::invalid_argument&) {  // a text column
-      py::list texts;
+    } catch (const std::invalid_argument&) {  // text in some row
+      py::list cells;
       const int position = table.column(c.name) - 1;
       for (std::size_t r = 0; r < table.rowCount(); ++r)
-        texts.append(std::get<std::string>(table.cell(r, std::size_t(position))));
-      columns[py::str(c.name)] = std::move(texts);
+        std::visit([&](const auto& cell) { cells.append(cell); },
+                   table.cell(r, std::size_t(position)));
+      columns[py::str(c.name)] = std::move(cells);
     }
   }
   return columns;
@@ -258,6 +261,12 @@ PYBIND11_MODULE(beamrotor, m) {
   using namespace beamrotor;
   m.doc() = "beamrotor: finite-element beams, frames and rotors; decks solved from Python";
   m.attr("__version__") = BEAMROTOR_VERSION;
+  // pybind11 finds NumPy's C API on first use, in a function-local static whose initialiser
+  // imports NumPy, and an import can hand the GIL to another thread: two threads making their
+  // first Run at once then deadlocked (one in the import waiting for the GIL, the other holding
+  // the GIL waiting for the static). Made here, while the import of this module holds the GIL.
+  py::array_t<double>(py::ssize_t(0));
+  useOneBlasThreadPerCall();
 
   static py::exception<DeckError> deckError(m, "DeckError", PyExc_ValueError);
   static py::exception<DeckSolveError> solveError(m, "SolveError", PyExc_RuntimeError);

@@ -100,6 +100,35 @@ def test_rotor_campbell_tables():
     assert np.all(np.diff(speeds) > 0)
 
 
+def numbers_of(run):
+    """A run's results and tables without the times it took, tables as plain lists."""
+    def untimed(x):
+        if isinstance(x, dict):
+            return {k: untimed(v) for k, v in x.items() if k not in ("time_s", "seconds")}
+        if isinstance(x, list):
+            return [untimed(v) for v in x]
+        return x
+    tables = {a: {t: {c: list(v) for c, v in cols.items()} for t, cols in ts.items()}
+              for a, ts in run.tables.items()}
+    return untimed(run.results), tables
+
+
+def test_threads_solving_at_once_get_what_one_alone_gets():
+    # solve() lets go of the GIL while a deck solves, so Python threads solve side by side.
+    # The compressor deck runs ARPACK (rotor modes, Campbell, maps) and UMFPACK (fluid-film
+    # bearings, unbalance), which call BLAS. Before ARPACK's runs took turns and BLAS was a
+    # build that may be called from two threads, such pairs crashed the interpreter (a
+    # corrupted heap), deadlocked, or returned other log decrements (-inf, inf) in 1 or 2 of
+    # 6 runs: every run here must equal the lone one to the last bit.
+    from concurrent.futures import ThreadPoolExecutor
+    deck = PROBLEMS / "compressor_rotor.yaml"
+    alone = numbers_of(beamrotor.solve(deck))
+    with ThreadPoolExecutor(2) as pool:
+        side_by_side = list(pool.map(lambda _: numbers_of(beamrotor.solve(deck)), range(6)))
+    for run in side_by_side:
+        assert run == alone
+
+
 def test_bad_input_raises_deck_error_with_its_place(tmp_path):
     deck = tmp_path / "bad.yaml"
     deck.write_text("parameters:\n  L: 1\nsegments:\n  - {length: -L, section: rod, elements: 2}\n")
