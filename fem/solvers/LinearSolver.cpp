@@ -268,12 +268,9 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
   if (!blocks_.empty()) {
     Eigen::VectorXd x(b.size());
     forBothBlocks(blocks_, [&](const Block& block) {
-      Eigen::VectorXd blockB(Eigen::Index(block.rows.size())), blockX;
-      for (std::size_t k = 0; k < block.rows.size(); ++k)
-        blockB[Eigen::Index(k)] = b[block.rows[k]];
-      block.ldlt->solveInto(blockB, blockX);
-      for (std::size_t k = 0; k < block.rows.size(); ++k)
-        x[block.rows[k]] = blockX[Eigen::Index(k)];
+      Eigen::VectorXd blockX;
+      block.ldlt->solveInto(b(block.rows), blockX);
+      x(block.rows) = blockX;
     });
     return x;
   }
