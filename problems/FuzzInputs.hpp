@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/FormulationOption.hpp"
-#include "problems/deck/Overrides.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/structure/FormulationOption.hpp"
+#include "problems/deck/study/Overrides.hpp"
 #include "problems/deck/Quantity.hpp"
-#include "problems/deck/SweepOption.hpp"
+#include "problems/deck/study/SweepOption.hpp"
 #include "problems/run/ModelBuilder.hpp"
 
 namespace beamrotor::fuzz {

@@ -6,7 +6,7 @@
 #include "fem/solvers/HeapReserve.hpp"
 #include "problems/cli/App.hpp"
 #include "problems/cli/HugePages.hpp"
-#include "problems/output/Interruption.hpp"
+#include "problems/output/files/Interruption.hpp"
 
 int main(int argc, char** argv) {
   beamrotor::cli::restartWithHugePages(argv);

@@ -29,6 +29,11 @@ struct Layer {
   int top = 0;
   int room = 0;
   std::string roomName;
+  /// Inside a room with rooms of its own (problems/deck, problems/output): the inner room's
+  /// rank and name; empty for a file directly in the room (the room's entry points, which
+  /// may include any inner room and be included by any).
+  int inner = 0;
+  std::string innerName;
 };
 
 const std::map<std::string, int> kTopRank{
@@ -43,6 +48,15 @@ const std::map<std::string, std::map<std::string, int>> kRoomRank{
     {"problems", {{"scenes", 0}, {"deck", 1}, {"run", 2}, {"output", 3},
                   {"converge", 4}, {"verify", 4}, {"bench", 4}, {"study", 4},
                   {"cli", 5}, {"python", 5}}}};
+
+/// The inner rooms of a room: the machinery (reading a deck's text, writing files) first,
+/// knowing no analysis family; the beams and frames next, which the other families build on;
+/// then the other families, peers that never include each other.
+const std::map<std::string, std::map<std::string, int>> kInnerRank{
+    {"problems/deck", {{"parse", 0}, {"structure", 1}, {"rotor", 2}, {"transient", 2},
+                       {"crank", 2}, {"study", 2}}},
+    {"problems/output", {{"files", 0}, {"structure", 1}, {"rotor", 2}, {"transient", 2},
+                         {"crank", 2}}}};
 // clang-format on
 
 std::optional<Layer> layerOf(const std::string& relative) {
@@ -67,13 +81,26 @@ std::optional<Layer> layerOf(const std::string& relative) {
                             << " has no place in the import order: add it to kRoomRank and "
                                "to the README's layout table");
   layer.room = room->second;
+  const auto inner = kInnerRank.find(top + "/" + layer.roomName);
+  ++part;
+  if (inner == kInnerRank.end() || std::next(part) == p.end()) return layer;
+  layer.innerName = part->string();
+  const auto innerRoom = inner->second.find(layer.innerName);
+  REQUIRE_MESSAGE(innerRoom != inner->second.end(),
+                  "folder " << top << "/" << layer.roomName << "/" << layer.innerName
+                            << " has no place in the import order: add it to kInnerRank and "
+                               "to the README's layout table");
+  layer.inner = innerRoom->second;
   return layer;
 }
 
 bool mayInclude(const Layer& from, const Layer& to) {
   if (from.top != to.top) return to.top < from.top;
   if (from.room != to.room) return to.room < from.room;
-  return from.roomName == to.roomName;
+  if (from.roomName != to.roomName) return false;
+  if (from.innerName.empty() || to.innerName.empty() || from.innerName == to.innerName)
+    return true;
+  return to.inner < from.inner;
 }
 
 std::vector<std::string> sourcesUnder(const std::string& top) {
@@ -126,6 +153,14 @@ TEST_SUITE("layout") {
         mayInclude(*layerOf("fem/static/Static.cpp"), *layerOf("fem/rotor/RotorSystem.hpp")));
     CHECK(mayInclude(*layerOf("fem/static/Static.cpp"), *layerOf("fem/solvers/LinearSolver.hpp")));
     CHECK(mayInclude(*layerOf("problems/main.cpp"), *layerOf("problems/cli/App.hpp")));
+    CHECK_FALSE(mayInclude(*layerOf("problems/output/files/CsvTable.cpp"),
+                           *layerOf("problems/output/rotor/RotorTables.hpp")));
+    CHECK_FALSE(mayInclude(*layerOf("problems/output/rotor/RotorTables.cpp"),
+                           *layerOf("problems/output/transient/TransientJson.hpp")));
+    CHECK(mayInclude(*layerOf("problems/output/rotor/RotorTables.cpp"),
+                     *layerOf("problems/output/files/CsvTable.hpp")));
+    CHECK_FALSE(mayInclude(*layerOf("problems/deck/parse/Field.cpp"),
+                           *layerOf("problems/deck/rotor/DeckRotor.hpp")));
   }
 
   TEST_CASE("every room has a line in the README's layout table") {
@@ -142,6 +177,21 @@ TEST_SUITE("layout") {
       for (const auto& [room, rank] : rooms) {
         CAPTURE(top + "/" + room);
         CHECK(onDisk.count(room) == 1);
+      }
+    }
+    for (const auto& [room, inner] : kInnerRank) {
+      std::set<std::string> onDisk;
+      for (const auto& entry : fs::directory_iterator(kSourceRoot / room))
+        if (entry.is_directory() && entry.path().filename() != "paraview")
+          onDisk.insert(entry.path().filename().string());
+      for (const std::string& name : onDisk) {
+        CAPTURE(room + "/" + name);
+        CHECK(inner.count(name) == 1);
+        CHECK(readme.find("| `" + room + "/" + name + "/` |") != std::string::npos);
+      }
+      for (const auto& [name, rank] : inner) {
+        CAPTURE(room + "/" + name);
+        CHECK(onDisk.count(name) == 1);
       }
     }
   }

@@ -6,8 +6,8 @@
 #include "fem/solvers/AvailableMemory.hpp"
 #include "fem/solvers/HeapReserve.hpp"
 #include "fem/timing/Median.hpp"
-#include "problems/output/AtomicDirectory.hpp"
-#include "problems/output/MatrixExport.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/structure/MatrixExport.hpp"
 
 namespace beamrotor {
 

@@ -9,8 +9,8 @@
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/ReportCommand.hpp"
-#include "problems/deck/Formulations.hpp"
-#include "problems/deck/Suggest.hpp"
+#include "problems/deck/structure/Formulations.hpp"
+#include "problems/deck/parse/Suggest.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/study/StudyMpi.hpp"
 

@@ -11,11 +11,11 @@
 #include "problems/cli/Guarded.hpp"
 #include "problems/cli/Progress.hpp"
 #include "problems/cli/Summary.hpp"
-#include "problems/deck/DeckError.hpp"
-#include "problems/deck/Units.hpp"
-#include "problems/output/AtomicDirectory.hpp"
-#include "problems/output/FileWriting.hpp"
-#include "problems/output/MatrixExport.hpp"
+#include "problems/deck/parse/DeckError.hpp"
+#include "problems/deck/parse/Units.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/FileWriting.hpp"
+#include "problems/output/structure/MatrixExport.hpp"
 #include "problems/output/Output.hpp"
 
 namespace beamrotor::cli {

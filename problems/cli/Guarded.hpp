@@ -5,7 +5,7 @@
 #include <ostream>
 
 #include "problems/cli/ExitCodes.hpp"
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 
 namespace beamrotor::cli {
 

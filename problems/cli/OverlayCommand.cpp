@@ -5,7 +5,7 @@
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/Guarded.hpp"
-#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
 #include "problems/output/OverlayOutput.hpp"
 
 namespace beamrotor::cli {

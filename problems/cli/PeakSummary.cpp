@@ -1,8 +1,8 @@
 #include "problems/cli/PeakSummary.hpp"
 
-#include "problems/deck/DeckSource.hpp"
-#include "problems/deck/Field.hpp"
-#include "problems/deck/ReadSweepRefinement.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/parse/Field.hpp"
+#include "problems/deck/study/ReadSweepRefinement.hpp"
 #include "problems/run/SweepRefinement.hpp"
 
 namespace beamrotor::cli {

@@ -1,7 +1,7 @@
 #include "problems/cli/ReportCommand.hpp"
 
 #include "problems/cli/ExitCodes.hpp"
-#include "problems/output/Gnuplot.hpp"
+#include "problems/output/files/Gnuplot.hpp"
 
 namespace beamrotor::cli {
 

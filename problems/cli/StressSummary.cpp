@@ -5,7 +5,7 @@
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "problems/cli/Summary.hpp"
-#include "problems/output/LineSampling.hpp"
+#include "problems/output/structure/LineSampling.hpp"
 
 namespace beamrotor::cli {
 

@@ -11,7 +11,7 @@
 #include "problems/cli/StabilitySummary.hpp"
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
-#include "problems/output/Reactions.hpp"
+#include "problems/output/structure/Reactions.hpp"
 
 namespace beamrotor::cli {
 

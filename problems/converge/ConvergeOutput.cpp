@@ -2,10 +2,10 @@
 
 #include <sstream>
 
-#include "problems/output/AtomicDirectory.hpp"
-#include "problems/output/ChartParts.hpp"
-#include "problems/output/FileNames.hpp"
-#include "problems/output/Gnuplot.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/ChartParts.hpp"
+#include "problems/output/files/FileNames.hpp"
+#include "problems/output/files/Gnuplot.hpp"
 
 namespace beamrotor {
 

@@ -26,7 +26,7 @@
 #include <filesystem>
 
 #include "problems/converge/ConvergeStudy.hpp"
-#include "problems/output/CsvTable.hpp"
+#include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 
 namespace beamrotor {

@@ -7,7 +7,7 @@
 #include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/SectionNeeds.hpp"
+#include "problems/deck/structure/SectionNeeds.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
 

@@ -14,14 +14,14 @@
 #include "elements/Beam.hpp"
 #include "fem/model/Dof.hpp"
 #include "fem/model/Section.hpp"
-#include "problems/deck/DeckAccuracy.hpp"
-#include "problems/deck/DeckCrank.hpp"
-#include "problems/deck/DeckError.hpp"
-#include "problems/deck/DeckFrame.hpp"
-#include "problems/deck/DeckRotor.hpp"
-#include "problems/deck/DeckTransient.hpp"
+#include "problems/deck/study/DeckAccuracy.hpp"
+#include "problems/deck/crank/DeckCrank.hpp"
+#include "problems/deck/parse/DeckError.hpp"
+#include "problems/deck/structure/DeckFrame.hpp"
+#include "problems/deck/rotor/DeckRotor.hpp"
+#include "problems/deck/transient/DeckTransient.hpp"
 #include "problems/deck/Quantity.hpp"
-#include "problems/deck/Units.hpp"
+#include "problems/deck/parse/Units.hpp"
 
 namespace beamrotor {
 

@@ -5,12 +5,12 @@
 
 #include <algorithm>
 
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/Formulations.hpp"
-#include "problems/deck/MaterialPlausibility.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/structure/Formulations.hpp"
+#include "problems/deck/structure/MaterialPlausibility.hpp"
 #include "problems/deck/ReaderContext.hpp"
-#include "problems/deck/SectionNeeds.hpp"
-#include "problems/deck/Suggest.hpp"
+#include "problems/deck/structure/SectionNeeds.hpp"
+#include "problems/deck/parse/Suggest.hpp"
 
 namespace beamrotor {
 

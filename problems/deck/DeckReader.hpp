@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "problems/deck/Deck.hpp"
-#include "problems/deck/DeckSource.hpp"
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/Overrides.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/study/Overrides.hpp"
 
 namespace beamrotor {
 

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <unordered_map>
 
-#include "problems/deck/CrankQuantity.hpp"
+#include "problems/deck/crank/CrankQuantity.hpp"
 
 namespace beamrotor {
 

@@ -9,7 +9,7 @@
 
 #include "fem/model/Dof.hpp"
 #include "problems/deck/Quantity.hpp"
-#include "problems/deck/Units.hpp"
+#include "problems/deck/parse/Units.hpp"
 
 namespace beamrotor {
 

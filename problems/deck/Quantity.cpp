@@ -4,9 +4,9 @@
 #include <sstream>
 #include <vector>
 
-#include "problems/deck/CrankQuantity.hpp"
-#include "problems/deck/PlainText.hpp"
-#include "problems/deck/RotorQuantity.hpp"
+#include "problems/deck/crank/CrankQuantity.hpp"
+#include "problems/deck/parse/PlainText.hpp"
+#include "problems/deck/rotor/RotorQuantity.hpp"
 
 namespace beamrotor {
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "problems/deck/Deck.hpp"
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/Field.hpp"
-#include "problems/deck/Overrides.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/parse/Field.hpp"
+#include "problems/deck/study/Overrides.hpp"
 
 namespace beamrotor::reader {
 

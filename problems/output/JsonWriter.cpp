@@ -8,16 +8,16 @@
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
-#include "problems/output/AdequateJson.hpp"
-#include "problems/output/CrankOutput.hpp"
-#include "problems/output/CsvTable.hpp"
-#include "problems/output/FileNames.hpp"
-#include "problems/output/FileWriting.hpp"
-#include "problems/output/MemberOutput.hpp"
-#include "problems/output/Reactions.hpp"
-#include "problems/output/RotorJson.hpp"
-#include "problems/output/StabilityOutput.hpp"
-#include "problems/output/TransientJson.hpp"
+#include "problems/output/structure/AdequateJson.hpp"
+#include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/files/CsvTable.hpp"
+#include "problems/output/files/FileNames.hpp"
+#include "problems/output/files/FileWriting.hpp"
+#include "problems/output/structure/MemberOutput.hpp"
+#include "problems/output/structure/Reactions.hpp"
+#include "problems/output/rotor/RotorJson.hpp"
+#include "problems/output/structure/StabilityOutput.hpp"
+#include "problems/output/transient/TransientJson.hpp"
 
 namespace beamrotor {
 

@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/output/LineSampling.hpp"
+#include "problems/output/structure/LineSampling.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {

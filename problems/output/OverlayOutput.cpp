@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "problems/output/LineSampling.hpp"
-#include "problems/output/Tables.hpp"
+#include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/structure/Tables.hpp"
 
 namespace beamrotor {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/output/Charts.hpp"
+#include "problems/output/structure/Charts.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {

@@ -1,13 +1,13 @@
 // Preparing a run for writing (see PreparedRun.hpp).
 #include "problems/output/PreparedRun.hpp"
 
-#include "problems/output/CrankOutput.hpp"
-#include "problems/output/FileNames.hpp"
-#include "problems/output/FiniteCheck.hpp"
-#include "problems/output/MemberOutput.hpp"
-#include "problems/output/StabilityOutput.hpp"
-#include "problems/output/Tables.hpp"
-#include "problems/output/TransientFiles.hpp"
+#include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/files/FileNames.hpp"
+#include "problems/output/files/FiniteCheck.hpp"
+#include "problems/output/structure/MemberOutput.hpp"
+#include "problems/output/structure/StabilityOutput.hpp"
+#include "problems/output/structure/Tables.hpp"
+#include "problems/output/transient/TransientFiles.hpp"
 
 namespace beamrotor {
 

@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include "problems/output/CsvTable.hpp"
+#include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
-#include "problems/output/LineSampling.hpp"
-#include "problems/output/RotorOutput.hpp"
+#include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/rotor/RotorOutput.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {

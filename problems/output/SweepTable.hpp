@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/output/CsvTable.hpp"
+#include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/run/RunResult.hpp"
 

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "fem/solvers/BlasThreads.hpp"
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/output/PreparedRun.hpp"

@@ -7,8 +7,8 @@
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/Field.hpp"
-#include "problems/deck/Formulations.hpp"
+#include "problems/deck/parse/Field.hpp"
+#include "problems/deck/structure/Formulations.hpp"
 #include "problems/run/ConvergeMethods.hpp"
 #include "problems/run/DeckRunner.hpp"
 

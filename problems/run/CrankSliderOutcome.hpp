@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "problems/deck/DeckCrank.hpp"
+#include "problems/deck/crank/DeckCrank.hpp"
 #include "problems/scenes/CrankSlider.hpp"
 
 namespace beamrotor {

@@ -6,8 +6,8 @@
 
 #include "fem/solvers/SymbolicReuse.hpp"
 #include "problems/deck/Deck.hpp"
-#include "problems/deck/DeckSource.hpp"
-#include "problems/deck/Overrides.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/study/Overrides.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {

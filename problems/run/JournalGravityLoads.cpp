@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "fem/rotor/GravityLoads.hpp"
-#include "problems/deck/Field.hpp"
-#include "problems/deck/JournalTable.hpp"
+#include "problems/deck/parse/Field.hpp"
+#include "problems/deck/rotor/JournalTable.hpp"
 #include "problems/run/ModelBuilder.hpp"
 
 namespace beamrotor {

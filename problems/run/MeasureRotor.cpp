@@ -1,4 +1,4 @@
-// Measuring the rotor analyses' check quantities (problems/deck/RotorQuantity.hpp).
+// Measuring the rotor analyses' check quantities (problems/deck/rotor/RotorQuantity.hpp).
 #include "problems/run/MeasureRotor.hpp"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
 // Running a crank-slider analysis (problems/scenes/README.md section 3) from the kinematics
 // and load formulas of problems/scenes/CrankSlider.hpp, and measuring its check quantities
-// (problems/deck/CrankQuantity.hpp).
+// (problems/deck/crank/CrankQuantity.hpp).
 #pragma once
 
-#include "problems/deck/DeckCrank.hpp"
+#include "problems/deck/crank/DeckCrank.hpp"
 #include "problems/deck/Quantity.hpp"
 #include "problems/run/CrankSliderOutcome.hpp"
 

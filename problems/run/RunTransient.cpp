@@ -8,9 +8,9 @@
 #include "fem/model/DofMap.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/transient/PeriodicSteadyState.hpp"
-#include "problems/deck/DeckError.hpp"
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/Field.hpp"
+#include "problems/deck/parse/DeckError.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/parse/Field.hpp"
 
 namespace beamrotor {
 

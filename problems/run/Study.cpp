@@ -2,8 +2,8 @@
 
 #include "fem/solvers/AvailableMemory.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/FormulationOption.hpp"
-#include "problems/deck/SweepOption.hpp"
+#include "problems/deck/structure/FormulationOption.hpp"
+#include "problems/deck/study/SweepOption.hpp"
 #include "problems/run/MemoryEstimate.hpp"
 
 namespace beamrotor {

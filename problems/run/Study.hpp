@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "problems/deck/Deck.hpp"
-#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/RunResult.hpp"
 

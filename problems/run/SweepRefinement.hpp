@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "problems/deck/ReadSweepRefinement.hpp"
+#include "problems/deck/study/ReadSweepRefinement.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {

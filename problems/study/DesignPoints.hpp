@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "problems/deck/DesignStudy.hpp"
+#include "problems/deck/study/DesignStudy.hpp"
 
 namespace beamrotor {
 

@@ -5,9 +5,9 @@
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/FormulationOption.hpp"
-#include "problems/output/AtomicDirectory.hpp"
-#include "problems/output/FileWriting.hpp"
+#include "problems/deck/structure/FormulationOption.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/FileWriting.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/study/DesignPoints.hpp"
 #include "problems/study/StudyExecution.hpp"

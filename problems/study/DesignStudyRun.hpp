@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/deck/DesignStudy.hpp"
+#include "problems/deck/study/DesignStudy.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/study/StudyPoint.hpp"
 

@@ -8,8 +8,8 @@
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/Field.hpp"
-#include "problems/deck/FormulationOption.hpp"
+#include "problems/deck/parse/Field.hpp"
+#include "problems/deck/structure/FormulationOption.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
 

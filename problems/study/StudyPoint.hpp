@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "problems/deck/DeckSource.hpp"
-#include "problems/deck/DesignStudy.hpp"
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/Overrides.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/study/DesignStudy.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/study/Overrides.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/RunResult.hpp"
 

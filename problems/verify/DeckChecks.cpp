@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "fem/timing/Stopwatch.hpp"
-#include "problems/deck/Field.hpp"
+#include "problems/deck/parse/Field.hpp"
 #include "problems/run/Study.hpp"
 
 namespace beamrotor::verify {

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "problems/output/XmlText.hpp"
+#include "problems/output/files/XmlText.hpp"
 
 namespace beamrotor::verify {
 

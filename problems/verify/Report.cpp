@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <ctime>
 
-#include "problems/output/AtomicDirectory.hpp"
-#include "problems/output/FileWriting.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/FileWriting.hpp"
 #include "problems/verify/HtmlPage.hpp"
 
 namespace beamrotor::verify {

@@ -2,9 +2,9 @@
 
 #include <sstream>
 
-#include "problems/output/ChartParts.hpp"
-#include "problems/output/CsvTable.hpp"
-#include "problems/output/Gnuplot.hpp"
+#include "problems/output/files/ChartParts.hpp"
+#include "problems/output/files/CsvTable.hpp"
+#include "problems/output/files/Gnuplot.hpp"
 
 namespace beamrotor::verify {
 

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
 #include "tests/hostile/HostileSupport.hpp"
 
 using namespace beamrotor;

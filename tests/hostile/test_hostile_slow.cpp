@@ -12,7 +12,7 @@
 #include <regex>
 #include <thread>
 
-#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
 #include "tests/hostile/HostileSupport.hpp"
 
 using namespace beamrotor;

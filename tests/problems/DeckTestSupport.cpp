@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
 
 namespace beamrotor::test {
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/run/Study.hpp"
 
 namespace beamrotor::test {

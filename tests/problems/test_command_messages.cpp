@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "problems/deck/Formulations.hpp"
+#include "problems/deck/structure/Formulations.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;

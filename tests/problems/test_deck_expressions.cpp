@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/Suggest.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/parse/Suggest.hpp"
 
 using namespace beamrotor;
 

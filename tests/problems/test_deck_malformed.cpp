@@ -7,7 +7,7 @@
 #include <fstream>
 #include <regex>
 
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

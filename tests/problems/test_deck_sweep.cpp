@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/run/Study.hpp"
 
 using namespace beamrotor;

@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

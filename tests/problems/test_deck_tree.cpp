@@ -1,4 +1,4 @@
-// The deck's tree (problems/deck/DeckTree.hpp), copied once from yaml-cpp's and walked by every
+// The deck's tree (problems/deck/parse/DeckTree.hpp), copied once from yaml-cpp's and walked by every
 // reading: aliases read as the values they name, an alias that expands without end is refused
 // with a place, and maps with a key twice or a key that is not a word are refused as before,
 // at the offending key.
@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "problems/deck/DeckError.hpp"
-#include "problems/deck/DeckSource.hpp"
-#include "problems/deck/DeckTree.hpp"
+#include "problems/deck/parse/DeckError.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/parse/DeckTree.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "fem/modal/Modal.hpp"
-#include "problems/output/RotorJson.hpp"
+#include "problems/output/rotor/RotorJson.hpp"
 #include "problems/run/Study.hpp"
 #include "problems/scenes/FormeShaft.hpp"
 #include "tests/Helpers.hpp"

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"

@@ -12,7 +12,7 @@
 #include "fem/assembly/Assembly.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
 #include "problems/bench/Bench.hpp"
-#include "problems/output/MatrixExport.hpp"
+#include "problems/output/structure/MatrixExport.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "fem/assembly/MemberExtrema.hpp"
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

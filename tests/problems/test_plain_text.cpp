@@ -1,8 +1,8 @@
-// Plain text (problems/deck/PlainText.hpp): the one definition of text that may travel from a
+// Plain text (problems/deck/parse/PlainText.hpp): the one definition of text that may travel from a
 // deck into messages, tables and chart scripts.
 #include <doctest/doctest.h>
 
-#include "problems/deck/PlainText.hpp"
+#include "problems/deck/parse/PlainText.hpp"
 
 using namespace beamrotor;
 

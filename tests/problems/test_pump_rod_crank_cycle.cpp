@@ -9,8 +9,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "problems/deck/DeckError.hpp"
-#include "problems/deck/Expression.hpp"
+#include "problems/deck/parse/DeckError.hpp"
+#include "problems/deck/parse/Expression.hpp"
 #include "problems/scenes/CrankSlider.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"

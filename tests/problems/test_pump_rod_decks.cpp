@@ -8,7 +8,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "problems/output/CsvTable.hpp"
+#include "problems/output/files/CsvTable.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 #include "tests/problems/PumpRodReference.hpp"

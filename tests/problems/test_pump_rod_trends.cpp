@@ -7,7 +7,7 @@
 #include <Eigen/Dense>
 
 #include "fem/assembly/ElementExtrema.hpp"
-#include "problems/output/LineSampling.hpp"
+#include "problems/output/structure/LineSampling.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

@@ -16,7 +16,7 @@
 #include <numbers>
 
 #include "elements/Bearing.hpp"
-#include "problems/output/CsvTable.hpp"
+#include "problems/output/files/CsvTable.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

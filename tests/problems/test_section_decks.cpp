@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fem/model/StandardSections.hpp"
-#include "problems/deck/DeckError.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "problems/output/Gnuplot.hpp"
+#include "problems/output/files/Gnuplot.hpp"
 #include "problems/verify/HtmlPage.hpp"
 #include "problems/verify/Report.hpp"
 #include "tests/problems/DeckTestSupport.hpp"

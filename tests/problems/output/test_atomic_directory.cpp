@@ -10,9 +10,9 @@
 #include <atomic>
 #include <thread>
 
-#include "problems/output/AtomicDirectory.hpp"
-#include "problems/output/FileWriting.hpp"
-#include "problems/output/Interruption.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/FileWriting.hpp"
+#include "problems/output/files/Interruption.hpp"
 #include "tests/problems/output/OutputFixtures.hpp"
 
 using namespace beamrotor;

@@ -7,10 +7,10 @@
 #include <numbers>
 #include <string>
 
-#include "problems/output/ChartParts.hpp"
-#include "problems/output/Charts.hpp"
-#include "problems/output/LabelPlacement.hpp"
-#include "problems/output/Tables.hpp"
+#include "problems/output/files/ChartParts.hpp"
+#include "problems/output/structure/Charts.hpp"
+#include "problems/output/files/LabelPlacement.hpp"
+#include "problems/output/structure/Tables.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

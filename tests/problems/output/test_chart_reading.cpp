@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/output/Gnuplot.hpp"
+#include "problems/output/files/Gnuplot.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 #include "tests/problems/output/ChartInspection.hpp"
 

@@ -14,7 +14,7 @@
 #include <filesystem>
 
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/DeckSource.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <fstream>
 
-#include "problems/output/Gnuplot.hpp"
+#include "problems/output/files/Gnuplot.hpp"
 #include "tests/problems/output/OutputFixtures.hpp"
 
 using namespace beamrotor;

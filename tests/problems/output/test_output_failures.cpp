@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "problems/output/AtomicDirectory.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
 #include "problems/output/Output.hpp"
 #include "tests/problems/output/OutputFixtures.hpp"
 

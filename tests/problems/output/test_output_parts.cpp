@@ -6,11 +6,11 @@
 #include <limits>
 
 #include "elements/Spring.hpp"
-#include "problems/output/CsvTable.hpp"
-#include "problems/output/FileNames.hpp"
+#include "problems/output/files/CsvTable.hpp"
+#include "problems/output/files/FileNames.hpp"
 #include "problems/output/JsonWriter.hpp"
-#include "problems/output/LineSampling.hpp"
-#include "problems/output/ModeShapes.hpp"
+#include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/structure/ModeShapes.hpp"
 #include "tests/problems/output/OutputFixtures.hpp"
 
 using namespace beamrotor;

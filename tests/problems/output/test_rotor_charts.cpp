@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "problems/output/ChartParts.hpp"
-#include "problems/output/Gnuplot.hpp"
-#include "problems/output/OperatingBand.hpp"
-#include "problems/output/RotorOrbitChart.hpp"
+#include "problems/output/files/ChartParts.hpp"
+#include "problems/output/files/Gnuplot.hpp"
+#include "problems/output/rotor/OperatingBand.hpp"
+#include "problems/output/rotor/RotorOrbitChart.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 

@@ -1,5 +1,5 @@
 // The lean path of a design study (each point's expressions from byte code remembered by an
-// ExpressionMemo, problems/deck/Expression.hpp) against the full path (every point's deck
+// ExpressionMemo, problems/deck/parse/Expression.hpp) against the full path (every point's deck
 // parsed and evaluated in eight systems of units): the same table and summary, bit for bit,
 // and the memo's evaluator against a plain one expression by expression.
 #include <doctest/doctest.h>
@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "problems/deck/DeckReader.hpp"
-#include "problems/deck/DeckSource.hpp"
-#include "problems/deck/Expression.hpp"
-#include "problems/deck/Units.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/parse/Units.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/study/DesignPoints.hpp"
 #include "problems/study/DesignStudyRun.hpp"

@@ -1,0 +1,89 @@
+#include "problems/deck/parse/SceneFunctions.hpp"
+
+#include <muParser.h>
+
+#include <cmath>
+#include <exception>
+
+#include "problems/scenes/Mo10.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Enough for any deck; bounds the work of one call.
+constexpr double kMostCycles = 1e5;
+
+Mo10Parameters mo10(double J, double c, double l, double a, double H, double omega) {
+  Mo10Parameters p;
+  p.J = J;
+  p.c = c;
+  p.l = l;
+  p.a = a;
+  p.H = H;
+  p.omega = omega;
+  return p;
+}
+
+/// The closed form over `cycles` cycles; muparser reports the failure as its own error.
+Mo10ClosedForm closedForm(const Mo10Parameters& p, double cycles,
+                          Mo10ClosedForm::Start start = Mo10ClosedForm::Start::rest) {
+  if (!(cycles >= 1 && cycles <= kMostCycles))
+    throw mu::Parser::exception_type("MO-10 closed form: the number of cycles must lie in [1, " +
+                                     std::to_string(int(kMostCycles)) + "]");
+  try {
+    return Mo10ClosedForm(p, int(std::ceil(cycles)), start);
+  } catch (const std::exception& e) {
+    throw mu::Parser::exception_type(e.what());
+  }
+}
+
+double mo10Phi(double t, double J, double c, double l, double a, double H, double omega) {
+  const Mo10Parameters p = mo10(J, c, l, a, H, omega);
+  if (!(t >= 0)) throw mu::Parser::exception_type("mo10_phi: t must not be negative");
+  // The cycles up to t (t = k T exactly is the end of cycle k, not the start of k + 1).
+  const double cycles = std::max(1.0, std::ceil(t / p.period() * (1 - 1e-14)));
+  return closedForm(p, cycles).phi(t);
+}
+
+double mo10PhiMax(double cycles, double J, double c, double l, double a, double H, double omega) {
+  return closedForm(mo10(J, c, l, a, H, omega), cycles).extremes().amplitude;
+}
+
+double mo10ForceMax(double cycles, double J, double c, double l, double a, double H, double omega) {
+  return closedForm(mo10(J, c, l, a, H, omega), cycles).extremes().pressingForce;
+}
+
+/// The periodic steady state, which repeats every cycle: phi at t (any t >= 0, read within
+/// its cycle) and its extremes over one cycle.
+Mo10ClosedForm steadyState(double J, double c, double l, double a, double H, double omega) {
+  return closedForm(mo10(J, c, l, a, H, omega), 1, Mo10ClosedForm::Start::periodic);
+}
+
+double mo10SteadyPhi(double t, double J, double c, double l, double a, double H, double omega) {
+  if (!(t >= 0)) throw mu::Parser::exception_type("mo10_steady_phi: t must not be negative");
+  const Mo10ClosedForm form = steadyState(J, c, l, a, H, omega);
+  const double T = form.parameters().period();
+  return form.phi(t - T * std::floor(t / T));
+}
+
+double mo10SteadyPhiMax(double J, double c, double l, double a, double H, double omega) {
+  return steadyState(J, c, l, a, H, omega).extremes().amplitude;
+}
+
+double mo10SteadyForceMax(double J, double c, double l, double a, double H, double omega) {
+  return steadyState(J, c, l, a, H, omega).extremes().pressingForce;
+}
+
+}  // namespace
+
+void defineSceneFunctions(mu::Parser& parser) {
+  parser.DefineFun("mo10_phi", mo10Phi);
+  parser.DefineFun("mo10_phi_max", mo10PhiMax);
+  parser.DefineFun("mo10_force_max", mo10ForceMax);
+  parser.DefineFun("mo10_steady_phi", mo10SteadyPhi);
+  parser.DefineFun("mo10_steady_phi_max", mo10SteadyPhiMax);
+  parser.DefineFun("mo10_steady_force_max", mo10SteadyForceMax);
+}
+
+}  // namespace beamrotor

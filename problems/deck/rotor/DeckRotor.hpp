@@ -1,0 +1,92 @@
+// The rotor-dynamics parts of a deck (see FORMAT.md, "Rotors"): bearings and proportional
+// damping on the model, and what the rotor analyses (rotor, campbell, unbalance, rigid-body)
+// ask for (also critical-speed-map). Plain values, read by ReadRotor.cpp and solved by RunRotor.cpp.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "elements/Bearing.hpp"
+#include "elements/PlainJournalBearing.hpp"
+#include "fem/rotor/Api684.hpp"
+#include "fem/rotor/RotorSystem.hpp"
+#include "problems/deck/parse/DeckError.hpp"
+
+namespace beamrotor {
+
+/// A bearing at a point (elements/Bearing): constant coefficients (speeds empty, one row)
+/// or a table against spin speed (speeds ascending, one row each). Global axes y, z.
+struct DeckBearing {
+  std::string name;
+  std::string point;
+  std::vector<double> speeds;              ///< rad/s; empty for constant coefficients
+  std::vector<BearingCoefficients> table;  ///< N/m, N s/m
+  /// A plain journal bearing (type: plain-journal): its geometry and oil; the table then holds
+  /// its short-bearing coefficients at `speeds`.
+  std::optional<PlainJournal> journal;
+  /// A plain journal with `load: gravity`: its load is the rotor's weight share on pinned
+  /// bearings, found when the deck runs (journal->load and table are empty until then).
+  bool loadFromGravity = false;
+  DeckPlace place;
+};
+
+/// An unbalance m e at a point, heavy spot at `phase` (rad from +y towards +z) at t = 0.
+struct DeckUnbalance {
+  std::string point;
+  double me = 0;     ///< kg m
+  double phase = 0;  ///< rad
+  DeckPlace place;
+};
+
+/// The rotor parts of the model.
+struct DeckRotorModel {
+  std::vector<DeckBearing> bearings;
+  ProportionalDamping damping;  ///< alpha M + beta K, used by the rotor analyses
+};
+
+/// What a rotor analysis asks for (the fields its type uses; the others stay empty).
+/// rigid-body `body:`: the spring-mounted rigid body from its own inputs, with no beams
+/// (problems/scenes/README.md section 2: weight Q, radius of gyration rho, l1, l2, C1, C2).
+struct DeckTwoDofBody {
+  double mass = 0;              ///< kg (`mass:`, or `weight:` over standard gravity)
+  double radiusOfGyration = 0;  ///< about the centre of mass, in the plane of vibration (m)
+  double l1 = 0, l2 = 0;        ///< centre of mass to spring A (-x side), to spring B (m)
+  double C1 = 0, C2 = 0;        ///< spring stiffnesses at A and B (N/m)
+};
+
+struct DeckRotorAnalysis {
+  double speed = 0;                        ///< rotor: spin speed (rad/s)
+  std::vector<double> speeds;              ///< campbell, unbalance: ascending (rad/s)
+  double order = 1;                        ///< campbell: excitation order of the critical speeds
+  std::vector<double> furtherOrders;       ///< campbell: more orders drawn, with their crossings
+  std::vector<DeckUnbalance> unbalance;    ///< unbalance
+  std::vector<std::string> response;       ///< unbalance: points whose orbits are reported
+  /// unbalance: the operating speed range (rad/s) the API 684 margins are measured from
+  std::optional<OperatingRange> operating;
+  /// unbalance: `operating.min_log_decrement`, the smallest log decrement API 684's verdict
+  /// allows a mode over the operating range (0: only an unstable mode fails)
+  double minLogDecrement = 0;
+  /// frequency-response: force on input.dof at input.point, response of output's (uy uz ry rz)
+  std::string inputPoint, outputPoint;
+  Dof inputDof = Dof::uy, outputDof = Dof::uy;
+  std::vector<double> frequencies;  ///< frequency-response: excitation (rad/s), ascending
+  std::vector<std::string> bearingPoints;  ///< rigid-body: the two spring points A, B
+  std::optional<DeckTwoDofBody> body;      ///< rigid-body: the body given directly, no model
+  /// critical-speed-map: bearing stiffnesses (N/m), ascending, equal steps of log k
+  std::vector<double> stiffnesses;
+  int criticalSpeeds = 4;  ///< critical-speed-map: critical speeds per stiffness
+  /// bearing-loads: the acceleration of gravity (m/s^2, global; default 9.81 along -y)
+  std::array<double, 3> gravity{0, -9.81, 0};
+  bool rigidBearings = true;  ///< bearing-loads: bearings pinned, or their stiffness at `speed`
+};
+
+/// True for the analysis types this header describes.
+inline bool isRotorAnalysis(const std::string& type) {
+  return type == "rotor" || type == "campbell" || type == "unbalance" || type == "rigid-body" ||
+         type == "frequency-response" || type == "critical-speed-map" ||
+         type == "bearing-loads";
+}
+
+}  // namespace beamrotor

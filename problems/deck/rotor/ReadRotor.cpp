@@ -1,0 +1,410 @@
+// Deck reader, rotor part: bearings and proportional damping on the model, the fields of the
+// rotor analyses (rotor, campbell, unbalance, rigid-body, frequency-response,
+// critical-speed-map), and the names their check
+// quantities refer to. Speeds are written in rpm in the deck and kept in rad/s.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "elements/PlainJournalBearing.hpp"
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/rotor/JournalTable.hpp"
+#include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/parse/Suggest.hpp"
+
+namespace beamrotor::reader {
+
+namespace {
+
+constexpr double kRadPerRpm = std::numbers::pi / 30;
+
+/// Stiffness and damping keys in the bearing's own axes (x_b, y_b) = global (y, z), see
+/// elements/Bearing.hpp.
+const std::vector<std::string> kCoefficients{"kxx", "kyy", "kxy", "kyx",
+                                             "cxx", "cyy", "cxy", "cyx"};
+
+/// One row of coefficients from a map that also holds `extra` keys. Direct stiffnesses and
+/// dampings must be >= 0; cross terms may have either sign.
+BearingCoefficients readCoefficients(const Context& c, const Field& f,
+                                     const std::vector<std::string>& extra,
+                                     const std::string& what) {
+  std::vector<std::string> keys = extra;
+  keys.insert(keys.end(), kCoefficients.begin(), kCoefficients.end());
+  f.allowOnly(keys, what);
+  const ExpressionEvaluator& ev = c.evaluator;
+  auto value = [&](const char* key, bool direct) {
+    auto v = f.get(key);
+    if (!v) return 0.0;
+    return direct ? v->nonNegative(ev) : v->number(ev);
+  };
+  BearingCoefficients k;
+  k.kyy = value("kxx", true);
+  k.kzz = value("kyy", true);
+  k.kyz = value("kxy", false);
+  k.kzy = value("kyx", false);
+  k.cyy = value("cxx", true);
+  k.czz = value("cyy", true);
+  k.cyz = value("cxy", false);
+  k.czy = value("cyx", false);
+  if (k.kyy == 0 && k.kzz == 0 && k.cyy == 0 && k.czz == 0)
+    f.fail("a bearing needs a positive kxx, kyy, cxx or cyy (N/m, N s/m)");
+  return k;
+}
+
+std::vector<double> readSpeedRange(const Context& c, const Field& f);
+
+/// A plain journal bearing: geometry, oil and load, and the speeds of its coefficient table.
+/// The short-bearing theory (elements/PlainJournalBearing.hpp) gives the coefficients there.
+void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckBearing& b) {
+  if (type.text() != "plain-journal")
+    type.fail("unknown bearing type '" + type.text() + "'" +
+              didYouMean(type.text(), {"plain-journal"}) +
+              " (a bearing is plain-journal, or has coefficients or a table)");
+  f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "from_rpm", "to_rpm", "steps"},
+              "a plain-journal bearing");
+  const ExpressionEvaluator& ev = c.evaluator;
+  PlainJournal j;
+  j.diameter = f.require("D").positive(ev);
+  const Field length = f.require("L");
+  j.length = length.positive(ev);
+  if (j.length > j.diameter)
+    length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " +
+                formatNumber(j.length / j.diameter) + ")");
+  const Field clearance = f.require("c");
+  j.clearance = clearance.positive(ev);
+  if (!(j.clearance < 0.01 * j.diameter))
+    clearance.fail("a radial clearance of " + formatNumber(j.clearance) +
+                   " m is not small against D (c/D must be below 0.01; typical 0.001)");
+  j.viscosity = f.require("mu").positive(ev);
+  const Field load = f.require("load");
+  b.loadFromGravity = load.isScalar() && load.text() == "gravity";
+  if (!b.loadFromGravity) j.load = load.positive(ev);
+  b.speeds = readSpeedRange(c, f);
+  if (!(b.speeds.front() > 0))
+    f.require("from_rpm").fail("a plain journal bearing has no film at rest: from_rpm must be > 0 "
+                               "(the lowest row is held below it)");
+  b.journal = j;
+  // With load: gravity the run fills the table once the rotor's weight share is known.
+  if (!b.loadFromGravity) {
+    try {
+      fillJournalTable(b);
+    } catch (const std::invalid_argument& e) {
+      f.require("from_rpm").fail(e.what());
+    }
+  }
+}
+
+bool carriesLateral(const Deck& deck) {
+  return deck.dofs.contains(Dof::uy) && deck.dofs.contains(Dof::uz);
+}
+
+void readBearings(Context& c) {
+  auto block = c.root.get("bearings");
+  if (!block || block->isNull()) return;
+  if (!carriesLateral(c.deck))
+    block->fail("bearings act on uy and uz: use model: {dimension: lateral} (or 3d), not " +
+                c.deck.dimension);
+  std::vector<std::string> names;
+  for (const Field& f : block->items()) {
+    if (!f.isMap()) f.fail("expected a map describing a bearing, got " + f.describe());
+    DeckBearing b;
+    b.place = f.place();
+    const Field at = f.require("at");
+    b.point = c.point(at).name;
+    auto nameField = f.get("name");
+    b.name = nameField ? nameField->name() : b.point;
+    claimName(nameField ? *nameField : at, b.name, names, "a bearing");
+    if (auto type = f.get("type")) {
+      readPlainJournal(c, f, *type, b);
+    } else if (auto table = f.get("table")) {
+      f.allowOnly({"name", "at", "table"}, "a tabulated bearing");
+      const std::vector<Field> rows = table->items();
+      if (rows.empty()) table->fail("the bearing table is empty");
+      for (const Field& row : rows) {
+        const Field speed = row.require("speed_rpm");
+        const double w = speed.nonNegative(c.evaluator) * kRadPerRpm;
+        if (!b.speeds.empty() && !(w > b.speeds.back()))
+          speed.fail("speeds of a bearing table must be strictly ascending");
+        b.speeds.push_back(w);
+        b.table.push_back(readCoefficients(c, row, {"speed_rpm"}, "a bearing table row"));
+      }
+    } else {
+      b.table.push_back(readCoefficients(c, f, {"name", "at", "table"}, "a bearing"));
+    }
+    c.deck.rotor.bearings.push_back(std::move(b));
+  }
+}
+
+void readDamping(Context& c) {
+  auto f = c.root.get("damping");
+  if (!f || f->isNull()) return;
+  f->allowOnly({"alpha", "beta"}, "damping");
+  if (auto a = f->get("alpha")) c.deck.rotor.damping.alpha = a->nonNegative(c.evaluator);
+  if (auto b = f->get("beta")) c.deck.rotor.damping.beta = b->nonNegative(c.evaluator);
+}
+
+/// `fromKey`, `toKey` and steps: steps intervals from `from` to `to` (the last value `to`
+/// exactly), each times `scale`, the SI value of the keys' unit.
+std::vector<double> readRange(const Context& c, const Field& f, const std::string& fromKey,
+                              const std::string& toKey, double scale) {
+  const double from = f.require(fromKey).nonNegative(c.evaluator);
+  const Field toField = f.require(toKey);
+  const double to = toField.number(c.evaluator);
+  if (!(to > from)) toField.fail(toKey + " must exceed " + fromKey + " (" + formatNumber(from) + ")");
+  const int n = f.require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
+  std::vector<double> values;
+  for (int i = 0; i < n; ++i) values.push_back((from + (to - from) * i / n) * scale);
+  values.push_back(to * scale);
+  return values;
+}
+
+/// from_rpm, to_rpm, steps: spin speeds (rad/s).
+std::vector<double> readSpeedRange(const Context& c, const Field& f) {
+  return readRange(c, f, "from_rpm", "to_rpm", kRadPerRpm);
+}
+
+/// input / output of a frequency response: {at: POINT, dof: uy | uz | ry | rz}.
+void readResponseEnd(const Context& c, const Field& f, std::string& point, Dof& dof) {
+  if (!f.isMap()) f.fail("expected {at: POINT, dof: uy}, got " + f.describe());
+  f.allowOnly({"at", "dof"}, "an end of a frequency response");
+  point = c.point(f.require("at")).name;
+  const Field d = f.require("dof");
+  dof = c.dof(d);
+  if (dof != Dof::uy && dof != Dof::uz && dof != Dof::ry && dof != Dof::rz)
+    d.fail("a rotor's frequency response acts on uy, uz, ry or rz");
+}
+
+/// from_hz, to_hz, steps: excitation frequencies (rad/s); from_hz may be 0.
+std::vector<double> readFrequencyRange(const Context& c, const Field& f) {
+  return readRange(c, f, "from_hz", "to_hz", 2 * std::numbers::pi);
+}
+
+/// operating: {min_rpm, max_rpm, min_log_decrement}: the machine's operating speed range,
+/// 0 < min < max, and the log decrement every mode must keep over it (>= 0, default 0).
+OperatingRange readOperatingRange(const Context& c, const Field& f, double& minLogDecrement) {
+  if (!f.isMap()) f.fail("expected {min_rpm: RPM, max_rpm: RPM}, got " + f.describe());
+  f.allowOnly({"min_rpm", "max_rpm", "min_log_decrement"}, "an operating speed range");
+  if (auto d = f.get("min_log_decrement")) minLogDecrement = d->nonNegative(c.evaluator);
+  OperatingRange range;
+  range.minimum = f.require("min_rpm").positive(c.evaluator) * kRadPerRpm;
+  const Field top = f.require("max_rpm");
+  range.maximum = top.positive(c.evaluator) * kRadPerRpm;
+  if (!(range.maximum > range.minimum))
+    top.fail("max_rpm must exceed min_rpm (" + formatNumber(range.minimum / kRadPerRpm) + ")");
+  return range;
+}
+
+void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
+  for (const Field& u : f.require("unbalance").itemsOrSingle()) {
+    if (!u.isMap()) u.fail("expected {at: POINT, me: KG_M, phase: RAD}, got " + u.describe());
+    u.allowOnly({"at", "me", "phase"}, "an unbalance");
+    DeckUnbalance d;
+    d.place = u.place();
+    d.point = c.point(u.require("at")).name;
+    d.me = u.require("me").positive(c.evaluator);
+    if (auto p = u.get("phase")) d.phase = p->number(c.evaluator);
+    r.unbalance.push_back(std::move(d));
+  }
+  for (const Field& p : f.require("response").itemsOrSingle()) {
+    const std::string name = c.point(p).name;
+    if (std::find(r.response.begin(), r.response.end(), name) != r.response.end())
+      p.fail("point '" + name + "' is listed twice");
+    r.response.push_back(name);
+  }
+}
+
+/// critical-speed-map: from_k, to_k (N/m), points (log-spaced, ends included) and
+/// critical_speeds; the deck's bearings are the ones replaced by the stiffness.
+void readCriticalSpeedMap(const Context& c, const Field& f, DeckRotorAnalysis& r) {
+  f.allowOnly({"type", "name", "from_k", "to_k", "points", "critical_speeds"},
+              "a critical-speed-map analysis");
+  if (c.deck.dimension != "lateral")
+    f.fail("a critical-speed map needs model: {dimension: lateral} (here " + c.deck.dimension +
+           ": its axial and torsional dofs would have no support)");
+  if (c.deck.rotor.bearings.empty())
+    f.fail("a critical-speed map puts its stiffness in place of the deck's bearings: add "
+           "bearings");
+  const ExpressionEvaluator& ev = c.evaluator;
+  const double from = f.require("from_k").positive(ev);
+  const Field toField = f.require("to_k");
+  const double to = toField.positive(ev);
+  if (!(to > from)) toField.fail("to_k must exceed from_k (" + formatNumber(from) + " N/m)");
+  const int n = f.require("points").integer(ev, 2, kMaxSweepValues);
+  for (int i = 0; i < n; ++i)
+    r.stiffnesses.push_back(i + 1 == n ? to : from * std::pow(to / from, double(i) / (n - 1)));
+  if (auto k = f.get("critical_speeds")) r.criticalSpeeds = k->integer(ev, 1, 20);
+}
+
+/// bearing-loads: g (m/s^2, default 9.81), direction (-y, y, -z, z; default -y), bearings
+/// (rigid or elastic) and, for elastic bearings, speed_rpm (their coefficients' speed).
+void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
+  f.allowOnly({"type", "name", "g", "direction", "bearings", "speed_rpm"},
+              "a bearing-loads analysis");
+  if (c.deck.rotor.bearings.empty())
+    f.fail("a bearing-loads analysis reports the loads of the deck's bearings: add bearings");
+  double g = 9.81;
+  if (auto v = f.get("g")) g = v->positive(c.evaluator);
+  std::string direction = "-y";
+  if (auto d = f.get("direction")) direction = d->choice({"-y", "y", "-z", "z"});
+  const double sign = direction[0] == '-' ? -1 : 1;
+  r.gravity = {0, direction.back() == 'y' ? sign * g : 0, direction.back() == 'z' ? sign * g : 0};
+  if (auto b = f.get("bearings")) r.rigidBearings = b->choice({"rigid", "elastic"}) == "rigid";
+  if (auto s = f.get("speed_rpm")) {
+    if (r.rigidBearings) s->fail("speed_rpm sets the elastic bearings' coefficients: add bearings: elastic");
+    r.speed = s->nonNegative(c.evaluator) * kRadPerRpm;
+  }
+}
+
+/// campbell `order:` a positive number, or a list of distinct ones: the first gives the critical
+/// speeds (checks, API margins), the others are drawn as further excitation lines with their
+/// crossings (e.g. [1, 0.5, 2] for oil whirl and twice-per-revolution excitation).
+void readOrders(const Field& f, const ExpressionEvaluator& ev, DeckRotorAnalysis& r) {
+  if (!f.isList()) {
+    r.order = f.positive(ev);
+    return;
+  }
+  const std::vector<Field> items = f.items();
+  if (items.empty() || items.size() > 10) f.fail("expected one to ten excitation orders");
+  std::vector<double> orders;
+  for (const Field& item : items) {
+    const double order = item.positive(ev);
+    if (std::find(orders.begin(), orders.end(), order) != orders.end())
+      item.fail("this order is listed twice");
+    orders.push_back(order);
+  }
+  r.order = orders.front();
+  r.furtherOrders.assign(orders.begin() + 1, orders.end());
+}
+
+}  // namespace
+
+void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
+  disk.allowOnly({"D", "bore", "width", "rho"}, "a disk");
+  const ExpressionEvaluator& ev = c.evaluator;
+  const double D = disk.require("D").positive(ev);
+  const double w = disk.require("width").positive(ev);
+  const double rho = disk.require("rho").positive(ev);
+  double d = 0;
+  if (auto bore = disk.get("bore")) {
+    d = bore->nonNegative(ev);
+    if (!(d < D)) bore->fail("the bore must be smaller than D (" + formatNumber(D) + ")");
+  }
+  // Annular disk (a hollow cylinder) about its centre: m = rho pi (D^2 - d^2) w / 4,
+  // Jp = m (D^2 + d^2) / 8, Jd = m ((D^2 + d^2) / 16 + w^2 / 12): the difference of two solid
+  // cylinders, each m R^2 / 2 about its axis and m (3 R^2 + w^2) / 12 about a diameter
+  // through its centre (the tables of mass moments of inertia in any dynamics text, e.g.
+  // Meriam & Kraige, Engineering Mechanics: Dynamics, appendix D).
+  mass.m = rho * std::numbers::pi * (D * D - d * d) * w / 4;
+  mass.Jp = mass.m * (D * D + d * d) / 8;
+  mass.Jd = mass.m * ((D * D + d * d) / 16 + w * w / 12);
+}
+
+void readRotorModel(Context& c) {
+  readBearings(c);
+  readDamping(c);
+}
+
+void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  DeckRotorAnalysis& r = a.rotor;
+  if (a.type == "rigid-body") {
+    f.allowOnly({"type", "name", "bearings", "body"}, "a rigid-body analysis");
+    if (auto body = f.get("body")) {
+      if (auto b = f.get("bearings"))
+        b->fail("give either bearings: (two spring points of the model) or body: (the rigid "
+                "body's own data), not both");
+      readTwoDofBody(c, *body, r);
+      return;
+    }
+    const Field list = f.require("bearings");
+    const std::vector<Field> items = list.items();
+    if (items.size() != 2) list.fail("expected the two spring points [A, B]");
+    for (const Field& p : items) r.bearingPoints.push_back(c.point(p).name);
+    if (r.bearingPoints[0] == r.bearingPoints[1]) items[1].fail("A and B must be different points");
+    if (!c.deck.dofs.contains(Dof::uy) || !c.deck.dofs.contains(Dof::rz))
+      f.fail("a rigid-body analysis needs uy and rz (planar, lateral or 3d model)");
+    return;
+  }
+  if (!carriesLateral(c.deck))
+    f.fail("a " + a.type + " analysis needs uy and uz: use model: {dimension: lateral}");
+  if (a.type == "rotor") {
+    f.allowOnly({"type", "name", "speed_rpm", "modes", "shift"}, "a rotor analysis");
+    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev) * kRadPerRpm;
+  } else if (a.type == "campbell") {
+    f.allowOnly({"type", "name", "modes", "shift", "from_rpm", "to_rpm", "steps", "order"},
+                "a campbell analysis");
+    r.speeds = readSpeedRange(c, f);
+    if (auto o = f.get("order")) readOrders(*o, ev, r);
+  } else if (a.type == "critical-speed-map") {
+    readCriticalSpeedMap(c, f, r);
+  } else if (a.type == "bearing-loads") {
+    readBearingLoads(c, f, r);
+  } else if (a.type == "frequency-response") {
+    f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
+                "a frequency-response analysis");
+    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev) * kRadPerRpm;
+    readResponseEnd(c, f.require("input"), r.inputPoint, r.inputDof);
+    readResponseEnd(c, f.require("output"), r.outputPoint, r.outputDof);
+    r.frequencies = readFrequencyRange(c, f);
+  } else {
+    f.allowOnly(
+        {"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response", "operating"},
+        "an unbalance analysis");
+    r.speeds = readSpeedRange(c, f);
+    readUnbalance(c, f, r);
+    if (auto o = f.get("operating")) r.operating = readOperatingRange(c, *o, r.minLogDecrement);
+  }
+  if (a.type != "unbalance" && a.type != "frequency-response") {
+    if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);
+    if (auto s = f.get("shift")) a.shift = s->number(ev);
+  }
+}
+
+void requireSymmetricAtRest(const Context& c, const Field& analysis) {
+  for (const DeckBearing& b : c.deck.rotor.bearings) {
+    if (b.loadFromGravity)  // a plain journal: cross-coupled at every speed
+      analysis.fail("bearing '" + b.name +
+                    "' is a plain journal (cross-coupled): the modal analysis needs a symmetric "
+                    "stiffness; use {type: rotor, speed_rpm: 0}");
+    const Bearing atRest =
+        b.speeds.empty() ? Bearing(0, b.table.front()) : Bearing(0, b.speeds, b.table);
+    const BearingCoefficients k = atRest.coefficientsAt(0);
+    if (k.kyz != k.kzy)
+      analysis.fail("bearing '" + b.name +
+                    "' is cross-coupled at rest (kxy != kyx): the "
+                    "modal analysis needs a symmetric stiffness; use {type: rotor, speed_rpm: 0}");
+  }
+}
+
+void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
+                          const DeckAnalysis& a) {
+  if (q.kind == Quantity::Kind::logDecrement && q.mode > a.modes)
+    f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + a.name +
+           "' computes " + std::to_string(a.modes) + " modes (set its modes:)");
+  if (q.kind != Quantity::Kind::unbalanceAmplitude) return;
+  const auto& points = a.rotor.response;
+  if (std::find(points.begin(), points.end(), q.target) == points.end())
+    f.fail("analysis '" + a.name + "' reports no response at '" + q.target + "'" +
+           didYouMean(q.target, points) + " (response: " + joinNames(points) + ")");
+  const double w = q.rpm * kRadPerRpm;
+  if (w < a.rotor.speeds.front() * (1 - 1e-12) || w > a.rotor.speeds.back() * (1 + 1e-12))
+    f.fail("speed " + formatNumber(q.rpm) + " rpm lies outside analysis '" + a.name + "' (" +
+           formatNumber(a.rotor.speeds.front() / kRadPerRpm) + " to " +
+           formatNumber(a.rotor.speeds.back() / kRadPerRpm) + " rpm)");
+}
+
+void addCheckedSpeed(Context& c, const DeckCheck& k) {
+  if (k.quantity.kind != Quantity::Kind::unbalanceAmplitude) return;
+  for (DeckAnalysis& a : c.deck.analyses) {
+    if (a.name != k.analysis) continue;
+    std::vector<double>& speeds = a.rotor.speeds;
+    const double w = k.quantity.rpm * kRadPerRpm;
+    // The same rpm -> rad/s conversion as measureRotor's, so the speed is found exactly.
+    const bool present = std::any_of(speeds.begin(), speeds.end(), [&](double s) {
+      return std::abs(s - w) <= 1e-12 * std::max(1.0, w);
+    });
+    if (!present) speeds.insert(std::upper_bound(speeds.begin(), speeds.end(), w), w);
+  }
+}
+
+}  // namespace beamrotor::reader

@@ -1,0 +1,72 @@
+// Check quantities of the rotor analyses, as read from a deck (see RotorQuantity.hpp).
+#include "problems/deck/rotor/RotorQuantity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace beamrotor {
+
+const std::vector<std::string>& rigidBodyPropertyNames() {
+  // paper_*: the same modes under the paper's names (its k1 is the higher frequency).
+  static const std::vector<std::string> names{
+      "mass", "com_x", "J_com",    "Jp",       "f1",       "f2",       "n1",      "n2",
+      "FA1",  "FB1",   "FA2",      "FB2",      "paper_f1", "paper_f2", "paper_n1", "paper_n2"};
+  return names;
+}
+
+bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
+  const std::string& head = words[0];
+  using Kind = Quantity::Kind;
+  if (head == "log_decrement" || head == "critical_speed") {
+    if (words.size() != 2) throw std::invalid_argument("expected '" + head + " N'");
+    q.kind = head == "log_decrement" ? Kind::logDecrement : Kind::criticalSpeed;
+    q.mode =
+        parseOrdinal(words[1], head == "log_decrement" ? "mode number" : "critical speed number");
+    return true;
+  }
+  if (head == "unbalance_amplitude") {
+    if (words.size() != 4 || words[2] != "at")
+      throw std::invalid_argument("expected 'unbalance_amplitude POINT at RPM'");
+    q.kind = Kind::unbalanceAmplitude;
+    q.target = words[1];
+    std::size_t used = 0;
+    try {
+      q.rpm = std::stod(words[3], &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != words[3].size() || !std::isfinite(q.rpm) || q.rpm < 0)
+      throw std::invalid_argument("speed '" + words[3] + "' must be a number of rpm >= 0");
+    return true;
+  }
+  if (head == "rigid_body") {
+    const auto& names = rigidBodyPropertyNames();
+    if (words.size() != 2 || std::find(names.begin(), names.end(), words[1]) == names.end()) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw std::invalid_argument("expected 'rigid_body PROPERTY', PROPERTY one of " + list);
+    }
+    q.kind = Kind::rigidBody;
+    q.property = words[1];
+    return true;
+  }
+  return false;
+}
+
+std::optional<std::string> rotorAnalysisType(const Quantity& q) {
+  switch (q.kind) {
+    case Quantity::Kind::logDecrement:
+      return "rotor";
+    case Quantity::Kind::criticalSpeed:
+      return "campbell";
+    case Quantity::Kind::unbalanceAmplitude:
+      return "unbalance";
+    case Quantity::Kind::rigidBody:
+      return "rigid-body";
+    default:
+      return std::nullopt;
+  }
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,265 @@
+// Deck reader, part 1b: a frame. `nodes:` are named joints with coordinates, `members:`
+// straight beams between them (one deck segment each: section, mesh, formulation), with
+// their orientation and end releases, and `points:` name places along members. Attachments
+// may also name a place on a member inline, `{member: NAME, at: FRACTION}`: those places
+// are collected here, before the attachments are read, so that every one is a point.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/parse/Suggest.hpp"
+
+namespace beamrotor::reader {
+
+namespace {
+
+/// Fractions this close to a member's end are the joint itself.
+constexpr double kEndTolerance = 1e-12;
+
+/// A vector of 2 (planar) or 3 (3d) numbers, z = 0 in planar models.
+Eigen::Vector3d coordinates(const Context& c, const Field& f, const std::string& what) {
+  const bool planar = c.deck.dimension == "planar";
+  const std::size_t n = planar ? 2 : 3;
+  if (!f.isList() || f.items().size() != n)
+    f.fail("expected " + what + " as " + (planar ? "[x, y]" : "[x, y, z]") + " in a " +
+           c.deck.dimension + " model, got " + f.describe());
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  const std::vector<Field> items = f.items();
+  for (std::size_t k = 0; k < n; ++k) x[k] = items[k].number(c.evaluator);
+  return x;
+}
+
+/// The index of the joint a field names.
+int jointIndex(const Context& c, const Field& f) {
+  const std::string name = f.name();
+  std::vector<std::string> names;
+  for (std::size_t j = 0; j < c.deck.frame->joints.size(); ++j) {
+    if (c.deck.frame->joints[j].name == name) return int(j);
+    names.push_back(c.deck.frame->joints[j].name);
+  }
+  f.fail("no node named '" + name + "'" + didYouMean(name, names) + " (nodes: " +
+         joinNames(names) + ")");
+}
+
+void readJoints(Context& c, std::vector<std::string>& pointNames) {
+  const Field block = c.root.require("nodes");
+  for (const Field& f : block.items()) {
+    f.allowOnly({"name", "at"}, "a node");
+    const Field nf = f.require("name");
+    DeckJoint j{nf.name(), coordinates(c, f.require("at"), "a node's coordinates"), f.place()};
+    claimName(nf, j.name, pointNames, "a point or node");
+    for (const DeckJoint& other : c.deck.frame->joints)
+      if ((other.x - j.x).norm() <= 1e-12 * std::max(1.0, j.x.norm()))
+        f.require("at").fail("node '" + j.name + "' lies on node '" + other.name +
+                             "'; a member joins two different places");
+    c.deck.points.push_back({j.name, 0, j.place});
+    c.deck.frame->joints.push_back(std::move(j));
+  }
+  if (c.deck.frame->joints.size() < 2) block.fail("a frame needs at least two nodes");
+}
+
+/// `z:`, `y:` (reference vectors) or `roll:` (rad) of a member in a 3d model.
+MemberOrientation readOrientation(const Context& c, const Field& f, const Eigen::Vector3d& axis) {
+  MemberOrientation o;
+  const auto z = f.get("z"), y = f.get("y"), roll = f.get("roll");
+  if (c.deck.dimension == "planar") {
+    for (const auto& given : {z, y, roll})
+      if (given)
+        given->fail("a planar frame's members bend in the x-y plane (local z = global z); "
+                    "z, y and roll orient members of 3d models");
+    return o;
+  }
+  if (z && y) y->fail("give either z or y (a reference vector for one local axis), not both");
+  if (z) o.zReference = coordinates(c, *z, "a direction");
+  if (y) o.yReference = coordinates(c, *y, "a direction");
+  if (roll) o.roll = roll->number(c.evaluator);
+  try {
+    memberAxes(axis, o);
+  } catch (const std::invalid_argument& e) {
+    (z ? *z : *y).fail(e.what());
+  }
+  return o;
+}
+
+/// `release: {start: [rz], end: [ry, rz]}`: rotations about the member's local axes.
+std::array<std::vector<Dof>, 2> readReleases(const Context& c, const Field& f) {
+  std::array<std::vector<Dof>, 2> out;
+  f.allowOnly({"start", "end"}, "a member's releases");
+  for (int end = 0; end < 2; ++end) {
+    auto side = f.get(end == 0 ? "start" : "end");
+    if (!side) continue;
+    for (const Field& item : side->itemsOrSingle()) {
+      const Dof d = c.rotation(item);
+      if (std::find(out[end].begin(), out[end].end(), d) != out[end].end())
+        item.fail(std::string(dofName(d)) + " is listed twice");
+      out[end].push_back(d);
+    }
+  }
+  return out;
+}
+
+double readMembers(Context& c) {
+  const Field block = c.root.require("members");
+  std::vector<std::string> names;
+  double elements = 0;
+  for (const Field& f : block.items()) {
+    f.allowOnly({"name", "from", "to", "section", "elements", "size", "formulation", "z", "y",
+                 "roll", "release"},
+                "a member");
+    DeckSegment s;
+    s.place = f.place();
+    const Field nf = f.require("name");
+    s.name = nf.name();
+    claimName(nf, s.name, names, "a member");
+    DeckMember m;
+    m.place = f.place();
+    m.from = jointIndex(c, f.require("from"));
+    m.to = jointIndex(c, f.require("to"));
+    if (m.from == m.to) f.require("to").fail("a member joins two different nodes");
+    const Eigen::Vector3d axis =
+        c.deck.frame->joints[m.to].x - c.deck.frame->joints[m.from].x;
+    s.length = axis.norm();
+    readSegmentMesh(c, f, s);
+    m.orientation = readOrientation(c, f, axis);
+    if (auto release = f.get("release")) m.releases = readReleases(c, *release);
+    elements += s.elementEstimate();
+    if (!(elements <= kMaxElements))
+      f.fail("the frame would have more than " + std::to_string(kMaxElements) +
+             " elements; use fewer elements or a larger size");
+    c.deck.segments.push_back(std::move(s));
+    c.deck.frame->members.push_back(std::move(m));
+  }
+  if (c.deck.frame->members.empty()) block.fail("a frame needs at least one member");
+  return elements;
+}
+
+/// The name of the place at `fraction` of member `m`: its joint at either end, otherwise
+/// "MEMBER@FRACTION" with every digit the fraction has (two places never share a name).
+std::string placeName(const Context& c, int m, double fraction) {
+  const DeckMember& member = c.deck.frame->members[m];
+  if (fraction <= kEndTolerance) return c.deck.frame->joints[member.from].name;
+  if (fraction >= 1 - kEndTolerance) return c.deck.frame->joints[member.to].name;
+  return fractionPlaceName(c.deck.segments[m].name, fraction);
+}
+
+/// Member and fraction of a place: `member:` with `at:` (fraction of its length from its
+/// `from` node, 0 to 1) or `at_length:` (m from that node).
+std::pair<int, double> memberPlace(const Context& c, const Field& f,
+                                   const std::vector<std::string>& otherKeys) {
+  std::vector<std::string> keys{"member", "at", "at_length"};
+  keys.insert(keys.end(), otherKeys.begin(), otherKeys.end());
+  f.allowOnly(keys, "a place on a member");
+  const int m = c.segment(f.require("member"));
+  const auto at = f.get("at"), length = f.get("at_length");
+  if (at && length) length->fail("give either at (a fraction) or at_length (m), not both");
+  if (!at && !length) {
+    DeckPlace place = f.place();
+    place.field = f.path() + ".at";
+    throw DeckError(f.file(), place,
+                    "missing required field 'at' (fraction of the member's length from its "
+                    "'from' node, 0 to 1; or 'at_length' in m)");
+  }
+  const double L = c.deck.segments[m].length;
+  const double value = (at ? *at : *length).number(c.evaluator);
+  const double fraction = at ? value : value / L;
+  if (!(fraction >= 0 && fraction <= 1))
+    (at ? *at : *length)
+        .fail(at ? "a fraction of the member's length lies in [0, 1], got " + formatNumber(value)
+                 : "member '" + c.deck.segments[m].name + "' is " + formatNumber(L) +
+                       " m long; at_length lies in [0, " + formatNumber(L) + "], got " +
+                       formatNumber(value));
+  return {m, fraction};
+}
+
+/// Registers the place (a point and, inside the member, a station) unless it exists.
+void addPlace(Context& c, const std::string& name, int member, double fraction,
+              const DeckPlace& place) {
+  for (const DeckPoint& p : c.deck.points)
+    if (p.name == name) return;
+  c.deck.points.push_back({name, 0, place});
+  c.deck.frame->stations.push_back({name, member, fraction});
+}
+
+void readStations(Context& c, std::vector<std::string>& pointNames, double elements) {
+  auto points = c.root.get("points");
+  if (!points || points->isNull()) return;
+  for (const Field& f : points->items()) {
+    const Field nf = f.require("name");
+    const std::string name = nf.name();
+    const auto [m, fraction] = memberPlace(c, f, {"name"});
+    claimName(nf, name, pointNames, "a point or node");
+    c.deck.points.push_back({name, 0, f.place()});
+    c.deck.frame->stations.push_back({name, m, fraction});
+    if (double(c.deck.frame->stations.size()) + elements > kMaxElements)
+      f.fail("too many points: the frame would have more than " + std::to_string(kMaxElements) +
+             " elements");
+  }
+}
+
+/// Every `at:` or `to:` written as `{member: ..., at: ...}` in the attachments and in the
+/// analyses' lists becomes a point now.
+void collectInlinePlaces(Context& c) {
+  auto visitItem = [&](const Field& item) {
+    if (!item.isMap()) return;
+    for (const char* key : {"at", "to"})
+      if (auto place = item.get(key); place && place->isMap()) {
+        const auto [m, fraction] = memberPlace(c, *place, {});
+        addPlace(c, placeName(c, m, fraction), m, fraction, place->place());
+      }
+  };
+  auto visitList = [&](const std::optional<Field>& list) {
+    if (list && list->isList())
+      for (const Field& item : list->items()) visitItem(item);
+  };
+  for (const char* block : {"supports", "springs", "contacts", "masses", "hinges", "loads",
+                            "bearings"})
+    visitList(c.root.get(block));
+  if (auto cases = c.root.get("load_cases"); cases && cases->isList())
+    for (const Field& lc : cases->items())
+      if (lc.isMap()) visitList(lc.get("loads"));
+  if (auto analyses = c.root.get("analyses"); analyses && analyses->isList())
+    for (const Field& a : analyses->items())
+      if (a.isMap())
+        for (const char* list : {"initial", "loads", "record", "unbalance"}) visitList(a.get(list));
+}
+
+}  // namespace
+
+void readFrame(Context& c) {
+  if (c.deck.dimension == "lateral")
+    c.root.require(c.root.has("members") ? "members" : "nodes")
+        .fail("a frame is a planar or 3d model (model: {dimension: planar} or 3d); lateral "
+              "models are rotors along x (segments:)");
+  c.deck.frame.emplace();
+  std::vector<std::string> pointNames;
+  readJoints(c, pointNames);
+  const double elements = readMembers(c);
+  readStations(c, pointNames, elements);
+  collectInlinePlaces(c);
+}
+
+std::string fractionPlaceName(const std::string& owner, double fraction) {
+  char digits[32];
+  std::snprintf(digits, sizeof digits, "%.17g", fraction);
+  return owner + "@" + digits;
+}
+
+void addMemberStation(Context& c, int member, double fraction, const DeckPlace& place) {
+  if (fraction <= kEndTolerance || fraction >= 1 - kEndTolerance) return;
+  addPlace(c, placeName(c, member, fraction), member, fraction, place);
+}
+
+const DeckPoint& memberPoint(const Context& c, const Field& f) {
+  if (!c.deck.frame)
+    f.fail("a place on a member needs a frame (nodes: and members:); name a point instead");
+  const auto [m, fraction] = memberPlace(c, f, {});
+  const std::string name = placeName(c, m, fraction);
+  for (const DeckPoint& p : c.deck.points)
+    if (p.name == name) return p;
+  f.fail("this place on member '" + c.deck.segments[m].name +
+         "' is not one beamrotor collected; name it under points: instead");
+}
+
+}  // namespace beamrotor::reader

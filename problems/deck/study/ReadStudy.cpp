@@ -1,0 +1,327 @@
+// Deck reader, part 3: what to compute and what to compare: analyses, checks and the sweep.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FieldUnits.hpp"
+#include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/parse/Suggest.hpp"
+
+namespace beamrotor::reader {
+
+namespace {
+
+/// Modal analyses need inertia somewhere: a material density or a lumped mass.
+bool hasMass(const Deck& deck) {
+  if (!deck.masses.empty()) return true;
+  for (const DeckSegment& s : deck.segments)
+    if (s.section->material.rho > 0) return true;
+  return false;
+}
+
+/// The items of a list of analyses or checks, at most kMaxAnalyses of them.
+std::vector<Field> boundedItems(const Field& block, const std::string& what) {
+  std::vector<Field> items = block.items();
+  if (items.size() > std::size_t(kMaxAnalyses))
+    items[kMaxAnalyses].fail("a deck may have at most " + std::to_string(kMaxAnalyses) + " " +
+                             what);
+  return items;
+}
+
+void readAnalyses(Context& c) {
+  auto block = c.root.get("analyses");
+  if (!block || block->isNull()) {
+    // No analyses listed: statics, the one every deck supports.
+    DeckAnalysis statics;
+    statics.type = statics.name = "static";
+    statics.modes = 0;
+    statics.place = c.root.place();
+    c.deck.analyses.push_back(std::move(statics));
+    return;
+  }
+  std::vector<std::string> names;
+  for (const Field& f : boundedItems(*block, "analyses")) {
+    if (!f.isMap()) f.fail("expected a map such as {type: static}, got " + f.describe());
+    DeckAnalysis a;
+    a.place = f.place();
+    a.type = f.require("type").choice(
+        {"static", "modal", "buckling", "transient", "rotor", "campbell", "unbalance",
+         "rigid-body", "frequency-response", "crank-slider", "critical-speed-map",
+         "bearing-loads"});
+    if (a.type == "static") {
+      f.allowOnly({"type", "name", "second_order"}, "a static analysis");
+      if (auto s = f.get("second_order")) {
+        a.secondOrder = s->boolean();
+        if (a.secondOrder && !c.deck.contacts.empty())
+          s->fail("second-order statics does not support contacts: remove them or the option");
+        if (a.secondOrder && !c.deck.loadCases.empty())
+          s->fail("second-order results do not superpose, so load cases and combinations "
+                  "cannot be combined from them: give the loads of one case under `loads:`");
+      }
+    } else if (a.type == "buckling") {
+      f.allowOnly({"type", "name", "modes", "reversed"}, "a buckling analysis");
+      a.modes = 4;
+      if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
+      if (auto r = f.get("reversed")) a.reversed = r->boolean();
+      if (!c.deck.contacts.empty())
+        f.fail("a buckling analysis needs a linear reference state: remove the contacts");
+    } else if (a.type == "transient") {
+      a.transient = readTransient(c, f);
+      if (!hasMass(c.deck))
+        f.fail("a transient analysis needs mass: give the materials a density rho or add masses");
+    } else if (a.type == "crank-slider") {
+      readCrankAnalysis(c, f, a);
+    } else if (isRotorAnalysis(a.type)) {
+      readRotorAnalysis(c, f, a);
+      if (a.type != "unbalance" && !a.rotor.body && !hasMass(c.deck))
+        f.fail("a " + a.type +
+               " analysis needs mass: give the materials a density rho or add masses");
+    } else {
+      requireSymmetricAtRest(c, f);
+      f.allowOnly({"type", "name", "modes", "shift", "prestressed"}, "a modal analysis");
+      if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
+      if (auto p = f.get("prestressed")) {
+        a.prestressed = p->boolean();
+        if (a.prestressed && !c.deck.contacts.empty())
+          p->fail("prestressed modes need a linear loaded state: remove the contacts");
+      }
+      if (auto s = f.get("shift")) a.shift = s->number(c.evaluator);
+      if (!hasMass(c.deck))
+        f.fail("a modal analysis needs mass: give the materials a density rho or add masses");
+    }
+    auto n = f.get("name");
+    a.name = n ? n->name() : a.type;
+    if (std::find(names.begin(), names.end(), a.name) != names.end())
+      (n ? *n : f)
+          .fail("there is already an analysis named '" + a.name +
+                "'; give each analysis its own name");
+    names.push_back(a.name);
+    c.deck.analyses.push_back(std::move(a));
+  }
+  if (c.deck.analyses.empty()) block->fail("the list of analyses is empty");
+}
+
+/// A displacement quantity's side: a side needs a beam there, and a rotation a hinge releases
+/// has two values (one per side), so it must name the side.
+void resolveSide(const Deck& deck, const Quantity& q, const Field& f) {
+  const std::string rotation(dofName(q.dof));
+  const auto point = std::find_if(deck.points.begin(), deck.points.end(),
+                                  [&](const DeckPoint& p) { return p.name == q.target; });
+  if (deck.frame && q.side != Quantity::Side::node)
+    f.fail("in a frame, 'left' and 'right' have no meaning; release rotations per member end "
+           "(members: release:) and ask for a point's own rotation");
+  double length = 0;
+  for (const DeckSegment& s : deck.segments) length += s.length;
+  const double slack = 1e-9 * length;
+  const bool left = !deck.segments.empty() && point->at > slack;
+  const bool right = !deck.segments.empty() && point->at < length - slack;
+  if (q.side == Quantity::Side::left && !left)
+    f.fail("point '" + q.target + "' has no beam on its left" +
+           (right ? " (it starts the line): ask for its rotation on the right" : ""));
+  if (q.side == Quantity::Side::right && !right)
+    f.fail("point '" + q.target + "' has no beam on its right" +
+           (left ? " (it ends the line): ask for its rotation on the left" : ""));
+  if (q.side != Quantity::Side::node || !isRotation(q.dof)) return;
+  for (const DeckHinge& h : deck.hinges)
+    if (h.point == q.target &&
+        std::find(h.released.begin(), h.released.end(), q.dof) != h.released.end()) {
+      std::string sides;
+      if (left) sides = "'displacement " + q.target + " " + rotation + " left'";
+      if (right)
+        sides += (sides.empty() ? "'" : " or '") + std::string("displacement ") + q.target + " " +
+                 rotation + " right'";
+      f.fail("point '" + q.target + "' is a hinge releasing " + rotation +
+             ": the beam ends there turn independently and the point has no " + rotation +
+             " of its own; ask for " + sides);
+    }
+}
+
+/// Fails at `f` unless `name` is one of `names` (of `what`s, e.g. "point").
+void requireNamed(const Field& f, const std::string& name, const std::vector<std::string>& names,
+                  const std::string& what) {
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    f.fail("no " + what + " named '" + name + "'" + didYouMean(name, names) + " (" + what +
+           "s: " + joinNames(names) + ")");
+}
+
+/// `paper:` (a source's printed figure that the reference is not) and `reason:` (why they
+/// differ) come together: a differing figure without its reason would only puzzle a reader.
+void readPaperFigure(const Context& c, const Field& f, DeckCheck& k) {
+  const auto paper = f.get("paper");
+  const auto reason = f.get("reason");
+  if (paper && !reason)
+    paper->fail("a paper figure the reference differs from needs its reason: add reason:");
+  if (reason && !paper)
+    reason->fail("reason: explains a paper: figure; give the paper's value as paper:");
+  if (!paper) return;
+  k.paper = paper->number(c.evaluator, referenceUnit(k.quantity));
+  k.reason = reason->label(300);
+}
+
+void readChecks(Context& c) {
+  auto block = c.root.get("checks");
+  if (!block || block->isNull()) return;
+  std::vector<std::string> names;
+  for (const Field& f : boundedItems(*block, "checks")) {
+    f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis", "case",
+                 "paper", "reason"},
+                "a check");
+    DeckCheck k;
+    k.place = f.place();
+    const Field nameField = f.require("name");
+    k.name = nameField.label(80);
+    claimName(nameField, k.name, names, "a check");
+    const Field qf = f.require("quantity");
+    try {
+      k.quantity = parseQuantity(qf.text());
+    } catch (const std::invalid_argument& e) {
+      qf.fail(e.what());
+    }
+    if (auto when = f.get("when")) {
+      k.condition = when->text();
+      k.applicable = when->number(c.evaluator) != 0;
+    }
+    k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
+    addCheckedSpeed(c, k);
+    if (auto lc = f.get("case")) {
+      k.loadCase = lc->text();
+      bool known = false;
+      for (const DeckLoadCase& x : c.deck.loadCases) known = known || x.name == k.loadCase;
+      for (const DeckCombination& x : c.deck.combinations) known = known || x.name == k.loadCase;
+      if (!known)
+        lc->fail("no load case or combination '" + k.loadCase +
+                 "' (load_cases: and combinations: define them)");
+      if (k.quantity.analysisType() != "static")
+        lc->fail("case: names a load case, which only a static quantity reads");
+    }
+    k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
+    const Field tol = f.require("tolerance");
+    k.tolerance = tol.positive(c.evaluator);
+    readPaperFigure(c, f, k);
+    c.deck.checks.push_back(std::move(k));
+  }
+}
+
+/// The sweep's values; evaluated with the deck's parameters before the sweep changes them.
+void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
+  auto f = c.root.get("sweep");
+  if (!f || f->isNull()) return;
+  f->allowOnly({"parameter", "values", "from", "to", "steps", "refine"}, "the sweep");
+  DeckSweep s;
+  s.place = f->place();
+  const Field pf = f->require("parameter");
+  s.parameter = pf.text();
+  std::vector<std::string> names;
+  for (const auto& [name, v] : c.deck.parameters) names.push_back(name);
+  if (std::find(names.begin(), names.end(), s.parameter) == names.end())
+    pf.fail("no parameter '" + s.parameter + "'" + didYouMean(s.parameter, names) +
+            " (parameters: " + joinNames(names) + ")");
+  const FieldUnit unit{c.evaluator.dimensionOf(s.parameter)};  // SI, as the parameter's value
+  auto values = f->get("values");
+  auto from = f->get("from"), to = f->get("to"), steps = f->get("steps");
+  if (values && (from || to || steps))
+    values->fail("give either values or from/to/steps, not both");
+  if (values) {
+    const std::vector<Field> items = values->items();
+    if (items.empty()) values->fail("the list of values is empty");
+    if (int(items.size()) > kMaxSweepValues)
+      values->fail("at most " + std::to_string(kMaxSweepValues) + " values");
+    for (const Field& v : items) s.values.push_back(v.number(c.evaluator, unit));
+  } else {
+    const double a = f->require("from").number(c.evaluator, unit);
+    const double b = f->require("to").number(c.evaluator, unit);
+    const int n = f->require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
+    // steps intervals, n + 1 values; the last is `to` exactly, not a rounded sum.
+    for (int i = 0; i < n; ++i) s.values.push_back(a + (b - a) * i / n);
+    s.values.push_back(b);
+  }
+  // A parameter fixed on the command line turns the sweep into a single run.
+  if (findOverride(overrides, s.parameter)) return;
+  c.deck.sweep = std::move(s);
+}
+
+}  // namespace
+
+std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
+                            const std::optional<Field>& analysisField, bool applicable) {
+  const Deck& deck = c.deck;
+  // 1. The analysis: named, or the first of the right type.
+  const DeckAnalysis* analysis = nullptr;
+  if (analysisField) {
+    const std::string name = analysisField->name();
+    std::vector<std::string> names;
+    for (const DeckAnalysis& a : deck.analyses) {
+      if (a.name == name) analysis = &a;
+      names.push_back(a.name);
+    }
+    if (!analysis)
+      analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
+                          " (analyses: " + joinNames(names) + ")");
+    if (!q.readsFrom(analysis->type))
+      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" + name +
+                          "' is " + analysis->type);
+  } else {
+    for (const DeckAnalysis& a : deck.analyses)
+      if (!analysis && q.readsFrom(a.type)) analysis = &a;
+    if (!analysis)
+      f.fail("'" + q.text + "' needs a " + q.analysisType() +
+             " analysis; add {type: " + q.analysisType() + "} to analyses");
+  }
+
+  // 2. The names and dofs it refers to.
+  if (q.kind == Quantity::Kind::reaction) {
+    std::vector<std::string> names;
+    const DeckSupport* support = nullptr;
+    for (const DeckSupport& s : deck.supports) {
+      if (s.name == q.target) support = &s;
+      names.push_back(s.name);
+    }
+    if (!support)
+      f.fail("no support named '" + q.target + "'" + didYouMean(q.target, names) +
+             " (supports: " + joinNames(names) + ")");
+    std::vector<std::string> held;
+    bool holds = false;
+    for (const auto& [d, v] : support->dofs) {
+      held.emplace_back(dofName(d));
+      holds = holds || d == q.dof;
+    }
+    if (!holds)
+      f.fail("support '" + q.target + "' does not hold " + std::string(dofName(q.dof)) +
+             " (it holds " + joinNames(held) + "), so its reaction there is zero by definition");
+  }
+  if (q.kind == Quantity::Kind::displacement) {
+    std::vector<std::string> names;
+    for (const DeckPoint& p : deck.points) names.push_back(p.name);
+    requireNamed(f, q.target, names, "point");
+    if (!deck.dofs.contains(q.dof))
+      f.fail(std::string(dofName(q.dof)) + " is not a dof of a " + deck.dimension + " model (" +
+             c.carriedNames() + ")");
+    resolveSide(deck, q, f);
+  }
+  if (q.kind == Quantity::Kind::memberForce || q.kind == Quantity::Kind::memberDeflection) {
+    if (!deck.frame)
+      f.fail("member quantities need a frame (nodes: and members:); this deck is a line");
+    std::vector<std::string> names;
+    for (const DeckSegment& s : deck.segments) names.push_back(s.name);
+    requireNamed(f, q.target, names, "member");
+  }
+  if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
+    f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
+  if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
+  if ((q.kind == Quantity::Kind::frequency || q.kind == Quantity::Kind::bucklingFactor) &&
+      q.mode > analysis->modes)
+    f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
+           "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
+  resolveRotorQuantity(c, q, f, *analysis);
+  resolveCrankQuantity(q, f, *analysis);
+  return analysis->name;
+}
+
+void readStudy(Context& c, const std::vector<ParameterOverride>& overrides) {
+  readAnalyses(c);
+  readChecks(c);
+  readSweep(c, overrides);
+}
+
+}  // namespace beamrotor::reader

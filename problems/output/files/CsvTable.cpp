@@ -1,0 +1,102 @@
+// CSV tables (see CsvTable.hpp): RFC 4180 quoting, shortest exact decimals.
+#include "problems/output/files/CsvTable.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "problems/output/files/FileWriting.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';  // RFC 4180: a quote inside a quoted field is doubled
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string header(const CsvColumn& c) {
+  const std::string text = c.unit.empty() ? c.name : c.name + " [" + c.unit + "]";
+  const bool plain = text.find_first_of(",\"\n") == std::string::npos;
+  return plain ? text : quoted(text);
+}
+
+}  // namespace
+
+std::string exactDecimal(double x) {
+  if (x == 0) x = 0.0;  // "-0" (from negating a zero force) reads as a sign error to a person
+  char buffer[32];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  if (error != std::errc()) throw std::logic_error("to_chars failed");
+  return std::string(buffer, end);
+}
+
+CsvTable::CsvTable(std::string title, std::vector<CsvColumn> columns)
+    : title_(std::move(title)), columns_(std::move(columns)) {}
+
+void CsvTable::addRow(std::vector<CsvCell> row) {
+  if (row.size() != columns_.size())
+    throw std::invalid_argument(title_ + ": a row of " + std::to_string(row.size()) +
+                                " cells for " + std::to_string(columns_.size()) + " columns");
+  for (std::size_t c = 0; c < row.size(); ++c)
+    if (const double* x = std::get_if<double>(&row[c]); x && !std::isfinite(*x))
+      throw std::runtime_error(title_ + ": column '" + columns_[c].name + "', row " +
+                               std::to_string(rows_.size() + 1) + " would be " + exactDecimal(*x) +
+                               "; only finite numbers are written");
+  rows_.push_back(std::move(row));
+}
+
+bool CsvTable::hasColumn(std::string_view name) const {
+  for (const CsvColumn& c : columns_)
+    if (c.name == name) return true;
+  return false;
+}
+
+int CsvTable::column(std::string_view name) const {
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    if (columns_[c].name == name) return int(c) + 1;
+  throw std::out_of_range(title_ + " has no column '" + std::string(name) + "'");
+}
+
+std::vector<double> CsvTable::numbers(std::string_view name) const {
+  const int c = column(name) - 1;
+  std::vector<double> values;
+  values.reserve(rows_.size());
+  for (const auto& row : rows_) {
+    if (const double* x = std::get_if<double>(&row[c]))
+      values.push_back(*x);
+    else if (const long long* n = std::get_if<long long>(&row[c]))
+      values.push_back(double(*n));
+    else
+      throw std::invalid_argument(title_ + ": column '" + std::string(name) + "' holds text");
+  }
+  return values;
+}
+
+void CsvTable::write(const std::filesystem::path& file) const {
+  writeFile(file, [&](std::ostream& out) { writeTo(out); });
+}
+
+void CsvTable::writeTo(std::ostream& out) const {
+  for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << header(columns_[c]);
+  out << '\n';
+  for (const auto& row : rows_) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c) out << ',';
+      if (const double* x = std::get_if<double>(&row[c]))
+        out << exactDecimal(*x);
+      else if (const long long* n = std::get_if<long long>(&row[c]))
+        out << *n;
+      else
+        out << quoted(std::get<std::string>(row[c]));
+    }
+    out << '\n';
+  }
+}
+
+}  // namespace beamrotor

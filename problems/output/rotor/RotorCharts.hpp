@@ -1,0 +1,41 @@
+// Charts of the rotor analyses, as gnuplot scripts over their CSV tables: the Campbell
+// diagram and the unbalance response (amplitude and phase against speed).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "problems/output/files/CsvTable.hpp"
+#include "problems/output/files/Gnuplot.hpp"
+#include "problems/output/rotor/OperatingBand.hpp"
+
+namespace beamrotor {
+
+/// Whirl frequency (Hz) of each line against speed (rpm) from a campbellTable in csvFile,
+/// coloured by whirl (forward, backward, planar), an order x speed line dashed per order (the
+/// first, that of the critical speeds, darkest), and the crossings
+/// from a criticalSpeedsTable in criticalFile marked and labelled in rpm; the
+/// operating band shaded when given.
+ChartScript campbellDiagram(const std::string& caption, const std::string& chartName,
+                            const CsvTable& campbell, const std::string& csvFile,
+                            const CsvTable& critical, const std::string& criticalFile,
+                            const std::vector<double>& orders,
+                            const std::optional<OperatingBand>& band = std::nullopt);
+
+/// Two panels against speed (rpm) from an unbalanceTable in csvFile: the orbit semi-major
+/// axis (um, log scale) and the phase of uy (deg, unwrapped: continuous through the criticals,
+/// a lag negative), one curve per response point; the operating band shaded when given.
+ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
+                                   const CsvTable& response, const std::string& csvFile,
+                                   const std::vector<std::string>& points,
+                                   const std::optional<OperatingBand>& band = std::nullopt);
+
+/// Two panels against frequency (Hz) from a frequencyResponseTable in csvFile: the receptance
+/// magnitude (log scale) and its phase (deg, unwrapped as on the unbalance chart); `what` names
+/// it ("B uy / A uy").
+ChartScript frequencyResponseDiagram(const std::string& caption, const std::string& chartName,
+                                     const CsvTable& response, const std::string& csvFile,
+                                     const std::string& what);
+
+}  // namespace beamrotor

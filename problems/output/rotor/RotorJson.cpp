@@ -1,0 +1,331 @@
+// results.json entries of the rotor analyses (see RotorJson.hpp).
+#include "problems/output/rotor/RotorJson.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "fem/rotor/RotorStability.hpp"
+#include "problems/output/files/FileNames.hpp"
+#include "problems/output/rotor/RotorFileNames.hpp"
+#include "problems/output/rotor/RotorTables.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+constexpr double kDegrees = 180 / std::numbers::pi;
+
+/// A number, or null where it is infinite by definition (a real eigenvalue's decrement).
+Json finiteOrNull(double x) {
+  return std::isfinite(x) ? Json(x) : Json(nullptr);
+}
+
+Json modesJson(const std::string& stem, const RotorModesResult& r) {
+  Json frequencies = Json::array(), modes = Json::array(), vtus = Json::array(),
+       orbits = Json::array();
+  for (std::size_t m = 0; m < r.modes.size(); ++m) {
+    const RotorMode& mode = r.modes[m];
+    frequencies.push_back(mode.dampedFrequencyHz);
+    modes.push_back({{"mode", m + 1},
+                     {"frequency_hz", mode.dampedFrequencyHz},
+                     {"natural_frequency_hz", mode.naturalFrequencyHz},
+                     {"damping_ratio", mode.dampingRatio},
+                     {"log_decrement", finiteOrNull(mode.logDecrement)},
+                     {"whirl", std::string(whirlName(mode.whirl))},
+                     {"whirl_ratio", mode.whirlRatio},
+                     {"eigenvalue", {mode.eigenvalue.real(), mode.eigenvalue.imag()}}});
+    vtus.push_back(modeVtu(stem, int(m) + 1));
+    orbits.push_back(orbitVtu(stem, int(m) + 1));
+  }
+  return {{"speed_rpm", rpmOf(r.speed)},
+          {"frequencies_hz", frequencies},
+          {"modes", modes},
+          {"time_s", r.time.total},
+          {"files",
+           {{"modes_csv", modesCsv(stem)},
+            {"pvd", collectionPvd(stem)},
+            {"vtu", vtus},
+            {"orbits_vtu", orbits},
+            {"orbits_csv", orbitsCsv(stem)},
+            {"orbits_chart", orbitsChart(stem) + ".svg"}}}};
+}
+
+Json campbellJson(const std::string& stem, const RotorOutcome& r) {
+  const CampbellResult& c = *r.campbell;
+  Json speeds = Json::array(), lines = Json::array(), critical = Json::array();
+  for (double s : c.speeds) speeds.push_back(rpmOf(s));
+  for (std::size_t l = 0; l < c.lines.size(); ++l) {
+    Json f = Json::array(), zeta = Json::array(), delta = Json::array(), whirl = Json::array();
+    for (const RotorMode& m : c.lines[l]) {
+      f.push_back(m.dampedFrequencyHz);
+      zeta.push_back(m.dampingRatio);
+      delta.push_back(finiteOrNull(m.logDecrement));
+      whirl.push_back(std::string(whirlName(m.whirl)));
+    }
+    lines.push_back({{"line", l + 1},
+                     {"frequencies_hz", f},
+                     {"damping_ratio", zeta},
+                     {"log_decrement", delta},
+                     {"whirl", whirl},
+                     {"mac", c.mac[l]}});
+  }
+  const auto crossing = [](const CriticalSpeed& k) {
+    return Json{{"rpm", k.rpm},
+                {"speed_rad_s", k.speed},
+                {"frequency_hz", k.frequencyHz},
+                {"line", k.line + 1},
+                {"damping_ratio", k.dampingRatio},
+                {"whirl", std::string(whirlName(k.whirl))},
+                {"order", k.order}};
+  };
+  for (const CriticalSpeed& k : r.criticalSpeeds) critical.push_back(crossing(k));
+  // Further excitation orders: their crossings, apart from the critical speeds checks read.
+  Json further = Json::array();
+  for (double order : r.furtherOrders) {
+    Json crossings = Json::array();
+    for (const CriticalSpeed& k : r.furtherCriticalSpeeds)
+      if (k.order == order) crossings.push_back(crossing(k));
+    further.push_back({{"order", order}, {"crossings", crossings}});
+  }
+  // The least damped line's smallest log decrement over the sweep (what decides stability),
+  // an undamped mode's round-off written 0 as the API 684 stability verdict reads it; null
+  // for a mode that grows without oscillating (-inf).
+  Json smallest = nullptr;
+  if (const auto least = leastDamped(c))
+    smallest = {{"value", finiteOrNull(least->logDecrement)},
+                {"rpm", rpmOf(c.speeds[least->speed])},
+                {"line", least->line + 1}};
+  Json onset = nullptr;
+  if (r.onset)
+    onset = {{"rpm", r.onset->rpm},
+             {"speed_rad_s", r.onset->speed},
+             {"frequency_hz", r.onset->frequencyHz},
+             {"whirl", std::string(whirlName(r.onset->whirl))},
+             {"evaluations", r.onset->evaluations}};
+  return {{"order", r.order},
+          {"speeds_rpm", speeds},
+          {"instability_onset", onset},
+          {"smallest_log_decrement", smallest},
+          {"lines", lines},
+          {"critical_speeds", critical},
+          {"further_orders", further},
+          {"symbolic_analyses", c.symbolicAnalyses},
+          {"time_s", c.time.total},
+          {"files",
+           {{"campbell_csv", campbellCsv(stem)},
+            {"critical_speeds_csv", criticalSpeedsCsv(stem)},
+            {"chart", campbellChart(stem) + ".svg"},
+            {"stability_chart", stabilityChart(stem) + ".svg"}}}};
+}
+
+/// API 684 reading: the operating range and each response point's peaks.
+Json api684Json(const std::string& stem, const RotorOutcome& r) {
+  Json points = Json::object();
+  bool pass = true;
+  for (std::size_t k = 0; k < r.peaks.size(); ++k) {
+    Json peaks = Json::array();
+    for (const ResponsePeak& p : r.peaks[k]) {
+      pass = pass && p.pass;
+      peaks.push_back({{"rpm", rpmOf(p.speed)},
+                       {"amplitude_m", p.amplitude},
+                       {"half_power_rpm", {rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower)}},
+                       {"amplification_factor", p.amplificationFactor},
+                       {"amplification_method", amplificationMethodName(p.method)},
+                       {"modal_damping_ratio", p.dampingRatio},
+                       {"overlapping", p.overlapping},
+                       {"required_margin_percent", p.requiredMargin},
+                       {"actual_margin_percent", p.actualMargin},
+                       {"pass", p.pass}});
+    }
+    points[r.responsePoints[k]] = peaks;
+  }
+  Json stability(nullptr);
+  if (r.stability) {
+    const OperatingStability& s = *r.stability;
+    pass = pass && s.pass;
+    stability = {{"min_log_decrement_required", s.required},
+                 {"smallest_log_decrement", finiteOrNull(s.smallest)},
+                 {"at_rpm", rpmOf(s.speed)},
+                 {"frequency_hz", s.frequencyHz},
+                 {"whirl", std::string(whirlName(s.whirl))},
+                 {"onset_rpm", s.onset ? Json(s.onset->rpm) : Json(nullptr)},
+                 {"pass", s.pass}};
+  }
+  return {{"operating_rpm", {rpmOf(r.operating->minimum), rpmOf(r.operating->maximum)}},
+          {"peaks", points},
+          {"stability", stability},
+          {"pass", pass},
+          {"csv", api684Csv(stem)}};
+}
+
+Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
+  const UnbalanceResult& u = *r.unbalance;
+  Json speeds = Json::array(), response = Json::object();
+  for (double s : u.speeds) speeds.push_back(rpmOf(s));
+  for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
+    Json major = Json::array(), ay = Json::array(), az = Json::array(), py = Json::array(),
+         pz = Json::array();
+    std::size_t peak = 0;
+    for (std::size_t s = 0; s < u.speeds.size(); ++s) {
+      const Orbit& o = u.orbits[k][s];
+      major.push_back(o.major());
+      ay.push_back(std::abs(o.uy));
+      az.push_back(std::abs(o.uz));
+      py.push_back(std::arg(o.uy) * kDegrees);
+      pz.push_back(std::arg(o.uz) * kDegrees);
+      if (o.major() > u.orbits[k][peak].major()) peak = s;
+    }
+    response[r.responsePoints[k]] = {
+        {"amplitude_m", major},
+        {"uy_amplitude_m", ay},
+        {"uz_amplitude_m", az},
+        {"uy_phase_deg", py},
+        {"uz_phase_deg", pz},
+        {"peak", {{"amplitude_m", u.orbits[k][peak].major()}, {"rpm", rpmOf(u.speeds[peak])}}}};
+  }
+  return {
+      {"speeds_rpm", speeds},
+      {"response", response},
+      {"api684", r.operating ? api684Json(stem, r) : Json(nullptr)},
+      {"time_s", u.time.total},
+      {"files", {{"unbalance_csv", unbalanceCsv(stem)}, {"chart", unbalanceChart(stem) + ".svg"}}}};
+}
+
+Json frequencyResponseJson(const std::string& stem, const RotorOutcome& r) {
+  const FrequencyResponseResult& f = *r.frequencyResponse;
+  Json hz = Json::array(), magnitude = Json::array(), phase = Json::array();
+  for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
+    hz.push_back(f.frequencies[i] / (2 * std::numbers::pi));
+    magnitude.push_back(std::abs(f.receptance[i]));
+    phase.push_back(std::arg(f.receptance[i]) * kDegrees);
+  }
+  return {{"speed_rpm", rpmOf(f.speed)},
+          {"input", r.frfInput},
+          {"output", r.frfOutput},
+          {"frequencies_hz", hz},
+          {"magnitude", magnitude},
+          {"phase_deg", phase},
+          {"time_s", f.time.total},
+          {"files",
+           {{"frf_csv", frequencyResponseCsv(stem)},
+            {"chart", frequencyResponseChart(stem) + ".svg"}}}};
+}
+
+Json criticalSpeedMapJson(const std::string& stem, const RotorOutcome& r) {
+  const CriticalSpeedMap& m = *r.map;
+  const auto rpms = [](const std::vector<double>& speeds) {
+    Json out = Json::array();
+    for (double s : speeds) out.push_back(rpmOf(s));
+    return out;
+  };
+  Json stiffness = Json::array(), speeds = Json::array(), bearings = Json::array();
+  for (std::size_t i = 0; i < m.stiffness.size(); ++i) {
+    stiffness.push_back(m.stiffness[i]);
+    speeds.push_back(rpms(m.speeds[i]));
+  }
+  const auto crossings = [](const std::vector<MapCrossing>& list) {
+    Json out = Json::array();
+    for (const MapCrossing& c : list)
+      out.push_back({{"critical_speed", c.line + 1}, {"rpm", rpmOf(c.speed)}, {"stiffness", c.stiffness}});
+    return out;
+  };
+  for (const BearingStiffnessCurve& b : r.mapBearings)
+    bearings.push_back({{"bearing", b.name},
+                        {"speeds_rpm", rpms(b.speeds)},
+                        {"kxx", b.kxx},
+                        {"kyy", b.kyy},
+                        {"kxx_crossings", crossings(b.kxxCrossings)},
+                        {"kyy_crossings", crossings(b.kyyCrossings)}});
+  Json files = {{"map_csv", criticalSpeedMapCsv(stem)},
+                {"chart", criticalSpeedMapChart(stem) + ".svg"}};
+  if (!r.mapBearings.empty()) {
+    files["bearings_csv"] = mapBearingsCsv(stem);
+    files["crossings_csv"] = mapCrossingsCsv(stem);
+  }
+  return {{"whirl", "non-rotating (gyroscopic moments neglected)"},
+          {"stiffness", stiffness},
+          {"critical_speeds_rpm", speeds},
+          {"pinned_rpm", rpms(m.pinned)},
+          {"free_free_rpm", rpms(m.freeFree)},
+          {"bearings", bearings},
+          {"time_s", r.mapTime},
+          {"files", files}};
+}
+
+Json bearingLoadsJson(const std::string& stem, const RotorOutcome& r) {
+  const GravityLoads& g = *r.gravityLoads;
+  Json bearings = Json::object();
+  for (std::size_t i = 0; i < g.bearings.size(); ++i) {
+    const BearingForce& b = g.bearings[i];
+    bearings[r.bearingNames.at(i)] = {
+        {"x", b.x}, {"fy", b.fy}, {"fz", b.fz}, {"load", std::hypot(b.fy, b.fz)}};
+  }
+  const int worst = g.largestSag();
+  const bool any = worst >= 0;
+  return {{"bearing_support", r.rigidBearings ? "rigid" : "elastic"},
+          {"weight", {g.weight.x(), g.weight.y(), g.weight.z()}},
+          {"bearings", bearings},
+          {"largest_sag",
+           {{"x", any ? g.x[worst] : 0.0},
+            {"uy", any ? g.uy[worst] : 0.0},
+            {"uz", any ? g.uz[worst] : 0.0},
+            {"magnitude", any ? std::hypot(g.uy[worst], g.uz[worst]) : 0.0}}},
+          {"time_s", r.loadsTime},
+          {"files", {{"bearing_loads_csv", bearingLoadsCsv(stem)}, {"sag_csv", sagCsv(stem)}}}};
+}
+
+Json rigidBodyJson(const RigidBodyOutcome& r) {
+  const FormeShaftRigid& s = r.rigid;
+  Json modes = Json::array();
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const FormeShaftMode& m = r.modes[i];
+    modes.push_back({{"mode", i + 1},
+                     {"paper_name", std::string(paperModeName(int(i)))},
+                     {"frequency_hz", m.k / (2 * std::numbers::pi)},
+                     {"k_rad_s", m.k},
+                     {"kind", std::string(formeModeKindName(m.kind))},
+                     {"z", m.z},
+                     {"phi", m.phi},
+                     {"n", finiteOrNull(m.n)},
+                     {"FA", m.FA},
+                     {"FB", m.FB},
+                     {"inertia_force", m.inertiaForce},
+                     {"inertia_moment", m.inertiaMoment}});
+  }
+  return {{"rigid_body",
+           {{"mass", r.body.m},
+            {"com_x", r.body.xG},
+            {"J_com", r.body.J},
+            {"Jp", r.body.Jp},
+            {"bearing_x", {{r.points[0], r.x[0]}, {r.points[1], r.x[1]}}},
+            {"stiffness", {{r.points[0], r.stiffness[0]}, {r.points[1], r.stiffness[1]}}}}},
+          {"two_dof",
+           {{"l1", s.l1},
+            {"l2", s.l2},
+            {"a", s.a()},
+            {"b", s.b()},
+            {"d", s.d()},
+            {"rho2", s.rho2()},
+            {"decoupled", r.modes[0].kind != FormeModeKind::coupled},
+            {"modes", modes}}}};
+}
+
+}  // namespace
+
+Json rotorJson(const AnalysisOutcome& a) {
+  const RotorOutcome& r = *a.rotor;
+  const std::string stem = fileStem(a.name);
+  Json out = {{"type", a.type}, {"name", a.name}};
+  Json body = r.modes       ? modesJson(stem, *r.modes)
+              : r.campbell  ? campbellJson(stem, r)
+              : r.unbalance ? unbalanceJson(stem, r)
+              : r.frequencyResponse ? frequencyResponseJson(stem, r)
+              : r.map       ? criticalSpeedMapJson(stem, r)
+              : r.gravityLoads ? bearingLoadsJson(stem, r)
+                            : rigidBodyJson(*r.rigidBody);
+  for (auto& [key, value] : body.items()) out[key] = value;
+  return out;
+}
+
+}  // namespace beamrotor

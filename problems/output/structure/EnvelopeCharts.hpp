@@ -1,0 +1,22 @@
+// The envelope of a member's stress resultants over the load combinations, as a chart: one
+// panel per resultant the frame carries, the band between its largest and smallest value
+// along the member, each extreme marked with the combination that governs it.
+#pragma once
+
+#include <string>
+
+#include "problems/output/files/CsvTable.hpp"
+#include "problems/output/files/Gnuplot.hpp"
+
+namespace beamrotor {
+
+/// `<stem>_envelope_<member>`: the chart of one member's envelope.
+std::string envelopeChart(const std::string& stem, const std::string& member);
+
+/// The envelope of memberEnvelopeTable `table`, written to csvFile: panels for the resultants
+/// that are not zero along the whole member (N, Vy, Mz in a planar frame), in kN and kN m
+/// against the distance s (m) from the member's start.
+ChartScript memberEnvelopeChart(const std::string& caption, const std::string& chartName,
+                                const CsvTable& table, const std::string& csvFile);
+
+}  // namespace beamrotor

@@ -1,0 +1,44 @@
+// What a static analysis reports per member of a frame (Model::members): a CSV table along
+// each member in member axes, and in results.json each resultant's exact largest and
+// smallest value with its place, the member's deflection from its chord, and the largest
+// displacement of the whole structure (fem/assembly/MemberExtrema.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fem/assembly/MemberEnvelope.hpp"
+#include "fem/model/Model.hpp"
+#include "problems/output/files/CsvTable.hpp"
+#include "problems/output/JsonWriter.hpp"
+#include "problems/output/structure/LineSampling.hpp"
+
+namespace beamrotor {
+
+/// `<stem>_member_<name>.csv`.
+std::string memberCsv(const std::string& stem, const std::string& member);
+
+/// One row per station of the member's elements (from `stations`, sampleStatics), in order
+/// from its start: s (m from its start), x y z (m, global place), ux uy uz (m), rx ry rz (rad,
+/// global), N Vy Vz (N), T My Mz (N m) in member axes, stress (Pa), element, and the member's
+/// local y and z axes in global components (ey_x .. ez_z; the charts draw diagrams along them).
+CsvTable memberTable(const std::string& title, const Model& model,
+                     const std::vector<int>& elements, const std::vector<StaticStation>& stations);
+
+/// `<stem>_envelope_<name>.csv`.
+std::string envelopeCsv(const std::string& stem, const std::string& member);
+
+/// The envelope over the combinations along one member (memberEnvelope), one row per place:
+/// s (m from its start), element, then for each of N Vy Vz T My Mz its largest value, the
+/// combination giving it, its smallest value and the combination giving that.
+CsvTable memberEnvelopeTable(const std::string& title, const std::vector<EnvelopeStation>& stations,
+                             const std::vector<std::string>& solutionNames);
+
+/// {"NAME": {"length", "elements", "from", "to", "N": {"max": {value, s, x, y, z, element},
+/// "min": {...}}, ... "Mz": ..., "chord_deflection": {value, s, x, y, z, element}, "csv"}}.
+Json membersJson(const Model& model, const NodalField& displacement, const std::string& stem);
+
+/// {value, x, y, z}: the largest translation anywhere and where (undeformed place).
+Json maxDisplacementJson(const Model& model, const NodalField& displacement);
+
+}  // namespace beamrotor

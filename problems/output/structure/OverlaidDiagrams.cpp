@@ -1,0 +1,23 @@
+#include "problems/output/structure/OverlaidDiagrams.hpp"
+
+#include "problems/output/structure/Charts.hpp"
+
+namespace beamrotor {
+
+void drawOverlaidDiagrams(const std::filesystem::path& dir, const std::string& caption,
+                          const std::string& chartName, const SweepResult& sweep,
+                          const std::vector<const CsvTable*>& fields,
+                          const std::vector<std::string>& csvFiles) {
+  if (sweep.values.size() > kOverlaidValues || fields.size() != sweep.values.size() ||
+      csvFiles.size() != fields.size())
+    return;
+  std::vector<FieldSeries> series;
+  std::vector<const Model*> models;
+  for (const RunResult& run : sweep.runs) models.push_back(run.model.get());
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    series.push_back(
+        {fields[i], csvFiles[i], sweep.parameter + " = " + exactDecimal(sweep.values[i])});
+  drawChart(dir, staticDiagrams(caption, chartName, series, commonPointMarkers(models)));
+}
+
+}  // namespace beamrotor

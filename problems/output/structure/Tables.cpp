@@ -1,0 +1,94 @@
+// The CSV tables of one run (see Tables.hpp).
+#include "problems/output/structure/Tables.hpp"
+
+#include <optional>
+
+#include "fem/assembly/Recovery.hpp"
+#include "problems/output/structure/ModeShapes.hpp"
+
+namespace beamrotor {
+
+CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticStation>& stations) {
+  CsvTable table(title, {{"x", "m"},
+                         {"ux", "m"},
+                         {"uy", "m"},
+                         {"uz", "m"},
+                         {"rx", "rad"},
+                         {"ry", "rad"},
+                         {"rz", "rad"},
+                         {"N", "N"},
+                         {"Vy", "N"},
+                         {"Vz", "N"},
+                         {"T", "N m"},
+                         {"My", "N m"},
+                         {"Mz", "N m"},
+                         {"stress", "Pa"},
+                         {"shear", "Pa"},
+                         {"stress_top", "Pa"},
+                         {"stress_bottom", "Pa"},
+                         {"shear_y", "Pa"},
+                         {"shear_z", "Pa"},
+                         {"element", ""}});
+  for (const StaticStation& st : stations) {
+    const auto& u = st.displacement;
+    const SectionForces& f = st.forces;
+    table.addRow({st.place.x, u[0], u[1], u[2], u[3], u[4], u[5], f.N, f.Vy, f.Vz, f.T, f.My, f.Mz,
+                  st.stress, st.shear, st.fibres.top, st.fibres.bottom, st.shearY, st.shearZ,
+                  (long long)st.place.element});
+  }
+  return table;
+}
+
+CsvTable modesTable(const std::string& title, const ModalResult& modal) {
+  std::vector<CsvColumn> columns{{"mode", ""}, {"frequency", "Hz"}, {"description", ""}};
+  for (int k = 0; k < 3; ++k)
+    columns.push_back({"effective_mass_" + std::string(dofName(kAllDofs[k])), "kg"});
+  for (int k = 0; k < 3; ++k)
+    columns.push_back({"effective_mass_ratio_" + std::string(dofName(kAllDofs[k])), ""});
+  for (Dof d : kAllDofs) columns.push_back({"energy_share_" + std::string(dofName(d)), ""});
+
+  CsvTable table(title, columns);
+  for (std::size_t m = 0; m < modal.modes.size(); ++m) {
+    const Mode& mode = modal.modes[m];
+    std::vector<CsvCell> row{(long long)(m + 1), mode.frequencyHz, mode.description};
+    for (int k = 0; k < 3; ++k) row.push_back(mode.effectiveMass[k]);
+    for (int k = 0; k < 3; ++k)
+      row.push_back(modal.totalMass[k] > 0 ? mode.effectiveMass[k] / modal.totalMass[k] : 0.0);
+    for (double share : mode.energyShare) row.push_back(share);
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
+std::string modeShapeColumn(int mode, Dof dof) {
+  return "mode" + std::to_string(mode) + "_" + std::string(dofName(dof));
+}
+
+CsvTable modeShapesTable(const std::string& title, const Model& model, const ModalResult& modal) {
+  // Translations of every mode; a torsional mode also its rotation (largest 1), which is
+  // what its chart draws.
+  std::vector<CsvColumn> columns{{"x", "m"}};
+  std::vector<NodalField> shapes;
+  std::vector<std::optional<Dof>> rotations;
+  for (std::size_t m = 0; m < modal.modes.size(); ++m) {
+    shapes.push_back(displayModeShape(model, modal.modes[m].shape));
+    for (int k = 0; k < 3; ++k) columns.push_back({modeShapeColumn(int(m) + 1, kAllDofs[k]), ""});
+    const Dof charted = chartedDof(model, modal.modes[m].shape);
+    rotations.push_back(isRotation(charted) ? std::optional<Dof>(charted) : std::nullopt);
+    if (rotations.back()) columns.push_back({modeShapeColumn(int(m) + 1, charted), ""});
+  }
+  CsvTable table(title, columns);
+  for (const LinePlace& p : placesAlongLine(model, kIntervalsPerElement)) {
+    const auto& line = static_cast<const LineElement&>(*model.elements()[p.element]);
+    std::vector<CsvCell> row{p.x};
+    for (std::size_t m = 0; m < shapes.size(); ++m) {
+      const auto u = displacementAlong(line, shapes[m], p.s, SpanLoad::none);
+      row.insert(row.end(), {u[0], u[1], u[2]});
+      if (rotations[m]) row.push_back(u[dofIndex(*rotations[m])]);
+    }
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
+}  // namespace beamrotor
