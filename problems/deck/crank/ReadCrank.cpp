@@ -14,6 +14,8 @@ namespace beamrotor::reader {
 namespace {
 
 constexpr double kStandardGravity = 9.80665;  // m/s^2 (CGPM 1901): weight -> mass
+/// cranks_deg: an angle whose bare number is in degrees.
+constexpr FieldUnit kDegreeField{dim::angle, std::numbers::pi / 180};
 
 crank::DriveMasses readDriveMasses(const Context& c, const Field& f, const crank::Geometry& g) {
   f.allowOnly({"eccentric", "eccentricity", "slider", "rod", "rod_com_to_crank_pin",
@@ -21,14 +23,14 @@ crank::DriveMasses readDriveMasses(const Context& c, const Field& f, const crank
               "the masses of a crank-slider");
   const ExpressionEvaluator& ev = c.evaluator;
   crank::DriveMasses m;
-  m.eccentricMass = f.has("eccentric") ? f.require("eccentric").nonNegative(ev) : 0;
-  m.eccentricity = f.has("eccentricity") ? f.require("eccentricity").nonNegative(ev) : 0;
-  m.sliderMass = f.require("slider").nonNegative(ev);
-  m.rod.mass = f.require("rod").nonNegative(ev);
+  m.eccentricMass = f.has("eccentric") ? f.require("eccentric").nonNegative(ev, dim::mass) : 0;
+  m.eccentricity = f.has("eccentricity") ? f.require("eccentricity").nonNegative(ev, dim::length) : 0;
+  m.sliderMass = f.require("slider").nonNegative(ev, dim::mass);
+  m.rod.mass = f.require("rod").nonNegative(ev, dim::mass);
   const Field big = f.require("rod_com_to_crank_pin");
-  m.rod.comToBigEnd = big.nonNegative(ev);
-  m.rod.comToSmallEnd = f.require("rod_com_to_slider_pin").nonNegative(ev);
-  if (auto j = f.get("rod_residual_inertia")) m.rod.residualInertia = j->number(ev);
+  m.rod.comToBigEnd = big.nonNegative(ev, dim::length);
+  m.rod.comToSmallEnd = f.require("rod_com_to_slider_pin").nonNegative(ev, dim::length);
+  if (auto j = f.get("rod_residual_inertia")) m.rod.residualInertia = j->number(ev, dim::inertia);
   try {
     crank::reduce(m, g);
   } catch (const std::invalid_argument& e) {
@@ -62,28 +64,28 @@ void readCrankAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
   const ExpressionEvaluator& ev = c.evaluator;
   DeckCrankSlider d;
   const Field rf = f.require("r");
-  const double r = rf.positive(ev);
+  const double r = rf.positive(ev, dim::length);
   const Field lf = f.require("l");
-  const double l = lf.positive(ev);
+  const double l = lf.positive(ev, dim::length);
   if (!(r < l))
     lf.fail("the rod must be longer than the crank radius (r = " + formatNumber(r) +
             " m), or the crank cannot turn through a revolution");
   d.geometry = crank::makeGeometry(r, l);
-  d.speed = f.require("speed_rpm").positive(ev) * std::numbers::pi / 30;
+  d.speed = f.require("speed_rpm").positive(ev, kRpmField) * std::numbers::pi / 30;
   d.phases = {0.0};
   if (auto cranks = f.get("cranks_deg")) {
     d.phases.clear();
     for (const Field& p : cranks->items())
-      d.phases.push_back(p.number(ev) * std::numbers::pi / 180);
+      d.phases.push_back(p.number(ev, kDegreeField) * std::numbers::pi / 180);
     if (d.phases.empty()) cranks->fail("the list of cranks is empty");
     if (d.phases.size() > 64) cranks->fail("at most 64 cranks");
   }
   if (auto s = f.get("steps")) d.steps = s->integer(ev, 8, 100000);
   if (auto m = f.get("masses")) d.masses = readDriveMasses(c, *m, d.geometry);
-  if (auto p = f.get("plunger_diameter")) d.plungerDiameter = p->positive(ev);
+  if (auto p = f.get("plunger_diameter")) d.plungerDiameter = p->positive(ev, dim::length);
   if (auto list = f.get("lambdas")) {
     for (const Field& x : list->items()) {
-      const double lambda = x.number(ev);
+      const double lambda = x.number(ev, dim::none);
       if (!(lambda > 0 && lambda < 1)) x.fail("lambda = r/l must lie between 0 and 1");
       if (!d.lambdas.empty() && !(lambda > d.lambdas.back()))
         x.fail("the lambdas must be in ascending order");
@@ -103,14 +105,15 @@ void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   const auto mass = f.get("mass");
   if (weight && mass) mass->fail("give the weight (N) or the mass (kg), not both");
   if (!weight && !mass) f.fail("missing required field 'weight' (N) or 'mass' (kg)");
-  b.mass = weight ? weight->positive(ev) / kStandardGravity : mass->positive(ev);
-  b.radiusOfGyration = f.require("radius_of_gyration").positive(ev);
-  b.l1 = f.require("l1").nonNegative(ev);
-  b.l2 = f.require("l2").nonNegative(ev);
+  b.mass = weight ? weight->positive(ev, dim::force) / kStandardGravity
+                : mass->positive(ev, dim::mass);
+  b.radiusOfGyration = f.require("radius_of_gyration").positive(ev, dim::length);
+  b.l1 = f.require("l1").nonNegative(ev, dim::length);
+  b.l2 = f.require("l2").nonNegative(ev, dim::length);
   if (!(b.l1 + b.l2 > 0))
     f.require("l2").fail("the springs must not both sit at the centre of mass");
-  b.C1 = f.require("C1").positive(ev);
-  b.C2 = f.require("C2").positive(ev);
+  b.C1 = f.require("C1").positive(ev, dim::stiffness);
+  b.C2 = f.require("C2").positive(ev, dim::stiffness);
   r.body = b;
 }
 

@@ -180,10 +180,6 @@ Amount Field::amount(const ExpressionEvaluator& evaluator) const {
   }
 }
 
-double Field::number(const ExpressionEvaluator& evaluator) const {
-  return number(evaluator, fieldUnitAt(path_));
-}
-
 double Field::number(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {
   const Amount a = amount(evaluator);
   if (a.anyDimension || a.dimension.dimensionless()) return a.si;  // bare: in the field's unit
@@ -196,18 +192,10 @@ double Field::number(const ExpressionEvaluator& evaluator, const FieldUnit& unit
   return a.si / unit.bareSize;
 }
 
-double Field::positive(const ExpressionEvaluator& evaluator) const {
-  return positive(evaluator, fieldUnitAt(path_));
-}
-
 double Field::positive(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {
   const double v = number(evaluator, unit);
   if (!(v > 0)) fail("must be positive, got " + formatNumber(v));
   return v;
-}
-
-double Field::nonNegative(const ExpressionEvaluator& evaluator) const {
-  return nonNegative(evaluator, fieldUnitAt(path_));
 }
 
 double Field::nonNegative(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {
@@ -217,7 +205,7 @@ double Field::nonNegative(const ExpressionEvaluator& evaluator, const FieldUnit&
 }
 
 int Field::integer(const ExpressionEvaluator& evaluator, int lowest, int highest) const {
-  const double v = number(evaluator);
+  const double v = number(evaluator, dim::none);
   if (v != std::round(v)) fail("must be a whole number, got " + formatNumber(v));
   if (v < lowest || v > highest)
     fail("must lie between " + std::to_string(lowest) + " and " + std::to_string(highest) +

@@ -10,7 +10,7 @@
 
 #include "problems/deck/parse/DeckError.hpp"
 #include "problems/deck/parse/DeckTree.hpp"
-#include "problems/deck/FieldUnits.hpp"
+#include "problems/deck/parse/Units.hpp"
 
 namespace beamrotor {
 
@@ -67,21 +67,18 @@ class Field {
   /// A name (letters, digits, '_', '-', '.'), as used for points, sections, supports.
   std::string name() const;
   /// The value of a number or expression, with or without a unit, in the field's bare unit
-  /// (`unit`; by default the one FieldUnits.hpp lists for this field's path). A value without
-  /// a unit (dimensionless) is taken in the bare unit; one with a unit must have the field's
+  /// `unit`, which every read states (dim::none for a ratio or a count). A value without a
+  /// unit (dimensionless) is taken in the bare unit; one with a unit must have the field's
   /// dimension. Fails with the evaluator's reason, or "E expects a pressure or stress (Pa), got
   /// a length (m)".
-  double number(const ExpressionEvaluator& evaluator) const;
   double number(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const;
   /// The value of a number or expression of any dimension (a parameter's).
   Amount amount(const ExpressionEvaluator& evaluator) const;
   /// number() that must be > 0.
-  double positive(const ExpressionEvaluator& evaluator) const;
   double positive(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const;
   /// number() that must be >= 0.
-  double nonNegative(const ExpressionEvaluator& evaluator) const;
   double nonNegative(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const;
-  /// number() that must be a whole number in [lowest, highest].
+  /// A dimensionless number() that must be a whole number in [lowest, highest]: a count.
   int integer(const ExpressionEvaluator& evaluator, int lowest, int highest) const;
   /// true/false (also yes/no, on/off).
   bool boolean() const;

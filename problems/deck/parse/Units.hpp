@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,7 +51,22 @@ inline constexpr Dimension angularSpeed = Dimension::of(0, 0, -1, 1);
 inline constexpr Dimension velocity = Dimension::of(1, 0, -1, 0);
 inline constexpr Dimension acceleration = Dimension::of(1, 0, -2, 0);
 inline constexpr Dimension lengthPerAngle = Dimension::of(1, 0, 0, -1);
+inline constexpr Dimension viscosity = Dimension::of(-1, 1, -1, 0);  // dynamic, Pa s
 }  // namespace dim
+
+/// What a numeric field holds, stated where the field is read: its dimension and the unit a
+/// bare number in it means (SI, but rpm for the *_rpm fields). A field's value is returned in
+/// that unit.
+struct FieldUnit {
+  // Implicit, so that a read states its dimension alone: `f.positive(ev, dim::length)`.
+  constexpr FieldUnit(const Dimension& d = dim::none, double bare = 1)
+      : dimension(d), bareSize(bare) {}
+  Dimension dimension;
+  double bareSize = 1;  ///< the bare unit in SI units (2 pi / 60 for rpm)
+};
+
+/// A *_rpm field: an angular speed whose bare number is in revolutions per minute.
+inline constexpr FieldUnit kRpmField{dim::angularSpeed, 2 * std::numbers::pi / 60};
 
 /// "a pressure (Pa)", "a length (m)", "a dimensionless number", or for an unnamed one its SI
 /// unit: "a quantity in m^3 kg".

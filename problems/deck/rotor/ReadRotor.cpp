@@ -33,9 +33,10 @@ BearingCoefficients readCoefficients(const Context& c, const Field& f,
   f.allowOnly(keys, what);
   const ExpressionEvaluator& ev = c.evaluator;
   auto value = [&](const char* key, bool direct) {
+    const FieldUnit unit = key[0] == 'k' ? dim::stiffness : dim::damping;
     auto v = f.get(key);
     if (!v) return 0.0;
-    return direct ? v->nonNegative(ev) : v->number(ev);
+    return direct ? v->nonNegative(ev, unit) : v->number(ev, unit);
   };
   BearingCoefficients k;
   k.kyy = value("kxx", true);
@@ -64,21 +65,21 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
               "a plain-journal bearing");
   const ExpressionEvaluator& ev = c.evaluator;
   PlainJournal j;
-  j.diameter = f.require("D").positive(ev);
+  j.diameter = f.require("D").positive(ev, dim::length);
   const Field length = f.require("L");
-  j.length = length.positive(ev);
+  j.length = length.positive(ev, dim::length);
   if (j.length > j.diameter)
     length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " +
                 formatNumber(j.length / j.diameter) + ")");
   const Field clearance = f.require("c");
-  j.clearance = clearance.positive(ev);
+  j.clearance = clearance.positive(ev, dim::length);
   if (!(j.clearance < 0.01 * j.diameter))
     clearance.fail("a radial clearance of " + formatNumber(j.clearance) +
                    " m is not small against D (c/D must be below 0.01; typical 0.001)");
-  j.viscosity = f.require("mu").positive(ev);
+  j.viscosity = f.require("mu").positive(ev, dim::viscosity);
   const Field load = f.require("load");
   b.loadFromGravity = load.isScalar() && load.text() == "gravity";
-  if (!b.loadFromGravity) j.load = load.positive(ev);
+  if (!b.loadFromGravity) j.load = load.positive(ev, dim::force);
   b.speeds = readSpeedRange(c, f);
   if (!(b.speeds.front() > 0))
     f.require("from_rpm").fail("a plain journal bearing has no film at rest: from_rpm must be > 0 "
@@ -122,7 +123,7 @@ void readBearings(Context& c) {
       if (rows.empty()) table->fail("the bearing table is empty");
       for (const Field& row : rows) {
         const Field speed = row.require("speed_rpm");
-        const double w = speed.nonNegative(c.evaluator) * kRadPerRpm;
+        const double w = speed.nonNegative(c.evaluator, kRpmField) * kRadPerRpm;
         if (!b.speeds.empty() && !(w > b.speeds.back()))
           speed.fail("speeds of a bearing table must be strictly ascending");
         b.speeds.push_back(w);
@@ -139,17 +140,17 @@ void readDamping(Context& c) {
   auto f = c.root.get("damping");
   if (!f || f->isNull()) return;
   f->allowOnly({"alpha", "beta"}, "damping");
-  if (auto a = f->get("alpha")) c.deck.rotor.damping.alpha = a->nonNegative(c.evaluator);
-  if (auto b = f->get("beta")) c.deck.rotor.damping.beta = b->nonNegative(c.evaluator);
+  if (auto a = f->get("alpha")) c.deck.rotor.damping.alpha = a->nonNegative(c.evaluator, dim::frequency);
+  if (auto b = f->get("beta")) c.deck.rotor.damping.beta = b->nonNegative(c.evaluator, dim::time);
 }
 
-/// `fromKey`, `toKey` and steps: steps intervals from `from` to `to` (the last value `to`
-/// exactly), each times `scale`, the SI value of the keys' unit.
+/// `fromKey`, `toKey` (in `unit`) and steps: steps intervals from `from` to `to` (the last
+/// value `to` exactly), each times `scale`, the SI value of the keys' bare unit.
 std::vector<double> readRange(const Context& c, const Field& f, const std::string& fromKey,
-                              const std::string& toKey, double scale) {
-  const double from = f.require(fromKey).nonNegative(c.evaluator);
+                              const std::string& toKey, const FieldUnit& unit, double scale) {
+  const double from = f.require(fromKey).nonNegative(c.evaluator, unit);
   const Field toField = f.require(toKey);
-  const double to = toField.number(c.evaluator);
+  const double to = toField.number(c.evaluator, unit);
   if (!(to > from)) toField.fail(toKey + " must exceed " + fromKey + " (" + formatNumber(from) + ")");
   const int n = f.require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
   std::vector<double> values;
@@ -160,7 +161,7 @@ std::vector<double> readRange(const Context& c, const Field& f, const std::strin
 
 /// from_rpm, to_rpm, steps: spin speeds (rad/s).
 std::vector<double> readSpeedRange(const Context& c, const Field& f) {
-  return readRange(c, f, "from_rpm", "to_rpm", kRadPerRpm);
+  return readRange(c, f, "from_rpm", "to_rpm", kRpmField, kRadPerRpm);
 }
 
 /// input / output of a frequency response: {at: POINT, dof: uy | uz | ry | rz}.
@@ -176,7 +177,7 @@ void readResponseEnd(const Context& c, const Field& f, std::string& point, Dof& 
 
 /// from_hz, to_hz, steps: excitation frequencies (rad/s); from_hz may be 0.
 std::vector<double> readFrequencyRange(const Context& c, const Field& f) {
-  return readRange(c, f, "from_hz", "to_hz", 2 * std::numbers::pi);
+  return readRange(c, f, "from_hz", "to_hz", dim::frequency, 2 * std::numbers::pi);
 }
 
 /// operating: {min_rpm, max_rpm, min_log_decrement}: the machine's operating speed range,
@@ -184,11 +185,11 @@ std::vector<double> readFrequencyRange(const Context& c, const Field& f) {
 OperatingRange readOperatingRange(const Context& c, const Field& f, double& minLogDecrement) {
   if (!f.isMap()) f.fail("expected {min_rpm: RPM, max_rpm: RPM}, got " + f.describe());
   f.allowOnly({"min_rpm", "max_rpm", "min_log_decrement"}, "an operating speed range");
-  if (auto d = f.get("min_log_decrement")) minLogDecrement = d->nonNegative(c.evaluator);
+  if (auto d = f.get("min_log_decrement")) minLogDecrement = d->nonNegative(c.evaluator, dim::none);
   OperatingRange range;
-  range.minimum = f.require("min_rpm").positive(c.evaluator) * kRadPerRpm;
+  range.minimum = f.require("min_rpm").positive(c.evaluator, kRpmField) * kRadPerRpm;
   const Field top = f.require("max_rpm");
-  range.maximum = top.positive(c.evaluator) * kRadPerRpm;
+  range.maximum = top.positive(c.evaluator, kRpmField) * kRadPerRpm;
   if (!(range.maximum > range.minimum))
     top.fail("max_rpm must exceed min_rpm (" + formatNumber(range.minimum / kRadPerRpm) + ")");
   return range;
@@ -201,8 +202,8 @@ void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
     DeckUnbalance d;
     d.place = u.place();
     d.point = c.point(u.require("at")).name;
-    d.me = u.require("me").positive(c.evaluator);
-    if (auto p = u.get("phase")) d.phase = p->number(c.evaluator);
+    d.me = u.require("me").positive(c.evaluator, dim::massLength);
+    if (auto p = u.get("phase")) d.phase = p->number(c.evaluator, dim::angle);
     r.unbalance.push_back(std::move(d));
   }
   for (const Field& p : f.require("response").itemsOrSingle()) {
@@ -225,9 +226,9 @@ void readCriticalSpeedMap(const Context& c, const Field& f, DeckRotorAnalysis& r
     f.fail("a critical-speed map puts its stiffness in place of the deck's bearings: add "
            "bearings");
   const ExpressionEvaluator& ev = c.evaluator;
-  const double from = f.require("from_k").positive(ev);
+  const double from = f.require("from_k").positive(ev, dim::stiffness);
   const Field toField = f.require("to_k");
-  const double to = toField.positive(ev);
+  const double to = toField.positive(ev, dim::stiffness);
   if (!(to > from)) toField.fail("to_k must exceed from_k (" + formatNumber(from) + " N/m)");
   const int n = f.require("points").integer(ev, 2, kMaxSweepValues);
   for (int i = 0; i < n; ++i)
@@ -243,7 +244,7 @@ void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   if (c.deck.rotor.bearings.empty())
     f.fail("a bearing-loads analysis reports the loads of the deck's bearings: add bearings");
   double g = 9.81;
-  if (auto v = f.get("g")) g = v->positive(c.evaluator);
+  if (auto v = f.get("g")) g = v->positive(c.evaluator, dim::acceleration);
   std::string direction = "-y";
   if (auto d = f.get("direction")) direction = d->choice({"-y", "y", "-z", "z"});
   const double sign = direction[0] == '-' ? -1 : 1;
@@ -251,7 +252,7 @@ void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   if (auto b = f.get("bearings")) r.rigidBearings = b->choice({"rigid", "elastic"}) == "rigid";
   if (auto s = f.get("speed_rpm")) {
     if (r.rigidBearings) s->fail("speed_rpm sets the elastic bearings' coefficients: add bearings: elastic");
-    r.speed = s->nonNegative(c.evaluator) * kRadPerRpm;
+    r.speed = s->nonNegative(c.evaluator, kRpmField) * kRadPerRpm;
   }
 }
 
@@ -260,14 +261,14 @@ void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
 /// crossings (e.g. [1, 0.5, 2] for oil whirl and twice-per-revolution excitation).
 void readOrders(const Field& f, const ExpressionEvaluator& ev, DeckRotorAnalysis& r) {
   if (!f.isList()) {
-    r.order = f.positive(ev);
+    r.order = f.positive(ev, dim::none);
     return;
   }
   const std::vector<Field> items = f.items();
   if (items.empty() || items.size() > 10) f.fail("expected one to ten excitation orders");
   std::vector<double> orders;
   for (const Field& item : items) {
-    const double order = item.positive(ev);
+    const double order = item.positive(ev, dim::none);
     if (std::find(orders.begin(), orders.end(), order) != orders.end())
       item.fail("this order is listed twice");
     orders.push_back(order);
@@ -281,12 +282,12 @@ void readOrders(const Field& f, const ExpressionEvaluator& ev, DeckRotorAnalysis
 void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
   disk.allowOnly({"D", "bore", "width", "rho"}, "a disk");
   const ExpressionEvaluator& ev = c.evaluator;
-  const double D = disk.require("D").positive(ev);
-  const double w = disk.require("width").positive(ev);
-  const double rho = disk.require("rho").positive(ev);
+  const double D = disk.require("D").positive(ev, dim::length);
+  const double w = disk.require("width").positive(ev, dim::length);
+  const double rho = disk.require("rho").positive(ev, dim::density);
   double d = 0;
   if (auto bore = disk.get("bore")) {
-    d = bore->nonNegative(ev);
+    d = bore->nonNegative(ev, dim::length);
     if (!(d < D)) bore->fail("the bore must be smaller than D (" + formatNumber(D) + ")");
   }
   // Annular disk (a hollow cylinder) about its centre: m = rho pi (D^2 - d^2) w / 4,
@@ -329,7 +330,7 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
     f.fail("a " + a.type + " analysis needs uy and uz: use model: {dimension: lateral}");
   if (a.type == "rotor") {
     f.allowOnly({"type", "name", "speed_rpm", "modes", "shift"}, "a rotor analysis");
-    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev) * kRadPerRpm;
+    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev, kRpmField) * kRadPerRpm;
   } else if (a.type == "campbell") {
     f.allowOnly({"type", "name", "modes", "shift", "from_rpm", "to_rpm", "steps", "order"},
                 "a campbell analysis");
@@ -342,7 +343,7 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
   } else if (a.type == "frequency-response") {
     f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
                 "a frequency-response analysis");
-    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev) * kRadPerRpm;
+    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev, kRpmField) * kRadPerRpm;
     readResponseEnd(c, f.require("input"), r.inputPoint, r.inputDof);
     readResponseEnd(c, f.require("output"), r.outputPoint, r.outputDof);
     r.frequencies = readFrequencyRange(c, f);
@@ -356,7 +357,7 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
   }
   if (a.type != "unbalance" && a.type != "frequency-response") {
     if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);
-    if (auto s = f.get("shift")) a.shift = s->number(ev);
+    if (auto s = f.get("shift")) a.shift = s->number(ev, dim::frequency);  // on s = -d + i w
   }
 }
 

@@ -81,7 +81,7 @@ void readSupports(Context& c) {
         if (!c.deck.dofs.contains(d))
           value.fail(key + " is not a dof of a " + c.deck.dimension + " model (" +
                      c.carriedNames() + ")");
-        record(value, d, value.number(c.evaluator));
+        record(value, d, value.number(c.evaluator, unitForDof(d, dim::length, dim::angle)));
       }
     if (s.dofs.empty())
       f.fail("support '" + s.name +
@@ -188,9 +188,9 @@ void readMasses(Context& c) {
       continue;
     }
     const Field mf = f.require("m");
-    m.m = mf.nonNegative(c.evaluator);
-    if (auto J = f.get("Jp")) m.Jp = J->nonNegative(c.evaluator);
-    if (auto J = f.get("Jd")) m.Jd = J->nonNegative(c.evaluator);
+    m.m = mf.nonNegative(c.evaluator, dim::mass);
+    if (auto J = f.get("Jp")) m.Jp = J->nonNegative(c.evaluator, dim::inertia);
+    if (auto J = f.get("Jd")) m.Jd = J->nonNegative(c.evaluator, dim::inertia);
     if (m.m == 0 && m.Jp == 0 && m.Jd == 0) mf.fail("a mass needs m, Jp or Jd positive");
     c.deck.masses.push_back(std::move(m));
   }
@@ -252,10 +252,10 @@ void readDistributedValues(const Context& c, const Field& f, DeckLoad& l) {
       if (ends.size() != 2)
         v->fail("a varying load gives two values, [at its start, at its end] (N/m), got " +
                 std::to_string(ends.size()));
-      l.q[k] = ends[0].number(c.evaluator);
-      l.qEnd[k] = ends[1].number(c.evaluator);
+      l.q[k] = ends[0].number(c.evaluator, dim::forcePerLength);
+      l.qEnd[k] = ends[1].number(c.evaluator, dim::forcePerLength);
     } else {
-      l.q[k] = l.qEnd[k] = v->number(c.evaluator);
+      l.q[k] = l.qEnd[k] = v->number(c.evaluator, dim::forcePerLength);
     }
     any = true;
   }
@@ -295,7 +295,7 @@ void readLoadedPart(Context& c, const Field& f, DeckLoad& l) {
                    " (m), not both");
     if (!fraction && !length) return whole;
     const Field& given = fraction ? *fraction : *length;
-    const double value = given.number(c.evaluator);
+    const double value = given.number(c.evaluator, fraction ? dim::none : dim::length);
     if (fraction) {
       if (!(value >= 0 && value <= 1))
         given.fail("a fraction of the length lies in [0, 1], got " + formatNumber(value));
@@ -345,7 +345,7 @@ void readLoadList(Context& c, const Field& list, std::vector<DeckLoad>& out) {
         if (!c.deck.dofs.contains(d))
           v->fail(components[k] + " acts on " + std::string(dofName(d)) + ", not a dof of a " +
                   c.deck.dimension + " model (" + c.carriedNames() + ")");
-        l.components.emplace_back(d, v->number(ev));
+        l.components.emplace_back(d, v->number(ev, unitForDof(d, dim::force, dim::moment)));
       }
       if (l.components.empty())
         f.fail("a point load needs at least one of fx, fy, fz (N) or mx, my, mz (N m)");
@@ -372,7 +372,7 @@ void readLoadList(Context& c, const Field& list, std::vector<DeckLoad>& out) {
       f.allowOnly({"type", "segment", "member", "g"}, "a self-weight load");
       l.kind = DeckLoad::Kind::selfWeight;
       l.segments = loadedSegments(c, f);
-      if (auto g = f.get("g")) l.g = g->positive(ev);
+      if (auto g = f.get("g")) l.g = g->positive(ev, dim::acceleration);
       for (int i = 0; i < int(c.deck.segments.size()); ++i) {
         const bool loaded = l.segments.empty() ||
                             std::find(l.segments.begin(), l.segments.end(), i) != l.segments.end();
@@ -423,7 +423,7 @@ void readLoadCases(Context& c) {
         const bool known = std::any_of(c.deck.loadCases.begin(), c.deck.loadCases.end(),
                                        [&](const DeckLoadCase& lc) { return lc.name == key; });
         if (!known) value.fail("no load case '" + key + "' (load_cases: defines the names)");
-        k.factors.emplace_back(key, value.number(c.evaluator));
+        k.factors.emplace_back(key, value.number(c.evaluator, dim::none));
       }
       if (k.factors.empty()) f.require("factors").fail("a combination needs at least one factor");
       c.deck.combinations.push_back(std::move(k));

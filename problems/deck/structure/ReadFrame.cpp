@@ -18,8 +18,10 @@ namespace {
 /// Fractions this close to a member's end are the joint itself.
 constexpr double kEndTolerance = 1e-12;
 
-/// A vector of 2 (planar) or 3 (3d) numbers, z = 0 in planar models.
-Eigen::Vector3d coordinates(const Context& c, const Field& f, const std::string& what) {
+/// A vector of 2 (planar) or 3 (3d) numbers, z = 0 in planar models: a node's place (lengths)
+/// or a direction (plain numbers, whose size does not matter).
+Eigen::Vector3d coordinates(const Context& c, const Field& f, const std::string& what,
+                            const Dimension& d) {
   const bool planar = c.deck.dimension == "planar";
   const std::size_t n = planar ? 2 : 3;
   if (!f.isList() || f.items().size() != n)
@@ -27,7 +29,7 @@ Eigen::Vector3d coordinates(const Context& c, const Field& f, const std::string&
            c.deck.dimension + " model, got " + f.describe());
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   const std::vector<Field> items = f.items();
-  for (std::size_t k = 0; k < n; ++k) x[k] = items[k].number(c.evaluator);
+  for (std::size_t k = 0; k < n; ++k) x[k] = items[k].number(c.evaluator, d);
   return x;
 }
 
@@ -48,7 +50,7 @@ void readJoints(Context& c, std::vector<std::string>& pointNames) {
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "at"}, "a node");
     const Field nf = f.require("name");
-    DeckJoint j{nf.name(), coordinates(c, f.require("at"), "a node's coordinates"), f.place()};
+    DeckJoint j{nf.name(), coordinates(c, f.require("at"), "a node's coordinates", dim::length), f.place()};
     claimName(nf, j.name, pointNames, "a point or node");
     for (const DeckJoint& other : c.deck.frame->joints)
       if ((other.x - j.x).norm() <= 1e-12 * std::max(1.0, j.x.norm()))
@@ -72,9 +74,9 @@ MemberOrientation readOrientation(const Context& c, const Field& f, const Eigen:
     return o;
   }
   if (z && y) y->fail("give either z or y (a reference vector for one local axis), not both");
-  if (z) o.zReference = coordinates(c, *z, "a direction");
-  if (y) o.yReference = coordinates(c, *y, "a direction");
-  if (roll) o.roll = roll->number(c.evaluator);
+  if (z) o.zReference = coordinates(c, *z, "a direction", dim::none);
+  if (y) o.yReference = coordinates(c, *y, "a direction", dim::none);
+  if (roll) o.roll = roll->number(c.evaluator, dim::angle);
   try {
     memberAxes(axis, o);
   } catch (const std::invalid_argument& e) {
@@ -162,7 +164,7 @@ std::pair<int, double> memberPlace(const Context& c, const Field& f,
                     "'from' node, 0 to 1; or 'at_length' in m)");
   }
   const double L = c.deck.segments[m].length;
-  const double value = (at ? *at : *length).number(c.evaluator);
+  const double value = (at ? *at : *length).number(c.evaluator, at ? dim::none : dim::length);
   const double fraction = at ? value : value / L;
   if (!(fraction >= 0 && fraction <= 1))
     (at ? *at : *length)

@@ -41,10 +41,11 @@ std::shared_ptr<const Section> readShape(const Context& c, const Field& f,
                                          const std::vector<std::string>& optional, Make make) {
   std::vector<double> v;
   for (const std::string& k : keys)  // a root radius may be 0 (welded, sharp)
-    v.push_back(k == "r" ? f.require(k).nonNegative(c.evaluator)
-                         : f.require(k).positive(c.evaluator));
-  for (const std::string& k : optional)
-    v.push_back(f.get(k) ? f.get(k)->nonNegative(c.evaluator) : 0.0);
+    v.push_back(k == "r" ? f.require(k).nonNegative(c.evaluator, dim::length)
+                         : f.require(k).positive(c.evaluator, dim::length));
+  for (const std::string& k : optional)  // a channel's taper is a slope, the rest lengths
+    v.push_back(f.get(k) ? f.get(k)->nonNegative(c.evaluator, k == "taper" ? dim::none : dim::length)
+                         : 0.0);
   return std::make_shared<Section>(make(v));
 }
 
@@ -72,19 +73,19 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
   const Material& m = materialFor(c, f);
 
   if (shape == "circle")
-    return std::make_shared<Section>(Section::circle(name, m, f.require("D").positive(ev)));
+    return std::make_shared<Section>(Section::circle(name, m, f.require("D").positive(ev, dim::length)));
   if (shape == "tube") {
-    const double D = f.require("D").positive(ev);
+    const double D = f.require("D").positive(ev, dim::length);
     const Field tf = f.require("t");
-    const double t = tf.positive(ev);
+    const double t = tf.positive(ev, dim::length);
     if (!(2 * t <= D))
       tf.fail("wall thickness must not exceed half the diameter (D/2 = " + formatNumber(D / 2) +
               "), got " + formatNumber(t));
     return std::make_shared<Section>(Section::tube(name, m, D, t));
   }
   if (shape == "rectangle") {
-    const double b = f.require("b").positive(ev);
-    const double h = f.require("h").positive(ev);
+    const double b = f.require("b").positive(ev, dim::length);
+    const double h = f.require("h").positive(ev, dim::length);
     return std::make_shared<Section>(Section::rectangle(name, m, b, h));
   }
   if (shape == "I")
@@ -106,7 +107,7 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
                        return hollowRectangleSection(name, m, v[0], v[1], v[2], v[3], v[4]);
                      });
   // General: I sets both second moments; Iy defaults to Iz (and the other way round).
-  const double A = f.require("A").positive(ev);
+  const double A = f.require("A").positive(ev, dim::area);
   auto I = f.get("I"), Iy = f.get("Iy"), Iz = f.get("Iz");
   if (I && (Iy || Iz)) (Iy ? *Iy : *Iz).fail("give either I or Iy/Iz, not both");
   if (!I && !Iy && !Iz) {
@@ -114,16 +115,17 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
     at.field = f.path() + ".Iz";
     throw DeckError(f.file(), at, "missing required field 'Iz' (or 'I' for both axes)");
   }
-  const double Ival = I ? I->positive(ev) : 0;
-  const double IzVal = I ? Ival : Iz ? Iz->positive(ev) : Iy->positive(ev);
-  const double IyVal = I ? Ival : Iy ? Iy->positive(ev) : IzVal;
-  const double J = f.get("J") ? f.get("J")->nonNegative(ev) : 0;
+  const Dimension& I4 = dim::secondMoment;
+  const double Ival = I ? I->positive(ev, I4) : 0;
+  const double IzVal = I ? Ival : Iz ? Iz->positive(ev, I4) : Iy->positive(ev, I4);
+  const double IyVal = I ? Ival : Iy ? Iy->positive(ev, I4) : IzVal;
+  const double J = f.get("J") ? f.get("J")->nonNegative(ev, I4) : 0;
   auto kappa = f.get("kappa");
-  const double k = kappa ? kappa->nonNegative(ev) : 0;
-  const double ky = f.get("kappa_y") ? f.get("kappa_y")->nonNegative(ev) : k;
-  const double kz = f.get("kappa_z") ? f.get("kappa_z")->nonNegative(ev) : k;
-  const double depth = f.get("depth") ? f.get("depth")->positive(ev) : 0;
-  const double width = f.get("width") ? f.get("width")->positive(ev) : 0;
+  const double k = kappa ? kappa->nonNegative(ev, dim::none) : 0;
+  const double ky = f.get("kappa_y") ? f.get("kappa_y")->nonNegative(ev, dim::none) : k;
+  const double kz = f.get("kappa_z") ? f.get("kappa_z")->nonNegative(ev, dim::none) : k;
+  const double depth = f.get("depth") ? f.get("depth")->positive(ev, dim::length) : 0;
+  const double width = f.get("width") ? f.get("width")->positive(ev, dim::length) : 0;
   Section s = Section::general(name, m, A, IyVal, IzVal, J, ky, kz, 0);
   if (depth > 0) s.setExtent(depth, width);
   // kappa: 0 given on purpose is a shear-rigid section; only a missing kappa is a gap.
@@ -148,7 +150,7 @@ void readPointModel(Context& c) {
     const Field nf = f.require("name");
     const std::string name = nf.name();
     claimName(nf, name, names, "a point");
-    const double x = f.has("at") ? f.require("at").number(c.evaluator) : 0.0;
+    const double x = f.has("at") ? f.require("at").number(c.evaluator, dim::length) : 0.0;
     c.deck.points.push_back({name, x, f.place()});
   }
   if (c.deck.points.empty()) points->fail("the list of points is empty");
@@ -165,8 +167,8 @@ void readMaterials(Context& c) {
     const std::string name = f.require("name").name();
     claimName(f.require("name"), name, names, "a material");
     const ExpressionEvaluator& ev = c.evaluator;
-    const double E = f.require("E").positive(ev);
-    const double rho = f.get("rho") ? f.get("rho")->nonNegative(ev) : 0;
+    const double E = f.require("E").positive(ev, dim::pressure);
+    const double rho = f.get("rho") ? f.get("rho")->nonNegative(ev, dim::density) : 0;
     auto nuField = f.get("nu"), GField = f.get("G");
     if (nuField && GField) GField->fail("give either nu or G, not both (G = E / (2 (1 + nu)))");
     if (!nuField && !GField) {
@@ -174,8 +176,8 @@ void readMaterials(Context& c) {
       at.field = f.path() + ".nu";
       throw DeckError(f.file(), at, "missing required field 'nu' (Poisson's ratio; or give G)");
     }
-    const double G = GField ? GField->positive(ev) : 0;
-    const double nu = nuField ? nuField->number(ev) : E / (2 * G) - 1;
+    const double G = GField ? GField->positive(ev, dim::pressure) : 0;
+    const double nu = nuField ? nuField->number(ev, dim::none) : E / (2 * G) - 1;
     if (!(nu > -1 && nu < 0.5)) {
       const Field& at = nuField ? *nuField : *GField;
       at.fail("Poisson's ratio must lie in (-1, 0.5), got " + formatNumber(nu) +
@@ -226,7 +228,7 @@ void readSegmentMesh(const Context& c, const Field& f, DeckSegment& s) {
                     "missing required field 'elements' (or 'size', the largest element length)");
   }
   if (count) s.elements = count->integer(ev, 1, kMaxElements);
-  if (size) s.size = size->positive(ev);
+  if (size) s.size = size->positive(ev, dim::length);
   s.options = c.deck.beam;
   if (auto form = f.get("formulation")) s.options.theory = formulationOf(*form);
   const bool linearTimoshenko =
@@ -264,13 +266,13 @@ void readLine(Context& c) {
       claimName(*n, s.name, names, "a segment");
     }
     lengths.push_back(f.require("length"));
-    s.length = lengths.back().positive(ev);
+    s.length = lengths.back().positive(ev, dim::length);
     readSegmentMesh(c, f, s);
     if (auto axial = f.get("axial_force")) {
       if (c.deck.dimension != "lateral")
         axial->fail("axial_force gives a lateral rotor's shaft its axial force; planar and 3d "
                     "models take it from their loads (buckling, second_order, prestressed)");
-      s.axialForce = axial->number(ev);
+      s.axialForce = axial->number(ev, dim::force);
     }
     elements += s.elementEstimate();
     if (!(elements <= kMaxElements))
@@ -305,7 +307,7 @@ void readLine(Context& c) {
         nf.fail("'" + name + "' is predefined (the " + name + " of the line); choose another name");
       claimName(nf, name, pointNames, "a point");
       const Field at = f.require("at");
-      const double x = at.number(ev);
+      const double x = at.number(ev, dim::length);
       const double tol = 1e-12 * std::max(1.0, L);
       if (x < -tol || x > L + tol)
         at.fail("point '" + name + "' at " + formatNumber(x) + " m lies outside the line (0 to " +

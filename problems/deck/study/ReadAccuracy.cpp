@@ -7,7 +7,7 @@ namespace beamrotor::reader {
 void readAccuracy(Context& c) {
   auto f = c.root.get("accuracy");
   if (!f || f->isNull()) return;
-  const double target = f->positive(c.evaluator);
+  const double target = f->positive(c.evaluator, dim::none);
   if (target >= 1) f->fail("must be below 1 (a relative error), got " + formatNumber(target));
   if (c.deck.checks.empty())
     f->fail("needs at least one check: the accuracy is on the checked quantities");

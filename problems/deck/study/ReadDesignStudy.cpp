@@ -220,7 +220,7 @@ StudyParameter readParameter(const StudyContext& s, const std::string& name, con
                   "a lognormal distribution");
       d.kind = StudyDistribution::Kind::lognormal;
       d.first = f.require("median").number(s.c.evaluator, unit);
-      d.second = f.require("sigma").number(s.c.evaluator, FieldUnit{});
+      d.second = f.require("sigma").number(s.c.evaluator, dim::none);
     }
     bound("lower", d.lower);
     bound("upper", d.upper);

@@ -12,6 +12,9 @@ namespace beamrotor::reader {
 
 namespace {
 
+/// A modal analysis' shift: the eigenvalue omega^2 the modes are sought nearest (rad^2/s^2).
+constexpr FieldUnit kEigenvalueShift{Dimension::of(0, 0, -2, 2)};
+
 /// Modal analyses need inertia somewhere: a material density or a lumped mass.
 bool hasMass(const Deck& deck) {
   if (!deck.masses.empty()) return true;
@@ -86,7 +89,7 @@ void readAnalyses(Context& c) {
         if (a.prestressed && !c.deck.contacts.empty())
           p->fail("prestressed modes need a linear loaded state: remove the contacts");
       }
-      if (auto s = f.get("shift")) a.shift = s->number(c.evaluator);
+      if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, kEigenvalueShift);
       if (!hasMass(c.deck))
         f.fail("a modal analysis needs mass: give the materials a density rho or add masses");
     }
@@ -180,7 +183,7 @@ void readChecks(Context& c) {
     }
     if (auto when = f.get("when")) {
       k.condition = when->text();
-      k.applicable = when->number(c.evaluator) != 0;
+      k.applicable = when->number(c.evaluator, dim::none) != 0;
     }
     k.analysis = resolveQuantity(c, k.quantity, qf, f.get("analysis"), k.applicable);
     addCheckedSpeed(c, k);
@@ -197,7 +200,7 @@ void readChecks(Context& c) {
     }
     k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
     const Field tol = f.require("tolerance");
-    k.tolerance = tol.positive(c.evaluator);
+    k.tolerance = tol.positive(c.evaluator, dim::none);
     readPaperFigure(c, f, k);
     c.deck.checks.push_back(std::move(k));
   }

@@ -86,7 +86,7 @@ std::optional<DeckSweepRefinement> readSweepRefinement(const DeckSource& source,
 
   // 2. How far and how long.
   const Field tf = f->require("tolerance");
-  r.tolerance = tf.positive(ev);
+  r.tolerance = tf.positive(ev, dim::none);
   if (!(r.tolerance < 1)) tf.fail("the tolerance is a fraction of the parameter: below 1");
   const int given = deck.sweep ? int(deck.sweep->values.size()) : 1;
   r.runs = f->require("runs").integer(ev, std::max(2, given), kMaxSweepValues);

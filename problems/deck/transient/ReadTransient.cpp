@@ -40,7 +40,7 @@ TimeFunction piecesOf(const Context& c, const Field& f) {
   for (const Field& item : f.items()) {
     item.allowOnly({"from", "value"}, "a piece");
     const Field from = item.require("from");
-    const double start = from.number(c.evaluator);
+    const double start = from.number(c.evaluator, dim::time);
     if (!pieces.empty() && !(start > pieces.back().start))
       from.fail("pieces must start in ascending order (the previous starts at " +
                 formatNumber(pieces.back().start) + ")");
@@ -52,7 +52,7 @@ TimeFunction piecesOf(const Context& c, const Field& f) {
 
 TimeFunction harmonicsOf(const Context& c, const Field& f, const FieldUnit& unit) {
   f.allowOnly({"omega", "mean", "terms"}, "a harmonic series");
-  const double omega = f.require("omega").positive(c.evaluator);
+  const double omega = f.require("omega").positive(c.evaluator, dim::angularSpeed);
   const double mean = f.get("mean") ? f.get("mean")->number(c.evaluator, unit) : 0;
   std::vector<Harmonic> terms;
   const Field list = f.require("terms");
@@ -61,7 +61,7 @@ TimeFunction harmonicsOf(const Context& c, const Field& f, const FieldUnit& unit
     Harmonic h;
     h.k = t.require("k").integer(c.evaluator, 0, 100000);
     h.amplitude = t.require("amplitude").number(c.evaluator, unit);
-    if (auto p = t.get("phase")) h.phase = p->number(c.evaluator);
+    if (auto p = t.get("phase")) h.phase = p->number(c.evaluator, dim::angle);
     terms.push_back(h);
   }
   if (terms.empty()) list.fail("a harmonic series needs at least one term");
@@ -100,7 +100,7 @@ TimeFunction loadFunction(const Context& c, const Field& f, const FieldUnit& uni
                     : given[0] == "pieces"    ? piecesOf(c, g)
                     : given[0] == "harmonics" ? harmonicsOf(c, g, unit)
                                               : tableOf(c, g, unit);
-  if (auto p = f.get("period")) fn = timefn::periodic(std::move(fn), p->positive(c.evaluator));
+  if (auto p = f.get("period")) fn = timefn::periodic(std::move(fn), p->positive(c.evaluator, dim::time));
   return fn;
 }
 
@@ -192,14 +192,14 @@ DeckTransient readTransient(const Context& c, const Field& f) {
                                    : TimeScheme::newmark;
   }
   const Field dt = f.require("dt");
-  t.dt = dt.positive(ev);
+  t.dt = dt.positive(ev, dim::time);
   t.dtPlace = dt.place();
   auto end = f.get("end"), cycles = f.get("cycles"), period = f.get("period");
   if (end && (cycles || period)) end->fail("give either end or cycles and period, not both");
   if (end) {
-    t.end = end->positive(ev);
+    t.end = end->positive(ev, dim::time);
   } else if (cycles || period) {
-    t.end = f.require("cycles").positive(ev) * f.require("period").positive(ev);
+    t.end = f.require("cycles").positive(ev, dim::none) * f.require("period").positive(ev, dim::time);
   } else {
     DeckPlace at = f.place();
     at.field = f.path() + ".end";
@@ -214,17 +214,17 @@ DeckTransient readTransient(const Context& c, const Field& f) {
   // 2. Scheme options, damping and stops.
   if (auto a = f.get("alpha")) {
     if (t.scheme != TimeScheme::hht) a->fail("alpha is the HHT parameter; set scheme: hht");
-    t.hhtAlpha = a->number(ev);
+    t.hhtAlpha = a->number(ev, dim::none);
     if (!(t.hhtAlpha >= -1.0 / 3 && t.hhtAlpha <= 0))
       a->fail("HHT alpha must lie in [-1/3, 0], got " + formatNumber(t.hhtAlpha));
   }
   if (auto r = f.get("rayleigh")) {
     r->allowOnly({"alpha", "beta"}, "Rayleigh damping");
-    if (auto a = r->get("alpha")) t.rayleighMass = a->nonNegative(ev);
-    if (auto b = r->get("beta")) t.rayleighStiffness = b->nonNegative(ev);
+    if (auto a = r->get("alpha")) t.rayleighMass = a->nonNegative(ev, dim::frequency);
+    if (auto b = r->get("beta")) t.rayleighStiffness = b->nonNegative(ev, dim::time);
   }
   if (auto e = f.get("restitution")) {
-    t.restitution = e->nonNegative(ev);
+    t.restitution = e->nonNegative(ev, dim::none);
     if (t.restitution > 1) e->fail("the coefficient of restitution must lie in [0, 1]");
     if (c.deck.contacts.empty()) e->fail("restitution applies to contacts, and the deck has none");
   }
@@ -243,7 +243,7 @@ DeckTransient readTransient(const Context& c, const Field& f) {
               "displacement and velocity alone)");
     if (auto b = f.get("initial"); b && !b->isNull())
       b->fail("a periodic run starts from its periodic state; leave out initial:");
-    t.periodicPeriod = period->positive(ev);
+    t.periodicPeriod = period->positive(ev, dim::time);
     t.periodicPlace = p->place();
     const double steps = t.periodicPeriod / t.dt;
     if (std::abs(steps - std::round(steps)) > 1e-9 * steps)
