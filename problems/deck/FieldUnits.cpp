@@ -22,6 +22,11 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
       return {dim::pressure};
     case K::maxMoment:
       return {dim::moment};
+    case K::maxDisplacement:
+    case K::memberDeflection:
+      return {dim::length};
+    case K::memberForce:  // N, Vy, Vz are forces; T, My, Mz moments
+      return {q.property == "N" || q.property.starts_with('V') ? dim::force : dim::moment};
     case K::criticalSpeed:
       return kRpmField;
     case K::unbalanceAmplitude:
@@ -39,7 +44,7 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
     case K::crankSlider:
       return crankReferenceUnit(q);
     default:
-      return {};  // log_decrement; histories: their unit is free text
+      return {};  // buckling_factor, log_decrement; histories: their unit is free text
   }
 }
 

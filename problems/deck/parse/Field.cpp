@@ -186,7 +186,7 @@ double Field::number(const ExpressionEvaluator& evaluator, const FieldUnit& unit
   if (a.dimension != unit.dimension) {
     const std::size_t dot = path_.find_last_of('.');
     const std::string key = dot == std::string::npos ? path_ : path_.substr(dot + 1);
-    fail(key + " expects " + describeDimension(unit.dimension) + ", got " +
+    fail((key.empty() ? std::string("the value") : key) + " expects " + describeDimension(unit.dimension) + ", got " +
          describeDimension(a.dimension));
   }
   return a.si / unit.bareSize;

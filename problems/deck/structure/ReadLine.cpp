@@ -1,6 +1,7 @@
 // Deck reader, part 1: materials, cross-sections, the segments of the line and its points
 // (a frame's nodes and members: ReadFrame.cpp).
 #include <cmath>
+#include <limits>
 
 #include "fem/model/StandardSections.hpp"
 #include "problems/deck/DeckReader.hpp"
@@ -71,6 +72,10 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
         keys({"A", "I", "Iy", "Iz", "J", "kappa", "kappa_y", "kappa_z", "depth", "width"}),
         "a general section");
   const Material& m = materialFor(c, f);
+  if (std::isnan(m.nu) && (shape == "circle" || shape == "tube" || shape == "rectangle"))
+    f.fail("a " + shape + " section's shear coefficient needs Poisson's ratio, and material '" +
+           m.name + "' gives E and G apart (E / (2 G) - 1 = " + formatNumber(m.E / (2 * m.G) - 1) +
+           " is none): give the material nu");
 
   if (shape == "circle")
     return std::make_shared<Section>(Section::circle(name, m, f.require("D").positive(ev, dim::length)));
@@ -170,21 +175,22 @@ void readMaterials(Context& c) {
     const double E = f.require("E").positive(ev, dim::pressure);
     const double rho = f.get("rho") ? f.get("rho")->nonNegative(ev, dim::density) : 0;
     auto nuField = f.get("nu"), GField = f.get("G");
-    if (nuField && GField) GField->fail("give either nu or G, not both (G = E / (2 (1 + nu)))");
     if (!nuField && !GField) {
       DeckPlace at = f.place();
       at.field = f.path() + ".nu";
       throw DeckError(f.file(), at, "missing required field 'nu' (Poisson's ratio; or give G)");
     }
+    // E and G are independent when both are given (timber, fibre composites); nu then only
+    // sets the Cowper shear coefficients of circle, tube and rectangle sections.
     const double G = GField ? GField->positive(ev, dim::pressure) : 0;
-    const double nu = nuField ? nuField->number(ev, dim::none) : E / (2 * G) - 1;
-    if (!(nu > -1 && nu < 0.5)) {
-      const Field& at = nuField ? *nuField : *GField;
-      at.fail("Poisson's ratio must lie in (-1, 0.5), got " + formatNumber(nu) +
-              (nuField ? "" : " from G = " + formatNumber(G)));
-    }
-    Material m = Material::fromEnu(name, E, nu, rho);
-    if (GField) m.G = G;
+    const double isotropicNu = E / (2 * G) - 1;
+    const bool isotropic = isotropicNu > -1 && isotropicNu < 0.5;
+    const double nu = nuField ? nuField->number(ev, dim::none)
+                      : isotropic ? isotropicNu
+                                  : std::numeric_limits<double>::quiet_NaN();  // unknown
+    if (nuField && !(nu > -1 && nu < 0.5))
+      nuField->fail("Poisson's ratio must lie in (-1, 0.5), got " + formatNumber(nu));
+    Material m{name, E, nu, GField ? G : E / (2 * (1 + nu)), rho};
     c.materials.push_back(m);
   }
 }

@@ -170,14 +170,10 @@ StudyOutput parseOutputOption(const std::string& argument, const StudyContext& s
   while (!o.text.empty() && o.text.back() == ' ') o.text.pop_back();
   try {
     if (le != std::string::npos) {
-      const FieldUnit unit = referenceUnit(parseQuantity(o.text));
-      const Amount a = ExpressionEvaluator().amount(argument.substr(le + 2));
-      const bool bare = a.anyDimension || a.dimension.dimensionless();
-      if (!bare && !(a.dimension == unit.dimension))
-        throw DeckError(s.deck.path, place,
-                        "the limit's unit does not fit '" + o.text + "' (expected " +
-                            siUnitOf(unit.dimension) + ")");
-      o.limit = bare ? a.si : a.si / unit.bareSize;  // in the quantity's own unit
+      // Read as the deck's `limit:` is, in the quantity's own unit.
+      const auto limit = DeckTree::ofScalar(argument.substr(le + 2), s.deck.path);
+      o.limit = Field::root(*limit).number(ExpressionEvaluator(),
+                                           referenceUnit(parseQuantity(o.text)));
     }
     const auto typed = DeckTree::ofScalar(o.text, s.deck.path);
     resolveOutput(s, o, Field::root(*typed));
