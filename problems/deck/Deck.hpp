@@ -193,6 +193,9 @@ struct Deck {
   std::vector<std::pair<std::string, double>> reported;    ///< `report:` names with their values
   /// The dimensions of the parameters and derived values written with a unit (values in SI).
   std::vector<std::pair<std::string, Dimension>> dimensions;
+  /// The dimensions the parameters written without a unit take from the fields they flow
+  /// into (BareParameters.hpp): a command-line value with a unit must have it.
+  std::vector<std::pair<std::string, Dimension>> bareDimensions;
   /// "file:line:col: field: message" lines for implausible values (MaterialPlausibility.hpp).
   std::vector<std::string> warnings;
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "problems/deck/BareParameters.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/structure/Formulations.hpp"
 #include "problems/deck/structure/MaterialPlausibility.hpp"
@@ -97,14 +98,19 @@ void define(Context& c, const Field& f, const std::string& name, const Amount& v
 }
 
 /// A command-line override of the parameter `f`: a bare number takes the dimension of the
-/// deck's own value, one with a unit must have it.
-Amount overridden(const Context& c, const Field& f, const ParameterOverride& o) {
+/// deck's own value, one with a unit must have it; one with a unit for a parameter without
+/// one is used in SI and checked once the fields have told its dimension.
+Amount overridden(Context& c, const Field& f, const ParameterOverride& o) {
   Dimension own;
   try {
     own = f.amount(c.evaluator).dimension;
   } catch (const DeckError&) {
     // the deck's value is replaced anyway; its dimension is unknown, so the override's holds
     return Amount{o.value, o.dimension.value_or(Dimension{}), false};
+  }
+  if (o.dimension && own.dimensionless()) {
+    c.unitOverridesOfBare.push_back(o);
+    return Amount{o.value, own, false};
   }
   if (o.dimension)
     if (auto why = overrideMismatch(o.name, *o.dimension, own))
@@ -122,6 +128,7 @@ void readParameters(Context& c, const std::vector<ParameterOverride>& overrides)
       define(c, value, name, v);
       c.deck.parameters.emplace_back(name, v.si);
       names.push_back(name);
+      if (!o && v.dimension.dimensionless()) c.bareTexts.emplace_back(name, value.text());
     }
   }
   // Overrides of names the deck does not have are mistakes, never silently ignored.
@@ -148,6 +155,7 @@ void readDerived(Context& c) {
     const Amount v = value.amount(c.evaluator);
     define(c, value, name, v);
     c.deck.derived.emplace_back(name, v.si);
+    if (v.dimension.dimensionless()) c.bareTexts.emplace_back(name, value.text());
   }
 }
 
@@ -178,6 +186,27 @@ void readModel(Context& c) {
 
 }  // namespace
 
+void checkBareParameters(Context& c, const std::vector<NumericRead>& reads) {
+  std::vector<std::string> bare;
+  for (const auto& [name, value] : c.deck.parameters)
+    if (c.evaluator.dimensionOf(name).dimensionless()) bare.push_back(name);
+  const std::map<std::string, BareUse> found =
+      bareDimensions(reads, c.evaluator, bare, c.bareTexts);
+  for (const auto& [name, use] : found) c.deck.bareDimensions.emplace_back(name, use.dimension);
+  for (const ParameterOverride& o : c.unitOverridesOfBare) {
+    const auto it = found.find(o.name);
+    if (it == found.end()) {
+      if (auto why = overrideMismatch(o.name, *o.dimension, Dimension{}))
+        throw DeckError(c.deck.path, {0, 0, "--set " + o.text}, *why);
+    } else if (it->second.dimension != *o.dimension) {
+      throw DeckError(c.deck.path, {0, 0, "--set " + o.text},
+                      o.name + " is " + describeDimension(it->second.dimension) +
+                          ", as its use at " + describeUse(it->second) + " tells; got " +
+                          describeDimension(*o.dimension));
+    }
+  }
+}
+
 BeamTheory formulationOf(const Field& f) {
   return readFormulation(f);
 }
@@ -191,8 +220,8 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   Deck deck;
   deck.path = source.path;
   deck.stem = source.stem;
-  reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {},
-                    {}};
+  reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {}, {}, {}, {}};
+  const NumericReadLog log;
 
   // 1. Top-level keys.
   c.root.allowOnly(reader::kTopKeys, "the deck");
@@ -215,6 +244,8 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   reader::readReport(c);
   reader::readAccuracy(c);
   requireSectionValues(deck);
+  // A study's re-readings (with a memo) repeat its first reading, which checked this.
+  if (!memo) reader::checkBareParameters(c, log.reads());
   return deck;
 }
 

@@ -11,6 +11,7 @@
 #include "problems/deck/Deck.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"
+#include "problems/deck/parse/NumericReads.hpp"
 #include "problems/deck/study/Overrides.hpp"
 
 namespace beamrotor::reader {
@@ -21,6 +22,11 @@ struct Context {
   ExpressionEvaluator evaluator;
   std::vector<Material> materials;  ///< in deck order
   std::vector<std::shared_ptr<const Section>> sections;
+  /// The expression of each parameter and derived value without a unit, as written, and the
+  /// command-line values with a unit for such parameters: both wait for the fields to tell
+  /// those parameters' dimensions (BareParameters.hpp).
+  std::vector<std::pair<std::string, std::string>> bareTexts;
+  std::vector<ParameterOverride> unitOverridesOfBare;
 
   /// The point a field names; fails with a did-you-mean suggestion.
   const DeckPoint& point(const Field& f) const;
@@ -87,6 +93,10 @@ void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis&
 /// the analysis it reads. `applicable`: whether a check's `when:` holds (history times).
 std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
                             const std::optional<Field>& analysisField, bool applicable);
+/// Fails when a parameter without a unit flows into fields of two dimensions, or a
+/// command-line value with a unit does not fit the dimension its fields give it; records the
+/// dimensions found in deck.bareDimensions. `reads`: the numbers the reading read.
+void checkBareParameters(Context& c, const std::vector<NumericRead>& reads);
 /// Analyses, checks and the sweep.
 void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 

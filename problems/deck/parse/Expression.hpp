@@ -69,8 +69,9 @@ class ExpressionEvaluator {
   Dimension dimensionOf(const std::string& name) const;
   /// Whether `name` was defined with define().
   bool defines(const std::string& name) const;
-  /// The names defined so far, in order.
+  /// The names defined so far, in order, and their values.
   const std::vector<std::string>& names() const { return names_; }
+  const std::vector<Amount>& values() const { return values_; }
 
   /// The value of `text` (a single expression) and its dimension. Throws ExpressionError when
   /// it does not parse, evaluates to inf or nan, or mixes dimensions.

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/parse/NumericReads.hpp"
 #include "problems/deck/parse/PlainText.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 
@@ -182,14 +183,17 @@ Amount Field::amount(const ExpressionEvaluator& evaluator) const {
 
 double Field::number(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {
   const Amount a = amount(evaluator);
-  if (a.anyDimension || a.dimension.dimensionless()) return a.si;  // bare: in the field's unit
-  if (a.dimension != unit.dimension) {
+  const bool bare = a.anyDimension || a.dimension.dimensionless();
+  const double value = bare ? a.si : a.si / unit.bareSize;  // bare: in the field's unit
+  if (!bare && a.dimension != unit.dimension) {
     const std::size_t dot = path_.find_last_of('.');
     const std::string key = dot == std::string::npos ? path_ : path_.substr(dot + 1);
     fail((key.empty() ? std::string("the value") : key) + " expects " + describeDimension(unit.dimension) + ", got " +
          describeDimension(a.dimension));
   }
-  return a.si / unit.bareSize;
+  if (NumericReadLog* log = NumericReadLog::open())
+    log->record({*file_, place(), node_->text, unit, value, bare});
+  return value;
 }
 
 double Field::positive(const ExpressionEvaluator& evaluator, const FieldUnit& unit) const {

@@ -39,8 +39,8 @@ std::optional<std::string> overrideMismatch(const std::string& name, const Dimen
       name + " expects " + describeDimension(expected) + ", got " + describeDimension(given);
   if (expected.dimensionless())
     why += " (the deck gives " + name +
-           " without a unit: give a plain number in SI units, or write the deck's value with "
-           "its unit)";
+           " without a unit, and no field whose value holds it alone tells its dimension: give "
+           "a plain number in SI units, or write the deck's value with its unit)";
   return why;
 }
 

@@ -25,9 +25,10 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 double parameterValueOption(const std::string& text, const std::string& parameter,
                             const Deck& deck, const DeckPlace& place) {
-  Dimension own;  // the parameter's dimension in the deck: values with a unit must have it
-  for (const auto& [name, d] : deck.dimensions)
-    if (name == parameter) own = d;
+  Dimension own;  // the parameter's, written or told by its fields: values with a unit must have it
+  for (const auto* named : {&deck.dimensions, &deck.bareDimensions})
+    for (const auto& [name, d] : *named)
+      if (name == parameter) own = d;
   Amount a;
   try {
     a = ExpressionEvaluator().amount(text);

@@ -1,0 +1,120 @@
+// Parameters written without a unit take the dimension of the fields they flow into
+// (problems/deck/BareParameters.hpp): a command-line value with a unit is then converted to SI
+// and used exactly as the bare SI number (bit for bit), a wrong dimension or a parameter used
+// in two dimensions is refused naming the uses.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/study/Overrides.hpp"
+#include "problems/deck/study/SweepOption.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+Deck readWith(const std::string& text, const std::vector<std::string>& sets) {
+  std::vector<ParameterOverride> overrides;
+  for (const std::string& s : sets) overrides.push_back(parseOverride(s, "bare.yaml"));
+  return readDeck(parseDeckText(text, "bare.yaml"), overrides);
+}
+
+std::optional<Dimension> bareDimension(const Deck& deck, const std::string& name) {
+  for (const auto& [n, d] : deck.bareDimensions)
+    if (n == name) return d;
+  return std::nullopt;
+}
+
+std::string readFailure(const std::string& text, const std::vector<std::string>& sets) {
+  try {
+    readWith(text, sets);
+  } catch (const DeckError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// A bare cantilever: L flows into a length, P into a force, E into a pressure, d (the
+/// section's side, through A = d^2) into a length, eta through `0.715 - eta` into a length,
+/// Q into a force directly and into a mass through `mass: Q / 9.80665` (less directly), and
+/// `unused` into nothing.
+const std::string kBare =
+    "parameters: {L: 2, P: 1000, E: 2.1e11, d: 0.05, eta: 0.4, Q: 98.0665, unused: 3}\n"
+    "derived: {A: d^2, I: d^4/12, b: 0.715 - eta, mass: Q / 9.80665}\n"
+    "materials: [{name: steel, E: E, nu: 0.3, rho: 7850}]\n"
+    "sections: [{name: bar, shape: general, A: A, I: I, J: I, kappa: 0.85, depth: d}]\n"
+    "segments: [{length: L, section: bar, elements: 4}]\n"
+    "points: [{name: p, at: b}]\n"
+    "supports: [{name: root, at: start, fix: clamped}]\n"
+    "loads: [{type: point, at: end, fy: -P}, {type: point, at: p, fy: -Q}]\n"
+    "masses: [{at: p, m: mass}]\n"
+    "checks:\n"
+    "  - {name: w, quantity: displacement end uy, reference: -P*L^3/(3*E*I), tolerance: 1,\n"
+    "     when: eta == 0.4}\n";
+
+}  // namespace
+
+TEST_SUITE("deck units") {
+  TEST_CASE("a bare parameter takes its dimension from the fields it flows into") {
+    const Deck deck = readWith(kBare, {});
+    CHECK(bareDimension(deck, "L") == dim::length);
+    CHECK(bareDimension(deck, "P") == dim::force);
+    CHECK(bareDimension(deck, "E") == dim::pressure);
+    CHECK(bareDimension(deck, "d") == dim::length);  // A: d^2 is an area, depth: d a length
+    CHECK(bareDimension(deck, "eta") == dim::length);  // `eta == 0.4` says nothing
+    CHECK(bareDimension(deck, "Q") == dim::force);  // fy: -Q decides over Q / 9.80665
+    CHECK(!bareDimension(deck, "unused"));
+  }
+
+  TEST_CASE("--set with a unit on a bare parameter is its SI value, bit for bit") {
+    const Deck si = readWith(kBare, {"L=1.2", "E=2.1e11", "eta=0.2", "d=0.04"});
+    const Deck units = readWith(kBare, {"L=1200mm", "E=210 GPa", "eta=200 mm", "d=4 cm"});
+    CHECK(test::deckValue(units, "L") == test::deckValue(si, "L"));
+    CHECK(test::deckValue(units, "E") == test::deckValue(si, "E"));
+    CHECK(test::deckValue(units, "b") == test::deckValue(si, "b"));
+    CHECK(test::deckValue(units, "I") == test::deckValue(si, "I"));
+    CHECK(units.segments[0].length == si.segments[0].length);
+    // On a shipped deck, through the whole solve: the same reactions to the last bit.
+    const Study a = solveStudy(test::shippedDeckRequest("cantilever.yaml", {"L=1200mm", "E=210GPa"}));
+    const Study b = solveStudy(test::shippedDeckRequest("cantilever.yaml", {"L=1.2", "E=210e9"}));
+    REQUIRE(a.run);
+    REQUIRE(b.run);
+    CHECK(test::staticReaction(*a.run, "root", Dof::rz) ==
+          test::staticReaction(*b.run, "root", Dof::rz));
+    REQUIRE(a.run->checks.size() == b.run->checks.size());
+    for (std::size_t k = 0; k < a.run->checks.size(); ++k)
+      CHECK(a.run->checks[k].computed == b.run->checks[k].computed);
+  }
+
+  TEST_CASE("--sweep with units on a bare parameter, converted to SI") {
+    const Deck deck = readWith(kBare, {});
+    const DeckSweep s = parseSweepOption("L=4m:8m:4", deck);
+    REQUIRE(s.values.size() == 5);
+    CHECK(s.values[0] == 4);
+    CHECK(s.values[4] == 8);
+    CHECK(parseSweepOption("L=4000mm,5", deck).values == std::vector<double>{4, 5});
+    CHECK_THROWS_WITH_AS(parseSweepOption("L=4 s,5 s", deck),
+                         doctest::Contains("L expects a length (m), got a time (s)"), DeckError);
+  }
+
+  TEST_CASE("a wrong dimension, two dimensions and an untold one are refused naming the uses") {
+    CHECK(readFailure(kBare, {"L=3 kg"}) ==
+          "bare.yaml: --set L=3 kg: L is a length (m), as its use at bare.yaml:5 "
+          "(segments[0].length) tells; got a mass (kg)");
+    const std::string twice = kBare + "  - {name: r, quantity: reaction root uy, reference: L,\n"
+                                      "     tolerance: 1}\n";
+    const std::string why = readFailure(twice, {});
+    CHECK(why.find("parameter 'L' has no unit and is used as a length (m) at bare.yaml:5 "
+                   "(segments[0].length) and as a force (N) at bare.yaml:13 "
+                   "(checks[1].reference)") != std::string::npos);
+    CHECK(readFailure(kBare, {"unused=3 mm"}).find(
+              "the deck gives unused without a unit, and no field whose value holds it alone "
+              "tells its dimension") != std::string::npos);
+    // A bare value stays SI, whatever the field.
+    CHECK(test::deckValue(readWith(kBare, {"L=3"}), "L") == 3);
+  }
+}
