@@ -97,6 +97,7 @@ void Field::requireMapKeys() const {
 
 void Field::allowOnly(const std::vector<std::string>& allowed, const std::string& what) const {
   requireMapKeys();
+  if (NumericReadLog* log = NumericReadLog::open()) log->recordAllowed({path_, allowed});
   for (const auto& [key, value] : node_->entries) {
     bool known = false;
     for (const std::string& a : allowed) known = known || a == key->text;
@@ -147,6 +148,7 @@ std::vector<Field> Field::itemsOrSingle() const {
 
 std::string Field::text() const {
   if (!isScalar()) fail("expected a single value, got " + describe());
+  if (NumericReadLog* log = NumericReadLog::open()) log->recordText(path_);
   return node_->text;
 }
 

@@ -15,7 +15,10 @@ NumericReadLog::NumericReadLog() : outer_(current) {
 
 NumericReadLog::~NumericReadLog() {
   current = outer_;
-  if (outer_) outer_->reads_.insert(outer_->reads_.end(), reads_.begin(), reads_.end());
+  if (!outer_) return;
+  outer_->reads_.insert(outer_->reads_.end(), reads_.begin(), reads_.end());
+  outer_->texts_.insert(outer_->texts_.end(), texts_.begin(), texts_.end());
+  outer_->allowed_.insert(outer_->allowed_.end(), allowed_.begin(), allowed_.end());
 }
 
 NumericReadLog* NumericReadLog::open() {
