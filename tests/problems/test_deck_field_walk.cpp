@@ -19,6 +19,7 @@
 #include "problems/deck/parse/DeckSource.hpp"
 #include "problems/deck/parse/NumericReads.hpp"
 #include "problems/deck/study/DesignStudy.hpp"
+#include "problems/deck/study/ReadSweepRefinement.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
@@ -37,6 +38,7 @@ Walked readLogged(const std::string& text, const std::string& path) {
   const DeckSource source = parseDeckText(text, path);
   const Deck deck = readDeck(source, {});
   if (text.find("\nstudy:") != std::string::npos) readDesignStudy(source, deck, {});
+  readSweepRefinement(source, deck);
   return {log.reads(), log.textReads(), log.allowed()};
 }
 
@@ -124,8 +126,14 @@ std::string rewritten(const std::string& text, const NumericRead& r, const std::
   return out;
 }
 
-/// "sections[2].tw" -> "sections[].tw".
+/// "sections[2].tw" -> "sections[].tw", "study.parameters.eta.from" -> "study.parameters.*.from"
+/// (a study's parameters are maps keyed by the deck's names).
 std::string withoutIndices(const std::string& path) {
+  const std::string study = "study.parameters.";
+  if (path.compare(0, study.size(), study) == 0 && path.size() > study.size()) {
+    const std::size_t end = path.find('.', study.size());
+    return study + "*" + (end == std::string::npos ? "" : path.substr(end));
+  }
   std::string out;
   for (std::size_t i = 0; i < path.size(); ++i) {
     out += path[i];
@@ -207,5 +215,18 @@ TEST_SUITE("deck units") {
       }
     }
     MESSAGE(fields << " numeric fields walked");
+    // Every key the reader allows is read in some deck.
+    std::set<std::string> missing;
+    for (const auto& [map, key] : allowed) {
+      const std::string full = map.empty() ? key : map + "." + key;
+      bool seen = false;
+      for (const std::string& v : visited) seen = seen || visits(v, full);
+      if (!seen) missing.insert(full);
+    }
+    std::string list;
+    for (const std::string& m : missing) list += "\n  " + m;
+    CHECK_MESSAGE(missing.empty(), "keys the reader allows that no walked deck reads (add them "
+                                   "to a deck in tests/problems/field_walk):"
+                                       << list);
   }
 }
