@@ -4,6 +4,7 @@
 #include "problems/deck/DeckReader.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "problems/deck/BareParameters.hpp"
 #include "problems/deck/parse/Expression.hpp"
@@ -221,7 +222,9 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   deck.path = source.path;
   deck.stem = source.stem;
   reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {}, {}, {}, {}};
-  const NumericReadLog log;
+  // A study's re-readings (with a memo) repeat its first reading: no log, no check below.
+  std::optional<NumericReadLog> log;
+  if (!memo) log.emplace();
 
   // 1. Top-level keys.
   c.root.allowOnly(reader::kTopKeys, "the deck");
@@ -244,8 +247,7 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   reader::readReport(c);
   reader::readAccuracy(c);
   requireSectionValues(deck);
-  // A study's re-readings (with a memo) repeat its first reading, which checked this.
-  if (!memo) reader::checkBareParameters(c, log.reads());
+  if (log) reader::checkBareParameters(c, log->reads());
   return deck;
 }
 
