@@ -109,7 +109,7 @@ class Inference {
   struct Power {
     double exponent = 1;       ///< 1 for `L/2`, 2 for `d^2`, 0.5 for `sqrt(A)`
     bool mixed = false;        ///< a sum with bare numbers (`0.715 - eta`): they take its dimension
-    bool independent = false;  ///< its value's dimension does not follow the name's (`E > 1e16 ? 1 : 0.05`)
+    bool independent = false;  ///< its dimension does not follow the name's (`E > 1e16 ? 1 : 2`)
   };
 
   /// Found by giving `name` a unit of length in an evaluator of its own.
@@ -152,7 +152,8 @@ std::map<std::string, BareUse> bareDimensions(
     const std::vector<std::pair<std::string, std::string>>& texts) {
   Inference inference(evaluator, parameters, texts);
   for (const NumericRead& r : reads)
-    if (r.bare) inference.flow(r.text, r.unit.dimension, BareUse{r.unit.dimension, r.file, r.place});
+    if (r.bare)
+      inference.flow(r.text, r.unit.dimension, BareUse{r.unit.dimension, r.file, r.place});
   return inference.found;
 }
 

@@ -24,7 +24,8 @@ crank::DriveMasses readDriveMasses(const Context& c, const Field& f, const crank
   const ExpressionEvaluator& ev = c.evaluator;
   crank::DriveMasses m;
   m.eccentricMass = f.has("eccentric") ? f.require("eccentric").nonNegative(ev, dim::mass) : 0;
-  m.eccentricity = f.has("eccentricity") ? f.require("eccentricity").nonNegative(ev, dim::length) : 0;
+  m.eccentricity =
+      f.has("eccentricity") ? f.require("eccentricity").nonNegative(ev, dim::length) : 0;
   m.sliderMass = f.require("slider").nonNegative(ev, dim::mass);
   m.rod.mass = f.require("rod").nonNegative(ev, dim::mass);
   const Field big = f.require("rod_com_to_crank_pin");

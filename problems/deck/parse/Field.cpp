@@ -190,8 +190,8 @@ double Field::number(const ExpressionEvaluator& evaluator, const FieldUnit& unit
   if (!bare && a.dimension != unit.dimension) {
     const std::size_t dot = path_.find_last_of('.');
     const std::string key = dot == std::string::npos ? path_ : path_.substr(dot + 1);
-    fail((key.empty() ? std::string("the value") : key) + " expects " + describeDimension(unit.dimension) + ", got " +
-         describeDimension(a.dimension));
+    fail((key.empty() ? std::string("the value") : key) + " expects " +
+         describeDimension(unit.dimension) + ", got " + describeDimension(a.dimension));
   }
   if (NumericReadLog* log = NumericReadLog::open())
     log->record({*file_, place(), node_->text, unit, value, bare});
