@@ -79,8 +79,10 @@ TEST_SUITE("deck units") {
     CHECK(test::deckValue(units, "I") == test::deckValue(si, "I"));
     CHECK(units.segments[0].length == si.segments[0].length);
     // On a shipped deck, through the whole solve: the same reactions to the last bit.
-    const Study a = solveStudy(test::shippedDeckRequest("cantilever.yaml", {"L=1200mm", "E=210GPa"}));
-    const Study b = solveStudy(test::shippedDeckRequest("cantilever.yaml", {"L=1.2", "E=210e9"}));
+    const Study a =
+        solveStudy(test::shippedDeckRequest("cantilever.yaml", {"L=1200mm", "E=210GPa"}));
+    const Study b =
+        solveStudy(test::shippedDeckRequest("cantilever.yaml", {"L=1.2", "E=210e9"}));
     REQUIRE(a.run);
     REQUIRE(b.run);
     CHECK(test::staticReaction(*a.run, "root", Dof::rz) ==

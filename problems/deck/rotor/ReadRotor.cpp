@@ -140,7 +140,8 @@ void readDamping(Context& c) {
   auto f = c.root.get("damping");
   if (!f || f->isNull()) return;
   f->allowOnly({"alpha", "beta"}, "damping");
-  if (auto a = f->get("alpha")) c.deck.rotor.damping.alpha = a->nonNegative(c.evaluator, dim::frequency);
+  if (auto a = f->get("alpha"))
+    c.deck.rotor.damping.alpha = a->nonNegative(c.evaluator, dim::frequency);
   if (auto b = f->get("beta")) c.deck.rotor.damping.beta = b->nonNegative(c.evaluator, dim::time);
 }
 

@@ -50,7 +50,8 @@ void readJoints(Context& c, std::vector<std::string>& pointNames) {
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "at"}, "a node");
     const Field nf = f.require("name");
-    DeckJoint j{nf.name(), coordinates(c, f.require("at"), "a node's coordinates", dim::length), f.place()};
+    DeckJoint j{nf.name(), coordinates(c, f.require("at"), "a node's coordinates", dim::length),
+                f.place()};
     claimName(nf, j.name, pointNames, "a point or node");
     for (const DeckJoint& other : c.deck.frame->joints)
       if ((other.x - j.x).norm() <= 1e-12 * std::max(1.0, j.x.norm()))

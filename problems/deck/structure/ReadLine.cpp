@@ -44,9 +44,10 @@ std::shared_ptr<const Section> readShape(const Context& c, const Field& f,
   for (const std::string& k : keys)  // a root radius may be 0 (welded, sharp)
     v.push_back(k == "r" ? f.require(k).nonNegative(c.evaluator, dim::length)
                          : f.require(k).positive(c.evaluator, dim::length));
-  for (const std::string& k : optional)  // a channel's taper is a slope, the rest lengths
-    v.push_back(f.get(k) ? f.get(k)->nonNegative(c.evaluator, k == "taper" ? dim::none : dim::length)
-                         : 0.0);
+  for (const std::string& k : optional) {  // a channel's taper is a slope, the rest lengths
+    const Dimension& d = k == "taper" ? dim::none : dim::length;
+    v.push_back(f.get(k) ? f.get(k)->nonNegative(c.evaluator, d) : 0.0);
+  }
   return std::make_shared<Section>(make(v));
 }
 
@@ -78,7 +79,8 @@ std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std
            " is none): give the material nu");
 
   if (shape == "circle")
-    return std::make_shared<Section>(Section::circle(name, m, f.require("D").positive(ev, dim::length)));
+    return std::make_shared<Section>(
+        Section::circle(name, m, f.require("D").positive(ev, dim::length)));
   if (shape == "tube") {
     const double D = f.require("D").positive(ev, dim::length);
     const Field tf = f.require("t");

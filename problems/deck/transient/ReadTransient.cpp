@@ -100,7 +100,8 @@ TimeFunction loadFunction(const Context& c, const Field& f, const FieldUnit& uni
                     : given[0] == "pieces"    ? piecesOf(c, g)
                     : given[0] == "harmonics" ? harmonicsOf(c, g, unit)
                                               : tableOf(c, g, unit);
-  if (auto p = f.get("period")) fn = timefn::periodic(std::move(fn), p->positive(c.evaluator, dim::time));
+  if (auto p = f.get("period"))
+    fn = timefn::periodic(std::move(fn), p->positive(c.evaluator, dim::time));
   return fn;
 }
 
@@ -199,7 +200,8 @@ DeckTransient readTransient(const Context& c, const Field& f) {
   if (end) {
     t.end = end->positive(ev, dim::time);
   } else if (cycles || period) {
-    t.end = f.require("cycles").positive(ev, dim::none) * f.require("period").positive(ev, dim::time);
+    t.end = f.require("cycles").positive(ev, dim::none) *
+            f.require("period").positive(ev, dim::time);
   } else {
     DeckPlace at = f.place();
     at.field = f.path() + ".end";
