@@ -8,6 +8,7 @@
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
+#include "problems/deck/AnalysisKinds.hpp"
 #include "problems/output/structure/AdequateJson.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
@@ -279,8 +280,9 @@ Json sweepAnalysisJson(const Json& analysis) {
   for (const char* key : {"reactions", "max_stress", "max_shear", "frequencies_hz", "maxima",
                           "second_order", "load_factors", "critical_speeds", "instability_onset",
                           "smallest_log_decrement"})
-    if (analysis.contains(key) && !(analysis.at("type") == "frequency-response" &&
-                                    std::string_view(key) == "frequencies_hz"))
+    if (analysis.contains(key) &&
+        !(analysis.at("type") == analysisTypeName<FrequencyResponseSpec>() &&
+          std::string_view(key) == "frequencies_hz"))
       out[key] = analysis[key];
   // An unbalance analysis: each response point's peak and the API 684 verdict, not the curves.
   if (analysis.contains("response")) {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <new>
 #include <stdexcept>
+#include <variant>
 
 #include "fem/assembly/Recovery.hpp"
 #include "fem/modal/Modal.hpp"
@@ -69,20 +70,20 @@ std::vector<CaseOutcome> solveCases(const Deck& deck, const StaticOptions& optio
 AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model,
                       RunCache* cache) {
   AnalysisOutcome out;
-  out.type = a.type;
+  out.type = a.type();
   out.name = a.name;
   try {
-    if (a.type == "static" && a.secondOrder) {
+    if (std::holds_alternative<StaticSpec>(a.kind) && a.secondOrder) {
       out.secondOrder = solveSecondOrder(model);
       out.statics = out.secondOrder->secondOrder;
-    } else if (a.type == "static") {
+    } else if (std::holds_alternative<StaticSpec>(a.kind)) {
       StaticOptions options;
       if (cache) options.reuse = &cache->statics;
       out.statics = solveStatic(model, options);
       if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
       if (auto w = displacementWarning(model, *out.statics)) out.warnings.push_back(*w);
       out.cases = solveCases(deck, options);
-    } else if (a.type == "buckling") {
+    } else if (std::holds_alternative<BucklingSpec>(a.kind)) {
       BucklingOptions options;
       options.count = a.modes;
       options.reversed = a.reversed;
@@ -92,7 +93,7 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
       out.transient = runTransient(deck, a, model);
     } else if (a.crank) {
       out.crank = runCrankSlider(*a.crank);
-    } else if (isRotorAnalysis(a.type)) {
+    } else if (isRotorAnalysis(a.kind)) {
       out.rotor = solveRotorAnalysis(deck, a, model);
     } else {
       ModalOptions options;

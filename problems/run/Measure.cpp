@@ -9,6 +9,7 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/DofMap.hpp"
+#include "problems/deck/AnalysisKinds.hpp"
 #include "problems/run/MeasureRotor.hpp"
 #include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/TransientOutcome.hpp"
@@ -97,7 +98,7 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
                                   std::to_string(modes.size()) + " positive load factors");
     return modes[q.mode - 1].factor;
   }
-  if (q.analysisType() == "transient") {
+  if (answers<TransientSpec>(q)) {
     if (!outcome.transient)
       throw std::invalid_argument("analysis '" + outcome.name + "' is not transient");
     return measureHistory(q, *outcome.transient);

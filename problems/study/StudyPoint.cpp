@@ -5,6 +5,7 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <variant>
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
@@ -70,7 +71,7 @@ StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText
   }
   plan.exclusive = std::any_of(deck.analyses.begin(), deck.analyses.end(),
                                [&](const DeckAnalysis& a) {
-                                 return a.type != "static" &&
+                                 return !std::holds_alternative<StaticSpec>(a.kind) &&
                                         std::find(plan.analyses.begin(), plan.analyses.end(),
                                                   a.name) != plan.analyses.end();
                                }) ||
