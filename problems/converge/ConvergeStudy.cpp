@@ -11,6 +11,7 @@
 #include "problems/deck/structure/SectionNeeds.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
+#include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
 
@@ -205,14 +206,31 @@ struct SolveCost {
 };
 
 SolveCost costOf(const AnalysisOutcome& a) {
-  if (a.statics) return {a.statics->time, a.statics->size};
-  if (a.modal) return {a.modal->time, a.modal->size};
-  if (a.transient) return {a.transient->result.time, a.transient->result.size};
-  const RotorOutcome& r = *a.rotor;
-  if (r.modes) return {r.modes->time, r.modes->size};
-  if (r.campbell) return {r.campbell->time, r.campbell->size};
-  if (r.unbalance) return {r.unbalance->time, r.unbalance->size};
-  return {};
+  return std::visit(
+      Overloaded{[](const StaticOutcome& r) -> SolveCost {
+                   return {r.statics.time, r.statics.size};
+                 },
+                 [](const SecondOrderResult& r) -> SolveCost {
+                   return {r.secondOrder.time, r.secondOrder.size};
+                 },
+                 [](const ModalResult& r) -> SolveCost {
+                   return {r.time, r.size};
+                 },
+                 [](const BucklingResult& r) -> SolveCost {
+                   return {r.time, r.size};
+                 },
+                 [](const TransientOutcome& r) -> SolveCost {
+                   return {r.result.time, r.result.size};
+                 },
+                 [](const RotorOutcome& r) -> SolveCost {
+                   if (r.modes) return {r.modes->time, r.modes->size};
+                   if (r.campbell) return {r.campbell->time, r.campbell->size};
+                   if (r.unbalance) return {r.unbalance->time, r.unbalance->size};
+                   return {};
+                 },
+                 // A mechanism has no mesh to refine (studiable): nothing of it is timed.
+                 [](const CrankSliderOutcome&) -> SolveCost { return {}; }},
+      a.result);
 }
 
 /// Solves one level, repeating short runs; the quantity is taken from the first run.

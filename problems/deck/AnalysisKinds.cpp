@@ -17,12 +17,13 @@ bool anyRow(F&& f, std::index_sequence<I...>) {
 
 template <class F>
 bool anyRow(F&& f) {
-  return anyRow(std::forward<F>(f),
-                std::make_index_sequence<std::variant_size_v<AnalysisSpec>>{});
+  return anyRow(std::forward<F>(f), std::make_index_sequence<std::variant_size_v<AnalysisSpec>>{});
 }
 
 template <class Spec>
-concept HasModelFree = requires(const Field& f) { Spec::modelFree(f); };
+concept HasModelFree = requires(const Field& f) {
+  Spec::modelFree(f);
+};
 
 }  // namespace
 
@@ -76,7 +77,12 @@ AnalysisSpec analysisKind(const Field& type) {
 }
 
 void readAnalysisKind(const Context& c, const Field& f, DeckAnalysis& a) {
-  std::visit([&](auto row) { decltype(row)::read(c, f, a); }, a.kind);
+  std::visit(
+      [&](auto row) {
+        decltype(row)::read(c, f, a);
+        if constexpr (decltype(row)::needsMass) requireMass(c, f, a);
+      },
+      a.kind);
 }
 
 bool isMechanismAnalysis(const Field& analysis) {

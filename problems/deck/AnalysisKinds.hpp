@@ -22,10 +22,9 @@ namespace beamrotor {
 
 /// The rows, in the order messages list them. A quantity several rows answer is read by
 /// default from the first (a frequency from a modal analysis before a rotor one).
-using AnalysisSpec =
-    std::variant<StaticSpec, ModalSpec, BucklingSpec, TransientSpec, RotorSpec, CampbellSpec,
-                 UnbalanceSpec, RigidBodySpec, FrequencyResponseSpec, CrankSliderSpec,
-                 CriticalSpeedMapSpec, BearingLoadsSpec>;
+using AnalysisSpec = std::variant<StaticSpec, ModalSpec, BucklingSpec, TransientSpec, RotorSpec,
+                                  CampbellSpec, UnbalanceSpec, RigidBodySpec, FrequencyResponseSpec,
+                                  CrankSliderSpec, CriticalSpeedMapSpec, BearingLoadsSpec>;
 
 /// Every row's deck type, in row order.
 std::vector<std::string> analysisTypeNames();

@@ -72,7 +72,8 @@ void addCheckedSpeed(Context& c, const DeckCheck& k);
 /// The row of the table of analysis kinds that an analysis' `type:` names; fails listing the
 /// known types (AnalysisKinds.cpp).
 AnalysisSpec analysisKind(const Field& type);
-/// The fields of analysis entry `f` into a, by the reader of its row a.kind.
+/// The fields of analysis entry `f` into a, by the reader of its row a.kind; then, when the
+/// row needs mass, requireMass.
 void readAnalysisKind(const Context& c, const Field& f, DeckAnalysis& a);
 /// Fails at analysis entry `f` when the deck has no inertia: no density and no lumped mass.
 void requireMass(const Context& c, const Field& f, const DeckAnalysis& a);

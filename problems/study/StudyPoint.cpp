@@ -124,8 +124,8 @@ StudyRow PointSolver::solve(long long index, const std::vector<double>& values) 
     const double runSeconds = clock.lap();
     row.cost.model = run.modelSeconds;
     for (const AnalysisOutcome& a : run.analyses) {
-      if (a.statics) addStaticCost(*a.statics, row.cost);
-      for (const CaseOutcome& c : a.cases) addStaticCost(c.statics, row.cost);
+      if (const StaticResult* s = staticsOf(a)) addStaticCost(*s, row.cost);
+      for (const CaseOutcome& c : casesOf(a)) addStaticCost(c.statics, row.cost);
     }
     row.cost.measure = run.checksSeconds;
     // The rest of the run (an `accuracy:` deck's whole search among them).

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "problems/deck/AnalysisKinds.hpp"
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 namespace beamrotor {
@@ -126,17 +128,37 @@ TEST_SUITE("analysis kinds") {
   }
 
   TEST_CASE("a check is refused by the rows that do not answer it") {
-    const std::string statics = std::string(kModelDeck) + "analyses: [{type: static, name: bending}]\n";
+    const std::string statics =
+        std::string(kModelDeck) + "analyses: [{type: static, name: bending}]\n";
     const DeckError none = test::readingError(
         statics + "checks: [{name: f1, quantity: frequency 1, reference: 1, tolerance: 0.1}]\n",
         "kinds.yaml");
-    CHECK(none.message() ==
-          "'frequency 1' needs a modal analysis; add {type: modal} to analyses");
+    CHECK(none.message() == "'frequency 1' needs a modal analysis; add {type: modal} to analyses");
     const DeckError named = test::readingError(
-        statics + "checks: [{name: f1, quantity: frequency 1, reference: 1, tolerance: 0.1, "
-                  "analysis: bending}]\n",
+        statics +
+            "checks: [{name: f1, quantity: frequency 1, reference: 1, tolerance: 0.1, "
+            "analysis: bending}]\n",
         "kinds.yaml");
     CHECK(named.message() == "'frequency 1' needs a modal analysis; 'bending' is static");
+  }
+
+  TEST_CASE("the rows that need mass refuse a deck without inertia; the others read it") {
+    std::string massless(kModelDeck);
+    massless.replace(massless.find("rho: 7850"), 9, "rho: 0");
+    const auto withAnalysis = [&](const std::string& entry) {
+      return massless + "analyses: [" + entry + "]\n";
+    };
+    const DeckError modal = test::readingError(withAnalysis("{type: modal}"), "kinds.yaml");
+    CHECK(modal.message() ==
+          "a modal analysis needs mass: give the materials a density rho or add masses");
+    CHECK(modal.place().line == 6);
+    for (const std::string type : {"static", "buckling"}) {
+      CAPTURE(type);
+      const Deck deck =
+          readDeck(parseDeckText(withAnalysis("{type: " + type + "}"), "kinds.yaml"), {});
+      REQUIRE(deck.analyses.size() == 1);
+      CHECK(deck.analyses[0].type() == type);
+    }
   }
 }
 

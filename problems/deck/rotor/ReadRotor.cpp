@@ -413,19 +413,7 @@ void addCheckedSpeed(Context& c, const DeckCheck& k) {
 
 namespace beamrotor {
 
-// Every rotor row reads with readRotorAnalysis; all but an unbalance response (whose mass may
-// be the unbalance's alone) and a rigid body given by its own inputs need the model's inertia.
-void RotorSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readRotorAnalysis(c, f, a);
-  reader::requireMass(c, f, a);
-}
-
-void CampbellSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readRotorAnalysis(c, f, a);
-  reader::requireMass(c, f, a);
-}
-
-void UnbalanceSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+void RotorFamily::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
   reader::readRotorAnalysis(c, f, a);
 }
 
@@ -436,21 +424,6 @@ void RigidBodySpec::read(const reader::Context& c, const Field& f, DeckAnalysis&
 
 bool RigidBodySpec::modelFree(const Field& entry) {
   return entry.has("body");
-}
-
-void FrequencyResponseSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readRotorAnalysis(c, f, a);
-  reader::requireMass(c, f, a);
-}
-
-void CriticalSpeedMapSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readRotorAnalysis(c, f, a);
-  reader::requireMass(c, f, a);
-}
-
-void BearingLoadsSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readRotorAnalysis(c, f, a);
-  reader::requireMass(c, f, a);
 }
 
 }  // namespace beamrotor

@@ -4,18 +4,9 @@
 // quantities it answers.
 #pragma once
 
-#include <array>
-#include <string_view>
-
-#include "problems/deck/Quantity.hpp"
+#include "problems/deck/AnalysisRow.hpp"
 
 namespace beamrotor {
-
-class Field;
-struct DeckAnalysis;
-namespace reader {
-struct Context;
-}
 
 struct StaticSpec {
   static constexpr std::string_view deckType = "static";
@@ -23,18 +14,21 @@ struct StaticSpec {
       Quantity::Kind::reaction,    Quantity::Kind::displacement,    Quantity::Kind::maxStress,
       Quantity::Kind::maxShear,    Quantity::Kind::maxMoment,       Quantity::Kind::maxDisplacement,
       Quantity::Kind::memberForce, Quantity::Kind::memberDeflection};
+  static constexpr bool needsMass = false;
   static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
 };
 
 struct ModalSpec {
   static constexpr std::string_view deckType = "modal";
   static constexpr std::array answers{Quantity::Kind::frequency};
+  static constexpr bool needsMass = true;
   static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
 };
 
 struct BucklingSpec {
   static constexpr std::string_view deckType = "buckling";
   static constexpr std::array answers{Quantity::Kind::bucklingFactor};
+  static constexpr bool needsMass = false;
   static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
 };
 

@@ -317,7 +317,6 @@ void ModalSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) 
       p->fail("prestressed modes need a linear loaded state: remove the contacts");
   }
   if (auto s = f.get("shift")) a.shift = s->number(c.evaluator);
-  reader::requireMass(c, f, a);
 }
 
 }  // namespace beamrotor

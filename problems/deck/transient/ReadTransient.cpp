@@ -289,7 +289,6 @@ namespace beamrotor {
 
 void TransientSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
   a.transient = reader::readTransient(c, f);
-  reader::requireMass(c, f, a);
 }
 
 }  // namespace beamrotor

@@ -2,23 +2,15 @@
 // a periodic steady state (`periodic: true`) is one of its settings, not a kind of its own.
 #pragma once
 
-#include <array>
-#include <string_view>
-
-#include "problems/deck/Quantity.hpp"
+#include "problems/deck/AnalysisRow.hpp"
 
 namespace beamrotor {
-
-class Field;
-struct DeckAnalysis;
-namespace reader {
-struct Context;
-}
 
 struct TransientSpec {
   static constexpr std::string_view deckType = "transient";
   static constexpr std::array answers{Quantity::Kind::historyMax, Quantity::Kind::historyMin,
                                       Quantity::Kind::historyMaxAbs, Quantity::Kind::historyAt};
+  static constexpr bool needsMass = true;
   static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
 };
 
