@@ -118,7 +118,7 @@ TEST_SUITE("exact extrema") {
       CAPTURE(text);
       const double value = measure(parseQuantity(text), run.analyses.front(), *run.model);
       CHECK(std::isnan(value));
-      Check c{"peak", value, 1.0, 0.5, text};
+      Check c{"peak", value, 1.0, 0.5, text, std::nullopt, ""};
       CHECK_FALSE(c.pass());
       run.checks = {c};
       std::ostringstream table;

@@ -50,7 +50,8 @@ inline RunResult cantileverRun(const Cantilever& c, int modes = 0) {
   const double tip = staticsOf(statics)->displacement(line.nodes.back(), dofIndex(Dof::uy));
   run.analyses.push_back(std::move(statics));
   if (modes > 0) run.analyses.push_back({"modal", "modes", solveModes(*model, {modes, 0}), {}});
-  run.checks.push_back({"tip deflection", tip, c.deflection(c.L), 1e-9, "displacement end uy"});
+  run.checks.push_back(
+      {"tip deflection", tip, c.deflection(c.L), 1e-9, "displacement end uy", std::nullopt, ""});
   run.model = std::move(model);
   run.seconds = 0.01;
   return run;
