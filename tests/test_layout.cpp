@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "problems/deck/AnalysisKinds.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -65,7 +67,7 @@ std::optional<Layer> layerOf(const std::string& relative) {
   const std::string top = part->string();
   const auto topRank = kTopRank.find(top);
   if (topRank == kTopRank.end()) return std::nullopt;
-  Layer layer{topRank->second, 0, ""};
+  Layer layer{topRank->second, 0, "", 0, ""};
   const auto rooms = kRoomRank.find(top);
   if (rooms == kRoomRank.end()) return layer;
   ++part;
@@ -119,6 +121,17 @@ std::string readText(const fs::path& file) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// The analysis types a source text compares a `type` string with (`a.type == "campbell"`,
+/// `j.at("type") != "unbalance"`); comparisons with other words (a load's "point") are not.
+std::vector<std::string> comparedAnalysisTypes(const std::string& text) {
+  const std::vector<std::string> types = beamrotor::analysisTypeNames();
+  const std::regex comparison(R"re(type["'()\]]*\s*[!=]=\s*"([^"]*)")re", std::regex::icase);
+  std::vector<std::string> found;
+  for (std::sregex_iterator m(text.begin(), text.end(), comparison), end; m != end; ++m)
+    if (std::find(types.begin(), types.end(), (*m)[1]) != types.end()) found.push_back((*m)[1]);
+  return found;
 }
 
 }  // namespace
@@ -218,5 +231,31 @@ TEST_SUITE("layout") {
         CHECK(text.find(pattern) == std::string::npos);
       }
     }
+  }
+
+  TEST_CASE("no analysis type string is compared outside the table of kinds") {
+    // A kind is asked of its row (problems/deck/AnalysisKinds.hpp), so that a new kind is one
+    // row: a comparison with a type string elsewhere is a place the new row would not reach.
+    const std::set<std::string> table{"problems/deck/AnalysisKinds.hpp",
+                                      "problems/deck/AnalysisKinds.cpp"};
+    int scanned = 0;
+    for (const std::string& file : sourcesUnder("problems")) {
+      if (table.count(file)) continue;
+      CAPTURE(file);
+      CHECK(comparedAnalysisTypes(readText(kSourceRoot / file)).empty());
+      ++scanned;
+    }
+    CHECK(scanned > 250);  // the walk found the tree (about 300 files today)
+  }
+
+  TEST_CASE("the comparison finder itself: planted comparisons are found") {
+    CHECK(comparedAnalysisTypes(R"(if (a.type == "campbell") x();)") ==
+          std::vector<std::string>{"campbell"});
+    CHECK(comparedAnalysisTypes(R"(if (j.at("type") != "unbalance") x();)") ==
+          std::vector<std::string>{"unbalance"});
+    CHECK(comparedAnalysisTypes(R"(return q.analysisType() == "transient";)") ==
+          std::vector<std::string>{"transient"});
+    CHECK(comparedAnalysisTypes(R"(if (type == "point") x();)").empty());
+    CHECK(comparedAnalysisTypes(R"(if (options.kind == "rotor") x();)").empty());
   }
 }

@@ -18,7 +18,7 @@ std::string crankBalanceText(double oneCrank, double allCranks) {
 }  // namespace
 
 void printCrankSlider(std::ostream& out, const AnalysisOutcome& a) {
-  const CrankSliderOutcome& c = *a.crank;
+  const CrankSliderOutcome& c = *resultOf<CrankSliderOutcome>(a);
   const crank::Geometry& g = c.input.geometry;
   out << "crank-slider analysis '" << a.name << "': r = " << formatValue(g.r)
       << " m, l = " << formatValue(g.l) << " m, lambda = " << formatValue(c.lambda) << ", "

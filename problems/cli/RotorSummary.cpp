@@ -198,7 +198,7 @@ std::optional<SystemSize> rotorSize(const RotorOutcome& r) {
 }
 
 void printRotor(std::ostream& out, const AnalysisOutcome& a) {
-  const RotorOutcome& r = *a.rotor;
+  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
   if (r.modes) printModes(out, a, *r.modes);
   if (r.campbell) printCampbell(out, a, r);
   if (r.unbalance) printUnbalance(out, a, r);

@@ -7,7 +7,7 @@
 namespace beamrotor::cli {
 
 void printBuckling(std::ostream& out, const AnalysisOutcome& a) {
-  const BucklingResult& r = *a.buckling;
+  const BucklingResult& r = *resultOf<BucklingResult>(a);
   out << "buckling analysis '" << a.name << "': load factors (critical load = factor x the "
       << "deck's loads)\n";
   for (std::size_t i = 0; i < r.modes.size(); ++i)
@@ -18,8 +18,8 @@ void printBuckling(std::ostream& out, const AnalysisOutcome& a) {
 }
 
 void printSecondOrder(std::ostream& out, const AnalysisOutcome& a) {
-  if (!a.secondOrder) return;
-  const SecondOrderResult& r = *a.secondOrder;
+  if (!resultOf<SecondOrderResult>(a)) return;
+  const SecondOrderResult& r = *resultOf<SecondOrderResult>(a);
   out << "  second order (equilibrium in the deformed state, " << r.iterations
       << (r.iterations == 1 ? " iteration" : " iterations") << "): lowest buckling factor "
       << (std::isfinite(r.criticalFactor) ? formatValue(r.criticalFactor) : "none (no compression)")

@@ -59,7 +59,7 @@ void printPeak(std::ostream& out, const char* what, const Deck& deck, const Mode
 
 const StaticResult* firstStatic(const RunResult& r) {
   for (const AnalysisOutcome& a : r.analyses)
-    if (a.statics) return &*a.statics;
+    if (const StaticResult* s = staticsOf(a)) return s;
   return nullptr;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <variant>
 
 #include "problems/cli/AdequateSummary.hpp"
 #include "problems/cli/CrankSummary.hpp"
@@ -12,6 +14,7 @@
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
 #include "problems/output/structure/Reactions.hpp"
+#include "problems/run/Overloaded.hpp"
 
 namespace beamrotor::cli {
 
@@ -23,12 +26,18 @@ const char* motionUnit(Dof d) {
 }
 
 SystemSize sizeOf(const RunResult& run) {
+  using Size = std::optional<SystemSize>;
   for (const AnalysisOutcome& a : run.analyses) {
-    if (a.statics) return a.statics->size;
-    if (a.modal) return a.modal->size;
-    if (a.buckling) return a.buckling->size;
-    if (a.transient) return a.transient->result.size;
-    if (a.rotor && rotorSize(*a.rotor)) return *rotorSize(*a.rotor);
+    const Size size =
+        std::visit(Overloaded{[](const StaticOutcome& r) -> Size { return r.statics.size; },
+                              [](const SecondOrderResult& r) -> Size { return r.secondOrder.size; },
+                              [](const ModalResult& r) -> Size { return r.size; },
+                              [](const BucklingResult& r) -> Size { return r.size; },
+                              [](const TransientOutcome& r) -> Size { return r.result.size; },
+                              [](const RotorOutcome& r) -> Size { return rotorSize(r); },
+                              [](const CrankSliderOutcome&) -> Size { return std::nullopt; }},
+                   a.result);
+    if (size) return *size;
   }
   return {};
 }
@@ -45,7 +54,7 @@ std::vector<const DeckPoint*> reportedPoints(const Deck& deck) {
 
 void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                  const AnalysisOutcome& a) {
-  const StaticResult& r = *a.statics;
+  const StaticResult& r = *staticsOf(a);
   char conditioning[64];
   std::snprintf(conditioning, sizeof conditioning, "rcond %.1e, round-off <= %.1e", r.rcond,
                 r.roundOff);
@@ -115,7 +124,7 @@ void printReported(std::ostream& out, const std::vector<std::pair<std::string, d
 }
 
 void printModal(std::ostream& out, const AnalysisOutcome& a) {
-  const ModalResult& m = *a.modal;
+  const ModalResult& m = *resultOf<ModalResult>(a);
   out << "modal analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
   for (std::size_t i = 0; i < m.modes.size(); ++i)
     out << "    mode " << padded(std::to_string(i + 1), 4)
@@ -158,13 +167,17 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   for (const std::string& w : run.warnings) out << "warning: " << w << "\n";
   if (run.adequate) printAdequateChoice(out, *run.adequate);
   for (const AnalysisOutcome& a : run.analyses) {
-    if (a.statics) printStatic(out, deck, run, a);
-    printSecondOrder(out, a);
-    if (a.buckling) printBuckling(out, a);
-    if (a.modal) printModal(out, a);
-    if (a.transient) printTransient(out, a);
-    if (a.rotor) printRotor(out, a);
-    if (a.crank) printCrankSlider(out, a);
+    std::visit(Overloaded{[&](const StaticOutcome&) { printStatic(out, deck, run, a); },
+                          [&](const SecondOrderResult&) {
+                            printStatic(out, deck, run, a);
+                            printSecondOrder(out, a);
+                          },
+                          [&](const BucklingResult&) { printBuckling(out, a); },
+                          [&](const ModalResult&) { printModal(out, a); },
+                          [&](const TransientOutcome&) { printTransient(out, a); },
+                          [&](const RotorOutcome&) { printRotor(out, a); },
+                          [&](const CrankSliderOutcome&) { printCrankSlider(out, a); }},
+               a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }
 }
@@ -186,12 +199,12 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   for (const auto& [name, value] : first.reported) headers.push_back(name);
   auto staticOf = [](const RunResult& r) -> const StaticResult* {
     for (const auto& a : r.analyses)
-      if (a.statics) return &*a.statics;
+      if (const StaticResult* s = staticsOf(a)) return s;
     return nullptr;
   };
   auto modalOf = [](const RunResult& r) -> const ModalResult* {
     for (const auto& a : r.analyses)
-      if (a.modal) return &*a.modal;
+      if (const ModalResult* m = resultOf<ModalResult>(a)) return m;
     return nullptr;
   };
   if (const StaticResult* s = staticOf(first))

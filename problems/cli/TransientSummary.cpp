@@ -10,21 +10,22 @@ namespace {
 
 const TransientOutcome* transientOf(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.transient) return &*a.transient;
+    if (const TransientOutcome* t = resultOf<TransientOutcome>(a)) return t;
   return nullptr;
 }
 
 }  // namespace
 
 void printTransient(std::ostream& out, const AnalysisOutcome& a) {
-  const TransientResult& r = a.transient->result;
+  const TransientOutcome& t = *resultOf<TransientOutcome>(a);
+  const TransientResult& r = t.result;
   out << "transient analysis '" << a.name << "' (" << r.scheme
       << ", dt = " << formatValue(r.timeStep) << " s, " << r.steps
       << " steps to t = " << formatValue(r.steps * r.timeStep) << " s";
   if (r.stability.omegaMax > 0)
     out << ", dt_crit = " << formatValue(r.stability.dtCritical) << " s";
   out << ")\n";
-  for (const NamedHistory& h : a.transient->histories)
+  for (const NamedHistory& h : t.histories)
     out << "    " << padded(h.name, 18)
         << padded("max |.| " + formatValue(h.maxAbs()) + " " + h.unit, 28) << "range ["
         << formatValue(h.min()) << ", " << formatValue(h.max()) << "]\n";

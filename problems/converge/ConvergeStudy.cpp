@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 
 #include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
@@ -10,6 +11,7 @@
 #include "problems/deck/structure/SectionNeeds.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
+#include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
 
@@ -38,7 +40,8 @@ bool refinesTimeStep(const DeckAnalysis& a) {
 /// Which analyses a study can refine: every kind but the rigid-body properties (integrals of
 /// the section, the same on any mesh) and the crank-slider mechanism (closed forms, no mesh).
 bool studiable(const DeckAnalysis& a) {
-  return a.type != "rigid-body" && a.type != "crank-slider";
+  return !std::holds_alternative<RigidBodySpec>(a.kind) &&
+         !std::holds_alternative<CrankSliderSpec>(a.kind);
 }
 
 /// Refuses a deck none of whose analyses a study can refine (e.g. a crank-slider or a rigid
@@ -49,7 +52,7 @@ void requireSomethingToRefine(const Deck& deck) {
   if (std::any_of(deck.analyses.begin(), deck.analyses.end(), studiable)) return;
   std::string kinds;
   for (const DeckAnalysis& a : deck.analyses)
-    kinds += (kinds.empty() ? "" : ", ") + a.type + " '" + a.name + "'";
+    kinds += (kinds.empty() ? "" : ", ") + a.type() + " '" + a.name + "'";
   const DeckPlace place = deck.analyses.empty() ? kQuantityOption : deck.analyses.front().place;
   throw DeckError(deck.path, place,
                   "nothing to converge: the deck has no mesh or time step to refine (its "
@@ -75,8 +78,9 @@ std::vector<Target> candidates(const Deck& deck) {
   }
   for (const DeckAnalysis& a : deck.analyses) {
     std::string text;
-    if (a.type == "modal" || a.type == "rotor") text = "frequency 1";
-    if (a.type == "static" && !deck.segments.empty()) text = "stress max";
+    if (std::holds_alternative<ModalSpec>(a.kind) || std::holds_alternative<RotorSpec>(a.kind))
+      text = "frequency 1";
+    if (std::holds_alternative<StaticSpec>(a.kind) && !deck.segments.empty()) text = "stress max";
     if (a.transient && !a.transient->histories.empty())
       text = "history " + a.transient->histories.front().name + " maxabs";
     if (!text.empty()) out.push_back({parseQuantity(text), &a, nullptr, ""});
@@ -183,13 +187,13 @@ Target resolveTarget(const Deck& deck, const std::string& text) {
   }
   t.analysis = t.check ? analysisNamed(deck, t.check->analysis) : nullptr;
   for (const DeckAnalysis& a : deck.analyses)
-    if (!t.analysis && t.quantity.readsFrom(a.type)) t.analysis = &a;
+    if (!t.analysis && answers(a.kind, t.quantity)) t.analysis = &a;
   if (!t.analysis)
     throw DeckError(deck.path, kQuantityOption,
                     "no analysis of the deck gives '" + t.quantity.text + "'");
   if (!studiable(*t.analysis))
     throw DeckError(deck.path, kQuantityOption,
-                    "'" + t.quantity.text + "' reads a " + t.analysis->type +
+                    "'" + t.quantity.text + "' reads a " + t.analysis->type() +
                         " analysis, which is the same on every mesh");
   t.choice = "as asked (--quantity)";
   return t;
@@ -202,14 +206,31 @@ struct SolveCost {
 };
 
 SolveCost costOf(const AnalysisOutcome& a) {
-  if (a.statics) return {a.statics->time, a.statics->size};
-  if (a.modal) return {a.modal->time, a.modal->size};
-  if (a.transient) return {a.transient->result.time, a.transient->result.size};
-  const RotorOutcome& r = *a.rotor;
-  if (r.modes) return {r.modes->time, r.modes->size};
-  if (r.campbell) return {r.campbell->time, r.campbell->size};
-  if (r.unbalance) return {r.unbalance->time, r.unbalance->size};
-  return {};
+  return std::visit(
+      Overloaded{[](const StaticOutcome& r) -> SolveCost {
+                   return {r.statics.time, r.statics.size};
+                 },
+                 [](const SecondOrderResult& r) -> SolveCost {
+                   return {r.secondOrder.time, r.secondOrder.size};
+                 },
+                 [](const ModalResult& r) -> SolveCost {
+                   return {r.time, r.size};
+                 },
+                 [](const BucklingResult& r) -> SolveCost {
+                   return {r.time, r.size};
+                 },
+                 [](const TransientOutcome& r) -> SolveCost {
+                   return {r.result.time, r.result.size};
+                 },
+                 [](const RotorOutcome& r) -> SolveCost {
+                   if (r.modes) return {r.modes->time, r.modes->size};
+                   if (r.campbell) return {r.campbell->time, r.campbell->size};
+                   if (r.unbalance) return {r.unbalance->time, r.unbalance->size};
+                   return {};
+                 },
+                 // A mechanism has no mesh to refine (studiable): nothing of it is timed.
+                 [](const CrankSliderOutcome&) -> SolveCost { return {}; }},
+      a.result);
 }
 
 /// Solves one level, repeating short runs; the quantity is taken from the first run.
@@ -308,7 +329,7 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
   const std::vector<ConvergeMethod> methods =
       timeStep ? std::vector<ConvergeMethod>{{"time-step", "the deck's scheme, dt halved per level",
                                               deck.beam.theory, deck.beam.mass}}
-               : convergeMethods(t.analysis->type != "static");
+               : convergeMethods(!std::holds_alternative<StaticSpec>(t.analysis->kind));
   for (const ConvergeMethod& method : methods) {
     ConvergeSeries series;
     series.method = method;

@@ -14,6 +14,7 @@
 #include "elements/Beam.hpp"
 #include "fem/model/Dof.hpp"
 #include "fem/model/Section.hpp"
+#include "problems/deck/AnalysisKinds.hpp"
 #include "problems/deck/study/DeckAccuracy.hpp"
 #include "problems/deck/crank/DeckCrank.hpp"
 #include "problems/deck/parse/DeckError.hpp"
@@ -149,8 +150,8 @@ inline DeckLoad scaledLoad(DeckLoad l, double factor) {
 
 /// One analysis to run.
 struct DeckAnalysis {
-  std::string type;  ///< "static", "modal", "buckling", "transient" or a rotor analysis (isRotorAnalysis)
-  std::string name;  ///< defaults to the type
+  AnalysisSpec kind;  ///< its row in the table of analysis kinds (AnalysisKinds.hpp)
+  std::string name;   ///< defaults to the type
   int modes = 6;     ///< modal, rotor, campbell, buckling: how many
   double shift = 0;  ///< modal: rad^2/s^2; rotor, campbell: 1/s
   DeckPlace place;
@@ -160,6 +161,8 @@ struct DeckAnalysis {
   bool reversed = false;     ///< buckling: also the negative load factors (load reversed)
   bool prestressed = false;  ///< modal: about the state the deck's loads put the structure in
   std::optional<DeckCrankSlider> crank;  ///< crank-slider: the mechanism (no model needed)
+  /// The deck's `type:` for it, e.g. "campbell" (for messages; ask `kind` what it is).
+  std::string type() const { return analysisTypeName(kind); }
 };
 
 /// A closed-form comparison.

@@ -44,18 +44,6 @@ int parseOrdinal(const std::string& n, const std::string& what) {
   return std::stoi(n);
 }
 
-std::string Quantity::analysisType() const {
-  if (kind >= Kind::historyMax) return "transient";
-  if (auto rotor = rotorAnalysisType(*this)) return *rotor;
-  if (kind == Kind::crankSlider) return "crank-slider";
-  if (kind == Kind::bucklingFactor) return "buckling";
-  return kind == Kind::frequency ? "modal" : "static";
-}
-
-bool Quantity::readsFrom(const std::string& type) const {
-  return type == analysisType() || (kind == Kind::frequency && type == "rotor");
-}
-
 Quantity parseQuantity(const std::string& text) {
   // One line of words: the text is shown in tables and chart captions as it is.
   if (const auto bad = firstNonPlain(text, " "))

@@ -54,7 +54,7 @@ struct Quantity {
     historyMax,
     historyMin,
     historyMaxAbs,
-    historyAt  // transient analyses: keep these last (analysisType)
+    historyAt  // transient analyses
   };
   Kind kind = Kind::reaction;
   std::string target;    ///< support (reaction), point (displacement) or history name
@@ -71,11 +71,7 @@ struct Quantity {
   double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own
   std::optional<double> crankAngle;  ///< crankSlider `... at PHI deg`: the crank angle (rad)
   std::string text;      ///< as written, for reports
-
-  /// The analysis type it reads by default (when a check names none).
-  std::string analysisType() const;
-  /// Whether an analysis of `type` can give it (frequency: modal or rotor).
-  bool readsFrom(const std::string& type) const;
+  // Which analyses give it: the rows of problems/deck/AnalysisKinds.hpp say.
 };
 
 /// Parses the phrase; throws std::invalid_argument saying what is wrong and what is allowed.

@@ -75,8 +75,16 @@ void resolveRotorQuantity(const Context& c, const Quantity& q, const Field& f,
                           const DeckAnalysis& a);
 /// Adds the speed an unbalance_amplitude check reads to its analysis's speeds.
 void addCheckedSpeed(Context& c, const DeckCheck& k);
-/// Whether an analysis entry is one that needs no model: a crank-slider, or a rigid-body
-/// analysis given its `body:` (ReadCrank.cpp).
+/// The row of the table of analysis kinds that an analysis' `type:` names; fails listing the
+/// known types (AnalysisKinds.cpp).
+AnalysisSpec analysisKind(const Field& type);
+/// The fields of analysis entry `f` into a, by the reader of its row a.kind; then, when the
+/// row needs mass, requireMass.
+void readAnalysisKind(const Context& c, const Field& f, DeckAnalysis& a);
+/// Fails at analysis entry `f` when the deck has no inertia: no density and no lumped mass.
+void requireMass(const Context& c, const Field& f, const DeckAnalysis& a);
+/// Whether an analysis entry is one that needs no model: its row says so (a crank-slider, or
+/// a rigid-body analysis given its `body:`).
 bool isMechanismAnalysis(const Field& analysis);
 /// True when the deck has no segments, points or frame and only such analyses: it needs no
 /// model at all.

@@ -8,6 +8,7 @@
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
+#include "problems/deck/AnalysisKinds.hpp"
 #include "problems/output/structure/AdequateJson.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
@@ -18,6 +19,7 @@
 #include "problems/output/rotor/RotorJson.hpp"
 #include "problems/output/structure/StabilityOutput.hpp"
 #include "problems/output/transient/TransientJson.hpp"
+#include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
 
@@ -142,7 +144,7 @@ Json envelopeJson(const Json& cases) {
 
 Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
                 const AnalysisOutcome& a, const std::vector<ElementPeaks>& peaks) {
-  const StaticResult& r = *a.statics;
+  const StaticResult& r = *staticsOf(a);
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
   out["reactions"] = reactionsJson(r);
@@ -164,16 +166,16 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   out["solver"] = r.solver;
   out["time_s"] = r.time.total;
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
-  if (!a.cases.empty()) {
+  if (!casesOf(a).empty()) {
     Json cases = Json::array();
-    for (const CaseOutcome& c : a.cases) {
+    for (const CaseOutcome& c : casesOf(a)) {
       cases.push_back(caseJson(dofs, carried, c, stem));
       cases.back()["vtu"] = caseVtu(stem, int(cases.size()));
     }
     out["cases"] = cases;
     out["files"]["cases_csv"] = casesCsv(stem);
     out["files"]["cases_pvd"] = casesPvd(stem);
-    if (std::any_of(a.cases.begin(), a.cases.end(),
+    if (std::any_of(casesOf(a).begin(), casesOf(a).end(),
                     [](const CaseOutcome& c) { return c.combination; })) {
       out["envelope"] = envelopeJson(cases);
       if (!model.members().empty()) {
@@ -187,7 +189,7 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
 }
 
 Json modalJson(const std::array<bool, kDofKinds>& carried, const AnalysisOutcome& a) {
-  const ModalResult& r = *a.modal;
+  const ModalResult& r = *resultOf<ModalResult>(a);
   const std::string stem = fileStem(a.name);
   // Per translation kind the model carries: value(k) for k = 0 (ux), 1 (uy), 2 (uz).
   const auto perTranslation = [&](auto value) {
@@ -279,8 +281,9 @@ Json sweepAnalysisJson(const Json& analysis) {
   for (const char* key : {"reactions", "max_stress", "max_shear", "frequencies_hz", "maxima",
                           "second_order", "load_factors", "critical_speeds", "instability_onset",
                           "smallest_log_decrement"})
-    if (analysis.contains(key) && !(analysis.at("type") == "frequency-response" &&
-                                    std::string_view(key) == "frequencies_hz"))
+    if (analysis.contains(key) &&
+        !(analysis.at("type") == analysisTypeName<FrequencyResponseSpec>() &&
+          std::string_view(key) == "frequencies_hz"))
       out[key] = analysis[key];
   // An unbalance analysis: each response point's peak and the API 684 verdict, not the curves.
   if (analysis.contains("response")) {
@@ -335,21 +338,20 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
   Json analyses = Json::array();
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
-    if (a.statics)
-      analyses.push_back(staticJson(model, dofs, carried, a, peaks[i]));
-    else if (a.buckling)
-      analyses.push_back(bucklingJson(a));
-    else if (a.modal)
-      analyses.push_back(modalJson(carried, a));
-    else if (a.transient)
-      analyses.push_back(transientJson(a));
-    else if (a.rotor)
-      analyses.push_back(rotorJson(a));
-    else if (a.crank)
-      analyses.push_back(crankJson(a, fileStem(a.name)));
-    else  // a kind of analysis this writer does not know yet: at least say it ran
-      analyses.push_back({{"type", a.type}, {"name", a.name}});
-    if (a.secondOrder) analyses.back()["second_order"] = secondOrderJson(*a.secondOrder);
+    analyses.push_back(std::visit(
+        Overloaded{
+            [&](const StaticOutcome&) { return staticJson(model, dofs, carried, a, peaks[i]); },
+            [&](const SecondOrderResult& r) {
+              Json entry = staticJson(model, dofs, carried, a, peaks[i]);
+              entry["second_order"] = secondOrderJson(r);
+              return entry;
+            },
+            [&](const BucklingResult&) { return bucklingJson(a); },
+            [&](const ModalResult&) { return modalJson(carried, a); },
+            [&](const TransientOutcome&) { return transientJson(a); },
+            [&](const RotorOutcome&) { return rotorJson(a); },
+            [&](const CrankSliderOutcome&) { return crankJson(a, fileStem(a.name)); }},
+        a.result));
     if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;
   }
   doc["analyses"] = analyses;

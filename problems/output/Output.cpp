@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <stdexcept>
+#include <variant>
 
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/output/files/AtomicDirectory.hpp"
@@ -27,6 +28,7 @@
 #include "problems/output/structure/Tables.hpp"
 #include "problems/output/transient/TransientFiles.hpp"
 #include "problems/output/structure/VtkWriter.hpp"
+#include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
 
@@ -86,72 +88,94 @@ CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
   return t;
 }
 
+/// A static analysis' files: its fields, members, load cases, VTK and diagrams.
+void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
+                      const StaticResult& statics, const fs::path& dir, bool charts) {
+  const RunResult& run = *prepared.run;
+  const Model& model = *run.model;
+  const AnalysisOutcome& a = *p.outcome;
+  p.fields->write(dir / fieldsCsv(p.stem));
+  if (!casesOf(a).empty())
+    for (const Json& entry : prepared.doc.at("analyses"))
+      if (entry.at("name") == a.name && entry.contains("cases"))
+        loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
+  for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
+    for (const CsvTable& table : *list) table.write(dir / table.title());
+  writeStaticVtu(dir / staticVtu(p.stem), model, statics, p.stations, p.peaks);
+  if (!p.cases.empty()) {
+    std::vector<PvdEntry> entries;
+    for (const PreparedCase& c : p.cases) {
+      writeStaticVtu(dir / c.vtu, *c.outcome->model, c.outcome->statics, c.stations, c.peaks);
+      entries.push_back({double(entries.size() + 1), c.vtu});
+    }
+    writePvd(dir / casesPvd(p.stem), entries);
+  }
+  if (charts && !p.stations.empty() && p.members.empty())
+    drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
+                                  {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
+  if (charts && !p.members.empty()) {
+    // A frame: the whole structure at once, not a line coordinate through its members.
+    std::vector<MemberSeries> series;
+    for (const CsvTable& member : p.members)
+      series.push_back({member.title(), &member, member.title()});
+    drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), model,
+                              statics.displacement, series, run.dimension == "planar"));
+    for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
+      const std::string& member = model.members()[m].first;
+      drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),
+                                         envelopeChart(p.stem, member), p.envelopes[m],
+                                         p.envelopes[m].title()));
+    }
+  }
+}
+
+/// A modal analysis' files: its frequencies, shapes, one VTK file per mode and the chart.
+void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const ModalResult& modal,
+                     const fs::path& dir, bool charts) {
+  const Model& model = *run.model;
+  p.modes->write(dir / modesCsv(p.stem));
+  p.shapes->write(dir / shapesCsv(p.stem));
+  std::vector<PvdEntry> entries;
+  for (std::size_t m = 0; m < modal.modes.size(); ++m) {
+    const int number = int(m) + 1;
+    writeModeVtu(dir / modeVtu(p.stem, number), model, modal.modes[m], number);
+    // Mode numbers as time steps: rigid-body modes share frequency 0, numbers never tie.
+    entries.push_back({double(number), modeVtu(p.stem, number)});
+  }
+  writePvd(dir / collectionPvd(p.stem), entries);
+  if (charts && p.shapes->rowCount() > 0)
+    drawChart(dir, modeShapesChart(caption(run, p.outcome->name), shapesChart(p.stem), model, modal,
+                                   *p.shapes, shapesCsv(p.stem)));
+}
+
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
   const RunResult& run = *prepared.run;
   const Model& model = *run.model;
   writeJson(prepared.doc, dir / kResultsJson);
   for (const PreparedAnalysis& p : prepared.analyses) {
     const AnalysisOutcome& a = *p.outcome;
-    if (a.rotor) writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
-    if (a.crank) {
-      for (const CsvTable& table : p.crank) table.write(dir / table.title());
-      if (charts) drawCrankCharts(dir, *a.crank, p.stem, caption(run, a.name));
-    }
-    if (a.statics) {
-      p.fields->write(dir / fieldsCsv(p.stem));
-      if (!a.cases.empty())
-        for (const Json& entry : prepared.doc.at("analyses"))
-          if (entry.at("name") == a.name && entry.contains("cases"))
-            loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
-      for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
-        for (const CsvTable& table : *list) table.write(dir / table.title());
-      writeStaticVtu(dir / staticVtu(p.stem), model, *a.statics, p.stations, p.peaks);
-      if (!p.cases.empty()) {
-        std::vector<PvdEntry> entries;
-        for (const PreparedCase& c : p.cases) {
-          writeStaticVtu(dir / c.vtu, *c.outcome->model, c.outcome->statics, c.stations, c.peaks);
-          entries.push_back({double(entries.size() + 1), c.vtu});
-        }
-        writePvd(dir / casesPvd(p.stem), entries);
-      }
-      if (charts && !p.stations.empty() && p.members.empty())
-        drawChart(dir,
-                  staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
-                                 {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
-      if (charts && !p.members.empty()) {
-        // A frame: the whole structure at once, not a line coordinate through its members.
-        std::vector<MemberSeries> series;
-        for (const CsvTable& member : p.members)
-          series.push_back({member.title(), &member, member.title()});
-        drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), model,
-                                  a.statics->displacement, series, run.dimension == "planar"));
-        for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
-          const std::string& member = model.members()[m].first;
-          drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),
-                                             envelopeChart(p.stem, member), p.envelopes[m],
-                                             p.envelopes[m].title()));
-        }
-      }
-    }
-    if (a.transient)
-      writeTransientFiles(dir, model, p.stem, *a.transient, *p.history,
-                          charts ? caption(run, a.name) : "");
-    if (a.buckling) writeBucklingFiles(p, model, dir, caption(run, a.name), charts);
-    if (a.modal) {
-      p.modes->write(dir / modesCsv(p.stem));
-      p.shapes->write(dir / shapesCsv(p.stem));
-      std::vector<PvdEntry> entries;
-      for (std::size_t m = 0; m < a.modal->modes.size(); ++m) {
-        const int number = int(m) + 1;
-        writeModeVtu(dir / modeVtu(p.stem, number), model, a.modal->modes[m], number);
-        // Mode numbers as time steps: rigid-body modes share frequency 0, numbers never tie.
-        entries.push_back({double(number), modeVtu(p.stem, number)});
-      }
-      writePvd(dir / collectionPvd(p.stem), entries);
-      if (charts && p.shapes->rowCount() > 0)
-        drawChart(dir, modeShapesChart(caption(run, a.name), shapesChart(p.stem), model, *a.modal,
-                                       *p.shapes, shapesCsv(p.stem)));
-    }
+    std::visit(
+        Overloaded{
+            [&](const StaticOutcome& r) { writeStaticFiles(prepared, p, r.statics, dir, charts); },
+            [&](const SecondOrderResult& r) {
+              writeStaticFiles(prepared, p, r.secondOrder, dir, charts);
+            },
+            [&](const BucklingResult&) {
+              writeBucklingFiles(p, model, dir, caption(run, a.name), charts);
+            },
+            [&](const ModalResult& r) { writeModalFiles(run, p, r, dir, charts); },
+            [&](const TransientOutcome& r) {
+              writeTransientFiles(dir, model, p.stem, r, *p.history,
+                                  charts ? caption(run, a.name) : "");
+            },
+            [&](const RotorOutcome&) {
+              writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
+            },
+            [&](const CrankSliderOutcome& r) {
+              for (const CsvTable& table : p.crank) table.write(dir / table.title());
+              if (charts) drawCrankCharts(dir, r, p.stem, caption(run, a.name));
+            }},
+        a.result);
   }
 }
 
@@ -198,7 +222,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
     for (std::size_t k = 0; k < first.analyses.size(); ++k) {
       const AnalysisOutcome& a = first.analyses[k];
       const std::string stem = fileStem(a.name);
-      if (a.statics) {
+      if (staticsOf(a)) {
         std::vector<PvdEntry> series;
         for (std::size_t i = 0; i < sweep.values.size(); ++i)
           series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});

@@ -1,6 +1,8 @@
 // Preparing a run for writing (see PreparedRun.hpp).
 #include "problems/output/PreparedRun.hpp"
 
+#include <variant>
+
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
@@ -8,6 +10,7 @@
 #include "problems/output/structure/StabilityOutput.hpp"
 #include "problems/output/structure/Tables.hpp"
 #include "problems/output/transient/TransientFiles.hpp"
+#include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
 
@@ -29,15 +32,15 @@ namespace {
 
 /// Each case's VTK samples and, for a frame with combinations, the envelope along every member.
 void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
-  for (std::size_t i = 0; i < a.cases.size(); ++i) {
-    const CaseOutcome& c = a.cases[i];
+  for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
+    const CaseOutcome& c = casesOf(a)[i];
     const NodalField& u = c.statics.displacement;
     p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(*c.model, u),
                        elementPeaks(*c.model, u)});
   }
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
-  for (const CaseOutcome& c : a.cases)
+  for (const CaseOutcome& c : casesOf(a))
     if (c.combination) {
       combinations.push_back({c.model.get(), &c.statics.displacement});
       names.push_back(c.name);
@@ -47,6 +50,17 @@ void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
     p.envelopes.push_back(memberEnvelopeTable(
         envelopeCsv(p.stem, name), memberEnvelope(combinations, elements, kIntervalsPerElement),
         names));
+}
+
+/// A static analysis sampled along the line, its fields and member tables, and its cases.
+void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticResult& statics,
+                   PreparedAnalysis& p) {
+  p.stations = sampleStatics(model, statics.displacement);
+  p.peaks = elementPeaks(model, statics.displacement);
+  p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
+  for (const auto& [name, elements] : model.members())
+    p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
+  prepareCases(a, p);
 }
 
 }  // namespace
@@ -62,25 +76,22 @@ PreparedRun prepareRun(const RunResult& run) {
   std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
     PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
-    if (a.transient) p.history = historyTable(historyCsv(p.stem), *a.transient);
-    if (a.statics) {
-      p.stations = sampleStatics(model, a.statics->displacement);
-      p.peaks = elementPeaks(model, a.statics->displacement);
-      p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
-      for (const auto& [name, elements] : model.members())
-        p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
-      prepareCases(a, p);
-    }
-    if (a.modal) {
-      p.modes = modesTable(modesCsv(p.stem), *a.modal);
-      p.shapes = modeShapesTable(shapesCsv(p.stem), model, *a.modal);
-    }
-    if (a.buckling) {
-      p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), *a.buckling);
-      p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(*a.buckling));
-    }
-    if (a.rotor) p.rotor = prepareRotor(a, p.stem);
-    if (a.crank) p.crank = crankTables(*a.crank, p.stem);
+    std::visit(
+        Overloaded{
+            [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p); },
+            [&](const SecondOrderResult& r) { prepareStatic(model, a, r.secondOrder, p); },
+            [&](const ModalResult& r) {
+              p.modes = modesTable(modesCsv(p.stem), r);
+              p.shapes = modeShapesTable(shapesCsv(p.stem), model, r);
+            },
+            [&](const BucklingResult& r) {
+              p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), r);
+              p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(r));
+            },
+            [&](const TransientOutcome& r) { p.history = historyTable(historyCsv(p.stem), r); },
+            [&](const RotorOutcome&) { p.rotor = prepareRotor(a, p.stem); },
+            [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); }},
+        a.result);
     peaks.push_back(p.peaks);
     prepared.analyses.push_back(std::move(p));
   }

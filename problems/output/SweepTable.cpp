@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "problems/deck/AnalysisKinds.hpp"
+
 namespace beamrotor {
 
 namespace {
@@ -197,10 +199,13 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
     if (a.contains("second_order")) addSecondOrder(a, out);
     if (a.contains("load_factors")) addBuckling(a, runDocs, out);
     // A frequency response's frequencies are its excitation, not the model's.
-    if (a.contains("frequencies_hz") && a.at("type") != "frequency-response") addModal(a, out);
+    if (a.contains("frequencies_hz") &&
+        a.at("type") != analysisTypeName<FrequencyResponseSpec>())
+      addModal(a, out);
     if (a.contains("maxima")) addTransient(a, out);
     if (a.contains("critical_speeds")) addCampbell(a, runDocs, out);
-    if (a.contains("response") && a.at("type") == "unbalance") addUnbalance(a, out);
+    if (a.contains("response") && a.at("type") == analysisTypeName<UnbalanceSpec>())
+      addUnbalance(a, out);
   }
   const Json reported = runDocs.at(0).value("reported", Json::object());
   for (const auto& [name, value] : reported.items())

@@ -146,8 +146,9 @@ class PythonRun {
   py::array_t<double> displacements(const std::string& analysis) const {
     for (const AnalysisOutcome& a : run_.analyses)
       if (a.name == analysis) {
-        if (!a.statics) throw py::value_error("analysis '" + analysis + "' is not static");
-        const NodalField& u = a.statics->displacement;
+        const StaticResult* statics = staticsOf(a);
+        if (!statics) throw py::value_error("analysis '" + analysis + "' is not static");
+        const NodalField& u = statics->displacement;
         py::array_t<double> out({py::ssize_t(u.rows()), py::ssize_t(u.cols())});
         auto view = out.mutable_unchecked<2>();
         for (Eigen::Index r = 0; r < u.rows(); ++r)

@@ -49,7 +49,7 @@ struct MeshChoice {
 double roundOffOf(const RunResult& run) {
   double largest = 0;
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics) largest = std::max(largest, a.statics->roundOff);
+    if (const StaticResult* s = staticsOf(a)) largest = std::max(largest, s->roundOff);
   return largest;
 }
 
@@ -116,8 +116,9 @@ std::optional<double> rigidBodyError(const RunResult& run) {
   const RigidBodyOutcome* rigid = nullptr;
   const ModalResult* modal = nullptr;
   for (const AnalysisOutcome& a : run.analyses) {
-    if (!rigid && a.rotor && a.rotor->rigidBody) rigid = &*a.rotor->rigidBody;
-    if (!modal && a.modal) modal = &*a.modal;
+    const auto* rotor = resultOf<RotorOutcome>(a);
+    if (!rigid && rotor && rotor->rigidBody) rigid = &*rotor->rigidBody;
+    if (!modal) modal = resultOf<ModalResult>(a);
   }
   if (!rigid || !modal || modal->modes.size() < 2) return std::nullopt;
   double largest = 0;

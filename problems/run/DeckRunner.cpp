@@ -3,6 +3,7 @@
 #include <cmath>
 #include <new>
 #include <stdexcept>
+#include <variant>
 
 #include "fem/assembly/Recovery.hpp"
 #include "fem/modal/Modal.hpp"
@@ -69,38 +70,40 @@ std::vector<CaseOutcome> solveCases(const Deck& deck, const StaticOptions& optio
 AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model,
                       RunCache* cache) {
   AnalysisOutcome out;
-  out.type = a.type;
+  out.type = a.type();
   out.name = a.name;
   try {
-    if (a.type == "static" && a.secondOrder) {
-      out.secondOrder = solveSecondOrder(model);
-      out.statics = out.secondOrder->secondOrder;
-    } else if (a.type == "static") {
+    if (std::holds_alternative<StaticSpec>(a.kind) && a.secondOrder) {
+      out.result = solveSecondOrder(model);
+    } else if (std::holds_alternative<StaticSpec>(a.kind)) {
       StaticOptions options;
       if (cache) options.reuse = &cache->statics;
-      out.statics = solveStatic(model, options);
-      if (auto w = overRefinementWarning(model, *out.statics)) out.warnings.push_back(*w);
-      if (auto w = displacementWarning(model, *out.statics)) out.warnings.push_back(*w);
-      out.cases = solveCases(deck, options);
-    } else if (a.type == "buckling") {
+      StaticOutcome statics{solveStatic(model, options), {}};
+      if (auto w = overRefinementWarning(model, statics.statics)) out.warnings.push_back(*w);
+      if (auto w = displacementWarning(model, statics.statics)) out.warnings.push_back(*w);
+      statics.cases = solveCases(deck, options);
+      out.result = std::move(statics);
+    } else if (std::holds_alternative<BucklingSpec>(a.kind)) {
       BucklingOptions options;
       options.count = a.modes;
       options.reversed = a.reversed;
-      out.buckling = solveBuckling(model, options);
-      out.warnings = out.buckling->warnings;
+      BucklingResult buckling = solveBuckling(model, options);
+      out.warnings = buckling.warnings;
+      out.result = std::move(buckling);
     } else if (a.transient) {
-      out.transient = runTransient(deck, a, model);
+      out.result = runTransient(deck, a, model);
     } else if (a.crank) {
-      out.crank = runCrankSlider(*a.crank);
-    } else if (isRotorAnalysis(a.type)) {
-      out.rotor = solveRotorAnalysis(deck, a, model);
+      out.result = runCrankSlider(*a.crank);
+    } else if (isRotorAnalysis(a.kind)) {
+      out.result = solveRotorAnalysis(deck, a, model);
     } else {
       ModalOptions options;
       options.modes = a.modes;
       options.shift = a.shift;
-      out.modal = a.prestressed ? solvePrestressedModes(model, options) : solveModes(model, options);
-      out.warnings.insert(out.warnings.end(), out.modal->warnings.begin(),
-                          out.modal->warnings.end());
+      ModalResult modal =
+          a.prestressed ? solvePrestressedModes(model, options) : solveModes(model, options);
+      out.warnings.insert(out.warnings.end(), modal.warnings.begin(), modal.warnings.end());
+      out.result = std::move(modal);
     }
   } catch (const DeckError&) {
     throw;  // bad input only the model could reveal (an unstable explicit step)
@@ -129,12 +132,12 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
       continue;
     }
     c.quantity += " (case " + k.loadCase + ")";
-    for (const CaseOutcome& lc : a.cases)
+    for (const CaseOutcome& lc : casesOf(a))
       if (lc.name == k.loadCase) {
         AnalysisOutcome one;
         one.type = a.type;
         one.name = a.name;
-        one.statics = lc.statics;
+        one.result = StaticOutcome{lc.statics, {}};
         c.computed = measure(k.quantity, one, *lc.model);
       }
   }

@@ -9,6 +9,7 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/DofMap.hpp"
+#include "problems/deck/AnalysisKinds.hpp"
 #include "problems/run/MeasureRotor.hpp"
 #include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/TransientOutcome.hpp"
@@ -78,33 +79,35 @@ double measureMember(const Quantity& q, const StaticResult& r, const Model& mode
 }  // namespace
 
 double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
-  if (outcome.rotor) return measureRotor(q, outcome);
-  if (outcome.crank) return measureCrank(q, *outcome.crank);
+  if (resultOf<RotorOutcome>(outcome)) return measureRotor(q, outcome);
+  if (const auto* crank = resultOf<CrankSliderOutcome>(outcome)) return measureCrank(q, *crank);
   if (q.kind == Quantity::Kind::frequency) {
-    if (!outcome.modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
-    const auto& modes = outcome.modal->modes;
+    const auto* modal = resultOf<ModalResult>(outcome);
+    if (!modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
+    const auto& modes = modal->modes;
     if (q.mode > int(modes.size()))
       throw std::invalid_argument("analysis '" + outcome.name + "' found only " +
                                   std::to_string(modes.size()) + " modes");
     return modes[q.mode - 1].frequencyHz;
   }
   if (q.kind == Quantity::Kind::bucklingFactor) {
-    if (!outcome.buckling)
+    const auto* buckling = resultOf<BucklingResult>(outcome);
+    if (!buckling)
       throw std::invalid_argument("analysis '" + outcome.name + "' is not a buckling analysis");
-    const auto& modes = outcome.buckling->modes;
+    const auto& modes = buckling->modes;
     if (q.mode > int(modes.size()))
       throw std::invalid_argument("analysis '" + outcome.name + "' found only " +
                                   std::to_string(modes.size()) + " positive load factors");
     return modes[q.mode - 1].factor;
   }
-  if (q.analysisType() == "transient") {
-    if (!outcome.transient)
-      throw std::invalid_argument("analysis '" + outcome.name + "' is not transient");
-    return measureHistory(q, *outcome.transient);
+  if (answers<TransientSpec>(q)) {
+    const auto* transient = resultOf<TransientOutcome>(outcome);
+    if (!transient) throw std::invalid_argument("analysis '" + outcome.name + "' is not transient");
+    return measureHistory(q, *transient);
   }
-  if (!outcome.statics)
-    throw std::invalid_argument("analysis '" + outcome.name + "' is not static");
-  const StaticResult& r = *outcome.statics;
+  const StaticResult* statics = staticsOf(outcome);
+  if (!statics) throw std::invalid_argument("analysis '" + outcome.name + "' is not static");
+  const StaticResult& r = *statics;
   switch (q.kind) {
     case Quantity::Kind::reaction:
       return r.reaction(q.target, q.dof);

@@ -39,7 +39,7 @@ double rigidBodyProperty(const RigidBodyOutcome& r, const std::string& p) {
 }  // namespace
 
 double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
-  const RotorOutcome& r = *outcome.rotor;
+  const RotorOutcome& r = *resultOf<RotorOutcome>(outcome);
   const std::string name = "analysis '" + outcome.name + "'";
   switch (q.kind) {
     case Quantity::Kind::frequency:

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "fem/solvers/AvailableMemory.hpp"
 #include "fem/solvers/HeapReserve.hpp"
@@ -33,7 +34,7 @@ std::vector<MemoryPart> estimateRunMemory(const Deck& deck) {
                        static_cast<long long>(elements + double(deck.masses.size())), perNode)),
                    deck.segments.empty() ? DeckPlace{} : deck.segments.front().place});
   for (const DeckAnalysis& a : deck.analyses) {
-    const std::string name = a.type + " '" + a.name + "'";
+    const std::string name = a.type() + " '" + a.name + "'";
     if (a.transient) {
       const DeckTransient& t = *a.transient;
       const double steps = std::round(t.end / t.dt);
@@ -47,11 +48,14 @@ std::vector<MemoryPart> estimateRunMemory(const Deck& deck) {
         parts.push_back({name + ": " + std::to_string(t.frames) + " frames of " +
                              std::to_string(static_cast<long long>(nodes)) + " nodes",
                          double(t.frames + 1) * nodes * kDofKinds * kDouble, a.place});
-    } else if (a.type == "modal" || a.type == "rotor" || a.type == "campbell") {
+    } else if (std::holds_alternative<ModalSpec>(a.kind) ||
+               std::holds_alternative<RotorSpec>(a.kind) ||
+               std::holds_alternative<CampbellSpec>(a.kind)) {
       // Lanczos vectors, the shapes kept and, for rotors, complex numbers.
       const double lanczos = std::min(dofs, double(lanczosBasisSize(a.modes)));
-      const double complex = a.type == "modal" ? 1 : 2;
-      const double speeds = a.type == "campbell" ? double(a.rotor.speeds.size()) : 1;
+      const double complex = std::holds_alternative<ModalSpec>(a.kind) ? 1 : 2;
+      const double speeds =
+          std::holds_alternative<CampbellSpec>(a.kind) ? double(a.rotor.speeds.size()) : 1;
       parts.push_back(
           {name + ": " + std::to_string(a.modes) + " modes",
            complex * kDouble * (lanczos * dofs + speeds * a.modes * (dofs + nodes * kDofKinds)),

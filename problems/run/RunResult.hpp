@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "fem/model/Model.hpp"
@@ -48,21 +49,53 @@ struct CaseOutcome {
   StaticResult statics;
 };
 
+/// A linear static analysis: its solution, and each load case and combination solved apart.
+struct StaticOutcome {
+  StaticResult statics;
+  std::vector<CaseOutcome> cases;  ///< the load cases, then the combinations
+};
+
+/// What one analysis produced: one value type per kind of result. A static analysis with
+/// `second_order: true` gives both of its states (SecondOrderResult), a modal one (prestressed
+/// or not) its modes, and every rotor analysis a RotorOutcome.
+using AnalysisResult = std::variant<StaticOutcome, SecondOrderResult, ModalResult, BucklingResult,
+                                    TransientOutcome, RotorOutcome, CrankSliderOutcome>;
+
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
-  std::string type;  ///< "static", "modal", "buckling", "rotor", "campbell", "unbalance", "rigid-body", "crank-slider"
+  std::string type;  ///< the deck's type for it (AnalysisKinds.hpp), e.g. "campbell"
   std::string name;  ///< the deck's name for it (defaults to the type)
-  std::optional<StaticResult> statics;
-  std::optional<ModalResult> modal;
-  std::optional<TransientOutcome> transient;
-  std::optional<RotorOutcome> rotor;  ///< the rotor analyses
-  std::optional<CrankSliderOutcome> crank;  ///< crank-slider: the mechanism's motion and loads
-  std::optional<BucklingResult> buckling;  ///< buckling: load factors and mode shapes
-  /// static with `second_order: true`: both states (statics holds the second-order one)
-  std::optional<SecondOrderResult> secondOrder;
-  std::vector<CaseOutcome> cases;     ///< static: the load cases, then the combinations
+  AnalysisResult result;
   std::vector<std::string> warnings;  ///< not errors, e.g. an over-refined mesh
 };
+
+/// The result of analysis `a` when it is an R; null otherwise.
+template <class R>
+const R* resultOf(const AnalysisOutcome& a) {
+  return std::get_if<R>(&a.result);
+}
+template <class R>
+R* resultOf(AnalysisOutcome& a) {
+  return std::get_if<R>(&a.result);
+}
+
+/// The static solution of a static analysis (with `second_order: true`, the second-order
+/// state); null for the other kinds.
+inline const StaticResult* staticsOf(const AnalysisOutcome& a) {
+  if (const auto* s = resultOf<StaticOutcome>(a)) return &s->statics;
+  if (const auto* s = resultOf<SecondOrderResult>(a)) return &s->secondOrder;
+  return nullptr;
+}
+inline StaticResult* staticsOf(AnalysisOutcome& a) {
+  return const_cast<StaticResult*>(staticsOf(std::as_const(a)));
+}
+
+/// The load cases and combinations of a linear static analysis; none for the other kinds.
+inline const std::vector<CaseOutcome>& casesOf(const AnalysisOutcome& a) {
+  static const std::vector<CaseOutcome> none;
+  const auto* s = resultOf<StaticOutcome>(a);
+  return s ? s->cases : none;
+}
 
 /// One solved instance of a deck (one set of parameter values).
 struct RunResult {

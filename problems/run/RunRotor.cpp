@@ -4,6 +4,7 @@
 #include "problems/run/RunRotor.hpp"
 
 #include <stdexcept>
+#include <variant>
 
 #include "elements/Bearing.hpp"
 #include "elements/Spring.hpp"
@@ -38,7 +39,8 @@ std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
 /// The operating range of the deck's first unbalance analysis that gives one.
 std::optional<OperatingRange> deckOperatingRange(const Deck& deck) {
   for (const DeckAnalysis& a : deck.analyses)
-    if (a.type == "unbalance" && a.rotor.operating) return a.rotor.operating;
+    if (std::holds_alternative<UnbalanceSpec>(a.kind) && a.rotor.operating)
+      return a.rotor.operating;
   return std::nullopt;
 }
 
@@ -121,9 +123,9 @@ RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
 RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const Model& model) {
   RotorOutcome out;
   const DeckRotorAnalysis& r = a.rotor;
-  if (a.type == "rotor") {
+  if (std::holds_alternative<RotorSpec>(a.kind)) {
     out.modes = solveRotorModes(model, r.speed, optionsOf(deck, a));
-  } else if (a.type == "campbell") {
+  } else if (std::holds_alternative<CampbellSpec>(a.kind)) {
     out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, a));
     out.order = r.order;
     out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
@@ -134,7 +136,7 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.onset = instabilityOnset(model, *out.campbell, optionsOf(deck, a));
     out.journals = journalCurves(deck);
     out.operating = deckOperatingRange(deck);
-  } else if (a.type == "unbalance") {
+  } else if (std::holds_alternative<UnbalanceSpec>(a.kind)) {
     std::vector<Unbalance> unbalance;
     for (const DeckUnbalance& u : r.unbalance)
       unbalance.push_back({model.node(u.point), u.me, u.phase});
@@ -153,7 +155,7 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
         out.peaks.push_back(unbalancePeaks(model, deck.rotor.damping, out.unbalance->speeds,
                                            amplitudes, *r.operating));
       }
-  } else if (a.type == "critical-speed-map") {
+  } else if (std::holds_alternative<CriticalSpeedMapSpec>(a.kind)) {
     Stopwatch clock;
     out.map = solveCriticalSpeedMap(model, r.stiffnesses, r.criticalSpeeds);
     out.mapTime = clock.lap();
@@ -162,7 +164,7 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
       b.kxxCrossings = mapCrossings(*out.map, b.speeds, b.kxx);
       b.kyyCrossings = mapCrossings(*out.map, b.speeds, b.kyy);
     }
-  } else if (a.type == "bearing-loads") {
+  } else if (std::holds_alternative<BearingLoadsSpec>(a.kind)) {
     Stopwatch clock;
     const auto& g = r.gravity;
     out.gravityLoads = solveGravityLoads(
@@ -171,7 +173,7 @@ RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const M
     out.loadsTime = clock.lap();
     for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
     out.rigidBearings = r.rigidBearings;
-  } else if (a.type == "frequency-response") {
+  } else if (std::holds_alternative<FrequencyResponseSpec>(a.kind)) {
     const NodeDof in{model.node(r.inputPoint), r.inputDof};
     const NodeDof to{model.node(r.outputPoint), r.outputDof};
     out.frequencyResponse =

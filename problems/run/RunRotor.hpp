@@ -8,7 +8,7 @@
 
 namespace beamrotor {
 
-/// Solves one analysis with isRotorAnalysis(a.type). Throws what the core throws
+/// Solves one analysis with isRotorAnalysis(a.kind). Throws what the core throws
 /// (SolveError, std::invalid_argument); the caller reports it at the analysis.
 RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const Model& model);
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <variant>
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
@@ -70,7 +71,7 @@ StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText
   }
   plan.exclusive = std::any_of(deck.analyses.begin(), deck.analyses.end(),
                                [&](const DeckAnalysis& a) {
-                                 return a.type != "static" &&
+                                 return !std::holds_alternative<StaticSpec>(a.kind) &&
                                         std::find(plan.analyses.begin(), plan.analyses.end(),
                                                   a.name) != plan.analyses.end();
                                }) ||
@@ -123,8 +124,8 @@ StudyRow PointSolver::solve(long long index, const std::vector<double>& values) 
     const double runSeconds = clock.lap();
     row.cost.model = run.modelSeconds;
     for (const AnalysisOutcome& a : run.analyses) {
-      if (a.statics) addStaticCost(*a.statics, row.cost);
-      for (const CaseOutcome& c : a.cases) addStaticCost(c.statics, row.cost);
+      if (const StaticResult* s = staticsOf(a)) addStaticCost(*s, row.cost);
+      for (const CaseOutcome& c : casesOf(a)) addStaticCost(c.statics, row.cost);
     }
     row.cost.measure = run.checksSeconds;
     // The rest of the run (an `accuracy:` deck's whole search among them).

@@ -126,7 +126,7 @@ int checkAllPass(const Study& study) {
 
 double staticReaction(const RunResult& run, const std::string& support, Dof dof) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics) return a.statics->reaction(support, dof);
+    if (staticsOf(a)) return staticsOf(a)->reaction(support, dof);
   throw std::invalid_argument("run of " + run.deckName + " has no static analysis");
 }
 

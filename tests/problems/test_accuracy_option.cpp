@@ -147,9 +147,9 @@ Study formeShaftWithAccuracy(double target, std::vector<std::string> sets = {}) 
 double deckRigidError(const Study& s) {
   double largest = 0;
   for (const AnalysisOutcome& a : s.run->analyses) {
-    if (!a.modal) continue;
+    if (!resultOf<ModalResult>(a)) continue;
     for (int i = 0; i < 2; ++i) {
-      const double fe = a.modal->modes[i].frequencyHz;
+      const double fe = resultOf<ModalResult>(a)->modes[i].frequencyHz;
       const double twoDof = test::deckValue(s.deck, i == 0 ? "f1" : "f2");
       largest = std::max(largest, std::abs(twoDof - fe) / fe);
     }

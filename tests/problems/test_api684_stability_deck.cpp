@@ -33,11 +33,11 @@ TEST_SUITE("rotor decks") {
     const Study study = solveStudy(request);
     REQUIRE(study.run);
     const RunResult& run = *study.run;
-    const RotorOutcome& campbell = *compressorAnalysis(run, "campbell").rotor;
+    const RotorOutcome& campbell = *resultOf<RotorOutcome>(compressorAnalysis(run, "campbell"));
     const AnalysisOutcome& response = compressorAnalysis(run, "response");
     REQUIRE(campbell.onset.has_value());
-    REQUIRE(response.rotor->stability.has_value());
-    const OperatingStability& s = *response.rotor->stability;
+    REQUIRE(resultOf<RotorOutcome>(response)->stability.has_value());
+    const OperatingStability& s = *resultOf<RotorOutcome>(response)->stability;
     CHECK_FALSE(s.pass);
     REQUIRE(s.onset.has_value());
     // Both refine the same root to 1e-10 of the speed from different brackets: they agree to

@@ -41,7 +41,7 @@ TEST_SUITE("rotor decks") {
     const double bounceRpm = deckValue(study.deck, "bounce") * 60 / (2 * std::acos(-1.0));
     const RotorOutcome* campbell = nullptr;
     for (const AnalysisOutcome& a : study.run->analyses)
-      if (a.type == "campbell") campbell = &*a.rotor;
+      if (a.type == "campbell") campbell = &*resultOf<RotorOutcome>(a);
     REQUIRE(campbell != nullptr);
     // Order 1 stays the critical speeds' order: the two bounce lines (y and z) first.
     REQUIRE(campbell->criticalSpeeds.size() >= 2);

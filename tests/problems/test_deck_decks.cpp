@@ -20,7 +20,7 @@ StudyRequest request(const std::filesystem::path& deck, std::vector<std::string>
 
 double reaction(const RunResult& run, const std::string& support, Dof d) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics) return a.statics->reaction(support, d);
+    if (staticsOf(a)) return staticsOf(a)->reaction(support, d);
   FAIL("no static analysis");
   return 0;
 }

@@ -49,7 +49,7 @@ RunResult solveFeatureDeck(const std::string& body) {
 
 const StaticResult& statics(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics) return *a.statics;
+    if (staticsOf(a)) return *staticsOf(a);
   throw std::logic_error("no static analysis");
 }
 
@@ -180,11 +180,11 @@ masses:
 analyses:
   - {type: modal, modes: 1}
 )");
-    REQUIRE(run.analyses[0].modal);
+    REQUIRE(resultOf<ModalResult>(run.analyses[0]));
     const double f = std::sqrt(3 * E * I / (12 * L * L * L)) / (2 * std::numbers::pi);
     // The massless beam condenses exactly to its tip stiffness; the eigen solver converges to
     // ~1e-12, so 1e-8 is generous without hiding a wrong mass or stiffness.
-    CHECK(relError(run.analyses[0].modal->modes[0].frequencyHz, f) < 1e-8);
+    CHECK(relError(resultOf<ModalResult>(run.analyses[0])->modes[0].frequencyHz, f) < 1e-8);
   }
 
   TEST_CASE("3D frame: bending about y and torsion") {
@@ -253,7 +253,7 @@ analyses:
   - {type: static}
 )";
       const RunResult run = solveFeatureDeck(deck);
-      const StaticResult& s = *run.analyses.at(0).statics;
+      const StaticResult& s = *staticsOf(run.analyses.at(0));
       REQUIRE(s.contacts.size() == 1);
       if (load < closing) {
         CHECK_FALSE(s.contacts[0].active);

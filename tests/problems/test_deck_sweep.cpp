@@ -47,7 +47,7 @@ Study solve(const std::string& sweep, StudyRequest r = {}) {
 }
 
 double midDeflection(const RunResult& run) {
-  return run.analyses[0].statics->displacement(run.model->node("mid"), dofIndex(Dof::uy));
+  return staticsOf(run.analyses[0])->displacement(run.model->node("mid"), dofIndex(Dof::uy));
 }
 
 }  // namespace

@@ -49,8 +49,8 @@ RunResult solveTransientDeck(const std::string& text, std::vector<std::string> s
 }
 
 const TransientOutcome& outcome(const RunResult& run) {
-  REQUIRE(run.analyses.at(0).transient);
-  return *run.analyses.at(0).transient;
+  REQUIRE(resultOf<TransientOutcome>(run.analyses.at(0)));
+  return *resultOf<TransientOutcome>(run.analyses.at(0));
 }
 
 /// Largest |x(t) - exact(t)| over the samples.

@@ -74,13 +74,13 @@ const std::string kUnitTwin =
 
 const StaticResult& firstStatic(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics) return *a.statics;
+    if (staticsOf(a)) return *staticsOf(a);
   throw std::logic_error("no static analysis");
 }
 
 const ModalResult& firstModal(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.modal) return *a.modal;
+    if (resultOf<ModalResult>(a)) return *resultOf<ModalResult>(a);
   throw std::logic_error("no modal analysis");
 }
 

@@ -55,8 +55,9 @@ TEST_SUITE("forme shaft decks") {
     const RunResult run = solveFormeDeck("forme_shaft.yaml");
     CHECK(passedChecks(run) == 11);  // the rigid-limit checks do not apply to steel
     CHECK(run.skippedChecks.size() == 2);
-    const RigidBodyOutcome& rigid = *analysisOfType(run, "rigid-body").rotor->rigidBody;
-    const ModalResult& modal = *analysisOfType(run, "modal").modal;
+    const RigidBodyOutcome& rigid =
+        *resultOf<RotorOutcome>(analysisOfType(run, "rigid-body"))->rigidBody;
+    const ModalResult& modal = *resultOf<ModalResult>(analysisOfType(run, "modal"));
 
     // Plumbing, not a second method: the same shaft built in C++ by the scene
     // (problems/scenes/FormeShaft) with the same mesh and solved the same way gives the same
@@ -83,8 +84,9 @@ TEST_SUITE("forme shaft decks") {
     const RunResult run = solveFormeDeck("forme_shaft.yaml", {"E=2e17"});
     CHECK(passedChecks(run) == 13);
     CHECK(run.skippedChecks.empty());
-    const RigidBodyOutcome& rigid = *analysisOfType(run, "rigid-body").rotor->rigidBody;
-    const ModalResult& modal = *analysisOfType(run, "modal").modal;
+    const RigidBodyOutcome& rigid =
+        *resultOf<RotorOutcome>(analysisOfType(run, "rigid-body"))->rigidBody;
+    const ModalResult& modal = *resultOf<ModalResult>(analysisOfType(run, "modal"));
     for (int i = 0; i < 2; ++i)
       CHECK(relError(modal.modes[i].frequencyHz, rigid.modes[i].k / kTwoPi) < 1e-6);
   }
@@ -93,11 +95,12 @@ TEST_SUITE("forme shaft decks") {
     // C2 from the lever arms of the default deck; the FE centre of mass is the section
     // integrals' to round-off (checked by the deck), so b is round-off too.
     const RunResult first = solveFormeDeck("forme_shaft.yaml");
-    const FormeShaftRigid s = analysisOfType(first, "rigid-body").rotor->rigidBody->rigid;
+    const FormeShaftRigid s =
+        resultOf<RotorOutcome>(analysisOfType(first, "rigid-body"))->rigidBody->rigid;
     const double C2 = s.C1 * s.l1 / s.l2;
     const RunResult run = solveFormeDeck("forme_shaft.yaml", {"E=2e17", setting("C2", C2)});
     const AnalysisOutcome& outcome = analysisOfType(run, "rigid-body");
-    const RigidBodyOutcome& rigid = *outcome.rotor->rigidBody;
+    const RigidBodyOutcome& rigid = *resultOf<RotorOutcome>(outcome)->rigidBody;
     const int ib = rigid.modes[0].kind == FormeModeKind::bounce ? 0 : 1;
     REQUIRE(rigid.modes[ib].kind == FormeModeKind::bounce);
     REQUIRE(rigid.modes[1 - ib].kind == FormeModeKind::rocking);
@@ -110,7 +113,7 @@ TEST_SUITE("forme shaft decks") {
     CHECK(passedChecks(run) == 7);
     REQUIRE(run.skippedChecks.size() == 6);
     CHECK(run.skippedChecks[0] == "two-dof n1");
-    const ModalResult& modal = *analysisOfType(run, "modal").modal;
+    const ModalResult& modal = *resultOf<ModalResult>(analysisOfType(run, "modal"));
     for (int i = 0; i < 2; ++i)
       CHECK(relError(modal.modes[i].frequencyHz, rigid.modes[i].k / kTwoPi) < 1e-6);
     // results.json: n of the bounce mode is null (infinite), of the rocking mode 0.
@@ -132,8 +135,8 @@ TEST_SUITE("forme shaft decks") {
     const RunResult steel = solveFormeDeck("forme_shaft_rotor.yaml");
     CHECK(passedChecks(steel) == 4);
     const RunResult stiff = solveFormeDeck("forme_shaft_rotor.yaml", {"E=2e17"});
-    const auto& soft = analysisOfType(steel, "campbell").rotor->criticalSpeeds;
-    const auto& rigid = analysisOfType(stiff, "campbell").rotor->criticalSpeeds;
+    const auto& soft = resultOf<RotorOutcome>(analysisOfType(steel, "campbell"))->criticalSpeeds;
+    const auto& rigid = resultOf<RotorOutcome>(analysisOfType(stiff, "campbell"))->criticalSpeeds;
     REQUIRE(soft.size() == 4);
     REQUIRE(rigid.size() == 4);
     for (int i = 0; i < 4; ++i) {

@@ -18,9 +18,9 @@ namespace {
 
 const RigidBodyOutcome& givenBodyOutcome(const RunResult& run) {
   REQUIRE(run.analyses.size() == 1);
-  REQUIRE(run.analyses[0].rotor);
-  REQUIRE(run.analyses[0].rotor->rigidBody);
-  return *run.analyses[0].rotor->rigidBody;
+  REQUIRE(resultOf<RotorOutcome>(run.analyses[0]));
+  REQUIRE(resultOf<RotorOutcome>(run.analyses[0])->rigidBody);
+  return *resultOf<RotorOutcome>(run.analyses[0])->rigidBody;
 }
 
 /// Frequencies (rad/s, ascending) and z/phi ratios of M x'' + K x = 0, x = (z, phi).

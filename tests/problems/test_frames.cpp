@@ -69,8 +69,8 @@ const RunResult& frameRun(const Study& s) {
 }
 
 const StaticResult& frameStatics(const RunResult& run) {
-  REQUIRE(run.analyses.front().statics);
-  return *run.analyses.front().statics;
+  REQUIRE(staticsOf(run.analyses.front()));
+  return *staticsOf(run.analyses.front());
 }
 
 double frameDisplacement(const RunResult& run, const std::string& point, Dof d) {

@@ -99,7 +99,7 @@ TEST_SUITE("hinge fields") {
     const Study study = solveGerber(gerberDeck(g, ""));
     REQUIRE(study.run);
     const RunResult& run = *study.run;
-    const StaticResult& r = *run.analyses.front().statics;
+    const StaticResult& r = *staticsOf(run.analyses.front());
     const double wScale = std::abs(g.leftDeflection(g.a)), thetaScale = wScale / g.b;
     // The stations the CSV, VTK and charts are written from: every quarter of each element,
     // the hinge on both sides (s = 1 of the left element, s = 0 of the right one).
@@ -149,7 +149,7 @@ TEST_SUITE("hinge fields") {
     }
     // results.json: both sides by name, and no rz of the node (it has none).
     const std::vector<std::vector<ElementPeaks>> peaks{
-        elementPeaks(*run.model, run.analyses.front().statics->displacement)};
+        elementPeaks(*run.model, staticsOf(run.analyses.front())->displacement)};
     const Json doc = runJson(run, peaks);
     const Json& hinge = doc.at("analyses").at(0).at("displacements").at("hinge");
     CHECK(hinge.at("rz_left").get<double>() == doctest::Approx(g.leftRotation(g.a)).epsilon(1e-11));

@@ -86,7 +86,7 @@ const RunResult& onlyRun(const Study& s) {
 }
 
 const CaseOutcome& caseOf(const RunResult& run, const std::string& name) {
-  const auto& cases = run.analyses.front().cases;
+  const auto& cases = casesOf(run.analyses.front());
   const auto it = std::find_if(cases.begin(), cases.end(),
                                [&](const CaseOutcome& c) { return c.name == name; });
   REQUIRE(it != cases.end());
@@ -124,7 +124,7 @@ TEST_SUITE("load cases") {
   TEST_CASE("two-span beam under pattern loading matches the closed forms") {
     const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
     const RunResult& run = onlyRun(s);
-    REQUIRE(run.analyses.front().cases.size() == 5);
+    REQUIRE(casesOf(run.analyses.front()).size() == 5);
     const double qL = kQ * kL, qL2 = kQ * kL * kL;
 
     const CaseOutcome& both = caseOf(run, "both");
@@ -153,8 +153,8 @@ TEST_SUITE("load cases") {
                                          "one.yaml");
     const Study s2 = test::solveDeckText(twoSpanDeck("loads: [" + spanLoad("span2", kQ) + "]\n"),
                                          "two.yaml");
-    const StaticResult& r1 = *onlyRun(s1).analyses.front().statics;
-    const StaticResult& r2 = *onlyRun(s2).analyses.front().statics;
+    const StaticResult& r1 = *staticsOf(onlyRun(s1).analyses.front());
+    const StaticResult& r2 = *staticsOf(onlyRun(s2).analyses.front());
     const CaseOutcome& uls = caseOf(run, "ULS");
     const NodalField sum = 1.35 * r1.displacement + 1.5 * r2.displacement;
     const double du = (uls.statics.displacement - sum).cwiseAbs().maxCoeff();
@@ -173,7 +173,7 @@ TEST_SUITE("load cases") {
                     "]\n"),
         "factored.yaml");
     const RunResult& f = onlyRun(sf);
-    CaseOutcome direct{"direct", false, f.model, *f.analyses.front().statics};
+    CaseOutcome direct{"direct", false, f.model, *staticsOf(f.analyses.front())};
     for (const char* member : {"span1", "span2"})
       CHECK(memberMaxAbsMz(uls, member) ==
             doctest::Approx(memberMaxAbsMz(direct, member)).epsilon(kExact));
@@ -182,15 +182,15 @@ TEST_SUITE("load cases") {
   TEST_CASE("the envelope in results.json is the extreme over the combinations") {
     const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
     const RunResult& run = onlyRun(s);
-    const Json doc = runJson(
-        run, {elementPeaks(*run.model, run.analyses.front().statics->displacement)});
+    const Json doc =
+        runJson(run, {elementPeaks(*run.model, staticsOf(run.analyses.front())->displacement)});
     const Json& analysis = doc["analyses"][0];
     REQUIRE(analysis.contains("envelope"));
     REQUIRE(analysis["cases"].size() == 5);
     const Json& env = analysis["envelope"];
     for (const char* support : {"A", "B", "C"}) {
       double hi = -1e300, lo = 1e300;
-      for (const CaseOutcome& c : run.analyses.front().cases) {
+      for (const CaseOutcome& c : casesOf(run.analyses.front())) {
         if (!c.combination) continue;
         hi = std::max(hi, c.statics.reaction(support, Dof::uy));
         lo = std::min(lo, c.statics.reaction(support, Dof::uy));
@@ -204,7 +204,7 @@ TEST_SUITE("load cases") {
     CHECK(env["reactions"]["C"]["fy"]["min"]["case"] == "left");
     for (const char* member : {"span1", "span2"}) {
       double hi = -1e300, lo = 1e300;
-      for (const CaseOutcome& c : run.analyses.front().cases) {
+      for (const CaseOutcome& c : casesOf(run.analyses.front())) {
         if (!c.combination) continue;
         for (const auto& [name, elements] : c.model->members())
           if (name == member) {
@@ -274,7 +274,7 @@ TEST_SUITE("load cases") {
     const RunResult& run = onlyRun(s);
     const Study alone = test::solveDeckText(
         twoSpanDeck("loads: [" + spanLoad("span2", kQ) + "]\n"), "two.yaml");
-    const StaticResult& direct = *onlyRun(alone).analyses.front().statics;
+    const StaticResult& direct = *staticsOf(onlyRun(alone).analyses.front());
     const CaseOutcome& two = caseOf(run, "two");
     // Same matrix, same right-hand side: the only difference is the factor's reuse, which
     // changes nothing in exact arithmetic; both solutions carry round-off of about 1e-15.
@@ -301,7 +301,7 @@ TEST_SUITE("load cases") {
     const RunResult& run = onlyRun(s);
     std::vector<LoadedSolution> combinations;
     std::vector<std::string> names;
-    for (const CaseOutcome& c : run.analyses.front().cases)
+    for (const CaseOutcome& c : casesOf(run.analyses.front()))
       if (c.combination) {
         combinations.push_back({c.model.get(), &c.statics.displacement});
         names.push_back(c.name);
@@ -346,7 +346,7 @@ TEST_SUITE("load cases") {
   TEST_CASE("loads: without load cases give no case entries") {
     const Study s = test::solveDeckText(twoSpanDeck("loads: [" + spanLoad("span1", kQ) + "]\n"),
                                         "plain.yaml");
-    CHECK(onlyRun(s).analyses.front().cases.empty());
+    CHECK(casesOf(onlyRun(s).analyses.front()).empty());
   }
 
   TEST_CASE("continuous_beam.yaml writes its cases, envelope and cases CSV") {
@@ -364,7 +364,7 @@ TEST_SUITE("load cases") {
     // a ParaView collection steps through them.
     const Study study = solveStudy(test::shippedDeckRequest("continuous_beam.yaml"));
     const RunResult& run = onlyRun(study);
-    const auto& cases = run.analyses.front().cases;
+    const auto& cases = casesOf(run.analyses.front());
     REQUIRE(a["cases"].size() == cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
       vtkNew<vtkXMLUnstructuredGridReader> reader;

@@ -94,7 +94,7 @@ std::vector<DofRow> readDofs(const std::filesystem::path& file) {
 
 TEST_SUITE("matrix export") {
   TEST_CASE("a deck's K, M, f read back bit for bit; solving them reproduces its statics") {
-    const Study study = solveStudyText(kExportDeck, {"two_spans.yaml", {}, false, ""});
+    const Study study = solveStudyText(kExportDeck, {"two_spans.yaml", {}, false, "", ""});
     REQUIRE(study.run);
     const Model& model = *study.run->model;
     const auto dir = scratchDir("export_deck");
@@ -125,7 +125,7 @@ TEST_SUITE("matrix export") {
     const Eigen::VectorXd u = lu.solve(f);
     const std::vector<DofRow> rows = readDofs(dir / kDofsCsv);
     REQUIRE(int(rows.size()) == K.rows());
-    const StaticResult& statics = *study.run->analyses.at(0).statics;
+    const StaticResult& statics = *staticsOf(study.run->analyses.at(0));
     const double scale = statics.displacement.cwiseAbs().maxCoeff();
     CHECK(scale > 1e-3);  // the settlement alone moves the beam 2 mm
     double worst = 0;

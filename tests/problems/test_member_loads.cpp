@@ -51,7 +51,7 @@ const RunResult& theRun(const Study& s) {
 
 std::array<ComponentRange, 6> beamRanges(const RunResult& run) {
   return memberForceRanges(*run.model, run.model->members().front().second,
-                           run.analyses.front().statics->displacement);
+                           staticsOf(run.analyses.front())->displacement);
 }
 
 
@@ -107,7 +107,7 @@ TEST_SUITE("member loads") {
                          (7 * std::pow(L, 4) - 10 * L * L * xPeak * xPeak + 3 * std::pow(xPeak, 4)) /
                          (360 * L * EI);
     const MemberValue largest =
-        largestDisplacement(*run.model, run.analyses.front().statics->displacement);
+        largestDisplacement(*run.model, staticsOf(run.analyses.front())->displacement);
     CHECK(largest.value == doctest::Approx(vPeak).epsilon(kExact));
     // A stationary point found by bisection to the last bit: its place to about sqrt(eps).
     CHECK(largest.x.x() == doctest::Approx(xPeak).epsilon(1e-7));
@@ -134,7 +134,7 @@ TEST_SUITE("member loads") {
                           "{type: distributed, member: beam, qy: " + p.values + "}", "timoshenko"),
             "cantilever.yaml");
         const RunResult& run = theRun(s);
-        const double tip = run.analyses.front().statics->displacement(run.model->node("B"), 1);
+        const double tip = staticsOf(run.analyses.front())->displacement(run.model->node("B"), 1);
         const double expected = q0 * (p.bending * std::pow(L, 4) / EI + p.shear * L * L / kGA);
         CHECK(tip == doctest::Approx(expected).epsilon(kExact));
         // The shear part is a visible share here (a stocky cantilever), so the test tells the
@@ -217,7 +217,7 @@ TEST_SUITE("member loads") {
       << "analyses: [{type: static}]\n";
     const Study s = test::solveDeckText(d.str(), "line.yaml");
     const RunResult& run = theRun(s);
-    const StaticResult& r = *run.analyses.front().statics;
+    const StaticResult& r = *staticsOf(run.analyses.front());
     double RA = 0;
     for (const ReactionComponent& c : r.reactions)
       if (c.node == run.model->node("start") && c.dof == Dof::uy) RA += c.value;

@@ -33,8 +33,8 @@ RunResult solveMo10Deck(const std::vector<std::string>& sets) {
 }
 
 const TransientOutcome& blows(const RunResult& run) {
-  REQUIRE(run.analyses.at(0).transient);
-  return *run.analyses.at(0).transient;
+  REQUIRE(resultOf<TransientOutcome>(run.analyses.at(0)));
+  return *resultOf<TransientOutcome>(run.analyses.at(0));
 }
 
 double parameter(const RunResult& run, const std::string& name) {

@@ -20,7 +20,7 @@ namespace {
 
 const ContactState& pistonStop(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics && a.statics->contacts.size() == 1) return a.statics->contacts[0];
+    if (staticsOf(a) && staticsOf(a)->contacts.size() == 1) return staticsOf(a)->contacts[0];
   throw std::logic_error("no contact in the run");
 }
 

@@ -31,8 +31,9 @@ const RunResult solved(const std::string& deck, double eta, double w0 = 0.001) {
 /// Largest outer-fibre stress along the rod (Pa), as the writers report it.
 double peakStress(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics)
-      return largestPeak(elementPeaks(*run.model, a.statics->displacement), &ElementPeaks::stress)
+    if (staticsOf(a))
+      return largestPeak(elementPeaks(*run.model, staticsOf(a)->displacement),
+                         &ElementPeaks::stress)
           ->value;
   throw std::logic_error("no static analysis");
 }
@@ -42,9 +43,9 @@ double peakStress(const RunResult& run) {
 /// most (|V| / EI) (h / 2)^2 / 2 with h = 1/1000 of an element: 3e-8 relative on the pump rod.
 double peakRotation(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.statics) {
+    if (staticsOf(a)) {
       double peak = 0;
-      for (const StaticStation& st : sampleStatics(*run.model, a.statics->displacement, 1000))
+      for (const StaticStation& st : sampleStatics(*run.model, staticsOf(a)->displacement, 1000))
         peak = std::max(peak, std::abs(st.displacement[dofIndex(Dof::rz)]));
       return peak;
     }

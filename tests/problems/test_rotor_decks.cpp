@@ -118,18 +118,18 @@ TEST_SUITE("rotor decks") {
       CHECK(c.pass());
     }
     // The same closed forms written in C++ (independent of the deck's expressions).
-    const RotorOutcome& spin = *analysis(run, "spin").rotor;
+    const RotorOutcome& spin = *resultOf<RotorOutcome>(analysis(run, "spin"));
     REQUIRE(spin.modes->modes.size() == 2);
     CHECK(relError(spin.modes->modes[0].dampedFrequency, j.wd()) < kClosedForm);
     CHECK(relError(spin.modes->modes[0].logDecrement, j.logDecrement()) < kClosedForm);
-    const RotorOutcome& campbell = *analysis(run, "campbell").rotor;
+    const RotorOutcome& campbell = *resultOf<RotorOutcome>(analysis(run, "campbell"));
     // Two lines (y and z) cross the 1x line at the same speed: the damped frequency is
     // flat in speed, so the linear interpolation is exact.
     REQUIRE(campbell.criticalSpeeds.size() == 2);
     for (const CriticalSpeed& c : campbell.criticalSpeeds)
       CHECK(relError(c.speed, j.wd()) < kClosedForm);
     // Every speed of the sweep, and the checked 1234.5 rpm added to it.
-    const UnbalanceResult& u = *analysis(run, "unbalance").rotor->unbalance;
+    const UnbalanceResult& u = *resultOf<RotorOutcome>(analysis(run, "unbalance"))->unbalance;
     CHECK(u.speeds.size() == 41);
     double worst = 0;
     for (std::size_t s = 0; s < u.speeds.size(); ++s) {
@@ -183,7 +183,7 @@ TEST_SUITE("rotor decks") {
     // 3. Mode VTK: the complex shape as written equals the solved one (binary doubles: exact);
     //    the orbit polylines reach the orbit's semi-major axis at the drawing scale, within
     //    the sampling of 48 points per turn: major cos(pi/48) <= largest distance <= major.
-    const RotorMode& mode = analysis(run, "spin").rotor->modes->modes[0];
+    const RotorMode& mode = resultOf<RotorOutcome>(analysis(run, "spin"))->modes->modes[0];
     const auto grid = readRotorVtu(dir / "spin_mode_01.vtu");
     REQUIRE(grid->GetNumberOfPoints() == run.model->nodeCount());
     const int disk = run.model->node("disk");
@@ -234,15 +234,15 @@ analyses:
     REQUIRE(s.run);
     const RunResult& run = *s.run;
     const int disk = run.model->node("disk");
-    const StaticResult& st = *analysis(run, "static").statics;
+    const StaticResult& st = *staticsOf(analysis(run, "static"));
     CHECK(relError(st.displacement(disk, dofIndex(Dof::uy)), -1000 / j.k()) < kClosedForm);
     CHECK(relError(st.displacement(disk, dofIndex(Dof::uz)), 500 / j.k()) < kClosedForm);
-    const ModalResult& modal = *analysis(run, "modal").modal;
+    const ModalResult& modal = *resultOf<ModalResult>(analysis(run, "modal"));
     REQUIRE(modal.modes.size() == 2);
     for (const Mode& m : modal.modes)
       CHECK(relError(std::sqrt(m.eigenvalue), j.wn()) < kClosedForm);
     // The rotor analysis at rest, undamped, is the same eigenproblem by another solver.
-    for (const RotorMode& m : analysis(run, "at-rest").rotor->modes->modes)
+    for (const RotorMode& m : resultOf<RotorOutcome>(analysis(run, "at-rest"))->modes->modes)
       CHECK(relError(m.dampedFrequency, j.wn()) < kClosedForm);
   }
 }

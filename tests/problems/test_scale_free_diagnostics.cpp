@@ -42,7 +42,7 @@ RunResult scaledCantilever(int elements, double lambda) {
 }
 
 const StaticResult& staticsOf(const RunResult& run) {
-  return *run.analyses.front().statics;
+  return *staticsOf(run.analyses.front());
 }
 
 double tipDeflection(const RunResult& run) {

@@ -22,9 +22,9 @@ constexpr double kPiDrive = std::numbers::pi;
 
 const CrankSliderOutcome& driveOutcome(const RunResult& run, const std::string& name) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.name == name && a.crank) return *a.crank;
+    if (a.name == name && resultOf<CrankSliderOutcome>(a)) return *resultOf<CrankSliderOutcome>(a);
   FAIL("no crank-slider analysis " << name);
-  return *run.analyses.front().crank;
+  return *resultOf<CrankSliderOutcome>(run.analyses.front());
 }
 
 const Check& driveCheck(const RunResult& run, const std::string& name) {

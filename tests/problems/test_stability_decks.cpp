@@ -68,19 +68,20 @@ TEST_SUITE("stability decks") {
     CHECK(checkAllPass(s) == 1);
     const RunResult& run = *s.run;
     const AnalysisOutcome& b = outcomeNamed(run, "stability");
-    REQUIRE(b.buckling);
-    REQUIRE(b.buckling->modes.size() == 2);
-    CHECK(relError(b.buckling->modes[1].factor, 4 * Pe / P) < 5e-5);  // mode 2: 4 Pe
+    REQUIRE(resultOf<BucklingResult>(b));
+    REQUIRE(resultOf<BucklingResult>(b)->modes.size() == 2);
+    CHECK(relError(resultOf<BucklingResult>(b)->modes[1].factor, 4 * Pe / P) <
+          5e-5);  // mode 2: 4 Pe
     const AnalysisOutcome& so = outcomeNamed(run, "bending");
-    REQUIRE(so.secondOrder);
-    CHECK(relError(so.secondOrder->criticalFactor, Pe / P) < 5e-6);
+    REQUIRE(resultOf<SecondOrderResult>(so));
+    CHECK(relError(resultOf<SecondOrderResult>(so)->criticalFactor, Pe / P) < 5e-6);
     // Central load: amplification (tan u - u) / (u^3 / 3), u = (pi / 2) sqrt(P / Pe).
     const double u = kPi / 2 * std::sqrt(P / Pe);
-    CHECK(relError(so.secondOrder->displacementAmplification,
+    CHECK(relError(resultOf<SecondOrderResult>(so)->displacementAmplification,
                    (std::tan(u) - u) / (u * u * u / 3)) < 1e-5);
     // Frequencies: f^2 = f0^2 (1 - P / Pe).
-    const double f0 = outcomeNamed(run, "free").modal->modes.at(0).frequencyHz;
-    const double f = outcomeNamed(run, "loaded").modal->modes.at(0).frequencyHz;
+    const double f0 = resultOf<ModalResult>(outcomeNamed(run, "free"))->modes.at(0).frequencyHz;
+    const double f = resultOf<ModalResult>(outcomeNamed(run, "loaded"))->modes.at(0).frequencyHz;
     CHECK(relError(f * f, f0 * f0 * (1 - P / Pe)) < 5e-6);
   }
 
@@ -139,8 +140,8 @@ TEST_SUITE("stability decks") {
     REQUIRE(pull.run);
     CHECK(checkAllPass(push) == 1);
     CHECK(checkAllPass(pull) == 1);
-    const auto& pushed = *outcomeNamed(*push.run, "bending").secondOrder;
-    const auto& pulled = *outcomeNamed(*pull.run, "bending").secondOrder;
+    const auto& pushed = *resultOf<SecondOrderResult>(outcomeNamed(*push.run, "bending"));
+    const auto& pulled = *resultOf<SecondOrderResult>(outcomeNamed(*pull.run, "bending"));
     // The crosshead end is displaced by w0, not loaded: the force that takes is the stiffness
     // of the rod against that displacement (a Schur complement of K + KG), which compression
     // lowers and tension raises (KG is negative, resp. positive, semi-definite when every
@@ -149,7 +150,7 @@ TEST_SUITE("stability decks") {
     const double p0 = std::abs(staticReaction(*zero.run, "left", Dof::uy));
     const double pPush = std::abs(staticReaction(*push.run, "left", Dof::uy));
     const double pPull = std::abs(staticReaction(*pull.run, "left", Dof::uy));
-    const auto& buckling = *outcomeNamed(*push.run, "stability").buckling;
+    const auto& buckling = *resultOf<BucklingResult>(outcomeNamed(*push.run, "stability"));
     REQUIRE(!buckling.modes.empty());
     const double lambda = buckling.modes[0].factor;
     MESSAGE("pump rod, p = 10 MPa, Dp = 160 mm: buckling factor " << lambda << "; P2 " << p0
@@ -161,7 +162,7 @@ TEST_SUITE("stability decks") {
     CHECK(pPush < p0);
     CHECK(pPull > p0);
     // The tension stroke cannot buckle the rod: no positive factor, and a warning says so.
-    const auto& pullBuckling = *outcomeNamed(*pull.run, "stability").buckling;
+    const auto& pullBuckling = *resultOf<BucklingResult>(outcomeNamed(*pull.run, "stability"));
     CHECK(pullBuckling.modes.empty());
     CHECK(!pullBuckling.warnings.empty());
   }

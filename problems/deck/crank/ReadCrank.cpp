@@ -43,12 +43,6 @@ crank::DriveMasses readDriveMasses(const Context& c, const Field& f, const crank
 
 }  // namespace
 
-bool isMechanismAnalysis(const Field& analysis) {
-  if (!analysis.isMap() || !analysis.has("type")) return false;
-  const std::string type = analysis.require("type").text();
-  return type == "crank-slider" || (type == "rigid-body" && analysis.has("body"));
-}
-
 bool modelFree(const Context& c) {
   for (const char* key : {"segments", "points", "nodes", "members"})
     if (c.root.has(key)) return false;
@@ -144,3 +138,11 @@ void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis&
 }
 
 }  // namespace beamrotor::reader
+
+namespace beamrotor {
+
+void CrankSliderSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+  reader::readCrankAnalysis(c, f, a);
+}
+
+}  // namespace beamrotor

@@ -82,11 +82,4 @@ struct DeckRotorAnalysis {
   bool rigidBearings = true;  ///< bearing-loads: bearings pinned, or their stiffness at `speed`
 };
 
-/// True for the analysis types this header describes.
-inline bool isRotorAnalysis(const std::string& type) {
-  return type == "rotor" || type == "campbell" || type == "unbalance" || type == "rigid-body" ||
-         type == "frequency-response" || type == "critical-speed-map" ||
-         type == "bearing-loads";
-}
-
 }  // namespace beamrotor

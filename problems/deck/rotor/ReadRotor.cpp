@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <variant>
 
 #include "elements/PlainJournalBearing.hpp"
 #include "problems/deck/DeckReader.hpp"
@@ -309,7 +310,7 @@ void readRotorModel(Context& c) {
 void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
   const ExpressionEvaluator& ev = c.evaluator;
   DeckRotorAnalysis& r = a.rotor;
-  if (a.type == "rigid-body") {
+  if (std::holds_alternative<RigidBodySpec>(a.kind)) {
     f.allowOnly({"type", "name", "bearings", "body"}, "a rigid-body analysis");
     if (auto body = f.get("body")) {
       if (auto b = f.get("bearings"))
@@ -328,20 +329,20 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
     return;
   }
   if (!carriesLateral(c.deck))
-    f.fail("a " + a.type + " analysis needs uy and uz: use model: {dimension: lateral}");
-  if (a.type == "rotor") {
+    f.fail("a " + a.type() + " analysis needs uy and uz: use model: {dimension: lateral}");
+  if (std::holds_alternative<RotorSpec>(a.kind)) {
     f.allowOnly({"type", "name", "speed_rpm", "modes", "shift"}, "a rotor analysis");
     if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev, kRpmField) * kRadPerRpm;
-  } else if (a.type == "campbell") {
+  } else if (std::holds_alternative<CampbellSpec>(a.kind)) {
     f.allowOnly({"type", "name", "modes", "shift", "from_rpm", "to_rpm", "steps", "order"},
                 "a campbell analysis");
     r.speeds = readSpeedRange(c, f);
     if (auto o = f.get("order")) readOrders(*o, ev, r);
-  } else if (a.type == "critical-speed-map") {
+  } else if (std::holds_alternative<CriticalSpeedMapSpec>(a.kind)) {
     readCriticalSpeedMap(c, f, r);
-  } else if (a.type == "bearing-loads") {
+  } else if (std::holds_alternative<BearingLoadsSpec>(a.kind)) {
     readBearingLoads(c, f, r);
-  } else if (a.type == "frequency-response") {
+  } else if (std::holds_alternative<FrequencyResponseSpec>(a.kind)) {
     f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
                 "a frequency-response analysis");
     if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev, kRpmField) * kRadPerRpm;
@@ -356,7 +357,8 @@ void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
     readUnbalance(c, f, r);
     if (auto o = f.get("operating")) r.operating = readOperatingRange(c, *o, r.minLogDecrement);
   }
-  if (a.type != "unbalance" && a.type != "frequency-response") {
+  if (!std::holds_alternative<UnbalanceSpec>(a.kind) &&
+      !std::holds_alternative<FrequencyResponseSpec>(a.kind)) {
     if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);
     if (auto s = f.get("shift")) a.shift = s->number(ev, dim::frequency);  // on s = -d + i w
   }
@@ -410,3 +412,20 @@ void addCheckedSpeed(Context& c, const DeckCheck& k) {
 }
 
 }  // namespace beamrotor::reader
+
+namespace beamrotor {
+
+void RotorFamily::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+  reader::readRotorAnalysis(c, f, a);
+}
+
+void RigidBodySpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+  reader::readRotorAnalysis(c, f, a);
+  if (!a.rotor.body) reader::requireMass(c, f, a);
+}
+
+bool RigidBodySpec::modelFree(const Field& entry) {
+  return entry.has("body");
+}
+
+}  // namespace beamrotor

@@ -54,19 +54,4 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
   return false;
 }
 
-std::optional<std::string> rotorAnalysisType(const Quantity& q) {
-  switch (q.kind) {
-    case Quantity::Kind::logDecrement:
-      return "rotor";
-    case Quantity::Kind::criticalSpeed:
-      return "campbell";
-    case Quantity::Kind::unbalanceAmplitude:
-      return "unbalance";
-    case Quantity::Kind::rigidBody:
-      return "rigid-body";
-    default:
-      return std::nullopt;
-  }
-}
-
 }  // namespace beamrotor

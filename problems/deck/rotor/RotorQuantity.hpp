@@ -2,7 +2,6 @@
 // problems/run/MeasureRotor.hpp measures them.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,8 +18,5 @@ const std::vector<std::string>& rigidBodyPropertyNames();
 /// Fills q when `words` is a rotor quantity and returns true; false when the first word is
 /// not one; throws std::invalid_argument when it is one, written wrongly.
 bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q);
-
-/// The analysis type a rotor quantity reads, nullopt for the others.
-std::optional<std::string> rotorAnalysisType(const Quantity& q);
 
 }  // namespace beamrotor

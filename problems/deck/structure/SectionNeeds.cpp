@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <variant>
 
 namespace beamrotor {
 
@@ -33,7 +34,9 @@ std::string theoryWords(BeamTheory t) {
 void requireSectionValues(const Deck& deck) {
   if (deck.sectionGaps.empty()) return;
   const bool stresses = std::any_of(deck.analyses.begin(), deck.analyses.end(),
-                                    [](const DeckAnalysis& a) { return a.type == "static"; });
+                                    [](const DeckAnalysis& a) {
+                                      return std::holds_alternative<StaticSpec>(a.kind);
+                                    });
   const bool bendsAboutY = deck.dofs.contains(Dof::uz);
   const bool torsion = deck.dofs.contains(Dof::rx);
   for (const DeckSegment& segment : deck.segments) {

@@ -1,5 +1,7 @@
 // Deck reader, `accuracy:`: the relative accuracy wanted on the checked quantities, with which
 // the runner picks the cheapest adequate mesh and beam theory (problems/run/AdequateModel).
+#include <variant>
+
 #include "problems/deck/ReaderContext.hpp"
 
 namespace beamrotor::reader {
@@ -13,9 +15,10 @@ void readAccuracy(Context& c) {
     f->fail("needs at least one check: the accuracy is on the checked quantities");
   if (c.deck.segments.empty()) f->fail("needs beam segments: their mesh is what it chooses");
   for (const DeckAnalysis& a : c.deck.analyses)
-    if (a.type != "static" && a.type != "modal" && a.type != "rigid-body")
-      f->fail("applies to static, modal and rigid-body analyses; '" + a.name + "' is a " + a.type +
-              " analysis");
+    if (!std::holds_alternative<StaticSpec>(a.kind) && !std::holds_alternative<ModalSpec>(a.kind) &&
+        !std::holds_alternative<RigidBodySpec>(a.kind))
+      f->fail("applies to static, modal and rigid-body analyses; '" + a.name + "' is a " +
+              a.type() + " analysis");
   c.deck.accuracy = DeckAccuracy{target, f->place()};
 }
 

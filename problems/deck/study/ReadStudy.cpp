@@ -15,14 +15,6 @@ namespace {
 /// A modal analysis' shift: the eigenvalue omega^2 the modes are sought nearest (rad^2/s^2).
 constexpr FieldUnit kEigenvalueShift{Dimension::of(0, 0, -2, 2)};
 
-/// Modal analyses need inertia somewhere: a material density or a lumped mass.
-bool hasMass(const Deck& deck) {
-  if (!deck.masses.empty()) return true;
-  for (const DeckSegment& s : deck.segments)
-    if (s.section->material.rho > 0) return true;
-  return false;
-}
-
 /// The items of a list of analyses or checks, at most kMaxAnalyses of them.
 std::vector<Field> boundedItems(const Field& block, const std::string& what) {
   std::vector<Field> items = block.items();
@@ -37,7 +29,8 @@ void readAnalyses(Context& c) {
   if (!block || block->isNull()) {
     // No analyses listed: statics, the one every deck supports.
     DeckAnalysis statics;
-    statics.type = statics.name = "static";
+    statics.kind = StaticSpec{};
+    statics.name = statics.type();
     statics.modes = 0;
     statics.place = c.root.place();
     c.deck.analyses.push_back(std::move(statics));
@@ -48,53 +41,10 @@ void readAnalyses(Context& c) {
     if (!f.isMap()) f.fail("expected a map such as {type: static}, got " + f.describe());
     DeckAnalysis a;
     a.place = f.place();
-    a.type = f.require("type").choice(
-        {"static", "modal", "buckling", "transient", "rotor", "campbell", "unbalance",
-         "rigid-body", "frequency-response", "crank-slider", "critical-speed-map",
-         "bearing-loads"});
-    if (a.type == "static") {
-      f.allowOnly({"type", "name", "second_order"}, "a static analysis");
-      if (auto s = f.get("second_order")) {
-        a.secondOrder = s->boolean();
-        if (a.secondOrder && !c.deck.contacts.empty())
-          s->fail("second-order statics does not support contacts: remove them or the option");
-        if (a.secondOrder && !c.deck.loadCases.empty())
-          s->fail("second-order results do not superpose, so load cases and combinations "
-                  "cannot be combined from them: give the loads of one case under `loads:`");
-      }
-    } else if (a.type == "buckling") {
-      f.allowOnly({"type", "name", "modes", "reversed"}, "a buckling analysis");
-      a.modes = 4;
-      if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
-      if (auto r = f.get("reversed")) a.reversed = r->boolean();
-      if (!c.deck.contacts.empty())
-        f.fail("a buckling analysis needs a linear reference state: remove the contacts");
-    } else if (a.type == "transient") {
-      a.transient = readTransient(c, f);
-      if (!hasMass(c.deck))
-        f.fail("a transient analysis needs mass: give the materials a density rho or add masses");
-    } else if (a.type == "crank-slider") {
-      readCrankAnalysis(c, f, a);
-    } else if (isRotorAnalysis(a.type)) {
-      readRotorAnalysis(c, f, a);
-      if (a.type != "unbalance" && !a.rotor.body && !hasMass(c.deck))
-        f.fail("a " + a.type +
-               " analysis needs mass: give the materials a density rho or add masses");
-    } else {
-      requireSymmetricAtRest(c, f);
-      f.allowOnly({"type", "name", "modes", "shift", "prestressed"}, "a modal analysis");
-      if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
-      if (auto p = f.get("prestressed")) {
-        a.prestressed = p->boolean();
-        if (a.prestressed && !c.deck.contacts.empty())
-          p->fail("prestressed modes need a linear loaded state: remove the contacts");
-      }
-      if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, kEigenvalueShift);
-      if (!hasMass(c.deck))
-        f.fail("a modal analysis needs mass: give the materials a density rho or add masses");
-    }
+    a.kind = analysisKind(f.require("type"));
+    readAnalysisKind(c, f, a);
     auto n = f.get("name");
-    a.name = n ? n->name() : a.type;
+    a.name = n ? n->name() : a.type();
     if (std::find(names.begin(), names.end(), a.name) != names.end())
       (n ? *n : f)
           .fail("there is already an analysis named '" + a.name +
@@ -195,7 +145,7 @@ void readChecks(Context& c) {
       if (!known)
         lc->fail("no load case or combination '" + k.loadCase +
                  "' (load_cases: and combinations: define them)");
-      if (k.quantity.analysisType() != "static")
+      if (!answers<StaticSpec>(k.quantity))
         lc->fail("case: names a load case, which only a static quantity reads");
     }
     k.reference = f.require("reference").number(c.evaluator, referenceUnit(k.quantity));
@@ -246,6 +196,14 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
 
 }  // namespace
 
+void requireMass(const Context& c, const Field& f, const DeckAnalysis& a) {
+  if (!c.deck.masses.empty()) return;
+  for (const DeckSegment& s : c.deck.segments)
+    if (s.section->material.rho > 0) return;
+  f.fail("a " + a.type() +
+         " analysis needs mass: give the materials a density rho or add masses");
+}
+
 std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
                             const std::optional<Field>& analysisField, bool applicable) {
   const Deck& deck = c.deck;
@@ -261,15 +219,15 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     if (!analysis)
       analysisField->fail("no analysis named '" + name + "'" + didYouMean(name, names) +
                           " (analyses: " + joinNames(names) + ")");
-    if (!q.readsFrom(analysis->type))
-      analysisField->fail("'" + q.text + "' needs a " + q.analysisType() + " analysis; '" + name +
-                          "' is " + analysis->type);
+    if (!answers(analysis->kind, q))
+      analysisField->fail("'" + q.text + "' needs a " + defaultAnalysisType(q) + " analysis; '" +
+                          name + "' is " + analysis->type());
   } else {
     for (const DeckAnalysis& a : deck.analyses)
-      if (!analysis && q.readsFrom(a.type)) analysis = &a;
+      if (!analysis && answers(a.kind, q)) analysis = &a;
     if (!analysis)
-      f.fail("'" + q.text + "' needs a " + q.analysisType() +
-             " analysis; add {type: " + q.analysisType() + "} to analyses");
+      f.fail("'" + q.text + "' needs a " + defaultAnalysisType(q) +
+             " analysis; add {type: " + defaultAnalysisType(q) + "} to analyses");
   }
 
   // 2. The names and dofs it refers to.
@@ -328,3 +286,40 @@ void readStudy(Context& c, const std::vector<ParameterOverride>& overrides) {
 }
 
 }  // namespace beamrotor::reader
+
+namespace beamrotor {
+
+void StaticSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+  f.allowOnly({"type", "name", "second_order"}, "a static analysis");
+  if (auto s = f.get("second_order")) {
+    a.secondOrder = s->boolean();
+    if (a.secondOrder && !c.deck.contacts.empty())
+      s->fail("second-order statics does not support contacts: remove them or the option");
+    if (a.secondOrder && !c.deck.loadCases.empty())
+      s->fail("second-order results do not superpose, so load cases and combinations "
+              "cannot be combined from them: give the loads of one case under `loads:`");
+  }
+}
+
+void BucklingSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+  f.allowOnly({"type", "name", "modes", "reversed"}, "a buckling analysis");
+  a.modes = 4;
+  if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
+  if (auto r = f.get("reversed")) a.reversed = r->boolean();
+  if (!c.deck.contacts.empty())
+    f.fail("a buckling analysis needs a linear reference state: remove the contacts");
+}
+
+void ModalSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+  reader::requireSymmetricAtRest(c, f);
+  f.allowOnly({"type", "name", "modes", "shift", "prestressed"}, "a modal analysis");
+  if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
+  if (auto p = f.get("prestressed")) {
+    a.prestressed = p->boolean();
+    if (a.prestressed && !c.deck.contacts.empty())
+      p->fail("prestressed modes need a linear loaded state: remove the contacts");
+  }
+  if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, kEigenvalueShift);
+}
+
+}  // namespace beamrotor

@@ -79,9 +79,9 @@ std::optional<DeckSweepRefinement> readSweepRefinement(const DeckSource& source,
   } catch (const std::invalid_argument& e) {
     qf.fail(e.what());
   }
-  if (!r.quantity.readsFrom(analysis->type))
-    qf.fail("'" + r.quantity.text + "' needs a " + r.quantity.analysisType() + " analysis; '" +
-            r.analysis + "' is " + analysis->type);
+  if (!answers(analysis->kind, r.quantity))
+    qf.fail("'" + r.quantity.text + "' needs a " + defaultAnalysisType(r.quantity) +
+            " analysis; '" + r.analysis + "' is " + analysis->type());
   requireNames(qf, r.quantity, deck, *analysis);
 
   // 2. How far and how long.

@@ -286,3 +286,11 @@ void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
 }
 
 }  // namespace beamrotor::reader
+
+namespace beamrotor {
+
+void TransientSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
+  a.transient = reader::readTransient(c, f);
+}
+
+}  // namespace beamrotor

@@ -136,7 +136,7 @@ std::vector<CsvTable> crankTables(const CrankSliderOutcome& c, const std::string
 }
 
 Json crankJson(const AnalysisOutcome& a, const std::string& stem) {
-  const CrankSliderOutcome& c = *a.crank;
+  const CrankSliderOutcome& c = *resultOf<CrankSliderOutcome>(a);
   const crank::Geometry& g = c.input.geometry;
   Json phases = Json::array();
   for (double theta : c.input.phases) phases.push_back(theta * kCrankDegree);

@@ -80,8 +80,8 @@ void requireFinite(const RunResult& run) {
               "coordinate " + std::to_string(k) + " of node " + std::to_string(n));
   for (const AnalysisOutcome& a : run.analyses) {
     const std::string where = "analysis '" + a.name + "' (" + a.type + ")";
-    if (a.statics) requireStatic(model, *a.statics, where);
-    if (a.modal) requireModal(model, *a.modal, where);
+    if (const StaticResult* s = staticsOf(a)) requireStatic(model, *s, where);
+    if (const ModalResult* m = resultOf<ModalResult>(a)) requireModal(model, *m, where);
   }
 }
 

@@ -314,7 +314,7 @@ Json rigidBodyJson(const RigidBodyOutcome& r) {
 }  // namespace
 
 Json rotorJson(const AnalysisOutcome& a) {
-  const RotorOutcome& r = *a.rotor;
+  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
   Json body = r.modes       ? modesJson(stem, *r.modes)

@@ -34,7 +34,7 @@ std::vector<double> campbellOrders(const RotorOutcome& r) {
 }  // namespace
 
 PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
-  const RotorOutcome& r = *a.rotor;
+  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
   PreparedRotor p;
   if (r.modes) p.modes = rotorModesTable(modesCsv(stem), *r.modes);
   if (r.campbell) {
@@ -89,7 +89,7 @@ std::string stiffnessText(double x) {
 void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std::string& stem,
                      const Model& model, const std::filesystem::path& dir,
                      const std::string& fullCaption, bool charts) {
-  const RotorOutcome& r = *a.rotor;
+  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
   const std::string caption = fitted(fullCaption);
   // The operating range on the charts against speed, with the margins its critical speeds
   // (Campbell) or its response peaks (unbalance) require.

@@ -43,7 +43,7 @@ ModalResult bucklingShapes(const BucklingResult& r) {
 }
 
 Json bucklingJson(const AnalysisOutcome& a) {
-  const BucklingResult& r = *a.buckling;
+  const BucklingResult& r = *resultOf<BucklingResult>(a);
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
   Json factors = Json::array(), reversed = Json::array(), modes = Json::array(),
@@ -87,7 +87,7 @@ Json secondOrderJson(const SecondOrderResult& r) {
 
 void writeBucklingFiles(const PreparedAnalysis& p, const Model& model,
                         const std::filesystem::path& dir, const std::string& caption, bool charts) {
-  const BucklingResult& r = *p.outcome->buckling;
+  const BucklingResult& r = *resultOf<BucklingResult>(*p.outcome);
   p.modes->write(dir / bucklingFactorsCsv(p.stem));
   p.shapes->write(dir / shapesCsv(p.stem));
   const auto all = allModes(r);

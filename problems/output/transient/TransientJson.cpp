@@ -42,7 +42,7 @@ double energyBalanceError(const EnergyHistory& e) {
 }  // namespace
 
 Json transientJson(const AnalysisOutcome& a) {
-  const TransientOutcome& t = *a.transient;
+  const TransientOutcome& t = *resultOf<TransientOutcome>(a);
   const TransientResult& r = t.result;
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};

@@ -46,13 +46,12 @@ inline RunResult cantileverRun(const Cantilever& c, int modes = 0) {
   run.deckName = "cantilever";
   run.parameters = {{"P", c.P}, {"L", c.L}};
   run.dimension = "planar";
-  AnalysisOutcome statics{"static", "tip", solveStatic(*model), std::nullopt, std::nullopt};
-  const double tip = statics.statics->displacement(line.nodes.back(), dofIndex(Dof::uy));
+  AnalysisOutcome statics{"static", "tip", StaticOutcome{solveStatic(*model), {}}, {}};
+  const double tip = staticsOf(statics)->displacement(line.nodes.back(), dofIndex(Dof::uy));
   run.analyses.push_back(std::move(statics));
-  if (modes > 0)
-    run.analyses.push_back(
-        {"modal", "modes", std::nullopt, solveModes(*model, {modes, 0}), std::nullopt});
-  run.checks.push_back({"tip deflection", tip, c.deflection(c.L), 1e-9, "displacement end uy"});
+  if (modes > 0) run.analyses.push_back({"modal", "modes", solveModes(*model, {modes, 0}), {}});
+  run.checks.push_back(
+      {"tip deflection", tip, c.deflection(c.L), 1e-9, "displacement end uy", std::nullopt, ""});
   run.model = std::move(model);
   run.seconds = 0.01;
   return run;

@@ -79,7 +79,7 @@ TEST_SUITE("chart layout") {
     const Study study = test::solveDeckText(kTorsionDeck, "torsion.yaml");
     REQUIRE(study.run);
     const RunResult& run = *study.run;
-    const ModalResult& modal = *run.analyses.front().modal;
+    const ModalResult& modal = *resultOf<ModalResult>(run.analyses.front());
     // Closed form: a disk on the shaft's torsion spring k = G Ip / L, with a third of the
     // shaft's own polar inertia (Rayleigh; exact to the square of rho Ip L / Jp ~ 5e-5).
     const double L = 1.0, D = 0.05, E = 210e9, nu = 0.3, rho = 7850, Jp = 100;

@@ -38,7 +38,7 @@ TEST_SUITE("output") {
     const double nan = std::numeric_limits<double>::quiet_NaN();
 
     SUBCASE("NaN in a displacement") {
-      auto& statics = *run.analyses[0].statics;
+      auto& statics = *staticsOf(run.analyses[0]);
       statics.displacement(3, dofIndex(Dof::uy)) = nan;
       const std::string error = writeError(run, out);
       CHECK(error.find("displacement") != std::string::npos);
@@ -46,7 +46,8 @@ TEST_SUITE("output") {
       CHECK(error.find("uy") != std::string::npos);
     }
     SUBCASE("infinite frequency") {
-      run.analyses[1].modal->modes[1].frequencyHz = std::numeric_limits<double>::infinity();
+      resultOf<ModalResult>(run.analyses[1])->modes[1].frequencyHz =
+          std::numeric_limits<double>::infinity();
       const std::string error = writeError(run, out);
       CHECK(error.find("mode 2 frequency") != std::string::npos);
     }
@@ -68,7 +69,7 @@ TEST_SUITE("output") {
     const std::string before = readText(out / "results.json");
 
     RunResult broken = cantileverRun(c);
-    broken.analyses[0].statics->reactions[0].value = std::numeric_limits<double>::quiet_NaN();
+    staticsOf(broken.analyses[0])->reactions[0].value = std::numeric_limits<double>::quiet_NaN();
     CHECK(writeError(broken, out).find("reaction of support 'root'") != std::string::npos);
     CHECK(readText(out / "results.json") == before);
     CHECK(scratch.entries() == std::vector<std::string>{"out"});

@@ -58,7 +58,7 @@ TEST_SUITE("output") {
   TEST_CASE("results.json reports the cantilever's closed-form reactions and deflection") {
     const Cantilever c;
     const RunResult run = cantileverRun(c);
-    const StaticResult& r = *run.analyses[0].statics;
+    const StaticResult& r = *staticsOf(run.analyses[0]);
     ScratchDir scratch;
     writeRunOutputs(run, scratch / "out");
     const nlohmann::json doc = readJson(scratch / "out" / "results.json");
@@ -148,7 +148,7 @@ TEST_SUITE("output") {
   TEST_CASE("VTK file read back by VTK and by meshio holds the written mesh and displacement") {
     const Cantilever c;
     const RunResult run = cantileverRun(c);
-    const NodalField& u = run.analyses[0].statics->displacement;
+    const NodalField& u = staticsOf(run.analyses[0])->displacement;
     ScratchDir scratch;
     writeRunOutputs(run, scratch / "out");
     const fs::path file = scratch / "out" / "tip.vtu";
@@ -217,7 +217,7 @@ TEST_SUITE("output") {
     const Cantilever c;
     const int modes = 4;
     const RunResult run = cantileverRun(c, modes);
-    const ModalResult& modal = *run.analyses[1].modal;
+    const ModalResult& modal = *resultOf<ModalResult>(run.analyses[1]);
     ScratchDir scratch;
     writeRunOutputs(run, scratch / "out");
     const fs::path out = scratch / "out";

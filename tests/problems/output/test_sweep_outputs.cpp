@@ -102,7 +102,7 @@ TEST_SUITE("output") {
 
   TEST_CASE("a sweep value whose supports differ from the first is refused before writing") {
     SweepResult sweep = tipForceSweep({500, 1000});
-    sweep.runs[1].analyses[0].statics->reactions[0].support = "elsewhere";
+    staticsOf(sweep.runs[1].analyses[0])->reactions[0].support = "elsewhere";
     ScratchDir scratch;
     CHECK_THROWS_AS(writeSweepOutputs(sweep, scratch / "sweep"), std::runtime_error);
     CHECK(scratch.entries().empty());

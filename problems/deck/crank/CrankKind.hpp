@@ -1,0 +1,17 @@
+// The crank-slider drive's row in the table of analysis kinds
+// (problems/deck/AnalysisKinds.hpp): a mechanism solved in closed form, with no model.
+#pragma once
+
+#include "problems/deck/AnalysisRow.hpp"
+
+namespace beamrotor {
+
+struct CrankSliderSpec {
+  static constexpr std::string_view deckType = "crank-slider";
+  static constexpr std::array answers{Quantity::Kind::crankSlider};
+  static constexpr bool needsMass = false;
+  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  static bool modelFree(const Field&) { return true; }
+};
+
+}  // namespace beamrotor
