@@ -65,7 +65,7 @@ std::optional<Layer> layerOf(const std::string& relative) {
   const std::string top = part->string();
   const auto topRank = kTopRank.find(top);
   if (topRank == kTopRank.end()) return std::nullopt;
-  Layer layer{topRank->second, 0, ""};
+  Layer layer{topRank->second, 0, "", 0, ""};
   const auto rooms = kRoomRank.find(top);
   if (rooms == kRoomRank.end()) return layer;
   ++part;

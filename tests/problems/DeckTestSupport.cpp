@@ -48,12 +48,14 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
                            const std::vector<std::string>& environment) {
   static int counter = 0;
   const auto dir = scratchDir("process-" + std::to_string(++counter));
-  std::string command = "cd " + shellQuoted(workingDir.string()) + " && env";
-  for (const std::string& e : environment) command += " " + shellQuoted(e);
-  command += " timeout -k 5 120 " + shellQuoted(BEAMROTOR_EXE);
-  for (const std::string& a : arguments) command += " " + shellQuoted(a);
-  command +=
-      " >" + shellQuoted((dir / "out").string()) + " 2>" + shellQuoted((dir / "err").string());
+  const std::string where = shellQuoted(workingDir.string()), exe = shellQuoted(BEAMROTOR_EXE);
+  const std::string out = shellQuoted((dir / "out").string()),
+                    err = shellQuoted((dir / "err").string());
+  std::string command = "cd " + where + " && env";
+  for (const std::string& e : environment) command += ' ' + shellQuoted(e);
+  command += " timeout -k 5 120 " + exe;
+  for (const std::string& a : arguments) command += ' ' + shellQuoted(a);
+  command += " >" + out + " 2>" + err;
   const int status = std::system(command.c_str());
   ProcessResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -94,7 +94,7 @@ std::vector<DofRow> readDofs(const std::filesystem::path& file) {
 
 TEST_SUITE("matrix export") {
   TEST_CASE("a deck's K, M, f read back bit for bit; solving them reproduces its statics") {
-    const Study study = solveStudyText(kExportDeck, {"two_spans.yaml", {}, false, ""});
+    const Study study = solveStudyText(kExportDeck, {"two_spans.yaml", {}, false, "", ""});
     REQUIRE(study.run);
     const Model& model = *study.run->model;
     const auto dir = scratchDir("export_deck");

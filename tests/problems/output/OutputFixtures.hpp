@@ -46,12 +46,19 @@ inline RunResult cantileverRun(const Cantilever& c, int modes = 0) {
   run.deckName = "cantilever";
   run.parameters = {{"P", c.P}, {"L", c.L}};
   run.dimension = "planar";
-  AnalysisOutcome statics{"static", "tip", solveStatic(*model), std::nullopt, std::nullopt};
+  AnalysisOutcome statics;
+  statics.type = "static";
+  statics.name = "tip";
+  statics.statics = solveStatic(*model);
   const double tip = statics.statics->displacement(line.nodes.back(), dofIndex(Dof::uy));
   run.analyses.push_back(std::move(statics));
-  if (modes > 0)
-    run.analyses.push_back(
-        {"modal", "modes", std::nullopt, solveModes(*model, {modes, 0}), std::nullopt});
+  if (modes > 0) {
+    AnalysisOutcome modal;
+    modal.type = "modal";
+    modal.name = "modes";
+    modal.modal = solveModes(*model, {modes, 0});
+    run.analyses.push_back(std::move(modal));
+  }
   run.checks.push_back({"tip deflection", tip, c.deflection(c.L), 1e-9, "displacement end uy"});
   run.model = std::move(model);
   run.seconds = 0.01;
