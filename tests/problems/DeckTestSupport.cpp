@@ -29,6 +29,26 @@ std::string fileContents(const std::filesystem::path& file) {
   return s.str();
 }
 
+std::vector<std::vector<std::string>> csvCells(const std::filesystem::path& file) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(fileContents(file));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line + ',');  // the comma closes a last cell that is empty
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+std::size_t csvColumn(const std::vector<std::string>& header, const std::string& name) {
+  const std::string quoted = '"' + name + '"';
+  for (std::size_t k = 0; k < header.size(); ++k)
+    if (header[k] == name || header[k] == quoted) return k;
+  FAIL("no column " << name);
+  return 0;
+}
+
 std::string shellQuoted(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
