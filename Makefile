@@ -22,7 +22,15 @@ JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps build run test bench clean package
+.PHONY: deps configure build run test bench clean package
+
+# Warnings as errors (-Werror), as CI builds: `make test WERROR=1`. Given to CMake at every
+# configure, so a build directory configured earlier keeps no stale value.
+WERROR ?= 0
+CMAKE_WERROR := -DBEAMROTOR_WERROR=$(if $(filter 1 ON On on YES yes TRUE true,$(WERROR)),ON,OFF)
+# Each target builds only what it runs: the executable (run, bench, report, ...), the executable
+# and the Python module (package); the test suite only for test and hostile.
+BUILD_EXE := cmake --build $(BUILD) -j $(JOBS) --target beamrotor
 
 # Installs what is missing and never removes anything: when Debian can install a package only by
 # removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), or
@@ -58,18 +66,23 @@ deps:
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-remove $$missing; \
 	fi
 
-build: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBEAMROTOR_VTK=$(if $(filter paraview-dev,$(VTK_PACKAGE)),paraview,system) >/dev/null
+configure: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBEAMROTOR_VTK=$(if $(filter paraview-dev,$(VTK_PACKAGE)),paraview,system) $(CMAKE_WERROR) >/dev/null
+
+# Everything: library, executable, Python module and tests.
+build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-run: build
+run: configure
+	$(BUILD_EXE)
 	./$(BUILD)/beamrotor solve $(DECK)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The Debian package (CPack, dependencies from dpkg-shlibdeps): $(BUILD)/beamrotor_<version>_<arch>.deb.
-package: build
+package: configure
+	cmake --build $(BUILD) -j $(JOBS) --target beamrotor_installed
 	cd $(BUILD) && cpack
 
 # Speed figures (never part of `make test`), side by side with SciPy on the same machine:
@@ -83,7 +96,8 @@ package: build
 BENCH_PACKAGES := python3-scipy
 PY             := /usr/bin/python3
 COLD           := $(PY) tests/bench/cold.py --repeat 3 --json
-bench: build
+bench: configure
+	$(BUILD_EXE)
 	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
 	mkdir -p out/bench
 	for n in 1000 10000 100000 1000000; do \
@@ -119,7 +133,8 @@ bench: build
 # closed-form checks at every point) serially, with --threads 2 and under mpirun -n 2; medians
 # of 3 runs, parallel efficiency, memory per point, tables compared; out/bench/study.json.
 .PHONY: bench-study
-bench-study: build
+bench-study: configure
+	$(BUILD_EXE)
 	$(PY) tests/bench/study_bench.py --exe ./$(BUILD)/beamrotor --json out/bench/study.json
 
 clean:
@@ -132,7 +147,8 @@ clean:
 # out/report/convergence/<deck>/; a study that fails stops the report.
 REPORT_DIR := out/report
 .PHONY: report
-report: build
+report: configure
+	$(BUILD_EXE)
 	rm -rf $(REPORT_DIR) && mkdir -p $(REPORT_DIR)
 	for deck in problems/*.yaml; do \
 	  ./$(BUILD)/beamrotor converge $$deck --out $(REPORT_DIR)/convergence/$$(basename $$deck .yaml) \
@@ -148,7 +164,8 @@ report: build
 # the tolerance that README.md there justifies.
 VERIFY_FRAMES_PACKAGES := calculix-ccx
 .PHONY: verify-frames
-verify-frames: build
+verify-frames: configure
+	$(BUILD_EXE)
 	@$(MAKE) --no-print-directory deps PACKAGES="$(VERIFY_FRAMES_PACKAGES)"
 	$(PY) tests/verify/frames/test_ccx_results.py
 	$(PY) tests/verify/frames/compare_frames.py --beamrotor ./$(BUILD)/beamrotor \
@@ -182,7 +199,8 @@ fuzz:
 # tmpfs, mounted when run as root, else skipped with a note), signals while results are
 # written, address-space limits (ulimit -v). The fast ones run in `make test`.
 .PHONY: hostile
-hostile: build
+hostile: configure
+	cmake --build $(BUILD) -j $(JOBS) --target beamrotor_tests
 	./$(BUILD)/beamrotor_tests --test-suite='slow hostile*' --no-intro
 
 # Mutation testing (never part of `make test`; about a minute per mutant on two cores): plants

@@ -17,7 +17,7 @@ struct Segment {
   std::shared_ptr<const Section> section;
   int elements = 0;       ///< element count, or 0 to use targetSize
   double targetSize = 0;  ///< largest element length (m) when elements == 0
-  BeamOptions options;
+  BeamOptions options{};  // an initializer, so that {length, section, elements} says enough
 };
 
 /// A named station along the line, at distance `at` (m) from its start.

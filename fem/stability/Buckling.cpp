@@ -86,14 +86,16 @@ BucklingResult solveBuckling(const Model& model, const BucklingOptions& options)
   if (options.reversed)
     result.reversed = toModes(model, dofs, bucklingEigenpairs(K, KG, options.count, -1));
   result.time.solve = clock.lap();
-  if (result.modes.empty())
-    result.warnings.push_back(
-        "buckling: the reference load compresses nothing, so no positive load factor exists "
-        "(the structure cannot buckle under this load, only under its reverse)");
-  if (options.reversed && result.reversed.empty())
-    result.warnings.push_back(
-        "buckling: the reference load puts nothing in tension, so the reversed load cannot "
-        "buckle the structure: no negative load factor exists");
+  // Copied from static strings: GCC 12 misreads a long literal moved into the vector as a read
+  // past a temporary's inline buffer (a false -Warray-bounds, GCC bug 105651's family).
+  static const std::string kNoneCompressed =
+      "buckling: the reference load compresses nothing, so no positive load factor exists "
+      "(the structure cannot buckle under this load, only under its reverse)";
+  static const std::string kNoneInTension =
+      "buckling: the reference load puts nothing in tension, so the reversed load cannot "
+      "buckle the structure: no negative load factor exists";
+  if (result.modes.empty()) result.warnings.push_back(kNoneCompressed);
+  if (options.reversed && result.reversed.empty()) result.warnings.push_back(kNoneInTension);
   result.size = systemSize(model, dofs, K.nonZeros(), positive.factorEntries);
   result.time.total = total.lap();
   return result;

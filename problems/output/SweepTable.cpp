@@ -251,7 +251,7 @@ CsvTable sweepTable(const std::string& title, const SweepResult& sweep,
         row.push_back(q.read(runDocs[i]));
       } catch (const std::runtime_error& e) {
         if (q.optional) {
-          row.push_back(std::string());
+          row.push_back(std::monostate());
           continue;
         }
         throw std::runtime_error(title + ": " + sweep.parameter + " = " +

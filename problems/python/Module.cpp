@@ -73,8 +73,8 @@ std::string tableKey(const std::string& file, const std::string& stem) {
   return key;
 }
 
-/// A table's columns: numbers as NumPy arrays; a column holding text as a list, of str and
-/// float (a log decrement is the text "inf" in a row where the damped frequency is zero).
+/// A table's columns: numbers as NumPy arrays (NaN where a cell is empty: a log decrement of
+/// an overdamped mode); a column holding text as a list of str, float and None.
 py::dict columnsOf(const CsvTable& table) {
   py::dict columns;
   for (const CsvColumn& c : table.columns()) {

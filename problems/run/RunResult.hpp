@@ -30,8 +30,8 @@ struct Check {
   std::string quantity;  ///< what was measured, in deck syntax, e.g. "reaction left rz"
   /// `paper:` the figure a source prints when the reference is not it (e.g. the paper's own
   /// arithmetic), with `reason:` saying why the two differ; empty when the reference is it.
-  std::optional<double> paper;
-  std::string reason;
+  std::optional<double> paper{};  // initializers: a check without a paper figure stops at quantity
+  std::string reason{};
   double relError() const {
     return reference != 0 ? std::abs(computed - reference) / std::abs(reference)
                           : std::abs(computed);

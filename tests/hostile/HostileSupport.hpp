@@ -39,7 +39,7 @@ struct HostileCase {
   /// Relative paths the run may create or change (a directory: all inside it).
   std::vector<std::string> mayChange{"out"};
   /// Prepares the sandbox before the run (files in the way, fifos, ...).
-  std::function<void(const std::filesystem::path&)> setup;
+  std::function<void(const std::filesystem::path&)> setup{};  // a table row may stop before it
   /// gnuplot runs (real charts) only when asked: charts cost most of a run's time.
   bool charts = false;
   /// Run as its own process (stopped after 120 s) rather than by calling the command line in

@@ -213,9 +213,9 @@ TEST_SUITE("slow hostile: memory") {
     modal.insert(modal.find("  - type: transient"), "  - {type: modal, name: vib, modes: 100}\n");
     std::ofstream(root / "modal.yaml") << modal;
     const auto limited = [&](const std::string& kb, const std::vector<std::string>& args) {
-      std::string command = "cd " + shellQuoted(root.string()) + " && ulimit -v " + kb +
-                            " && exec " + shellQuoted(BEAMROTOR_EXE);
-      for (const std::string& a : args) command += " " + shellQuoted(a);
+      const std::string dir = shellQuoted(root.string()), exe = shellQuoted(BEAMROTOR_EXE);
+      std::string command = "cd " + dir + " && ulimit -v " + kb + " && exec " + exe;
+      for (const std::string& a : args) command += ' ' + shellQuoted(a);
       command += " >log 2>&1";
       const int status = std::system(command.c_str());
       return std::pair<int, std::string>(WIFEXITED(status) ? WEXITSTATUS(status) : -1,

@@ -29,6 +29,26 @@ std::string fileContents(const std::filesystem::path& file) {
   return s.str();
 }
 
+std::vector<std::vector<std::string>> csvCells(const std::filesystem::path& file) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(fileContents(file));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line + ',');  // the comma closes a last cell that is empty
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+std::size_t csvColumn(const std::vector<std::string>& header, const std::string& name) {
+  const std::string quoted = '"' + name + '"';
+  for (std::size_t k = 0; k < header.size(); ++k)
+    if (header[k] == name || header[k] == quoted) return k;
+  FAIL("no column " << name);
+  return 0;
+}
+
 std::string shellQuoted(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -48,12 +68,14 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
                            const std::vector<std::string>& environment) {
   static int counter = 0;
   const auto dir = scratchDir("process-" + std::to_string(++counter));
-  std::string command = "cd " + shellQuoted(workingDir.string()) + " && env";
-  for (const std::string& e : environment) command += " " + shellQuoted(e);
-  command += " timeout -k 5 120 " + shellQuoted(BEAMROTOR_EXE);
-  for (const std::string& a : arguments) command += " " + shellQuoted(a);
-  command +=
-      " >" + shellQuoted((dir / "out").string()) + " 2>" + shellQuoted((dir / "err").string());
+  const std::string where = shellQuoted(workingDir.string()), exe = shellQuoted(BEAMROTOR_EXE);
+  const std::string out = shellQuoted((dir / "out").string()),
+                    err = shellQuoted((dir / "err").string());
+  std::string command = "cd " + where + " && env";
+  for (const std::string& e : environment) command += ' ' + shellQuoted(e);
+  command += " timeout -k 5 120 " + exe;
+  for (const std::string& a : arguments) command += ' ' + shellQuoted(a);
+  command += " >" + out + " 2>" + err;
   const int status = std::system(command.c_str());
   ProcessResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -46,6 +46,13 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
 /// A file's bytes as a string ("" when it cannot be read).
 std::string fileContents(const std::filesystem::path& file);
 
+/// A CSV file as rows of cells, header first, an empty cell kept as "" (for tables whose
+/// cells hold no quoted commas).
+std::vector<std::vector<std::string>> csvCells(const std::filesystem::path& file);
+
+/// The position of the header cell `name`, bare or quoted; FAILs the test when there is none.
+std::size_t csvColumn(const std::vector<std::string>& header, const std::string& name);
+
 /// text inside single quotes for /bin/sh.
 std::string shellQuoted(const std::string& text);
 

@@ -52,8 +52,9 @@ TEST_SUITE("deck tree") {
     // Nine levels of ten aliases each: 10^9 values once expanded.
     std::string bomb = "l0: &l0 [a, a, a, a, a, a, a, a, a, a]\n";
     for (int i = 1; i <= 9; ++i) {
-      const std::string prev = "*l" + std::to_string(i - 1);
-      bomb += "l" + std::to_string(i) + ": &l" + std::to_string(i) + " [";
+      const std::string previous = std::to_string(i - 1), index = std::to_string(i);
+      const std::string prev = "*l" + previous;
+      bomb += "l" + index + ": &l" + index + " [";
       for (int k = 0; k < 10; ++k) bomb += prev + (k < 9 ? ", " : "]\n");
     }
     try {

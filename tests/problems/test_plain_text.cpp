@@ -27,7 +27,7 @@ TEST_SUITE("plain text") {
 
   TEST_CASE("control characters and line separators are not plain; others are") {
     CHECK_FALSE(firstNonPlain("Cantilever, kN·m, µm, θ_z, 'quoted' `ticks` | < @ \\"));
-    for (const std::string bad :
+    for (const std::string& bad :
          {std::string("a\nb"), std::string("a\rb"), std::string("a\tb"), std::string("a\0b", 3),
           std::string("a\x1b"), std::string("a\x7f"), std::string("a\xC2\x85"),
           std::string("a\xC2\x9B"), std::string("a\xE2\x80\xA8"), std::string("a\xE2\x80\xA9"),

@@ -66,11 +66,12 @@ TEST_SUITE("reaction names") {
   TEST_CASE("a sweep's summary table heads its reaction columns like sweep.csv") {
     const SolvedDeck solved = solveShippedDeckToScratch("pump_rod_hinged.yaml", "reaction-sweep");
     const std::string csv = solved.text("sweep.csv");
-    for (const std::string& name : {"left fy", "middle fy", "right fy", "right mz"}) {
+    for (const std::string name : {"left fy", "middle fy", "right fy", "right mz"}) {
       CAPTURE(name);
       CHECK(solved.process.out.find(name) != std::string::npos);
-      const std::string column =
-          "." + name.substr(0, name.find(' ')) + "." + name.substr(name.find(' ') + 1) + " [";
+      const std::string support = name.substr(0, name.find(' ')),
+                        component = name.substr(name.find(' ') + 1);
+      const std::string column = "." + support + "." + component + " [";
       CHECK(csv.find(column) != std::string::npos);
     }
     // The table's head line (the checks below name their deck quantity, `reaction left uy`).

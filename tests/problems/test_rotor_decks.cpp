@@ -1,6 +1,7 @@
 // Rotor analyses through the deck path: a DeckJeffcott rotor written as a deck reproduces its
 // closed-form damped frequency, log decrement, critical speed and unbalance amplitude, and
-// the files it writes (results.json, CSV, mode and orbit VTK) carry the same numbers.
+// the files it writes (results.json, CSV, mode and orbit VTK) carry the same numbers, also
+// where a mode is overdamped.
 #include <doctest/doctest.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -10,10 +11,13 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "elements/Bearing.hpp"
 #include "problems/output/files/CsvTable.hpp"
@@ -83,12 +87,17 @@ checks:
 // dynamic stiffness is conditioned ~1e2 here) leave ~1e-12; 1e-9 is their margin.
 constexpr double kClosedForm = 1e-9;
 
-RunResult jeffcottRun() {
+/// A deck's text solved, named `file` in messages.
+RunResult solvedText(const std::string& text, const std::string& file) {
   StudyRequest request;
-  request.deckPath = "jeffcott.yaml";
-  const Study s = solveStudyText(kJeffcottDeck, request);
+  request.deckPath = file;
+  const Study s = solveStudyText(text, request);
   REQUIRE(s.run);
   return *s.run;
+}
+
+RunResult jeffcottRun() {
+  return solvedText(kJeffcottDeck, "jeffcott.yaml");
 }
 
 const AnalysisOutcome& analysis(const RunResult& run, const std::string& name) {
@@ -228,11 +237,7 @@ analyses:
   - {type: modal, modes: 2}
   - {type: rotor, name: at-rest, speed_rpm: 0, modes: 2}
 )";
-    StudyRequest request;
-    request.deckPath = "jeffcott_lateral.yaml";
-    const Study s = solveStudyText(text, request);
-    REQUIRE(s.run);
-    const RunResult& run = *s.run;
+    const RunResult run = solvedText(text, "jeffcott_lateral.yaml");
     const int disk = run.model->node("disk");
     const StaticResult& st = *staticsOf(analysis(run, "static"));
     CHECK(relError(st.displacement(disk, dofIndex(Dof::uy)), -1000 / j.k()) < kClosedForm);
@@ -303,5 +308,103 @@ TEST_SUITE("rotor decks") {
     CHECK(relError(k.czz, 40) < tol);
     CHECK(relError(k.cyz, 2) < tol);
     CHECK(relError(k.czy, -4) < tol);
+  }
+}
+
+namespace {
+
+/// A cell read back as the double it was written from (shortest exact decimal).
+double exactNumber(const std::string& cell) {
+  double x = 0;
+  const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), x);
+  REQUIRE((error == std::errc() && end == cell.data() + cell.size()));
+  return x;
+}
+
+/// An empty cell where the solver's decrement is infinite, else exactly its number.
+void checkDecrementCell(const std::string& cell, double solved) {
+  CAPTURE(cell);
+  CAPTURE(solved);
+  if (std::isinf(solved))
+    CHECK(cell.empty());
+  else
+    CHECK(exactNumber(cell) == solved);
+}
+
+void checkDecrementJson(const nlohmann::json& value, double solved) {
+  CAPTURE(value.dump());
+  if (std::isinf(solved))
+    CHECK(value.is_null());
+  else
+    CHECK(value.get<double>() == solved);
+}
+
+}  // namespace
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("overdamped mode: empty decrement cell and null in JSON, the damped one as solved") {
+    // The DeckJeffcott rotor with its damper 400 times stronger in y: far above critical there
+    // (c_crit = 2 sqrt(k m) = 3.5e3 N s/m), a real eigenvalue without a finite log decrement,
+    // beside the light damping of z. Its Campbell table once stopped the run ("column
+    // 'line1_log_decrement' holds text"); FORMAT.md: the cell is empty, results.json holds null,
+    // and every other decrement is the solver's number, bit for bit.
+    const DeckJeffcott j;
+    std::string text = kJeffcottDeck;
+    text = text.substr(0, text.find("bearings:")) + R"(
+bearings: [{name: damper, at: disk, cxx: 400 * c, cyy: c}]
+analyses:
+  - {type: rotor, name: spin, speed_rpm: 1000, modes: 2}
+  - {type: campbell, name: campbell, modes: 2, from_rpm: 0, to_rpm: 4000, steps: 4}
+)";
+    const RunResult run = solvedText(text, "overdamped.yaml");
+    const fs::path dir = scratchDir("overdamped_outputs");
+    REQUIRE_NOTHROW(writeRunOutputs(run, dir));
+
+    const RotorModesResult& spin = *analysis(run, "spin").rotor->modes;
+    const CampbellResult& campbell = *analysis(run, "campbell").rotor->campbell;
+    REQUIRE(400 * j.c / (2 * std::sqrt(j.k() * j.m)) > 1);  // the y plane is overdamped
+    int overdamped = 0, damped = 0;
+    for (const auto& line : campbell.lines)
+      for (const RotorMode& m : line) {
+        if (std::isinf(m.logDecrement)) {
+          ++overdamped;
+        } else {
+          ++damped;
+          CHECK(relError(m.logDecrement, j.logDecrement()) < kClosedForm);
+        }
+      }
+    CHECK(overdamped == 5);  // one line of the two, at each of the 5 speeds
+    CHECK(damped == 5);
+
+    // 1. The Campbell table: one row per speed, line l's decrement in its own column.
+    const auto rows = csvCells(dir / "campbell_campbell.csv");
+    REQUIRE(rows.size() == campbell.speeds.size() + 1);
+    for (std::size_t l = 0; l < campbell.lines.size(); ++l) {
+      const std::size_t c =
+          csvColumn(rows[0], "line" + std::to_string(l + 1) + "_log_decrement");
+      for (std::size_t s = 0; s < campbell.speeds.size(); ++s)
+        checkDecrementCell(rows.at(s + 1).at(c), campbell.lines[l][s].logDecrement);
+    }
+
+    // 2. The modes at one speed.
+    const auto modes = csvCells(dir / "spin_modes.csv");
+    REQUIRE(modes.size() == spin.modes.size() + 1);
+    const std::size_t c = csvColumn(modes[0], "log_decrement");
+    for (std::size_t m = 0; m < spin.modes.size(); ++m)
+      checkDecrementCell(modes.at(m + 1).at(c), spin.modes[m].logDecrement);
+
+    // 3. results.json: null for the overdamped mode, the number for the other; the stability
+    //    chart was drawn (gnuplot leaves only a log when its script fails).
+    std::ifstream in(dir / "results.json");
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    const auto& spinModes = doc.at("analyses").at(0).at("modes");
+    for (std::size_t m = 0; m < spin.modes.size(); ++m)
+      checkDecrementJson(spinModes.at(m).at("log_decrement"), spin.modes[m].logDecrement);
+    const auto& lines = doc.at("analyses").at(1).at("lines");
+    for (std::size_t l = 0; l < campbell.lines.size(); ++l)
+      for (std::size_t s = 0; s < campbell.speeds.size(); ++s)
+        checkDecrementJson(lines.at(l).at("log_decrement").at(s), campbell.lines[l][s].logDecrement);
+    CHECK(fs::exists(dir / "campbell_stability.svg"));
+    fs::remove_all(dir);
   }
 }

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "problems/output/files/FileWriting.hpp"
@@ -72,6 +73,8 @@ std::vector<double> CsvTable::numbers(std::string_view name) const {
       values.push_back(*x);
     else if (const long long* n = std::get_if<long long>(&row[c]))
       values.push_back(double(*n));
+    else if (std::holds_alternative<std::monostate>(row[c]))
+      values.push_back(std::numeric_limits<double>::quiet_NaN());
     else
       throw std::invalid_argument(title_ + ": column '" + std::string(name) + "' holds text");
   }
@@ -92,8 +95,8 @@ void CsvTable::writeTo(std::ostream& out) const {
         out << exactDecimal(*x);
       else if (const long long* n = std::get_if<long long>(&row[c]))
         out << *n;
-      else
-        out << quoted(std::get<std::string>(row[c]));
+      else if (const std::string* text = std::get_if<std::string>(&row[c]))
+        out << quoted(*text);
     }
     out << '\n';
   }

@@ -17,8 +17,10 @@ struct CsvColumn {
   std::string unit;  ///< e.g. "m"; empty for counts and text
 };
 
-/// A number, a count or a text (quoted in the file).
-using CsvCell = std::variant<double, long long, std::string>;
+/// A number, a count, a text (quoted in the file) or an empty cell: a value that a table
+/// cannot hold as a number by definition (FORMAT.md: the infinite log decrement of an
+/// overdamped mode, a critical speed a sweep value does not find). NaN stays refused.
+using CsvCell = std::variant<double, long long, std::string, std::monostate>;
 
 class CsvTable {
  public:
@@ -33,7 +35,8 @@ class CsvTable {
   /// 1-based position of a column (gnuplot's numbering); throws std::out_of_range if absent.
   int column(std::string_view name) const;
   bool hasColumn(std::string_view name) const;
-  /// The numeric values of a column (counts converted; throws for a text column).
+  /// The numeric values of a column (counts converted, an empty cell NaN, which gnuplot's
+  /// `valid()`, NumPy and std::isfinite all treat as missing; throws for a text column).
   std::vector<double> numbers(std::string_view name) const;
 
   /// The cell of a row (0-based) and column (0-based position).

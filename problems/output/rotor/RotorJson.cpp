@@ -16,9 +16,10 @@ namespace {
 
 constexpr double kDegrees = 180 / std::numbers::pi;
 
-/// A number, or null where it is infinite by definition (a real eigenvalue's decrement).
+/// A number, or null where it is infinite by definition (a real eigenvalue's decrement). A NaN
+/// is a fault, not such a value: it stays a number for requireFiniteNumbers to refuse.
 Json finiteOrNull(double x) {
-  return std::isfinite(x) ? Json(x) : Json(nullptr);
+  return std::isinf(x) ? Json(nullptr) : Json(x);
 }
 
 Json modesJson(const std::string& stem, const RotorModesResult& r) {

@@ -17,8 +17,7 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
                              const std::optional<OperatingBand>& band) {
   const int x = campbell.column("speed_rpm");
   const int lines = campbellLineCount(campbell);
-  // The decrement axis: the finite values, with zero always in view; a real eigenvalue's
-  // infinite decrement is drawn at the top.
+  // The decrement axis: the finite values, with zero always in view.
   double low = 0, high = 0.1;
   for (int l = 1; l <= lines; ++l)
     for (double d : campbell.numbers(campbellColumn(l, "log_decrement")))
@@ -34,9 +33,13 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
   keyTitles.push_back("stability limit");
   const int keyMargin = std::max(keyWidth(keyTitles), 110);
   const int width = 800 + keyMargin, height = 860;
-  const auto clipped = [&](int column) {
-    return "($" + std::to_string(column) + " > " + number(high) + " ? " + number(high) + " : $" +
-           std::to_string(column) + ")";
+  // Decrements above the axis are drawn at its top; an empty cell (a real eigenvalue, whose
+  // decrement is infinite) at the top when it decays, at the bottom when it grows.
+  const auto clipped = [&](int l) {
+    const std::string d = std::to_string(campbell.column(campbellColumn(l, "log_decrement")));
+    const std::string z = std::to_string(campbell.column(campbellColumn(l, "damping_ratio")));
+    return "(valid(" + d + ") ? ($" + d + " > " + number(high) + " ? " + number(high) + " : $" +
+           d + ") : ($" + z + " > 0 ? " + number(high) + " : " + number(low) + "))";
   };
   std::ostringstream body;
   body << "  set encoding utf8\n"
@@ -60,7 +63,7 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
   for (int l = 1; l <= lines; ++l)
     body << (l > 1 ? ", \\\n       " : "") << gnuplotFile(csvFile) << " skip 1 using " << x << ":"
          << campbell.column(campbellColumn(l, "frequency")) << ":"
-         << clipped(campbell.column(campbellColumn(l, "log_decrement")))
+         << clipped(l)
          << " with lines linewidth 3 palette notitle";
   // The band's key is on the Campbell diagram: here it would meet the colour box's labels.
   body << "\n  unset colorbox\n  set xlabel 'spin speed [rpm]'\n  set ylabel 'log decrement'\n"
@@ -68,7 +71,7 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
   // 2. The decrements, one colour per line, and the stability boundary.
   for (int l = 1; l <= lines; ++l)
     body << gnuplotFile(csvFile) << " skip 1 using " << x << ":"
-         << clipped(campbell.column(campbellColumn(l, "log_decrement")))
+         << clipped(l)
          << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << lineStyle(l - 1)
          << " title " << gnuplotText(titles[l - 1]) << ", \\\n       ";
   body << "0 with lines linewidth 1 linecolor rgb 'black' title 'stability limit'\n"

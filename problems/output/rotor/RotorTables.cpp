@@ -15,7 +15,8 @@ double rpmOf(double speed) {
 }
 
 CsvCell logDecrementCell(double delta) {
-  return std::isfinite(delta) ? CsvCell(delta) : CsvCell(std::string(delta > 0 ? "inf" : "-inf"));
+  // A NaN is no decrement but a fault: it stays a number, for the table to refuse.
+  return std::isinf(delta) ? CsvCell(std::monostate()) : CsvCell(delta);
 }
 
 CsvTable journalBearingsTable(const std::string& title,
@@ -87,8 +88,8 @@ CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
   for (std::size_t m = 0; m < r.modes.size(); ++m) {
     const RotorMode& mode = r.modes[m];
     table.addRow({(long long)(m + 1), mode.dampedFrequencyHz, mode.naturalFrequencyHz,
-                  mode.dampingRatio, logDecrementCell(mode.logDecrement), std::string(whirlName(mode.whirl)),
-                  mode.whirlRatio});
+                  mode.dampingRatio, logDecrementCell(mode.logDecrement),
+                  std::string(whirlName(mode.whirl)), mode.whirlRatio});
   }
   return table;
 }

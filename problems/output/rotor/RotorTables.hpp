@@ -16,7 +16,8 @@ long long whirlSign(Whirl w);
 /// Speed in rpm of a speed in rad/s.
 double rpmOf(double speed);
 
-/// A log decrement as a CSV cell: the number, or the text "inf" / "-inf" (real eigenvalue).
+/// A log decrement as a CSV cell: the number, or an empty cell where it is infinite (a real
+/// eigenvalue: the damping ratio's sign tells a decaying mode from a growing one).
 CsvCell logDecrementCell(double delta);
 
 /// Plain journal bearings: one row per bearing and table speed: bearing (name), bearing_index
@@ -38,11 +39,12 @@ CsvTable api684Table(const std::string& title, const RotorOutcome& r);
 CsvTable frequencyResponseTable(const std::string& title, const FrequencyResponseResult& f);
 
 /// One row per mode: mode, damped and natural frequency (Hz), damping ratio, log decrement
-/// (text "inf" for a real eigenvalue), whirl (forward, backward, planar) and whirl ratio.
+/// (empty for a real eigenvalue), whirl (forward, backward, planar) and whirl ratio.
 CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r);
 
 /// One row per speed: speed (rad/s), speed_rpm, then per line l (from 1) line<l>_frequency
-/// (damped, Hz), line<l>_damping_ratio, line<l>_whirl (+1, -1, 0) and line<l>_mac.
+/// (damped, Hz), line<l>_damping_ratio, line<l>_log_decrement (empty for a real eigenvalue),
+/// line<l>_whirl (+1, -1, 0) and line<l>_mac.
 CsvTable campbellTable(const std::string& title, const CampbellResult& c);
 /// Column names of campbellTable for line l (1-based).
 std::string campbellColumn(int line, const std::string& what);

@@ -260,15 +260,11 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
     return m;
   };
   // A figure that stays the same at every value (an undamped rotor's log decrement 0): a flat
-  // line says nothing, and gnuplot warns about its empty range. Cells left empty count as
-  // changing.
+  // line says nothing, and gnuplot warns about its empty range. Cells left empty read as NaN,
+  // equal to nothing, so they count as changing.
   const auto constant = [&](const SweepQuantity& q) {
-    try {
-      const auto v = table.numbers(q.column.name);
-      return !v.empty() && std::all_of(v.begin(), v.end(), [&](double x) { return x == v[0]; });
-    } catch (const std::invalid_argument&) {
-      return false;
-    }
+    const auto v = table.numbers(q.column.name);
+    return !v.empty() && std::all_of(v.begin(), v.end(), [&](double x) { return x == v[0]; });
   };
   double largestReaction = 0;
   for (const SweepQuantity& q : quantities)

@@ -27,7 +27,8 @@ std::string columnRef(const CsvTable& t, const std::string& name) {
 /// A drawn coordinate: column `axis` plus scale times `value` (a gnuplot expression).
 std::string shiftedCoordinate(const CsvTable& t, const std::string& axis, const std::string& value,
                     double scale) {
-  return "(" + columnRef(t, axis) + "+" + number(scale) + "*" + value + ")";
+  const std::string column = columnRef(t, axis);
+  return "(" + column + "+" + number(scale) + "*" + value + ")";
 }
 
 double largestAbs(const std::vector<MemberSeries>& members, const std::vector<std::string>& cols) {
@@ -80,14 +81,22 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   // direction of self-weight) is the chart's vertical.
   const std::vector<int> drawn = planar ? std::vector<int>{0, 1} : std::vector<int>{0, 2, 1};
   const std::array<std::string, 3> names{"x", "y", "z"};
+  // Appended piece by piece: GCC 12 takes "literal" + a temporary string for an overlapping
+  // copy (a false -Wrestrict, GCC bugs 105329 and 105651).
   const auto joined = [&](auto part) {
     std::string out;
-    for (std::size_t i = 0; i < drawn.size(); ++i) out += (i ? ":" : "") + part(drawn[i]);
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      if (i) out += ':';
+      out += part(drawn[i]);
+    }
     return out;
   };
   const auto placeText = [&](const Eigen::Vector3d& x) {
     std::string out;
-    for (std::size_t i = 0; i < drawn.size(); ++i) out += (i ? ", " : "") + number(x[drawn[i]]);
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      if (i) out += ", ";
+      out += number(x[drawn[i]]);
+    }
     return out;
   };
   if (planar)
@@ -144,15 +153,18 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
       const std::string M = columnRef(t, moments[c]);
       if (!(largestAbs({m}, {moments[c]}) > 1e-9 * largestM)) continue;  // nothing to draw
       const auto offset = [&](int axis) {
-        return "(" + sign + M + "*" + columnRef(t, e + "_" + names[axis]) + ")";
+        const std::string direction = columnRef(t, e + "_" + names[axis]);
+        return "(" + sign + M + "*" + direction + ")";
       };
       clauses.push_back(data + at(t, {offset(0), offset(1), offset(2)}, perMoment) +
                         " with lines linewidth 2 " + colour(c + 1));
       // Hatching: a line from the axis to the diagram at every station.
       const std::string base =
           joined([&](int axis) { return std::to_string(t.column(names[axis])); });
+      const std::string scale = number(perMoment);
       const std::string delta = joined([&](int axis) {
-        return std::string("(") + number(perMoment) + "*" + offset(axis) + ")";
+        const std::string shift = offset(axis);
+        return "(" + scale + "*" + shift + ")";
       });
       clauses.push_back(data + base + ":" + delta + " with vectors nohead linewidth 0.8 " +
                         colour(c + 1));

@@ -24,7 +24,7 @@ struct StationShaft {
   std::vector<double> stations;
   int perSpan = 8;
   std::shared_ptr<const Section> section = steelCircle(0.05);
-  std::vector<int> nodes;  // the stations' nodes
+  std::vector<int> nodes{};  // the stations' nodes, filled by build()
 
   double L() const { return stations.back() - stations.front(); }
   double q() const { return section->rhoA() * kGravityTest; }  // weight per length (N/m)
@@ -35,11 +35,14 @@ struct StationShaft {
     spec.dofs = DofSet::lateral();
     for (std::size_t s = 1; s < stations.size(); ++s)
       spec.segments.push_back({stations[s] - stations[s - 1], section, perSpan, 0, {}});
-    for (std::size_t s = 0; s < stations.size(); ++s)
-      spec.points.push_back({"s" + std::to_string(s), stations[s] - stations.front()});
+    std::vector<std::string> names;
+    for (std::size_t s = 0; s < stations.size(); ++s) {
+      const std::string index = std::to_string(s);
+      names.push_back("s" + index);
+      spec.points.push_back({names.back(), stations[s] - stations.front()});
+    }
     buildLine(model, spec);
-    for (std::size_t s = 0; s < stations.size(); ++s)
-      nodes.push_back(model.node("s" + std::to_string(s)));
+    for (const std::string& name : names) nodes.push_back(model.node(name));
   }
 };
 

@@ -214,8 +214,9 @@ TEST_SUITE("rotor modes") {
     for (int end : {0, 1}) {
       const int np = end ? lp.nodes.back() : lp.nodes.front();
       const int nl = end ? ll.nodes.back() : ll.nodes.front();
-      planar.addSupport({"p" + std::to_string(end), np, {{Dof::uy, 0}}});
-      lateral.addSupport({"l" + std::to_string(end), nl, {{Dof::uy, 0}, {Dof::uz, 0}}});
+      const std::string index = std::to_string(end);
+      planar.addSupport({"p" + index, np, {{Dof::uy, 0}}});
+      lateral.addSupport({"l" + index, nl, {{Dof::uy, 0}, {Dof::uz, 0}}});
     }
     const ModalResult ref = solveModes(planar, {4, 0});
     const RotorModesResult rot = solveRotorModes(lateral, 0, rotorOptions(8));

@@ -42,7 +42,8 @@ TEST_SUITE("mechanisms") {
     clamp(m, "left", line.nodes.front(), DofSet::planar());
     clamp(m, "right", line.nodes.back(), DofSet::planar());
     for (int k = 1; k <= 3; ++k) {
-      m.nameNode("h" + std::to_string(k), line.nodes[k]);
+      const std::string index = std::to_string(k);
+      m.nameNode("h" + index, line.nodes[k]);
       line.beams[k - 1]->release(1, Dof::rz);
       line.beams[k]->release(0, Dof::rz);
     }

@@ -21,26 +21,6 @@ using namespace beamrotor::test;
 
 namespace {
 
-/// study.csv as rows of cells (no quoted commas in the cells read here).
-std::vector<std::vector<std::string>> studyCells(const std::filesystem::path& dir) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(fileContents(dir / "study.csv"));
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream cellsIn(line);
-    for (std::string cell; std::getline(cellsIn, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
-int columnOf(const std::vector<std::string>& header, const std::string& name) {
-  for (std::size_t k = 0; k < header.size(); ++k)
-    if (header[k] == name || header[k] == "\"" + name + "\"") return int(k);
-  FAIL("no column " << name);
-  return -1;
-}
-
 DesignStudyRequest pumpRodStudy(const std::filesystem::path& out) {
   DesignStudyRequest r;
   r.deckPath = (problemsDir() / "pump_rod.yaml").string();
@@ -58,24 +38,24 @@ TEST_SUITE("design studies") {
     const DesignStudyOutcome serial = runDesignStudy(r);
     CHECK(serial.points == 15);
     CHECK(serial.failed == 0);
-    const auto rows = studyCells(serial.dir);
+    const auto rows = csvCells(serial.dir / "study.csv");
     REQUIRE(rows.size() == 16);
     const auto& h = rows[0];
-    const int eta = columnOf(h, "eta"), w0 = columnOf(h, "w0");
+    const int eta = csvColumn(h, "eta"), w0 = csvColumn(h, "w0");
     for (std::size_t i = 1; i < rows.size(); ++i) {
       PumpRod rod;
       rod.eta = std::stod(rows[i][eta]);
       const PumpRodResponse ref = pumpRodInitialParameters(rod, std::stod(rows[i][w0]), true);
       // Hermite elements reproduce the cubic exactly: round-off only (the deck's 1e-9).
-      CHECK(std::stod(rows[i][columnOf(h, "reaction left uy")]) ==
+      CHECK(std::stod(rows[i][csvColumn(h, "reaction left uy")]) ==
             doctest::Approx(ref.leftForce).epsilon(1e-9));
-      CHECK(std::stod(rows[i][columnOf(h, "reaction left rz")]) ==
+      CHECK(std::stod(rows[i][csvColumn(h, "reaction left rz")]) ==
             doctest::Approx(ref.leftMoment).epsilon(1e-9));
-      CHECK(std::stod(rows[i][columnOf(h, "reaction middle uy")]) ==
+      CHECK(std::stod(rows[i][csvColumn(h, "reaction middle uy")]) ==
             doctest::Approx(ref.middleForce).epsilon(1e-9));
-      CHECK(std::stod(rows[i][columnOf(h, "reaction right uy")]) ==
+      CHECK(std::stod(rows[i][csvColumn(h, "reaction right uy")]) ==
             doctest::Approx(ref.rightForce).epsilon(1e-9));
-      CHECK(std::stod(rows[i][columnOf(h, "reaction right rz")]) ==
+      CHECK(std::stod(rows[i][csvColumn(h, "reaction right rz")]) ==
             doctest::Approx(ref.rightMoment).epsilon(1e-9));
       CHECK(rows[i].back() == "ok");
     }
@@ -161,10 +141,10 @@ TEST_SUITE("design studies") {
     const DesignStudyOutcome o = runDesignStudy(r);
     CHECK(o.points == 3);
     CHECK(o.failed == 1);
-    const auto rows = studyCells(o.dir);
+    const auto rows = csvCells(o.dir / "study.csv");
     CHECK(rows[1].back() == "ok");
     CHECK(rows[2].back() != "ok");
-    CHECK(rows[2][columnOf(rows[0], "reaction left uy")].empty());
+    CHECK(rows[2][csvColumn(rows[0], "reaction left uy")].empty());
     CHECK(rows[3].back() == "ok");
     std::filesystem::remove_all(scratch);
   }
@@ -186,8 +166,8 @@ TEST_SUITE("design studies") {
       CAPTURE(check["name"].get<std::string>());
       CHECK(check["passed"] == check["applicable"]);
     }
-    const auto rows = studyCells(o.dir);
-    const int critical = columnOf(rows[0], "critical_speed 1");
+    const auto rows = csvCells(o.dir / "study.csv");
+    const int critical = csvColumn(rows[0], "critical_speed 1");
     CHECK(std::stod(rows[2][critical]) / std::stod(rows[1][critical]) ==
           doctest::Approx(2.0).epsilon(1e-6));
     std::filesystem::remove_all(scratch);
