@@ -360,8 +360,8 @@ analyses:
     const fs::path dir = scratchDir("overdamped_outputs");
     REQUIRE_NOTHROW(writeRunOutputs(run, dir));
 
-    const RotorModesResult& spin = *analysis(run, "spin").rotor->modes;
-    const CampbellResult& campbell = *analysis(run, "campbell").rotor->campbell;
+    const RotorModesResult& spin = *resultOf<RotorOutcome>(analysis(run, "spin"))->modes;
+    const CampbellResult& campbell = *resultOf<RotorOutcome>(analysis(run, "campbell"))->campbell;
     REQUIRE(400 * j.c / (2 * std::sqrt(j.k() * j.m)) > 1);  // the y plane is overdamped
     int overdamped = 0, damped = 0;
     for (const auto& line : campbell.lines)

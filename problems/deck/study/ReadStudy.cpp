@@ -319,7 +319,7 @@ void ModalSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) 
     if (a.prestressed && !c.deck.contacts.empty())
       p->fail("prestressed modes need a linear loaded state: remove the contacts");
   }
-  if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, kEigenvalueShift);
+  if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, reader::kEigenvalueShift);
 }
 
 }  // namespace beamrotor

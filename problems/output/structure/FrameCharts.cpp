@@ -21,7 +21,9 @@ constexpr double kDiagramShare = 0.15;
 
 /// "$k" for gnuplot's using: column k (1-based) of a member table.
 std::string columnRef(const CsvTable& t, const std::string& name) {
-  return "$" + std::to_string(t.column(name));
+  std::string ref = "$";  // appended, not "$" + a temporary: see joined() below (GCC 12)
+  ref += std::to_string(t.column(name));
+  return ref;
 }
 
 /// A drawn coordinate: column `axis` plus scale times `value` (a gnuplot expression).
