@@ -12,9 +12,6 @@ namespace beamrotor::reader {
 
 namespace {
 
-/// A modal analysis' shift: the eigenvalue omega^2 the modes are sought nearest (rad^2/s^2).
-constexpr FieldUnit kEigenvalueShift{Dimension::of(0, 0, -2, 2)};
-
 /// The items of a list of analyses or checks, at most kMaxAnalyses of them.
 std::vector<Field> boundedItems(const Field& block, const std::string& what) {
   std::vector<Field> items = block.items();
@@ -310,6 +307,11 @@ void BucklingSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& 
     f.fail("a buckling analysis needs a linear reference state: remove the contacts");
 }
 
+namespace {
+/// A modal analysis' shift: the eigenvalue omega^2 the modes are sought nearest (rad^2/s^2).
+constexpr FieldUnit kEigenvalueShift{Dimension::of(0, 0, -2, 2)};
+}  // namespace
+
 void ModalSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
   reader::requireSymmetricAtRest(c, f);
   f.allowOnly({"type", "name", "modes", "shift", "prestressed"}, "a modal analysis");
@@ -319,7 +321,7 @@ void ModalSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) 
     if (a.prestressed && !c.deck.contacts.empty())
       p->fail("prestressed modes need a linear loaded state: remove the contacts");
   }
-  if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, reader::kEigenvalueShift);
+  if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, kEigenvalueShift);
 }
 
 }  // namespace beamrotor
