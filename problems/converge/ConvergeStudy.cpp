@@ -34,14 +34,13 @@ struct Target {
 
 /// Time-step studies for transient analyses, mesh studies for the others.
 bool refinesTimeStep(const DeckAnalysis& a) {
-  return a.transient.has_value();
+  return a.as<TransientSpec>() != nullptr;
 }
 
 /// Which analyses a study can refine: every kind but the rigid-body properties (integrals of
 /// the section, the same on any mesh) and the crank-slider mechanism (closed forms, no mesh).
 bool studiable(const DeckAnalysis& a) {
-  return !std::holds_alternative<RigidBodySpec>(a.kind) &&
-         !std::holds_alternative<CrankSliderSpec>(a.kind);
+  return !a.as<RigidBodySpec>() && !a.as<CrankSliderSpec>();
 }
 
 /// Refuses a deck none of whose analyses a study can refine (e.g. a crank-slider or a rigid
@@ -78,11 +77,11 @@ std::vector<Target> candidates(const Deck& deck) {
   }
   for (const DeckAnalysis& a : deck.analyses) {
     std::string text;
-    if (std::holds_alternative<ModalSpec>(a.kind) || std::holds_alternative<RotorSpec>(a.kind))
-      text = "frequency 1";
-    if (std::holds_alternative<StaticSpec>(a.kind) && !deck.segments.empty()) text = "stress max";
-    if (a.transient && !a.transient->histories.empty())
-      text = "history " + a.transient->histories.front().name + " maxabs";
+    if (a.as<ModalSpec>() || a.as<RotorSpec>()) text = "frequency 1";
+    if (a.as<StaticSpec>() && !deck.segments.empty()) text = "stress max";
+    const auto* transient = a.as<TransientSpec>();
+    if (transient && !transient->run.histories.empty())
+      text = "history " + transient->run.histories.front().name + " maxabs";
     if (!text.empty()) out.push_back({parseQuantity(text), &a, nullptr, ""});
   }
   return out;
@@ -250,8 +249,8 @@ ConvergeLevel solveLevel(const Deck& deck, const Quantity& q, int level, int rep
       }
       out.elements = cost.size.elements;
       out.dofs = cost.size.freeDofs;
-      if (const auto& t = deck.analyses.front().transient)
-        out.steps = int(std::lround(t->end / t->dt));
+      if (const auto* t = deck.analyses.front().as<TransientSpec>())
+        out.steps = int(std::lround(t->run.end / t->run.dt));
     }
     assembly.push_back(cost.time.assembly);
     factor.push_back(cost.time.factor);
@@ -329,7 +328,7 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
   const std::vector<ConvergeMethod> methods =
       timeStep ? std::vector<ConvergeMethod>{{"time-step", "the deck's scheme, dt halved per level",
                                               deck.beam.theory, deck.beam.mass}}
-               : convergeMethods(!std::holds_alternative<StaticSpec>(t.analysis->kind));
+               : convergeMethods(!t.analysis->as<StaticSpec>());
   for (const ConvergeMethod& method : methods) {
     ConvergeSeries series;
     series.method = method;

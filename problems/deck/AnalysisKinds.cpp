@@ -67,7 +67,33 @@ std::string defaultAnalysisType(const Quantity& q) {
 }
 
 bool isRotorAnalysis(const AnalysisSpec& spec) {
-  return std::visit([](auto row) { return std::is_base_of_v<RotorFamily, decltype(row)>; }, spec);
+  return rotorSettings(spec) != nullptr;
+}
+
+const RotorFamily* rotorSettings(const AnalysisSpec& spec) {
+  return std::visit(
+      [](const auto& row) -> const RotorFamily* {
+        if constexpr (std::is_base_of_v<RotorFamily, std::decay_t<decltype(row)>>)
+          return &row;
+        else
+          return nullptr;
+      },
+      spec);
+}
+
+RotorFamily* rotorSettings(AnalysisSpec& spec) {
+  return const_cast<RotorFamily*>(rotorSettings(std::as_const(spec)));
+}
+
+int modesComputed(const AnalysisSpec& spec) {
+  return std::visit(
+      [](const auto& row) {
+        if constexpr (requires { row.modes; })
+          return row.modes;
+        else
+          return 0;
+      },
+      spec);
 }
 
 namespace reader {
@@ -78,9 +104,9 @@ AnalysisSpec analysisKind(const Field& type) {
 
 void readAnalysisKind(const Context& c, const Field& f, DeckAnalysis& a) {
   std::visit(
-      [&](auto row) {
-        decltype(row)::read(c, f, a);
-        if constexpr (decltype(row)::needsMass) requireMass(c, f, a);
+      [&](auto& row) {
+        row.read(c, f);
+        if constexpr (std::decay_t<decltype(row)>::needsMass) requireMass(c, f, a.type());
       },
       a.kind);
 }

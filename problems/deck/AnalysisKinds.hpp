@@ -1,7 +1,8 @@
 // The table of analysis kinds: one row per `type:` an entry of `analyses:` may have. A row is
 // a spec type declared in its family's room (structure/, transient/, crank/, rotor/) that
-// states its deck type, its reader and the check quantities it answers; the table is the list
-// of those types, and the only place that compares a deck's type string. Adding a kind is one
+// states its deck type, its reader and the check quantities it answers, and holds the settings
+// its deck entry gives; the table is the list of those types, and the only place that compares
+// a deck's type string. Adding a kind is one
 // alternative here plus its own files.
 #pragma once
 
@@ -51,5 +52,10 @@ std::string defaultAnalysisType(const Quantity& q);
 
 /// Whether the row belongs to the rotor family (RotorKinds.hpp).
 bool isRotorAnalysis(const AnalysisSpec& spec);
+/// The rotor family's settings of a rotor row; null for any other row.
+const RotorFamily* rotorSettings(const AnalysisSpec& spec);
+RotorFamily* rotorSettings(AnalysisSpec& spec);
+/// How many modes (or buckling factors) the row computes; 0 for a row that computes none.
+int modesComputed(const AnalysisSpec& spec);
 
 }  // namespace beamrotor

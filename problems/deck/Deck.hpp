@@ -150,19 +150,20 @@ inline DeckLoad scaledLoad(DeckLoad l, double factor) {
 
 /// One analysis to run.
 struct DeckAnalysis {
-  AnalysisSpec kind;  ///< its row in the table of analysis kinds (AnalysisKinds.hpp)
+  AnalysisSpec kind;  ///< its row in the table of analysis kinds, with the settings it gives
   std::string name;   ///< defaults to the type
-  int modes = 6;     ///< modal, rotor, campbell, buckling: how many
-  double shift = 0;  ///< modal: rad^2/s^2; rotor, campbell: 1/s
   DeckPlace place;
-  std::optional<DeckTransient> transient;  ///< transient: its settings
-  DeckRotorAnalysis rotor;                 ///< rotor analyses: speeds, unbalance, points
-  bool secondOrder = false;  ///< static: equilibrium in the deformed state (fem/stability)
-  bool reversed = false;     ///< buckling: also the negative load factors (load reversed)
-  bool prestressed = false;  ///< modal: about the state the deck's loads put the structure in
-  std::optional<DeckCrankSlider> crank;  ///< crank-slider: the mechanism (no model needed)
   /// The deck's `type:` for it, e.g. "campbell" (for messages; ask `kind` what it is).
   std::string type() const { return analysisTypeName(kind); }
+  /// Its row's settings when it is a `Spec`, else null.
+  template <class Spec>
+  const Spec* as() const {
+    return std::get_if<Spec>(&kind);
+  }
+  template <class Spec>
+  Spec* as() {
+    return std::get_if<Spec>(&kind);
+  }
 };
 
 /// A closed-form comparison.

@@ -66,8 +66,6 @@ void readAttachments(Context& c);
 void readDisk(const Context& c, const Field& disk, DeckMass& mass);
 /// Bearings and proportional damping (ReadRotor.cpp).
 void readRotorModel(Context& c);
-/// The fields of a rotor, campbell, unbalance or rigid-body analysis into a.
-void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a);
 /// Fails at a modal analysis when a bearing is cross-coupled at rest (non-symmetric K).
 void requireSymmetricAtRest(const Context& c, const Field& analysis);
 /// Fails at `f` unless the names a rotor quantity refers to exist in analysis `a`.
@@ -81,16 +79,17 @@ AnalysisSpec analysisKind(const Field& type);
 /// The fields of analysis entry `f` into a, by the reader of its row a.kind; then, when the
 /// row needs mass, requireMass.
 void readAnalysisKind(const Context& c, const Field& f, DeckAnalysis& a);
-/// Fails at analysis entry `f` when the deck has no inertia: no density and no lumped mass.
-void requireMass(const Context& c, const Field& f, const DeckAnalysis& a);
+/// Fails at analysis entry `f` (of deck type `type`) when the deck has no inertia: no density
+/// and no lumped mass.
+void requireMass(const Context& c, const Field& f, const std::string& type);
 /// Whether an analysis entry is one that needs no model: its row says so (a crank-slider, or
 /// a rigid-body analysis given its `body:`).
 bool isMechanismAnalysis(const Field& analysis);
 /// True when the deck has no segments, points or frame and only such analyses: it needs no
 /// model at all.
 bool modelFree(const Context& c);
-/// The fields of a crank-slider analysis into a.crank.
-void readCrankAnalysis(const Context& c, const Field& f, DeckAnalysis& a);
+/// The mechanism a crank-slider analysis `f` gives.
+DeckCrankSlider readCrankSlider(const Context& c, const Field& f);
 /// A rigid-body analysis' `body:` (weight or mass, radius of gyration, l1, l2, C1, C2).
 void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r);
 /// Fails at `f` when a crank quantity asks for what analysis `a` was not given (masses, a
@@ -110,8 +109,8 @@ void readStudy(Context& c, const std::vector<ParameterOverride>& overrides);
 
 /// The settings of a transient analysis `f` (a map with type: transient).
 DeckTransient readTransient(const Context& c, const Field& f);
-/// Checks a history quantity against transient `analysis` and evaluates its time (which must
-/// lie within the run when the check applies).
+/// Checks a history quantity against transient analysis `analysis` and evaluates its time
+/// (which must lie within the run when the check applies).
 void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
                             const DeckAnalysis& analysis, bool applicable);
 /// `report:`: names of parameters and derived values into deck.reported.

@@ -40,7 +40,7 @@ void refineMesh(Deck& deck, int level) {
 
 void refineTimeStep(Deck& deck, int level) {
   for (DeckAnalysis& a : deck.analyses)
-    if (a.transient) a.transient->dt /= double(1 << level);
+    if (auto* transient = a.as<TransientSpec>()) transient->run.dt /= double(1 << level);
 }
 
 }  // namespace beamrotor

@@ -23,6 +23,7 @@
 #include "problems/run/ModelBuilder.hpp"
 #include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/OverRefinementWarning.hpp"
+#include "problems/run/Overloaded.hpp"
 #include "problems/run/RunRotor.hpp"
 #include "problems/run/RunTransient.hpp"
 #include "problems/run/SweepRefinement.hpp"
@@ -73,38 +74,46 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
   out.type = a.type();
   out.name = a.name;
   try {
-    if (std::holds_alternative<StaticSpec>(a.kind) && a.secondOrder) {
-      out.result = solveSecondOrder(model);
-    } else if (std::holds_alternative<StaticSpec>(a.kind)) {
-      StaticOptions options;
-      if (cache) options.reuse = &cache->statics;
-      StaticOutcome statics{solveStatic(model, options), {}};
-      if (auto w = overRefinementWarning(model, statics.statics)) out.warnings.push_back(*w);
-      if (auto w = displacementWarning(model, statics.statics)) out.warnings.push_back(*w);
-      statics.cases = solveCases(deck, options);
-      out.result = std::move(statics);
-    } else if (std::holds_alternative<BucklingSpec>(a.kind)) {
-      BucklingOptions options;
-      options.count = a.modes;
-      options.reversed = a.reversed;
-      BucklingResult buckling = solveBuckling(model, options);
-      out.warnings = buckling.warnings;
-      out.result = std::move(buckling);
-    } else if (a.transient) {
-      out.result = runTransient(deck, a, model);
-    } else if (a.crank) {
-      out.result = runCrankSlider(*a.crank);
-    } else if (isRotorAnalysis(a.kind)) {
-      out.result = solveRotorAnalysis(deck, a, model);
-    } else {
-      ModalOptions options;
-      options.modes = a.modes;
-      options.shift = a.shift;
-      ModalResult modal =
-          a.prestressed ? solvePrestressedModes(model, options) : solveModes(model, options);
-      out.warnings.insert(out.warnings.end(), modal.warnings.begin(), modal.warnings.end());
-      out.result = std::move(modal);
-    }
+    out.result = std::visit(
+        Overloaded{
+            [&](const StaticSpec& spec) -> AnalysisResult {
+              if (spec.secondOrder) return solveSecondOrder(model);
+              StaticOptions options;
+              if (cache) options.reuse = &cache->statics;
+              StaticOutcome statics{solveStatic(model, options), {}};
+              if (auto w = overRefinementWarning(model, statics.statics)) out.warnings.push_back(*w);
+              if (auto w = displacementWarning(model, statics.statics)) out.warnings.push_back(*w);
+              statics.cases = solveCases(deck, options);
+              return statics;
+            },
+            [&](const BucklingSpec& spec) -> AnalysisResult {
+              BucklingOptions options;
+              options.count = spec.modes;
+              options.reversed = spec.reversed;
+              BucklingResult buckling = solveBuckling(model, options);
+              out.warnings = buckling.warnings;
+              return buckling;
+            },
+            [&](const ModalSpec& spec) -> AnalysisResult {
+              ModalOptions options;
+              options.modes = spec.modes;
+              options.shift = spec.shift;
+              ModalResult modal = spec.prestressed ? solvePrestressedModes(model, options)
+                                                   : solveModes(model, options);
+              out.warnings.insert(out.warnings.end(), modal.warnings.begin(), modal.warnings.end());
+              return modal;
+            },
+            [&](const TransientSpec& spec) -> AnalysisResult {
+              return runTransient(deck, spec.run, model);
+            },
+            [&](const CrankSliderSpec& spec) -> AnalysisResult {
+              return runCrankSlider(spec.mechanism);
+            },
+            [&](const RotorFamily&) -> AnalysisResult {
+              return solveRotorAnalysis(deck, a, model);
+            },
+        },
+        a.kind);
   } catch (const DeckError&) {
     throw;  // bad input only the model could reveal (an unstable explicit step)
   } catch (const std::bad_alloc&) {

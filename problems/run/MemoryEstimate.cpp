@@ -35,8 +35,9 @@ std::vector<MemoryPart> estimateRunMemory(const Deck& deck) {
                    deck.segments.empty() ? DeckPlace{} : deck.segments.front().place});
   for (const DeckAnalysis& a : deck.analyses) {
     const std::string name = a.type() + " '" + a.name + "'";
-    if (a.transient) {
-      const DeckTransient& t = *a.transient;
+    const int modes = modesComputed(a.kind);
+    if (const auto* transient = a.as<TransientSpec>()) {
+      const DeckTransient& t = transient->run;
       const double steps = std::round(t.end / t.dt);
       const double samples = std::floor(steps / std::max(1, t.sampleEvery)) + 2;
       const double columns = 1 + 4 + 4.0 * double(t.histories.size());  // t, energy, u v a value
@@ -48,17 +49,15 @@ std::vector<MemoryPart> estimateRunMemory(const Deck& deck) {
         parts.push_back({name + ": " + std::to_string(t.frames) + " frames of " +
                              std::to_string(static_cast<long long>(nodes)) + " nodes",
                          double(t.frames + 1) * nodes * kDofKinds * kDouble, a.place});
-    } else if (std::holds_alternative<ModalSpec>(a.kind) ||
-               std::holds_alternative<RotorSpec>(a.kind) ||
-               std::holds_alternative<CampbellSpec>(a.kind)) {
+    } else if (a.as<ModalSpec>() || a.as<RotorSpec>() || a.as<CampbellSpec>()) {
       // Lanczos vectors, the shapes kept and, for rotors, complex numbers.
-      const double lanczos = std::min(dofs, double(lanczosBasisSize(a.modes)));
-      const double complex = std::holds_alternative<ModalSpec>(a.kind) ? 1 : 2;
-      const double speeds =
-          std::holds_alternative<CampbellSpec>(a.kind) ? double(a.rotor.speeds.size()) : 1;
+      const double lanczos = std::min(dofs, double(lanczosBasisSize(modes)));
+      const double complex = a.as<ModalSpec>() ? 1 : 2;
+      const auto* campbell = a.as<CampbellSpec>();
+      const double speeds = campbell ? double(campbell->rotor.speeds.size()) : 1;
       parts.push_back(
-          {name + ": " + std::to_string(a.modes) + " modes",
-           complex * kDouble * (lanczos * dofs + speeds * a.modes * (dofs + nodes * kDofKinds)),
+          {name + ": " + std::to_string(modes) + " modes",
+           complex * kDouble * (lanczos * dofs + speeds * modes * (dofs + nodes * kDofKinds)),
            a.place});
     }
   }

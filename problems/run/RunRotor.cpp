@@ -39,8 +39,8 @@ std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
 /// The operating range of the deck's first unbalance analysis that gives one.
 std::optional<OperatingRange> deckOperatingRange(const Deck& deck) {
   for (const DeckAnalysis& a : deck.analyses)
-    if (std::holds_alternative<UnbalanceSpec>(a.kind) && a.rotor.operating)
-      return a.rotor.operating;
+    if (const auto* unbalance = a.as<UnbalanceSpec>(); unbalance && unbalance->rotor.operating)
+      return unbalance->rotor.operating;
   return std::nullopt;
 }
 
@@ -61,8 +61,8 @@ std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
 
 RotorOptions optionsOf(const Deck& deck, const DeckAnalysis& a) {
   RotorOptions o;
-  o.modes = a.modes;
-  o.shift = a.shift;
+  o.modes = rotorSettings(a.kind)->modes;
+  o.shift = rotorSettings(a.kind)->shift;
   o.damping = deck.rotor.damping;
   return o;
 }
@@ -122,7 +122,7 @@ RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
 
 RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const Model& model) {
   RotorOutcome out;
-  const DeckRotorAnalysis& r = a.rotor;
+  const DeckRotorAnalysis& r = rotorSettings(a.kind)->rotor;
   if (std::holds_alternative<RotorSpec>(a.kind)) {
     out.modes = solveRotorModes(model, r.speed, optionsOf(deck, a));
   } else if (std::holds_alternative<CampbellSpec>(a.kind)) {

@@ -105,8 +105,7 @@ void defineDeckNames(const Deck& deck, ExpressionEvaluator& ev) {
 
 }  // namespace
 
-TransientOutcome runTransient(const Deck& deck, const DeckAnalysis& a, const Model& model) {
-  const DeckTransient& t = *a.transient;
+TransientOutcome runTransient(const Deck& deck, const DeckTransient& t, const Model& model) {
   requireCarried(deck, t, model);
   if (t.scheme == TimeScheme::centralDifference) requireStableStep(deck, t, model);
 

@@ -9,9 +9,9 @@
 
 namespace beamrotor {
 
-/// Solves transient analysis `a` of `deck` on `model`. Throws DeckError at the deck's dt when
+/// Solves transient run `t` of `deck` on `model`. Throws DeckError at the deck's dt when
 /// the central-difference scheme is asked for a step above its stability limit 2 / omega_max
 /// (a run that would only grow without bound), and what solveTransient throws otherwise.
-TransientOutcome runTransient(const Deck& deck, const DeckAnalysis& a, const Model& model);
+TransientOutcome runTransient(const Deck& deck, const DeckTransient& t, const Model& model);
 
 }  // namespace beamrotor

@@ -71,7 +71,7 @@ StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText
   }
   plan.exclusive = std::any_of(deck.analyses.begin(), deck.analyses.end(),
                                [&](const DeckAnalysis& a) {
-                                 return !std::holds_alternative<StaticSpec>(a.kind) &&
+                                 return !a.as<StaticSpec>() &&
                                         std::find(plan.analyses.begin(), plan.analyses.end(),
                                                   a.name) != plan.analyses.end();
                                }) ||

@@ -129,8 +129,11 @@ Json StudySummary::json() const {
       one["mean"] = t.mean;
       one["sd"] = t.values.size() > 1 ? std::sqrt(t.m2 / double(t.values.size() - 1)) : 0.0;
       Json percentiles;
-      for (int p : {1, 5, 25, 50, 75, 95, 99})
-        percentiles["p" + std::to_string(p)] = sortedPercentile(sorted, p / 100.0);
+      for (int p : {1, 5, 25, 50, 75, 95, 99}) {
+        std::string key = "p";  // appended, not "p" + temporary: GCC 12's false -Wrestrict
+        key += std::to_string(p);
+        percentiles[key] = sortedPercentile(sorted, p / 100.0);
+      }
       one["percentiles"] = percentiles;
       one["worst"] = {{"point", t.worst},
                       {"value", t.worstActual},

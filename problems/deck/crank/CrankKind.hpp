@@ -3,6 +3,7 @@
 #pragma once
 
 #include "problems/deck/AnalysisRow.hpp"
+#include "problems/deck/crank/DeckCrank.hpp"
 
 namespace beamrotor {
 
@@ -10,8 +11,9 @@ struct CrankSliderSpec {
   static constexpr std::string_view deckType = "crank-slider";
   static constexpr std::array answers{Quantity::Kind::crankSlider};
   static constexpr bool needsMass = false;
-  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  void read(const reader::Context& c, const Field& f);
   static bool modelFree(const Field&) { return true; }
+  DeckCrankSlider mechanism;
 };
 
 }  // namespace beamrotor

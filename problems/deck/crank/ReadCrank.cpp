@@ -52,7 +52,7 @@ bool modelFree(const Context& c) {
   return !items.empty() && std::all_of(items.begin(), items.end(), isMechanismAnalysis);
 }
 
-void readCrankAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
+DeckCrankSlider readCrankSlider(const Context& c, const Field& f) {
   f.allowOnly({"type", "name", "r", "l", "speed_rpm", "cranks_deg", "steps", "masses",
                "plunger_diameter", "lambdas"},
               "a crank-slider analysis");
@@ -88,7 +88,7 @@ void readCrankAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
     }
     if (d.lambdas.size() > 1000) list->fail("at most 1000 lambdas");
   }
-  a.crank = d;
+  return d;
 }
 
 void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r) {
@@ -113,8 +113,9 @@ void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r) {
 }
 
 void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis& a) {
-  if (q.kind != Quantity::Kind::crankSlider || !a.crank) return;
-  const DeckCrankSlider& d = *a.crank;
+  const auto* crank = a.as<CrankSliderSpec>();
+  if (q.kind != Quantity::Kind::crankSlider || !crank) return;
+  const DeckCrankSlider& d = crank->mechanism;
   const std::string& p = q.property;
   if (q.lambda > 0) {
     const bool listed = std::any_of(d.lambdas.begin(), d.lambdas.end(),
@@ -141,8 +142,8 @@ void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis&
 
 namespace beamrotor {
 
-void CrankSliderSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readCrankAnalysis(c, f, a);
+void CrankSliderSpec::read(const reader::Context& c, const Field& f) {
+  mechanism = reader::readCrankSlider(c, f);
 }
 
 }  // namespace beamrotor

@@ -279,6 +279,18 @@ void readOrders(const Field& f, const ExpressionEvaluator& ev, DeckRotorAnalysis
   r.furtherOrders.assign(orders.begin() + 1, orders.end());
 }
 
+void requireLateral(const Context& c, const Field& f, std::string_view type) {
+  if (!carriesLateral(c.deck))
+    f.fail("a " + std::string(type) + " analysis needs uy and uz: use model: {dimension: lateral}");
+}
+
+/// `modes:` and `shift:` of the analyses that seek damped modes.
+void readModeSearch(const Context& c, const Field& f, RotorFamily& settings) {
+  if (auto m = f.get("modes")) settings.modes = m->integer(c.evaluator, 1, kMaxModes);
+  if (auto s = f.get("shift"))
+    settings.shift = s->number(c.evaluator, dim::frequency);  // on s = -d + i w
+}
+
 }  // namespace
 
 void readDisk(const Context& c, const Field& disk, DeckMass& mass) {
@@ -307,63 +319,6 @@ void readRotorModel(Context& c) {
   readDamping(c);
 }
 
-void readRotorAnalysis(const Context& c, const Field& f, DeckAnalysis& a) {
-  const ExpressionEvaluator& ev = c.evaluator;
-  DeckRotorAnalysis& r = a.rotor;
-  if (std::holds_alternative<RigidBodySpec>(a.kind)) {
-    f.allowOnly({"type", "name", "bearings", "body"}, "a rigid-body analysis");
-    if (auto body = f.get("body")) {
-      if (auto b = f.get("bearings"))
-        b->fail("give either bearings: (two spring points of the model) or body: (the rigid "
-                "body's own data), not both");
-      readTwoDofBody(c, *body, r);
-      return;
-    }
-    const Field list = f.require("bearings");
-    const std::vector<Field> items = list.items();
-    if (items.size() != 2) list.fail("expected the two spring points [A, B]");
-    for (const Field& p : items) r.bearingPoints.push_back(c.point(p).name);
-    if (r.bearingPoints[0] == r.bearingPoints[1]) items[1].fail("A and B must be different points");
-    if (!c.deck.dofs.contains(Dof::uy) || !c.deck.dofs.contains(Dof::rz))
-      f.fail("a rigid-body analysis needs uy and rz (planar, lateral or 3d model)");
-    return;
-  }
-  if (!carriesLateral(c.deck))
-    f.fail("a " + a.type() + " analysis needs uy and uz: use model: {dimension: lateral}");
-  if (std::holds_alternative<RotorSpec>(a.kind)) {
-    f.allowOnly({"type", "name", "speed_rpm", "modes", "shift"}, "a rotor analysis");
-    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev, kRpmField) * kRadPerRpm;
-  } else if (std::holds_alternative<CampbellSpec>(a.kind)) {
-    f.allowOnly({"type", "name", "modes", "shift", "from_rpm", "to_rpm", "steps", "order"},
-                "a campbell analysis");
-    r.speeds = readSpeedRange(c, f);
-    if (auto o = f.get("order")) readOrders(*o, ev, r);
-  } else if (std::holds_alternative<CriticalSpeedMapSpec>(a.kind)) {
-    readCriticalSpeedMap(c, f, r);
-  } else if (std::holds_alternative<BearingLoadsSpec>(a.kind)) {
-    readBearingLoads(c, f, r);
-  } else if (std::holds_alternative<FrequencyResponseSpec>(a.kind)) {
-    f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
-                "a frequency-response analysis");
-    if (auto s = f.get("speed_rpm")) r.speed = s->nonNegative(ev, kRpmField) * kRadPerRpm;
-    readResponseEnd(c, f.require("input"), r.inputPoint, r.inputDof);
-    readResponseEnd(c, f.require("output"), r.outputPoint, r.outputDof);
-    r.frequencies = readFrequencyRange(c, f);
-  } else {
-    f.allowOnly(
-        {"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response", "operating"},
-        "an unbalance analysis");
-    r.speeds = readSpeedRange(c, f);
-    readUnbalance(c, f, r);
-    if (auto o = f.get("operating")) r.operating = readOperatingRange(c, *o, r.minLogDecrement);
-  }
-  if (!std::holds_alternative<UnbalanceSpec>(a.kind) &&
-      !std::holds_alternative<FrequencyResponseSpec>(a.kind)) {
-    if (auto m = f.get("modes")) a.modes = m->integer(ev, 1, kMaxModes);
-    if (auto s = f.get("shift")) a.shift = s->number(ev, dim::frequency);  // on s = -d + i w
-  }
-}
-
 void requireSymmetricAtRest(const Context& c, const Field& analysis) {
   for (const DeckBearing& b : c.deck.rotor.bearings) {
     if (b.loadFromGravity)  // a plain journal: cross-coupled at every speed
@@ -382,26 +337,30 @@ void requireSymmetricAtRest(const Context& c, const Field& analysis) {
 
 void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
                           const DeckAnalysis& a) {
-  if (q.kind == Quantity::Kind::logDecrement && q.mode > a.modes)
+  const RotorFamily* settings = rotorSettings(a.kind);
+  if (!settings) return;
+  if (q.kind == Quantity::Kind::logDecrement && q.mode > settings->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + a.name +
-           "' computes " + std::to_string(a.modes) + " modes (set its modes:)");
+           "' computes " + std::to_string(settings->modes) + " modes (set its modes:)");
   if (q.kind != Quantity::Kind::unbalanceAmplitude) return;
-  const auto& points = a.rotor.response;
+  const DeckRotorAnalysis& r = settings->rotor;
+  const auto& points = r.response;
   if (std::find(points.begin(), points.end(), q.target) == points.end())
     f.fail("analysis '" + a.name + "' reports no response at '" + q.target + "'" +
            didYouMean(q.target, points) + " (response: " + joinNames(points) + ")");
   const double w = q.rpm * kRadPerRpm;
-  if (w < a.rotor.speeds.front() * (1 - 1e-12) || w > a.rotor.speeds.back() * (1 + 1e-12))
+  if (w < r.speeds.front() * (1 - 1e-12) || w > r.speeds.back() * (1 + 1e-12))
     f.fail("speed " + formatNumber(q.rpm) + " rpm lies outside analysis '" + a.name + "' (" +
-           formatNumber(a.rotor.speeds.front() / kRadPerRpm) + " to " +
-           formatNumber(a.rotor.speeds.back() / kRadPerRpm) + " rpm)");
+           formatNumber(r.speeds.front() / kRadPerRpm) + " to " +
+           formatNumber(r.speeds.back() / kRadPerRpm) + " rpm)");
 }
 
 void addCheckedSpeed(Context& c, const DeckCheck& k) {
   if (k.quantity.kind != Quantity::Kind::unbalanceAmplitude) return;
   for (DeckAnalysis& a : c.deck.analyses) {
-    if (a.name != k.analysis) continue;
-    std::vector<double>& speeds = a.rotor.speeds;
+    RotorFamily* settings = rotorSettings(a.kind);
+    if (a.name != k.analysis || !settings) continue;
+    std::vector<double>& speeds = settings->rotor.speeds;
     const double w = k.quantity.rpm * kRadPerRpm;
     // The same rpm -> rad/s conversion as measureRotor's, so the speed is found exactly.
     const bool present = std::any_of(speeds.begin(), speeds.end(), [&](double s) {
@@ -415,13 +374,74 @@ void addCheckedSpeed(Context& c, const DeckCheck& k) {
 
 namespace beamrotor {
 
-void RotorFamily::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readRotorAnalysis(c, f, a);
+void RotorSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  f.allowOnly({"type", "name", "speed_rpm", "modes", "shift"}, "a rotor analysis");
+  if (auto s = f.get("speed_rpm"))
+    rotor.speed = s->nonNegative(c.evaluator, kRpmField) * reader::kRadPerRpm;
+  reader::readModeSearch(c, f, *this);
 }
 
-void RigidBodySpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::readRotorAnalysis(c, f, a);
-  if (!a.rotor.body) reader::requireMass(c, f, a);
+void CampbellSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  f.allowOnly({"type", "name", "modes", "shift", "from_rpm", "to_rpm", "steps", "order"},
+              "a campbell analysis");
+  rotor.speeds = reader::readSpeedRange(c, f);
+  if (auto o = f.get("order")) reader::readOrders(*o, c.evaluator, rotor);
+  reader::readModeSearch(c, f, *this);
+}
+
+void CriticalSpeedMapSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  reader::readCriticalSpeedMap(c, f, rotor);
+  reader::readModeSearch(c, f, *this);
+}
+
+void BearingLoadsSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  reader::readBearingLoads(c, f, rotor);
+  reader::readModeSearch(c, f, *this);
+}
+
+void FrequencyResponseSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  f.allowOnly({"type", "name", "speed_rpm", "input", "output", "from_hz", "to_hz", "steps"},
+              "a frequency-response analysis");
+  if (auto s = f.get("speed_rpm"))
+    rotor.speed = s->nonNegative(c.evaluator, kRpmField) * reader::kRadPerRpm;
+  reader::readResponseEnd(c, f.require("input"), rotor.inputPoint, rotor.inputDof);
+  reader::readResponseEnd(c, f.require("output"), rotor.outputPoint, rotor.outputDof);
+  rotor.frequencies = reader::readFrequencyRange(c, f);
+}
+
+void UnbalanceSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  f.allowOnly({"type", "name", "from_rpm", "to_rpm", "steps", "unbalance", "response", "operating"},
+              "an unbalance analysis");
+  rotor.speeds = reader::readSpeedRange(c, f);
+  reader::readUnbalance(c, f, rotor);
+  if (auto o = f.get("operating"))
+    rotor.operating = reader::readOperatingRange(c, *o, rotor.minLogDecrement);
+}
+
+void RigidBodySpec::read(const reader::Context& c, const Field& f) {
+  f.allowOnly({"type", "name", "bearings", "body"}, "a rigid-body analysis");
+  if (auto body = f.get("body")) {
+    if (auto b = f.get("bearings"))
+      b->fail("give either bearings: (two spring points of the model) or body: (the rigid "
+              "body's own data), not both");
+    reader::readTwoDofBody(c, *body, rotor);
+    return;
+  }
+  const Field list = f.require("bearings");
+  const std::vector<Field> items = list.items();
+  if (items.size() != 2) list.fail("expected the two spring points [A, B]");
+  for (const Field& p : items) rotor.bearingPoints.push_back(c.point(p).name);
+  if (rotor.bearingPoints[0] == rotor.bearingPoints[1])
+    items[1].fail("A and B must be different points");
+  if (!c.deck.dofs.contains(Dof::uy) || !c.deck.dofs.contains(Dof::rz))
+    f.fail("a rigid-body analysis needs uy and rz (planar, lateral or 3d model)");
+  reader::requireMass(c, f, std::string(deckType));
 }
 
 bool RigidBodySpec::modelFree(const Field& entry) {

@@ -1,33 +1,39 @@
 // The rotor analyses' rows in the table of analysis kinds (problems/deck/AnalysisKinds.hpp).
-// They share the model's bearings and damping (DeckRotor.hpp), which RotorFamily marks.
+// They share the model's bearings and damping (DeckRotor.hpp) and the settings RotorFamily
+// holds; each row reads its own entry (ReadRotor.cpp).
 #pragma once
 
 #include "problems/deck/AnalysisRow.hpp"
+#include "problems/deck/rotor/DeckRotor.hpp"
 
 namespace beamrotor {
 
-/// The base of every rotor row: the runner hands these to the rotor solver, and all but the
-/// rigid body read with the one rotor reader (ReadRotor.cpp).
+/// The base of every rotor row: what the rotor solver is handed.
 struct RotorFamily {
-  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  int modes = 6;     ///< damped modes sought (rotor, campbell; the stability of unbalance)
+  double shift = 0;  ///< the damping rate d of s = -d + i w they are sought nearest (1/s)
+  DeckRotorAnalysis rotor;  ///< speeds, unbalance, response points, ...
 };
 
 struct RotorSpec : RotorFamily {
   static constexpr std::string_view deckType = "rotor";
   static constexpr std::array answers{Quantity::Kind::frequency, Quantity::Kind::logDecrement};
   static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
 };
 
 struct CampbellSpec : RotorFamily {
   static constexpr std::string_view deckType = "campbell";
   static constexpr std::array answers{Quantity::Kind::criticalSpeed};
   static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
 };
 
 struct UnbalanceSpec : RotorFamily {
   static constexpr std::string_view deckType = "unbalance";
   static constexpr std::array answers{Quantity::Kind::unbalanceAmplitude};
   static constexpr bool needsMass = false;
+  void read(const reader::Context& c, const Field& f);
 };
 
 /// Also a mechanism without a model when given its `body:` (FORMAT.md).
@@ -35,7 +41,7 @@ struct RigidBodySpec : RotorFamily {
   static constexpr std::string_view deckType = "rigid-body";
   static constexpr std::array answers{Quantity::Kind::rigidBody};
   static constexpr bool needsMass = false;  // with `bearings:` its reader asks for it
-  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  void read(const reader::Context& c, const Field& f);
   static bool modelFree(const Field& entry);
 };
 
@@ -43,18 +49,21 @@ struct FrequencyResponseSpec : RotorFamily {
   static constexpr std::string_view deckType = "frequency-response";
   static constexpr std::array<Quantity::Kind, 0> answers{};
   static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
 };
 
 struct CriticalSpeedMapSpec : RotorFamily {
   static constexpr std::string_view deckType = "critical-speed-map";
   static constexpr std::array<Quantity::Kind, 0> answers{};
   static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
 };
 
 struct BearingLoadsSpec : RotorFamily {
   static constexpr std::string_view deckType = "bearing-loads";
   static constexpr std::array<Quantity::Kind, 0> answers{};
   static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
 };
 
 }  // namespace beamrotor

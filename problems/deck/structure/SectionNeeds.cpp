@@ -35,7 +35,7 @@ void requireSectionValues(const Deck& deck) {
   if (deck.sectionGaps.empty()) return;
   const bool stresses = std::any_of(deck.analyses.begin(), deck.analyses.end(),
                                     [](const DeckAnalysis& a) {
-                                      return std::holds_alternative<StaticSpec>(a.kind);
+                                      return a.as<StaticSpec>() != nullptr;
                                     });
   const bool bendsAboutY = deck.dofs.contains(Dof::uz);
   const bool torsion = deck.dofs.contains(Dof::rx);

@@ -1,7 +1,7 @@
 // The rows of the table of analysis kinds (problems/deck/AnalysisKinds.hpp) that solve the
 // beams and frames as they are: statics (second_order: true included), modes (prestressed:
-// true included) and buckling. Each row states its deck type, its reader and the check
-// quantities it answers.
+// true included) and buckling. Each row states its deck type, its reader, the check
+// quantities it answers and holds the settings its entry gives.
 #pragma once
 
 #include "problems/deck/AnalysisRow.hpp"
@@ -15,21 +15,27 @@ struct StaticSpec {
       Quantity::Kind::maxShear,    Quantity::Kind::maxMoment,       Quantity::Kind::maxDisplacement,
       Quantity::Kind::memberForce, Quantity::Kind::memberDeflection};
   static constexpr bool needsMass = false;
-  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  void read(const reader::Context& c, const Field& f);
+  bool secondOrder = false;  ///< equilibrium in the deformed state (fem/stability)
 };
 
 struct ModalSpec {
   static constexpr std::string_view deckType = "modal";
   static constexpr std::array answers{Quantity::Kind::frequency};
   static constexpr bool needsMass = true;
-  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  void read(const reader::Context& c, const Field& f);
+  int modes = 6;
+  double shift = 0;          ///< the eigenvalue omega^2 the modes are sought nearest (rad^2/s^2)
+  bool prestressed = false;  ///< about the state the deck's loads put the structure in
 };
 
 struct BucklingSpec {
   static constexpr std::string_view deckType = "buckling";
   static constexpr std::array answers{Quantity::Kind::bucklingFactor};
   static constexpr bool needsMass = false;
-  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  void read(const reader::Context& c, const Field& f);
+  int modes = 4;
+  bool reversed = false;  ///< also the negative load factors (the load reversed)
 };
 
 }  // namespace beamrotor

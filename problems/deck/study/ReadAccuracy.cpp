@@ -15,8 +15,7 @@ void readAccuracy(Context& c) {
     f->fail("needs at least one check: the accuracy is on the checked quantities");
   if (c.deck.segments.empty()) f->fail("needs beam segments: their mesh is what it chooses");
   for (const DeckAnalysis& a : c.deck.analyses)
-    if (!std::holds_alternative<StaticSpec>(a.kind) && !std::holds_alternative<ModalSpec>(a.kind) &&
-        !std::holds_alternative<RigidBodySpec>(a.kind))
+    if (!a.as<StaticSpec>() && !a.as<ModalSpec>() && !a.as<RigidBodySpec>())
       f->fail("applies to static, modal and rigid-body analyses; '" + a.name + "' is a " +
               a.type() + " analysis");
   c.deck.accuracy = DeckAccuracy{target, f->place()};

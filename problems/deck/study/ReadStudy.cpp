@@ -28,7 +28,6 @@ void readAnalyses(Context& c) {
     DeckAnalysis statics;
     statics.kind = StaticSpec{};
     statics.name = statics.type();
-    statics.modes = 0;
     statics.place = c.root.place();
     c.deck.analyses.push_back(std::move(statics));
     return;
@@ -193,12 +192,11 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
 
 }  // namespace
 
-void requireMass(const Context& c, const Field& f, const DeckAnalysis& a) {
+void requireMass(const Context& c, const Field& f, const std::string& type) {
   if (!c.deck.masses.empty()) return;
   for (const DeckSegment& s : c.deck.segments)
     if (s.section->material.rho > 0) return;
-  f.fail("a " + a.type() +
-         " analysis needs mass: give the materials a density rho or add masses");
+  f.fail("a " + type + " analysis needs mass: give the materials a density rho or add masses");
 }
 
 std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
@@ -266,11 +264,12 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
   }
   if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
     f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
-  if (analysis->transient) resolveHistoryQuantity(c, q, f, *analysis, applicable);
+  if (analysis->as<TransientSpec>()) resolveHistoryQuantity(c, q, f, *analysis, applicable);
+  const int modes = modesComputed(analysis->kind);
   if ((q.kind == Quantity::Kind::frequency || q.kind == Quantity::Kind::bucklingFactor) &&
-      q.mode > analysis->modes)
+      q.mode > modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
-           "' computes " + std::to_string(analysis->modes) + " modes (set its modes:)");
+           "' computes " + std::to_string(modes) + " modes (set its modes:)");
   resolveRotorQuantity(c, q, f, *analysis);
   resolveCrankQuantity(q, f, *analysis);
   return analysis->name;
@@ -283,45 +282,3 @@ void readStudy(Context& c, const std::vector<ParameterOverride>& overrides) {
 }
 
 }  // namespace beamrotor::reader
-
-namespace beamrotor {
-
-void StaticSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  f.allowOnly({"type", "name", "second_order"}, "a static analysis");
-  if (auto s = f.get("second_order")) {
-    a.secondOrder = s->boolean();
-    if (a.secondOrder && !c.deck.contacts.empty())
-      s->fail("second-order statics does not support contacts: remove them or the option");
-    if (a.secondOrder && !c.deck.loadCases.empty())
-      s->fail("second-order results do not superpose, so load cases and combinations "
-              "cannot be combined from them: give the loads of one case under `loads:`");
-  }
-}
-
-void BucklingSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  f.allowOnly({"type", "name", "modes", "reversed"}, "a buckling analysis");
-  a.modes = 4;
-  if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
-  if (auto r = f.get("reversed")) a.reversed = r->boolean();
-  if (!c.deck.contacts.empty())
-    f.fail("a buckling analysis needs a linear reference state: remove the contacts");
-}
-
-namespace {
-/// A modal analysis' shift: the eigenvalue omega^2 the modes are sought nearest (rad^2/s^2).
-constexpr FieldUnit kEigenvalueShift{Dimension::of(0, 0, -2, 2)};
-}  // namespace
-
-void ModalSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  reader::requireSymmetricAtRest(c, f);
-  f.allowOnly({"type", "name", "modes", "shift", "prestressed"}, "a modal analysis");
-  if (auto m = f.get("modes")) a.modes = m->integer(c.evaluator, 1, kMaxModes);
-  if (auto p = f.get("prestressed")) {
-    a.prestressed = p->boolean();
-    if (a.prestressed && !c.deck.contacts.empty())
-      p->fail("prestressed modes need a linear loaded state: remove the contacts");
-  }
-  if (auto s = f.get("shift")) a.shift = s->number(c.evaluator, kEigenvalueShift);
-}
-
-}  // namespace beamrotor

@@ -31,7 +31,7 @@ void requireNames(const Field& qf, const Quantity& q, const Deck& deck, const De
     case Quantity::Kind::historyMax:
     case Quantity::Kind::historyMin:
     case Quantity::Kind::historyMaxAbs:
-      for (const DeckHistory& h : a.transient->histories) names.push_back(h.name);
+      for (const DeckHistory& h : a.as<TransientSpec>()->run.histories) names.push_back(h.name);
       return require("history");
     case Quantity::Kind::frequency:
     case Quantity::Kind::maxStress:

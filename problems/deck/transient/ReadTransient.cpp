@@ -260,9 +260,10 @@ DeckTransient readTransient(const Context& c, const Field& f) {
 
 void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
                             const DeckAnalysis& analysis, bool applicable) {
+  const DeckTransient& run = analysis.as<TransientSpec>()->run;
   std::vector<std::string> names;
   bool found = false;
-  for (const DeckHistory& h : analysis.transient->histories) {
+  for (const DeckHistory& h : run.histories) {
     found = found || h.name == q.target;
     names.push_back(h.name);
   }
@@ -279,7 +280,7 @@ void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
   } catch (const ExpressionError& e) {
     f.fail(e.what());
   }
-  const double end = analysis.transient->end;
+  const double end = run.end;
   if (applicable && !(q.time >= 0 && q.time <= end * (1 + 1e-12)))
     f.fail("time " + formatNumber(q.time) + " s lies outside the run (0 to " + formatNumber(end) +
            " s)");
@@ -289,8 +290,8 @@ void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
 
 namespace beamrotor {
 
-void TransientSpec::read(const reader::Context& c, const Field& f, DeckAnalysis& a) {
-  a.transient = reader::readTransient(c, f);
+void TransientSpec::read(const reader::Context& c, const Field& f) {
+  run = reader::readTransient(c, f);
 }
 
 }  // namespace beamrotor

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "problems/deck/AnalysisRow.hpp"
+#include "problems/deck/transient/DeckTransient.hpp"
 
 namespace beamrotor {
 
@@ -11,7 +12,8 @@ struct TransientSpec {
   static constexpr std::array answers{Quantity::Kind::historyMax, Quantity::Kind::historyMin,
                                       Quantity::Kind::historyMaxAbs, Quantity::Kind::historyAt};
   static constexpr bool needsMass = true;
-  static void read(const reader::Context& c, const Field& f, DeckAnalysis& a);
+  void read(const reader::Context& c, const Field& f);
+  DeckTransient run;  ///< the integration, its loads and what it records
 };
 
 }  // namespace beamrotor
