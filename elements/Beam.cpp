@@ -263,7 +263,7 @@ Beam::Beam(int n1, int n2, const Eigen::Vector3d& direction, double length,
   // The carried dofs must not couple to the dropped ones.
   if (carried == DofSet::planar() && (std::abs(ex.z()) > 1e-12 || ez.z() < 1 - 1e-12))
     throw std::invalid_argument("a planar beam must lie in the x-y plane");
-  if (carried == DofSet::lateral() && ex.x() < 1 - 1e-12)
+  if ((carried == DofSet::lateral() || carried == DofSet::torsion()) && ex.x() < 1 - 1e-12)
     throw std::invalid_argument("a rotor shaft element must lie along the x axis");
   setProperties(std::move(p));
 }

@@ -59,6 +59,8 @@ class DofSet {
   }
   /// Lateral rotor dynamics with the shaft along x: uy, uz, ry, rz (two bending planes).
   static constexpr DofSet lateral() { return {Dof::uy, Dof::uz, Dof::ry, Dof::rz}; }
+  /// A shaft train in torsion with the shafts along x: the twist rx alone.
+  static constexpr DofSet torsion() { return {Dof::rx}; }
 
  private:
   static constexpr std::uint8_t bit(Dof d) { return std::uint8_t(1u << dofIndex(d)); }

@@ -32,6 +32,7 @@ SystemSize sizeOf(const RunResult& run) {
         std::visit(Overloaded{[](const StaticOutcome& r) -> Size { return r.statics.size; },
                               [](const SecondOrderResult& r) -> Size { return r.secondOrder.size; },
                               [](const ModalResult& r) -> Size { return r.size; },
+                              [](const TorsionOutcome& r) -> Size { return r.modes.size; },
                               [](const BucklingResult& r) -> Size { return r.size; },
                               [](const TransientOutcome& r) -> Size { return r.result.size; },
                               [](const RotorOutcome& r) -> Size { return rotorSize(r); },
@@ -123,9 +124,9 @@ void printReported(std::ostream& out, const std::vector<std::pair<std::string, d
   if (!values.empty()) out << "\n";
 }
 
-void printModal(std::ostream& out, const AnalysisOutcome& a) {
-  const ModalResult& m = *resultOf<ModalResult>(a);
-  out << "modal analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
+/// A modal or torsion analysis' frequencies and what each mode does.
+void printModes(std::ostream& out, const AnalysisOutcome& a, const ModalResult& m) {
+  out << a.type << " analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
   for (std::size_t i = 0; i < m.modes.size(); ++i)
     out << "    mode " << padded(std::to_string(i + 1), 4)
         << padded(formatValue(m.modes[i].frequencyHz) + " Hz", 16) << m.modes[i].description
@@ -167,17 +168,24 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   for (const std::string& w : run.warnings) out << "warning: " << w << "\n";
   if (run.adequate) printAdequateChoice(out, *run.adequate);
   for (const AnalysisOutcome& a : run.analyses) {
-    std::visit(Overloaded{[&](const StaticOutcome&) { printStatic(out, deck, run, a); },
-                          [&](const SecondOrderResult&) {
-                            printStatic(out, deck, run, a);
-                            printSecondOrder(out, a);
-                          },
-                          [&](const BucklingResult&) { printBuckling(out, a); },
-                          [&](const ModalResult&) { printModal(out, a); },
-                          [&](const TransientOutcome&) { printTransient(out, a); },
-                          [&](const RotorOutcome&) { printRotor(out, a); },
-                          [&](const CrankSliderOutcome&) { printCrankSlider(out, a); }},
-               a.result);
+    std::visit(
+        Overloaded{
+            [&](const StaticOutcome&) { printStatic(out, deck, run, a); },
+            [&](const SecondOrderResult&) {
+              printStatic(out, deck, run, a);
+              printSecondOrder(out, a);
+            },
+            [&](const BucklingResult&) { printBuckling(out, a); },
+            [&](const ModalResult& r) { printModes(out, a, r); },
+            [&](const TorsionOutcome& r) {
+              printModes(out, a, r.modes);
+              if (r.free)
+                out << "    (no support holds the twist: mode 1 is the train turning as one)\n";
+            },
+            [&](const TransientOutcome&) { printTransient(out, a); },
+            [&](const RotorOutcome&) { printRotor(out, a); },
+            [&](const CrankSliderOutcome&) { printCrankSlider(out, a); }},
+        a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }
 }
@@ -204,7 +212,7 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   };
   auto modalOf = [](const RunResult& r) -> const ModalResult* {
     for (const auto& a : r.analyses)
-      if (const ModalResult* m = resultOf<ModalResult>(a)) return m;
+      if (const ModalResult* m = modesOf(a, *r.model).modes) return m;
     return nullptr;
   };
   if (const StaticResult* s = staticOf(first))

@@ -215,6 +215,9 @@ SolveCost costOf(const AnalysisOutcome& a) {
                  [](const ModalResult& r) -> SolveCost {
                    return {r.time, r.size};
                  },
+                 [](const TorsionOutcome& r) -> SolveCost {
+                   return {r.modes.time, r.modes.size};
+                 },
                  [](const BucklingResult& r) -> SolveCost {
                    return {r.time, r.size};
                  },

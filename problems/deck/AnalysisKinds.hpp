@@ -17,6 +17,7 @@
 #include "problems/deck/crank/CrankKind.hpp"
 #include "problems/deck/rotor/RotorKinds.hpp"
 #include "problems/deck/structure/StructureKinds.hpp"
+#include "problems/deck/torsion/TorsionKind.hpp"
 #include "problems/deck/transient/TransientKind.hpp"
 
 namespace beamrotor {
@@ -25,7 +26,8 @@ namespace beamrotor {
 /// default from the first (a frequency from a modal analysis before a rotor one).
 using AnalysisSpec = std::variant<StaticSpec, ModalSpec, BucklingSpec, TransientSpec, RotorSpec,
                                   CampbellSpec, UnbalanceSpec, RigidBodySpec, FrequencyResponseSpec,
-                                  CrankSliderSpec, CriticalSpeedMapSpec, BearingLoadsSpec>;
+                                  CrankSliderSpec, CriticalSpeedMapSpec, BearingLoadsSpec,
+                                  TorsionSpec>;
 
 /// Every row's deck type, in row order.
 std::vector<std::string> analysisTypeNames();

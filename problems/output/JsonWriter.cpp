@@ -188,8 +188,8 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   return out;
 }
 
-Json modalJson(const std::array<bool, kDofKinds>& carried, const AnalysisOutcome& a) {
-  const ModalResult& r = *resultOf<ModalResult>(a);
+Json modalJson(const std::array<bool, kDofKinds>& carried, const AnalysisOutcome& a,
+               const ModalResult& r) {
   const std::string stem = fileStem(a.name);
   // Per translation kind the model carries: value(k) for k = 0 (ux), 1 (uy), 2 (uz).
   const auto perTranslation = [&](auto value) {
@@ -347,7 +347,12 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
               return entry;
             },
             [&](const BucklingResult&) { return bucklingJson(a); },
-            [&](const ModalResult&) { return modalJson(carried, a); },
+            [&](const ModalResult& r) { return modalJson(carried, a, r); },
+            [&](const TorsionOutcome& r) {
+              Json entry = modalJson(kindsCarried(*r.model, DofMap(*r.model)), a, r.modes);
+              entry["free"] = r.free;
+              return entry;
+            },
             [&](const TransientOutcome&) { return transientJson(a); },
             [&](const RotorOutcome&) { return rotorJson(a); },
             [&](const CrankSliderOutcome&) { return crankJson(a, fileStem(a.name)); }},

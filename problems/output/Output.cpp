@@ -130,9 +130,8 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
 }
 
 /// A modal analysis' files: its frequencies, shapes, one VTK file per mode and the chart.
-void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const ModalResult& modal,
-                     const fs::path& dir, bool charts) {
-  const Model& model = *run.model;
+void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const Model& model,
+                     const ModalResult& modal, const fs::path& dir, bool charts) {
   p.modes->write(dir / modesCsv(p.stem));
   p.shapes->write(dir / shapesCsv(p.stem));
   std::vector<PvdEntry> entries;
@@ -163,7 +162,10 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             [&](const BucklingResult&) {
               writeBucklingFiles(p, model, dir, caption(run, a.name), charts);
             },
-            [&](const ModalResult& r) { writeModalFiles(run, p, r, dir, charts); },
+            [&](const ModalResult& r) { writeModalFiles(run, p, model, r, dir, charts); },
+            [&](const TorsionOutcome& r) {
+              writeModalFiles(run, p, *r.model, r.modes, dir, charts);
+            },
             [&](const TransientOutcome& r) {
               writeTransientFiles(dir, model, p.stem, r, *p.history,
                                   charts ? caption(run, a.name) : "");

@@ -84,6 +84,10 @@ PreparedRun prepareRun(const RunResult& run) {
               p.modes = modesTable(modesCsv(p.stem), r);
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, r);
             },
+            [&](const TorsionOutcome& r) {
+              p.modes = modesTable(modesCsv(p.stem), r.modes);
+              p.shapes = modeShapesTable(shapesCsv(p.stem), *r.model, r.modes);
+            },
             [&](const BucklingResult& r) {
               p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), r);
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(r));

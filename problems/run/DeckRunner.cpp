@@ -25,6 +25,7 @@
 #include "problems/run/OverRefinementWarning.hpp"
 #include "problems/run/Overloaded.hpp"
 #include "problems/run/RunRotor.hpp"
+#include "problems/run/RunTorsion.hpp"
 #include "problems/run/RunTransient.hpp"
 #include "problems/run/SweepRefinement.hpp"
 
@@ -108,6 +109,11 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
             },
             [&](const CrankSliderSpec& spec) -> AnalysisResult {
               return runCrankSlider(spec.mechanism);
+            },
+            [&](const TorsionSpec& spec) -> AnalysisResult {
+              TorsionOutcome torsion = runTorsion(deck, spec);
+              out.warnings = torsion.modes.warnings;
+              return torsion;
             },
             [&](const RotorFamily&) -> AnalysisResult {
               return solveRotorAnalysis(deck, a, model);

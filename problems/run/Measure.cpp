@@ -82,7 +82,7 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
   if (resultOf<RotorOutcome>(outcome)) return measureRotor(q, outcome);
   if (const auto* crank = resultOf<CrankSliderOutcome>(outcome)) return measureCrank(q, *crank);
   if (q.kind == Quantity::Kind::frequency) {
-    const auto* modal = resultOf<ModalResult>(outcome);
+    const ModalResult* modal = modesOf(outcome, model).modes;
     if (!modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
     const auto& modes = modal->modes;
     if (q.mode > int(modes.size()))

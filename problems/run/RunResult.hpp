@@ -17,6 +17,7 @@
 #include "problems/run/AdequateChoice.hpp"
 #include "problems/run/CrankSliderOutcome.hpp"
 #include "problems/run/RotorRunResult.hpp"
+#include "problems/run/TorsionOutcome.hpp"
 #include "problems/run/TransientOutcome.hpp"
 
 namespace beamrotor {
@@ -59,7 +60,8 @@ struct StaticOutcome {
 /// `second_order: true` gives both of its states (SecondOrderResult), a modal one (prestressed
 /// or not) its modes, and every rotor analysis a RotorOutcome.
 using AnalysisResult = std::variant<StaticOutcome, SecondOrderResult, ModalResult, BucklingResult,
-                                    TransientOutcome, RotorOutcome, CrankSliderOutcome>;
+                                    TransientOutcome, RotorOutcome, CrankSliderOutcome,
+                                    TorsionOutcome>;
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
@@ -88,6 +90,18 @@ inline const StaticResult* staticsOf(const AnalysisOutcome& a) {
 }
 inline StaticResult* staticsOf(AnalysisOutcome& a) {
   return const_cast<StaticResult*>(staticsOf(std::as_const(a)));
+}
+
+/// The modes of a modal or torsion analysis with the model they are shaped on (a torsion
+/// analysis has its own); null for the other kinds.
+struct ModesOn {
+  const ModalResult* modes = nullptr;
+  const Model* model = nullptr;
+};
+inline ModesOn modesOf(const AnalysisOutcome& a, const Model& deckModel) {
+  if (const auto* m = resultOf<ModalResult>(a)) return {m, &deckModel};
+  if (const auto* t = resultOf<TorsionOutcome>(a)) return {&t->modes, t->model.get()};
+  return {};
 }
 
 /// The load cases and combinations of a linear static analysis; none for the other kinds.

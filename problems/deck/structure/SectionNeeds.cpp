@@ -33,17 +33,18 @@ std::string theoryWords(BeamTheory t) {
 
 void requireSectionValues(const Deck& deck) {
   if (deck.sectionGaps.empty()) return;
-  const bool stresses = std::any_of(deck.analyses.begin(), deck.analyses.end(),
-                                    [](const DeckAnalysis& a) {
-                                      return a.as<StaticSpec>() != nullptr;
-                                    });
+  const bool stresses =
+      std::any_of(deck.analyses.begin(), deck.analyses.end(),
+                  [](const DeckAnalysis& a) { return a.as<StaticSpec>() != nullptr; });
   const bool bendsAboutY = deck.dofs.contains(Dof::uz);
   const bool torsion = deck.dofs.contains(Dof::rx);
+  const bool torsionAnalysis =
+      std::any_of(deck.analyses.begin(), deck.analyses.end(),
+                  [](const DeckAnalysis& a) { return a.as<TorsionSpec>() != nullptr; });
   for (const DeckSegment& segment : deck.segments) {
-    const auto gaps = std::find_if(deck.sectionGaps.begin(), deck.sectionGaps.end(),
-                                   [&](const DeckSectionGaps& g) {
-                                     return g.name == segment.section->name;
-                                   });
+    const auto gaps =
+        std::find_if(deck.sectionGaps.begin(), deck.sectionGaps.end(),
+                     [&](const DeckSectionGaps& g) { return g.name == segment.section->name; });
     if (gaps == deck.sectionGaps.end()) continue;
     if (stresses && gaps->depth)
       missing(deck, *gaps, "depth",
@@ -56,6 +57,9 @@ void requireSectionValues(const Deck& deck) {
                   "too, which need the section's extent along z");
     if (torsion && gaps->J)
       missing(deck, *gaps, "J", "a 3d model twists its beams, which needs the torsion constant");
+    if (torsionAnalysis && gaps->J)
+      missing(deck, *gaps, "J",
+              "the torsion analysis twists the shafts, which needs the torsion constant");
     if (segment.options.theory != BeamTheory::eulerBernoulli && gaps->kappa)
       missing(deck, *gaps, "kappa",
               theoryWords(segment.options.theory) +

@@ -81,7 +81,7 @@ void requireFinite(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses) {
     const std::string where = "analysis '" + a.name + "' (" + a.type + ")";
     if (const StaticResult* s = staticsOf(a)) requireStatic(model, *s, where);
-    if (const ModalResult* m = resultOf<ModalResult>(a)) requireModal(model, *m, where);
+    if (const ModesOn m = modesOf(a, model); m.modes) requireModal(*m.model, *m.modes, where);
   }
 }
 
