@@ -33,11 +33,12 @@ TEST_SUITE("rotor decks") {
     const Study study = solveStudy(request);
     REQUIRE(study.run);
     const RunResult& run = *study.run;
-    const RotorOutcome& campbell = *resultOf<RotorOutcome>(compressorAnalysis(run, "campbell"));
+    const CampbellOutcome& campbell =
+        *resultOf<CampbellOutcome>(compressorAnalysis(run, "campbell"));
     const AnalysisOutcome& response = compressorAnalysis(run, "response");
     REQUIRE(campbell.onset.has_value());
-    REQUIRE(resultOf<RotorOutcome>(response)->stability.has_value());
-    const OperatingStability& s = *resultOf<RotorOutcome>(response)->stability;
+    REQUIRE(resultOf<UnbalanceOutcome>(response)->stability.has_value());
+    const OperatingStability& s = *resultOf<UnbalanceOutcome>(response)->stability;
     CHECK_FALSE(s.pass);
     REQUIRE(s.onset.has_value());
     // Both refine the same root to 1e-10 of the speed from different brackets: they agree to
