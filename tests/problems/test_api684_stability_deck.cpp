@@ -49,7 +49,7 @@ TEST_SUITE("rotor decks") {
     CHECK(s.smallest < 0);
     CHECK(s.whirl == Whirl::forward);
     std::ostringstream summary;
-    cli::printRotor(summary, response);
+    cli::printRotor(summary, response, *resultOf<UnbalanceOutcome>(response));
     CAPTURE(summary.str());
     CHECK(summary.str().find("API 684: FAIL (unstable above 6276") != std::string::npos);
   }

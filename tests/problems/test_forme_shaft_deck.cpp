@@ -115,7 +115,7 @@ TEST_SUITE("forme shaft decks") {
     for (int i = 0; i < 2; ++i)
       CHECK(relError(modal.modes[i].frequencyHz, rigid.modes[i].k / kTwoPi) < 1e-6);
     // results.json: n of the bounce mode is null (infinite), of the rocking mode 0.
-    const Json doc = rotorJson(outcome);
+    const Json doc = rotorJson(outcome, rigid);
     CHECK(doc.at("two_dof").at("decoupled") == true);
     CHECK(doc.at("two_dof").at("modes")[ib].at("n").is_null());
     CHECK(doc.at("two_dof").at("modes")[1 - ib].at("n") == 0.0);
