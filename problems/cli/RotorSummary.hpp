@@ -1,7 +1,6 @@
 // The summary lines of the rotor analyses (see Summary.hpp for the others).
 #pragma once
 
-#include <optional>
 #include <ostream>
 
 #include "problems/run/RunResult.hpp"
