@@ -56,7 +56,7 @@ const std::map<std::string, std::map<std::string, int>> kRoomRank{
 /// then the other families, peers that never include each other.
 const std::map<std::string, std::map<std::string, int>> kInnerRank{
     {"problems/deck", {{"parse", 0}, {"structure", 1}, {"rotor", 2}, {"transient", 2},
-                       {"crank", 2}, {"study", 2}}},
+                       {"crank", 2}, {"torsion", 2}, {"study", 2}}},
     {"problems/output", {{"files", 0}, {"structure", 1}, {"rotor", 2}, {"transient", 2},
                          {"crank", 2}}}};
 // clang-format on

@@ -14,7 +14,41 @@ namespace {
 
 constexpr double kRpm = 30 / std::numbers::pi;
 
-void printModes(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r) {
+/// The stability half of the API 684 verdict, and the verdict as a whole.
+void printOperatingStability(std::ostream& out, const OperatingStability& s,
+                             const OperatingRange& range) {
+  out << "      stability: smallest log decrement in the range " << formatValue(s.smallest)
+      << " at " << formatValue(s.speed * kRpm) << " rpm (" << formatValue(s.frequencyHz) << " Hz "
+      << whirlName(s.whirl) << " whirl; required " << formatValue(s.required) << ")";
+  if (s.onset)
+    out << ", UNSTABLE above " << formatValue(s.onset->rpm) << " rpm ("
+        << formatValue(s.onset->frequencyHz) << " Hz " << whirlName(s.onset->whirl) << " whirl)";
+  else if (s.smallest < 0)
+    out << ", unstable from the sweep's first speed";
+  out << ": " << (s.pass ? "pass" : "FAIL") << "\n";
+  if (!s.pass) {
+    out << "      API 684: FAIL (";
+    if (s.onset && s.onset->speed <= range.maximum)
+      out << "unstable above " << formatValue(s.onset->rpm) << " rpm, ";
+    out << "log decrement " << formatValue(s.smallest) << " in the operating range)\n";
+  }
+}
+
+/// What a two-dof mode is, in words: coupled, or (b = 0) the limits of the paper's 0/0 ratio.
+std::string modeShapeText(const FormeShaftMode& m) {
+  switch (m.kind) {
+    case FormeModeKind::bounce:
+      return "pure bounce (phi = 0: C1 l1 = C2 l2, the paper's n = 0/0 tends to infinity)";
+    case FormeModeKind::rocking:
+      return "pure rocking about the centre of mass (z = 0, n = 0)";
+    default:
+      return "n = " + formatValue(m.n) + " m/rad";
+  }
+}
+
+}  // namespace
+
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r) {
   out << "rotor analysis '" << a.name << "' at " << formatValue(r.speed * kRpm) << " rpm ("
       << r.modes.size() << " damped modes)\n";
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
@@ -26,8 +60,8 @@ void printModes(std::ostream& out, const AnalysisOutcome& a, const RotorModesRes
   }
 }
 
-void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
-  const CampbellResult& c = *r.campbell;
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutcome& r) {
+  const CampbellResult& c = r.campbell;
   out << "campbell analysis '" << a.name << "' (" << c.lines.size() << " lines, " << c.speeds.size()
       << " speeds " << formatValue(c.speeds.front() * kRpm) << " to "
       << formatValue(c.speeds.back() * kRpm) << " rpm)\n";
@@ -51,29 +85,8 @@ void printCampbell(std::ostream& out, const AnalysisOutcome& a, const RotorOutco
     out << "    stable over the sweep (no log decrement falls through zero)\n";
 }
 
-/// The stability half of the API 684 verdict, and the verdict as a whole.
-void printOperatingStability(std::ostream& out, const OperatingStability& s,
-                             const OperatingRange& range) {
-  out << "      stability: smallest log decrement in the range "
-      << formatValue(s.smallest) << " at "
-      << formatValue(s.speed * kRpm) << " rpm (" << formatValue(s.frequencyHz) << " Hz "
-      << whirlName(s.whirl) << " whirl; required " << formatValue(s.required) << ")";
-  if (s.onset)
-    out << ", UNSTABLE above " << formatValue(s.onset->rpm) << " rpm ("
-        << formatValue(s.onset->frequencyHz) << " Hz " << whirlName(s.onset->whirl) << " whirl)";
-  else if (s.smallest < 0)
-    out << ", unstable from the sweep's first speed";
-  out << ": " << (s.pass ? "pass" : "FAIL") << "\n";
-  if (!s.pass) {
-    out << "      API 684: FAIL (";
-    if (s.onset && s.onset->speed <= range.maximum)
-      out << "unstable above " << formatValue(s.onset->rpm) << " rpm, ";
-    out << "log decrement " << formatValue(s.smallest) << " in the operating range)\n";
-  }
-}
-
-void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
-  const UnbalanceResult& u = *r.unbalance;
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutcome& r) {
+  const UnbalanceResult& u = r.unbalance;
   out << "unbalance analysis '" << a.name << "' (" << u.speeds.size() << " speeds)\n";
   for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
     std::size_t peak = 0;
@@ -106,37 +119,40 @@ void printUnbalance(std::ostream& out, const AnalysisOutcome& a, const RotorOutc
   if (r.stability) printOperatingStability(out, *r.stability, *r.operating);
 }
 
-void printFrequencyResponse(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
-  const FrequencyResponseResult& f = *r.frequencyResponse;
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
+  out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
+      << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
+      << " kg m^2 (mode amplitudes scaled to z^2 + rho^2 phi^2 = 1 m^2; bearing loads scale"
+         " with the amplitude)\n";
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const FormeShaftMode& m = r.modes[i];
+    out << "    two-dof mode " << i + 1 << " (the paper's " << paperModeName(int(i)) << ")  "
+        << formatValue(m.k / (2 * std::numbers::pi)) << " Hz (k = " << formatValue(m.k)
+        << " rad/s)  " << modeShapeText(m) << "  F_" << r.points[0] << " = " << formatValue(m.FA)
+        << " N, F_" << r.points[1] << " = " << formatValue(m.FB)
+        << " N per metre of modal amplitude\n";
+  }
+}
+
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const FrequencyResponseOutcome& r) {
+  const FrequencyResponseResult& f = r.response;
   std::size_t peak = 0;
   for (std::size_t i = 0; i < f.receptance.size(); ++i)
     if (std::abs(f.receptance[i]) > std::abs(f.receptance[peak])) peak = i;
   out << "frequency-response analysis '" << a.name << "' at " << formatValue(f.speed * kRpm)
-      << " rpm: " << r.frfOutput << " / " << r.frfInput << ", " << f.frequencies.size()
+      << " rpm: " << r.output << " / " << r.input << ", " << f.frequencies.size()
       << " frequencies\n";
   if (!f.receptance.empty())
     out << "    largest receptance " << formatValue(std::abs(f.receptance[peak])) << " at "
         << formatValue(f.frequencies[peak] / (2 * std::numbers::pi)) << " Hz\n";
 }
 
-/// What a two-dof mode is, in words: coupled, or (b = 0) the limits of the paper's 0/0 ratio.
-std::string modeShapeText(const FormeShaftMode& m) {
-  switch (m.kind) {
-    case FormeModeKind::bounce:
-      return "pure bounce (phi = 0: C1 l1 = C2 l2, the paper's n = 0/0 tends to infinity)";
-    case FormeModeKind::rocking:
-      return "pure rocking about the centre of mass (z = 0, n = 0)";
-    default:
-      return "n = " + formatValue(m.n) + " m/rad";
-  }
-}
-
-void printCriticalSpeedMap(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
-  const CriticalSpeedMap& m = *r.map;
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r) {
+  const CriticalSpeedMap& m = r.map;
   out << "critical-speed-map analysis '" << a.name << "' (" << m.stiffness.size()
       << " bearing stiffnesses " << formatValue(m.stiffness.front()) << " to "
       << formatValue(m.stiffness.back()) << " N/m, gyroscopic moments neglected, "
-      << formatValue(r.mapTime) << " s)\n";
+      << formatValue(r.time) << " s)\n";
   const auto list = [&](const char* what, const std::vector<double>& speeds) {
     out << "    " << what;
     for (double s : speeds) out << " " << formatValue(s * kRpm);
@@ -144,7 +160,7 @@ void printCriticalSpeedMap(std::ostream& out, const AnalysisOutcome& a, const Ro
   };
   list("pinned bearings:", m.pinned);
   list("free-free rotor:", m.freeFree);
-  for (const BearingStiffnessCurve& b : r.mapBearings)
+  for (const BearingStiffnessCurve& b : r.bearings)
     for (const auto& [what, crossings] :
          {std::pair{"kxx", &b.kxxCrossings}, std::pair{"kyy", &b.kyyCrossings}}) {
       out << "    bearing " << b.name << " " << what << " meets the map at";
@@ -156,8 +172,8 @@ void printCriticalSpeedMap(std::ostream& out, const AnalysisOutcome& a, const Ro
     }
 }
 
-void printBearingLoads(std::ostream& out, const AnalysisOutcome& a, const RotorOutcome& r) {
-  const GravityLoads& g = *r.gravityLoads;
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r) {
+  const GravityLoads& g = r.loads;
   out << "bearing-loads analysis '" << a.name << "' (" << (r.rigidBearings ? "pinned" : "elastic")
       << " bearings, weight " << formatValue(g.weight.norm()) << " N)\n";
   for (std::size_t i = 0; i < g.bearings.size(); ++i) {
@@ -170,42 +186,6 @@ void printBearingLoads(std::ostream& out, const AnalysisOutcome& a, const RotorO
   if (worst >= 0)
     out << "    largest sag " << formatValue(std::hypot(g.uy[worst], g.uz[worst])) << " m at x = "
         << formatValue(g.x[worst]) << " m\n";
-}
-
-void printRigidBody(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
-  out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
-      << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
-      << " kg m^2 (mode amplitudes scaled to z^2 + rho^2 phi^2 = 1 m^2; bearing loads scale"
-         " with the amplitude)\n";
-  for (std::size_t i = 0; i < r.modes.size(); ++i) {
-    const FormeShaftMode& m = r.modes[i];
-    out << "    two-dof mode " << i + 1 << " (the paper's " << paperModeName(int(i)) << ")  "
-        << formatValue(m.k / (2 * std::numbers::pi)) << " Hz (k = " << formatValue(m.k)
-        << " rad/s)  " << modeShapeText(m) << "  F_" << r.points[0] << " = "
-        << formatValue(m.FA) << " N, F_" << r.points[1] << " = " << formatValue(m.FB)
-        << " N per metre of modal amplitude\n";
-  }
-}
-
-}  // namespace
-
-std::optional<SystemSize> rotorSize(const RotorOutcome& r) {
-  if (r.modes) return r.modes->size;
-  if (r.campbell) return r.campbell->size;
-  if (r.unbalance) return r.unbalance->size;
-  if (r.frequencyResponse) return r.frequencyResponse->size;
-  return std::nullopt;
-}
-
-void printRotor(std::ostream& out, const AnalysisOutcome& a) {
-  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
-  if (r.modes) printModes(out, a, *r.modes);
-  if (r.campbell) printCampbell(out, a, r);
-  if (r.unbalance) printUnbalance(out, a, r);
-  if (r.rigidBody) printRigidBody(out, a, *r.rigidBody);
-  if (r.frequencyResponse) printFrequencyResponse(out, a, r);
-  if (r.map) printCriticalSpeedMap(out, a, r);
-  if (r.gravityLoads) printBearingLoads(out, a, r);
 }
 
 }  // namespace beamrotor::cli

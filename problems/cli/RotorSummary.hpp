@@ -1,19 +1,24 @@
 // The summary lines of the rotor analyses (see Summary.hpp for the others).
 #pragma once
 
-#include <optional>
 #include <ostream>
 
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
 
-/// The system size a rotor analysis reports (none for rigid-body).
-std::optional<SystemSize> rotorSize(const RotorOutcome& r);
-
-/// rotor: one line per mode (damped frequency, damping, whirl); campbell: the critical
-/// speeds; unbalance: the peak orbit of each response point; rigid-body: mass, centre of
-/// mass, inertia and the two-dof frequencies.
-void printRotor(std::ostream& out, const AnalysisOutcome& a);
+/// The summary of a solved rotor analysis, by its kind's result (a's own). rotor: one line per
+/// mode (damped frequency, damping, whirl); campbell: the critical speeds and stability;
+/// unbalance: the peak orbit of each response point and the API 684 reading; rigid-body:
+/// mass, centre of mass, inertia and the two-dof frequencies; frequency-response: the largest
+/// receptance; critical-speed-map: its limits and the bearings' crossings; bearing-loads:
+/// each bearing's load and the largest sag.
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutcome& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutcome& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const FrequencyResponseOutcome& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r);
 
 }  // namespace beamrotor::cli

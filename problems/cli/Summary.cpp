@@ -28,16 +28,24 @@ const char* motionUnit(Dof d) {
 SystemSize sizeOf(const RunResult& run) {
   using Size = std::optional<SystemSize>;
   for (const AnalysisOutcome& a : run.analyses) {
-    const Size size =
-        std::visit(Overloaded{[](const StaticOutcome& r) -> Size { return r.statics.size; },
-                              [](const SecondOrderResult& r) -> Size { return r.secondOrder.size; },
-                              [](const ModalResult& r) -> Size { return r.size; },
-                              [](const TorsionOutcome& r) -> Size { return r.modes.size; },
-                              [](const BucklingResult& r) -> Size { return r.size; },
-                              [](const TransientOutcome& r) -> Size { return r.result.size; },
-                              [](const RotorOutcome& r) -> Size { return rotorSize(r); },
-                              [](const CrankSliderOutcome&) -> Size { return std::nullopt; }},
-                   a.result);
+    const Size size = std::visit(
+        Overloaded{[](const StaticOutcome& r) -> Size { return r.statics.size; },
+                   [](const SecondOrderResult& r) -> Size { return r.secondOrder.size; },
+                   [](const ModalResult& r) -> Size { return r.size; },
+                   [](const TorsionOutcome& r) -> Size { return r.modes.size; },
+                   [](const BucklingResult& r) -> Size { return r.size; },
+                   [](const TransientOutcome& r) -> Size { return r.result.size; },
+                   [](const RotorModesResult& r) -> Size { return r.size; },
+                   [](const CampbellOutcome& r) -> Size { return r.campbell.size; },
+                   [](const UnbalanceOutcome& r) -> Size { return r.unbalance.size; },
+                   [](const FrequencyResponseOutcome& r) -> Size { return r.response.size; },
+                   // These keep no system size: the model line takes it from the
+                   // first analysis that does.
+                   [](const RigidBodyOutcome&) -> Size { return std::nullopt; },
+                   [](const CriticalSpeedMapOutcome&) -> Size { return std::nullopt; },
+                   [](const BearingLoadsOutcome&) -> Size { return std::nullopt; },
+                   [](const CrankSliderOutcome&) -> Size { return std::nullopt; }},
+        a.result);
     if (size) return *size;
   }
   return {};
@@ -183,7 +191,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
                 out << "    (no support holds the twist: mode 1 is the train turning as one)\n";
             },
             [&](const TransientOutcome&) { printTransient(out, a); },
-            [&](const RotorOutcome&) { printRotor(out, a); },
+            [&](const RotorResult auto& r) { printRotor(out, a, r); },
             [&](const CrankSliderOutcome&) { printCrankSlider(out, a); }},
         a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";

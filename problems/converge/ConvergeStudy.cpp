@@ -224,12 +224,21 @@ SolveCost costOf(const AnalysisOutcome& a) {
                  [](const TransientOutcome& r) -> SolveCost {
                    return {r.result.time, r.result.size};
                  },
-                 [](const RotorOutcome& r) -> SolveCost {
-                   if (r.modes) return {r.modes->time, r.modes->size};
-                   if (r.campbell) return {r.campbell->time, r.campbell->size};
-                   if (r.unbalance) return {r.unbalance->time, r.unbalance->size};
-                   return {};
+                 [](const RotorModesResult& r) -> SolveCost {
+                   return {r.time, r.size};
                  },
+                 [](const CampbellOutcome& r) -> SolveCost {
+                   return {r.campbell.time, r.campbell.size};
+                 },
+                 [](const UnbalanceOutcome& r) -> SolveCost {
+                   return {r.unbalance.time, r.unbalance.size};
+                 },
+                 // Never studied (a rigid body is not studiable, the others answer no
+                 // quantity): nothing of them is timed.
+                 [](const RigidBodyOutcome&) -> SolveCost { return {}; },
+                 [](const FrequencyResponseOutcome&) -> SolveCost { return {}; },
+                 [](const CriticalSpeedMapOutcome&) -> SolveCost { return {}; },
+                 [](const BearingLoadsOutcome&) -> SolveCost { return {}; },
                  // A mechanism has no mesh to refine (studiable): nothing of it is timed.
                  [](const CrankSliderOutcome&) -> SolveCost { return {}; }},
       a.result);

@@ -354,7 +354,7 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
               return entry;
             },
             [&](const TransientOutcome&) { return transientJson(a); },
-            [&](const RotorOutcome&) { return rotorJson(a); },
+            [&](const RotorResult auto& r) { return rotorJson(a, r); },
             [&](const CrankSliderOutcome&) { return crankJson(a, fileStem(a.name)); }},
         a.result));
     if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;

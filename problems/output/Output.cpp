@@ -170,8 +170,8 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeTransientFiles(dir, model, p.stem, r, *p.history,
                                   charts ? caption(run, a.name) : "");
             },
-            [&](const RotorOutcome&) {
-              writeRotorFiles(*p.rotor, a, p.stem, model, dir, caption(run, a.name), charts);
+            [&](const RotorResult auto& r) {
+              writeRotorFiles({*p.rotor, p.stem, model, dir, caption(run, a.name), charts}, r);
             },
             [&](const CrankSliderOutcome& r) {
               for (const CsvTable& table : p.crank) table.write(dir / table.title());

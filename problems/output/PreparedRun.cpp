@@ -93,7 +93,7 @@ PreparedRun prepareRun(const RunResult& run) {
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(r));
             },
             [&](const TransientOutcome& r) { p.history = historyTable(historyCsv(p.stem), r); },
-            [&](const RotorOutcome&) { p.rotor = prepareRotor(a, p.stem); },
+            [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
             [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); }},
         a.result);
     peaks.push_back(p.peaks);

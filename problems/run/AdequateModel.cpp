@@ -116,8 +116,7 @@ std::optional<double> rigidBodyError(const RunResult& run) {
   const RigidBodyOutcome* rigid = nullptr;
   const ModalResult* modal = nullptr;
   for (const AnalysisOutcome& a : run.analyses) {
-    const auto* rotor = resultOf<RotorOutcome>(a);
-    if (!rigid && rotor && rotor->rigidBody) rigid = &*rotor->rigidBody;
+    if (!rigid) rigid = resultOf<RigidBodyOutcome>(a);
     if (!modal) modal = resultOf<ModalResult>(a);
   }
   if (!rigid || !modal || modal->modes.size() < 2) return std::nullopt;

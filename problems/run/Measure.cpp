@@ -79,7 +79,7 @@ double measureMember(const Quantity& q, const StaticResult& r, const Model& mode
 }  // namespace
 
 double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
-  if (resultOf<RotorOutcome>(outcome)) return measureRotor(q, outcome);
+  if (isRotorResult(outcome)) return measureRotor(q, outcome);
   if (const auto* crank = resultOf<CrankSliderOutcome>(outcome)) return measureCrank(q, *crank);
   if (q.kind == Quantity::Kind::frequency) {
     const ModalResult* modal = modesOf(outcome, model).modes;

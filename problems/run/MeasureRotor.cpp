@@ -39,16 +39,16 @@ double rigidBodyProperty(const RigidBodyOutcome& r, const std::string& p) {
 }  // namespace
 
 double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
-  const RotorOutcome& r = *resultOf<RotorOutcome>(outcome);
   const std::string name = "analysis '" + outcome.name + "'";
   switch (q.kind) {
     case Quantity::Kind::frequency:
     case Quantity::Kind::logDecrement: {
-      if (!r.modes) throw std::invalid_argument(name + " is not a rotor analysis");
-      if (q.mode > int(r.modes->modes.size()))
-        throw std::invalid_argument(name + " found only " + std::to_string(r.modes->modes.size()) +
+      const auto* r = resultOf<RotorModesResult>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not a rotor analysis");
+      if (q.mode > int(r->modes.size()))
+        throw std::invalid_argument(name + " found only " + std::to_string(r->modes.size()) +
                                     " modes");
-      const RotorMode& m = r.modes->modes[q.mode - 1];
+      const RotorMode& m = r->modes[q.mode - 1];
       if (q.kind == Quantity::Kind::frequency) return m.dampedFrequencyHz;
       if (!std::isfinite(m.logDecrement))
         throw std::invalid_argument("mode " + std::to_string(q.mode) +
@@ -56,24 +56,29 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
                                     "oscillation): its log decrement is infinite");
       return m.logDecrement;
     }
-    case Quantity::Kind::criticalSpeed:
-      if (!r.campbell) throw std::invalid_argument(name + " is not a campbell analysis");
-      if (q.mode > int(r.criticalSpeeds.size()))
-        throw std::invalid_argument(name + " found " + std::to_string(r.criticalSpeeds.size()) +
+    case Quantity::Kind::criticalSpeed: {
+      const auto* r = resultOf<CampbellOutcome>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not a campbell analysis");
+      if (q.mode > int(r->criticalSpeeds.size()))
+        throw std::invalid_argument(name + " found " + std::to_string(r->criticalSpeeds.size()) +
                                     " critical speeds in its speed range, not " +
                                     std::to_string(q.mode));
-      return r.criticalSpeeds[q.mode - 1].rpm;
+      return r->criticalSpeeds[q.mode - 1].rpm;
+    }
     case Quantity::Kind::unbalanceAmplitude: {
-      if (!r.unbalance) throw std::invalid_argument(name + " is not an unbalance analysis");
-      const int s = speedIndex(r.unbalance->speeds, q.rpm);
-      for (std::size_t k = 0; k < r.responsePoints.size(); ++k)
-        if (r.responsePoints[k] == q.target && s >= 0) return r.unbalance->orbits[k][s].major();
+      const auto* r = resultOf<UnbalanceOutcome>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not an unbalance analysis");
+      const int s = speedIndex(r->unbalance.speeds, q.rpm);
+      for (std::size_t k = 0; k < r->responsePoints.size(); ++k)
+        if (r->responsePoints[k] == q.target && s >= 0) return r->unbalance.orbits[k][s].major();
       throw std::invalid_argument(name + " has no response of '" + q.target + "' at " +
                                   std::to_string(q.rpm) + " rpm");
     }
-    case Quantity::Kind::rigidBody:
-      if (!r.rigidBody) throw std::invalid_argument(name + " is not a rigid-body analysis");
-      return rigidBodyProperty(*r.rigidBody, q.property);
+    case Quantity::Kind::rigidBody: {
+      const auto* r = resultOf<RigidBodyOutcome>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not a rigid-body analysis");
+      return rigidBodyProperty(*r, q.property);
+    }
     default:
       throw std::invalid_argument("'" + q.text + "' is not a result of " + name);
   }

@@ -1,8 +1,9 @@
-// What the rotor analyses of a deck produce (part of RunResult's AnalysisOutcome): plain
+// What the rotor analyses of a deck produce (alternatives of RunResult's AnalysisResult): plain
 // results of fem/rotor/ plus the names the writers need to label them.
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,39 +53,69 @@ struct BearingStiffnessCurve {
   std::vector<MapCrossing> kxxCrossings, kyyCrossings;
 };
 
-/// One rotor analysis, solved: exactly one of the optionals is set, by its type.
-struct RotorOutcome {
-  std::optional<RotorModesResult> modes;      ///< rotor: damped modes at one speed
-  std::optional<CampbellResult> campbell;     ///< campbell
-  std::vector<CriticalSpeed> criticalSpeeds;  ///< campbell: where lines meet order x speed
-  double order = 1;                           ///< campbell: that order
-  /// campbell: crossings with the deck's further orders (each tagged with its order), by order
-  /// then speed; not part of the critical speeds the checks and API margins read
+// One result type per rotor analysis kind, each holding only what its kind produces; the
+// damped modes at one speed (`rotor`) are fem/rotor/'s RotorModesResult itself, and the rigid
+// body (`rigid-body`) is RigidBodyOutcome above.
+
+/// campbell: the diagram, where its lines meet the excitation orders, and its stability.
+struct CampbellOutcome {
+  CampbellResult campbell;
+  double order = 1;                           ///< the order the critical speeds are read at
+  std::vector<CriticalSpeed> criticalSpeeds;  ///< where lines meet order x speed
+  std::vector<double> furtherOrders;          ///< the deck's further orders, as in the deck
+  /// Crossings with the further orders (each tagged with its order), by order then speed; not
+  /// part of the critical speeds the checks and API margins read
   std::vector<CriticalSpeed> furtherCriticalSpeeds;
-  std::vector<double> furtherOrders;  ///< campbell: those orders, as in the deck
-  /// campbell: the lowest speed where a mode's log decrement falls through zero, refined on the
-  /// speed; none when every mode stays stable over the sweep
+  /// The lowest speed where a mode's log decrement falls through zero, refined on the speed;
+  /// none when every mode stays stable over the sweep
   std::optional<InstabilityOnset> onset;
-  std::vector<JournalBearingCurve> journals;  ///< campbell: the deck's plain journal bearings
-  std::optional<UnbalanceResult> unbalance;   ///< unbalance
-  std::vector<std::string> responsePoints;    ///< unbalance: names of unbalance->nodes
-  /// unbalance: the operating range its API 684 reading measures margins from; campbell: that
-  /// of the deck's first unbalance analysis giving one (drawn on its charts)
+  std::vector<JournalBearingCurve> journals;  ///< the deck's plain journal bearings
+  /// The operating range of the deck's first unbalance analysis giving one (drawn on the
+  /// charts); none without such an analysis
   std::optional<OperatingRange> operating;
-  /// unbalance with an operating range: API 684 reading of each response point's peaks
-  std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
-  /// unbalance with an operating range: the stability half of the API 684 verdict
-  std::optional<OperatingStability> stability;
-  std::optional<RigidBodyOutcome> rigidBody;  ///< rigid-body
-  std::optional<FrequencyResponseResult> frequencyResponse;  ///< frequency-response
-  std::string frfInput, frfOutput;  ///< frequency-response: "point dof" of each end
-  std::optional<CriticalSpeedMap> map;  ///< critical-speed-map
-  std::vector<BearingStiffnessCurve> mapBearings;  ///< critical-speed-map: speed-dependent bearings
-  double mapTime = 0;  ///< critical-speed-map: wall time (s)
-  std::optional<GravityLoads> gravityLoads;  ///< bearing-loads
-  std::vector<std::string> bearingNames;  ///< bearing-loads: gravityLoads->bearings' names
-  bool rigidBearings = true;              ///< bearing-loads: bearings pinned (else elastic)
-  double loadsTime = 0;                   ///< bearing-loads: wall time (s)
 };
+
+/// unbalance: the response at its points over the speeds, and with an operating range the
+/// API 684 reading of it.
+struct UnbalanceOutcome {
+  UnbalanceResult unbalance;
+  std::vector<std::string> responsePoints;  ///< names of unbalance.nodes
+  /// The operating range its API 684 reading measures margins from; none without one (and
+  /// then no peaks and no stability either)
+  std::optional<OperatingRange> operating;
+  std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
+  std::optional<OperatingStability> stability;   ///< the stability half of the verdict
+};
+
+/// frequency-response: the receptance between two dofs at one spin speed.
+struct FrequencyResponseOutcome {
+  FrequencyResponseResult response;
+  std::string input, output;  ///< "point dof" of each end
+};
+
+/// critical-speed-map: the undamped critical speeds against bearing stiffness, with the
+/// speed-dependent bearings drawn over them.
+struct CriticalSpeedMapOutcome {
+  CriticalSpeedMap map;
+  std::vector<BearingStiffnessCurve> bearings;  ///< the deck's speed-dependent bearings
+  double time = 0;                              ///< wall time (s)
+};
+
+/// bearing-loads: the rotor's weight on its bearings and its sag.
+struct BearingLoadsOutcome {
+  GravityLoads loads;
+  std::vector<std::string> bearingNames;  ///< loads.bearings' names
+  bool rigidBearings = true;              ///< bearings pinned (else elastic)
+  double time = 0;                        ///< wall time (s)
+};
+
+/// The result of any rotor analysis: the writers take each through one overload set
+/// (rotorJson, prepareRotor, printRotor, ...), so one visitor lambda covers the family, and a
+/// kind missing from a set does not compile.
+template <class R>
+concept RotorResult = std::same_as<R, RotorModesResult> || std::same_as<R, CampbellOutcome> ||
+    std::same_as<R, UnbalanceOutcome> || std::same_as<R, RigidBodyOutcome> ||
+    std::same_as<R, FrequencyResponseOutcome> || std::same_as<R, CriticalSpeedMapOutcome> ||
+    std::same_as<R, BearingLoadsOutcome>;
 
 }  // namespace beamrotor

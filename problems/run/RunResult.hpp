@@ -58,10 +58,13 @@ struct StaticOutcome {
 
 /// What one analysis produced: one value type per kind of result. A static analysis with
 /// `second_order: true` gives both of its states (SecondOrderResult), a modal one (prestressed
-/// or not) its modes, and every rotor analysis a RotorOutcome.
-using AnalysisResult = std::variant<StaticOutcome, SecondOrderResult, ModalResult, BucklingResult,
-                                    TransientOutcome, RotorOutcome, CrankSliderOutcome,
-                                    TorsionOutcome>;
+/// or not) its modes, each rotor analysis its kind's type (RotorResult, RotorRunResult.hpp)
+/// and a torsion analysis the modes of its own model.
+using AnalysisResult =
+    std::variant<StaticOutcome, SecondOrderResult, ModalResult, BucklingResult, TransientOutcome,
+                 RotorModesResult, CampbellOutcome, UnbalanceOutcome, RigidBodyOutcome,
+                 FrequencyResponseOutcome, CriticalSpeedMapOutcome, BearingLoadsOutcome,
+                 CrankSliderOutcome, TorsionOutcome>;
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
@@ -79,6 +82,11 @@ const R* resultOf(const AnalysisOutcome& a) {
 template <class R>
 R* resultOf(AnalysisOutcome& a) {
   return std::get_if<R>(&a.result);
+}
+
+/// Whether analysis `a` is one of the rotor analyses (its result a RotorResult).
+inline bool isRotorResult(const AnalysisOutcome& a) {
+  return std::visit([]<class R>(const R&) { return RotorResult<R>; }, a.result);
 }
 
 /// The static solution of a static analysis (with `second_order: true`, the second-order

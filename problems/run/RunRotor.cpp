@@ -1,9 +1,11 @@
-// The rotor analyses of a deck (see RunRotor.hpp): 1. damped modes at one speed, 2. the
-// Campbell diagram and its critical speeds, 3. the unbalance response, 4. the rigid body on
-// two springs against the two-dof closed form of problems/scenes/README.md section 2.
+// The rotor analyses of a deck (see RunRotor.hpp), one runner per kind: damped modes at one
+// speed, the Campbell diagram and its critical speeds, the unbalance response, the rigid body
+// on two springs against the two-dof closed form of problems/scenes/README.md section 2, the
+// frequency response, the critical-speed map and the bearing loads.
 #include "problems/run/RunRotor.hpp"
 
 #include <stdexcept>
+#include <type_traits>
 #include <variant>
 
 #include "elements/Bearing.hpp"
@@ -15,6 +17,7 @@
 #include "fem/rotor/RotorUnbalance.hpp"
 #include "fem/rotor/UnbalancePeaks.hpp"
 #include "fem/timing/Stopwatch.hpp"
+#include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
 
@@ -59,10 +62,10 @@ std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
   return out;
 }
 
-RotorOptions optionsOf(const Deck& deck, const DeckAnalysis& a) {
+RotorOptions optionsOf(const Deck& deck, const RotorFamily& s) {
   RotorOptions o;
-  o.modes = rotorSettings(a.kind)->modes;
-  o.shift = rotorSettings(a.kind)->shift;
+  o.modes = s.modes;
+  o.shift = s.shift;
   o.damping = deck.rotor.damping;
   return o;
 }
@@ -94,7 +97,94 @@ RigidBodyOutcome givenBody(const DeckTwoDofBody& b) {
   return out;
 }
 
-RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
+// One runner per rotor kind, each giving its kind's result. All take the deck, the analysis
+// and the model alike, so the dispatch below reads as a table.
+
+RotorModesResult runRotorModes(const Deck& deck, const RotorFamily& s, const Model& model) {
+  return solveRotorModes(model, s.rotor.speed, optionsOf(deck, s));
+}
+
+CampbellOutcome runCampbell(const Deck& deck, const RotorFamily& s, const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  CampbellOutcome out;
+  out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, s));
+  out.order = r.order;
+  out.criticalSpeeds = criticalSpeeds(out.campbell, r.order);
+  out.furtherOrders = r.furtherOrders;
+  for (double order : r.furtherOrders)
+    for (const CriticalSpeed& c : criticalSpeeds(out.campbell, order))
+      out.furtherCriticalSpeeds.push_back(c);
+  out.onset = instabilityOnset(model, out.campbell, optionsOf(deck, s));
+  out.journals = journalCurves(deck);
+  out.operating = deckOperatingRange(deck);
+  return out;
+}
+
+UnbalanceOutcome runUnbalance(const Deck& deck, const RotorFamily& s, const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  std::vector<Unbalance> unbalance;
+  for (const DeckUnbalance& u : r.unbalance)
+    unbalance.push_back({model.node(u.point), u.me, u.phase});
+  std::vector<int> nodes;
+  for (const std::string& p : r.response) nodes.push_back(model.node(p));
+  UnbalanceOutcome out;
+  out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
+  out.responsePoints = r.response;
+  out.operating = r.operating;
+  if (!r.operating) return out;  // no API 684 reading without an operating range
+  out.stability = operatingStability(model, optionsOf(deck, s), *r.operating, r.speeds.front(),
+                                     r.minLogDecrement);
+  for (const auto& orbits : out.unbalance.orbits) {
+    std::vector<double> amplitudes;
+    for (const Orbit& o : orbits) amplitudes.push_back(o.major());
+    out.peaks.push_back(
+        unbalancePeaks(model, deck.rotor.damping, out.unbalance.speeds, amplitudes, *r.operating));
+  }
+  return out;
+}
+
+CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily& s,
+                                            const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  CriticalSpeedMapOutcome out;
+  Stopwatch clock;
+  out.map = solveCriticalSpeedMap(model, r.stiffnesses, r.criticalSpeeds);
+  out.time = clock.lap();
+  out.bearings = bearingStiffnessCurves(deck);
+  for (BearingStiffnessCurve& b : out.bearings) {
+    b.kxxCrossings = mapCrossings(out.map, b.speeds, b.kxx);
+    b.kyyCrossings = mapCrossings(out.map, b.speeds, b.kyy);
+  }
+  return out;
+}
+
+BearingLoadsOutcome runBearingLoads(const Deck& deck, const RotorFamily& s, const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  BearingLoadsOutcome out;
+  Stopwatch clock;
+  const auto& g = r.gravity;
+  out.loads =
+      solveGravityLoads(model, Eigen::Vector3d(g[0], g[1], g[2]),
+                        r.rigidBearings ? BearingSupport::rigid : BearingSupport::elastic, r.speed);
+  out.time = clock.lap();
+  for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
+  out.rigidBearings = r.rigidBearings;
+  return out;
+}
+
+FrequencyResponseOutcome runFrequencyResponse(const Deck& deck, const RotorFamily& s,
+                                              const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  const NodeDof in{model.node(r.inputPoint), r.inputDof};
+  const NodeDof to{model.node(r.outputPoint), r.outputDof};
+  return {solveFrequencyResponse(model, r.speed, in, to, r.frequencies, deck.rotor.damping),
+          r.inputPoint + " " + std::string(dofName(r.inputDof)),
+          r.outputPoint + " " + std::string(dofName(r.outputDof))};
+}
+
+/// The deck's body (FORMAT.md), or the model's between two of its bearing points.
+RigidBodyOutcome runRigidBody(const Deck&, const RotorFamily& s, const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
   if (r.body) return givenBody(*r.body);
   RigidBodyOutcome out;
   out.body = rigidBodyProperties(model);
@@ -118,72 +208,29 @@ RigidBodyOutcome rigidBody(const DeckRotorAnalysis& r, const Model& model) {
   return out;
 }
 
+/// A row of another family than the rotor's: the runner hands none here. Constrained so that
+/// a rotor row without its runner above matches no lambda and does not compile.
+template <class Spec>
+concept NotRotorRow = !std::is_base_of_v<RotorFamily, Spec>;
+
 }  // namespace
 
-RotorOutcome solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const Model& model) {
-  RotorOutcome out;
-  const DeckRotorAnalysis& r = rotorSettings(a.kind)->rotor;
-  if (std::holds_alternative<RotorSpec>(a.kind)) {
-    out.modes = solveRotorModes(model, r.speed, optionsOf(deck, a));
-  } else if (std::holds_alternative<CampbellSpec>(a.kind)) {
-    out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, a));
-    out.order = r.order;
-    out.criticalSpeeds = criticalSpeeds(*out.campbell, r.order);
-    out.furtherOrders = r.furtherOrders;
-    for (double order : r.furtherOrders)
-      for (const CriticalSpeed& c : criticalSpeeds(*out.campbell, order))
-        out.furtherCriticalSpeeds.push_back(c);
-    out.onset = instabilityOnset(model, *out.campbell, optionsOf(deck, a));
-    out.journals = journalCurves(deck);
-    out.operating = deckOperatingRange(deck);
-  } else if (std::holds_alternative<UnbalanceSpec>(a.kind)) {
-    std::vector<Unbalance> unbalance;
-    for (const DeckUnbalance& u : r.unbalance)
-      unbalance.push_back({model.node(u.point), u.me, u.phase});
-    std::vector<int> nodes;
-    for (const std::string& p : r.response) nodes.push_back(model.node(p));
-    out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
-    out.responsePoints = r.response;
-    out.operating = r.operating;
-    if (r.operating)
-      out.stability = operatingStability(model, optionsOf(deck, a), *r.operating,
-                                         r.speeds.front(), r.minLogDecrement);
-    if (r.operating)
-      for (const auto& orbits : out.unbalance->orbits) {
-        std::vector<double> amplitudes;
-        for (const Orbit& o : orbits) amplitudes.push_back(o.major());
-        out.peaks.push_back(unbalancePeaks(model, deck.rotor.damping, out.unbalance->speeds,
-                                           amplitudes, *r.operating));
-      }
-  } else if (std::holds_alternative<CriticalSpeedMapSpec>(a.kind)) {
-    Stopwatch clock;
-    out.map = solveCriticalSpeedMap(model, r.stiffnesses, r.criticalSpeeds);
-    out.mapTime = clock.lap();
-    out.mapBearings = bearingStiffnessCurves(deck);
-    for (BearingStiffnessCurve& b : out.mapBearings) {
-      b.kxxCrossings = mapCrossings(*out.map, b.speeds, b.kxx);
-      b.kyyCrossings = mapCrossings(*out.map, b.speeds, b.kyy);
-    }
-  } else if (std::holds_alternative<BearingLoadsSpec>(a.kind)) {
-    Stopwatch clock;
-    const auto& g = r.gravity;
-    out.gravityLoads = solveGravityLoads(
-        model, Eigen::Vector3d(g[0], g[1], g[2]),
-        r.rigidBearings ? BearingSupport::rigid : BearingSupport::elastic, r.speed);
-    out.loadsTime = clock.lap();
-    for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
-    out.rigidBearings = r.rigidBearings;
-  } else if (std::holds_alternative<FrequencyResponseSpec>(a.kind)) {
-    const NodeDof in{model.node(r.inputPoint), r.inputDof};
-    const NodeDof to{model.node(r.outputPoint), r.outputDof};
-    out.frequencyResponse =
-        solveFrequencyResponse(model, r.speed, in, to, r.frequencies, deck.rotor.damping);
-    out.frfInput = r.inputPoint + " " + std::string(dofName(r.inputDof));
-    out.frfOutput = r.outputPoint + " " + std::string(dofName(r.outputDof));
-  } else {
-    out.rigidBody = rigidBody(r, model);
-  }
-  return out;
+AnalysisResult solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const Model& model) {
+  const auto run = [&](auto runner, const RotorFamily& s) -> AnalysisResult {
+    return runner(deck, s, model);
+  };
+  return std::visit(
+      Overloaded{[&](const RotorSpec& s) { return run(runRotorModes, s); },
+                 [&](const CampbellSpec& s) { return run(runCampbell, s); },
+                 [&](const UnbalanceSpec& s) { return run(runUnbalance, s); },
+                 [&](const RigidBodySpec& s) { return run(runRigidBody, s); },
+                 [&](const FrequencyResponseSpec& s) { return run(runFrequencyResponse, s); },
+                 [&](const CriticalSpeedMapSpec& s) { return run(runCriticalSpeedMap, s); },
+                 [&](const BearingLoadsSpec& s) { return run(runBearingLoads, s); },
+                 [](const NotRotorRow auto&) -> AnalysisResult {
+                   throw std::logic_error("solveRotorAnalysis: not a rotor analysis");
+                 }},
+      a.kind);
 }
 
 }  // namespace beamrotor

@@ -51,7 +51,7 @@ TEST_SUITE("analysis kinds") {
   TEST_CASE("every analysis type FORMAT.md lists has exactly one row, and every row is listed") {
     const std::vector<std::string> listed = formatTypeList();
     const std::vector<std::string> rows = analysisTypeNames();
-    CHECK(listed.size() == 12);
+    CHECK(listed.size() == 13);
     for (const std::string& name : listed) {
       CAPTURE(name);
       CHECK(std::count(rows.begin(), rows.end(), name) == 1);
@@ -118,11 +118,12 @@ TEST_SUITE("analysis kinds") {
       CHECK(defaultAnalysisType(q) == type);
       CHECK(answers(*analysisSpecNamed(type), q));
     }
-    // A rotor analysis also gives frequencies (its damped ones); no other row does.
+    // A rotor analysis also gives frequencies (its damped ones), and a torsion analysis those
+    // of the twist; no other row does.
     const Quantity frequency = parseQuantity("frequency 1");
     for (const std::string& type : analysisTypeNames()) {
       CAPTURE(type);
-      CHECK(answers(*analysisSpecNamed(type), frequency) == (type == "modal" || type == "rotor"));
+      CHECK(answers(*analysisSpecNamed(type), frequency) == (type == "modal" || type == "rotor" || type == "torsion"));
     }
     CHECK_FALSE(answers(*analysisSpecNamed("frequency-response"), frequency));
   }

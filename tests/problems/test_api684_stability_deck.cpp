@@ -33,11 +33,12 @@ TEST_SUITE("rotor decks") {
     const Study study = solveStudy(request);
     REQUIRE(study.run);
     const RunResult& run = *study.run;
-    const RotorOutcome& campbell = *resultOf<RotorOutcome>(compressorAnalysis(run, "campbell"));
+    const CampbellOutcome& campbell =
+        *resultOf<CampbellOutcome>(compressorAnalysis(run, "campbell"));
     const AnalysisOutcome& response = compressorAnalysis(run, "response");
     REQUIRE(campbell.onset.has_value());
-    REQUIRE(resultOf<RotorOutcome>(response)->stability.has_value());
-    const OperatingStability& s = *resultOf<RotorOutcome>(response)->stability;
+    REQUIRE(resultOf<UnbalanceOutcome>(response)->stability.has_value());
+    const OperatingStability& s = *resultOf<UnbalanceOutcome>(response)->stability;
     CHECK_FALSE(s.pass);
     REQUIRE(s.onset.has_value());
     // Both refine the same root to 1e-10 of the speed from different brackets: they agree to
@@ -48,7 +49,7 @@ TEST_SUITE("rotor decks") {
     CHECK(s.smallest < 0);
     CHECK(s.whirl == Whirl::forward);
     std::ostringstream summary;
-    cli::printRotor(summary, response);
+    cli::printRotor(summary, response, *resultOf<UnbalanceOutcome>(response));
     CAPTURE(summary.str());
     CHECK(summary.str().find("API 684: FAIL (unstable above 6276") != std::string::npos);
   }

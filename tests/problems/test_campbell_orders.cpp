@@ -39,9 +39,9 @@ TEST_SUITE("rotor decks") {
     const Study study = solveStudyText(formeRotorWithOrders("[1, 0.5, 2]"), request);
     REQUIRE(study.run);
     const double bounceRpm = deckValue(study.deck, "bounce") * 60 / (2 * std::acos(-1.0));
-    const RotorOutcome* campbell = nullptr;
+    const CampbellOutcome* campbell = nullptr;
     for (const AnalysisOutcome& a : study.run->analyses)
-      if (a.type == "campbell") campbell = &*resultOf<RotorOutcome>(a);
+      if (a.type == "campbell") campbell = resultOf<CampbellOutcome>(a);
     REQUIRE(campbell != nullptr);
     // Order 1 stays the critical speeds' order: the two bounce lines (y and z) first.
     REQUIRE(campbell->criticalSpeeds.size() >= 2);

@@ -55,8 +55,7 @@ TEST_SUITE("forme shaft decks") {
     const RunResult run = solveFormeDeck("forme_shaft.yaml");
     CHECK(passedChecks(run) == 11);  // the rigid-limit checks do not apply to steel
     CHECK(run.skippedChecks.size() == 2);
-    const RigidBodyOutcome& rigid =
-        *resultOf<RotorOutcome>(analysisOfType(run, "rigid-body"))->rigidBody;
+    const RigidBodyOutcome& rigid = *resultOf<RigidBodyOutcome>(analysisOfType(run, "rigid-body"));
     const ModalResult& modal = *resultOf<ModalResult>(analysisOfType(run, "modal"));
 
     // Plumbing, not a second method: the same shaft built in C++ by the scene
@@ -84,8 +83,7 @@ TEST_SUITE("forme shaft decks") {
     const RunResult run = solveFormeDeck("forme_shaft.yaml", {"E=2e17"});
     CHECK(passedChecks(run) == 13);
     CHECK(run.skippedChecks.empty());
-    const RigidBodyOutcome& rigid =
-        *resultOf<RotorOutcome>(analysisOfType(run, "rigid-body"))->rigidBody;
+    const RigidBodyOutcome& rigid = *resultOf<RigidBodyOutcome>(analysisOfType(run, "rigid-body"));
     const ModalResult& modal = *resultOf<ModalResult>(analysisOfType(run, "modal"));
     for (int i = 0; i < 2; ++i)
       CHECK(relError(modal.modes[i].frequencyHz, rigid.modes[i].k / kTwoPi) < 1e-6);
@@ -96,11 +94,11 @@ TEST_SUITE("forme shaft decks") {
     // integrals' to round-off (checked by the deck), so b is round-off too.
     const RunResult first = solveFormeDeck("forme_shaft.yaml");
     const FormeShaftRigid s =
-        resultOf<RotorOutcome>(analysisOfType(first, "rigid-body"))->rigidBody->rigid;
+        resultOf<RigidBodyOutcome>(analysisOfType(first, "rigid-body"))->rigid;
     const double C2 = s.C1 * s.l1 / s.l2;
     const RunResult run = solveFormeDeck("forme_shaft.yaml", {"E=2e17", setting("C2", C2)});
     const AnalysisOutcome& outcome = analysisOfType(run, "rigid-body");
-    const RigidBodyOutcome& rigid = *resultOf<RotorOutcome>(outcome)->rigidBody;
+    const RigidBodyOutcome& rigid = *resultOf<RigidBodyOutcome>(outcome);
     const int ib = rigid.modes[0].kind == FormeModeKind::bounce ? 0 : 1;
     REQUIRE(rigid.modes[ib].kind == FormeModeKind::bounce);
     REQUIRE(rigid.modes[1 - ib].kind == FormeModeKind::rocking);
@@ -117,7 +115,7 @@ TEST_SUITE("forme shaft decks") {
     for (int i = 0; i < 2; ++i)
       CHECK(relError(modal.modes[i].frequencyHz, rigid.modes[i].k / kTwoPi) < 1e-6);
     // results.json: n of the bounce mode is null (infinite), of the rocking mode 0.
-    const Json doc = rotorJson(outcome);
+    const Json doc = rotorJson(outcome, rigid);
     CHECK(doc.at("two_dof").at("decoupled") == true);
     CHECK(doc.at("two_dof").at("modes")[ib].at("n").is_null());
     CHECK(doc.at("two_dof").at("modes")[1 - ib].at("n") == 0.0);
@@ -135,8 +133,9 @@ TEST_SUITE("forme shaft decks") {
     const RunResult steel = solveFormeDeck("forme_shaft_rotor.yaml");
     CHECK(passedChecks(steel) == 4);
     const RunResult stiff = solveFormeDeck("forme_shaft_rotor.yaml", {"E=2e17"});
-    const auto& soft = resultOf<RotorOutcome>(analysisOfType(steel, "campbell"))->criticalSpeeds;
-    const auto& rigid = resultOf<RotorOutcome>(analysisOfType(stiff, "campbell"))->criticalSpeeds;
+    const auto& soft = resultOf<CampbellOutcome>(analysisOfType(steel, "campbell"))->criticalSpeeds;
+    const auto& rigid =
+        resultOf<CampbellOutcome>(analysisOfType(stiff, "campbell"))->criticalSpeeds;
     REQUIRE(soft.size() == 4);
     REQUIRE(rigid.size() == 4);
     for (int i = 0; i < 4; ++i) {

@@ -18,9 +18,8 @@ namespace {
 
 const RigidBodyOutcome& givenBodyOutcome(const RunResult& run) {
   REQUIRE(run.analyses.size() == 1);
-  REQUIRE(resultOf<RotorOutcome>(run.analyses[0]));
-  REQUIRE(resultOf<RotorOutcome>(run.analyses[0])->rigidBody);
-  return *resultOf<RotorOutcome>(run.analyses[0])->rigidBody;
+  REQUIRE(resultOf<RigidBodyOutcome>(run.analyses[0]));
+  return *resultOf<RigidBodyOutcome>(run.analyses[0]);
 }
 
 /// Frequencies (rad/s, ascending) and z/phi ratios of M x'' + K x = 0, x = (z, phi).

@@ -127,18 +127,18 @@ TEST_SUITE("rotor decks") {
       CHECK(c.pass());
     }
     // The same closed forms written in C++ (independent of the deck's expressions).
-    const RotorOutcome& spin = *resultOf<RotorOutcome>(analysis(run, "spin"));
-    REQUIRE(spin.modes->modes.size() == 2);
-    CHECK(relError(spin.modes->modes[0].dampedFrequency, j.wd()) < kClosedForm);
-    CHECK(relError(spin.modes->modes[0].logDecrement, j.logDecrement()) < kClosedForm);
-    const RotorOutcome& campbell = *resultOf<RotorOutcome>(analysis(run, "campbell"));
+    const RotorModesResult& spin = *resultOf<RotorModesResult>(analysis(run, "spin"));
+    REQUIRE(spin.modes.size() == 2);
+    CHECK(relError(spin.modes[0].dampedFrequency, j.wd()) < kClosedForm);
+    CHECK(relError(spin.modes[0].logDecrement, j.logDecrement()) < kClosedForm);
+    const CampbellOutcome& campbell = *resultOf<CampbellOutcome>(analysis(run, "campbell"));
     // Two lines (y and z) cross the 1x line at the same speed: the damped frequency is
     // flat in speed, so the linear interpolation is exact.
     REQUIRE(campbell.criticalSpeeds.size() == 2);
     for (const CriticalSpeed& c : campbell.criticalSpeeds)
       CHECK(relError(c.speed, j.wd()) < kClosedForm);
     // Every speed of the sweep, and the checked 1234.5 rpm added to it.
-    const UnbalanceResult& u = *resultOf<RotorOutcome>(analysis(run, "unbalance"))->unbalance;
+    const UnbalanceResult& u = resultOf<UnbalanceOutcome>(analysis(run, "unbalance"))->unbalance;
     CHECK(u.speeds.size() == 41);
     double worst = 0;
     for (std::size_t s = 0; s < u.speeds.size(); ++s) {
@@ -192,7 +192,7 @@ TEST_SUITE("rotor decks") {
     // 3. Mode VTK: the complex shape as written equals the solved one (binary doubles: exact);
     //    the orbit polylines reach the orbit's semi-major axis at the drawing scale, within
     //    the sampling of 48 points per turn: major cos(pi/48) <= largest distance <= major.
-    const RotorMode& mode = resultOf<RotorOutcome>(analysis(run, "spin"))->modes->modes[0];
+    const RotorMode& mode = resultOf<RotorModesResult>(analysis(run, "spin"))->modes[0];
     const auto grid = readRotorVtu(dir / "spin_mode_01.vtu");
     REQUIRE(grid->GetNumberOfPoints() == run.model->nodeCount());
     const int disk = run.model->node("disk");
@@ -247,7 +247,7 @@ analyses:
     for (const Mode& m : modal.modes)
       CHECK(relError(std::sqrt(m.eigenvalue), j.wn()) < kClosedForm);
     // The rotor analysis at rest, undamped, is the same eigenproblem by another solver.
-    for (const RotorMode& m : resultOf<RotorOutcome>(analysis(run, "at-rest"))->modes->modes)
+    for (const RotorMode& m : resultOf<RotorModesResult>(analysis(run, "at-rest"))->modes)
       CHECK(relError(m.dampedFrequency, j.wn()) < kClosedForm);
   }
 }
@@ -360,8 +360,8 @@ analyses:
     const fs::path dir = scratchDir("overdamped_outputs");
     REQUIRE_NOTHROW(writeRunOutputs(run, dir));
 
-    const RotorModesResult& spin = *resultOf<RotorOutcome>(analysis(run, "spin"))->modes;
-    const CampbellResult& campbell = *resultOf<RotorOutcome>(analysis(run, "campbell"))->campbell;
+    const RotorModesResult& spin = *resultOf<RotorModesResult>(analysis(run, "spin"));
+    const CampbellResult& campbell = resultOf<CampbellOutcome>(analysis(run, "campbell"))->campbell;
     REQUIRE(400 * j.c / (2 * std::sqrt(j.k() * j.m)) > 1);  // the y plane is overdamped
     int overdamped = 0, damped = 0;
     for (const auto& line : campbell.lines)

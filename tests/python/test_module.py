@@ -100,6 +100,30 @@ def test_rotor_campbell_tables():
     assert np.all(np.diff(speeds) > 0)
 
 
+def test_torsion_of_two_disks(tmp_path):
+    # Two disks (Jp 2 and 3 kg m^2) on a light round shaft (D 50 mm, 1 m, G 80 GPa), free:
+    # omega^2 = k (J1 + J2) / (J1 J2), k = G pi D^4 / 32 / L; the shaft's inertia is 1e-12
+    # of the disks', so the FE frequency agrees to round-off.
+    deck = tmp_path / "train.yaml"
+    deck.write_text(
+        "model: {dimension: lateral}\n"
+        "materials:\n  - {name: light, E: 208 GPa, G: 80 GPa, rho: 1e-6}\n"
+        "sections:\n  - {name: shaft, shape: circle, D: 50 mm}\n"
+        "segments:\n  - {name: shaft, length: 1, section: shaft, elements: 8}\n"
+        "masses:\n  - {name: a, at: start, m: 10, Jp: 2, Jd: 1}\n"
+        "  - {name: b, at: end, m: 10, Jp: 3, Jd: 1}\n"
+        "analyses:\n  - {type: torsion, name: twist, modes: 2}\n")
+    run = beamrotor.solve(deck)
+    k = 80e9 * math.pi * 0.05**4 / 32
+    f = math.sqrt(k * 5 / 6) / (2 * math.pi)
+    entry = run.results["analyses"][0]
+    assert entry["type"] == "torsion" and entry["free"] is True
+    assert entry["frequencies_hz"][1] == pytest.approx(f, rel=1e-11)
+    table = run.tables["twist"]["modes"]
+    frequencies = table[next(c for c in table if c.startswith("frequency"))]
+    assert frequencies[1] == pytest.approx(f, rel=1e-11)
+
+
 def numbers_of(run):
     """A run's results and tables without the times it took, tables as plain lists."""
     def untimed(x):

@@ -52,8 +52,8 @@ Json modesJson(const std::string& stem, const RotorModesResult& r) {
             {"orbits_chart", orbitsChart(stem) + ".svg"}}}};
 }
 
-Json campbellJson(const std::string& stem, const RotorOutcome& r) {
-  const CampbellResult& c = *r.campbell;
+Json campbellJson(const std::string& stem, const CampbellOutcome& r) {
+  const CampbellResult& c = r.campbell;
   Json speeds = Json::array(), lines = Json::array(), critical = Json::array();
   for (double s : c.speeds) speeds.push_back(rpmOf(s));
   for (std::size_t l = 0; l < c.lines.size(); ++l) {
@@ -121,7 +121,7 @@ Json campbellJson(const std::string& stem, const RotorOutcome& r) {
 }
 
 /// API 684 reading: the operating range and each response point's peaks.
-Json api684Json(const std::string& stem, const RotorOutcome& r) {
+Json api684Json(const std::string& stem, const UnbalanceOutcome& r) {
   Json points = Json::object();
   bool pass = true;
   for (std::size_t k = 0; k < r.peaks.size(); ++k) {
@@ -160,8 +160,8 @@ Json api684Json(const std::string& stem, const RotorOutcome& r) {
           {"csv", api684Csv(stem)}};
 }
 
-Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
-  const UnbalanceResult& u = *r.unbalance;
+Json unbalanceJson(const std::string& stem, const UnbalanceOutcome& r) {
+  const UnbalanceResult& u = r.unbalance;
   Json speeds = Json::array(), response = Json::object();
   for (double s : u.speeds) speeds.push_back(rpmOf(s));
   for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
@@ -193,8 +193,8 @@ Json unbalanceJson(const std::string& stem, const RotorOutcome& r) {
       {"files", {{"unbalance_csv", unbalanceCsv(stem)}, {"chart", unbalanceChart(stem) + ".svg"}}}};
 }
 
-Json frequencyResponseJson(const std::string& stem, const RotorOutcome& r) {
-  const FrequencyResponseResult& f = *r.frequencyResponse;
+Json frequencyResponseJson(const std::string& stem, const FrequencyResponseOutcome& r) {
+  const FrequencyResponseResult& f = r.response;
   Json hz = Json::array(), magnitude = Json::array(), phase = Json::array();
   for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
     hz.push_back(f.frequencies[i] / (2 * std::numbers::pi));
@@ -202,8 +202,8 @@ Json frequencyResponseJson(const std::string& stem, const RotorOutcome& r) {
     phase.push_back(std::arg(f.receptance[i]) * kDegrees);
   }
   return {{"speed_rpm", rpmOf(f.speed)},
-          {"input", r.frfInput},
-          {"output", r.frfOutput},
+          {"input", r.input},
+          {"output", r.output},
           {"frequencies_hz", hz},
           {"magnitude", magnitude},
           {"phase_deg", phase},
@@ -213,8 +213,8 @@ Json frequencyResponseJson(const std::string& stem, const RotorOutcome& r) {
             {"chart", frequencyResponseChart(stem) + ".svg"}}}};
 }
 
-Json criticalSpeedMapJson(const std::string& stem, const RotorOutcome& r) {
-  const CriticalSpeedMap& m = *r.map;
+Json criticalSpeedMapJson(const std::string& stem, const CriticalSpeedMapOutcome& r) {
+  const CriticalSpeedMap& m = r.map;
   const auto rpms = [](const std::vector<double>& speeds) {
     Json out = Json::array();
     for (double s : speeds) out.push_back(rpmOf(s));
@@ -231,7 +231,7 @@ Json criticalSpeedMapJson(const std::string& stem, const RotorOutcome& r) {
       out.push_back({{"critical_speed", c.line + 1}, {"rpm", rpmOf(c.speed)}, {"stiffness", c.stiffness}});
     return out;
   };
-  for (const BearingStiffnessCurve& b : r.mapBearings)
+  for (const BearingStiffnessCurve& b : r.bearings)
     bearings.push_back({{"bearing", b.name},
                         {"speeds_rpm", rpms(b.speeds)},
                         {"kxx", b.kxx},
@@ -240,7 +240,7 @@ Json criticalSpeedMapJson(const std::string& stem, const RotorOutcome& r) {
                         {"kyy_crossings", crossings(b.kyyCrossings)}});
   Json files = {{"map_csv", criticalSpeedMapCsv(stem)},
                 {"chart", criticalSpeedMapChart(stem) + ".svg"}};
-  if (!r.mapBearings.empty()) {
+  if (!r.bearings.empty()) {
     files["bearings_csv"] = mapBearingsCsv(stem);
     files["crossings_csv"] = mapCrossingsCsv(stem);
   }
@@ -250,12 +250,12 @@ Json criticalSpeedMapJson(const std::string& stem, const RotorOutcome& r) {
           {"pinned_rpm", rpms(m.pinned)},
           {"free_free_rpm", rpms(m.freeFree)},
           {"bearings", bearings},
-          {"time_s", r.mapTime},
+          {"time_s", r.time},
           {"files", files}};
 }
 
-Json bearingLoadsJson(const std::string& stem, const RotorOutcome& r) {
-  const GravityLoads& g = *r.gravityLoads;
+Json bearingLoadsJson(const std::string& stem, const BearingLoadsOutcome& r) {
+  const GravityLoads& g = r.loads;
   Json bearings = Json::object();
   for (std::size_t i = 0; i < g.bearings.size(); ++i) {
     const BearingForce& b = g.bearings[i];
@@ -272,7 +272,7 @@ Json bearingLoadsJson(const std::string& stem, const RotorOutcome& r) {
             {"uy", any ? g.uy[worst] : 0.0},
             {"uz", any ? g.uz[worst] : 0.0},
             {"magnitude", any ? std::hypot(g.uy[worst], g.uz[worst]) : 0.0}}},
-          {"time_s", r.loadsTime},
+          {"time_s", r.time},
           {"files", {{"bearing_loads_csv", bearingLoadsCsv(stem)}, {"sag_csv", sagCsv(stem)}}}};
 }
 
@@ -312,21 +312,35 @@ Json rigidBodyJson(const RigidBodyOutcome& r) {
             {"modes", modes}}}};
 }
 
+/// The analysis' entry: its type and name first, then what its kind writes.
+Json entry(const AnalysisOutcome& a, const Json& body) {
+  Json out = {{"type", a.type}, {"name", a.name}};
+  for (const auto& [key, value] : body.items()) out[key] = value;
+  return out;
+}
+
 }  // namespace
 
-Json rotorJson(const AnalysisOutcome& a) {
-  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
-  const std::string stem = fileStem(a.name);
-  Json out = {{"type", a.type}, {"name", a.name}};
-  Json body = r.modes       ? modesJson(stem, *r.modes)
-              : r.campbell  ? campbellJson(stem, r)
-              : r.unbalance ? unbalanceJson(stem, r)
-              : r.frequencyResponse ? frequencyResponseJson(stem, r)
-              : r.map       ? criticalSpeedMapJson(stem, r)
-              : r.gravityLoads ? bearingLoadsJson(stem, r)
-                            : rigidBodyJson(*r.rigidBody);
-  for (auto& [key, value] : body.items()) out[key] = value;
-  return out;
+Json rotorJson(const AnalysisOutcome& a, const RotorModesResult& r) {
+  return entry(a, modesJson(fileStem(a.name), r));
+}
+Json rotorJson(const AnalysisOutcome& a, const CampbellOutcome& r) {
+  return entry(a, campbellJson(fileStem(a.name), r));
+}
+Json rotorJson(const AnalysisOutcome& a, const UnbalanceOutcome& r) {
+  return entry(a, unbalanceJson(fileStem(a.name), r));
+}
+Json rotorJson(const AnalysisOutcome& a, const RigidBodyOutcome& r) {
+  return entry(a, rigidBodyJson(r));
+}
+Json rotorJson(const AnalysisOutcome& a, const FrequencyResponseOutcome& r) {
+  return entry(a, frequencyResponseJson(fileStem(a.name), r));
+}
+Json rotorJson(const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r) {
+  return entry(a, criticalSpeedMapJson(fileStem(a.name), r));
+}
+Json rotorJson(const AnalysisOutcome& a, const BearingLoadsOutcome& r) {
+  return entry(a, bearingLoadsJson(fileStem(a.name), r));
 }
 
 }  // namespace beamrotor

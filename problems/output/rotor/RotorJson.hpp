@@ -26,7 +26,13 @@
 
 namespace beamrotor {
 
-/// The entry of one solved rotor analysis (a.rotor set).
-Json rotorJson(const AnalysisOutcome& a);
+/// The entry of one solved rotor analysis, by its kind's result (a's own).
+Json rotorJson(const AnalysisOutcome& a, const RotorModesResult& r);
+Json rotorJson(const AnalysisOutcome& a, const CampbellOutcome& r);
+Json rotorJson(const AnalysisOutcome& a, const UnbalanceOutcome& r);
+Json rotorJson(const AnalysisOutcome& a, const RigidBodyOutcome& r);
+Json rotorJson(const AnalysisOutcome& a, const FrequencyResponseOutcome& r);
+Json rotorJson(const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r);
+Json rotorJson(const AnalysisOutcome& a, const BearingLoadsOutcome& r);
 
 }  // namespace beamrotor

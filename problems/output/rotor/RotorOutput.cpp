@@ -25,43 +25,11 @@ namespace beamrotor {
 namespace {
 
 /// The excitation orders a Campbell analysis draws: its critical speeds' order, then the rest.
-std::vector<double> campbellOrders(const RotorOutcome& r) {
+std::vector<double> campbellOrders(const CampbellOutcome& r) {
   std::vector<double> orders{r.order};
   orders.insert(orders.end(), r.furtherOrders.begin(), r.furtherOrders.end());
   return orders;
 }
-
-}  // namespace
-
-PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem) {
-  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
-  PreparedRotor p;
-  if (r.modes) p.modes = rotorModesTable(modesCsv(stem), *r.modes);
-  if (r.campbell) {
-    p.campbell = campbellTable(campbellCsv(stem), *r.campbell);
-    std::vector<CriticalSpeed> all = r.criticalSpeeds;
-    all.insert(all.end(), r.furtherCriticalSpeeds.begin(), r.furtherCriticalSpeeds.end());
-    p.critical = criticalSpeedsTable(criticalSpeedsCsv(stem), all);
-    if (!r.journals.empty())
-      p.bearings = journalBearingsTable(journalBearingsCsv(stem), r.journals);
-  }
-  if (r.unbalance) p.unbalance = unbalanceTable(unbalanceCsv(stem), *r.unbalance, r.responsePoints);
-  if (r.unbalance && r.operating) p.api684 = api684Table(api684Csv(stem), r);
-  if (r.frequencyResponse)
-    p.frf = frequencyResponseTable(frequencyResponseCsv(stem), *r.frequencyResponse);
-  if (r.map) {
-    p.map = criticalSpeedMapTable(criticalSpeedMapCsv(stem), *r.map);
-    p.mapBearings = mapBearingsTable(mapBearingsCsv(stem), r.mapBearings);
-    p.mapCrossings = mapCrossingsTable(mapCrossingsCsv(stem), r.mapBearings);
-  }
-  if (r.gravityLoads) {
-    p.bearingLoads = bearingLoadsTable(bearingLoadsCsv(stem), *r.gravityLoads, r.bearingNames);
-    p.sag = sagTable(sagCsv(stem), *r.gravityLoads);
-  }
-  return p;
-}
-
-namespace {
 
 /// The caption, without its parameter list when that would not fit above one chart.
 std::string fitted(const std::string& caption) {
@@ -86,89 +54,148 @@ std::string stiffnessText(double x) {
 
 }  // namespace
 
-void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std::string& stem,
-                     const Model& model, const std::filesystem::path& dir,
-                     const std::string& fullCaption, bool charts) {
-  const RotorOutcome& r = *resultOf<RotorOutcome>(a);
-  const std::string caption = fitted(fullCaption);
-  // The operating range on the charts against speed, with the margins its critical speeds
-  // (Campbell) or its response peaks (unbalance) require.
-  std::optional<OperatingBand> band;
-  if (r.operating)
-    band = r.unbalance ? bandOfPeaks(*r.operating, r.peaks)
-                       : bandOfCriticalSpeeds(*r.operating, r.criticalSpeeds);
-  if (p.modes) {
-    p.modes->write(dir / modesCsv(stem));
-    std::vector<PvdEntry> entries;
-    for (std::size_t m = 0; m < r.modes->modes.size(); ++m) {
-      const int number = int(m) + 1;
-      writeRotorModeVtu(dir / modeVtu(stem, number), model, r.modes->modes[m], number);
-      writeOrbitVtu(dir / orbitVtu(stem, number), model, r.modes->modes[m]);
-      entries.push_back({double(number), modeVtu(stem, number)});
-    }
-    writePvd(dir / collectionPvd(stem), entries);
-    const CsvTable orbits = modeOrbitsTable(orbitsCsv(stem), *r.modes, model);
-    orbits.write(dir / orbitsCsv(stem));
-    if (charts && !r.modes->modes.empty())
-      drawChart(dir, modeOrbitsChart(caption, orbitsChart(stem), *r.modes, model, orbits,
+PreparedRotor prepareRotor(const RotorModesResult& r, const std::string& stem) {
+  PreparedRotor p;
+  p.modes = rotorModesTable(modesCsv(stem), r);
+  return p;
+}
+
+PreparedRotor prepareRotor(const CampbellOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.campbell = campbellTable(campbellCsv(stem), r.campbell);
+  std::vector<CriticalSpeed> all = r.criticalSpeeds;
+  all.insert(all.end(), r.furtherCriticalSpeeds.begin(), r.furtherCriticalSpeeds.end());
+  p.critical = criticalSpeedsTable(criticalSpeedsCsv(stem), all);
+  if (!r.journals.empty()) p.bearings = journalBearingsTable(journalBearingsCsv(stem), r.journals);
+  return p;
+}
+
+PreparedRotor prepareRotor(const UnbalanceOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.unbalance = unbalanceTable(unbalanceCsv(stem), r.unbalance, r.responsePoints);
+  if (r.operating) p.api684 = api684Table(api684Csv(stem), r);
+  return p;
+}
+
+PreparedRotor prepareRotor(const RigidBodyOutcome&, const std::string&) {
+  return {};  // all of it is in results.json
+}
+
+PreparedRotor prepareRotor(const FrequencyResponseOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.frf = frequencyResponseTable(frequencyResponseCsv(stem), r.response);
+  return p;
+}
+
+PreparedRotor prepareRotor(const CriticalSpeedMapOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.map = criticalSpeedMapTable(criticalSpeedMapCsv(stem), r.map);
+  p.mapBearings = mapBearingsTable(mapBearingsCsv(stem), r.bearings);
+  p.mapCrossings = mapCrossingsTable(mapCrossingsCsv(stem), r.bearings);
+  return p;
+}
+
+PreparedRotor prepareRotor(const BearingLoadsOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.bearingLoads = bearingLoadsTable(bearingLoadsCsv(stem), r.loads, r.bearingNames);
+  p.sag = sagTable(sagCsv(stem), r.loads);
+  return p;
+}
+
+void writeRotorFiles(const RotorFiles& f, const RotorModesResult& r) {
+  const std::string& stem = f.stem;
+  f.tables.modes->write(f.dir / modesCsv(stem));
+  std::vector<PvdEntry> entries;
+  for (std::size_t m = 0; m < r.modes.size(); ++m) {
+    const int number = int(m) + 1;
+    writeRotorModeVtu(f.dir / modeVtu(stem, number), f.model, r.modes[m], number);
+    writeOrbitVtu(f.dir / orbitVtu(stem, number), f.model, r.modes[m]);
+    entries.push_back({double(number), modeVtu(stem, number)});
+  }
+  writePvd(f.dir / collectionPvd(stem), entries);
+  const CsvTable orbits = modeOrbitsTable(orbitsCsv(stem), r, f.model);
+  orbits.write(f.dir / orbitsCsv(stem));
+  if (f.charts && !r.modes.empty())
+    drawChart(f.dir, modeOrbitsChart(fitted(f.caption), orbitsChart(stem), r, f.model, orbits,
                                      orbitsCsv(stem)));
+}
+
+void writeRotorFiles(const RotorFiles& f, const CampbellOutcome& r) {
+  const std::string& stem = f.stem;
+  const PreparedRotor& p = f.tables;
+  p.campbell->write(f.dir / campbellCsv(stem));
+  p.critical->write(f.dir / criticalSpeedsCsv(stem));
+  if (p.bearings) p.bearings->write(f.dir / journalBearingsCsv(stem));
+  if (!f.charts) return;
+  const std::string caption = fitted(f.caption);
+  // The operating range, with the margins its critical speeds require.
+  std::optional<OperatingBand> band;
+  if (r.operating) band = bandOfCriticalSpeeds(*r.operating, r.criticalSpeeds);
+  if (p.campbell->rowCount() > 0) {
+    drawChart(f.dir,
+              campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
+                              *p.critical, criticalSpeedsCsv(stem), campbellOrders(r), band));
+    drawChart(f.dir,
+              stabilityDiagram(caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),
+                               r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt, band));
   }
-  if (p.campbell) {
-    p.campbell->write(dir / campbellCsv(stem));
-    p.critical->write(dir / criticalSpeedsCsv(stem));
-    if (charts && p.campbell->rowCount() > 0)
-      drawChart(dir, campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
-                                     *p.critical, criticalSpeedsCsv(stem), campbellOrders(r),
-                                     band));
-    if (charts && p.campbell->rowCount() > 0)
-      drawChart(dir, stabilityDiagram(
-                         caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),
-                         r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt, band));
-  }
-  if (p.frf) {
-    p.frf->write(dir / frequencyResponseCsv(stem));
-    if (charts && p.frf->rowCount() > 0)
-      drawChart(dir, frequencyResponseDiagram(caption, frequencyResponseChart(stem), *p.frf,
-                                              frequencyResponseCsv(stem),
-                                              r.frfOutput + " / " + r.frfInput));
-  }
-  if (p.bearings) {
-    p.bearings->write(dir / journalBearingsCsv(stem));
+  if (p.bearings && p.bearings->rowCount() > 0) {
     std::vector<std::string> names;
     for (const JournalBearingCurve& j : r.journals) names.push_back(j.name);
-    if (charts && p.bearings->rowCount() > 0)
-      drawChart(dir, journalBearingsDiagram(caption, journalBearingsChart(stem), *p.bearings,
+    drawChart(f.dir, journalBearingsDiagram(caption, journalBearingsChart(stem), *p.bearings,
                                             journalBearingsCsv(stem), names));
   }
-  if (p.map) {
-    p.map->write(dir / criticalSpeedMapCsv(stem));
-    std::vector<std::string> names;
-    for (const BearingStiffnessCurve& b : r.mapBearings) names.push_back(b.name);
-    if (!names.empty()) {
-      p.mapBearings->write(dir / mapBearingsCsv(stem));
-      p.mapCrossings->write(dir / mapCrossingsCsv(stem));
-    }
-    const std::string what = "undamped, gyroscopics neglected: k = " +
-                             stiffnessText(r.map->stiffness.front()) + " to " +
-                             stiffnessText(r.map->stiffness.back()) + " N/m at all bearings, " +
-                             std::to_string(r.map->stiffness.size()) + " points";
-    if (charts && p.map->rowCount() > 0)
-      drawChart(dir, criticalSpeedMapDiagram(caption + "\n" + what, criticalSpeedMapChart(stem),
-                                             *r.map, {*p.map, criticalSpeedMapCsv(stem)},
-                                             {*p.mapBearings, mapBearingsCsv(stem)},
-                                             {*p.mapCrossings, mapCrossingsCsv(stem)}, names));
-  }
-  if (p.bearingLoads) {
-    p.bearingLoads->write(dir / bearingLoadsCsv(stem));
-    p.sag->write(dir / sagCsv(stem));
-  }
-  if (p.unbalance) {
-    p.unbalance->write(dir / unbalanceCsv(stem));
-    if (p.api684) p.api684->write(dir / api684Csv(stem));
-    if (charts && p.unbalance->rowCount() > 0)
-      drawChart(dir, unbalanceResponseChart(caption, unbalanceChart(stem), *p.unbalance,
+}
+
+void writeRotorFiles(const RotorFiles& f, const UnbalanceOutcome& r) {
+  const std::string& stem = f.stem;
+  const PreparedRotor& p = f.tables;
+  p.unbalance->write(f.dir / unbalanceCsv(stem));
+  if (p.api684) p.api684->write(f.dir / api684Csv(stem));
+  // The operating range, with the margins its response peaks require.
+  std::optional<OperatingBand> band;
+  if (r.operating) band = bandOfPeaks(*r.operating, r.peaks);
+  if (f.charts && p.unbalance->rowCount() > 0)
+    drawChart(f.dir, unbalanceResponseChart(fitted(f.caption), unbalanceChart(stem), *p.unbalance,
                                             unbalanceCsv(stem), r.responsePoints, band));
+}
+
+void writeRotorFiles(const RotorFiles&, const RigidBodyOutcome&) {}  // results.json holds it
+
+void writeRotorFiles(const RotorFiles& f, const FrequencyResponseOutcome& r) {
+  const std::string& stem = f.stem;
+  f.tables.frf->write(f.dir / frequencyResponseCsv(stem));
+  if (f.charts && f.tables.frf->rowCount() > 0)
+    drawChart(f.dir, frequencyResponseDiagram(fitted(f.caption), frequencyResponseChart(stem),
+                                              *f.tables.frf, frequencyResponseCsv(stem),
+                                              r.output + " / " + r.input));
+}
+
+void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r) {
+  const std::string& stem = f.stem;
+  const PreparedRotor& p = f.tables;
+  p.map->write(f.dir / criticalSpeedMapCsv(stem));
+  std::vector<std::string> names;
+  for (const BearingStiffnessCurve& b : r.bearings) names.push_back(b.name);
+  if (!names.empty()) {
+    p.mapBearings->write(f.dir / mapBearingsCsv(stem));
+    p.mapCrossings->write(f.dir / mapCrossingsCsv(stem));
   }
+  const std::string what =
+      "undamped, gyroscopics neglected: k = " + stiffnessText(r.map.stiffness.front()) + " to " +
+      stiffnessText(r.map.stiffness.back()) + " N/m at all bearings, " +
+      std::to_string(r.map.stiffness.size()) + " points";
+  if (f.charts && p.map->rowCount() > 0)
+    drawChart(f.dir,
+              criticalSpeedMapDiagram(fitted(f.caption) + "\n" + what, criticalSpeedMapChart(stem),
+                                      r.map, {*p.map, criticalSpeedMapCsv(stem)},
+                                      {*p.mapBearings, mapBearingsCsv(stem)},
+                                      {*p.mapCrossings, mapCrossingsCsv(stem)}, names));
+}
+
+void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome&) {
+  f.tables.bearingLoads->write(f.dir / bearingLoadsCsv(f.stem));
+  f.tables.sag->write(f.dir / sagCsv(f.stem));
 }
 
 }  // namespace beamrotor

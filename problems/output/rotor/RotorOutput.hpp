@@ -27,13 +27,35 @@ struct PreparedRotor {
   std::optional<CsvTable> sag;           ///< bearing-loads: <stem>_sag.csv
 };
 
-/// Builds the tables of a solved rotor analysis (a.rotor set); throws on non-finite values.
-PreparedRotor prepareRotor(const AnalysisOutcome& a, const std::string& stem);
+/// Builds the tables of a solved rotor analysis, those of its kind (a rigid body has none:
+/// results.json holds all of it); throws on non-finite values.
+PreparedRotor prepareRotor(const RotorModesResult& r, const std::string& stem);
+PreparedRotor prepareRotor(const CampbellOutcome& r, const std::string& stem);
+PreparedRotor prepareRotor(const UnbalanceOutcome& r, const std::string& stem);
+PreparedRotor prepareRotor(const RigidBodyOutcome& r, const std::string& stem);
+PreparedRotor prepareRotor(const FrequencyResponseOutcome& r, const std::string& stem);
+PreparedRotor prepareRotor(const CriticalSpeedMapOutcome& r, const std::string& stem);
+PreparedRotor prepareRotor(const BearingLoadsOutcome& r, const std::string& stem);
 
-/// Writes them into dir, with the mode VTK files and orbits (rotor) and, when `charts`, the
-/// Campbell diagram or the unbalance response chart under `caption`.
-void writeRotorFiles(const PreparedRotor& p, const AnalysisOutcome& a, const std::string& stem,
-                     const Model& model, const std::filesystem::path& dir,
-                     const std::string& caption, bool charts);
+/// Where and how one rotor analysis writes its files.
+struct RotorFiles {
+  const PreparedRotor& tables;  ///< prepareRotor's, of the same result
+  const std::string& stem;      ///< file stem of its files
+  const Model& model;           ///< for the mode shapes and orbits (VTK)
+  const std::filesystem::path& dir;
+  std::string caption;  ///< of its charts (shortened where too long to fit above one)
+  bool charts = true;   ///< whether to draw them
+};
+
+/// Writes the tables into f.dir, with the mode VTK files and orbits (rotor) and, when
+/// f.charts, the charts of its kind (orbits, Campbell and stability diagrams, unbalance
+/// response, frequency response, critical-speed map).
+void writeRotorFiles(const RotorFiles& f, const RotorModesResult& r);
+void writeRotorFiles(const RotorFiles& f, const CampbellOutcome& r);
+void writeRotorFiles(const RotorFiles& f, const UnbalanceOutcome& r);
+void writeRotorFiles(const RotorFiles& f, const RigidBodyOutcome& r);
+void writeRotorFiles(const RotorFiles& f, const FrequencyResponseOutcome& r);
+void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r);
+void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome& r);
 
 }  // namespace beamrotor

@@ -38,7 +38,7 @@ CsvTable journalBearingsTable(const std::string& title,
   return table;
 }
 
-CsvTable api684Table(const std::string& title, const RotorOutcome& r) {
+CsvTable api684Table(const std::string& title, const UnbalanceOutcome& r) {
   CsvTable table(title, {{"point", ""},
                          {"peak", ""},
                          {"speed_rpm", "rpm"},

@@ -32,7 +32,7 @@ CsvTable journalBearingsTable(const std::string& title,
 /// amplification_factor (0: unknown), amplification_method (half-power, modal-damping for
 /// overlapping peaks, none), modal_damping_ratio (the zeta behind 1 / (2 zeta); 0 for
 /// half-power), required_margin and actual_margin (%), pass (1 or 0).
-CsvTable api684Table(const std::string& title, const RotorOutcome& r);
+CsvTable api684Table(const std::string& title, const UnbalanceOutcome& r);
 
 /// Frequency response: one row per excitation frequency: frequency (Hz), omega (rad/s),
 /// magnitude, phase (deg), real, imag of the receptance (m/N for translations).
