@@ -17,6 +17,22 @@ inline double relError(double computed, double reference) {
   return std::abs(computed - reference) / std::abs(reference);
 }
 
+/// Root of a continuous f on [a, b] with a sign change, by bisection to round-off.
+template <class F>
+inline double bisectRoot(F f, double a, double b) {
+  double fa = f(a);
+  for (int i = 0; i < 200 && b - a > 1e-15 * std::abs(b); ++i) {
+    const double m = (a + b) / 2, fm = f(m);
+    if ((fm < 0) == (fa < 0)) {
+      a = m;
+      fa = fm;
+    } else {
+      b = m;
+    }
+  }
+  return (a + b) / 2;
+}
+
 /// Discrete-to-exact frequency ratio of a simply supported uniform Euler-Bernoulli beam meshed
 /// with equal cubic Hermite elements of length h and consistent mass, for the mode of wave
 /// number k = n pi / L (the discrete dispersion relation). The nodal values w_j = sin(k x_j),

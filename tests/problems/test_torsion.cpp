@@ -69,23 +69,6 @@ double holzerResidual(const std::vector<double>& J, const std::vector<double>& k
   return torque;
 }
 
-/// The root of Holzer's residual in [lo, hi] by bisection (it changes sign there).
-double holzerRoot(const std::vector<double>& J, const std::vector<double>& k, double lo,
-                  double hi) {
-  double rlo = holzerResidual(J, k, lo);
-  REQUIRE(rlo * holzerResidual(J, k, hi) < 0);
-  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
-    const double mid = (lo + hi) / 2, r = holzerResidual(J, k, mid);
-    if ((r < 0) == (rlo < 0)) {
-      lo = mid;
-      rlo = r;
-    } else {
-      hi = mid;
-    }
-  }
-  return (lo + hi) / 2;
-}
-
 }  // namespace
 
 TEST_SUITE("torsion") {
@@ -123,7 +106,9 @@ TEST_SUITE("torsion") {
     for (std::size_t i = 0; i + 1 < x.size(); ++i) k.push_back(shaftStiffness(D, x[i + 1] - x[i]));
     for (int m = 1; m < 4; ++m) {
       const double omega = 2 * kPi * t.modes.modes[m].frequencyHz;
-      const double root = holzerRoot(J, k, omega * 0.99, omega * 1.01);
+      const auto residual = [&](double w) { return holzerResidual(J, k, w); };
+      REQUIRE(residual(omega * 0.99) * residual(omega * 1.01) < 0);
+      const double root = test::bisectRoot(residual, omega * 0.99, omega * 1.01);
       CHECK(relError(omega, root) < 1e-11);
     }
   }

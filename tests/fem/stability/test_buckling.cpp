@@ -12,26 +12,6 @@
 using namespace beamrotor;
 using namespace beamrotor::test;
 
-namespace {
-
-/// Root of a continuous f on [a, b] with a sign change, by bisection to round-off.
-template <class F>
-double bisectRoot(F f, double a, double b) {
-  double fa = f(a);
-  for (int i = 0; i < 200 && b - a > 1e-15 * std::abs(b); ++i) {
-    const double m = (a + b) / 2, fm = f(m);
-    if ((fm < 0) == (fa < 0)) {
-      a = m;
-      fa = fm;
-    } else {
-      b = m;
-    }
-  }
-  return (a + b) / 2;
-}
-
-}  // namespace
-
 TEST_SUITE("buckling") {
   TEST_CASE("stepped cantilever column: the exact transcendental equation") {
     // Fixed base, part 1 (EI1, length a) at the base, part 2 (EI2, length b) above, load P at
