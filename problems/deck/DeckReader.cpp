@@ -13,6 +13,8 @@
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/structure/SectionNeeds.hpp"
 #include "problems/deck/parse/Suggest.hpp"
+#include "problems/deck/parse/UnitSyntax.hpp"
+#include "problems/deck/study/SweepOption.hpp"
 
 namespace beamrotor {
 
@@ -98,13 +100,30 @@ void define(Context& c, const Field& f, const std::string& name, const Amount& v
   if (!v.dimension.dimensionless()) c.deck.dimensions.emplace_back(name, v.dimension);
 }
 
+/// A parameter's value as written. An exact zero shows no dimension when evaluated (0 m is
+/// 0 kg in every system of units), yet `a: 0 m` states one, which later expressions and values
+/// rely on (`c*l*a` a moment, `--set a=0.002` a length): it is read from the same text with
+/// its zeros written 1. Units that do not fit one dimension leave the zero fitting any.
+Amount writtenAmount(const Context& c, const Field& f) {
+  Amount v = f.amount(c.evaluator);
+  if (!v.anyDimension) return v;
+  try {
+    const Amount units = c.evaluator.amount(zerosAsOnes(f.text()));
+    if (!units.anyDimension && !units.dimension.dimensionless())
+      v = Amount{v.si, units.dimension, false};
+  } catch (const ExpressionError&) {
+    // `0 m + 0 kg`: no one dimension; the zero keeps fitting any
+  }
+  return v;
+}
+
 /// A command-line override of the parameter `f`: a bare number takes the dimension of the
 /// deck's own value, one with a unit must have it; one with a unit for a parameter without
 /// one is used in SI and checked once the fields have told its dimension.
 Amount overridden(Context& c, const Field& f, const ParameterOverride& o) {
   Dimension own;
   try {
-    own = f.amount(c.evaluator).dimension;
+    own = writtenAmount(c, f).dimension;
   } catch (const DeckError&) {
     // the deck's value is replaced anyway; its dimension is unknown, so the override's holds
     return Amount{o.value, o.dimension.value_or(Dimension{}), false};
@@ -125,7 +144,7 @@ void readParameters(Context& c, const std::vector<ParameterOverride>& overrides)
     for (const auto& [name, value] : block->entries()) {
       requireRoomForName(c, value);
       const ParameterOverride* o = findOverride(overrides, name);
-      const Amount v = o ? overridden(c, value, *o) : value.amount(c.evaluator);
+      const Amount v = o ? overridden(c, value, *o) : writtenAmount(c, value);
       define(c, value, name, v);
       c.deck.parameters.emplace_back(name, v.si);
       names.push_back(name);
@@ -194,6 +213,10 @@ void checkBareParameters(Context& c, const std::vector<NumericRead>& reads) {
   const std::map<std::string, BareUse> found =
       bareDimensions(reads, c.evaluator, bare, c.bareTexts);
   for (const auto& [name, use] : found) c.deck.bareDimensions.emplace_back(name, use.dimension);
+  // Read again with the dimension found: a unit of another is refused at its field, and the
+  // read is logged with its unit like any other.
+  for (const auto& [name, f] : c.valuesOfBare)
+    parameterValue(f, c.evaluator, name, parameterDimension(c.deck, name));
   for (const ParameterOverride& o : c.unitOverridesOfBare) {
     const auto it = found.find(o.name);
     if (it == found.end()) {
@@ -221,7 +244,7 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   Deck deck;
   deck.path = source.path;
   deck.stem = source.stem;
-  reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {}, {}, {}, {}};
+  reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {}, {}, {}, {}, {}};
   // A study's re-readings (with a memo) repeat its first reading: no log, no check below.
   std::optional<NumericReadLog> log;
   if (!memo) log.emplace();

@@ -27,6 +27,9 @@ struct Context {
   /// those parameters' dimensions (BareParameters.hpp).
   std::vector<std::pair<std::string, std::string>> bareTexts;
   std::vector<ParameterOverride> unitOverridesOfBare;
+  /// The fields giving values of such a parameter elsewhere in the deck (a sweep's), with the
+  /// parameter's name: read in SI as written, their units checked once its dimension is known.
+  std::vector<std::pair<std::string, Field>> valuesOfBare;
 
   /// The point a field names; fails with a did-you-mean suggestion.
   const DeckPoint& point(const Field& f) const;

@@ -8,6 +8,7 @@
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/parse/DeckSource.hpp"
+#include "problems/deck/parse/UnitSyntax.hpp"
 #include "problems/deck/study/Overrides.hpp"
 #include "problems/deck/study/SweepOption.hpp"
 #include "problems/run/Study.hpp"
@@ -56,9 +57,73 @@ const std::string kBare =
     "  - {name: w, quantity: displacement end uy, reference: -P*L^3/(3*E*I), tolerance: 1,\n"
     "     when: eta == 0.4}\n";
 
+/// A body on a rotational spring c l^2 preloaded by the moment c l a (the MO-10 scene of
+/// problems/mo10.yaml): the preload deflection a is written as a zero with its unit.
+const std::string kZeroPreload =
+    "parameters: {c: 100 kN/m, l: 100 mm, a: 0 m}\n"
+    "points: [{name: body}]\n"
+    "masses: [{at: body, m: 0, Jd: 0.5 kg*m^2}]\n"
+    "springs: [{at: body, dof: rz, k: c*l^2/rad}]\n"
+    "loads: [{type: point, at: body, mz: -c*l*a}]\n";
+
+double preloadMoment(const Deck& deck) {
+  for (const auto& [dof, value] : deck.loads.at(0).components)
+    if (dof == Dof::rz) return value;
+  return 0;
+}
+
+/// A sweep of the bare cantilever's L (a length, as its segment tells) written `values`.
+std::string sweptBare(const std::string& values) {
+  return kBare + "sweep: {parameter: L, " + values + "}\n";
+}
+
 }  // namespace
 
 TEST_SUITE("deck units") {
+  TEST_CASE("a parameter written as a zero with a unit keeps the unit's dimension") {
+    // 0 m is 0 in every system of units, so evaluation alone cannot tell it from 0 kg; the
+    // preload c l a must still be a moment, and a value set for a a length.
+    CHECK(zerosAsOnes("0 m") == "1 m");
+    CHECK(zerosAsOnes("0.0e3 kN/m + t0*0 - 10 mm + .0 mm") == "1 kN/m + t0*1 - 10 mm + 1 mm");
+    const Deck deck = readWith(kZeroPreload, {});
+    CHECK(deck.dimensions.back() == std::pair<std::string, Dimension>{"a", dim::length});
+    CHECK(preloadMoment(deck) == 0);
+    // 100 kN/m x 0.1 m x 2 mm = 20 N m, bare SI or with a unit alike.
+    for (const char* set : {"a=0.002", "a=2 mm"})
+      CHECK(preloadMoment(readWith(kZeroPreload, {set})) == doctest::Approx(-20).epsilon(1e-15));
+    CHECK(readFailure(kZeroPreload, {"a=2 kg"}).find("a expects a length (m), got a mass (kg)") !=
+          std::string::npos);
+    // A bare zero stays bare, and units of two dimensions leave the zero fitting any: only
+    // c and l have a dimension then.
+    for (const char* zero : {"a: 0", "a: 0 m + 0 kg"}) {
+      std::string text = kZeroPreload;
+      text.replace(text.find("a: 0 m"), 6, zero);
+      CAPTURE(zero);
+      CHECK(readWith(text, {}).dimensions.size() == 2);
+    }
+  }
+
+  TEST_CASE("a deck's sweep of a bare parameter takes units of the dimension its fields tell") {
+    // L is a length (segments[0].length): values with units are its SI values, bit for bit.
+    const Deck si = readWith(sweptBare("values: [4, 6]"), {});
+    const Deck units = readWith(sweptBare("values: [4 m, 6000 mm]"), {});
+    REQUIRE(si.sweep);
+    REQUIRE(units.sweep);
+    CHECK(si.sweep->values == std::vector<double>{4, 6});
+    CHECK(units.sweep->values == si.sweep->values);
+    CHECK(readWith(sweptBare("from: 4000 mm, to: 6 m, steps: 2"), {}).sweep->values ==
+          std::vector<double>{4, 5, 6});
+    // Another dimension is refused at its line and column, naming the field.
+    CHECK(readFailure(sweptBare("values: [4 m, 6 s]"), {}) ==
+          "bare.yaml:13:37: sweep.values[1]: values[1] expects a length (m), got a time (s)");
+    CHECK(readFailure(sweptBare("from: 4 m, to: 6 kg, steps: 2"), {}) ==
+          "bare.yaml:13:38: sweep.to: to expects a length (m), got a mass (kg)");
+    // A parameter no field tells the dimension of takes no unit, as on the command line.
+    CHECK(readFailure(kBare + "sweep: {parameter: unused, values: [1, 2 mm]}\n", {})
+              .find("bare.yaml:13:40: sweep.values[1]: unused expects a dimensionless number, "
+                    "got a length (m) (the deck gives unused without a unit") == 0);
+  }
+
   TEST_CASE("a bare parameter takes its dimension from the fields it flows into") {
     const Deck deck = readWith(kBare, {});
     CHECK(bareDimension(deck, "L") == dim::length);

@@ -105,6 +105,39 @@ TEST_SUITE("deck sweep") {
     CHECK(bare.sweep->unit.empty());
   }
 
+  TEST_CASE("sweep values take units of the swept parameter's dimension") {
+    // s is a length (the support's place): values in m and mm are its SI values, bit for bit
+    // (1.5 = 1500 x 0.001 exactly in binary), whether the deck writes s bare or with its unit,
+    // and each run solves the same model.
+    const Study bare = solve("sweep: {parameter: s, values: [1, 1.5]}");
+    const Study units = solve("sweep: {parameter: s, values: [1 m, 1500 mm]}");
+    std::string text = kSweepDeck;  // its checks, in bare numbers, left out
+    text.replace(text.find("  s: 1.0"), 8, "  s: 1000 mm");
+    text.erase(text.find("checks:"));
+    text += "sweep: {parameter: s, from: 1 m, to: 1500 mm, steps: 1}\n";
+    StudyRequest r;
+    r.deckPath = "sweep.yaml";
+    const Study stated = solveStudyText(text, r);
+    REQUIRE(bare.sweep);
+    REQUIRE(units.sweep);
+    REQUIRE(stated.sweep);
+    CHECK(bare.sweep->values == std::vector<double>{1, 1.5});
+    CHECK(units.sweep->values == bare.sweep->values);
+    CHECK(stated.sweep->values == bare.sweep->values);
+    for (std::size_t i = 0; i < 2; ++i) {
+      CHECK(midDeflection(units.sweep->runs[i]) == midDeflection(bare.sweep->runs[i]));
+      CHECK(midDeflection(stated.sweep->runs[i]) == midDeflection(bare.sweep->runs[i]));
+    }
+    // A unit of another dimension is refused at its line and column, naming the field.
+    CHECK_THROWS_WITH_AS(solve("sweep: {parameter: s, values: [1 m, 1.5 kg]}"),
+                         "sweep.yaml:24:37: sweep.values[1]: values[1] expects a length (m), got "
+                         "a mass (kg)",
+                         DeckError);
+    CHECK_THROWS_WITH_AS(solve("sweep: {parameter: P, from: 100 N, to: 2 m, steps: 2}"),
+                         "sweep.yaml:24:40: sweep.to: to expects a force (N), got a length (m)",
+                         DeckError);
+  }
+
   TEST_CASE("a sweep from the command line replaces the deck's") {
     StudyRequest r;
     r.sweep = "s=1:2:2";

@@ -122,7 +122,7 @@ TEST_SUITE("forme shaft decks") {
   }
 
   TEST_CASE("spinning shaft deck: rigid-rotor whirl, critical speeds and orbits (E=2e17)") {
-    for (const char* speed : {"speed_rpm=300", "speed_rpm=12000"}) {
+    for (const char* speed : {"speed=300rpm", "speed=12000rpm"}) {
       CAPTURE(speed);
       const RunResult run = solveFormeDeck("forme_shaft_rotor.yaml", {"E=2e17", speed});
       CHECK(passedChecks(run) == 15);

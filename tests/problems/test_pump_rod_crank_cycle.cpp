@@ -33,8 +33,8 @@ TEST_SUITE("pump rod crank cycle") {
   TEST_CASE("the deck's eta(phi) is the crank-slider's slider position") {
     for (double phiDeg : {0.0, 30.0, 90.0, 137.5, 180.0, 270.0, 345.0}) {
       CAPTURE(phiDeg);
-      const Study s = solveStudy(
-          shippedDeckRequest("pump_rod_crank_cycle.yaml", {"phi=" + std::to_string(phiDeg)}));
+      const Study s = solveStudy(shippedDeckRequest("pump_rod_crank_cycle.yaml",
+                                                    {"phi=" + std::to_string(phiDeg) + "deg"}));
       const double r = deckValue(s.deck, "r"), L = deckValue(s.deck, "L");
       const double eta = deckValue(s.deck, "eta"), phi = phiDeg * kPi / 180;
       // The formula above and the scene model differ in how they avoid cancellation near the
@@ -50,9 +50,9 @@ TEST_SUITE("pump rod crank cycle") {
     for (const auto& [phi, eta] :
          {std::pair{"0", "0"}, std::pair{"180", "0.4"}, std::pair{"360", "0"}}) {
       CAPTURE(phi);
-      const RunResult crank =
-          *solveStudy(shippedDeckRequest("pump_rod_crank_cycle.yaml", {std::string("phi=") + phi}))
-               .run;
+      const RunResult crank = *solveStudy(shippedDeckRequest("pump_rod_crank_cycle.yaml",
+                                                             {std::string("phi=") + phi + "deg"}))
+                                   .run;
       const RunResult rod =
           *solveStudy(shippedDeckRequest("pump_rod.yaml", {std::string("eta=") + eta})).run;
       // Plumbing, not a second method: the same model up to the middle support's position,
@@ -78,11 +78,12 @@ TEST_SUITE("pump rod crank cycle") {
     r.noSweep = false;
     const Study s = solveStudy(r);
     REQUIRE(s.sweep);
-    REQUIRE(s.sweep->values.size() == 25);  // 0:360:24, every 15 deg
+    REQUIRE(s.sweep->values.size() == 25);  // 0:360 deg:24, every 15 deg, in rad
     for (std::size_t i = 0; i < s.sweep->values.size(); ++i) {
       const double phi = s.sweep->values[i];
       CAPTURE(phi);
-      const std::size_t expected = phi == 180 ? 5 : phi == 0 || phi == 360 ? 1 : 0;
+      // 180 deg and 360 deg are pi and 2 pi exactly (180 x (pi / 180) rounds to pi).
+      const std::size_t expected = phi == kPi ? 5 : phi == 0 || phi == 2 * kPi ? 1 : 0;
       CHECK(s.sweep->runs[i].checks.size() == expected);
       for (const Check& c : s.sweep->runs[i].checks) CHECK(c.pass());
     }
@@ -93,12 +94,12 @@ TEST_SUITE("pump rod crank cycle") {
     const auto doc = solved.json("sweep.json");
     REQUIRE(doc["runs"].size() == 25);
     for (const auto& run : doc["runs"]) {
-      const double phi = run["value"].get<double>() * kPi / 180;
+      const double phi = run["value"].get<double>();  // in rad: the deck's 15 deg steps in SI
       CHECK(std::abs(run["reported"]["eta"].get<double>() - sliderPosition(0.2, 1.2, phi)) < 1e-14);
     }
     // The rod is worst at the outer dead centre (eta = 0.4), on the thin rod at the step.
     const auto& worst = doc["worst"]["bending"]["max_stress"];
-    CHECK(worst["at"]["phi"].get<double>() == 180);
+    CHECK(worst["at"]["phi"].get<double>() == kPi);
     CHECK(worst["section"] == "rod");
     CHECK(std::abs(worst["x"].get<double>() - 0.575) < 1e-12);
     const std::string csv = solved.text("sweep.csv");

@@ -1,6 +1,7 @@
 #include "problems/deck/parse/UnitSyntax.hpp"
 
 #include <cctype>
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -94,6 +95,28 @@ std::string writeUnitProducts(const std::string& text,
     out += c;
     ++i;
     last = c == ')' ? Last::close : Last::other;
+  }
+  return out;
+}
+
+std::string zerosAsOnes(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char c = text[i];
+    std::size_t end = i + 1;
+    if (startsWord(c)) {
+      while (end < text.size() && inWord(text[end])) ++end;  // a name, digits and all
+      out.append(text, i, end - i);
+    } else if (isDigit(c) || (c == '.' && i + 1 < text.size() && isDigit(text[i + 1]))) {
+      end = numberEnd(text, i);
+      const std::string literal = text.substr(i, end - i);
+      out += std::strtod(literal.c_str(), nullptr) == 0 ? "1" : literal;
+    } else {
+      out += c;
+    }
+    i = end;
   }
   return out;
 }

@@ -17,4 +17,9 @@ namespace beamrotor {
 std::string writeUnitProducts(const std::string& text,
                               const std::function<bool(const std::string&)>& isName);
 
+/// `text` with every number literal whose value is zero written 1 (`0 m` -> `1 m`, `0.0 kN/m`
+/// -> `1 kN/m`), names and the digits in them untouched: an expression with the units of a
+/// zero written with a unit, whose own value, 0 in every system of units, shows no dimension.
+std::string zerosAsOnes(const std::string& text);
+
 }  // namespace beamrotor

@@ -35,7 +35,7 @@ struct StudyContext {
   Deck deck;
   reader::Context c;
   StudyContext(const DeckSource& source, const Deck& base)
-      : deck(base), c{Field::root(*source.tree), deck, {}, {}, {}, {}, {}} {
+      : deck(base), c{Field::root(*source.tree), deck, {}, {}, {}, {}, {}, {}} {
     auto define = [&](const std::string& name, double value) {
       Amount a{value, {}, false};
       for (const auto& [named, d] : deck.dimensions)
@@ -194,28 +194,30 @@ StudyParameter readParameter(const StudyContext& s, const std::string& name, con
   p.name = name;
   p.place = f.place();
   requireFreeParameter(s.deck, name, taken, [&](const std::string& why) { f.fail(why); });
-  const FieldUnit unit{s.c.evaluator.dimensionOf(name)};
+  // Written with a unit or told by the fields it flows into: values with a unit must have it.
+  const Dimension own = parameterDimension(s.deck, name);
+  const auto value = [&](const Field& v) { return parameterValue(v, s.c.evaluator, name, own); };
   if (!f.isMap()) f.fail("expected a map such as {from: 0, to: 1, steps: 10}, got " + f.describe());
   if (auto kind = f.get("distribution")) {
     StudyDistribution d;
     const std::string k = kind->choice({"uniform", "normal", "lognormal"});
     auto bound = [&](const char* key, double& into) {
-      if (auto b = f.get(key)) into = b->number(s.c.evaluator, unit);
+      if (auto b = f.get(key)) into = value(*b);
     };
     if (k == "uniform") {
       f.allowOnly({"distribution", "low", "high"}, "a uniform distribution");
-      d.first = f.require("low").number(s.c.evaluator, unit);
-      d.second = f.require("high").number(s.c.evaluator, unit);
+      d.first = value(f.require("low"));
+      d.second = value(f.require("high"));
     } else if (k == "normal") {
       f.allowOnly({"distribution", "mean", "sd", "lower", "upper"}, "a normal distribution");
       d.kind = StudyDistribution::Kind::normal;
-      d.first = f.require("mean").number(s.c.evaluator, unit);
-      d.second = f.require("sd").number(s.c.evaluator, unit);
+      d.first = value(f.require("mean"));
+      d.second = value(f.require("sd"));
     } else {
       f.allowOnly({"distribution", "median", "sigma", "lower", "upper"},
                   "a lognormal distribution");
       d.kind = StudyDistribution::Kind::lognormal;
-      d.first = f.require("median").number(s.c.evaluator, unit);
+      d.first = value(f.require("median"));
       d.second = f.require("sigma").number(s.c.evaluator, dim::none);
     }
     bound("lower", d.lower);
@@ -228,14 +230,14 @@ StudyParameter readParameter(const StudyContext& s, const std::string& name, con
   if (auto values = f.get("values")) {
     if (f.has("from") || f.has("to") || f.has("steps"))
       values->fail("give either values or from/to/steps, not both");
-    for (const Field& v : values->items()) p.values.push_back(v.number(s.c.evaluator, unit));
+    for (const Field& v : values->items()) p.values.push_back(value(v));
     if (p.values.empty()) values->fail("the list of values is empty");
     if (int(p.values.size()) > kMaxSweepValues)
       values->fail("at most " + std::to_string(kMaxSweepValues) + " values");
     return p;
   }
-  const double a = f.require("from").number(s.c.evaluator, unit);
-  const double b = f.require("to").number(s.c.evaluator, unit);
+  const double a = value(f.require("from"));
+  const double b = value(f.require("to"));
   const int n = f.require("steps").integer(s.c.evaluator, 1, kMaxSweepValues - 1);
   for (int i = 0; i < n; ++i) p.values.push_back(a + (b - a) * i / n);
   p.values.push_back(b);

@@ -152,6 +152,17 @@ void readChecks(Context& c) {
   }
 }
 
+/// One of the sweep's values of `parameter`, in SI. A parameter written with a unit gives its
+/// values that dimension now; a bare one's dimension is known only once every field has been
+/// read (BareParameters.hpp), so its value is read as written, in SI, and the field kept for
+/// checkBareParameters to check against the dimension found.
+double sweepValue(Context& c, const Field& f, const std::string& parameter) {
+  const Dimension own = c.evaluator.dimensionOf(parameter);
+  if (!own.dimensionless()) return f.number(c.evaluator, FieldUnit{own});
+  c.valuesOfBare.emplace_back(parameter, f);
+  return f.amount(c.evaluator).si;
+}
+
 /// The sweep's values; evaluated with the deck's parameters before the sweep changes them.
 void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
   auto f = c.root.get("sweep");
@@ -166,7 +177,6 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
   if (std::find(names.begin(), names.end(), s.parameter) == names.end())
     pf.fail("no parameter '" + s.parameter + "'" + didYouMean(s.parameter, names) +
             " (parameters: " + joinNames(names) + ")");
-  const FieldUnit unit{c.evaluator.dimensionOf(s.parameter)};  // SI, as the parameter's value
   auto values = f->get("values");
   auto from = f->get("from"), to = f->get("to"), steps = f->get("steps");
   if (values && (from || to || steps))
@@ -176,10 +186,10 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
     if (items.empty()) values->fail("the list of values is empty");
     if (int(items.size()) > kMaxSweepValues)
       values->fail("at most " + std::to_string(kMaxSweepValues) + " values");
-    for (const Field& v : items) s.values.push_back(v.number(c.evaluator, unit));
+    for (const Field& v : items) s.values.push_back(sweepValue(c, v, s.parameter));
   } else {
-    const double a = f->require("from").number(c.evaluator, unit);
-    const double b = f->require("to").number(c.evaluator, unit);
+    const double a = sweepValue(c, f->require("from"), s.parameter);
+    const double b = sweepValue(c, f->require("to"), s.parameter);
     const int n = f->require("steps").integer(c.evaluator, 1, kMaxSweepValues - 1);
     // steps intervals, n + 1 values; the last is `to` exactly, not a rounded sum.
     for (int i = 0; i < n; ++i) s.values.push_back(a + (b - a) * i / n);

@@ -23,12 +23,28 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 }  // namespace
 
-double parameterValueOption(const std::string& text, const std::string& parameter,
-                            const Deck& deck, const DeckPlace& place) {
-  Dimension own;  // the parameter's, written or told by its fields: values with a unit must have it
+Dimension parameterDimension(const Deck& deck, const std::string& parameter) {
   for (const auto* named : {&deck.dimensions, &deck.bareDimensions})
     for (const auto& [name, d] : *named)
-      if (name == parameter) own = d;
+      if (name == parameter) return d;
+  return Dimension{};
+}
+
+double parameterValue(const Field& f, const ExpressionEvaluator& evaluator,
+                      const std::string& parameter, const Dimension& own) {
+  if (own.dimensionless()) {
+    // Nothing tells what a unit here should be (a bare parameter no field gives a dimension):
+    // say so, as for the same value typed on the command line.
+    const Amount a = f.amount(evaluator);
+    if (!a.anyDimension && !a.dimension.dimensionless())
+      if (auto why = overrideMismatch(parameter, a.dimension, own)) f.fail(*why);
+  }
+  return f.number(evaluator, FieldUnit{own});
+}
+
+double parameterValueOption(const std::string& text, const std::string& parameter,
+                            const Deck& deck, const DeckPlace& place) {
+  const Dimension own = parameterDimension(deck, parameter);  // values with a unit must have it
   Amount a;
   try {
     a = ExpressionEvaluator().amount(text);

@@ -5,12 +5,15 @@
 // study over bearing stiffness keeping its critical speeds and checks.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "problems/deck/DeckReader.hpp"
+#include "problems/deck/parse/DeckSource.hpp"
 #include "problems/study/DesignStudyRun.hpp"
 #include "problems/study/Sampling.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
@@ -175,6 +178,58 @@ TEST_SUITE("design studies") {
 }
 
 TEST_SUITE("design studies") {
+  TEST_CASE("a study's ranges in mm are the study in m; a unit of another dimension is refused") {
+    // The pump rod's stroke eta and wear w0 are lengths: a grid written in mm gives the values
+    // written in m bit for bit (0.2 = 200 x 0.001 exactly in binary), so the two tables agree
+    // byte for byte.
+    const auto scratch = scratchDir("study-units");
+    const std::string rod = fileContents(problemsDir() / "pump_rod.yaml");
+    auto studyOf = [&](const std::string& name, const std::string& parameters) {
+      const auto path = scratch / (name + ".yaml");
+      std::ofstream(path) << rod + "\nstudy:\n  parameters:\n" + parameters +
+                                 "  outputs: [reaction middle uy, stress max]\n";
+      DesignStudyRequest r;
+      r.deckPath = path.string();
+      r.outDir = (scratch / name).string();
+      return r;
+    };
+    const DesignStudyOutcome metres = runDesignStudy(studyOf(
+        "metres", "    eta: {from: 0, to: 0.4, steps: 2}\n    w0: {values: [0.5e-3, 1.5e-3]}\n"));
+    const DesignStudyOutcome millimetres = runDesignStudy(
+        studyOf("millimetres",
+                "    eta: {from: 0, to: 400 mm, steps: 2}\n    w0: {values: [0.5 mm, 1.5 mm]}\n"));
+    CHECK(metres.points == 6);
+    CHECK(fileContents(millimetres.dir / "study.csv") == fileContents(metres.dir / "study.csv"));
+
+    // A distribution's numbers take the unit too (sigma of a lognormal is a pure number).
+    auto sampled = [&](const std::string& w0) {
+      const std::string text =
+          rod + "\nstudy:\n  parameters:\n    w0: " + w0 + "\n  sampling: random\n  samples: 4\n";
+      const DeckSource source = parseDeckText(text, "rod.yaml");
+      return readDesignStudy(source, readDeck(source), {}).parameters.at(0).distribution.value();
+    };
+    const StudyDistribution si =
+        sampled("{distribution: normal, mean: 1e-3, sd: 0.2e-3, lower: 0}");
+    const StudyDistribution mm =
+        sampled("{distribution: normal, mean: 1 mm, sd: 0.2 mm, lower: 0 m}");
+    CHECK(mm.first == si.first);
+    CHECK(mm.second == si.second);
+    CHECK(mm.lower == si.lower);
+
+    // Another dimension is refused at the line and column of the value, naming the field.
+    try {
+      runDesignStudy(studyOf("wrong", "    eta: {from: 0, to: 400 kg, steps: 2}\n"));
+      FAIL("a mass was taken for the stroke");
+    } catch (const DeckError& e) {
+      const std::string what = e.what();
+      const std::string line = std::to_string(std::count(rod.begin(), rod.end(), '\n') + 4);
+      CHECK(what.find("wrong.yaml:" + line +
+                      ":24: study.parameters.eta.to: to expects a length "
+                      "(m), got a mass (kg)") != std::string::npos);
+    }
+    std::filesystem::remove_all(scratch);
+  }
+
   TEST_CASE("a deck's study: block samples by Latin hypercube; its mistakes name their line") {
     // The Latin hypercube's sample mean of a linear output is far closer to the exact mean
     // than random sampling's: each of the n strata of w0 holds one point, uniform inside its
