@@ -58,7 +58,7 @@ class Inference {
         ++indirect;
       }
       if (std::find(parameters_.begin(), parameters_.end(), name) != parameters_.end())
-        record(name, BareUse{d, where.file, where.place}, indirect);
+        record(name, BareUse{d, where.file, where.place, where.bareSize}, indirect);
       const auto own = texts_.find(name);
       if (own == texts_.end()) return;
       text = own->second;
@@ -153,7 +153,8 @@ std::map<std::string, BareUse> bareDimensions(
   Inference inference(evaluator, parameters, texts);
   for (const NumericRead& r : reads)
     if (r.bare)
-      inference.flow(r.text, r.unit.dimension, BareUse{r.unit.dimension, r.file, r.place});
+      inference.flow(r.text, r.unit.dimension,
+                     BareUse{r.unit.dimension, r.file, r.place, r.unit.bareSize});
   return inference.found;
 }
 

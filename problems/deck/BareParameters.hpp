@@ -26,6 +26,9 @@ struct BareUse {
   Dimension dimension;
   std::string file;
   DeckPlace place;  ///< field: the field's path
+  /// The field's bare unit in SI units (2 pi / 60 for a *_rpm field): the parameter's bare
+  /// numbers are in it, so a value with a unit cannot stand for one (BareParameters.cpp).
+  double bareSize = 1;
 };
 
 /// "deck.yaml:12 (segments[0].length)", for messages.

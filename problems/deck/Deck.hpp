@@ -199,7 +199,8 @@ struct Deck {
   std::vector<std::pair<std::string, Dimension>> dimensions;
   /// The dimensions the parameters written without a unit take from the fields they flow
   /// into (BareParameters.hpp): a command-line value with a unit must have it.
-  std::vector<std::pair<std::string, Dimension>> bareDimensions;
+  /// A field reading bare numbers in another unit (rpm) gives that unit's size as well.
+  std::vector<std::pair<std::string, FieldUnit>> bareDimensions;
   /// "file:line:col: field: message" lines for implausible values (MaterialPlausibility.hpp).
   std::vector<std::string> warnings;
 

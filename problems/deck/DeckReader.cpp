@@ -212,16 +212,21 @@ void checkBareParameters(Context& c, const std::vector<NumericRead>& reads) {
     if (c.evaluator.dimensionOf(name).dimensionless()) bare.push_back(name);
   const std::map<std::string, BareUse> found =
       bareDimensions(reads, c.evaluator, bare, c.bareTexts);
-  for (const auto& [name, use] : found) c.deck.bareDimensions.emplace_back(name, use.dimension);
+  for (const auto& [name, use] : found)
+    c.deck.bareDimensions.emplace_back(name, FieldUnit{use.dimension, use.bareSize});
   // Read again with the dimension found: a unit of another is refused at its field, and the
   // read is logged with its unit like any other.
   for (const auto& [name, f] : c.valuesOfBare)
-    parameterValue(f, c.evaluator, name, parameterDimension(c.deck, name));
+    parameterValue(f, c.evaluator, name, parameterUnit(c.deck, name));
   for (const ParameterOverride& o : c.unitOverridesOfBare) {
     const auto it = found.find(o.name);
     if (it == found.end()) {
       if (auto why = overrideMismatch(o.name, *o.dimension, Dimension{}))
         throw DeckError(c.deck.path, {0, 0, "--set " + o.text}, *why);
+    } else if (auto why = unitInBareUnit(o.name, *o.dimension, FieldUnit{it->second.dimension,
+                                                                          it->second.bareSize})) {
+      throw DeckError(c.deck.path, {0, 0, "--set " + o.text},
+                      *why + " (its use at " + describeUse(it->second) + ")");
     } else if (it->second.dimension != *o.dimension) {
       throw DeckError(c.deck.path, {0, 0, "--set " + o.text},
                       o.name + " is " + describeDimension(it->second.dimension) +

@@ -4,6 +4,7 @@
 // in two dimensions is refused naming the uses.
 #include <doctest/doctest.h>
 
+#include <numbers>
 #include <string>
 
 #include "problems/deck/DeckReader.hpp"
@@ -25,8 +26,8 @@ Deck readWith(const std::string& text, const std::vector<std::string>& sets) {
 }
 
 std::optional<Dimension> bareDimension(const Deck& deck, const std::string& name) {
-  for (const auto& [n, d] : deck.bareDimensions)
-    if (n == name) return d;
+  for (const auto& [n, unit] : deck.bareDimensions)
+    if (n == name) return unit.dimension;
   return std::nullopt;
 }
 
@@ -183,5 +184,33 @@ TEST_SUITE("deck units") {
               "tells its dimension") != std::string::npos);
     // A bare value stays SI, whatever the field.
     CHECK(test::deckValue(readWith(kBare, {"L=3"}), "L") == 3);
+  }
+
+  TEST_CASE("a bare parameter read in rpm takes bare numbers only, never an SI value as rpm") {
+    // n flows into speed_rpm, whose bare numbers are rpm: 3000 rpm typed with its unit would
+    // be 314.16 rad/s in SI and then read as 314.16 rpm, a tenth of what was asked. Bare
+    // numbers stay rpm; a value with a unit is refused wherever it is given.
+    const std::string rotor =
+        "parameters: {n: 3000}\n"
+        "model: {dimension: lateral}\n"
+        "materials: [{name: steel, E: 210e9, nu: 0.3, rho: 7850}]\n"
+        "sections: [{name: shaft, shape: circle, D: 0.05}]\n"
+        "segments: [{length: 1, section: shaft, elements: 4}]\n"
+        "supports: [{name: a, at: start, fix: [uy, uz]}, {name: b, at: end, fix: [uy, uz]}]\n"
+        "analyses: [{type: rotor, name: spin, speed_rpm: n, modes: 2}]\n";
+    const Deck bare = readWith(rotor, {"n=1500"});
+    CHECK(bare.analyses.at(0).as<RotorSpec>()->rotor.speed ==
+          doctest::Approx(1500 * 2 * std::numbers::pi / 60).epsilon(1e-15));
+    CHECK(readFailure(rotor, {"n=1500 rpm"}).find(
+              "n has no unit in the deck and flows into a field that reads bare numbers in rpm") !=
+          std::string::npos);
+    CHECK_THROWS_WITH_AS(parseSweepOption("n=1000 rpm:2000 rpm:2", bare),
+                         doctest::Contains("reads bare numbers in rpm"), DeckError);
+    const std::string swept = rotor + "sweep: {parameter: n, values: [1000, 2000 rpm]}\n";
+    const std::string why = readFailure(swept, {});
+    CHECK(why.find("bare.yaml:8") != std::string::npos);
+    CHECK(why.find("reads bare numbers in rpm") != std::string::npos);
+    CHECK(readWith(rotor + "sweep: {parameter: n, values: [1000, 2000]}\n", {}).sweep->values ==
+          std::vector<double>{1000, 2000});
   }
 }

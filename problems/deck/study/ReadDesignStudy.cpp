@@ -195,7 +195,7 @@ StudyParameter readParameter(const StudyContext& s, const std::string& name, con
   p.place = f.place();
   requireFreeParameter(s.deck, name, taken, [&](const std::string& why) { f.fail(why); });
   // Written with a unit or told by the fields it flows into: values with a unit must have it.
-  const Dimension own = parameterDimension(s.deck, name);
+  const FieldUnit own = parameterUnit(s.deck, name);
   const auto value = [&](const Field& v) { return parameterValue(v, s.c.evaluator, name, own); };
   if (!f.isMap()) f.fail("expected a map such as {from: 0, to: 1, steps: 10}, got " + f.describe());
   if (auto kind = f.get("distribution")) {

@@ -23,37 +23,58 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 }  // namespace
 
+FieldUnit parameterUnit(const Deck& deck, const std::string& parameter) {
+  for (const auto& [name, d] : deck.dimensions)
+    if (name == parameter) return FieldUnit{d};
+  for (const auto& [name, unit] : deck.bareDimensions)
+    if (name == parameter) return unit;
+  return FieldUnit{};
+}
+
 Dimension parameterDimension(const Deck& deck, const std::string& parameter) {
-  for (const auto* named : {&deck.dimensions, &deck.bareDimensions})
-    for (const auto& [name, d] : *named)
-      if (name == parameter) return d;
-  return Dimension{};
+  return parameterUnit(deck, parameter).dimension;
+}
+
+std::optional<std::string> unitInBareUnit(const std::string& parameter, const Dimension& given,
+                                          const FieldUnit& own) {
+  if (own.bareSize == 1 || given.dimensionless()) return std::nullopt;
+  const std::string unit = own.bareSize == kRpmField.bareSize ? std::string("rpm")
+                                                              : "units of " + siUnitOf(own.dimension);
+  return parameter + " has no unit in the deck and flows into a field that reads bare numbers " +
+         "in " + unit + ": give its value without a unit, in " + unit +
+         ", or write the deck's value of " + parameter + " with its unit";
 }
 
 double parameterValue(const Field& f, const ExpressionEvaluator& evaluator,
-                      const std::string& parameter, const Dimension& own) {
-  if (own.dimensionless()) {
+                      const std::string& parameter, const FieldUnit& own) {
+  const Amount a = f.amount(evaluator);
+  const bool hasUnit = !a.anyDimension && !a.dimension.dimensionless();
+  if (own.dimension.dimensionless() && hasUnit) {
     // Nothing tells what a unit here should be (a bare parameter no field gives a dimension):
     // say so, as for the same value typed on the command line.
-    const Amount a = f.amount(evaluator);
-    if (!a.anyDimension && !a.dimension.dimensionless())
-      if (auto why = overrideMismatch(parameter, a.dimension, own)) f.fail(*why);
+    if (auto why = overrideMismatch(parameter, a.dimension, own.dimension)) f.fail(*why);
   }
-  return f.number(evaluator, FieldUnit{own});
+  if (hasUnit)
+    if (auto why = unitInBareUnit(parameter, a.dimension, own)) f.fail(*why);
+  // A bare number is taken as it is, in the parameter's own bare unit.
+  return f.number(evaluator, FieldUnit{own.dimension});
 }
 
 double parameterValueOption(const std::string& text, const std::string& parameter,
                             const Deck& deck, const DeckPlace& place) {
-  const Dimension own = parameterDimension(deck, parameter);  // values with a unit must have it
+  const FieldUnit own = parameterUnit(deck, parameter);  // values with a unit must have it
   Amount a;
   try {
     a = ExpressionEvaluator().amount(text);
   } catch (const ExpressionError& e) {
     throw DeckError(deck.path, place, e.what());
   }
-  if (!a.anyDimension && !a.dimension.dimensionless())
-    if (auto why = overrideMismatch(parameter, a.dimension, own))
+  if (!a.anyDimension && !a.dimension.dimensionless()) {
+    if (auto why = overrideMismatch(parameter, a.dimension, own.dimension))
       throw DeckError(deck.path, place, *why);
+    if (auto why = unitInBareUnit(parameter, a.dimension, own))
+      throw DeckError(deck.path, place, *why);
+  }
   return a.si;
 }
 

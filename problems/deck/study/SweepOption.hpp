@@ -26,15 +26,25 @@ DeckSweep parseSweepOption(const std::string& argument, const Deck& deck);
 double parameterValueOption(const std::string& text, const std::string& parameter,
                             const Deck& deck, const DeckPlace& place);
 
-/// The dimension `parameter` of `deck` has: its unit's when the deck writes it with one, else
-/// the one the fields it flows into tell (Deck::bareDimensions); dimensionless when neither.
+/// The unit `parameter` of `deck` has: its dimension's SI unit when the deck writes it with a
+/// unit, else the dimension the fields it flows into tell (Deck::bareDimensions) with the bare
+/// unit of such a field (rpm for a *_rpm field); dimensionless when neither.
+FieldUnit parameterUnit(const Deck& deck, const std::string& parameter);
+/// The dimension of parameterUnit.
 Dimension parameterDimension(const Deck& deck, const std::string& parameter);
 
-/// The SI value of field `f`, a value for `parameter` whose dimension is `own`: a bare number
-/// is in SI units of `own`, one with a unit must have `own`. Fails at `f` naming the field
-/// ("values[1] expects a length (m), got a time (s)"), and for a parameter that neither a unit
-/// nor a field gives a dimension, says so.
+/// Why a value with a unit (of dimension `given`) cannot be given to `parameter`, whose bare
+/// numbers a field reads in a unit other than SI (own.bareSize, e.g. rpm): converting it to
+/// SI would be read as rpm. nullopt when it can.
+std::optional<std::string> unitInBareUnit(const std::string& parameter, const Dimension& given,
+                                          const FieldUnit& own);
+
+/// The value of field `f`, a value for `parameter` whose unit is `own`: a bare number as it
+/// is (in own's bare unit), one with a unit must have own's dimension and is then in SI.
+/// Fails at `f` naming the field ("values[1] expects a length (m), got a time (s)"), for a
+/// parameter that neither a unit nor a field gives a dimension says so, and refuses a unit
+/// for a parameter read in a bare unit other than SI (unitInBareUnit).
 double parameterValue(const Field& f, const ExpressionEvaluator& evaluator,
-                      const std::string& parameter, const Dimension& own);
+                      const std::string& parameter, const FieldUnit& own);
 
 }  // namespace beamrotor
