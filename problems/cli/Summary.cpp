@@ -6,6 +6,8 @@
 #include <optional>
 #include <variant>
 
+#include "fem/assembly/ReducedSystem.hpp"
+#include "fem/model/DofMap.hpp"
 #include "problems/cli/AdequateSummary.hpp"
 #include "problems/cli/CrankSummary.hpp"
 #include "problems/cli/MemberSummary.hpp"
@@ -32,15 +34,16 @@ SystemSize sizeOf(const RunResult& run) {
         Overloaded{[](const StaticOutcome& r) -> Size { return r.statics.size; },
                    [](const SecondOrderResult& r) -> Size { return r.secondOrder.size; },
                    [](const ModalResult& r) -> Size { return r.size; },
-                   [](const TorsionOutcome& r) -> Size { return r.modes.size; },
                    [](const BucklingResult& r) -> Size { return r.size; },
                    [](const TransientOutcome& r) -> Size { return r.result.size; },
                    [](const RotorModesResult& r) -> Size { return r.size; },
                    [](const CampbellOutcome& r) -> Size { return r.campbell.size; },
                    [](const UnbalanceOutcome& r) -> Size { return r.unbalance.size; },
                    [](const FrequencyResponseOutcome& r) -> Size { return r.response.size; },
-                   // These keep no system size: the model line takes it from the
-                   // first analysis that does.
+                   // These keep no system size of the deck's model (a torsion analysis
+                   // solves its own, in twist alone): the model line takes it from the
+                   // first analysis that does, or from the model itself.
+                   [](const TorsionOutcome&) -> Size { return std::nullopt; },
                    [](const RigidBodyOutcome&) -> Size { return std::nullopt; },
                    [](const CriticalSpeedMapOutcome&) -> Size { return std::nullopt; },
                    [](const BearingLoadsOutcome&) -> Size { return std::nullopt; },
@@ -48,7 +51,7 @@ SystemSize sizeOf(const RunResult& run) {
         a.result);
     if (size) return *size;
   }
-  return {};
+  return systemSize(*run.model, DofMap(*run.model), 0, 0);
 }
 
 /// The points worth reporting: the deck's own, or start and end when it names none.

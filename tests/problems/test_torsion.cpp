@@ -203,6 +203,9 @@ TEST_SUITE("torsion") {
     const auto p = test::runBeamrotor({"solve", deckPath.string(), "--out", (dir / "out").string()});
     REQUIRE(p.exitCode == 0);
     CHECK(p.out.find("torsion analysis 'twist' (2 modes)") != std::string::npos);
+    // The model line counts the deck's model (lateral: 4 dofs at each of 13 nodes, the 12
+    // elements and the 2 masses), not the torsion analysis' own (1 dof per node).
+    CHECK(p.out.find("model: lateral, 13 nodes, 14 elements, 52 dofs") != std::string::npos);
     CHECK(p.out.find("the train turning as one") != std::string::npos);
     const auto json =
         nlohmann::json::parse(test::fileContents(dir / "out" / "results.json"));
