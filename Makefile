@@ -32,7 +32,8 @@ CMAKE_WERROR := -DBEAMROTOR_WERROR=$(if $(filter 1 ON On on YES yes TRUE true,$(
 # and the Python module (package); the test suite only for test and hostile.
 BUILD_EXE := cmake --build $(BUILD) -j $(JOBS) --target beamrotor
 
-# Installs what is missing and never removes anything: when Debian can install a package only by
+# Installs what is missing (without Debian's recommended extras: the project names all it needs,
+# and the extras are a sixth of the download) and never removes anything: when Debian can install a package only by
 # removing one the machine has (libvtk9-dev beside ParaView's python3-paraview, for one), or
 # cannot install it at all beside them, it stops, changes nothing, names the packages that stand
 # in each other's way and the way out.
@@ -63,7 +64,7 @@ deps:
 	    case " $$missing " in *" paraview-dev "*) echo "beamrotor: or build against Debian's VTK instead of paraview-dev: make VTK_PACKAGE=libvtk9-dev $(MAKECMDGOALS)" >&2;; esac; \
 	    exit 1; \
 	  fi; \
-	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-remove $$missing; \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-remove --no-install-recommends $$missing; \
 	fi
 
 configure: deps
