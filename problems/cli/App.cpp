@@ -231,7 +231,14 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->type_name("THEORY");
   studyCmd
       ->add_option("--out,-o", study.outDir,
-                   "output directory (default: out/<deck name>_study/); replaced as a whole")
+                   "output directory (default: out/<deck name>_study/, or where the resumed "
+                   "study was going); replaced as a whole")
+      ->type_name("DIR");
+  studyCmd
+      ->add_option("--resume", study.resumeDir,
+                   "continue the study that was stopped in DIR (its partial results, or the "
+                   "DIR.tmp-XXXXXX a killed run left), solving only its missing points; give "
+                   "the deck and options it was run with")
       ->type_name("DIR");
 
   if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
