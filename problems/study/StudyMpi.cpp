@@ -122,6 +122,10 @@ constexpr int kRowsTag = 1;      // worker -> manager: finished rows, asking for
 constexpr int kChunkTag = 2;     // manager -> worker: [begin, end), empty to stop
 constexpr int kStopTag = 3;      // manager -> worker: stop after the point in progress
 constexpr int kLastRowsTag = 4;  // worker -> manager: the rows finished before stopping
+constexpr int kReleaseTag = 5;   // manager -> worker: the results are written, end now
+
+/// How long a stopped rank waits for rank 0 to write the results (s); mpirun ends it sooner.
+constexpr double kReleaseWaitSeconds = 10;
 
 bool launchedByMpirun() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
@@ -310,10 +314,32 @@ MpiSession::MpiSession() {
 }
 
 MpiSession::~MpiSession() {
-  // After a stop, a rank may be gone: MPI_Finalize would wait for it. The process ends by
-  // the signal right after (main), which mpirun expects of it.
-  if (mpiStarted() && pendingInterruption() == 0) MPI_Finalize();
+  if (!mpiStarted()) return;
   mpiStarted() = false;
+  if (pendingInterruption() == 0) {
+    MPI_Finalize();
+    return;
+  }
+  // Stopped by a signal. A rank may be gone, so MPI_Finalize could wait for ever; each process
+  // ends by the signal right after (main). But mpirun kills every rank at once when one of
+  // them ends: the others wait until rank 0 has written the results and lets them go.
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  static const std::int64_t releaseWord = 1;  // outlives the unawaited sends
+  if (rank == 0) {
+    for (int r = 1; r < ranks; ++r) {
+      MPI_Request request;
+      MPI_Isend(&releaseWord, 1, MPI_INT64_T, r, kReleaseTag, MPI_COMM_WORLD, &request);
+      MPI_Request_free(&request);
+    }
+    return;
+  }
+  const double until = secondsNow() + kReleaseWaitSeconds;
+  for (int released = 0; !released && secondsNow() < until;) {
+    MPI_Iprobe(0, kReleaseTag, MPI_COMM_WORLD, &released, MPI_STATUS_IGNORE);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
 }
 
 int MpiSession::rank() {
