@@ -73,9 +73,10 @@ std::string PointRanges::text(std::size_t most) const {
     }
   }
   if (runs_.size() > most) {
-    out += ", ... (";
+    out += out.empty() ? "" : ", ";
+    out += "... and ";
     out += std::to_string(runs_.size() - most);
-    out += " more runs)";
+    out += " more";
   }
   return out;
 }

@@ -29,7 +29,7 @@ class PointRanges {
   /// The last point of the run that holds the position-th point.
   long long lastInRun(long long position) const;
   const std::vector<Run>& runs() const { return runs_; }
-  /// "0-99, 150, 200-210" (runs joined; at most `most` of them, then ", ... (N more runs)").
+  /// "0-99, 150, 200-210" (runs joined; at most `most` of them, then ", ... and N more").
   std::string text(std::size_t most = 20) const;
 
  private:
