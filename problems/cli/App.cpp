@@ -21,7 +21,8 @@ namespace {
 constexpr const char* kDescription =
     "beamrotor: finite-element beams and rotors.\n"
     "Solves the engineering scenes described by YAML decks (see problems/*.yaml).\n"
-    "Exit codes: 0 ok, 1 an analysis failed, 2 bad input, 3 a check failed (check).";
+    "Exit codes: 0 ok, 1 an analysis failed (study: no point succeeded), 2 bad input, 3 a check\n"
+    "failed (check); stopped by SIGINT or SIGTERM: ended by the signal (130, 143).";
 
 /// The options every deck-reading subcommand shares.
 void addDeckOptions(CLI::App& sub, StudyRequest& request) {
