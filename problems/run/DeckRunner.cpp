@@ -15,7 +15,6 @@
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/parse/Field.hpp"
-#include "problems/deck/parse/SceneFunctions.hpp"
 #include "problems/deck/parse/Units.hpp"
 #include "problems/run/AdequateModel.hpp"
 #include "problems/run/Measure.hpp"
@@ -76,7 +75,6 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
   AnalysisOutcome out;
   out.type = a.type();
   out.name = a.name;
-  const ClosedFormBudget budget;  // the closed forms' work (time loads, histories), bounded
   try {
     out.result = std::visit(
         Overloaded{

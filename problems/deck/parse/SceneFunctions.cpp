@@ -23,8 +23,8 @@ void chargeCycles(long long cycles) {
     throw mu::Parser::exception_type(
         "the closed-form functions may compute at most " +
         std::to_string(kMostClosedFormCycles) +
-        " MO-10 cycles in all while a deck is read or an analysis runs (each expression is "
-        "evaluated in several systems of units, and each evaluation counts); this call of " +
+        " MO-10 cycles in all while a deck is read (each expression is evaluated in several "
+        "systems of units, and each evaluation counts); this call of " +
         std::to_string(cycles) + " cycles would take them past it, " +
         std::to_string(cyclesCounted) + " being computed already");
   cyclesCounted += cycles;
