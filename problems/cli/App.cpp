@@ -21,7 +21,8 @@ namespace {
 constexpr const char* kDescription =
     "beamrotor: finite-element beams and rotors.\n"
     "Solves the engineering scenes described by YAML decks (see problems/*.yaml).\n"
-    "Exit codes: 0 ok, 1 an analysis failed, 2 bad input, 3 a check failed (check).";
+    "Exit codes: 0 ok, 1 an analysis failed (study: no point succeeded), 2 bad input, 3 a check\n"
+    "failed (check); stopped by SIGINT or SIGTERM: ended by the signal (130, 143).";
 
 /// The options every deck-reading subcommand shares.
 void addDeckOptions(CLI::App& sub, StudyRequest& request) {
@@ -231,7 +232,14 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->type_name("THEORY");
   studyCmd
       ->add_option("--out,-o", study.outDir,
-                   "output directory (default: out/<deck name>_study/); replaced as a whole")
+                   "output directory (default: out/<deck name>_study/, or where the resumed "
+                   "study was going); replaced as a whole")
+      ->type_name("DIR");
+  studyCmd
+      ->add_option("--resume", study.resumeDir,
+                   "continue the study that was stopped in DIR (its partial results, or the "
+                   "DIR.tmp-XXXXXX a killed run left), solving only its missing points; give "
+                   "the deck and options it was run with")
       ->type_name("DIR");
 
   if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {

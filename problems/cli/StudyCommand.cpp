@@ -1,7 +1,10 @@
 // `beamrotor study`: runs a design study (problems/study/DesignStudyRun.hpp) and prints its
 // summary: per output the range, mean and spread, per check the pass rate, the exceedance
-// probabilities of a sampled study, the worst point, the time and points per second.
+// probabilities of a sampled study, the worst point, the time and points per second; for a
+// study that was stopped, the points missing and how to continue it. Exit 1 when no point
+// succeeded; a stopped study ends by its signal (main).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 
@@ -9,7 +12,9 @@
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/Guarded.hpp"
 #include "problems/cli/Progress.hpp"
+#include "problems/study/DesignStudyRun.hpp"
 #include "problems/study/StudyMpi.hpp"
+#include "problems/study/StudyResume.hpp"
 
 namespace beamrotor::cli {
 
@@ -29,10 +34,32 @@ std::string probabilityText(const Json& p) {
   return text;
 }
 
+std::string parametersText(const Json& parameters) {
+  std::string text;
+  for (const auto& [name, value] : parameters.items()) {
+    text += " ";
+    text += name;
+    text += " = ";
+    text += formatFigure(value);
+  }
+  return text;
+}
+
 void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
   const Json& s = o.summary;
-  out << "study " << s["deck"].get<std::string>() << ": " << s["points"] << " points ("
-      << s["sampling"].get<std::string>() << "), " << s["failed"] << " failed\n";
+  out << "study " << s["deck"].get<std::string>() << ": ";
+  if (o.partial()) out << s["points"] << " of " << s["points"].get<long long>() + o.missing.size();
+  else out << s["points"];
+  out << " points (" << s["sampling"].get<std::string>() << "), " << s["failed"] << " failed";
+  if (o.partial()) out << "; stopped by " << s["stopped_by"].get<std::string>();
+  out << "\n";
+  out << "  ranks: " << o.ranks.ranks
+      << (o.ranks.ranks > 1 ? " (MPI; one point at a time per rank)"
+                            : ", threads: " + std::to_string(o.threads))
+      << "\n";
+  if (o.resumed > 0)
+    out << "  resumed: " << o.resumed << " rows from the study resumed, "
+        << o.points - o.resumed << " solved now\n";
   out << "  path: "
       << (s["path"].get<std::string>() == "lean"
               ? "lean (the deck parsed once; each point re-evaluates its expressions from byte "
@@ -61,22 +88,20 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
       out << ", failure probability " << probabilityText(check["failure"]);
     out << "\n";
   }
-  if (s.contains("worst_point")) {
-    out << "  worst point " << s["worst_point"]["point"] << ":";
-    for (const auto& [name, value] : s["worst_point"]["parameters"].items())
-      out << " " << name << " = " << formatFigure(value);
-    out << "\n";
-  }
+  if (s.contains("worst_point"))
+    out << "  worst point " << s["worst_point"]["point"] << ":"
+        << parametersText(s["worst_point"]["parameters"]) << "\n";
   for (const Json& failure : s["failures"])
-    out << "  point " << failure["point"] << " failed: " << failure["status"].get<std::string>()
-        << "\n";
+    out << "  point " << failure["point"] << " (" << parametersText(failure["parameters"]).substr(1)
+        << ") failed: " << failure["status"].get<std::string>() << "\n";
   char line[256];
+  const long long solvedHere = o.points - o.resumed;
   std::snprintf(line, sizeof line, "time: %.3f s, %.0f points/s\n", o.seconds,
-                o.seconds > 0 ? double(o.points) / o.seconds : 0.0);
+                o.seconds > 0 ? double(solvedHere) / o.seconds : 0.0);
   out << line;
-  if (o.points == 0) return;
+  if (solvedHere <= 0) return;
   // Per point, on the core that solved it (microseconds).
-  const double us = 1e6 / double(o.points);
+  const double us = 1e6 / double(solvedHere);
   const PointCost& c = o.cost;
   std::snprintf(line, sizeof line,
                 "per point (us): read deck %.1f, model %.1f, assemble %.1f, factorise %.1f, "
@@ -84,6 +109,37 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
                 c.read * us, c.model * us, c.assembly * us, c.factor * us, c.solve * us,
                 c.measure * us, o.rowSeconds * us);
   out << line;
+}
+
+/// A study into a directory holding a partial study replaces it: said first, with the way
+/// to continue it instead.
+void warnBeforeReplacingPartial(const DesignStudyRequest& request, std::ostream& err) {
+  if (!request.resumeDir.empty()) return;
+  const std::filesystem::path dir = request.outDir.empty()
+                                        ? defaultStudyDirectory(request.deckPath)
+                                        : std::filesystem::path(request.outDir);
+  std::error_code ec;
+  if (std::filesystem::exists(dir / kResumeFile, ec))
+    err << "beamrotor study: warning: replacing the partial study in " << dir.string()
+        << " when this one is written; --resume " << dir.string() << " would continue it\n";
+}
+
+/// The results directory's contents, as the console names them.
+std::string contentsText(const DesignStudyOutcome& o) {
+  std::string text = "study.csv, summary.json";
+  if (o.worstWritten) text += ", worst/";
+  if (o.partial()) {
+    text += ", ";
+    text += kResumeFile;
+  }
+  return text;
+}
+
+/// The `beamrotor study` line that continues a stopped study in `dir`.
+void printHowToResume(std::ostream& out, const DesignStudyOutcome& o) {
+  out << "stopped by " << o.summary["stopped_by"].get<std::string>() << ": " << o.points
+      << " rows kept, " << o.missing.size() << " points missing (" << o.missing.text()
+      << "); continue with the same command and --resume " << o.dir.string() << "\n";
 }
 
 }  // namespace
@@ -96,6 +152,7 @@ int studyCommand(const DesignStudyRequest& request, std::ostream& out, std::ostr
   return guarded(errors, [&] {
     std::unique_ptr<ProgressBar> shown;
     DesignStudyOutcome outcome;
+    warnBeforeReplacingPartial(request, errors);
     try {
       outcome = runDesignStudy(request, [&](long long done, long long total) {
         if (!shown) shown = std::make_unique<ProgressBar>(errors, ProgressBar::wanted(int(total)));
@@ -110,7 +167,16 @@ int studyCommand(const DesignStudyRequest& request, std::ostream& out, std::ostr
     shown.reset();
     if (!outcome.writer) return int(kOk);
     printStudySummary(out, outcome);
-    out << "results: " << outcome.dir.string() << "/ (study.csv, summary.json, worst/)\n";
+    out << "results: " << outcome.dir.string() << "/ (" << contentsText(outcome) << ")\n";
+    if (!outcome.resumeNote.empty()) out << outcome.resumeNote << "\n";
+    for (const std::string& lost : outcome.ranks.lost)
+      errors << "beamrotor study: lost " << lost << "; its unfinished points are missing\n";
+    if (outcome.partial()) printHowToResume(errors, outcome);
+    if (outcome.points > 0 && outcome.failed == outcome.points) {
+      errors << "beamrotor study: no point succeeded (" << outcome.failed
+             << " failed; summary.json lists them)\n";
+      return int(kSolveFailure);
+    }
     return int(kOk);
   });
 }

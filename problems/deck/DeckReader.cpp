@@ -8,6 +8,7 @@
 
 #include "problems/deck/BareParameters.hpp"
 #include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/parse/SceneFunctions.hpp"
 #include "problems/deck/structure/Formulations.hpp"
 #include "problems/deck/structure/MaterialPlausibility.hpp"
 #include "problems/deck/ReaderContext.hpp"
@@ -246,6 +247,7 @@ namespace {
 
 Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
                   ExpressionMemo* memo) {
+  const ClosedFormBudget budget;  // the closed forms' work, bounded per reading
   Deck deck;
   deck.path = source.path;
   deck.stem = source.stem;

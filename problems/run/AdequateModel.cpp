@@ -11,6 +11,7 @@
 #include "problems/deck/structure/Formulations.hpp"
 #include "problems/run/ConvergeMethods.hpp"
 #include "problems/run/DeckRunner.hpp"
+#include "problems/run/UntrustedStatics.hpp"
 
 namespace beamrotor {
 
@@ -30,7 +31,7 @@ double largestChange(const RunResult& a, const RunResult& b) {
 
 /// A level of the search: the deck with 2^level elements on every segment.
 Deck atLevel(const Deck& deck, int level) {
-  Deck d = deck;
+  Deck d = acceptingRoundOff(deck);  // the search measures round-off itself
   d.accuracy.reset();
   for (DeckSegment& s : d.segments) {
     s.elements = 1 << level;
@@ -168,7 +169,7 @@ RunResult runAdequateModel(const Deck& deck) {
   }
 
   // 3. The chosen model and the deck's own mesh, each solved once more for their cost.
-  Deck fixed = deck;
+  Deck fixed = acceptingRoundOff(deck);  // only timed: its round-off is no verdict here
   fixed.accuracy.reset();
   const RunResult fixedRun = runDeck(fixed);
   RunResult run = runDeck(chosenDeck);

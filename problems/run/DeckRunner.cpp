@@ -28,6 +28,7 @@
 #include "problems/run/RunTorsion.hpp"
 #include "problems/run/RunTransient.hpp"
 #include "problems/run/SweepRefinement.hpp"
+#include "problems/run/UntrustedStatics.hpp"
 
 namespace beamrotor {
 
@@ -82,9 +83,14 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
               StaticOptions options;
               if (cache) options.reuse = &cache->statics;
               StaticOutcome statics{solveStatic(model, options), {}};
+              if (!spec.acceptRoundOff) refuseUntrustedStatics(deck, model, statics.statics);
               if (auto w = overRefinementWarning(model, statics.statics)) out.warnings.push_back(*w);
               if (auto w = displacementWarning(model, statics.statics)) out.warnings.push_back(*w);
               statics.cases = solveCases(deck, options);
+              if (!spec.acceptRoundOff)
+                for (const CaseOutcome& c : statics.cases)
+                  refuseUntrustedStatics(deck, *c.model, c.statics,
+                                         (c.combination ? "combination " : "load case ") + c.name);
               return statics;
             },
             [&](const BucklingSpec& spec) -> AnalysisResult {

@@ -1,14 +1,24 @@
 #include "problems/study/StudyMpi.hpp"
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cstdint>
-#include <initializer_list>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <initializer_list>
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <tuple>
+
+#include "problems/output/files/Interruption.hpp"
 
 #ifdef BEAMROTOR_MPI
 #include <mpi.h>
@@ -92,9 +102,11 @@ MpiSession::~MpiSession() {}
 int MpiSession::rank() { return 0; }
 int MpiSession::size() { return 1; }
 
-void solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points, int threads,
-                       const RowSink& sink) {
-  solvePoints(plan, points, threads, sink);
+RankReport solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points,
+                             const PointRanges& todo, int threads, const RowSink& sink,
+                             const StopRequest& stop) {
+  solvePoints(plan, points, todo, threads, sink, stop);
+  return {};
 }
 
 #else
@@ -106,8 +118,14 @@ bool& mpiStarted() {
   return started;
 }
 
-constexpr int kRowsTag = 1;   // worker -> manager: finished rows (none on the first request)
-constexpr int kChunkTag = 2;  // manager -> worker: [begin, end), empty to stop
+constexpr int kRowsTag = 1;      // worker -> manager: finished rows, asking for more
+constexpr int kChunkTag = 2;     // manager -> worker: [begin, end), empty to stop
+constexpr int kStopTag = 3;      // manager -> worker: stop after the point in progress
+constexpr int kLastRowsTag = 4;  // worker -> manager: the rows finished before stopping
+constexpr int kReleaseTag = 5;   // manager -> worker: the results are written, end now
+
+/// How long a stopped rank waits for rank 0 to write the results (s); mpirun ends it sooner.
+constexpr double kReleaseWaitSeconds = 10;
 
 bool launchedByMpirun() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
@@ -115,16 +133,55 @@ bool launchedByMpirun() {
   return false;
 }
 
-StudyRow rowShape(const StudyPlan& plan) {
-  StudyRow shape;
-  shape.parameters.resize(plan.parameterNames.size());
-  shape.outputs.resize(plan.spec.outputs.size());
-  shape.checks.resize(plan.checkNames.size());
-  shape.passed.resize(plan.checkNames.size());
-  return shape;
+/// A rank's process, as the others may name it.
+struct RankProcess {
+  std::int32_t pid = 0;
+  char host[MPI_MAX_PROCESSOR_NAME] = {};
+};
+
+/// Every rank's process, on rank 0 (collective: every rank calls it).
+std::vector<RankProcess> gatherProcesses() {
+  RankProcess mine;
+  mine.pid = std::int32_t(::getpid());
+  int length = 0;
+  MPI_Get_processor_name(mine.host, &length);
+  std::vector<RankProcess> all(std::size_t(MpiSession::size()));
+  MPI_Gather(&mine, int(sizeof mine), MPI_BYTE, all.data(), int(sizeof mine), MPI_BYTE, 0,
+             MPI_COMM_WORLD);
+  return all;
 }
 
-void studyWorker(const StudyPlan& plan, const DesignPoints& points) {
+/// Whether process `pid` of this host has ended (gone, or a zombie not yet reaped).
+bool processGone(int pid) {
+  if (::kill(pid, 0) != 0) return errno == ESRCH;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  std::getline(stat, text);
+  const std::size_t close = text.rfind(')');
+  return close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z';
+}
+
+std::string lostRank(int rank, const RankProcess& process, const RankProcess& manager) {
+  std::string text = "rank " + std::to_string(rank) + " (pid " + std::to_string(process.pid) +
+                     " on " + process.host + "): ";
+  if (std::strcmp(process.host, manager.host) == 0 && processGone(process.pid))
+    return text + "its process is gone (killed?)";
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.1f", kStopAnswerSeconds);
+  return text + "did not answer within " + seconds + " s of the stop";
+}
+
+/// A stop message from rank 0 waiting for this rank (taken when there is one).
+bool stopMessage() {
+  int waiting = 0;
+  MPI_Iprobe(0, kStopTag, MPI_COMM_WORLD, &waiting, MPI_STATUS_IGNORE);
+  if (!waiting) return false;
+  std::int64_t word = 0;
+  MPI_Recv(&word, 1, MPI_INT64_T, 0, kStopTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return true;
+}
+
+void studyWorker(const StudyPlan& plan, const DesignPoints& points, const StopRequest& stop) {
   const PointSolver solver(plan);
   std::string rows;
   for (;;) {
@@ -133,61 +190,115 @@ void studyWorker(const StudyPlan& plan, const DesignPoints& points) {
     MPI_Recv(range, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (range[0] >= range[1]) return;
     rows.clear();
-    for (std::int64_t i = range[0]; i < range[1]; ++i)
+    for (std::int64_t i = range[0]; i < range[1]; ++i) {
+      if (stop() || stopMessage()) {
+        MPI_Send(rows.data(), int(rows.size()), MPI_BYTE, 0, kLastRowsTag, MPI_COMM_WORLD);
+        return;
+      }
       appendRowBytes(rows, solver.solve(i, points.at(i)));
+    }
   }
 }
 
-void studyManager(const StudyPlan& plan, const DesignPoints& points, const RowSink& sink) {
-  const long long n = points.size();
-  const long long chunk = studyChunk(n, MpiSession::size());
-  const StudyRow shape = rowShape(plan);
+double secondsNow() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+/// Rank 0: hands out chunks of `todo` (each inside one run of consecutive points, as index
+/// ranges), solves its own between messages, hands rows on in order as they become
+/// consecutive, and after a stop collects what the others finished.
+RankReport studyManager(const StudyPlan& plan, const DesignPoints& points,
+                        const PointRanges& todo, const RowSink& sink, const StopRequest& stop,
+                        const std::vector<RankProcess>& processes) {
+  const long long n = todo.size();
+  const int ranks = MpiSession::size();
+  const long long chunk = studyChunk(n, ranks);
+  const StudyRow shape = blankRow(plan);
   const PointSolver solver(plan);
   std::map<long long, StudyRow> ready;
-  long long handedOut = 0, next = 0;
-  long long ownBegin = 0, ownEnd = 0;  // the chunk rank 0 is solving itself
-  int stopped = 0;
-  const int workers = MpiSession::size() - 1;
-  auto flush = [&] {
-    for (auto it = ready.find(next); it != ready.end(); it = ready.find(next)) {
-      sink(it->second);
-      ready.erase(it);
-      ++next;
+  long long handedOut = 0;  // positions in todo
+  long long nextOut = 0;    // the position the sink gets next
+  long long ownBegin = 0, ownEnd = 0;  // the index range rank 0 is solving itself
+  std::vector<char> finished(std::size_t(ranks), 0);
+  finished[0] = 1;
+  bool stopping = false;
+  double deadline = 0;
+  static const std::int64_t stopWord = 1;  // outlives the unawaited sends
+  auto takeChunk = [&]() -> std::pair<long long, long long> {
+    if (stopping || handedOut >= n) return {0, 0};
+    const long long begin = todo.at(handedOut);
+    const long long end = std::min(todo.lastInRun(handedOut) + 1, begin + chunk);
+    handedOut += end - begin;
+    return {begin, end};
+  };
+  auto flush = [&](bool all) {
+    while (!ready.empty() &&
+           (all || (nextOut < n && ready.begin()->first == todo.at(nextOut)))) {
+      sink(ready.begin()->second);
+      ready.erase(ready.begin());
+      ++nextOut;
     }
   };
-  auto serve = [&](const MPI_Status& status) {
+  auto receive = [&](const MPI_Status& status) {
     int bytes = 0;
     MPI_Get_count(&status, MPI_BYTE, &bytes);
     std::string rows(std::size_t(bytes), '\0');
-    MPI_Recv(rows.data(), bytes, MPI_BYTE, status.MPI_SOURCE, kRowsTag, MPI_COMM_WORLD,
+    MPI_Recv(rows.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
              MPI_STATUS_IGNORE);
     for (std::size_t offset = 0; offset < rows.size();) {
       StudyRow row = readRowBytes(rows, offset, shape);
       ready.emplace(row.index, std::move(row));
     }
-    std::int64_t range[2] = {handedOut, std::min(n, handedOut + chunk)};
-    handedOut = range[1];
-    if (range[0] >= range[1]) ++stopped;
+    if (status.MPI_TAG == kLastRowsTag) {
+      finished[std::size_t(status.MPI_SOURCE)] = 1;
+      return;
+    }
+    const auto [begin, end] = takeChunk();
+    const std::int64_t range[2] = {begin, end};
+    if (begin >= end) finished[std::size_t(status.MPI_SOURCE)] = 1;
     MPI_Send(range, 2, MPI_INT64_T, status.MPI_SOURCE, kChunkTag, MPI_COMM_WORLD);
   };
-  while (next < n || stopped < workers) {
+  const auto allFinished = [&] {
+    return std::all_of(finished.begin(), finished.end(), [](char f) { return f != 0; });
+  };
+  for (;;) {
+    if (!stopping && stop()) {
+      stopping = true;
+      deadline = secondsNow() + kStopAnswerSeconds;
+      for (int r = 1; r < ranks; ++r) {
+        if (finished[std::size_t(r)]) continue;
+        MPI_Request request;
+        MPI_Isend(&stopWord, 1, MPI_INT64_T, r, kStopTag, MPI_COMM_WORLD, &request);
+        MPI_Request_free(&request);
+      }
+    }
     int waiting = 0;
     MPI_Status status;
-    MPI_Iprobe(MPI_ANY_SOURCE, kRowsTag, MPI_COMM_WORLD, &waiting, &status);
-    if (waiting) {
-      serve(status);
-    } else if (ownBegin < ownEnd) {
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
+    if (waiting && (status.MPI_TAG == kRowsTag || status.MPI_TAG == kLastRowsTag)) {
+      receive(status);
+    } else if (!stopping && ownBegin < ownEnd) {
       ready.emplace(ownBegin, solver.solve(ownBegin, points.at(ownBegin)));
       ++ownBegin;
-    } else if (handedOut < n) {
-      ownBegin = handedOut;
-      ownEnd = handedOut = std::min(n, handedOut + chunk);
+    } else if (!stopping && handedOut < n) {
+      std::tie(ownBegin, ownEnd) = takeChunk();
+    } else if (allFinished() || (stopping && secondsNow() > deadline)) {
+      break;
     } else {
-      MPI_Probe(MPI_ANY_SOURCE, kRowsTag, MPI_COMM_WORLD, &status);  // wait for the others
-      serve(status);
+      // Waiting for the others: polled, not blocked in MPI_Probe, so that a signal (or a
+      // rank that is gone) is seen.
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
-    flush();
+    flush(false);
   }
+  flush(true);
+  RankReport report;
+  report.ranks = ranks;
+  for (int r = 1; r < ranks; ++r)
+    if (!finished[std::size_t(r)])
+      report.lost.push_back(lostRank(r, processes[std::size_t(r)], processes[0]));
+  return report;
 }
 
 }  // namespace
@@ -197,12 +308,38 @@ MpiSession::MpiSession() {
   MPI_Initialized(&initialised);
   if (initialised || !launchedByMpirun()) return;
   MPI_Init(nullptr, nullptr);
+  // A rank that is gone must not take rank 0 down with it before the rows are written.
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   mpiStarted() = true;
 }
 
 MpiSession::~MpiSession() {
-  if (mpiStarted()) MPI_Finalize();
+  if (!mpiStarted()) return;
   mpiStarted() = false;
+  if (pendingInterruption() == 0) {
+    MPI_Finalize();
+    return;
+  }
+  // Stopped by a signal. A rank may be gone, so MPI_Finalize could wait for ever; each process
+  // ends by the signal right after (main). But mpirun kills every rank at once when one of
+  // them ends: the others wait until rank 0 has written the results and lets them go.
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  static const std::int64_t releaseWord = 1;  // outlives the unawaited sends
+  if (rank == 0) {
+    for (int r = 1; r < ranks; ++r) {
+      MPI_Request request;
+      MPI_Isend(&releaseWord, 1, MPI_INT64_T, r, kReleaseTag, MPI_COMM_WORLD, &request);
+      MPI_Request_free(&request);
+    }
+    return;
+  }
+  const double until = secondsNow() + kReleaseWaitSeconds;
+  for (int released = 0; !released && secondsNow() < until;) {
+    MPI_Iprobe(0, kReleaseTag, MPI_COMM_WORLD, &released, MPI_STATUS_IGNORE);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
 }
 
 int MpiSession::rank() {
@@ -219,17 +356,26 @@ int MpiSession::size() {
   return s;
 }
 
-void solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points, int threads,
-                       const RowSink& sink) {
-  if (MpiSession::size() <= 1) return solvePoints(plan, points, threads, sink);
-  if (MpiSession::rank() != 0) return studyWorker(plan, points);
+RankReport solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points,
+                             const PointRanges& todo, int threads, const RowSink& sink,
+                             const StopRequest& stop) {
+  if (MpiSession::size() <= 1) {
+    solvePoints(plan, points, todo, threads, sink, stop);
+    return {};
+  }
+  const std::vector<RankProcess> processes = gatherProcesses();
+  if (MpiSession::rank() != 0) {
+    studyWorker(plan, points, stop);
+    return {MpiSession::size(), {}};
+  }
   try {
-    studyManager(plan, points, sink);
+    return studyManager(plan, points, todo, sink, stop, processes);
   } catch (const std::exception& e) {
     // The other ranks wait for chunks that will never come: end them all.
     std::fprintf(stderr, "beamrotor: %s\n", e.what());
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
+  return {};
 }
 
 #endif

@@ -4,7 +4,16 @@
 // messages, restores point order and hands the rows to the sink; so the table and summary
 // are those of the serial run. Without MPI, or run without mpirun, everything here is the
 // threaded study of StudyExecution.hpp.
+//
+// Stopping: mpirun answers Ctrl-C, a SIGTERM or the loss of a rank (kill -9) alike, with
+// SIGTERM to every rank and SIGKILL about a second later. Each rank then starts no new point:
+// rank 0 tells the others to stop, takes the rows they finished within kStopAnswerSeconds and
+// hands them on; a rank that does not answer in that time is named as lost (with its process
+// id and host, and whether that process is gone, when it ran on rank 0's host).
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "problems/study/StudyExecution.hpp"
 
@@ -33,11 +42,24 @@ int launchedRank();
 /// True where results are written: without MPI, and on rank 0.
 inline bool isStudyManager() { return MpiSession::rank() == 0; }
 
-/// The points of the study: with several MPI ranks shared among them (sink called on rank 0
-/// only, in point order; `threads` is then ignored, one point at a time per rank), otherwise
-/// solvePoints on this machine.
-void solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points, int threads,
-                       const RowSink& sink);
+/// How long rank 0 waits, once the study stops, for the other ranks' last rows (s).
+inline constexpr double kStopAnswerSeconds = 0.4;
+
+/// Who took part: the number of ranks, and each rank that did not answer when the study
+/// stopped ("rank 1 (pid 7611 on node01): its process is gone").
+struct RankReport {
+  int ranks = 1;
+  std::vector<std::string> lost;
+};
+
+/// The points of `todo`: with several MPI ranks shared among them (sink called on rank 0
+/// only, in increasing point order; `threads` is then ignored, one point at a time per rank;
+/// the other ranks ignore `todo` and take what rank 0 hands out), otherwise solvePoints on
+/// this machine. After `stop` (asked before each point, on every rank) no point starts and
+/// the rows finished are handed on, gaps and all.
+RankReport solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points,
+                             const PointRanges& todo, int threads, const RowSink& sink,
+                             const StopRequest& stop);
 
 /// A row as bytes and back (the message format between ranks; exposed for its test).
 void appendRowBytes(std::string& bytes, const StudyRow& row);

@@ -55,6 +55,15 @@ PointCost& PointCost::operator+=(const PointCost& other) {
   return *this;
 }
 
+StudyRow blankRow(const StudyPlan& plan) {
+  StudyRow row;
+  row.parameters.assign(plan.parameterNames.size(), kMissing);
+  row.outputs.assign(plan.spec.outputs.size(), kMissing);
+  row.checks.assign(plan.checkNames.size(), kMissing);
+  row.passed.assign(plan.checkNames.size(), -1);
+  return row;
+}
+
 StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText,
                         const Deck& deck, std::vector<ParameterOverride> overrides,
                         const std::string& formulation, DesignStudySpec spec) {
@@ -102,12 +111,9 @@ RunResult PointSolver::solveFully(const std::vector<double>& values) const {
 }
 
 StudyRow PointSolver::solve(long long index, const std::vector<double>& values) const {
-  StudyRow row;
+  StudyRow row = blankRow(plan_);
   row.index = index;
   row.parameters = values;
-  row.outputs.assign(plan_.spec.outputs.size(), kMissing);
-  row.checks.assign(plan_.checkNames.size(), kMissing);
-  row.passed.assign(plan_.checkNames.size(), -1);
   Stopwatch clock;
   try {
     Deck deck = deckAt(values);

@@ -61,6 +61,9 @@ struct StudyRow {
   bool ok() const { return status == "ok"; }
 };
 
+/// A row of the plan's shape holding no values (NaN, checks not applying), status "ok".
+StudyRow blankRow(const StudyPlan& plan);
+
 /// The plan for `deckPath` read with `overrides` (as deck), and spec.
 StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText,
                         const Deck& deck, std::vector<ParameterOverride> overrides,

@@ -21,7 +21,10 @@ ProportionInterval wilsonInterval(long long successes, long long trials, double 
   const double z2 = z * z;
   const double centre = (p + z2 / (2 * n)) / (1 + z2 / n);
   const double half = z / (1 + z2 / n) * std::sqrt(p * (1 - p) / n + z2 / (4 * n * n));
-  return {p, std::max(0.0, centre - half), std::min(1.0, centre + half)};
+  // At 0 (or all) successes the bound is 0 (or 1) exactly; the formula leaves round-off there.
+  const double low = successes == 0 ? 0.0 : std::max(0.0, centre - half);
+  const double high = successes == trials ? 1.0 : std::min(1.0, centre + half);
+  return {p, low, high};
 }
 
 }  // namespace beamrotor

@@ -43,7 +43,7 @@ void StudySummary::add(const StudyRow& row) {
   ++points_;
   if (!row.ok()) {
     ++failed_;
-    if (failures_.size() < kFailuresListed) failures_.emplace_back(row.index, row.status);
+    if (failures_.size() < kFailuresListed) failures_.push_back({row.index, row.status, row.parameters});
   }
   for (std::size_t k = 0; k < outputs_.size(); ++k) {
     const double v = row.outputs[k];
@@ -161,8 +161,10 @@ Json StudySummary::json() const {
     j["worst_point"] = {{"point", worst->first},
                         {"parameters", pointParametersJson(plan_, worst->second)}};
   Json failures = Json::array();
-  for (const auto& [index, status] : failures_)
-    failures.push_back({{"point", index}, {"status", status}});
+  for (const Failure& f : failures_)
+    failures.push_back({{"point", f.index},
+                        {"parameters", pointParametersJson(plan_, f.parameters)},
+                        {"status", f.status}});
   j["failures"] = failures;
   return j;
 }

@@ -4,7 +4,7 @@
 //    outputs [{name, unit?, limit?, count, min, max, mean, sd, percentiles {p1 .. p99},
 //              worst {point, value, parameters {}}, exceedance? {count, probability, wilson95}}],
 //    checks [{name, applicable, passed, pass_rate, failure_probability? {...}}],
-//    worst_point {point, parameters, why}, failures [first 20 {point, status}]}
+//    worst_point {point, parameters, why}, failures [first 20 {point, parameters, status}]}
 // The worst point of an output is where it is largest (with a limit) or largest in magnitude
 // (without); the study's worst point is the worst of the output nearest its limit (largest
 // value / limit), or without limits the first output's. Sampled studies also give, for each
@@ -48,7 +48,12 @@ class StudySummary {
   std::vector<OutputTally> outputs_;
   std::vector<CheckTally> checks_;
   long long points_ = 0, failed_ = 0;
-  std::vector<std::pair<long long, std::string>> failures_;  ///< the first few
+  struct Failure {
+    long long index = 0;
+    std::string status;
+    std::vector<double> parameters;
+  };
+  std::vector<Failure> failures_;  ///< the first few
 };
 
 }  // namespace beamrotor

@@ -5,6 +5,7 @@
 // is empty where the point has no value (a failed point, a check that does not apply there).
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -17,5 +18,10 @@ std::string studyCsvHeader(const StudyPlan& plan);
 
 /// One row (with its newline).
 std::string studyCsvRow(const StudyRow& row);
+
+/// A row read back from its line (without the newline), `shape` giving the number of
+/// parameters, outputs and checks: the numbers bit for bit, an empty cell as NaN (a check's
+/// pass cell as -1). nullopt when the line is not such a row; the cost is not in the table.
+std::optional<StudyRow> parseStudyCsvRow(const std::string& line, const StudyRow& shape);
 
 }  // namespace beamrotor

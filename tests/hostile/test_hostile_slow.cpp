@@ -69,22 +69,6 @@ void requireCompleteOrAbsent(const fs::path& out) {
   }
 }
 
-/// Starts beamrotor in `dir`, returns its pid (stdout and stderr into dir/log).
-pid_t startBeamrotor(const fs::path& dir, const std::vector<std::string>& arguments) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(dir.c_str()) != 0) _exit(127);
-    freopen("log", "w", stdout);
-    freopen("log", "a", stderr);
-    std::vector<char*> argv{const_cast<char*>(BEAMROTOR_EXE)};
-    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(BEAMROTOR_EXE, argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
 }  // namespace
 
 TEST_SUITE("slow hostile: full device") {

@@ -1,13 +1,18 @@
 #include "tests/problems/DeckTestSupport.hpp"
 
 #include <doctest/doctest.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/parse/DeckSource.hpp"
@@ -83,6 +88,36 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
   r.err = fileContents(dir / "err");
   std::filesystem::remove_all(dir);
   return r;
+}
+
+int startBeamrotor(const std::filesystem::path& dir, const std::vector<std::string>& arguments) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.c_str()) != 0) _exit(127);
+    if (!freopen("log", "w", stdout) || !freopen("log", "a", stderr)) _exit(127);
+    signal(SIGINT, SIG_DFL);  // a background test run may have them ignored
+    signal(SIGTERM, SIG_DFL);
+    std::vector<char*> argv{const_cast<char*>(BEAMROTOR_EXE)};
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(BEAMROTOR_EXE, argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int waitForProcess(int pid, double seconds) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > until) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      FAIL("process " << pid << " still running after " << seconds << " s");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return status;
 }
 
 nlohmann::json SolvedDeck::json(const std::string& file) const {

@@ -43,6 +43,14 @@ ProcessResult runBeamrotor(const std::vector<std::string>& arguments,
                            const std::filesystem::path& workingDir = BEAMROTOR_SOURCE_DIR,
                            const std::vector<std::string>& environment = {});
 
+/// Starts BEAMROTOR_EXE with `arguments` in `dir` without waiting for it (stdout and stderr
+/// into dir/log, the default actions of SIGINT and SIGTERM restored); returns its pid.
+int startBeamrotor(const std::filesystem::path& dir, const std::vector<std::string>& arguments);
+
+/// Waits for process `pid` at most `seconds` (then kills it, and the test fails); returns its
+/// wait status.
+int waitForProcess(int pid, double seconds = 120);
+
 /// A file's bytes as a string ("" when it cannot be read).
 std::string fileContents(const std::filesystem::path& file);
 

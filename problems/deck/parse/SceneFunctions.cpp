@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <exception>
+#include <string>
 
 #include "problems/scenes/Mo10.hpp"
 
@@ -11,8 +12,23 @@ namespace beamrotor {
 
 namespace {
 
-/// Enough for any deck; bounds the work of one call.
-constexpr double kMostCycles = 1e5;
+/// The budget of this thread: how deep budgets are nested (0: none) and the cycles counted.
+thread_local int budgetDepth = 0;
+thread_local long long cyclesCounted = 0;
+
+/// Counts `cycles` against the budget, or fails naming the limit when they do not fit.
+void chargeCycles(long long cycles) {
+  if (budgetDepth == 0) return;
+  if (cycles > kMostClosedFormCycles - cyclesCounted)
+    throw mu::Parser::exception_type(
+        "the closed-form functions may compute at most " +
+        std::to_string(kMostClosedFormCycles) +
+        " MO-10 cycles in all while a deck is read (each expression is evaluated in several "
+        "systems of units, and each evaluation counts); this call of " +
+        std::to_string(cycles) + " cycles would take them past it, " +
+        std::to_string(cyclesCounted) + " being computed already");
+  cyclesCounted += cycles;
+}
 
 Mo10Parameters mo10(double J, double c, double l, double a, double H, double omega) {
   Mo10Parameters p;
@@ -28,9 +44,10 @@ Mo10Parameters mo10(double J, double c, double l, double a, double H, double ome
 /// The closed form over `cycles` cycles; muparser reports the failure as its own error.
 Mo10ClosedForm closedForm(const Mo10Parameters& p, double cycles,
                           Mo10ClosedForm::Start start = Mo10ClosedForm::Start::rest) {
-  if (!(cycles >= 1 && cycles <= kMostCycles))
+  if (!(cycles >= 1 && cycles <= double(kMostCyclesPerCall)))
     throw mu::Parser::exception_type("MO-10 closed form: the number of cycles must lie in [1, " +
-                                     std::to_string(int(kMostCycles)) + "]");
+                                     std::to_string(kMostCyclesPerCall) + "]");
+  chargeCycles((long long)std::ceil(cycles));
   try {
     return Mo10ClosedForm(p, int(std::ceil(cycles)), start);
   } catch (const std::exception& e) {
@@ -76,6 +93,14 @@ double mo10SteadyForceMax(double J, double c, double l, double a, double H, doub
 }
 
 }  // namespace
+
+ClosedFormBudget::ClosedFormBudget() {
+  if (budgetDepth++ == 0) cyclesCounted = 0;
+}
+
+ClosedFormBudget::~ClosedFormBudget() {
+  --budgetDepth;
+}
 
 void defineSceneFunctions(mu::Parser& parser) {
   parser.DefineFun("mo10_phi", mo10Phi);

@@ -7,7 +7,8 @@
 namespace beamrotor {
 
 void StaticSpec::read(const reader::Context& c, const Field& f) {
-  f.allowOnly({"type", "name", "second_order"}, "a static analysis");
+  f.allowOnly({"type", "name", "second_order", "accept_round_off"}, "a static analysis");
+  if (auto a = f.get("accept_round_off")) acceptRoundOff = a->boolean();
   if (auto s = f.get("second_order")) {
     secondOrder = s->boolean();
     if (secondOrder && !c.deck.contacts.empty())

@@ -17,6 +17,9 @@ struct StaticSpec {
   static constexpr bool needsMass = false;
   void read(const reader::Context& c, const Field& f);
   bool secondOrder = false;  ///< equilibrium in the deformed state (fem/stability)
+  /// `accept_round_off: true`: keep a solution whose measured round-off leaves no digit to
+  /// trust (problems/run/UntrustedStatics.hpp), which otherwise fails the analysis.
+  bool acceptRoundOff = false;
 };
 
 struct ModalSpec {

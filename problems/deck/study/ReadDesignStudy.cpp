@@ -9,6 +9,7 @@
 #include "problems/deck/study/DesignStudy.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"
+#include "problems/deck/parse/SceneFunctions.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/deck/study/SweepOption.hpp"
@@ -304,6 +305,7 @@ std::vector<StudyOutput> checkOutputs(const StudyContext& s) {
 
 DesignStudySpec readDesignStudy(const DeckSource& source, const Deck& deck,
                                 const StudyCommandLine& commandLine) {
+  const ClosedFormBudget budget;  // the closed forms' work, bounded per reading
   const StudyContext s(source, deck);
   DesignStudySpec spec;
   const Field root = Field::root(*source.tree);

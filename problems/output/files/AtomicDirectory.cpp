@@ -32,6 +32,9 @@ constexpr const char* kWrittenHeader =
     "# beamrotor results: the next run replaces this directory unless it holds anything not "
     "listed here";
 constexpr const char* kInProgressHeader = "# beamrotor: being written";
+/// Follows kInProgressHeader on the first line when the writer said what is worth keeping.
+constexpr const char* kResumableNote = "; if left unfinished, keep it: ";
+constexpr const char* kTemporaryInfix = ".tmp-";
 constexpr const char* kAnotherDirectory = "choose another output directory with --out DIR";
 
 /// "out/" and "out" name the same directory; the temporary sibling needs the latter.
@@ -124,11 +127,16 @@ void removeWritten(const fs::path& dir) {
 /// The marker of a temporary directory, locked while its writer lives.
 class LockedMarker {
  public:
-  explicit LockedMarker(const fs::path& dir) : file_(dir / kMarkerFile) {
+  LockedMarker(const fs::path& dir, const std::string& resumable) : file_(dir / kMarkerFile) {
     fd_ = ::open(file_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd_ < 0 || ::flock(fd_, LOCK_EX | LOCK_NB) != 0)
       throw std::runtime_error(writeFailure(file_, errno));
-    replace(std::string(kInProgressHeader) + "\n");
+    std::string header = kInProgressHeader;
+    if (!resumable.empty()) {
+      header += kResumableNote;
+      header += resumable;
+    }
+    replace(header + "\n");
   }
   ~LockedMarker() {
     if (fd_ >= 0) ::close(fd_);
@@ -152,13 +160,18 @@ class LockedMarker {
   int fd_ = -1;
 };
 
+bool startsWith(const std::string& text, const std::string& prefix) {
+  return text.rfind(prefix, 0) == 0;
+}
+
 /// Temporary directories of earlier runs writing `dir` that no process is writing any more
 /// (their marker's lock is free): killed before they could clean up, or kept because the
 /// swap was interrupted. A finished one loses what it lists; an unfinished one, which only its
-/// run wrote into, is removed whole.
+/// run wrote into, is removed whole, unless its writer said it holds work worth resuming:
+/// that one is kept and named on stderr with what its writer said.
 void sweepStaleTemporaries(const fs::path& dir) {
   const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
-  const std::string prefix = dir.filename().string() + ".tmp-";
+  const std::string prefix = dir.filename().string() + kTemporaryInfix;
   std::error_code ec;
   std::vector<fs::path> stale;
   for (const auto& entry : fs::directory_iterator(parent, ec)) {
@@ -169,8 +182,14 @@ void sweepStaleTemporaries(const fs::path& dir) {
     if (::flock(fd, LOCK_EX | LOCK_NB) == 0) stale.push_back(entry.path());
     ::close(fd);
   }
+  const std::string resumable = std::string(kInProgressHeader) + kResumableNote;
   for (const fs::path& p : stale) {
-    if (markerHeader(p) == kInProgressHeader)
+    const std::string header = markerHeader(p);
+    if (startsWith(header, resumable))
+      std::cerr << "beamrotor: warning: kept '" << p.string()
+                << "', left unfinished by an earlier run that was killed: it holds "
+                << header.substr(resumable.size()) << "\n";
+    else if (header == kInProgressHeader)
       fs::remove_all(p, ec);
     else
       removeWritten(p);
@@ -186,7 +205,7 @@ fs::path makeTemporarySibling(const fs::path& dir) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     std::string suffix(6, ' ');
     for (char& c : suffix) c = kLetters[pick(entropy)];
-    const fs::path candidate = dir.string() + ".tmp-" + suffix;
+    const fs::path candidate = dir.string() + kTemporaryInfix + suffix;
     if (fs::create_directory(candidate)) return candidate;  // false: the name is taken
   }
   throw std::runtime_error("cannot create a temporary directory next to '" + dir.string() + "'");
@@ -243,7 +262,8 @@ std::string manifest(const fs::path& temporary) {
 }  // namespace
 
 void writeDirectoryAtomically(const fs::path& requested,
-                              const std::function<void(const fs::path&)>& fill) {
+                              const std::function<void(const fs::path&)>& fill,
+                              const std::string& resumable) {
   const fs::path dir = withoutTrailingSeparator(requested);
   const std::string leaf = dir.filename().string();
   if (leaf.empty() || leaf == "." || leaf == "..")
@@ -257,9 +277,10 @@ void writeDirectoryAtomically(const fs::path& requested,
   const fs::path temporary = makeTemporarySibling(dir);
   fs::path earlier;
   try {
-    LockedMarker marker(temporary);
+    LockedMarker marker(temporary, resumable);
     fill(temporary);
-    throwIfInterrupted();
+    // A resumable fill stops early by itself when signalled and keeps what it wrote.
+    if (resumable.empty()) throwIfInterrupted();
     marker.replace(manifest(temporary));
     earlier = swapIn(temporary, dir);
   } catch (...) {
@@ -268,6 +289,42 @@ void writeDirectoryAtomically(const fs::path& requested,
     throw;
   }
   if (!earlier.empty()) removeWritten(earlier);
+}
+
+bool isUnfinishedDirectory(const fs::path& dir) {
+  return startsWith(markerHeader(dir), kInProgressHeader);
+}
+
+UnfinishedDirectory::UnfinishedDirectory(const fs::path& dir) : dir_(withoutTrailingSeparator(dir)) {
+  if (!isDirectory(dir_) || !isUnfinishedDirectory(dir_) ||
+      dir_.filename().string().find(kTemporaryInfix) == std::string::npos)
+    throw std::runtime_error("'" + dir.string() +
+                             "' is not a directory a beamrotor run left unfinished");
+  const fs::path marker = dir_ / kMarkerFile;
+  fd_ = ::open(marker.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
+  if (fd_ < 0) throw std::runtime_error("cannot open " + marker.string() + ": " + std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw std::runtime_error("'" + dir.string() + "' is being written by a beamrotor run "
+                             "that is still going");
+  }
+}
+
+UnfinishedDirectory::~UnfinishedDirectory() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+fs::path UnfinishedDirectory::destination() const {
+  const std::string name = dir_.string();
+  return name.substr(0, name.rfind(kTemporaryInfix));
+}
+
+void UnfinishedDirectory::remove() {
+  std::error_code ignored;
+  fs::remove_all(dir_, ignored);
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
 }
 
 }  // namespace beamrotor

@@ -14,6 +14,7 @@ constexpr int kDeferred[] = {SIGINT, SIGTERM, SIGHUP};
 constexpr int kCount = int(sizeof kDeferred / sizeof kDeferred[0]);
 
 volatile sig_atomic_t pending = 0;
+volatile sig_atomic_t acknowledged = 0;  // the pending signal is being handled by its writer
 int depth = 0;  // nested DeferredSignals (main thread only)
 struct sigaction previous[kCount];
 
@@ -57,7 +58,11 @@ DeferredSignals::~DeferredSignals() {
 }
 
 void throwIfInterrupted() {
-  if (const int signal = pending) throw Interrupted(signal);
+  if (const int signal = pending; signal != 0 && !acknowledged) throw Interrupted(signal);
+}
+
+void acknowledgeInterruption() {
+  if (pending != 0) acknowledged = 1;
 }
 
 int pendingInterruption() {
@@ -66,6 +71,7 @@ int pendingInterruption() {
 
 void clearInterruption() {
   pending = 0;
+  acknowledged = 0;
 }
 
 void endIfInterrupted() {
