@@ -3,6 +3,7 @@
 #pragma once
 
 #include <complex>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -50,6 +51,10 @@ struct RotorMode {
   /// Logarithmic decrement -2 pi Re lambda / Im lambda = 2 pi zeta / sqrt(1 - zeta^2);
   /// infinite for a real eigenvalue.
   double logDecrement = 0;
+  /// The damping ratio the eigensolver's round-off can give this mode in either sign: shift
+  /// and invert resolves eigenvalues to a fraction of the one nearest the shift, so a mode far
+  /// from it carries more (RotorModes.cpp). What a verdict reads as neutral.
+  double roundOff = 0;
   /// Orbit sense at whirlNode. At rest an isotropic rotor's modes are double eigenvalues;
   /// their basis is fixed as circular backward, then forward whirl (DegenerateModes.hpp).
   Whirl whirl = Whirl::planar;
@@ -71,6 +76,26 @@ struct RotorModesResult {
   SolveTimings time;
 };
 
+/// A step of the sweep where a Campbell line changes mode: its eigenvalue leaves the straight
+/// continuation of its last two speeds by more than a quarter of its size, even through a
+/// denser local sweep (RotorCampbell.hpp). Its MAC may still read near 1: modes dominated by
+/// the same disk's orbit correlate whatever else they do.
+struct LineJump {
+  int line = -1;
+  std::size_t speed = 0;       ///< index of the speed it jumps at (from the one before)
+  double fromHz = 0, toHz = 0;  ///< the line's damped frequency before and after
+  double mac = 0;              ///< the MAC the tracking gave that step
+};
+
+/// A mode the sweep solved that follows none of its lines yet grows: the lines' verdict
+/// (stability, onset) does not see it.
+struct UntrackedGrowth {
+  std::size_t speed = 0;    ///< index of the lowest sweep speed where one grows
+  double frequencyHz = 0;   ///< its damped frequency there
+  double logDecrement = 0;  ///< < 0 (-inf when it grows without oscillating)
+  Whirl whirl = Whirl::planar;
+};
+
 /// A Campbell diagram: modes tracked across speeds by eigenvector correlation.
 struct CampbellResult {
   std::vector<double> speeds;  ///< rad/s, as given
@@ -82,6 +107,14 @@ struct CampbellResult {
   SystemSize size;
   SolveTimings time;
   int symbolicAnalyses = 0;  ///< sparse symbolic factorisations done (1 when reused)
+  /// The most modes solved at one speed (the lines and a margin, more in a local sweep), which
+  /// is what a refinement between two speeds solves to find every line again
+  int candidates = 0;
+  /// Intervals swept again at denser speeds, with more candidates, because a line seemed to
+  /// jump across them
+  int localSweeps = 0;
+  std::vector<LineJump> jumps;  ///< the jumps those sweeps did not cure
+  std::optional<UntrackedGrowth> untracked;  ///< the lowest growing mode outside the lines
 };
 
 /// Where a line's damped frequency crosses the excitation order x speed line.

@@ -4,29 +4,36 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
+#include "fem/rotor/LineFollower.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
 
 namespace beamrotor {
 
-double neutralLogDecrement(double logDecrement) {
+double neutralLogDecrement(const RotorMode& mode) {
   constexpr double kNeutral = 1e-9;
-  return std::abs(logDecrement) < kNeutral ? 0 : logDecrement;
+  const double band = std::max(kNeutral, 2 * std::numbers::pi * mode.roundOff);
+  return std::abs(mode.logDecrement) < band ? 0 : mode.logDecrement;
 }
 
 std::optional<LeastDamped> leastDamped(const CampbellResult& campbell, std::size_t firstSpeed) {
   std::optional<LeastDamped> least;
   for (std::size_t l = 0; l < campbell.lines.size(); ++l)
     for (std::size_t s = firstSpeed; s < campbell.lines[l].size(); ++s) {
-      const double delta = neutralLogDecrement(campbell.lines[l][s].logDecrement);
+      const double delta = neutralLogDecrement(campbell.lines[l][s]);
       if (!std::isnan(delta) && (!least || delta < least->logDecrement)) least = {l, s, delta};
     }
   return least;
 }
 
-double leastStableDecayRate(const std::vector<RotorMode>& modes) {
+double growthRate(const RotorMode& mode) {
+  return neutralLogDecrement(mode) == 0 ? 0.0 : -mode.dampingRatio;
+}
+
+double leastStableGrowth(const std::vector<RotorMode>& modes) {
   double worst = -std::numeric_limits<double>::infinity();
-  for (const RotorMode& m : modes) worst = std::max(worst, m.eigenvalue.real());
+  for (const RotorMode& m : modes) worst = std::max(worst, growthRate(m));
   return worst;
 }
 
@@ -35,53 +42,37 @@ std::optional<InstabilityOnset> instabilityOnset(const Model& model, const Campb
   const std::vector<double>& speeds = campbell.speeds;
   auto gridRate = [&](std::size_t s) {
     double worst = -std::numeric_limits<double>::infinity();
-    for (const auto& line : campbell.lines) worst = std::max(worst, line[s].eigenvalue.real());
+    for (const auto& line : campbell.lines) worst = std::max(worst, growthRate(line[s]));
     return worst;
   };
-  // 1. The first grid interval over which the least stable mode starts to grow.
+  // 1. The first grid interval over which the least stable line starts to grow.
   std::size_t s = 0;
   if (speeds.empty() || campbell.lines.empty() || gridRate(0) > 0) return std::nullopt;
   while (s + 1 < speeds.size() && !(gridRate(s + 1) > 0)) ++s;
   if (s + 1 == speeds.size()) return std::nullopt;
 
-  // 2. Regula falsi on the speed, halving the retained end's value when the same end is kept
-  //    twice (Illinois), so the bracket shrinks superlinearly on a smooth root.
-  const RotorSystem system(model, options.damping);
-  QuadraticEigenSolver solver;
-  InstabilityOnset onset;
-  auto solveAt = [&](double speed) {
-    ++onset.evaluations;
-    return solveRotorModes(system, speed, options, solver, false).modes;
-  };
-  double a = speeds[s], b = speeds[s + 1];
-  double fa = gridRate(s), fb = gridRate(s + 1);
-  int kept = 0;  // -1: a kept last time, +1: b kept
+  // 2. The root of the least stable line's growth rate on the speed, the lines followed from
+  //    the interval's lower speed.
+  LineFollower follow(model, campbell, options, s);
   std::vector<RotorMode> modes;
-  double c = b;
-  for (int i = 0; i < 200 && b - a > tolerance * b; ++i) {
-    c = fa == fb ? 0.5 * (a + b) : b - fb * (b - a) / (fb - fa);
-    if (!(c > a && c < b)) c = 0.5 * (a + b);
-    modes = solveAt(c);
-    const double fc = leastStableDecayRate(modes);
-    if (fc > 0) {
-      b = c, fb = fc;
-      if (kept == -1) fa /= 2;
-      kept = -1;
-    } else {
-      a = c, fa = fc;
-      if (kept == 1) fb /= 2;
-      kept = 1;
-    }
-    if (fc == 0) break;
-  }
-  onset.speed = c;
-  if (modes.empty()) modes = solveAt(c);
+  const auto rate = [&](double speed) {
+    modes = follow.at(speed);
+    return leastStableGrowth(modes);
+  };
+  const SpeedRoot root = speedRoot(rate, speeds[s], gridRate(s), speeds[s + 1], gridRate(s + 1),
+                                   tolerance);
+  if (root.evaluations == 0) rate(root.speed);  // a bracket already narrower than asked
+  // The mode that grows there: the largest growth, then (all neutral) the largest Re(lambda).
   const auto worst = std::max_element(modes.begin(), modes.end(), [](const auto& x, const auto& y) {
-    return x.eigenvalue.real() < y.eigenvalue.real();
+    return std::pair(growthRate(x), -x.dampingRatio) < std::pair(growthRate(y), -y.dampingRatio);
   });
-  onset.rpm = c * 30 / std::numbers::pi;
+  InstabilityOnset onset;
+  onset.speed = root.speed;
+  onset.rpm = root.speed * 30 / std::numbers::pi;
   onset.frequencyHz = worst->dampedFrequencyHz;
   onset.whirl = worst->whirl;
+  onset.evaluations = follow.evaluations();
+  onset.atSweepSpeed = root.atBracketEnd;
   return onset;
 }
 

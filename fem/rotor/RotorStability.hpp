@@ -1,10 +1,13 @@
 // The onset speed of instability: the lowest spin speed at which a damped mode's logarithmic
 // decrement falls through zero (its eigenvalue crosses into the right half-plane), typically
 // from cross-coupled bearing or seal stiffness. Bracketed on a Campbell diagram's speed grid,
-// then refined on the speed itself (not interpolated): the decay rate of the least stable
-// mode, max Re(lambda) over the modes computed, is continuous in the speed, so a sign change
-// between two speeds brackets a root, which regula falsi (Illinois variant) narrows to the
-// asked tolerance.
+// then refined on the speed itself (not interpolated): the growth rate of the least stable
+// line, max Re(lambda) / |lambda| over the diagram's lines followed into the interval
+// (LineFollower.hpp), is continuous in the speed, so a sign change between two speeds
+// brackets a root, which regula falsi (Illinois variant, SpeedRoot.hpp) narrows to the asked
+// tolerance. Growth is judged on each mode's own scale, Re(lambda) / |lambda|, with an
+// undamped mode's round-off read as neutral (neutralLogDecrement), so that a rotor without
+// damping is never unstable by the sign of its round-off.
 #pragma once
 
 #include <optional>
@@ -12,6 +15,7 @@
 
 #include "fem/rotor/Api684.hpp"
 #include "fem/rotor/RotorModes.hpp"
+#include "fem/rotor/SpeedRoot.hpp"
 
 namespace beamrotor {
 
@@ -21,12 +25,18 @@ struct InstabilityOnset {
   double frequencyHz = 0;        ///< that mode's damped frequency there
   Whirl whirl = Whirl::planar;   ///< and its whirl sense
   int evaluations = 0;           ///< eigen-solutions spent on the refinement
+  /// The refinement ended on a sweep speed: there a line changes mode (jumps) rather than
+  /// passing through neutral, so the onset is where the tracking fails, not where a mode
+  /// starts to grow
+  bool atSweepSpeed = false;
 };
 
-/// A log decrement as a verdict reads it: an undamped mode's decrement is 0 up to the
-/// eigensolver's round-off (Re(lambda) ~ 1e-13 |lambda|, a decrement of ~1e-12), so below 1e-9
-/// in size it is taken as 0, neither growing nor decaying; other values as they are.
-double neutralLogDecrement(double logDecrement);
+/// A mode's log decrement as a verdict reads it: an undamped mode's decrement is 0 up to the
+/// eigensolver's round-off (Re(lambda) ~ 1e-13 |lambda| near the shift, a decrement of
+/// ~1e-12), so below 1e-9 in size, or below 2 pi times the mode's own roundOff where that is
+/// larger (a mode far from the shift), it is taken as 0, neither growing nor decaying; other
+/// values as they are.
+double neutralLogDecrement(const RotorMode& mode);
 
 /// The least damped mode of a Campbell diagram over its speeds from `firstSpeed` on.
 struct LeastDamped {
@@ -41,16 +51,21 @@ struct LeastDamped {
 /// log decrement is not a number are passed over.
 std::optional<LeastDamped> leastDamped(const CampbellResult& campbell, std::size_t firstSpeed = 0);
 
-/// max Re(lambda) (1/s) over a set of modes: > 0 when one of them grows.
-double leastStableDecayRate(const std::vector<RotorMode>& modes);
+/// How fast a mode grows as the verdicts read it: Re(lambda) / |lambda| (= -zeta), on the
+/// mode's own scale, and 0 where neutralLogDecrement reads its decrement as 0; > 0 when it
+/// grows.
+double growthRate(const RotorMode& mode);
+
+/// The largest growthRate of a set of modes (-inf for none): > 0 when one of them grows.
+double leastStableGrowth(const std::vector<RotorMode>& modes);
 
 /// The lowest onset speed within the Campbell sweep's speeds (its lines give the brackets),
-/// refined to a relative speed tolerance; none when every mode stays stable at every grid
-/// speed, or the rotor is unstable already at the first one (no bracket). The options must
-/// be those of the Campbell diagram.
+/// refined to a relative speed tolerance; none when every line stays stable at every grid
+/// speed, or one grows already at the first (no bracket). The options must be those of the
+/// Campbell diagram.
 std::optional<InstabilityOnset> instabilityOnset(const Model& model, const CampbellResult& campbell,
                                                  const RotorOptions& options,
-                                                 double tolerance = 1e-10);
+                                                 double tolerance = kSpeedTolerance);
 
 /// The stability half of an API 684 verdict: over an operating speed range every damped mode
 /// must keep a log decrement of at least `required` (0: only a growing mode fails; API 617's

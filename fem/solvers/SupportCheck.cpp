@@ -97,9 +97,12 @@ Mechanism findMechanism(const Model& model, const DofMap& dofs, const SparseMatr
     y[k] = 1;
     if (rank > 0) {
       const Eigen::VectorXd column = R.col(k).toDense();
-      y.head(rank) = -R.topLeftCorner(rank, rank)
-                          .triangularView<Eigen::Upper>()
-                          .solve(Eigen::VectorXd(column.head(rank)));
+      // Solved into its own vector first: GCC 12 takes the solve assigned straight into a
+      // block for a use after free in some unity batches (-Wuse-after-free).
+      const Eigen::VectorXd solved = R.topLeftCorner(rank, rank)
+                                         .triangularView<Eigen::Upper>()
+                                         .solve(Eigen::VectorXd(column.head(rank)));
+      y.head(rank) = -solved;
     }
     Eigen::VectorXd x(n);
     for (Eigen::Index i = 0; i < n; ++i) x[E.indices()[i]] = y[i];

@@ -122,7 +122,9 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
               return torsion;
             },
             [&](const RotorFamily&) -> AnalysisResult {
-              return solveRotorAnalysis(deck, a, model);
+              AnalysisResult rotor = solveRotorAnalysis(deck, a, model);
+              out.warnings = rotorWarnings(rotor);
+              return rotor;
             },
         },
         a.kind);

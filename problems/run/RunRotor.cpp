@@ -10,6 +10,7 @@
 
 #include "elements/Bearing.hpp"
 #include "elements/Spring.hpp"
+#include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
 #include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorModes.hpp"
@@ -17,6 +18,7 @@
 #include "fem/rotor/RotorUnbalance.hpp"
 #include "fem/rotor/UnbalancePeaks.hpp"
 #include "fem/timing/Stopwatch.hpp"
+#include "problems/run/CampbellWarnings.hpp"
 #include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
@@ -109,10 +111,10 @@ CampbellOutcome runCampbell(const Deck& deck, const RotorFamily& s, const Model&
   CampbellOutcome out;
   out.campbell = solveCampbell(model, r.speeds, optionsOf(deck, s));
   out.order = r.order;
-  out.criticalSpeeds = criticalSpeeds(out.campbell, r.order);
+  out.criticalSpeeds = refinedCriticalSpeeds(model, out.campbell, optionsOf(deck, s), r.order);
   out.furtherOrders = r.furtherOrders;
   for (double order : r.furtherOrders)
-    for (const CriticalSpeed& c : criticalSpeeds(out.campbell, order))
+    for (const CriticalSpeed& c : refinedCriticalSpeeds(model, out.campbell, optionsOf(deck, s), order))
       out.furtherCriticalSpeeds.push_back(c);
   out.onset = instabilityOnset(model, out.campbell, optionsOf(deck, s));
   out.journals = journalCurves(deck);
@@ -231,6 +233,14 @@ AnalysisResult solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const
                    throw std::logic_error("solveRotorAnalysis: not a rotor analysis");
                  }},
       a.kind);
+}
+
+std::vector<std::string> rotorWarnings(const AnalysisResult& result) {
+  if (const auto* c = std::get_if<CampbellOutcome>(&result))
+    return campbellWarnings(c->campbell, c->onset);
+  if (const auto* u = std::get_if<UnbalanceOutcome>(&result); u && u->stability)
+    if (auto w = onsetWarning(u->stability->onset)) return {*w};
+  return {};
 }
 
 }  // namespace beamrotor

@@ -12,8 +12,12 @@ CsvTable historyTable(const std::string& title, const TransientOutcome& transien
   CsvTable table(title, columns);
   const std::vector<double>& times = transient.result.times;
   for (std::size_t i = 0; i < times.size(); ++i) {
-    std::vector<CsvCell> row{times[i]};
-    for (const NamedHistory& h : transient.histories) row.push_back(h.values.at(i));
+    // Cells set in place rather than appended: GCC 12 takes a growing row of variants for
+    // a read of an uninitialised string in some unity batches (-Wmaybe-uninitialized).
+    std::vector<CsvCell> row(1 + transient.histories.size());
+    row[0] = times[i];
+    for (std::size_t k = 0; k < transient.histories.size(); ++k)
+      row[k + 1] = transient.histories[k].values.at(i);
     table.addRow(std::move(row));
   }
   return table;

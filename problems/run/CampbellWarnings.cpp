@@ -1,0 +1,53 @@
+#include "problems/run/CampbellWarnings.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace beamrotor {
+
+namespace {
+
+double rpmOf(double speed) { return speed * 30 / std::numbers::pi; }
+
+}  // namespace
+
+std::optional<std::string> onsetWarning(const std::optional<InstabilityOnset>& onset) {
+  if (!onset || !onset->atSweepSpeed) return std::nullopt;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "the onset of instability settles on the sweep speed %.6g rpm: a line changes "
+                "mode there instead of passing through zero decrement, so the onset may lie "
+                "elsewhere; ask for more modes (or more steps)",
+                onset->rpm);
+  return std::string(text);
+}
+
+std::vector<std::string> campbellWarnings(const CampbellResult& campbell,
+                                          const std::optional<InstabilityOnset>& onset) {
+  std::vector<std::string> out;
+  const std::size_t lines = campbell.lines.size();
+  for (const LineJump& j : campbell.jumps) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "line %d jumps from %.4g Hz at %.6g rpm to %.4g Hz by %.6g rpm (MAC %.3g), "
+                  "also in a denser local sweep: it changes mode there, and %zu modes do not "
+                  "follow it; ask for more modes",
+                  j.line + 1, j.fromHz, rpmOf(campbell.speeds[j.speed - 1]), j.toHz,
+                  rpmOf(campbell.speeds[j.speed]), j.mac, lines);
+    out.push_back(text);
+  }
+  if (const auto& u = campbell.untracked) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "a mode no line follows grows at %.6g rpm (%.4g Hz %s whirl, log decrement "
+                  "%.3g): the %zu lines' stability verdict does not see it; ask for more modes",
+                  rpmOf(campbell.speeds[u->speed]), u->frequencyHz,
+                  std::string(whirlName(u->whirl)).c_str(), u->logDecrement, lines);
+    out.push_back(text);
+  }
+  if (auto w = onsetWarning(onset)) out.push_back(*w);
+  return out;
+}
+
+}  // namespace beamrotor
