@@ -93,12 +93,20 @@ LineHistory historyBefore(const CampbellResult& result, std::size_t s,
   return h;
 }
 
-bool anyJump(const LineHistory& h, double speed, const TrackedSpeed& t) {
+/// The lines that seem to jump at `speed` (their speed index left for the caller).
+std::vector<LineJump> jumpsAt(const LineHistory& h, double speed, const TrackedSpeed& t) {
+  std::vector<LineJump> out;
   for (std::size_t l = 0; l < h.last.size(); ++l) {
     const auto& [candidate, mac] = t.pick[l];
-    if (jumps(h.before[l], h.last[l], pointOf(speed, t.at, candidate), mac)) return true;
+    if (!jumps(h.before[l], h.last[l], pointOf(speed, t.at, candidate), mac)) continue;
+    LineJump j;
+    j.line = int(l);
+    j.fromHz = h.last[l].eigenvalue.imag() / (2 * std::numbers::pi);
+    j.toHz = t.at.modes[candidate].dampedFrequencyHz;
+    j.mac = mac;
+    out.push_back(j);
   }
-  return false;
+  return out;
 }
 
 /// Whether two trackings of one speed give every line the same mode.
@@ -253,17 +261,26 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
       t.pick = matchByMac(previous, t.at.vectors);
     }
     // 2. A line that seems to jump: the interval again, densely and with more candidates.
-    if (s >= 1 && anyJump(historyBefore(result, s, repeated), speeds[s], t)) {
+    std::vector<LineJump> jumped;
+    if (s >= 1) jumped = jumpsAt(historyBefore(result, s, repeated), speeds[s], t);
+    if (!jumped.empty()) {
       ++result.localSweeps;
       const int wider = 2 * candidates;
-      std::vector<LineJump> jumped;
-      TrackedSpeed local = sweepLocally(solver, speeds[s - 1], speeds[s], previous,
-                                        historyBefore(result, s, repeated), wider, jumped);
-      if (!sameModes(t, local)) {
-        // A line found its own mode among the wider candidates: keep them from here on.
-        for (const auto& [candidate, m] : local.pick)
-          if (candidate >= candidates) candidates = wider;
-        t = std::move(local);
+      const std::vector<LineJump> coarse = std::move(jumped);
+      jumped.clear();
+      try {
+        TrackedSpeed local = sweepLocally(solver, speeds[s - 1], speeds[s], previous,
+                                          historyBefore(result, s, repeated), wider, jumped);
+        if (!sameModes(t, local)) {
+          // A line found its own mode among the wider candidates: keep them from here on.
+          for (const auto& [candidate, m] : local.pick)
+            if (candidate >= candidates) candidates = wider;
+          t = std::move(local);
+        }
+      } catch (const SolveError&) {
+        // The eigensolver gave up on a speed of the local sweep (with many candidates on a
+        // badly scaled model): the sweep's own tracking stands, its jumps reported.
+        jumped = coarse;
       }
       for (LineJump& j : jumped) {
         j.speed = s;

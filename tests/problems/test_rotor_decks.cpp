@@ -17,10 +17,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "elements/Bearing.hpp"
+#include "problems/cli/RotorSummary.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/run/Study.hpp"
@@ -151,6 +153,36 @@ TEST_SUITE("rotor decks") {
     }
     CHECK(worst < kClosedForm);
     MESSAGE("DeckJeffcott deck: largest relative orbit error over the sweep " << worst);
+  }
+
+  TEST_CASE("DeckJeffcott rotor deck: the summary prints the API 684 verdict, PASS or FAIL") {
+    // The damped Jeffcott rotor's one critical speed, 2074 rpm (wd), with AF = 1 / (2 zeta)
+    // = 35 (zeta 0.0144) asks API 617's margin 17 (1 - 1 / (AF - 1.5)) = 16.5 % below an
+    // operating range above it. From 3000 rpm the rotor keeps 31 %: PASS (no cross-coupling,
+    // so the stability half passes too); from 2300 rpm only 9.8 %: FAIL, naming the peak.
+    // The summary once printed only a failing verdict.
+    const DeckJeffcott j;
+    const double critical = j.wd() * 30 / kPi, af = 1 / (2 * j.zeta());
+    const double required = 17 * (1 - 1 / (af - 1.5));
+    for (const double from : {3000.0, 2300.0}) {
+      CAPTURE(from);
+      const bool passes = (from - critical) / from * 100 > required;
+      CHECK(passes == (from == 3000.0));
+      std::string text = kJeffcottDeck;
+      const std::string response = "response: [disk]}";
+      text.replace(text.find(response), response.size(),
+                   "response: [disk], operating: {min_rpm: " + std::to_string(from) +
+                       ", max_rpm: 3600}}");
+      const RunResult run = solvedText(text, "jeffcott_api684.yaml");
+      const AnalysisOutcome& a = analysis(run, "unbalance");
+      const UnbalanceOutcome& u = *resultOf<UnbalanceOutcome>(a);
+      CHECK(u.api684Pass() == passes);
+      std::ostringstream summary;
+      cli::printRotor(summary, a, u);
+      CAPTURE(summary.str());
+      CHECK(summary.str().find(passes ? "API 684: PASS" : "API 684: FAIL (disk: peak at") !=
+            std::string::npos);
+    }
   }
 
   TEST_CASE("DeckJeffcott rotor deck: uz lags uy by a quarter turn, both phases unwrapped") {
