@@ -185,42 +185,6 @@ TEST_SUITE("rotor decks") {
     }
   }
 
-  TEST_CASE("DeckJeffcott rotor deck: uz lags uy by a quarter turn, both phases unwrapped") {
-    // A rotating force on an isotropic rotor whirls it in a circle forward: uz = -i uy, so
-    // uz's phase is uy's closed-form lag atan2(c W, k - m W^2) (0 to -180 deg through the
-    // critical) minus 90 deg: -90 to -270 deg, which std::arg wraps at -180 into +180 (issue
-    // 42: a 357.6 deg jump between two samples). FORMAT.md promises unwrapped phases, in the
-    // table and results.json alike.
-    const DeckJeffcott j;
-    const RunResult run = jeffcottRun();
-    const fs::path dir = scratchDir("rotor_phases");
-    writeRunOutputs(run, dir);
-    std::ifstream in(dir / "results.json");
-    const nlohmann::json doc = nlohmann::json::parse(in);
-    const auto& response = doc.at("analyses")[2].at("response").at("disk");
-    const auto& rpm = doc.at("analyses")[2].at("speeds_rpm");
-    const auto rows = csvCells(dir / "unbalance_unbalance.csv");
-    REQUIRE(rows.size() == rpm.size() + 1);
-    const std::size_t uy = csvColumn(rows[0], "disk_uy_phase [deg]");
-    const std::size_t uz = csvColumn(rows[0], "disk_uz_phase [deg]");
-    bool passesCritical = false;
-    for (std::size_t s = 0; s < rpm.size(); ++s) {
-      const double W = rpm[s].get<double>() * kPi / 30;
-      const double lag = j.phase(W) * 180 / kPi;
-      passesCritical = passesCritical || lag < -135;  // uz past -180 deg + 45
-      CAPTURE(W);
-      // Round-off as in the closed-form checks (kClosedForm of the phase's half turn); the
-      // CSV holds 17 digits.
-      CHECK(std::abs(response.at("uy_phase_deg")[s].get<double>() - lag) < kClosedForm * 180);
-      CHECK(std::abs(response.at("uz_phase_deg")[s].get<double>() - (lag - 90)) <
-            kClosedForm * 180);
-      CHECK(std::abs(std::stod(rows[s + 1][uy]) - lag) < kClosedForm * 180);
-      CHECK(std::abs(std::stod(rows[s + 1][uz]) - (lag - 90)) < kClosedForm * 180);
-    }
-    CHECK(passesCritical);  // the sweep reaches the speeds where uz once wrapped
-    fs::remove_all(dir);
-  }
-
   TEST_CASE("DeckJeffcott rotor deck: results.json, CSV and VTK hold the solved numbers") {
     const DeckJeffcott j;
     const RunResult run = jeffcottRun();
@@ -240,12 +204,29 @@ TEST_SUITE("rotor decks") {
     CHECK(relError(critical[0].at("rpm").get<double>(), j.wd() * 30 / kPi) < kClosedForm);
     const auto& response = analyses[2].at("response").at("disk");
     const auto& rpm = analyses[2].at("speeds_rpm");
+    // The phases, in results.json and the table alike: uy lags by the closed form's
+    // atan2(c W, k - m W^2), 0 to -180 deg through the critical; uz, a quarter turn behind in
+    // forward whirl (uz = -i uy), from -90 to -270 deg, unwrapped as FORMAT.md promises (std::arg
+    // wraps it at -180 into +180: issue 42's 357.6 deg jump between two samples).
+    const auto table = csvCells(dir / "unbalance_unbalance.csv");
+    REQUIRE(table.size() == rpm.size() + 1);
+    const std::size_t uy = csvColumn(table[0], "disk_uy_phase [deg]");
+    const std::size_t uz = csvColumn(table[0], "disk_uz_phase [deg]");
+    bool pastWrap = false;
     for (std::size_t s = 0; s < rpm.size(); ++s) {
       const double W = rpm[s].get<double>() * kPi / 30;
+      const double lag = j.phase(W) * 180 / kPi;
+      pastWrap = pastWrap || lag - 90 < -180;
+      CAPTURE(W);
       CHECK(relError(response.at("amplitude_m")[s].get<double>(), j.orbit(W)) < kClosedForm);
-      CHECK(std::abs(response.at("uy_phase_deg")[s].get<double>() - j.phase(W) * 180 / kPi) <
+      CHECK(std::abs(response.at("uy_phase_deg")[s].get<double>() - lag) < kClosedForm * 180);
+      CHECK(std::abs(response.at("uz_phase_deg")[s].get<double>() - (lag - 90)) <
             kClosedForm * 180);
+      // The table holds 17 digits.
+      CHECK(std::abs(std::stod(table[s + 1][uy]) - lag) < kClosedForm * 180);
+      CHECK(std::abs(std::stod(table[s + 1][uz]) - (lag - 90)) < kClosedForm * 180);
     }
+    CHECK(pastWrap);  // the sweep reaches the speeds where uz once wrapped
 
     // 2. The tables and charts: one Campbell row per speed, one critical speed per crossing
     //    line; gnuplot drew both charts (a script error leaves only a .log).
