@@ -1,5 +1,6 @@
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
 
+#include <algorithm>
 #include <numbers>
 
 #include "fem/rotor/LineFollower.hpp"
@@ -15,6 +16,10 @@ std::vector<CriticalSpeed> refinedCriticalSpeeds(const Model& model, const Campb
   for (const CrossingBracket& b : crossingBrackets(campbell, order)) {
     const auto& line = campbell.lines[b.line];
     const std::size_t s = b.interval;
+    // A line that changes mode across the interval (reported as a jump) changes sign there
+    // without meeting the order line: no crossing.
+    const auto jumpsHere = [&](const LineJump& j) { return j.line == b.line && j.speed == s + 1; };
+    if (std::any_of(campbell.jumps.begin(), campbell.jumps.end(), jumpsHere)) continue;
     const auto distance = [&](const RotorMode& m, double speed) {
       return m.dampedFrequency - order * speed;
     };

@@ -14,7 +14,8 @@ namespace beamrotor {
 
 /// Every crossing criticalSpeeds finds on `campbell` (solved with `options`), its speed
 /// refined to `tolerance` relative, its damping ratio and whirl those of the line's mode
-/// there; sorted by sortCriticalSpeeds.
+/// there; sorted by sortCriticalSpeeds. A sign change across a line's reported jump (the
+/// diagram's `jumps`) is no crossing and is left out.
 std::vector<CriticalSpeed> refinedCriticalSpeeds(const Model& model, const CampbellResult& campbell,
                                                  const RotorOptions& options, double order = 1,
                                                  double tolerance = kSpeedTolerance);

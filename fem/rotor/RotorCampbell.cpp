@@ -21,18 +21,47 @@ constexpr int kLocalSteps = 8;
 /// bearings stiffen fastest there); a line that changes mode moves by the distance between two
 /// modes (48 % in issue 42's jump from 98.7 to 47.7 Hz). A false alarm costs one local sweep.
 constexpr double kJump = 0.25;
+/// A step whose shapes correlate less than this has lost the line's mode (modes of different
+/// parts of a machine are orthogonal: MAC near 0; a mode's own shape changes little in one
+/// step), unless one end is a repeated eigenvalue, whose basis, and so its MAC, is arbitrary
+/// (the conical pair of a rotor at rest correlates 0.5 with its split at the next speed).
+/// The MAC alone misses a line that lands on a mode of the same disk (near 1 whatever else
+/// the modes do), which the eigenvalue's continuation catches.
+constexpr double kLostShape = 0.5;
+/// Eigenvalues this close (relative) are one repeated eigenvalue to the MAC: nearly repeated
+/// modes (slightly anisotropic bearings at rest) turn their basis within a step as well.
+constexpr double kRepeated = 1e-3;
 /// Two eigenvalues this close (relative) are the same mode solved twice.
 constexpr double kSameMode = 1e-8;
 
-/// One point of a line: a speed and the line's eigenvalue there.
+/// One point of a line: a speed, the line's eigenvalue there and whether another candidate
+/// there shares it (a NaN speed: no point, the line's first speed having none before it).
 struct LinePoint {
-  double speed = 0;
+  double speed = std::nan("");
   std::complex<double> eigenvalue;
+  bool repeated = false;
 };
 
-/// Whether `next` leaves the straight continuation of the line through `before` and `last`.
-bool jumps(const LinePoint& before, const LinePoint& last, const LinePoint& next) {
-  if (!(last.speed > before.speed)) return false;
+/// Whether candidate c's eigenvalue is repeated among `modes` (kRepeated).
+bool isRepeated(const std::vector<RotorMode>& modes, int c) {
+  for (int o = 0; o < int(modes.size()); ++o)
+    if (o != c && std::abs(modes[o].eigenvalue - modes[c].eigenvalue) <=
+                      kRepeated * std::abs(modes[c].eigenvalue))
+      return true;
+  return false;
+}
+
+/// Line l's point at a tracked speed.
+LinePoint pointOf(double speed, const RotorModesResult& at, int candidate) {
+  return {speed, at.modes[candidate].eigenvalue, isRepeated(at.modes, candidate)};
+}
+
+/// Whether `next`, reached with shapes correlating `mac`, leaves the line through `before`
+/// and `last`: a low MAC between modes that are not repeated, or an eigenvalue off the
+/// straight continuation of the two.
+bool jumps(const LinePoint& before, const LinePoint& last, const LinePoint& next, double mac) {
+  if (mac < kLostShape && !last.repeated && !next.repeated) return true;
+  if (!(last.speed > before.speed)) return false;  // one point: no continuation to leave
   const double t = (next.speed - last.speed) / (last.speed - before.speed);
   const std::complex<double> expected =
       last.eigenvalue + t * (last.eigenvalue - before.eigenvalue);
@@ -46,25 +75,38 @@ struct TrackedSpeed {
   std::vector<std::pair<int, double>> pick;
 };
 
-/// The lines' last two points: at the sweep speeds s - 2 and s - 1.
+/// The lines' last two points: at the sweep speeds s - 2 (none for s = 1) and s - 1.
 struct LineHistory {
   std::vector<LinePoint> before, last;
 };
 
-LineHistory historyBefore(const CampbellResult& result, std::size_t s) {
+/// `lastRepeated`: whether each line's eigenvalue was repeated at speed s - 1.
+LineHistory historyBefore(const CampbellResult& result, std::size_t s,
+                          const std::vector<bool>& lastRepeated) {
   LineHistory h;
-  for (const auto& line : result.lines) {
-    h.before.push_back({result.speeds[s - 2], line[s - 2].eigenvalue});
-    h.last.push_back({result.speeds[s - 1], line[s - 1].eigenvalue});
+  for (std::size_t l = 0; l < result.lines.size(); ++l) {
+    const auto& line = result.lines[l];
+    h.before.push_back(s >= 2 ? LinePoint{result.speeds[s - 2], line[s - 2].eigenvalue, false}
+                              : LinePoint{});
+    h.last.push_back({result.speeds[s - 1], line[s - 1].eigenvalue, lastRepeated[l]});
   }
   return h;
 }
 
-bool anyJump(const LineHistory& h, double speed, const TrackedSpeed& t) {
-  for (std::size_t l = 0; l < h.last.size(); ++l)
-    if (jumps(h.before[l], h.last[l], {speed, t.at.modes[t.pick[l].first].eigenvalue}))
-      return true;
-  return false;
+/// The lines that seem to jump at `speed` (their speed index left for the caller).
+std::vector<LineJump> jumpsAt(const LineHistory& h, double speed, const TrackedSpeed& t) {
+  std::vector<LineJump> out;
+  for (std::size_t l = 0; l < h.last.size(); ++l) {
+    const auto& [candidate, mac] = t.pick[l];
+    if (!jumps(h.before[l], h.last[l], pointOf(speed, t.at, candidate), mac)) continue;
+    LineJump j;
+    j.line = int(l);
+    j.fromHz = h.last[l].eigenvalue.imag() / (2 * std::numbers::pi);
+    j.toHz = t.at.modes[candidate].dampedFrequencyHz;
+    j.mac = mac;
+    out.push_back(j);
+  }
+  return out;
 }
 
 /// Whether two trackings of one speed give every line the same mode.
@@ -122,8 +164,8 @@ TrackedSpeed sweepLocally(SweepSolver& solver, double from, double to, Eigen::Ma
     Eigen::MatrixXcd next(t.at.vectors.rows(), Eigen::Index(lines));
     for (std::size_t l = 0; l < lines; ++l) {
       const RotorMode& m = t.at.modes[t.pick[l].first];
-      const LinePoint point{speed, m.eigenvalue};
-      if (!seen[l] && jumps(h.before[l], h.last[l], point)) {
+      const LinePoint point = pointOf(speed, t.at, t.pick[l].first);
+      if (!seen[l] && jumps(h.before[l], h.last[l], point, t.pick[l].second)) {
         seen[l] = true;
         LineJump j;
         j.line = int(l);
@@ -207,6 +249,7 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
   result.lines.assign(lines, {});
   result.mac.assign(lines, {});
   Eigen::MatrixXcd previous;  // each line's vector at the previous speed
+  std::vector<bool> repeated(lines, false);  // whether its eigenvalue was repeated there
   for (std::size_t s = 0; s < speeds.size(); ++s) {
     // 1. The first speed defines the lines (nearest the shift first); later speeds follow
     //    each line to the candidate whose shape correlates best with its last one.
@@ -218,17 +261,26 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
       t.pick = matchByMac(previous, t.at.vectors);
     }
     // 2. A line that seems to jump: the interval again, densely and with more candidates.
-    if (s >= 2 && anyJump(historyBefore(result, s), speeds[s], t)) {
+    std::vector<LineJump> jumped;
+    if (s >= 1) jumped = jumpsAt(historyBefore(result, s, repeated), speeds[s], t);
+    if (!jumped.empty()) {
       ++result.localSweeps;
       const int wider = 2 * candidates;
-      std::vector<LineJump> jumped;
-      TrackedSpeed local = sweepLocally(solver, speeds[s - 1], speeds[s], previous,
-                                        historyBefore(result, s), wider, jumped);
-      if (!sameModes(t, local)) {
-        // A line found its own mode among the wider candidates: keep them from here on.
-        for (const auto& [candidate, m] : local.pick)
-          if (candidate >= candidates) candidates = wider;
-        t = std::move(local);
+      const std::vector<LineJump> coarse = std::move(jumped);
+      jumped.clear();
+      try {
+        TrackedSpeed local = sweepLocally(solver, speeds[s - 1], speeds[s], previous,
+                                          historyBefore(result, s, repeated), wider, jumped);
+        if (!sameModes(t, local)) {
+          // A line found its own mode among the wider candidates: keep them from here on.
+          for (const auto& [candidate, m] : local.pick)
+            if (candidate >= candidates) candidates = wider;
+          t = std::move(local);
+        }
+      } catch (const SolveError&) {
+        // The eigensolver gave up on a speed of the local sweep (with many candidates on a
+        // badly scaled model): the sweep's own tracking stands, its jumps reported.
+        jumped = coarse;
       }
       for (LineJump& j : jumped) {
         j.speed = s;
@@ -243,6 +295,7 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
       result.mac[l].push_back(t.pick[l].second);
       next.col(l) = t.at.vectors.col(c);
       followed[c] = true;
+      repeated[l] = isRepeated(t.at.modes, c);
     }
     previous = std::move(next);
     // 3. A growing mode no line follows.

@@ -39,9 +39,12 @@ int candidatesAtGap(const std::vector<RotorMode>& modes, int lines, std::complex
 /// modes than asked (candidatesAtGap), so a tracked mode that drops down the order is still
 /// found. One assembly, one symbolic factorisation for the whole sweep.
 ///
-/// A line whose eigenvalue leaves the straight continuation of its last two speeds by more
-/// than a quarter of its size has likely changed mode (its own left the candidates, or the
-/// step is too coarse for the shapes to tell modes apart). That interval is swept again at
+/// A line whose shape correlates less than 0.5 with its last (MAC; but not where either is a
+/// repeated eigenvalue, whose basis is arbitrary), or whose eigenvalue leaves the straight
+/// continuation of its last two speeds by more than a quarter of its size, has likely changed
+/// mode (its own left the candidates, or the step is too coarse for the
+/// shapes to tell modes apart: modes dominated by one disk's orbit correlate near 1 whatever
+/// else they do, so the MAC alone does not tell). That interval is swept again at
 /// kLocalSteps speeds with twice the candidates, the lines followed through them; where that
 /// finds the line's own mode again it is kept (and the wider candidates from there on), else
 /// the jump is reported in `jumps`. A growing mode among the candidates that no line follows

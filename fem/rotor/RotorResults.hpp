@@ -76,10 +76,12 @@ struct RotorModesResult {
   SolveTimings time;
 };
 
-/// A step of the sweep where a Campbell line changes mode: its eigenvalue leaves the straight
+/// A step of the sweep where a Campbell line changes mode: its shape correlates less than 0.5
+/// with its last (neither a repeated eigenvalue), or its eigenvalue leaves the straight
 /// continuation of its last two speeds by more than a quarter of its size, even through a
-/// denser local sweep (RotorCampbell.hpp). Its MAC may still read near 1: modes dominated by
-/// the same disk's orbit correlate whatever else they do.
+/// denser local sweep (RotorCampbell.hpp).
+/// Its MAC may still read near 1: modes dominated by the same disk's orbit correlate whatever
+/// else they do.
 struct LineJump {
   int line = -1;
   std::size_t speed = 0;       ///< index of the speed it jumps at (from the one before)

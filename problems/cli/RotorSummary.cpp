@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "fem/rotor/RotorStability.hpp"
 #include "problems/cli/Summary.hpp"
@@ -14,9 +16,8 @@ namespace {
 
 constexpr double kRpm = 30 / std::numbers::pi;
 
-/// The stability half of the API 684 verdict, and the verdict as a whole.
-void printOperatingStability(std::ostream& out, const OperatingStability& s,
-                             const OperatingRange& range) {
+/// The stability half of the API 684 verdict.
+void printOperatingStability(std::ostream& out, const OperatingStability& s) {
   out << "      stability: smallest log decrement in the range " << formatValue(s.smallest)
       << " at " << formatValue(s.speed * kRpm) << " rpm (" << formatValue(s.frequencyHz) << " Hz "
       << whirlName(s.whirl) << " whirl; required " << formatValue(s.required) << ")";
@@ -26,12 +27,44 @@ void printOperatingStability(std::ostream& out, const OperatingStability& s,
   else if (s.smallest < 0)
     out << ", unstable from the sweep's first speed";
   out << ": " << (s.pass ? "pass" : "FAIL") << "\n";
-  if (!s.pass) {
-    out << "      API 684: FAIL (";
-    if (s.onset && s.onset->speed <= range.maximum)
-      out << "unstable above " << formatValue(s.onset->rpm) << " rpm, ";
-    out << "log decrement " << formatValue(s.smallest) << " in the operating range)\n";
+}
+
+/// The API 684 verdict as a whole, PASS or FAIL, with what fails it.
+void printApi684Verdict(std::ostream& out, const UnbalanceOutcome& r) {
+  if (r.api684Pass()) {
+    out << "      API 684: PASS (every peak's separation margin";
+    if (r.stability)
+      out << ", log decrement at least " << formatValue(r.stability->required)
+          << " over the operating range";
+    out << ")\n";
+    return;
   }
+  std::vector<std::string> reasons;
+  for (std::size_t k = 0; k < r.peaks.size(); ++k)
+    for (const ResponsePeak& p : r.peaks[k])
+      if (!p.pass) {
+        std::string reason = r.responsePoints[k];
+        reason += ": peak at ";
+        reason += formatValue(p.speed * kRpm);
+        reason += " rpm";
+        reasons.push_back(reason);
+      }
+  if (r.stability && !r.stability->pass) {
+    const OperatingStability& s = *r.stability;
+    std::string reason;
+    if (s.onset && s.onset->speed <= r.operating->maximum) {
+      reason += "unstable above ";
+      reason += formatValue(s.onset->rpm);
+      reason += " rpm, ";
+    }
+    reason += "log decrement ";
+    reason += formatValue(s.smallest);
+    reason += " in the operating range";
+    reasons.push_back(reason);
+  }
+  out << "      API 684: FAIL (";
+  for (std::size_t i = 0; i < reasons.size(); ++i) out << (i ? "; " : "") << reasons[i];
+  out << ")\n";
 }
 
 /// What a two-dof mode is, in words: coupled, or (b = 0) the limits of the paper's 0/0 ratio.
@@ -67,13 +100,17 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutco
       << formatValue(c.speeds.back() * kRpm) << " rpm)\n";
   if (r.criticalSpeeds.empty())
     out << "    no critical speed (" << formatValue(r.order) << "x) in this range\n";
-  for (const CriticalSpeed& k : r.criticalSpeeds)
-    out << "    critical speed " << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz)
-        << " Hz, line " << k.line + 1 << ", " << whirlName(k.whirl) << ")\n";
+  // Numbered as the check quantity `critical_speed N` reads them.
+  for (std::size_t i = 0; i < r.criticalSpeeds.size(); ++i) {
+    const CriticalSpeed& k = r.criticalSpeeds[i];
+    out << "    critical speed " << i + 1 << ": " << formatValue(k.rpm) << " rpm ("
+        << formatValue(k.frequencyHz) << " Hz, line " << k.line + 1 << ", "
+        << whirlName(k.whirl) << " whirl)\n";
+  }
   for (const CriticalSpeed& k : r.furtherCriticalSpeeds)
     out << "    " << formatValue(k.order) << "x speed meets line " << k.line + 1 << " at "
         << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz) << " Hz, "
-        << whirlName(k.whirl) << ")\n";
+        << whirlName(k.whirl) << " whirl)\n";
   // The least damped line: its smallest log decrement over the sweep.
   if (const auto least = leastDamped(c))
     out << "    smallest log decrement " << formatValue(least->logDecrement) << " (line "
@@ -116,7 +153,8 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutc
           << " % (required " << formatValue(p.requiredMargin) << " %): "
           << (p.pass ? "pass" : "FAIL") << "\n";
     }
-  if (r.stability) printOperatingStability(out, *r.stability, *r.operating);
+  if (r.stability) printOperatingStability(out, *r.stability);
+  printApi684Verdict(out, r);
 }
 
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {

@@ -85,6 +85,16 @@ struct UnbalanceOutcome {
   std::optional<OperatingRange> operating;
   std::vector<std::vector<ResponsePeak>> peaks;  ///< peaks[k]: responsePoints[k]'s
   std::optional<OperatingStability> stability;   ///< the stability half of the verdict
+
+  /// The API 684 verdict: every peak's separation margin and the stability half pass (false
+  /// without an operating range, which has no verdict).
+  bool api684Pass() const {
+    if (!operating) return false;
+    for (const auto& point : peaks)
+      for (const ResponsePeak& p : point)
+        if (!p.pass) return false;
+    return !stability || stability->pass;
+  }
 };
 
 /// frequency-response: the receptance between two dofs at one spin speed.

@@ -11,15 +11,18 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <Eigen/Eigenvalues>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "elements/Bearing.hpp"
+#include "problems/cli/RotorSummary.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/run/Study.hpp"
@@ -152,6 +155,36 @@ TEST_SUITE("rotor decks") {
     MESSAGE("DeckJeffcott deck: largest relative orbit error over the sweep " << worst);
   }
 
+  TEST_CASE("DeckJeffcott rotor deck: the summary prints the API 684 verdict, PASS or FAIL") {
+    // The damped Jeffcott rotor's one critical speed, 2074 rpm (wd), with AF = 1 / (2 zeta)
+    // = 35 (zeta 0.0144) asks API 617's margin 17 (1 - 1 / (AF - 1.5)) = 16.5 % below an
+    // operating range above it. From 3000 rpm the rotor keeps 31 %: PASS (no cross-coupling,
+    // so the stability half passes too); from 2300 rpm only 9.8 %: FAIL, naming the peak.
+    // The summary once printed only a failing verdict.
+    const DeckJeffcott j;
+    const double critical = j.wd() * 30 / kPi, af = 1 / (2 * j.zeta());
+    const double required = 17 * (1 - 1 / (af - 1.5));
+    for (const double from : {3000.0, 2300.0}) {
+      CAPTURE(from);
+      const bool passes = (from - critical) / from * 100 > required;
+      CHECK(passes == (from == 3000.0));
+      std::string text = kJeffcottDeck;
+      const std::string response = "response: [disk]}";
+      text.replace(text.find(response), response.size(),
+                   "response: [disk], operating: {min_rpm: " + std::to_string(from) +
+                       ", max_rpm: 3600}}");
+      const RunResult run = solvedText(text, "jeffcott_api684.yaml");
+      const AnalysisOutcome& a = analysis(run, "unbalance");
+      const UnbalanceOutcome& u = *resultOf<UnbalanceOutcome>(a);
+      CHECK(u.api684Pass() == passes);
+      std::ostringstream summary;
+      cli::printRotor(summary, a, u);
+      CAPTURE(summary.str());
+      CHECK(summary.str().find(passes ? "API 684: PASS" : "API 684: FAIL (disk: peak at") !=
+            std::string::npos);
+    }
+  }
+
   TEST_CASE("DeckJeffcott rotor deck: results.json, CSV and VTK hold the solved numbers") {
     const DeckJeffcott j;
     const RunResult run = jeffcottRun();
@@ -171,12 +204,29 @@ TEST_SUITE("rotor decks") {
     CHECK(relError(critical[0].at("rpm").get<double>(), j.wd() * 30 / kPi) < kClosedForm);
     const auto& response = analyses[2].at("response").at("disk");
     const auto& rpm = analyses[2].at("speeds_rpm");
+    // The phases, in results.json and the table alike: uy lags by the closed form's
+    // atan2(c W, k - m W^2), 0 to -180 deg through the critical; uz, a quarter turn behind in
+    // forward whirl (uz = -i uy), from -90 to -270 deg, unwrapped as FORMAT.md promises (std::arg
+    // wraps it at -180 into +180: issue 42's 357.6 deg jump between two samples).
+    const auto table = csvCells(dir / "unbalance_unbalance.csv");
+    REQUIRE(table.size() == rpm.size() + 1);
+    const std::size_t uy = csvColumn(table[0], "disk_uy_phase [deg]");
+    const std::size_t uz = csvColumn(table[0], "disk_uz_phase [deg]");
+    bool pastWrap = false;
     for (std::size_t s = 0; s < rpm.size(); ++s) {
       const double W = rpm[s].get<double>() * kPi / 30;
+      const double lag = j.phase(W) * 180 / kPi;
+      pastWrap = pastWrap || lag - 90 < -180;
+      CAPTURE(W);
       CHECK(relError(response.at("amplitude_m")[s].get<double>(), j.orbit(W)) < kClosedForm);
-      CHECK(std::abs(response.at("uy_phase_deg")[s].get<double>() - j.phase(W) * 180 / kPi) <
+      CHECK(std::abs(response.at("uy_phase_deg")[s].get<double>() - lag) < kClosedForm * 180);
+      CHECK(std::abs(response.at("uz_phase_deg")[s].get<double>() - (lag - 90)) <
             kClosedForm * 180);
+      // The table holds 17 digits.
+      CHECK(std::abs(std::stod(table[s + 1][uy]) - lag) < kClosedForm * 180);
+      CHECK(std::abs(std::stod(table[s + 1][uz]) - (lag - 90)) < kClosedForm * 180);
     }
+    CHECK(pastWrap);  // the sweep reaches the speeds where uz once wrapped
 
     // 2. The tables and charts: one Campbell row per speed, one critical speed per crossing
     //    line; gnuplot drew both charts (a script error leaves only a .log).
@@ -405,6 +455,88 @@ analyses:
       for (std::size_t s = 0; s < campbell.speeds.size(); ++s)
         checkDecrementJson(lines.at(l).at("log_decrement").at(s), campbell.lines[l][s].logDecrement);
     CHECK(fs::exists(dir / "campbell_stability.svg"));
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("overdamped lines of a rigid rotor on journal bearings: written, and as closed") {
+    // Issue 42, defect A: a rigid rotor on two plain journal bearings with `modes: 4` once
+    // stopped at writing (`column 'line3_log_decrement' holds text`): two of its lines are
+    // overdamped, real eigenvalues. Symmetric about its disk, the rotor's translation
+    // decouples from its tilt: m q'' + C q' + K q = 0 with q = (y, z) and C, K the two
+    // bearings' coefficients summed, whose four roots (a second method: the 4 x 4 companion
+    // matrix's eigenvalues) are two of its lines, one of them overdamped.
+    const char* deck = R"(
+title: rigid rotor on plain journal bearings
+model: {dimension: lateral, rotary_inertia: true}
+materials: [{name: steel, E: 2e17, nu: 0.3, rho: 7850}]
+sections: [{name: shaft, shape: circle, D: 50 mm}]
+segments: [{name: shaft, length: 0.6, section: shaft, elements: 6}]
+points: [{name: A, at: 0.1}, {name: disk, at: 0.3}, {name: B, at: 0.5}]
+masses: [{name: disk, at: disk, m: 20, Jp: 0.1, Jd: 0.06}]
+bearings:
+  - {name: A, at: A, type: plain-journal, D: 50 mm, L: 25 mm, c: 50 um, mu: 0.02,
+     load: gravity, from_rpm: 500, to_rpm: 20000, steps: 39}
+  - {name: B, at: B, type: plain-journal, D: 50 mm, L: 25 mm, c: 50 um, mu: 0.02,
+     load: gravity, from_rpm: 500, to_rpm: 20000, steps: 39}
+analyses:
+  - {type: campbell, name: campbell, modes: 4, from_rpm: 500, to_rpm: 20000, steps: 39}
+)";
+    const RunResult run = solvedText(deck, "rigid_journal.yaml");
+    const fs::path dir = scratchDir("rigid_journal_outputs");
+    REQUIRE_NOTHROW(writeRunOutputs(run, dir));
+    const CampbellResult& campbell = resultOf<CampbellOutcome>(run.analyses.at(0))->campbell;
+    // 1. The table and results.json: empty and null exactly where the decrement is infinite.
+    const auto rows = csvCells(dir / "campbell_campbell.csv");
+    std::ifstream in(dir / "results.json");
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    const auto& lines = doc.at("analyses").at(0).at("lines");
+    int overdamped = 0;
+    for (std::size_t l = 0; l < campbell.lines.size(); ++l) {
+      const std::size_t c = csvColumn(rows[0], "line" + std::to_string(l + 1) + "_log_decrement");
+      for (std::size_t s = 0; s < campbell.speeds.size(); ++s) {
+        const double delta = campbell.lines[l][s].logDecrement;
+        overdamped += std::isinf(delta);
+        checkDecrementCell(rows.at(s + 1).at(c), delta);
+        checkDecrementJson(lines.at(l).at("log_decrement").at(s), delta);
+      }
+    }
+    CHECK(overdamped > 0);
+    // 2. At the first speed, the translation's roots among the lines.
+    const double mass = 20 + 7850 * kPi * 0.05 * 0.05 / 4 * 0.6;
+    const double W = campbell.speeds.front();
+    Eigen::Matrix2d K = Eigen::Matrix2d::Zero(), C = Eigen::Matrix2d::Zero();
+    for (const auto& e : run.model->elements())
+      if (const auto* b = dynamic_cast<const Bearing*>(e.get())) {
+        const BearingCoefficients k = b->coefficientsAt(W);
+        K += (Eigen::Matrix2d() << k.kyy, k.kyz, k.kzy, k.kzz).finished();
+        C += (Eigen::Matrix2d() << k.cyy, k.cyz, k.czy, k.czz).finished();
+      }
+    Eigen::Matrix4d companion = Eigen::Matrix4d::Zero();
+    companion.topRightCorner<2, 2>() = Eigen::Matrix2d::Identity();
+    companion.bottomLeftCorner<2, 2>() = -K / mass;
+    companion.bottomRightCorner<2, 2>() = -C / mass;
+    const Eigen::Vector4cd roots = Eigen::EigenSolver<Eigen::Matrix4d>(companion).eigenvalues();
+    int real = 0;
+    for (const auto& root : roots) {
+      if (root.imag() < 0) continue;  // a line holds the root with Im >= 0 of a pair
+      double nearest = 1;
+      bool overdampedLine = false;
+      for (const auto& line : campbell.lines)
+        if (std::abs(line.front().eigenvalue - root) / std::abs(root) < nearest) {
+          nearest = std::abs(line.front().eigenvalue - root) / std::abs(root);
+          overdampedLine = std::isinf(line.front().logDecrement);
+        }
+      CAPTURE(root);
+      // The shaft (E 2e17) is rigid to (|lambda| / its first bending frequency)^2: measured
+      // 5e-8 for the slow oscillating root, 1.6e-5 for the slower real one (6557 1/s); the
+      // faster real one (28442 1/s) lies beyond the four lines.
+      if (root.imag() > 0) CHECK(nearest < 1e-6);
+      if (root.imag() == 0 && nearest < 1e-4) {
+        ++real;
+        CHECK(overdampedLine);
+      }
+    }
+    CHECK(real == 1);
     fs::remove_all(dir);
   }
 }

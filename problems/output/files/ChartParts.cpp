@@ -41,18 +41,6 @@ std::string colourValue(std::size_t i) {
   return std::string("0x") + (kColours[i % kColourCount] + 1);
 }
 
-std::string phaseUnwrapping() {
-  // offset: the whole turns taken out so far; previous: the last unwrapped value.
-  return "  unwrap(p) = (jump = p + offset - previous, offset = offset + (jump > 179.9 ? -360 : "
-         "jump < -180.1 ? 360 : 0), previous = p + offset, previous)\n"
-         "  startPhase(p) = (offset = p > 179.9 ? -360 : 0, previous = p + offset, previous)\n";
-}
-
-std::string continuousPhase(int column) {
-  const std::string c = "$" + std::to_string(column);
-  return "($0 == 0 ? startPhase(" + c + ") : unwrap(" + c + "))";
-}
-
 std::string number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", x);

@@ -19,16 +19,6 @@ std::size_t distinctLineStyles();
 /// The i-th palette colour as a gnuplot integer constant (0xRRGGBB), for `lc rgb variable`.
 std::string colourValue(std::size_t i);
 
-/// gnuplot functions (defined before a plot) behind continuousPhase: a phase in (-180, 180]
-/// deg unwrapped point by point. A step of more than 180 deg between neighbours is the wrap,
-/// not the response, and is taken out; a step of exactly 180 deg (an undamped resonance: the
-/// response changes sign) is drawn as a lag, down, whatever side round-off put it on, so it
-/// reads as the jump it is and never flickers between +180 and -180.
-std::string phaseUnwrapping();
-/// The `using` expression of the unwrapped phase in data column `column` (1-based): each curve
-/// starts afresh at its first row ($0 = 0), a start at +180 deg read as -180 (a lag).
-std::string continuousPhase(int column);
-
 /// x with 6 significant digits, as gnuplot reads it.
 std::string number(double x);
 

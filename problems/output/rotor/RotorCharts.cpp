@@ -75,24 +75,39 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
        << "  set yrange [0:" << number(top) << "]\n"
        << "  whirl(w) = w > 0 ? " << colourValue(kForward) << " : w < 0 ? "
        << colourValue(kBackward) << " : " << colourValue(kPlanar) << "\n";
-  // Each critical speed labelled in rpm, beside its point, clear of the other labels.
+  // Each critical speed labelled in rpm and whirl (forward: driven by unbalance; backward: not
+  // on isotropic bearings), beside its point, clear of the other labels.
   const auto speeds = critical.numbers("speed_rpm"), frequencies = critical.numbers("frequency");
+  const auto whirls = critical.numbers("whirl");
   constexpr double kLabelFont = 9, kLabelHeight = 13;
   std::vector<PointLabel> labels;
   std::vector<std::string> texts;
+  const auto whirlText = [](double w) {
+    return std::string(w > 0 ? "forward" : w < 0 ? "backward" : "planar");
+  };
   for (std::size_t k = 0; k < speeds.size(); ++k) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%.0f rpm", speeds[k]);
-    const PointLabel label{pixelX(speeds[k]), pixelY(frequencies[k]),
-                           textWidth(text) * kLabelFont / 12.0, kLabelHeight};
-    // A double mode (the two planes of an isotropic rotor) crosses twice at one point: one label.
-    bool repeated = false;
+    char rpmText[48];
+    std::snprintf(rpmText, sizeof rpmText, "%.0f rpm ", speeds[k]);
+    std::string text = rpmText;
+    text += whirlText(whirls[k]);
+    // A double mode (the two planes of an isotropic rotor) crosses twice at one point: one
+    // label naming both whirls.
+    std::size_t same = labels.size();
     for (std::size_t j = 0; j < labels.size(); ++j)
-      repeated = repeated || (texts[j] == text && std::abs(labels[j].x - label.x) < 1 &&
-                              std::abs(labels[j].y - label.y) < 1);
-    if (repeated) continue;
+      if (texts[j].rfind(rpmText, 0) == 0 && std::abs(labels[j].x - pixelX(speeds[k])) < 1 &&
+          std::abs(labels[j].y - pixelY(frequencies[k])) < 1)
+        same = j;
+    if (same < labels.size()) {
+      if (texts[same].find(whirlText(whirls[k])) == std::string::npos) {
+        texts[same] += " + ";
+        texts[same] += whirlText(whirls[k]);
+        labels[same].width = textWidth(texts[same]) * kLabelFont / 12.0;
+      }
+      continue;
+    }
+    labels.push_back({pixelX(speeds[k]), pixelY(frequencies[k]),
+                      textWidth(text) * kLabelFont / 12.0, kLabelHeight});
     texts.push_back(text);
-    labels.push_back(label);
   }
   const std::vector<PixelBox> boxes = placeLabels(labels, plot);
   // gnuplot centres a label's text vertically on its position.
@@ -147,7 +162,7 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
   titles.insert(titles.end(), shading.titles.begin(), shading.titles.end());
   const int keyMargin = keyWidth(titles);
   const int width = 770 + keyMargin, height = 800;
-  // Amplitudes on a log scale skip the zeros (no force at rest); phases are unwrapped.
+  // Amplitudes on a log scale skip the zeros (no force at rest); phases come unwrapped.
   const auto panel = [&](const std::string& what, double scale, bool positive) {
     std::ostringstream s;
     s << shading.setup << "  plot ";
@@ -158,7 +173,7 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
       if (positive)
         s << "($" << column << " > 0 ? $" << column << "*" << number(scale) << " : NaN)";
       else
-        s << continuousPhase(column);
+        s << column;
       s << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << lineStyle(k)
         << " title " << gnuplotText(points[k]);
     }
@@ -172,7 +187,7 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
        << panel("amplitude", 1e6, true) << "  unset logscale y\n  set format y '%g'\n"
        << "  set ytics autofreq\n  set mytics default\n"
        << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'phase of u_y, lag negative [deg]'\n"
-       << "  set yrange [*:*]\n  set ytics 90\n" << phaseUnwrapping()
+       << "  set yrange [*:*]\n  set ytics 90\n"
        << panel("uy_phase", 1, false) << "  unset multiplot\n";
   return {chartName, "Unbalance response: amplitude and phase against spin speed", width, height,
           body.str()};
@@ -200,8 +215,7 @@ ChartScript frequencyResponseDiagram(const std::string& caption, const std::stri
        << curve("($" + std::to_string(m) + " > 0 ? $" + std::to_string(m) + " : NaN)")
        << "  unset logscale y\n  set format y '%g'\n  set ytics autofreq\n  set mytics default\n"
        << "  set xlabel 'excitation frequency [Hz]'\n  set ylabel 'phase, lag negative [deg]'\n"
-       << "  set yrange [*:*]\n  set ytics 90\n" << phaseUnwrapping()
-       << curve(continuousPhase(p))
+       << "  set yrange [*:*]\n  set ytics 90\n" << curve(std::to_string(p))
        << "  unset multiplot\n";
   return {chartName, "Frequency response: receptance magnitude and phase against frequency",
           width, height, body.str()};

@@ -9,12 +9,11 @@
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/rotor/RotorFileNames.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
+#include "problems/output/rotor/UnwrappedPhase.hpp"
 
 namespace beamrotor {
 
 namespace {
-
-constexpr double kDegrees = 180 / std::numbers::pi;
 
 /// A number, or null where it is infinite by definition (a real eigenvalue's decrement). A NaN
 /// is a fault, not such a value: it stays a number for requireFiniteNumbers to refuse.
@@ -123,11 +122,9 @@ Json campbellJson(const std::string& stem, const CampbellOutcome& r) {
 /// API 684 reading: the operating range and each response point's peaks.
 Json api684Json(const std::string& stem, const UnbalanceOutcome& r) {
   Json points = Json::object();
-  bool pass = true;
   for (std::size_t k = 0; k < r.peaks.size(); ++k) {
     Json peaks = Json::array();
     for (const ResponsePeak& p : r.peaks[k]) {
-      pass = pass && p.pass;
       peaks.push_back({{"rpm", rpmOf(p.speed)},
                        {"amplitude_m", p.amplitude},
                        {"half_power_rpm", {rpmOf(p.lowerHalfPower), rpmOf(p.upperHalfPower)}},
@@ -144,7 +141,6 @@ Json api684Json(const std::string& stem, const UnbalanceOutcome& r) {
   Json stability(nullptr);
   if (r.stability) {
     const OperatingStability& s = *r.stability;
-    pass = pass && s.pass;
     stability = {{"min_log_decrement_required", s.required},
                  {"smallest_log_decrement", finiteOrNull(s.smallest)},
                  {"at_rpm", rpmOf(s.speed)},
@@ -156,7 +152,7 @@ Json api684Json(const std::string& stem, const UnbalanceOutcome& r) {
   return {{"operating_rpm", {rpmOf(r.operating->minimum), rpmOf(r.operating->maximum)}},
           {"peaks", points},
           {"stability", stability},
-          {"pass", pass},
+          {"pass", r.api684Pass()},
           {"csv", api684Csv(stem)}};
 }
 
@@ -168,13 +164,14 @@ Json unbalanceJson(const std::string& stem, const UnbalanceOutcome& r) {
     Json major = Json::array(), ay = Json::array(), az = Json::array(), py = Json::array(),
          pz = Json::array();
     std::size_t peak = 0;
+    const UnbalancePhases phases = unbalancePhases(u.orbits[k]);
     for (std::size_t s = 0; s < u.speeds.size(); ++s) {
       const Orbit& o = u.orbits[k][s];
       major.push_back(o.major());
       ay.push_back(std::abs(o.uy));
       az.push_back(std::abs(o.uz));
-      py.push_back(std::arg(o.uy) * kDegrees);
-      pz.push_back(std::arg(o.uz) * kDegrees);
+      py.push_back(phases.uy[s]);
+      pz.push_back(phases.uz[s]);
       if (o.major() > u.orbits[k][peak].major()) peak = s;
     }
     response[r.responsePoints[k]] = {
@@ -195,12 +192,12 @@ Json unbalanceJson(const std::string& stem, const UnbalanceOutcome& r) {
 
 Json frequencyResponseJson(const std::string& stem, const FrequencyResponseOutcome& r) {
   const FrequencyResponseResult& f = r.response;
-  Json hz = Json::array(), magnitude = Json::array(), phase = Json::array();
+  Json hz = Json::array(), magnitude = Json::array();
   for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
     hz.push_back(f.frequencies[i] / (2 * std::numbers::pi));
     magnitude.push_back(std::abs(f.receptance[i]));
-    phase.push_back(std::arg(f.receptance[i]) * kDegrees);
   }
+  const Json phase = unwrappedPhases(f.receptance);
   return {{"speed_rpm", rpmOf(f.speed)},
           {"input", r.input},
           {"output", r.output},

@@ -6,7 +6,8 @@
 //                whirl, mac}], critical_speeds [{rpm, speed_rad_s, frequency_hz, line,
 //                damping_ratio, whirl}], symbolic_analyses, time_s, files}
 //   unbalance:  {type, name, speeds_rpm, response {POINT: {amplitude_m, uy_amplitude_m,
-//                uz_amplitude_m, uy_phase_deg, uz_phase_deg, peak {amplitude_m, rpm}}},
+//                uz_amplitude_m, uy_phase_deg, uz_phase_deg (unwrapped along the speeds),
+//                peak {amplitude_m, rpm}}},
 //                time_s, files}
 //   rigid-body: {type, name, rigid_body {mass, com_x, J_com, Jp, bearing_x {A, B},
 //                stiffness {A, B}}, two_dof {a, b, d, rho2, decoupled, modes [{mode,

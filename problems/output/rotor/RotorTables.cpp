@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "problems/output/rotor/UnwrappedPhase.hpp"
+
 namespace beamrotor {
 
 long long whirlSign(Whirl w) {
@@ -69,10 +71,11 @@ CsvTable frequencyResponseTable(const std::string& title, const FrequencyRespons
                          {"phase", "deg"},
                          {"real", "m/N"},
                          {"imag", "m/N"}});
+  const std::vector<double> phase = unwrappedPhases(f.receptance);
   for (std::size_t i = 0; i < f.frequencies.size(); ++i) {
     const std::complex<double> h = f.receptance[i];
     table.addRow({f.frequencies[i] / (2 * std::numbers::pi), f.frequencies[i], std::abs(h),
-                  std::arg(h) * 180 / std::numbers::pi, h.real(), h.imag()});
+                  phase[i], h.real(), h.imag()});
   }
   return table;
 }
@@ -151,13 +154,14 @@ CsvTable unbalanceTable(const std::string& title, const UnbalanceResult& u,
                                                           {"uz_phase", "deg"}})
       columns.push_back({p + "_" + what, unit});
   CsvTable table(title, columns);
-  const double degrees = 180 / std::numbers::pi;
+  std::vector<UnbalancePhases> phases;
+  for (std::size_t k = 0; k < points.size(); ++k) phases.push_back(unbalancePhases(u.orbits[k]));
   for (std::size_t s = 0; s < u.speeds.size(); ++s) {
     std::vector<CsvCell> row{u.speeds[s], rpmOf(u.speeds[s])};
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Orbit& o = u.orbits[k][s];
-      row.insert(row.end(), {o.major(), std::abs(o.uy), std::abs(o.uz), std::arg(o.uy) * degrees,
-                             std::arg(o.uz) * degrees});
+      row.insert(row.end(), {o.major(), std::abs(o.uy), std::abs(o.uz), phases[k].uy[s],
+                             phases[k].uz[s]});
     }
     table.addRow(std::move(row));
   }

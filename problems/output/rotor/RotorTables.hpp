@@ -35,7 +35,8 @@ CsvTable journalBearingsTable(const std::string& title,
 CsvTable api684Table(const std::string& title, const UnbalanceOutcome& r);
 
 /// Frequency response: one row per excitation frequency: frequency (Hz), omega (rad/s),
-/// magnitude, phase (deg), real, imag of the receptance (m/N for translations).
+/// magnitude, phase (deg, unwrapped: UnwrappedPhase.hpp), real, imag of the receptance (m/N
+/// for translations).
 CsvTable frequencyResponseTable(const std::string& title, const FrequencyResponseResult& f);
 
 /// One row per mode: mode, damped and natural frequency (Hz), damping ratio, log decrement
@@ -57,7 +58,7 @@ CsvTable criticalSpeedsTable(const std::string& title, const std::vector<Critica
 
 /// One row per speed: speed (rad/s), speed_rpm, then per response point P: P_amplitude (m,
 /// orbit semi-major axis), P_uy_amplitude, P_uz_amplitude (m), P_uy_phase, P_uz_phase (deg,
-/// of u = Re(U e^{i Omega t}), in (-180, 180]).
+/// of u = Re(U e^{i Omega t}), each unwrapped along the speeds: UnwrappedPhase.hpp).
 CsvTable unbalanceTable(const std::string& title, const UnbalanceResult& u,
                         const std::vector<std::string>& points);
 

@@ -8,6 +8,7 @@
 
 #include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
+#include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
 #include "fem/rotor/RotorModes.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
@@ -206,6 +207,56 @@ TEST_SUITE("rotor campbell") {
       CHECK(err < (n == 21 ? 1e-5 : 3e-6));
       if (previous > 0) CHECK(previous / err > 3);
       previous = err;
+    }
+  }
+
+  TEST_CASE("rigid rotor: critical speeds refined on the speed, whatever the sweep's step") {
+    // Issue 42, defect D: interpolated between sweep speeds, a crossing errs as the step
+    // squared (the test above); refined on the speed (regula falsi on omega_d(W) - W of the
+    // line followed into its interval) it meets the closed forms of the case above to the
+    // stiff shaft's residual flexibility, on a 7-speed sweep as on a 41-speed one.
+    const CampbellRigidRotor r;
+    Model model;
+    r.build(model);
+    const double fwd = std::sqrt(r.kPhi() / (r.Jd() - r.Jp()));
+    const double bwd = std::sqrt(r.kPhi() / (r.Jd() + r.Jp()));
+    std::vector<CriticalSpeed> coarse;
+    for (int n : {7, 41}) {
+      CAPTURE(n);
+      const CampbellResult c = solveCampbell(model, linspace(0, 2000, n), rotorOptions(4));
+      const std::vector<CriticalSpeed> interpolated = criticalSpeeds(c);
+      const std::vector<CriticalSpeed> refined = refinedCriticalSpeeds(model, c, rotorOptions(4));
+      REQUIRE(refined.size() == 4);
+      REQUIRE(interpolated.size() == 4);
+      // Ascending; the bounce pair crosses at one speed, its forward whirl (the one an
+      // unbalance drives) first.
+      CHECK(refined[0].whirl == Whirl::forward);
+      CHECK(refined[1].whirl == Whirl::backward);
+      CHECK(refined[2].whirl == Whirl::backward);
+      CHECK(refined[3].whirl == Whirl::forward);
+      const double references[] = {r.bounce(), r.bounce(), bwd, fwd};
+      for (std::size_t k = 0; k < 4; ++k) {
+        CAPTURE(k);
+        // Measured 3.9e-8 for the bounce pair, 6.5e-9 for the conical crossings: the 4-element
+        // stiff shaft's flexibility (E 2e17), not the step; 1e-7 leaves room for both.
+        CHECK(relError(refined[k].speed, references[k]) < 1e-7);
+        CHECK(relError(refined[k].rpm, references[k] * 30 / kPi) < 1e-7);
+        CHECK(relError(refined[k].frequencyHz, references[k] / (2 * kPi)) < 1e-7);
+        // Undamped: the line's own damping ratio there, zero up to its round-off.
+        CHECK(std::abs(refined[k].dampingRatio) < 1e-12);
+      }
+      const double interpolationError = relError(interpolated[3].speed, fwd);
+      MESSAGE(n << " speeds: forward conical critical speed interpolated to "
+                << interpolationError << ", refined to " << relError(refined[3].speed, fwd));
+      if (n == 7) {
+        // The coarse sweep's interpolation: measured 6.6e-5, four orders above.
+        CHECK(interpolationError > 1e-5);
+        coarse = refined;
+      } else {
+        // The same roots from brackets of another sweep: 1e-10 of the speed each (the
+        // refinement's tolerance) and the eigensolver's round-off.
+        for (std::size_t k = 0; k < 4; ++k) CHECK(relError(refined[k].speed, coarse[k].speed) < 1e-9);
+      }
     }
   }
 

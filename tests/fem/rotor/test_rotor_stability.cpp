@@ -62,6 +62,21 @@ OperatingStability jeffcottStability(const OperatingRange& range, double require
   return operatingStability(model, rotorOptions(2), range, 100, required);
 }
 
+/// A rigid rotor (E 2e17) on two undamped isotropic bearings of unequal stiffness: a disk
+/// off-centre, gyroscopic moments, no damping anywhere.
+void buildUndampedRigidRotor(Model& model) {
+  auto sec = std::make_shared<Section>(
+      Section::circle("shaft", Material::fromEnu("stiff", 2e17, 0.3, 7850), 0.1));
+  LineSpec spec;
+  spec.dofs = DofSet::lateral();
+  spec.segments.push_back({1.0, sec, 4, 0, {BeamTheory::timoshenko, MassModel::consistent, true}});
+  spec.points = {{"A", 0.1}, {"B", 0.9}, {"disk", 0.7}};
+  buildLine(model, spec);
+  model.add<PointInertia>(model.node("disk"), DofSet::lateral(), 30, 0.6, 0.35);
+  model.add<Bearing>(model.node("A"), BearingCoefficients::isotropic(1e7));
+  model.add<Bearing>(model.node("B"), BearingCoefficients::isotropic(1.3e7));
+}
+
 std::vector<double> grid(double top, int steps) {
   std::vector<double> s;
   for (int i = 0; i <= steps; ++i) s.push_back(top * i / steps);
@@ -146,6 +161,39 @@ TEST_SUITE("rotor stability") {
     CHECK(least->line == 1);
     CHECK(least->logDecrement == -std::numeric_limits<double>::infinity());
     CHECK_FALSE(leastDamped(table, 2).has_value());  // no speeds left
+  }
+
+  TEST_CASE("an undamped rotor never goes unstable, whatever the sign of its round-off") {
+    // Issue 42, defect E. Without damping, with symmetric positive definite K and M and a
+    // skew gyroscopic matrix, the energy q'M q' / 2 + q'K q / 2 is conserved (its rate is
+    // -Omega q'G q' = 0), so no mode grows, and the spectrum's symmetry lambda -> -conj(lambda)
+    // lets none decay either: every decrement is exactly 0 (Thomson and Tait's theorem on
+    // gyroscopic systems). The eigensolver's round-off gives Re(lambda) of either sign: 1e-16
+    // of |lambda| for the rigid modes, 2e-9 for the stiff shaft's bending modes 4800 times
+    // further from the shift. Judged on Re(lambda) itself, one such sign once made this
+    // rotor "unstable above 97 rpm" (two lines) or above any speed at all.
+    Model model;
+    buildUndampedRigidRotor(model);
+    std::vector<double> speeds;
+    for (int i = 0; i <= 10; ++i) speeds.push_back(10 + 299.0 * i);
+    for (int modes : {2, 4, 6}) {
+      CAPTURE(modes);
+      const RotorOptions options = rotorOptions(modes);
+      const CampbellResult campbell = solveCampbell(model, speeds, options);
+      CHECK_FALSE(instabilityOnset(model, campbell, options).has_value());
+      const auto least = leastDamped(campbell);
+      REQUIRE(least.has_value());
+      CHECK(least->logDecrement == 0);
+      CHECK_FALSE(campbell.untracked.has_value());
+      // Each mode's round-off band holds the exact 0 its damping ratio stands for.
+      double largest = 0;
+      for (const auto& line : campbell.lines)
+        for (const RotorMode& m : line) {
+          CHECK(std::abs(m.dampingRatio) <= m.roundOff);
+          largest = std::max(largest, std::abs(m.dampingRatio));
+        }
+      MESSAGE(modes << " lines: largest |zeta| of the undamped rotor " << largest);
+    }
   }
 
   TEST_CASE("no onset when the cross-coupling stays below the damping's reach") {

@@ -1,31 +1,25 @@
 // The pieces of the rotor charts against numbers worked out by hand: the phase of a response
-// unwrapped by gnuplot (a two-mode closed form, and an undamped sign change with round-off),
-// the shared line styles kept apart, the operating band's API 684 margins, and the orbit
-// samples of circular forward and backward whirl.
+// unwrapped as the tables write it (a two-mode closed form, and an undamped sign change with
+// round-off), the shared line styles kept apart, the operating band's API 684 margins, and the
+// orbit samples of circular forward and backward whirl.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <complex>
-#include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "problems/output/files/ChartParts.hpp"
-#include "problems/output/files/Gnuplot.hpp"
 #include "problems/output/rotor/OperatingBand.hpp"
 #include "problems/output/rotor/RotorOrbitChart.hpp"
+#include "problems/output/rotor/UnwrappedPhase.hpp"
 #include "tests/Helpers.hpp"
-#include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
 using namespace beamrotor::test;
 
 namespace {
-
-namespace fs = std::filesystem;
 
 /// (-180, 180] deg, as std::arg gives it.
 double wrapped(double degrees) {
@@ -34,35 +28,17 @@ double wrapped(double degrees) {
   return w - 180;
 }
 
-/// The phases gnuplot draws for `phases` (one per row), read back from a `set table`.
-std::vector<double> unwrappedByGnuplot(const fs::path& dir, const std::vector<double>& phases) {
-  {
-    std::ofstream csv(dir / "phase.csv");
-    csv << "n,phase\n";
-    csv.precision(17);
-    for (std::size_t i = 0; i < phases.size(); ++i) csv << i << "," << phases[i] << "\n";
-  }
-  const std::string plot = "  plot './phase.csv' skip 1 using 1:" + continuousPhase(2) +
-                           " with lines notitle\n";
-  REQUIRE(drawChart(dir, {"phase", "phase test", 400, 300,
-                          phaseUnwrapping() + "  set table './unwrapped.txt'\n" + plot +
-                              "  unset table\n" + plot}));
-  std::vector<double> out;
-  std::ifstream table(dir / "unwrapped.txt");
-  for (std::string line; std::getline(table, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    double n = 0, value = 0;
-    if (fields >> n >> value) out.push_back(value);
-  }
-  return out;
+/// The unwrapped phases of unit responses at `phases` (deg, as std::arg gives them).
+std::vector<double> unwrapped(const std::vector<double>& phases) {
+  std::vector<std::complex<double>> values;
+  for (double p : phases) values.push_back(std::polar(1.0, p * kPi / 180));
+  return unwrappedPhases(values);
 }
 
 }  // namespace
 
 TEST_SUITE("rotor charts") {
   TEST_CASE("phase: continuous through two damped resonances, an undamped sign change one lag") {
-    const fs::path dir = scratchDir("rotor-chart-phase");
     // Two modes in series (r = omega / omega_i, omega_2 = 2 omega_1, zeta 0.05 each): the
     // response lags by the sum of the two modes' phase angles, 0 to -360 deg, which wraps
     // at -180 into +180.
@@ -73,18 +49,17 @@ TEST_SUITE("rotor charts") {
       exact.push_back(-lag * 180 / kPi);
       phases.push_back(wrapped(exact.back()));
     }
-    const std::vector<double> damped = unwrappedByGnuplot(dir, phases);
+    const std::vector<double> damped = unwrapped(phases);
     REQUIRE(damped.size() == exact.size());
-    // gnuplot's table prints 6 significant digits: 360 deg to ~1e-3.
+    // (Once read back from gnuplot's 6 digits; round-off alone now.)
     for (std::size_t i = 0; i < exact.size(); ++i) CHECK(damped[i] == doctest::Approx(exact[i]).epsilon(1e-5).scale(1));
     // Undamped: 0 below resonance, a sign change above, where round-off puts the phase at
-    // +180 or -180 from point to point: drawn as one lag of 180 deg, then flat.
+    // +180 or -180 from point to point: one lag of 180 deg, then flat.
     const std::vector<double> undamped =
-        unwrappedByGnuplot(dir, {0, 0, 0, 180, -180, 179.99999999, -180, 180, 180, -179.99999999});
+        unwrapped({0, 0, 0, 180, -180, 179.99999999, -180, 180, 180, -179.99999999});
     REQUIRE(undamped.size() == 10);
     for (std::size_t i = 0; i < undamped.size(); ++i)
       CHECK(undamped[i] == doctest::Approx(i < 3 ? 0 : -180).epsilon(1e-6).scale(1));
-    fs::remove_all(dir.parent_path());
   }
 
   TEST_CASE("line styles: distinct colours for ten curves, distinct pairs for thirty") {
