@@ -141,8 +141,18 @@ StudyParameter parseSampleOption(const std::string& argument, const Deck& deck,
   };
   d.first = value(args[0]);
   // A lognormal's sigma is the spread of the logarithm: a pure number.
-  d.second = d.kind == StudyDistribution::Kind::lognormal ? ExpressionEvaluator().evaluate(args[1])
-                                                          : value(args[1]);
+  const auto pureNumber = [&](const std::string& text) {
+    Amount a;
+    try {
+      a = ExpressionEvaluator().amount(text);
+    } catch (const ExpressionError& e) {
+      fail(e.what());
+    }
+    if (!a.anyDimension && !a.dimension.dimensionless())
+      fail("sigma (of the logarithm) is a pure number, got '" + text + "'");
+    return a.si;
+  };
+  d.second = d.kind == StudyDistribution::Kind::lognormal ? pureNumber(args[1]) : value(args[1]);
   if (args.size() == 4) {
     d.lower = value(args[2]);
     d.upper = value(args[3]);

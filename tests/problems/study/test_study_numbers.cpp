@@ -113,3 +113,17 @@ TEST_SUITE("design studies") {
     std::filesystem::remove_all(scratch);
   }
 }
+
+TEST_SUITE("study command line") {
+  TEST_CASE("a lognormal's sigma that cannot be read, or has a unit, is bad input naming --sample") {
+    // Found by fuzzing the study options: the error escaped as "cannot write the results" (exit 1).
+    const ProcessResult unknown = runBeamrotor({"study", "problems/pump_rod.yaml", "--sample",
+                                                "w0=lognormal(1e-3,abc)", "--samples", "3"});
+    CHECK(unknown.exitCode == 2);
+    CHECK(mentions(unknown.err, "--sample w0=lognormal(1e-3,abc): cannot evaluate 'abc'"));
+    const ProcessResult unit = runBeamrotor({"study", "problems/pump_rod.yaml", "--sample",
+                                             "w0=lognormal(1e-3,1 m)", "--samples", "3"});
+    CHECK(unit.exitCode == 2);
+    CHECK(mentions(unit.err, "sigma (of the logarithm) is a pure number, got '1 m'"));
+  }
+}
