@@ -176,6 +176,26 @@ TEST_SUITE("study stop and resume") {
     fs::remove_all(scratch);
   }
 
+  TEST_CASE("--resume with --point-files: every point's directory, kept or made") {
+    const fs::path scratch = scratchDir("study-resume-points");
+    DesignStudyRequest r = strokeAndWear(scratch / "s");
+    r.study.sweeps = {"eta=0:0.4:4"};
+    r.pointFiles = true;
+    // Stopped as the second row is written: its point's files are not (the study is stopping).
+    const DesignStudyOutcome part = runUntilSignal(r, 2, SIGINT);
+    REQUIRE(part.partial());
+    CHECK(fs::exists(part.dir / "points" / "0" / "results.json"));
+    CHECK_FALSE(fs::exists(part.dir / "points" / "1"));
+    r.resumeDir = r.outDir;
+    const DesignStudyOutcome resumed = runDesignStudy(r);
+    REQUIRE_FALSE(resumed.partial());
+    for (int k = 0; k < 5; ++k) {
+      CAPTURE(k);
+      CHECK(fs::exists(resumed.dir / "points" / std::to_string(k) / "results.json"));
+    }
+    fs::remove_all(scratch);
+  }
+
   TEST_CASE("--resume refuses another study, naming what differs") {
     const fs::path scratch = scratchDir("study-resume-other");
     const DesignStudyOutcome part = runUntilSignal(strokeAndWear(scratch / "s"), 12, SIGINT);
