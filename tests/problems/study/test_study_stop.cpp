@@ -147,12 +147,19 @@ TEST_SUITE("study stop and resume") {
 
   TEST_CASE("--resume of a stopped study writes the uninterrupted table byte for byte") {
     const fs::path scratch = scratchDir("study-resume");
-    const DesignStudyOutcome whole = runDesignStudy(strokeAndWear(scratch / "whole"));
+    // 81 x 61 points: more than threads may solve ahead of the table (4096 rows, see
+    // StudyExecution.cpp) past row 57, so the stop always leaves points missing.
+    const auto grid = [&](const std::string& name) {
+      DesignStudyRequest r = strokeAndWear(scratch / name);
+      r.study.sweeps = {"eta=0:0.4:80", "w0=0.5e-3:1.5e-3:60"};
+      return r;
+    };
+    const DesignStudyOutcome whole = runDesignStudy(grid("whole"));
     REQUIRE_FALSE(whole.partial());
     CHECK_FALSE(fs::exists(whole.dir / kResumeFile));  // a finished study has nothing to resume
     for (int threads : {1, 2}) {
       CAPTURE(threads);
-      DesignStudyRequest r = strokeAndWear(scratch / ("part" + std::to_string(threads)));
+      DesignStudyRequest r = grid("part" + std::to_string(threads));
       r.threads = threads;
       const DesignStudyOutcome part = runUntilSignal(r, 57, SIGTERM);
       REQUIRE(part.partial());
@@ -160,7 +167,7 @@ TEST_SUITE("study stop and resume") {
       const std::vector<long long> kept = tablePoints(part.dir / "study.csv");
       CHECK(std::is_sorted(kept.begin(), kept.end()));
       CHECK(std::set<long long>(kept.begin(), kept.end()).size() == kept.size());
-      CHECK(kept.size() + std::size_t(part.missing.size()) == 231);
+      CHECK(kept.size() + std::size_t(part.missing.size()) == 81 * 61);
       r.resumeDir = r.outDir;
       r.outDir.clear();  // the study goes where it was
       const DesignStudyOutcome resumed = runDesignStudy(r);
