@@ -174,13 +174,18 @@ verify-frames: configure
 	  tests/verify/frames/base_frame_3d.json
 
 # Fuzz the deck reader and the command-line values (clang-14 + libFuzzer, ASan, UBSan),
-# FUZZ_SECONDS each: seeds are the shipped decks and malformed fixtures (fuzz_deck) and the
-# option lines in tests/problems/fuzz_inputs/ (fuzz_options); new inputs collect in
-# $(FUZZ_BUILD)/corpus-*, crashes in $(FUZZ_BUILD)/. Keep each finding, once fixed, as a
-# fixture in tests/problems/fuzz_inputs/ (`make test` replays them).
+# FUZZ_SECONDS each (default 10 minutes; never part of `make test`): fuzz_deck reads each input
+# as a deck, builds its model when small and reads its design study; fuzz_options tries --set,
+# --sweep (with units), expressions, --formulation, check quantities and the study options
+# --sample, --sweep and --output (limits from either side). Seeds are the shipped decks, the
+# malformed fixtures and tests/problems/fuzz_inputs/ (frames with releases, load cases and
+# combinations, rotors on bearings, sampled and grid studies, option lines); new inputs collect
+# in $(FUZZ_BUILD)/corpus-*, crashes in $(FUZZ_BUILD)/; each run ends with its statistics
+# (executions, peak memory). Keep each finding, once fixed, as a fixture
+# tests/problems/fuzz_inputs/finding_* (`make test` replays every file there).
 FUZZ_BUILD   := build-fuzz
 FUZZ_SECONDS ?= 600
-FUZZ_FLAGS   := -max_len=8192 -timeout=10 -rss_limit_mb=2048
+FUZZ_FLAGS   := -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
 .PHONY: fuzz
 fuzz:
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 \

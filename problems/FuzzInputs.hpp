@@ -12,6 +12,7 @@
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/structure/FormulationOption.hpp"
+#include "problems/deck/study/DesignStudy.hpp"
 #include "problems/deck/study/Overrides.hpp"
 #include "problems/deck/Quantity.hpp"
 #include "problems/deck/study/SweepOption.hpp"
@@ -29,10 +30,14 @@ inline void buildIfSmall(const Deck& deck) {
   if (elements <= kLargestBuilt) buildModel(deck);
 }
 
-/// Arbitrary bytes read as a deck and, when small, built into a model.
+/// Arbitrary bytes read as a deck and, when small, built into a model; then its design study
+/// (its `study:` block, or its sweep as a grid) read as `beamrotor study` reads it.
 inline void deckInput(const std::string& text) {
   try {
-    buildIfSmall(readDeck(parseDeckText(text, "fuzz.yaml")));
+    const DeckSource source = parseDeckText(text, "fuzz.yaml");
+    const Deck deck = readDeck(source);
+    buildIfSmall(deck);
+    readDesignStudy(source, deck, {});
   } catch (const DeckError&) {
     // The reader's own answer to bad input: expected.
   }
@@ -52,10 +57,32 @@ analyses: [{type: static, name: bend}, {type: modal, name: vib, modes: 2}]
 checks: [{name: tip, quantity: displacement end uy, reference: -P*a^2*(3*L-a)/(6*EI), tolerance: 1e-6}]
 )";
 
+/// A `beamrotor study` option ('m' --sample NAME=DIST(...), 3 samples; 'g' a grid's --sweep;
+/// 'o' --output QUANTITY [<=|>= LIMIT]) read against `deck`: only DeckError may answer it
+/// (an ExpressionError escaping the study reader once became exit 1, "cannot write").
+inline void studyOptionInput(char kind, const std::string& value, const DeckSource& source,
+                             const Deck& deck) {
+  StudyCommandLine study;
+  if (kind == 'm') {
+    study.samples = {value};
+    study.count = 3;
+  } else if (kind == 'g') {
+    study.sweeps = {value};
+  } else {
+    study.sweeps = {"P=1,2"};
+    study.outputs = {value};
+  }
+  try {
+    readDesignStudy(source, deck, study);
+  } catch (const DeckError&) {
+  }
+}
+
 /// Lines of command-line values, each kind by its first byte: 's' --set NAME=VALUE (then the
 /// deck re-read with it), 'w' --sweep SPEC (then the deck re-read at its first values), 'e' an
 /// expression of the deck's names (evaluated, and compiled as a function of t), 'f'
-/// --formulation, 'q' a check quantity.
+/// --formulation, 'q' a check quantity; and `beamrotor study`'s: 'm' --sample
+/// NAME=DIST(...) (3 samples), 'g' a grid's --sweep, 'o' --output QUANTITY [<=|>= LIMIT].
 inline void optionsInput(const std::string& text) {
   const DeckSource source = parseDeckText(kOptionsDeck, "options.yaml");
   const Deck deck = readDeck(source);
@@ -63,6 +90,10 @@ inline void optionsInput(const std::string& text) {
   for (std::string line; std::getline(lines, line);) {
     if (line.empty()) continue;
     const std::string value = line.substr(1);
+    if (line[0] == 'm' || line[0] == 'g' || line[0] == 'o') {
+      studyOptionInput(line[0], value, source, deck);
+      continue;
+    }
     try {
       switch (line[0]) {
         case 's':
@@ -91,6 +122,7 @@ inline void optionsInput(const std::string& text) {
         case 'q':
           parseQuantity(value);
           break;
+
         default:
           break;
       }

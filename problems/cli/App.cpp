@@ -9,6 +9,7 @@
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/ReportCommand.hpp"
+#include "problems/cli/WholeNumberOption.hpp"
 #include "problems/deck/structure/Formulations.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/run/DeckRunner.hpp"
@@ -102,17 +103,17 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
           ->add_option("--elements", bench.elements,
                        "element count (planar: whole spans of 10; grid3d: nearest grillage; "
                        "rotor: a multiple of 4)")
-          ->check(CLI::Range(4, 100000000));
+          ->check(wholeNumber(4, 100000000));
   benchCmd->add_option("--dofs", bench.dofs, "size the model to the free dof count nearest N")
       ->type_name("N")
-      ->check(CLI::Range(1LL, 1000000000LL))
+      ->check(wholeNumber(1, 1000000000))
       ->excludes(elements);
   benchCmd
       ->add_option("--modes", bench.modes,
                    "lowest modes, rotor: Campbell lines (default 10, rotor 12; 0: statics only)")
-      ->check(CLI::Range(0, 1000));
+      ->check(wholeNumber(0, 1000));
   benchCmd->add_option("--repeat", bench.repeat, "runs; times are medians")
-      ->check(CLI::Range(1, 1000));
+      ->check(wholeNumber(1, 1000));
   benchCmd->add_option("--json", benchJsonPath, "also write the figures as JSON")
       ->type_name("FILE");
   benchCmd
@@ -153,7 +154,8 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   convergeCmd
       ->add_option("--levels", converge.options.levels,
                    "meshes: the deck's own and N-1 refinements (default 5)")
-      ->type_name("N");
+      ->type_name("N")
+      ->check(wholeNumber(1, 16));
   convergeCmd
       ->add_option("--out,-o", converge.outDir,
                    "output directory (default: out/<deck name>_converge/)")
@@ -205,9 +207,13 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->type_name("NAME=DIST(...)")
       ->allow_extra_args(false);
   studyCmd->add_option("--samples", study.study.count, "how many points to sample")
-      ->type_name("N");
-  studyCmd->add_option("--seed", study.study.seed, "seed of the random engine (std::mt19937_64)")
-      ->type_name("S");
+      ->type_name("N")
+      ->check(wholeNumber(1, std::uint64_t(kMaxStudyPoints)));
+  studyCmd
+      ->add_option("--seed", study.study.seed,
+                   "seed of the random engine (std::mt19937_64), 0 to 2^64 - 1")
+      ->type_name("S")
+      ->check(wholeNumber(0, UINT64_MAX));
   studyCmd
       ->add_option("--sampling", study.study.sampling,
                    "random (default when sampling) or latin-hypercube")
@@ -219,7 +225,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->type_name("QUANTITY")
       ->allow_extra_args(false);
   studyCmd->add_option("--threads", study.threads, "threads over points (default 1)")
-      ->check(CLI::Range(1, 1024));
+      ->check(wholeNumber(1, 1024));
   studyCmd->add_flag("--point-files", study.pointFiles,
                      "also write every point's results directory (points/<k>/)");
   studyCmd->add_flag("--full-path", study.fullPath,

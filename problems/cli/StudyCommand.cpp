@@ -75,7 +75,8 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
     out << " min " << formatFigure(output["min"]) << ", mean " << formatFigure(output["mean"])
         << ", max " << formatFigure(output["max"]) << ", sd " << formatFigure(output["sd"]);
     if (output.contains("limit"))
-      out << "; above " << formatFigure(output["limit"]) << ": " << output["exceeded"]
+      out << (output.value("limit_is", "upper") == "lower" ? "; below " : "; above ")
+          << formatFigure(output["limit"]) << ": " << output["exceeded"]
           << (output.contains("exceedance")
                   ? ", probability " + probabilityText(output["exceedance"])
                   : std::string{});

@@ -9,4 +9,8 @@ struct Overloaded : F... {
   using F::operator()...;
 };
 
+/// Said for clang 14 (the fuzz build's), which does not deduce an aggregate's arguments.
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+
 }  // namespace beamrotor

@@ -106,14 +106,14 @@ class TableWriter {
   void storedBefore(long long index = std::numeric_limits<long long>::max()) {
     while (haveStored_ && stored_.index < index) {
       put(storedLine_, stored_);
-      if (onStored) onStored(stored_.index);
+      if (onStored) onStored(stored_);
       ++resumedRows;
       readStored();
     }
   }
   const PointRanges& written() const { return written_; }
   long long resumedRows = 0;
-  std::function<void(long long)> onStored;  ///< called for each stored row written
+  std::function<void(const StudyRow&)> onStored;  ///< called for each stored row written
 
  private:
   void readStored() { haveStored_ = resumed_ && resumed_->nextRow(storedLine_, stored_); }
@@ -180,13 +180,22 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
           csv << studyCsvHeader(plan) << std::flush;
           TableWriter rows(csv, table, summary, resumed ? &*resumed : nullptr, progress,
                            points.size());
-          if (pointFiles)  // a stored point's files come along
-            rows.onStored = [&](long long index) {
-              const fs::path from = resumed->pointFiles(index);
+          // A point's own results directory, for a row solved here or stored.
+          const auto writePointFiles = [&](const StudyRow& row) {
+            unlessStopping(pointDir(row.index), [&] {
+              writeRunOutputs(pointFiles->solveFully(row.parameters), pointDir(row.index));
+            });
+          };
+          if (pointFiles)  // a stored point's files come along, or are made when it has none
+            rows.onStored = [&](const StudyRow& row) {
+              const fs::path from = resumed->pointFiles(row.index);
               std::error_code missing;
-              if (!fs::exists(from, missing)) return;
-              fs::create_directories(pointDir(index).parent_path());
-              fs::copy(from, pointDir(index), fs::copy_options::recursive);
+              if (fs::exists(from, missing)) {
+                fs::create_directories(pointDir(row.index).parent_path());
+                fs::copy(from, pointDir(row.index), fs::copy_options::recursive);
+              } else if (row.ok()) {
+                writePointFiles(row);
+              }
             };
           outcome.ranks = solvePointsOnRank(
               plan, points, todo, request.threads,
@@ -195,10 +204,7 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
                 outcome.cost += row.cost;
                 rows.solved(row);
                 outcome.rowSeconds += rowClock.lap();
-                if (pointFiles && row.ok())
-                  unlessStopping(pointDir(row.index), [&] {
-                    writeRunOutputs(pointFiles->solveFully(row.parameters), pointDir(row.index));
-                  });
+                if (pointFiles && row.ok()) writePointFiles(row);
               },
               stopAsked);
           rows.storedBefore();

@@ -118,10 +118,14 @@ bool& mpiStarted() {
   return started;
 }
 
-constexpr int kRowsTag = 1;      // worker -> manager: finished rows, asking for more
-constexpr int kChunkTag = 2;     // manager -> worker: [begin, end), empty to stop
-constexpr int kStopTag = 3;      // manager -> worker: stop after the point in progress
-constexpr int kLastRowsTag = 4;  // worker -> manager: the rows finished before stopping
+// Each row travels on its own as soon as it is solved: rank 0 has it even if its rank is then
+// lost, and a message of one row stays below the transports' eager limit, so rank 0 never has
+// to read it out of a process that has died meanwhile (which Open MPI cannot survive).
+constexpr int kRowTag = 1;      // worker -> manager: one finished row
+constexpr int kChunkTag = 2;    // manager -> worker: [begin, end), empty to stop
+constexpr int kStopTag = 3;     // manager -> worker: stop after the point in progress
+constexpr int kAskTag = 4;      // worker -> manager: its chunk is done, it asks for another
+constexpr int kStoppedTag = 6;  // worker -> manager: it stopped before its chunk was done
 constexpr int kReleaseTag = 5;   // manager -> worker: the results are written, end now
 
 /// How long a stopped rank waits for rank 0 to write the results (s); mpirun ends it sooner.
@@ -183,19 +187,20 @@ bool stopMessage() {
 
 void studyWorker(const StudyPlan& plan, const DesignPoints& points, const StopRequest& stop) {
   const PointSolver solver(plan);
-  std::string rows;
+  std::string row;
   for (;;) {
-    MPI_Send(rows.data(), int(rows.size()), MPI_BYTE, 0, kRowsTag, MPI_COMM_WORLD);
+    MPI_Send(nullptr, 0, MPI_BYTE, 0, kAskTag, MPI_COMM_WORLD);
     std::int64_t range[2];
     MPI_Recv(range, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (range[0] >= range[1]) return;
-    rows.clear();
     for (std::int64_t i = range[0]; i < range[1]; ++i) {
       if (stop() || stopMessage()) {
-        MPI_Send(rows.data(), int(rows.size()), MPI_BYTE, 0, kLastRowsTag, MPI_COMM_WORLD);
+        MPI_Send(nullptr, 0, MPI_BYTE, 0, kStoppedTag, MPI_COMM_WORLD);
         return;
       }
-      appendRowBytes(rows, solver.solve(i, points.at(i)));
+      row.clear();
+      appendRowBytes(row, solver.solve(i, points.at(i)));
+      MPI_Send(row.data(), int(row.size()), MPI_BYTE, 0, kRowTag, MPI_COMM_WORLD);
     }
   }
 }
@@ -243,14 +248,16 @@ RankReport studyManager(const StudyPlan& plan, const DesignPoints& points,
   auto receive = [&](const MPI_Status& status) {
     int bytes = 0;
     MPI_Get_count(&status, MPI_BYTE, &bytes);
-    std::string rows(std::size_t(bytes), '\0');
-    MPI_Recv(rows.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+    std::string message(std::size_t(bytes), '\0');
+    MPI_Recv(message.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
              MPI_STATUS_IGNORE);
-    for (std::size_t offset = 0; offset < rows.size();) {
-      StudyRow row = readRowBytes(rows, offset, shape);
+    if (status.MPI_TAG == kRowTag) {
+      std::size_t offset = 0;
+      StudyRow row = readRowBytes(message, offset, shape);
       ready.emplace(row.index, std::move(row));
+      return;
     }
-    if (status.MPI_TAG == kLastRowsTag) {
+    if (status.MPI_TAG == kStoppedTag) {
       finished[std::size_t(status.MPI_SOURCE)] = 1;
       return;
     }
@@ -276,7 +283,8 @@ RankReport studyManager(const StudyPlan& plan, const DesignPoints& points,
     int waiting = 0;
     MPI_Status status;
     MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
-    if (waiting && (status.MPI_TAG == kRowsTag || status.MPI_TAG == kLastRowsTag)) {
+    if (waiting && (status.MPI_TAG == kRowTag || status.MPI_TAG == kAskTag ||
+                    status.MPI_TAG == kStoppedTag)) {
       receive(status);
     } else if (!stopping && ownBegin < ownEnd) {
       ready.emplace(ownBegin, solver.solve(ownBegin, points.at(ownBegin)));

@@ -1,7 +1,6 @@
 // A design study across MPI ranks (Open MPI; compiled when CMake finds MPI, BEAMROTOR_MPI).
 // Under `mpirun -n N`, rank 0 is the manager: it hands out chunks of points to ranks that ask
-// (each request carries the rows of the rank's last chunk), solves points itself between
-// messages, restores point order and hands the rows to the sink; so the table and summary
+// (which send each row as they finish it), solves points itself between messages, restores point order and hands the rows to the sink; so the table and summary
 // are those of the serial run. Without MPI, or run without mpirun, everything here is the
 // threaded study of StudyExecution.hpp.
 //

@@ -53,15 +53,16 @@ void StudySummary::add(const StudyRow& row) {
     const double delta = v - t.mean;
     t.mean += delta / double(t.values.size());
     t.m2 += delta * (v - t.mean);
-    const std::optional<double>& limit = plan_.spec.outputs[k].limit;
-    const double badness = limit ? v : std::abs(v);
+    const StudyOutput& o = plan_.spec.outputs[k];
+    // Largest value for an upper limit, smallest for a lower one, largest magnitude without.
+    const double badness = !o.limit ? std::abs(v) : o.lowerLimit ? -v : v;
     if (t.worst < 0 || badness > t.worstValue) {
       t.worst = row.index;
       t.worstValue = badness;
       t.worstActual = v;
       t.worstParameters = row.parameters;
     }
-    if (limit && v > *limit) ++t.exceeded;
+    if (o.violates(v)) ++t.exceeded;
   }
   for (std::size_t k = 0; k < checks_.size(); ++k) {
     if (row.passed[k] < 0) continue;
@@ -74,9 +75,13 @@ std::optional<std::pair<long long, std::vector<double>>> StudySummary::worstPoin
   int chosen = -1;
   double ratio = -INFINITY;
   for (std::size_t k = 0; k < outputs_.size(); ++k) {
-    const std::optional<double>& limit = plan_.spec.outputs[k].limit;
-    if (!limit || outputs_[k].worst < 0 || *limit == 0) continue;
-    const double r = outputs_[k].worstValue / std::abs(*limit);
+    const StudyOutput& o = plan_.spec.outputs[k];
+    if (!o.limit || outputs_[k].worst < 0 || *o.limit == 0) continue;
+    // value / |limit| for an upper limit; for a lower one the same mirrored about the limit
+    // (2 limit - value) / |limit|: 1 at a positive limit either way, growing past it.
+    const double L = *o.limit;
+    const double r = o.lowerLimit ? (2 * L + outputs_[k].worstValue) / std::abs(L)
+                                  : outputs_[k].worstValue / std::abs(L);
     if (r > ratio) {
       ratio = r;
       chosen = int(k);
@@ -121,6 +126,7 @@ Json StudySummary::json() const {
     const StudyOutput& o = spec.outputs[k];
     Json one{{"name", o.text}, {"analysis", o.analysis}, {"count", t.values.size()}};
     if (o.limit) one["limit"] = *o.limit;
+    if (o.lowerLimit) one["limit_is"] = "lower";
     if (!t.values.empty()) {
       std::vector<double> sorted = t.values;
       std::sort(sorted.begin(), sorted.end());

@@ -1,14 +1,18 @@
 // summary.json of a design study, gathered row by row in point order (so a threaded or MPI
 // study sums in the serial order and gives the same file):
 //   {deck, sampling, seed, points, failed, parameters [{name, values | distribution}],
-//    outputs [{name, unit?, limit?, count, min, max, mean, sd, percentiles {p1 .. p99},
-//              worst {point, value, parameters {}}, exceedance? {count, probability, wilson95}}],
+//    outputs [{name, unit?, limit?, limit_is? ("lower"), count, min, max, mean, sd,
+//              percentiles {p1 .. p99}, worst {point, value, parameters {}}, exceeded?,
+//              exceedance? {count, probability, wilson95}}],
 //    checks [{name, applicable, passed, pass_rate, failure_probability? {...}}],
 //    worst_point {point, parameters, why}, failures [first 20 {point, parameters, status}]}
-// The worst point of an output is where it is largest (with a limit) or largest in magnitude
-// (without); the study's worst point is the worst of the output nearest its limit (largest
-// value / limit), or without limits the first output's. Sampled studies also give, for each
-// limit and check, the probability of exceeding or failing it with its Wilson 95 % interval.
+// The worst point of an output is where it is largest (with an upper limit), smallest (with a
+// lower one) or largest in magnitude (without); the study's worst point is the worst of the
+// output nearest its limit (largest value / |limit|, for a lower limit (2 limit - value) /
+// |limit|), or without limits the first output's. `exceeded` counts the points beyond the
+// limit (above an upper, below a lower one). Sampled studies also give, for each limit and
+// check, the probability of passing the limit or failing the check with its Wilson 95 %
+// interval.
 // Memory: one double per output per point (for the percentiles), the rest is counters.
 #pragma once
 

@@ -420,8 +420,11 @@ void readLoadCases(Context& c) {
       k.name = nameField.text();
       claimName(nameField, k.name, names, "a load case or combination");
       for (const auto& [key, value] : f.require("factors").entries()) {
-        const bool known = std::any_of(c.deck.loadCases.begin(), c.deck.loadCases.end(),
-                                       [&](const DeckLoadCase& lc) { return lc.name == key; });
+        // A named copy: clang 14 (the fuzz build's) cannot capture a structured binding.
+        const std::string& caseName = key;
+        const bool known =
+            std::any_of(c.deck.loadCases.begin(), c.deck.loadCases.end(),
+                        [&](const DeckLoadCase& lc) { return lc.name == caseName; });
         if (!known) value.fail("no load case '" + key + "' (load_cases: defines the names)");
         k.factors.emplace_back(key, value.number(c.evaluator, dim::none));
       }

@@ -37,14 +37,20 @@ struct StudyParameter {
   DeckPlace place;
 };
 
-/// A quantity to record at every point (any check quantity), optionally with an upper limit
-/// on its value whose exceedance the summary counts.
+/// A quantity to record at every point (any check quantity), optionally with a limit on its
+/// value, upper (`<=`, `limit:`) or lower (`>=`, `lower_limit:`), whose violations the
+/// summary counts.
 struct StudyOutput {
   std::string text;      ///< as written, e.g. "stress max"; its column's name
   Quantity quantity;     ///< parsed and resolved against the deck
   std::string analysis;  ///< the analysis it reads
   std::optional<double> limit;
   DeckPlace place;
+  bool lowerLimit = false;  ///< the limit is a least value (the value must stay at or above it)
+  /// Whether `value` lies beyond the limit (false without one).
+  bool violates(double value) const {
+    return limit && (lowerLimit ? value < *limit : value > *limit);
+  }
 };
 
 enum class StudySampling { grid, random, latinHypercube };
@@ -63,7 +69,7 @@ struct DesignStudySpec {
 struct StudyCommandLine {
   std::vector<std::string> sweeps;   ///< "NAME=FROM:TO:STEPS" or "NAME=V1,V2": grid axes
   std::vector<std::string> samples;  ///< "NAME=normal(MEAN,SD[,LOWER,UPPER])" and the like
-  std::vector<std::string> outputs;  ///< "QUANTITY" or "QUANTITY <= LIMIT"
+  std::vector<std::string> outputs;  ///< "QUANTITY", "QUANTITY <= LIMIT" or "QUANTITY >= LIMIT"
   std::string sampling;              ///< "random" or "latin-hypercube"; "": the deck's or random
   std::optional<long long> count;    ///< --samples
   std::optional<std::uint64_t> seed;

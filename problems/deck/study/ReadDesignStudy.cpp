@@ -142,8 +142,18 @@ StudyParameter parseSampleOption(const std::string& argument, const Deck& deck,
   };
   d.first = value(args[0]);
   // A lognormal's sigma is the spread of the logarithm: a pure number.
-  d.second = d.kind == StudyDistribution::Kind::lognormal ? ExpressionEvaluator().evaluate(args[1])
-                                                          : value(args[1]);
+  const auto pureNumber = [&](const std::string& text) {
+    Amount a;
+    try {
+      a = ExpressionEvaluator().amount(text);
+    } catch (const ExpressionError& e) {
+      fail(e.what());
+    }
+    if (!a.anyDimension && !a.dimension.dimensionless())
+      fail("sigma (of the logarithm) is a pure number, got '" + text + "'");
+    return a.si;
+  };
+  d.second = d.kind == StudyDistribution::Kind::lognormal ? pureNumber(args[1]) : value(args[1]);
   if (args.size() == 4) {
     d.lower = value(args[2]);
     d.upper = value(args[3]);
@@ -167,13 +177,17 @@ StudyOutput parseOutputOption(const std::string& argument, const StudyContext& s
   const DeckPlace place{0, 0, "--output " + argument};
   StudyOutput o;
   o.place = place;
-  const std::size_t le = argument.find("<=");
-  o.text = argument.substr(0, le);
+  const std::size_t le = argument.find("<="), ge = argument.find(">=");
+  if (le != std::string::npos && ge != std::string::npos)
+    throw DeckError(s.deck.path, place, "give one limit, <= LIMIT or >= LIMIT, not both");
+  const std::size_t at = le != std::string::npos ? le : ge;
+  o.lowerLimit = ge != std::string::npos;
+  o.text = argument.substr(0, at);
   while (!o.text.empty() && o.text.back() == ' ') o.text.pop_back();
   try {
-    if (le != std::string::npos) {
+    if (at != std::string::npos) {
       // Read as the deck's `limit:` is, in the quantity's own unit.
-      const auto limit = DeckTree::ofScalar(argument.substr(le + 2), s.deck.path);
+      const auto limit = DeckTree::ofScalar(argument.substr(at + 2), s.deck.path);
       o.limit = Field::root(*limit).number(ExpressionEvaluator(),
                                            referenceUnit(parseQuantity(o.text)));
     }
@@ -269,10 +283,16 @@ void readStudyBlock(const StudyContext& s, const Field& block, DesignStudySpec& 
       StudyOutput o;
       o.place = item.place();
       if (item.isMap()) {
-        item.allowOnly({"quantity", "limit"}, "a study output");
+        item.allowOnly({"quantity", "limit", "lower_limit"}, "a study output");
         const Field q = item.require("quantity");
         o.text = q.text();
-        if (auto limit = item.get("limit")) {
+        auto limit = item.get("limit");
+        if (auto lower = item.get("lower_limit")) {
+          if (limit) lower->fail("give one limit, limit (upper) or lower_limit, not both");
+          limit = lower;
+          o.lowerLimit = true;
+        }
+        if (limit) {
           try {
             o.limit = limit->number(s.c.evaluator, referenceUnit(parseQuantity(o.text)));
           } catch (const std::invalid_argument& e) {

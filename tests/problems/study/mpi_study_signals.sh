@@ -43,6 +43,22 @@ rank_pid() {
 # A JSON key of a summary, with python3.
 key() { python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get(sys.argv[2]))" "$1" "$2"; }
 
+# Checks the partial results in $2 of the run described by $1 (its console in $2.txt):
+# summary.json marked partial, stopped by SIGTERM, stating 2 ranks; false when there is none.
+partial_results() {
+  summary="$2/summary.json"
+  if [ ! -f "$summary" ]; then
+    fail "$1: no summary.json; the run said:"
+    cat "$2.txt"
+    return 1
+  fi
+  [ "$(key "$summary" partial)" = "True" ] || fail "$1: summary not partial"
+  [ "$(key "$summary" stopped_by)" = "SIGTERM" ] || fail "$1: not stopped by SIGTERM"
+  [ "$(key "$summary" ranks)" = "2" ] || fail "$1: summary does not say 2 ranks"
+  grep -q "ranks: 2" "$2.txt" || fail "$1: console does not state the rank count"
+  echo "$1: $(($(wc -l <"$2/study.csv") - 1)) rows kept"
+}
+
 # 1. kill -9 of rank 1.
 $mpi "$exe" "$@" --out "$tmp/killed" >"$tmp/killed.txt" 2>&1 &
 runner=$!
@@ -51,19 +67,10 @@ victim=$(rank_pid "$runner" 1)
 [ -n "$victim" ] || { echo "rank 1 not found among mpirun's children"; exit 1; }
 kill -9 "$victim"
 wait "$runner"
-summary="$tmp/killed/summary.json"
-if [ ! -f "$summary" ]; then
-  fail "kill -9 of rank 1: no summary.json; the run said:"
-  cat "$tmp/killed.txt"
-else
-  [ "$(key "$summary" partial)" = "True" ] || fail "kill -9 of rank 1: summary not partial"
-  [ "$(key "$summary" ranks)" = "2" ] || fail "kill -9 of rank 1: summary does not say 2 ranks"
+if partial_results "kill -9 of rank 1" "$tmp/killed"; then
   key "$summary" lost_ranks | grep -q "rank 1 (pid $victim" ||
     fail "kill -9 of rank 1: summary does not name it: $(key "$summary" lost_ranks)"
   grep -q "lost rank 1 (pid $victim" "$tmp/killed.txt" || fail "kill -9 of rank 1: console does not name it"
-  grep -q "ranks: 2" "$tmp/killed.txt" || fail "kill -9 of rank 1: console does not state the rank count"
-  kept=$(($(wc -l <"$tmp/killed/study.csv") - 1))
-  echo "kill -9 of rank 1: $kept rows kept, rank 0 named the lost rank"
   $mpi "$exe" "$@" --resume "$tmp/killed" >"$tmp/resumed.txt" 2>&1 || { fail "--resume failed:"; cat "$tmp/resumed.txt"; }
   if cmp -s "$tmp/serial/study.csv" "$tmp/killed/study.csv"; then
     echo "study.csv after --resume under mpirun -n 2: identical to the serial run's"
@@ -78,13 +85,5 @@ runner=$!
 await_rows "$tmp/stopped" || exit 1
 kill -TERM "$runner"
 wait "$runner"
-summary="$tmp/stopped/summary.json"
-if [ ! -f "$summary" ]; then
-  fail "SIGTERM to mpirun: no summary.json; the run said:"
-  cat "$tmp/stopped.txt"
-else
-  [ "$(key "$summary" stopped_by)" = "SIGTERM" ] || fail "SIGTERM to mpirun: not stopped by SIGTERM"
-  [ "$(key "$summary" ranks)" = "2" ] || fail "SIGTERM to mpirun: summary does not say 2 ranks"
-  echo "SIGTERM to mpirun: $(($(wc -l <"$tmp/stopped/study.csv") - 1)) rows kept"
-fi
+partial_results "SIGTERM to mpirun" "$tmp/stopped"
 exit $status
