@@ -82,6 +82,18 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                    "(default: <out>/matrices)")
       ->expected(0, 1)
       ->type_name("[DIR]");
+  std::string charts;
+  solveCmd
+      ->add_option("--charts", charts,
+                   "chart images: png (default), svg, both or none; replaces the deck's "
+                   "output: charts")
+      ->check(CLI::IsMember(chartFormatNames()))
+      ->type_name("FORMAT");
+  bool pointFiles = false;
+  CLI::Option* pointFilesFlag = solveCmd->add_flag(
+      "--point-files", pointFiles,
+      "a sweep: also every value's own results directory (value_000/, ...) and a ParaView "
+      "series over them");
 
   StudyRequest check;
   CLI::App* checkCmd = app.add_subcommand(
@@ -259,6 +271,8 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
              "mpirun.\n";
     return kInputError;
   }
+  if (!charts.empty()) solve.output.charts = chartFormatNamed(charts);
+  if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);

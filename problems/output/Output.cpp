@@ -11,6 +11,7 @@
 
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/ChartBatch.hpp"
 #include "problems/output/structure/Charts.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
@@ -183,41 +184,51 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 }  // namespace
 
-void writeRunOutputs(const RunResult& run, const fs::path& dir, const AlsoWrite& also) {
+void writeRunOutputs(const RunResult& run, const fs::path& dir, const OutputChoices& choices,
+                     const AlsoWrite& also) {
   const PreparedRun prepared = prepareRun(run);
   writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
-    writeRunFiles(prepared, temporary, /*charts=*/true);
+    ChartBatch charts(choices.charts);
+    writeRunFiles(prepared, temporary, choices.charts != ChartFormat::none);
+    charts.draw();
     if (also) also(temporary);
   });
 }
 
-void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const AlsoWrite& also) {
+void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const OutputChoices& choices,
+                       const AlsoWrite& also) {
   // 1. Prepare every value and the sweep's own tables before writing anything.
   if (sweep.values.empty()) throw std::invalid_argument("a sweep needs at least one value");
   if (sweep.runs.size() != sweep.values.size())
     throw std::invalid_argument("sweep over '" + sweep.parameter + "' has " +
                                 std::to_string(sweep.values.size()) + " values but " +
                                 std::to_string(sweep.runs.size()) + " runs");
+  // Each value's tables only where they are written: in its own directory, or read by the
+  // overlaid diagrams of a short sweep. Otherwise its results.json document alone.
+  const bool tables = choices.pointFiles || sweep.values.size() <= kOverlaidValues;
   std::vector<PreparedRun> prepared;
   std::vector<Json> docs;
-  std::vector<std::string> directories;
+  std::vector<std::string> directories;  // empty names without point files
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    prepared.push_back(prepareRun(sweep.runs[i]));
-    docs.push_back(prepared.back().doc);
-    directories.push_back(sweepValueDirectory(i, sweep.runs.size()));
+    if (tables) prepared.push_back(prepareRun(sweep.runs[i]));
+    docs.push_back(tables ? prepared.back().doc : prepareRunDocument(sweep.runs[i]));
+    directories.push_back(choices.pointFiles ? sweepValueDirectory(i, sweep.runs.size()) : "");
   }
   const Json sweepDoc = sweepJson(sweep, docs, directories);
   requireFiniteNumbers(sweepDoc, kSweepJson);
   const std::vector<SweepQuantity> quantities = sweepQuantities(docs);
   const CsvTable table = sweepTable(kSweepCsv, sweep, docs, quantities);
 
-  // 2. Per value its own results (no charts: they would dominate the time of a long sweep),
-  // then the sweep's JSON, CSV, a .pvd series per static analysis, and the sweep charts.
+  // 2. Per value its own results when asked for (no charts: they would dominate the time of a
+  // long sweep), then the sweep's JSON, CSV, a .pvd series per static analysis over the
+  // values' files, and the sweep charts.
   writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
-    for (std::size_t i = 0; i < prepared.size(); ++i) {
-      fs::create_directory(temporary / directories[i]);
-      writeRunFiles(prepared[i], temporary / directories[i], /*charts=*/false);
-    }
+    ChartBatch charts(choices.charts);
+    if (choices.pointFiles)
+      for (std::size_t i = 0; i < prepared.size(); ++i) {
+        fs::create_directory(temporary / directories[i]);
+        writeRunFiles(prepared[i], temporary / directories[i], /*charts=*/false);
+      }
     writeJson(sweepDoc, temporary / kSweepJson);
     table.write(temporary / kSweepCsv);
     const RunResult& first = sweep.runs.front();
@@ -225,20 +236,28 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
       const AnalysisOutcome& a = first.analyses[k];
       const std::string stem = fileStem(a.name);
       if (staticsOf(a)) {
-        std::vector<PvdEntry> series;
-        for (std::size_t i = 0; i < sweep.values.size(); ++i)
-          series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
-        writePvd(temporary / collectionPvd(stem), series);
+        if (choices.pointFiles) {
+          std::vector<PvdEntry> series;
+          for (std::size_t i = 0; i < sweep.values.size(); ++i)
+            series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
+          writePvd(temporary / collectionPvd(stem), series);
+        }
+        // Diagrams along a line; a frame's members are in its own files per value. They read
+        // each value's fields from its directory, or without one from a table of their own.
+        const bool overlaid = sweep.values.size() <= kOverlaidValues &&
+                              choices.charts != ChartFormat::none &&
+                              !prepared.front().analyses[k].stations.empty() &&
+                              prepared.front().analyses[k].members.empty();
         std::vector<const CsvTable*> fields;
         std::vector<std::string> files, values;
-        for (std::size_t i = 0; i < prepared.size(); ++i) {
+        for (std::size_t i = 0; i < prepared.size() && overlaid; ++i) {
           fields.push_back(&*prepared[i].analyses[k].fields);
-          files.push_back(directories[i] + "/" + fieldsCsv(stem));
+          files.push_back(choices.pointFiles ? directories[i] + "/" + fieldsCsv(stem)
+                                             : sweepFieldsCsv(stem, i, prepared.size()));
+          if (!choices.pointFiles) fields.back()->write(temporary / files.back());
           values.push_back(exactDecimal(sweep.values[i]));
         }
-        // Diagrams along a line; a frame's members are in its own files per value.
-        if (!prepared.front().analyses[k].stations.empty() &&
-            prepared.front().analyses[k].members.empty())
+        if (overlaid)
           drawOverlaidDiagrams(
               temporary,
               caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
@@ -253,6 +272,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
                                         sweepChart(stem), sweep.parameter, sweep.unit, own, table,
                                         kSweepCsv));
     }
+    charts.draw();
     if (also) also(temporary);
   });
 }

@@ -63,12 +63,28 @@ void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticRes
   prepareCases(a, p);
 }
 
+/// Refuses non-finite numbers and analyses that would overwrite each other's files.
+void requireWritable(const RunResult& run) {
+  requireFinite(run);
+  requireDistinctFileStems(run.analyses);
+}
+
 }  // namespace
+
+Json prepareRunDocument(const RunResult& run) {
+  requireWritable(run);
+  std::vector<std::vector<ElementPeaks>> peaks;
+  for (const AnalysisOutcome& a : run.analyses)
+    peaks.push_back(staticsOf(a) ? elementPeaks(*run.model, staticsOf(a)->displacement)
+                                 : std::vector<ElementPeaks>{});
+  Json doc = runJson(run, peaks);
+  requireFiniteNumbers(doc, kResultsJson);
+  return doc;
+}
 
 PreparedRun prepareRun(const RunResult& run) {
   // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
-  requireFinite(run);
-  requireDistinctFileStems(run.analyses);
+  requireWritable(run);
   const Model& model = *run.model;
 
   // 2. Sample the statics along the line and build every table.

@@ -55,4 +55,8 @@ struct PreparedRun {
 /// whose files would overwrite each other's.
 PreparedRun prepareRun(const RunResult& run);
 
+/// Only the results.json document of run, checked as prepareRun checks it, without its tables
+/// (a long sweep's values, whose tables are not written).
+Json prepareRunDocument(const RunResult& run);
+
 }  // namespace beamrotor

@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -26,6 +27,7 @@
 #include "fem/solvers/BlasThreads.hpp"
 #include "problems/deck/parse/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/parse/Suggest.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/output/PreparedRun.hpp"
 #include "problems/run/Study.hpp"
@@ -99,13 +101,26 @@ py::dict unitsOf(const CsvTable& table) {
   return units;
 }
 
+/// write()'s keyword arguments as choices over the deck's: charts="png"|"svg"|"both"|"none".
+DeckOutput outputFrom(const std::optional<std::string>& charts, std::optional<bool> pointFiles) {
+  DeckOutput output;
+  if (charts) {
+    output.charts = chartFormatNamed(*charts);
+    if (!output.charts)
+      throw py::value_error("charts: '" + *charts + "' is not one of " +
+                            joinNames(chartFormatNames()));
+  }
+  output.pointFiles = pointFiles;
+  return output;
+}
+
 // 2. Results as Python objects ---------------------------------------------------------------
 
 /// One solved run: its results.json document and its tables, built once by the same code
 /// that writes the results directory.
 class PythonRun {
  public:
-  explicit PythonRun(RunResult run) : run_(std::move(run)) {
+  PythonRun(RunResult run, DeckOutput output) : run_(std::move(run)), output_(output) {
     const PreparedRun prepared = prepareRun(run_);
     results_ = toPython(prepared.doc);
     for (const PreparedAnalysis& a : prepared.analyses) {
@@ -157,9 +172,10 @@ class PythonRun {
       }
     throw py::key_error("no analysis named '" + analysis + "'");
   }
-  void write(const std::filesystem::path& dir) const {
+  void write(const std::filesystem::path& dir, const std::optional<std::string>& charts) const {
+    const OutputChoices choices = chooseOutput(output_, outputFrom(charts, std::nullopt));
     py::gil_scoped_release free;
-    writeRunOutputs(run_, dir);
+    writeRunOutputs(run_, dir, choices);
   }
   std::string repr() const {
     return "<beamrotor.Run " + run_.deckName + ": " + std::to_string(run_.analyses.size()) +
@@ -169,6 +185,7 @@ class PythonRun {
 
  private:
   RunResult run_;
+  DeckOutput output_;  ///< the deck's `output:` choices
   py::object results_;
   py::dict tables_, units_;
 };
@@ -176,21 +193,24 @@ class PythonRun {
 /// A deck solved over the values of one parameter.
 class PythonSweep {
  public:
-  explicit PythonSweep(SweepResult sweep) : sweep_(std::move(sweep)) {
-    for (const RunResult& r : sweep_.runs) runs_.emplace_back(r);
+  PythonSweep(SweepResult sweep, DeckOutput output) : sweep_(std::move(sweep)), output_(output) {
+    for (const RunResult& r : sweep_.runs) runs_.emplace_back(r, output);
   }
   const std::string& parameter() const { return sweep_.parameter; }
   py::array_t<double> values() const {
     return py::array_t<double>(py::ssize_t(sweep_.values.size()), sweep_.values.data());
   }
   const std::vector<PythonRun>& runs() const { return runs_; }
-  void write(const std::filesystem::path& dir) const {
+  void write(const std::filesystem::path& dir, const std::optional<std::string>& charts,
+             std::optional<bool> pointFiles) const {
+    const OutputChoices choices = chooseOutput(output_, outputFrom(charts, pointFiles));
     py::gil_scoped_release free;
-    writeSweepOutputs(sweep_, dir);
+    writeSweepOutputs(sweep_, dir, choices);
   }
 
  private:
   SweepResult sweep_;
+  DeckOutput output_;
   std::vector<PythonRun> runs_;
 };
 
@@ -230,8 +250,8 @@ py::object solve(const std::filesystem::path& deck, const py::dict& set, const s
     py::gil_scoped_release free;
     study = solveStudy(request);
   }
-  if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep)));
-  return py::cast(PythonRun(std::move(*study.run)));
+  if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep), study.deck.output));
+  return py::cast(PythonRun(std::move(*study.run), study.deck.output));
 }
 
 py::dict parameters(const std::filesystem::path& deck) {
@@ -297,16 +317,20 @@ PYBIND11_MODULE(beamrotor, m) {
       .def_property_readonly("nodes", &PythonRun::nodes, "node coordinates (m), n x 3")
       .def("displacements", &PythonRun::displacements, py::arg("analysis"),
            "nodal displacements of a static analysis, n x 6 (ux uy uz rx ry rz; m, rad)")
-      .def("write", &PythonRun::write, py::arg("directory"),
-           "writes the results directory, as `beamrotor solve --out`")
+      .def("write", &PythonRun::write, py::arg("directory"), py::kw_only(),
+           py::arg("charts") = py::none(),
+           "writes the results directory, as `beamrotor solve --out`; charts: 'png', 'svg', "
+           "'both' or 'none' (default: the deck's output: charts, else png)")
       .def("__repr__", &PythonRun::repr);
 
   py::class_<PythonSweep>(m, "Sweep", "A deck solved over the values of one parameter.")
       .def_property_readonly("parameter", &PythonSweep::parameter)
       .def_property_readonly("values", &PythonSweep::values)
       .def_property_readonly("runs", &PythonSweep::runs, "one Run per value")
-      .def("write", &PythonSweep::write, py::arg("directory"),
-           "writes the sweep's results directory, as `beamrotor solve --out`");
+      .def("write", &PythonSweep::write, py::arg("directory"), py::kw_only(),
+           py::arg("charts") = py::none(), py::arg("point_files") = py::none(),
+           "writes the sweep's results directory, as `beamrotor solve --out`; charts as "
+           "Run.write; point_files: also every value's own results directory");
 
   m.def("solve", &beamrotor::solve, py::arg("deck"), py::kw_only(), py::arg("set") = py::dict(),
         py::arg("sweep") = "", py::arg("formulation") = "", py::arg("sweep_off") = false,

@@ -76,9 +76,14 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
         if (!csv) throw std::runtime_error(writeFailure(table, errno));
         summary.add(row);
         outcome.rowSeconds += rowClock.lap();
-        if (pointFiles && row.ok())
+        if (pointFiles && row.ok()) {
+          // A point's own results without charts: drawing them would cost more than the rest.
+          Stopwatch pointClock;
           writeRunOutputs(pointFiles->solveFully(row.parameters),
-                          temporary / "points" / std::to_string(row.index));
+                          temporary / "points" / std::to_string(row.index),
+                          OutputChoices{ChartFormat::none, false});
+          outcome.pointFileSeconds += pointClock.lap();
+        }
         if (progress) progress(++done, points.size());
       });
     });

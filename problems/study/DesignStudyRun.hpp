@@ -23,7 +23,7 @@ struct DesignStudyRequest {
   StudyCommandLine study;
   std::string outDir;      ///< empty: out/<deck stem>_study
   int threads = 1;         ///< threads over points on this machine (per MPI rank)
-  bool pointFiles = false; ///< also every point's results directory, points/<k>/
+  bool pointFiles = false; ///< also every point's results directory (no charts), points/<k>/
   bool fullPath = false;   ///< read the deck in full at every point (StudyPlan::lean false)
 };
 
@@ -36,6 +36,9 @@ struct DesignStudyOutcome {
   /// writing their rows and adding them to the summary.
   PointCost cost;
   double rowSeconds = 0;
+  /// The time spent solving each point in full and writing its results directory
+  /// (--point-files), summed over the points.
+  double pointFileSeconds = 0;
   Json summary;
 };
 
