@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "problems/deck/parse/Suggest.hpp"
+#include "problems/output/ChartCaption.hpp"
 #include "problems/output/files/AtomicDirectory.hpp"
 #include "problems/output/files/ChartBatch.hpp"
 #include "problems/output/structure/Charts.hpp"
@@ -37,58 +38,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// "pump_rod: static (eta = 0.4, w0 = 0.001 in SI units)": the caption of a run's charts; `what` follows
-/// the analysis' name, and the parameter `left` out is not listed. A long caption puts the
-/// parameters on lines of their own ('\n'), so that the chart's width holds them.
-std::string caption(const RunResult& run, const std::string& analysis, const std::string& what = "",
-                    const std::string& left = "") {
-  constexpr std::size_t kLine = 90;  // characters across a 900-pixel chart at its title font
-  const std::string head = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis + what;
-  std::vector<std::string> items;
-  for (const auto& [name, value] : run.parameters)
-    if (name != left) items.push_back(name + " = " + exactDecimal(value));
-  // A deck's bare numbers are SI (FORMAT.md): say so, since a parameter has no unit of its own.
-  if (!items.empty()) items.back() += " in SI units";
-  std::string oneLine = head;
-  for (std::size_t i = 0; i < items.size(); ++i)
-    oneLine += (i ? ", " : " (") + items[i] + (i + 1 == items.size() ? ")" : "");
-  if (oneLine.size() <= kLine) return oneLine;
-  std::string text = head, line;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::string item = items[i] + (i + 1 == items.size() ? "" : ",");
-    if (!line.empty() && line.size() + 1 + item.size() > kLine) text += "\n" + line, line.clear();
-    line += (line.empty() ? "" : " ") + item;
-  }
-  return line.empty() ? text : text + "\n" + line;
-}
-
-/// The load cases and combinations of a static analysis's results.json entry as one table:
-/// reactions, point displacements and member resultant extremes, one value per row.
-CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
-  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
-                    {"component", ""}, {"value", ""}});
-  for (const Json& c : analysis.at("cases")) {
-    const std::string name = c.at("name").get<std::string>();
-    const long long combination = c.at("combination").get<bool>() ? 1 : 0;
-    for (const char* key : {"reactions", "displacements"})
-      for (const auto& where : c.at(key).items())
-        for (const auto& component : where.value().items())
-          t.addRow({name, combination, std::string(key == std::string("reactions")
-                                                        ? "reaction" : "displacement"),
-                    where.key(), component.key(), component.value().get<double>()});
-    if (!c.contains("members")) continue;
-    for (const auto& member : c.at("members").items())
-      for (const auto& component : member.value().items()) {
-        const Json& v = component.value();
-        if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
-        for (const char* extreme : {"max", "min"})
-          t.addRow({name, combination, std::string("member"), member.key(),
-                    component.key() + " " + extreme, v.at(extreme).at("value").get<double>()});
-      }
-  }
-  return t;
-}
-
 /// A static analysis' files: its fields, members, load cases, VTK and diagrams.
 void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
                       const StaticResult& statics, const fs::path& dir, bool charts) {
@@ -96,10 +45,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   const Model& model = *run.model;
   const AnalysisOutcome& a = *p.outcome;
   p.fields->write(dir / fieldsCsv(p.stem));
-  if (!casesOf(a).empty())
-    for (const Json& entry : prepared.doc.at("analyses"))
-      if (entry.at("name") == a.name && entry.contains("cases"))
-        loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
+  if (p.caseTable) p.caseTable->write(dir / casesCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
     for (const CsvTable& table : *list) table.write(dir / table.title());
   writeStaticVtu(dir / staticVtu(p.stem), model, statics, p.stations, p.peaks);
@@ -112,18 +58,18 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
     writePvd(dir / casesPvd(p.stem), entries);
   }
   if (charts && !p.stations.empty() && p.members.empty())
-    drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
+    drawChart(dir, staticDiagrams(chartCaption(run, a.name), diagramsChart(p.stem),
                                   {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
   if (charts && !p.members.empty()) {
     // A frame: the whole structure at once, not a line coordinate through its members.
     std::vector<MemberSeries> series;
     for (const CsvTable& member : p.members)
       series.push_back({member.title(), &member, member.title()});
-    drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), model,
+    drawChart(dir, frameChart(chartCaption(run, a.name), frameShapeChart(p.stem), model,
                               statics.displacement, series, run.dimension == "planar"));
     for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
       const std::string& member = model.members()[m].first;
-      drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),
+      drawChart(dir, memberEnvelopeChart(chartCaption(run, a.name, ", envelope of " + member),
                                          envelopeChart(p.stem, member), p.envelopes[m],
                                          p.envelopes[m].title()));
     }
@@ -144,8 +90,8 @@ void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const Mode
   }
   writePvd(dir / collectionPvd(p.stem), entries);
   if (charts && p.shapes->rowCount() > 0)
-    drawChart(dir, modeShapesChart(caption(run, p.outcome->name), shapesChart(p.stem), model, modal,
-                                   *p.shapes, shapesCsv(p.stem)));
+    drawChart(dir, modeShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem),
+                                   model, modal, *p.shapes, shapesCsv(p.stem)));
 }
 
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
@@ -161,7 +107,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeStaticFiles(prepared, p, r.secondOrder, dir, charts);
             },
             [&](const BucklingResult&) {
-              writeBucklingFiles(p, model, dir, caption(run, a.name), charts);
+              writeBucklingFiles(p, model, dir, chartCaption(run, a.name), charts);
             },
             [&](const ModalResult& r) { writeModalFiles(run, p, model, r, dir, charts); },
             [&](const TorsionOutcome& r) {
@@ -169,14 +115,14 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             },
             [&](const TransientOutcome& r) {
               writeTransientFiles(dir, model, p.stem, r, *p.history,
-                                  charts ? caption(run, a.name) : "");
+                                  charts ? chartCaption(run, a.name) : "");
             },
             [&](const RotorResult auto& r) {
-              writeRotorFiles({*p.rotor, p.stem, model, dir, caption(run, a.name), charts}, r);
+              writeRotorFiles({*p.rotor, p.stem, model, dir, chartCaption(run, a.name), charts}, r);
             },
             [&](const CrankSliderOutcome& r) {
               for (const CsvTable& table : p.crank) table.write(dir / table.title());
-              if (charts) drawCrankCharts(dir, r, p.stem, caption(run, a.name));
+              if (charts) drawCrankCharts(dir, r, p.stem, chartCaption(run, a.name));
             }},
         a.result);
   }
@@ -255,12 +201,12 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
           files.push_back(choices.pointFiles ? directories[i] + "/" + fieldsCsv(stem)
                                              : sweepFieldsCsv(stem, i, prepared.size()));
           if (!choices.pointFiles) fields.back()->write(temporary / files.back());
-          values.push_back(exactDecimal(sweep.values[i]));
+          values.push_back(labelNumber(sweep.values[i]));
         }
         if (overlaid)
           drawOverlaidDiagrams(
               temporary,
-              caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
+              chartCaption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
                       sweep.parameter),
               diagramsChart(stem), sweep, fields, files);
       }

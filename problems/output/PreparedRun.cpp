@@ -5,6 +5,8 @@
 
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/FileNames.hpp"
+#include "problems/output/rotor/RotorFileNames.hpp"
+#include "problems/output/rotor/RotorOrbitChart.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 #include "problems/output/structure/StabilityOutput.hpp"
@@ -18,10 +20,12 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
   std::vector<std::pair<std::string, const CsvTable*>> all;
   for (const std::optional<CsvTable>* t : {&fields, &modes, &shapes, &history})
     if (*t) all.emplace_back((*t)->title(), &**t);
+  if (caseTable) all.emplace_back(caseTable->title(), &*caseTable);
   if (rotor)
     for (const std::optional<CsvTable>* t :
-         {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance, &rotor->api684,
-          &rotor->frf, &rotor->bearings})
+         {&rotor->modes, &rotor->orbits, &rotor->campbell, &rotor->critical, &rotor->unbalance,
+          &rotor->api684, &rotor->frf, &rotor->bearings, &rotor->map, &rotor->mapBearings,
+          &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag})
       if (*t) all.emplace_back((*t)->title(), &**t);
   for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
@@ -29,6 +33,33 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
 }
 
 namespace {
+
+/// The load cases and combinations of a static analysis's results.json entry as one table:
+/// reactions, point displacements and member resultant extremes, one value per row.
+CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
+  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
+                    {"component", ""}, {"value", ""}});
+  for (const Json& c : analysis.at("cases")) {
+    const std::string name = c.at("name").get<std::string>();
+    const long long combination = c.at("combination").get<bool>() ? 1 : 0;
+    for (const char* key : {"reactions", "displacements"})
+      for (const auto& where : c.at(key).items())
+        for (const auto& component : where.value().items())
+          t.addRow({name, combination, std::string(key == std::string("reactions")
+                                                        ? "reaction" : "displacement"),
+                    where.key(), component.key(), component.value().get<double>()});
+    if (!c.contains("members")) continue;
+    for (const auto& member : c.at("members").items())
+      for (const auto& component : member.value().items()) {
+        const Json& v = component.value();
+        if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
+        for (const char* extreme : {"max", "min"})
+          t.addRow({name, combination, std::string("member"), member.key(),
+                    component.key() + " " + extreme, v.at(extreme).at("value").get<double>()});
+      }
+  }
+  return t;
+}
 
 /// Each case's VTK samples and, for a frame with combinations, the envelope along every member.
 void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
@@ -109,6 +140,10 @@ PreparedRun prepareRun(const RunResult& run) {
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(r));
             },
             [&](const TransientOutcome& r) { p.history = historyTable(historyCsv(p.stem), r); },
+            [&](const RotorModesResult& r) {
+              p.rotor = prepareRotor(r, p.stem);
+              p.rotor->orbits = modeOrbitsTable(orbitsCsv(p.stem), r, model);
+            },
             [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
             [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); }},
         a.result);
@@ -119,6 +154,12 @@ PreparedRun prepareRun(const RunResult& run) {
   // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
   prepared.doc = runJson(run, peaks);
   requireFiniteNumbers(prepared.doc, kResultsJson);
+  // 4. The load cases' table, read from the document's entries.
+  for (PreparedAnalysis& p : prepared.analyses)
+    if (!casesOf(*p.outcome).empty())
+      for (const Json& entry : prepared.doc.at("analyses"))
+        if (entry.at("name") == p.outcome->name && entry.contains("cases"))
+          p.caseTable = loadCasesTable(entry, casesCsv(p.stem));
   return prepared;
 }
 

@@ -39,6 +39,7 @@ struct PreparedAnalysis {
   std::vector<CsvTable> members;        ///< statics of a frame: <stem>_member_<name>.csv each
   std::vector<CsvTable> envelopes;      ///< frame with combinations: <stem>_envelope_<name>.csv
   std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
+  std::optional<CsvTable> caseTable;    ///< statics with load cases: <stem>_cases.csv
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
 
   /// Every table this analysis has, each with its CSV file name, in writing order.

@@ -263,6 +263,31 @@ py::dict parameters(const std::filesystem::path& deck) {
 
 // 4. Errors ------------------------------------------------------------------------------
 
+/// Imports NumPy, or fails the import of this module with an ImportError that names NumPy,
+/// the Python running and the one the module was built for (pybind11 alone says
+/// "initialization failed", and only the chained error names NumPy).
+void requireNumPy() {
+  try {
+    py::module_::import("numpy");
+  } catch (py::error_already_set& e) {
+    const py::module_ sys = py::module_::import("sys");
+    std::string message = "beamrotor needs NumPy, which this Python cannot import (";
+    message += e.what();
+    const std::string version = py::str(sys.attr("version")).cast<std::string>();
+    message += "). The module was built for Python ";
+    message += std::to_string(PY_MAJOR_VERSION);
+    message += ".";
+    message += std::to_string(PY_MINOR_VERSION);
+    message += "; this is ";
+    message += py::str(sys.attr("executable")).cast<std::string>();
+    message += ", Python ";
+    message += version.substr(0, version.find(' '));
+    message += ". Install NumPy for it (Debian: apt install python3-numpy).";
+    // A std::exception leaving the module's initialisation becomes an ImportError with this text.
+    throw std::runtime_error(message);
+  }
+}
+
 /// Raises `type` with the diagnostic's parts as attributes.
 void raise(const py::object& type, const DeckDiagnostic& e) {
   py::object error = type(py::str(e.what()));
@@ -286,6 +311,7 @@ PYBIND11_MODULE(beamrotor, m) {
   // imports NumPy, and an import can hand the GIL to another thread: two threads making their
   // first Run at once then deadlocked (one in the import waiting for the GIL, the other holding
   // the GIL waiting for the static). Made here, while the import of this module holds the GIL.
+  requireNumPy();
   py::array_t<double>(py::ssize_t(0));
   useOneBlasThreadPerCall();
 

@@ -84,6 +84,7 @@ ReportSummary writeReport(const ReportOptions& options, std::ostream& log) {
     content.failures.push_back({chart.title, chart.caption, charts / (chart.name + ".svg")});
   // 3. The convergence charts, when a converge run left them.
   content.convergence = convergenceFigures(options.outDir / "convergence");
+  content.notConverged = options.notConverged;
   // 4. The page.
   summary.page = page;
   const std::string html = reportHtml(content);

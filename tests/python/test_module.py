@@ -4,6 +4,8 @@ import json
 import math
 import os
 import pathlib
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -181,3 +183,48 @@ def test_a_mechanism_raises_solve_error():
 def test_set_refuses_what_is_not_a_number_or_expression():
     with pytest.raises(TypeError):
         beamrotor.solve(PROBLEMS / "cantilever.yaml", set={"P": [1, 2]})
+
+
+def csv_header_and_rows(path):
+    lines = path.read_text().splitlines()
+    return lines[0], len(lines) - 1
+
+
+@pytest.mark.parametrize("deck", ["continuous_beam.yaml", "compressor_rotor.yaml",
+                                  "forme_shaft_rotor.yaml", "portal_frame.yaml",
+                                  "snt32_drive.yaml", "mo10_steady.yaml", "pump_rod.yaml"])
+def test_tables_hold_every_table_the_command_line_writes(tmp_path, deck):
+    """Every CSV file of the results directory is a table of run.tables, with its columns and
+    rows: the load cases, the bearing loads, the critical-speed map and the orbits too."""
+    run = beamrotor.solve(PROBLEMS / deck, sweep_off=True)
+    run.write(tmp_path / "out", charts="none")
+    written = sorted((tmp_path / "out").glob("*.csv"))
+    assert written
+    stems = {name: name.replace(" ", "_").replace("-", "_") for name in run.tables}
+    found = 0
+    for path in written:
+        owners = [name for name, stem in stems.items() if path.name.startswith(stem + "_")]
+        assert owners, path.name
+        name = max(owners, key=len)
+        key = path.name[len(stems[name]) + 1:-len(".csv")]
+        assert key in run.tables[name], (path.name, list(run.tables[name]))
+        table = run.tables[name][key]
+        _, rows = csv_header_and_rows(path)
+        assert len(table) == len(run.units[name][key])
+        assert all(len(column) == rows for column in table.values()), path.name
+        found += 1
+    assert found == sum(len(tables) for tables in run.tables.values())
+
+
+def test_a_python_without_numpy_gets_an_error_naming_numpy_and_the_python(tmp_path):
+    code = ("import sys; sys.modules['numpy'] = None\n"
+            "try:\n    import beamrotor\n"
+            "except ImportError as e:\n    print(e)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env=dict(os.environ))
+    message = done.stdout
+    assert "beamrotor needs NumPy" in message, (done.stdout, done.stderr)
+    built = f"{sys.version_info.major}.{sys.version_info.minor}"
+    assert f"built for Python {built}" in message
+    assert sys.executable in message
+    assert "python3-numpy" in message

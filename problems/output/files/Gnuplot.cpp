@@ -161,7 +161,8 @@ std::vector<std::vector<std::size_t>> shares(const std::vector<std::uintmax_t>& 
   std::vector<std::vector<std::size_t>> split(count);
   std::vector<std::uintmax_t> load(count, 0);
   for (std::size_t chart : order) {
-    const std::size_t cheapest = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
+    const std::size_t cheapest =
+        std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
     split[cheapest].push_back(chart);
     load[cheapest] += costs[chart];
   }
@@ -180,9 +181,12 @@ std::string gnuplotComment(const std::string& text) {
 /// gnuplot's list of the formats to draw.
 std::string formatList(ChartFormat format) {
   switch (format) {
-    case ChartFormat::svg: return "'svg'";
-    case ChartFormat::both: return "'svg png'";
-    default: return "'png'";
+    case ChartFormat::svg:
+      return "'svg'";
+    case ChartFormat::both:
+      return "'svg png'";
+    default:
+      return "'png'";
   }
 }
 
@@ -258,9 +262,11 @@ int drawCharts(const fs::path& dir, const std::vector<ChartScript>& charts, Char
   // image left from an earlier drawing would pass for this one's.
   std::vector<std::uintmax_t> costs;
   for (std::size_t i = 0; i < charts.size(); ++i) {
-    writeFile(dir / (names[i] + ".gp"), [&](std::ostream& out) { out << script(charts[i], format); });
+    writeFile(dir / (names[i] + ".gp"),
+              [&](std::ostream& out) { out << script(charts[i], format); });
     std::error_code ignored;
-    for (const fs::path& image : imagesOf(dir, names[i], ChartFormat::both)) fs::remove(image, ignored);
+    for (const fs::path& image : imagesOf(dir, names[i], ChartFormat::both))
+      fs::remove(image, ignored);
     costs.push_back(drawingCost(dir, charts[i].body));
   }
   std::vector<GnuplotRun> runs;
@@ -298,8 +304,7 @@ int drawCharts(const fs::path& dir, const std::vector<ChartScript>& charts, Char
         else
           fs::copy_file(dir / log, dir / own, fs::copy_options::overwrite_existing, ignored);
         warn("gnuplot could not draw " + names[chart] + " (" +
-             (run.child < 0 ? std::string("it could not be started")
-                            : lastMessageLine(dir / own)) +
+             (run.child < 0 ? std::string("it could not be started") : lastMessageLine(dir / own)) +
              "); see " + own);
         // gnuplot stops at the script that fails: the rest of its share is drawn anew.
         stopped = status != 0;
