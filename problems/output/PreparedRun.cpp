@@ -122,7 +122,7 @@ PreparedRun prepareRun(const RunResult& run) {
   PreparedRun prepared{&run, {}, {}};
   std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
             [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p); },

@@ -4,6 +4,7 @@ import json
 import math
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -200,7 +201,8 @@ def test_tables_hold_every_table_the_command_line_writes(tmp_path, deck):
     run.write(tmp_path / "out", charts="none")
     written = sorted((tmp_path / "out").glob("*.csv"))
     assert written
-    stems = {name: name.replace(" ", "_").replace("-", "_") for name in run.tables}
+    # The files' stems: the analysis' name, characters other than letters, digits, - _ . as _.
+    stems = {name: re.sub(r"[^A-Za-z0-9._-]", "_", name) for name in run.tables}
     found = 0
     for path in written:
         owners = [name for name, stem in stems.items() if path.name.startswith(stem + "_")]

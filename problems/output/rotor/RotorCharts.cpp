@@ -154,7 +154,7 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
     std::string name = "unstable above ";
     name += labelNumber(*unstableFromRpm);
     name += " rpm";
-    const std::string fill = " fillstyle pattern 4 noborder fillcolor rgb '#c0392b'";
+    const std::string fill = " fillstyle transparent solid 0.15 noborder fillcolor rgb '#c0392b'";
     shading.setup += "  set object 90 rectangle from first ";
     shading.setup += number(*unstableFromRpm);
     shading.setup += ", graph 0 to graph 1, graph 1 back" + fill + "\n";

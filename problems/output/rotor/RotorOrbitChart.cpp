@@ -173,7 +173,11 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   const int cMode = orbits.column("mode"), cX = orbits.column("x"), cA = orbits.column("angle");
   const int cY = orbits.column("uy"), cZ = orbits.column("uz"), cDy = orbits.column("duy");
   const int cDz = orbits.column("duz"), cW = orbits.column("whirl");
-  const auto col = [](int c) { return "$" + std::to_string(c); };
+  const auto col = [](int c) {
+    std::string column = "$";  // appended: GCC 12 warns (-Wrestrict) on "$" + a temporary
+    column += std::to_string(c);
+    return column;
+  };
   // x and y of the oblique view, for mode m (and `extra` condition), NaN elsewhere.
   const auto viewX = [&](int m, const std::string& extra) {
     return "(" + col(cMode) + " == " + std::to_string(m) + extra + " ? " + col(cX) + " + " +

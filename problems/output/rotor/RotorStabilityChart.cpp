@@ -14,12 +14,24 @@ namespace beamrotor {
 
 namespace {
 
-/// The colours of decrements from least to most: dark red (growing) through orange (the
-/// stability limit, 0) to green (well damped), over the part of that scale the data reach.
+/// The colours of decrements from least to most over the part of this scale the data reach:
+/// dark red (growing), orange at the stability limit 0, gold at 0.1 (API 684's least
+/// acceptable decrement), yellow-green at 0.5, green at 1 and dark green above, so that lines
+/// of little and of much damping differ in colour wherever the data lie.
 std::string stabilityPalette(double least, double most) {
-  if (most <= 0) return number(least) + " 'dark-red', " + number(most) + " 'orange'";
-  if (least >= 0) return number(least) + " 'orange', " + number(most) + " 'forest-green'";
-  return number(least) + " 'dark-red', 0 'orange', " + number(most) + " 'forest-green'";
+  const std::vector<std::pair<double, const char*>> stops{
+      {0, "orange"}, {0.1, "gold"}, {0.5, "yellow-green"}, {1, "forest-green"}};
+  // The ends take the colour of the stop just beyond them, so the colours stay in order.
+  const char* low = "dark-red";
+  for (const auto& [at, colour] : stops)
+    if (least >= at) low = colour;
+  const char* high = "dark-green";
+  for (auto it = stops.rbegin(); it != stops.rend(); ++it)
+    if (most <= it->first) high = it->second;
+  std::string palette = number(least) + " '" + low + "'";
+  for (const auto& [at, colour] : stops)
+    if (at > least && at < most) palette += ", " + number(at) + " '" + colour + "'";
+  return palette + ", " + number(most) + " '" + high + "'";
 }
 
 }  // namespace
