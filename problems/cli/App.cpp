@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <new>
 #include <string>
@@ -21,9 +22,11 @@ namespace {
 
 /// Where the worked examples are, for --help: the installed ones beside this executable
 /// (PREFIX/share/beamrotor/examples for PREFIX/bin/beamrotor), else the source tree's when
-/// run from a build directory in it.
+/// run from a build directory in it. $BEAMROTOR_EXAMPLES_PLACE, when set, is said instead:
+/// the manual page is made by the build tree's executable, for the installed one.
 std::string examplesPlace() {
   namespace fs = std::filesystem;
+  if (const char* place = std::getenv("BEAMROTOR_EXAMPLES_PLACE"); place && *place) return place;
   std::error_code ec;
   const fs::path bin = fs::read_symlink("/proc/self/exe", ec).parent_path();
   if (!ec) {

@@ -16,11 +16,11 @@ namespace {
 
 /// The colours of decrements from least to most over the part of this scale the data reach:
 /// dark red (growing), orange at the stability limit 0, gold at 0.1 (API 684's least
-/// acceptable decrement), yellow-green at 0.5, green at 1 and dark green above, so that lines
+/// acceptable decrement), green-yellow at 0.5, green at 1 and dark green above, so that lines
 /// of little and of much damping differ in colour wherever the data lie.
 std::string stabilityPalette(double least, double most) {
   const std::vector<std::pair<double, const char*>> stops{
-      {0, "orange"}, {0.1, "gold"}, {0.5, "yellow-green"}, {1, "forest-green"}};
+      {0, "orange"}, {0.1, "gold"}, {0.5, "greenyellow"}, {1, "forest-green"}};
   // The ends take the colour of the stop just beyond them, so the colours stay in order.
   const char* low = "dark-red";
   for (const auto& [at, colour] : stops)
