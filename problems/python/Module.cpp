@@ -16,8 +16,14 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <unistd.h>
+
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -31,6 +37,7 @@
 #include "problems/output/Output.hpp"
 #include "problems/output/PreparedRun.hpp"
 #include "problems/run/Study.hpp"
+#include "problems/study/DesignStudyRun.hpp"
 
 namespace py = pybind11;
 
@@ -254,6 +261,113 @@ py::object solve(const std::filesystem::path& deck, const py::dict& set, const s
   return py::cast(PythonRun(std::move(*study.run), study.deck.output));
 }
 
+// 4. Design studies ------------------------------------------------------------------------
+
+/// The cells of one line of a CSV file beamrotor wrote: text cells quoted ("" a quote inside),
+/// numbers bare, an empty cell empty.
+std::vector<std::string> csvLine(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+      cells.back() += '"', ++i;
+    else if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      cells.emplace_back();
+    else
+      cells.back() += c;
+  }
+  return cells;
+}
+
+/// study.csv as columns: a column whose every cell is a number or empty as a NumPy array (NaN
+/// where empty), read back to the same bits the study computed (the file holds each number's
+/// shortest exact decimal); any other as a list of str.
+py::dict studyColumns(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> names = csvLine(line);
+  std::vector<std::vector<std::string>> cells(names.size());
+  while (std::getline(in, line)) {
+    const std::vector<std::string> row = csvLine(line);
+    for (std::size_t c = 0; c < names.size(); ++c) cells[c].push_back(c < row.size() ? row[c] : "");
+  }
+  py::dict columns;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    std::vector<double> numbers;
+    bool numeric = true;
+    for (const std::string& cell : cells[c]) {
+      if (cell.empty()) {
+        numbers.push_back(std::numeric_limits<double>::quiet_NaN());
+        continue;
+      }
+      char* end = nullptr;
+      numbers.push_back(std::strtod(cell.c_str(), &end));
+      numeric = numeric && end == cell.c_str() + cell.size();
+    }
+    if (numeric)
+      columns[py::str(names[c])] = py::array_t<double>(py::ssize_t(numbers.size()), numbers.data());
+    else
+      columns[py::str(names[c])] = py::cast(cells[c]);
+  }
+  return columns;
+}
+
+/// A design study run from Python: its table, summary and worst point.
+struct PythonStudy {
+  py::dict table;         ///< study.csv's columns
+  py::object summary;     ///< summary.json
+  py::object worst;       ///< the worst point's Run, or None
+  std::filesystem::path directory;
+};
+
+py::object study(const std::filesystem::path& deck, const std::vector<std::string>& sweep,
+                 const py::dict& sample, std::optional<long long> samples,
+                 const std::vector<std::string>& outputs, int threads,
+                 std::optional<std::uint64_t> seed, const std::string& sampling,
+                 const py::dict& set, const std::optional<std::filesystem::path>& out) {
+  DesignStudyRequest request;
+  request.deckPath = deck.string();
+  request.sets = overridesFrom(set);
+  request.study.sweeps = sweep;
+  for (const auto& [name, distribution] : sample)
+    request.study.samples.push_back(py::str(name).cast<std::string>() + "=" +
+                                    py::str(distribution).cast<std::string>());
+  request.study.count = samples;
+  request.study.outputs = outputs;
+  request.study.seed = seed;
+  request.study.sampling = sampling;
+  request.threads = threads;
+  // Without `out`, the study's directory is a temporary one, removed once read.
+  const bool temporary = !out;
+  std::string scratch = "beamrotor-study-";  // appended: GCC 12's -Wrestrict on "..." + temp
+  scratch += std::to_string(::getpid());
+  scratch += "-";
+  scratch += std::to_string(reinterpret_cast<std::uintptr_t>(&request));
+  const std::filesystem::path dir = out ? *out : std::filesystem::temp_directory_path() / scratch;
+  request.outDir = dir.string();
+  DesignStudyOutcome outcome;
+  {
+    py::gil_scoped_release free;
+    outcome = runDesignStudy(request);
+  }
+  PythonStudy result{studyColumns(outcome.dir / "study.csv"), toPython(outcome.summary),
+                     py::none(), temporary ? std::filesystem::path() : outcome.dir};
+  if (temporary) std::filesystem::remove_all(outcome.dir);
+  // The worst point solved in full, as the command line writes it into worst/.
+  if (outcome.summary.contains("worst_point") &&
+      outcome.summary["worst_point"].contains("directory")) {
+    py::dict at = set;
+    for (const auto& [name, value] : outcome.summary["worst_point"]["parameters"].items())
+      at[py::str(name)] = value.get<double>();
+    result.worst = solve(deck, at, "", "", true);
+  }
+  return py::cast(std::move(result));
+}
+
 py::dict parameters(const std::filesystem::path& deck) {
   const Deck d = readDeck(loadDeckFile(deck));
   py::dict p;
@@ -261,7 +375,7 @@ py::dict parameters(const std::filesystem::path& deck) {
   return p;
 }
 
-// 4. Errors ------------------------------------------------------------------------------
+// 5. Errors ------------------------------------------------------------------------------
 
 /// Imports NumPy, or fails the import of this module with an ImportError that names NumPy,
 /// the Python running and the one the module was built for (pybind11 alone says
@@ -363,6 +477,28 @@ PYBIND11_MODULE(beamrotor, m) {
         "Reads a deck, applies `set` ({name: number or expression}) and solves it. Returns a "
         "Run, or a Sweep when the deck (or `sweep`, e.g. 'eta=0:0.4:4') sweeps a parameter; "
         "`sweep_off` solves the parameters' own values. Raises DeckError or SolveError.");
+  py::class_<PythonStudy>(m, "Study", "A design study: its table, summary and worst point.")
+      .def_readonly("table", &PythonStudy::table,
+                    "study.csv's columns: NumPy arrays (text columns as lists of str)")
+      .def_readonly("summary", &PythonStudy::summary, "summary.json as dicts and lists")
+      .def_readonly("worst", &PythonStudy::worst, "the worst point's Run (None without one)")
+      .def_property_readonly(
+          "directory",
+          [](const PythonStudy& s) -> py::object {
+            return s.directory.empty() ? py::none() : py::cast(s.directory);
+          },
+          "the results directory written (`out`), or None");
+
+  m.def("study", &beamrotor::study, py::arg("deck"), py::kw_only(),
+        py::arg("sweep") = std::vector<std::string>{}, py::arg("sample") = py::dict(),
+        py::arg("samples") = py::none(), py::arg("outputs") = std::vector<std::string>{},
+        py::arg("threads") = 1, py::arg("seed") = py::none(), py::arg("sampling") = "",
+        py::arg("set") = py::dict(), py::arg("out") = py::none(),
+        "Runs a design study as `beamrotor study` does: `sweep` grid axes ('eta=0:0.4:99'), "
+        "`sample` {name: 'normal(1e-3,0.2e-3)'} with `samples` points, `outputs` ('stress max "
+        "<= 150 MPa'), on `threads` threads. Returns a Study: its table (the columns of "
+        "study.csv, the same numbers to the bit), summary and worst point's Run; `out` keeps "
+        "the results directory there.");
   m.def("parameters", &beamrotor::parameters, py::arg("deck"),
         "The deck's parameters and their values, in deck order.");
 }
