@@ -115,6 +115,11 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                    "output: charts")
       ->check(CLI::IsMember(chartFormatNames()))
       ->type_name("FORMAT");
+  bool fullTables = false;
+  CLI::Option* fullTablesFlag = solveCmd->add_flag(
+      "--full-tables", fullTables,
+      "a long line's fields table at every station (5 an element), not thinned to "
+      "about 4000 stations");
   bool pointFiles = false;
   CLI::Option* pointFilesFlag = solveCmd->add_flag(
       "--point-files", pointFiles,
@@ -304,6 +309,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   }
   if (!charts.empty()) solve.output.charts = chartFormatNamed(charts);
   if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
+  if (fullTablesFlag->count() > 0) solve.output.fullTables = fullTables;
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);

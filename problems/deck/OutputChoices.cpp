@@ -40,6 +40,7 @@ OutputChoices chooseOutput(const DeckOutput& deck, const DeckOutput& commandLine
   for (const DeckOutput* source : {&deck, &commandLine}) {
     if (source->charts) chosen.charts = *source->charts;
     if (source->pointFiles) chosen.pointFiles = *source->pointFiles;
+    if (source->fullTables) chosen.fullTables = *source->fullTables;
   }
   return chosen;
 }

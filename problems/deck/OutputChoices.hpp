@@ -24,12 +24,16 @@ struct OutputChoices {
   ChartFormat charts = ChartFormat::png;
   /// A sweep: every value's own results directory (value_000/, ...) besides the sweep's tables.
   bool pointFiles = false;
+  /// A long line's fields table at every station (5 an element), not thinned to what a chart
+  /// and a reader need (ThinnedStations.hpp).
+  bool fullTables = false;
 };
 
 /// The choices a deck's `output:` block makes; each unset one leaves the default.
 struct DeckOutput {
   std::optional<ChartFormat> charts;
   std::optional<bool> pointFiles;
+  std::optional<bool> fullTables;
 };
 
 /// The deck's choices over the defaults, then the command line's over them.

@@ -132,7 +132,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 void writeRunOutputs(const RunResult& run, const fs::path& dir, const OutputChoices& choices,
                      const AlsoWrite& also) {
-  const PreparedRun prepared = prepareRun(run);
+  const PreparedRun prepared = prepareRun(run, choices.fullTables);
   writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
     ChartBatch charts(choices.charts);
     writeRunFiles(prepared, temporary, choices.charts != ChartFormat::none);
@@ -156,7 +156,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
   std::vector<Json> docs;
   std::vector<std::string> directories;  // empty names without point files
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    if (tables) prepared.push_back(prepareRun(sweep.runs[i]));
+    if (tables) prepared.push_back(prepareRun(sweep.runs[i], choices.fullTables));
     docs.push_back(tables ? prepared.back().doc : prepareRunDocument(sweep.runs[i]));
     directories.push_back(choices.pointFiles ? sweepValueDirectory(i, sweep.runs.size()) : "");
   }

@@ -11,6 +11,7 @@
 #include "problems/output/structure/MemberOutput.hpp"
 #include "problems/output/structure/StabilityOutput.hpp"
 #include "problems/output/structure/Tables.hpp"
+#include "problems/output/structure/ThinnedStations.hpp"
 #include "problems/output/transient/TransientFiles.hpp"
 #include "problems/run/Overloaded.hpp"
 
@@ -85,10 +86,11 @@ void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
 
 /// A static analysis sampled along the line, its fields and member tables, and its cases.
 void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticResult& statics,
-                   PreparedAnalysis& p) {
+                   PreparedAnalysis& p, bool fullTables) {
   p.stations = sampleStatics(model, statics.displacement);
   p.peaks = elementPeaks(model, statics.displacement);
-  p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
+  p.fields = staticFieldsTable(fieldsCsv(p.stem),
+                               fullTables ? p.stations : thinnedStations(p.stations));
   for (const auto& [name, elements] : model.members())
     p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
   prepareCases(a, p);
@@ -113,7 +115,7 @@ Json prepareRunDocument(const RunResult& run) {
   return doc;
 }
 
-PreparedRun prepareRun(const RunResult& run) {
+PreparedRun prepareRun(const RunResult& run, bool fullTables) {
   // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
   requireWritable(run);
   const Model& model = *run.model;
@@ -125,8 +127,10 @@ PreparedRun prepareRun(const RunResult& run) {
     PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
-            [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p); },
-            [&](const SecondOrderResult& r) { prepareStatic(model, a, r.secondOrder, p); },
+            [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p, fullTables); },
+            [&](const SecondOrderResult& r) {
+              prepareStatic(model, a, r.secondOrder, p, fullTables);
+            },
             [&](const ModalResult& r) {
               p.modes = modesTable(modesCsv(p.stem), r);
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, r);

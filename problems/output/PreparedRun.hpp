@@ -52,9 +52,10 @@ struct PreparedRun {
   Json doc;  ///< results.json
 };
 
-/// Prepares run. Throws std::runtime_error naming the first non-finite number, or analyses
-/// whose files would overwrite each other's.
-PreparedRun prepareRun(const RunResult& run);
+/// Prepares run: a long line's fields table thinned (thinnedStations) unless `fullTables`.
+/// Throws std::runtime_error naming the first non-finite number, or analyses whose files would
+/// overwrite each other's.
+PreparedRun prepareRun(const RunResult& run, bool fullTables = false);
 
 /// Only the results.json document of run, checked as prepareRun checks it, without its tables
 /// (a long sweep's values, whose tables are not written).

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -174,6 +175,51 @@ TEST_SUITE("output") {
     CHECK(bad.exitCode == 2);
     CHECK(bad.err.find("output.charts") != std::string::npos);
     CHECK(bad.err.find("png, svg, both, none") != std::string::npos);
+    fs::remove_all(dir);
+  }
+}
+
+TEST_SUITE("output") {
+  TEST_CASE("a long line's fields table is thinned, its steps kept; --full-tables writes all") {
+    // A stepped cantilever of 3000 elements (15 000 stations) with a tip force: the shear
+    // stress jumps at the step, the shear force is P along the whole length.
+    const fs::path dir = scratchDir("thinned-fields");
+    std::ofstream(dir / "long.yaml")
+        << "parameters: {P: 1 kN}\n"
+           "materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]\n"
+           "sections: [{name: thick, shape: circle, D: 60 mm}, {name: thin, shape: circle, "
+           "D: 40 mm}]\n"
+           "segments: [{length: 1 m, section: thick, elements: 1500}, {length: 1 m, section: "
+           "thin, elements: 1500}]\n"
+           "points: [{name: tip, at: 2 m}]\n"
+           "supports: [{name: root, at: start, fix: clamped}]\n"
+           "loads: [{type: point, at: tip, fy: -P}]\n"
+           "analyses: [{type: static}]\n";
+    for (const char* out : {"thinned", "full"}) {
+      std::vector<std::string> arguments{"solve", "long.yaml", "--out", out, "--charts", "none"};
+      if (std::string(out) == "full") arguments.push_back("--full-tables");
+      const ProcessResult r = runBeamrotor(arguments, dir);
+      REQUIRE_MESSAGE(r.exitCode == 0, r.err);
+    }
+    const auto thinned = csvCells(dir / "thinned" / "static_fields.csv");
+    const auto full = csvCells(dir / "full" / "static_fields.csv");
+    CHECK(full.size() == 1 + 5 * 3000);
+    CHECK(thinned.size() <= 1 + 4000);
+    CHECK(thinned.size() >= 1 + 3000);
+    CHECK(thinned.back() == full.back());  // the tip, as written in full
+    CHECK(thinned[1] == full[1]);          // the root
+    // The step at x = 1 m: both sides, as the full table has them, so the diagram's step stays.
+    const std::size_t x = csvColumn(full.front(), "x [m]");
+    const auto atStep = [&](const std::vector<std::vector<std::string>>& table) {
+      std::vector<std::vector<std::string>> rows;
+      for (std::size_t r = 1; r < table.size(); ++r)
+        if (std::abs(std::stod(table[r][x]) - 1) < 1e-12) rows.push_back(table[r]);
+      return rows;
+    };
+    const auto fullStep = atStep(full);
+    REQUIRE(fullStep.size() == 2);
+    CHECK(fullStep[0] != fullStep[1]);
+    CHECK(atStep(thinned) == fullStep);
     fs::remove_all(dir);
   }
 }
