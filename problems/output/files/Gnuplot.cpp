@@ -136,15 +136,21 @@ ImageState chartState(const std::vector<fs::path>& images) {
   return worst;
 }
 
-/// What drawing a chart costs, roughly: the bytes of the data files its script reads, once per
-/// time it names them (a panel reads its file again).
+/// What drawing a chart costs, roughly, in bytes of data: gnuplot's start and the image's
+/// drawing and encoding, about what reading 200 kB costs, plus the data files its script reads
+/// (each once: a panel that reads a file again reads only its own rows, `every`).
 std::uintmax_t drawingCost(const fs::path& dir, const std::string& body) {
-  std::uintmax_t cost = body.size();
+  constexpr std::uintmax_t kEachChart = 200000;
+  std::uintmax_t cost = kEachChart + body.size();
+  std::vector<std::string> read;
   for (std::size_t at = body.find("'./"); at != std::string::npos; at = body.find("'./", at + 1)) {
     const std::size_t end = body.find('\'', at + 3);
     if (end == std::string::npos) break;
+    const std::string file = body.substr(at + 3, end - at - 3);
+    if (std::find(read.begin(), read.end(), file) != read.end()) continue;
+    read.push_back(file);
     std::error_code ec;
-    const std::uintmax_t size = fs::file_size(dir / body.substr(at + 3, end - at - 3), ec);
+    const std::uintmax_t size = fs::file_size(dir / file, ec);
     if (!ec) cost += size;
   }
   return cost;
