@@ -41,8 +41,8 @@ std::optional<std::filesystem::path> findGnuplot();
 bool drawChart(const std::filesystem::path& dir, const ChartScript& chart);
 
 /// Writes dir/<name>.gp for each chart, then draws them with at most `processes` gnuplot
-/// processes side by side in dir, each given its share of the charts (balanced by the size of
-/// the data files they read), drawing `format` (<name>.png by pngcairo when gnuplot has it,
+/// processes side by side in dir, each given its share of the charts (balanced by an estimate
+/// of each chart's cost: a fixed part and the data files it reads), drawing `format` (<name>.png by pngcairo when gnuplot has it,
 /// else png; <name>.svg). Returns how many charts were drawn. Without gnuplot it warns once
 /// per process; a chart gnuplot fails on costs that chart only: a warning with gnuplot's
 /// message (kept in <name>.log), and the charts after it are drawn by a new process. Throws
