@@ -28,8 +28,9 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # configure, so a build directory configured earlier keeps no stale value.
 WERROR ?= 0
 CMAKE_WERROR := -DBEAMROTOR_WERROR=$(if $(filter 1 ON On on YES yes TRUE true,$(WERROR)),ON,OFF)
-# Each target builds only what it runs: the executable (run, bench, report, ...), the executable
-# and the Python module (package); the test suite only for test and hostile.
+# Each target builds only what it runs: the executable (run, bench, report, ...), what the
+# package ships (package: the executable, the Python module and the manual page); the test
+# suite only for test and hostile.
 BUILD_EXE := cmake --build $(BUILD) -j $(JOBS) --target beamrotor
 
 # Installs what is missing and never removes anything: when Debian can install a package only by
@@ -80,7 +81,8 @@ run: configure
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# The Debian package (CPack, dependencies from dpkg-shlibdeps): $(BUILD)/beamrotor_<version>_<arch>.deb.
+# The Debian package (CPack, dependencies from dpkg-shlibdeps): $(BUILD)/beamrotor_<version>_<arch>.deb,
+# built from what it ships only (beamrotor_installed; CPack's install step builds nothing more).
 package: configure
 	cmake --build $(BUILD) -j $(JOBS) --target beamrotor_installed
 	cd $(BUILD) && cpack
