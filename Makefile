@@ -16,7 +16,7 @@ VTK_EXTRAS := $(if $(filter paraview-dev,$(VTK_PACKAGE)),xvfb xauth)
 PACKAGES := cmake g++ make libopenmpi-dev openmpi-bin libeigen3-dev libsuitesparse-dev libarpack2-dev $(VTK_PACKAGE) $(VTK_EXTRAS) \
             doctest-dev libyaml-cpp-dev libcli11-dev libmuparser-dev nlohmann-json3-dev \
             gnuplot-nox python3-meshio pybind11-dev python3-dev python3-numpy python3-pytest \
-            dpkg-dev file libpng-dev libopenblas0-pthread
+            dpkg-dev file libpng-dev libopenblas0-pthread help2man
 BUILD    := build
 JOBS     ?= $(shell nproc)
 DECK     ?= problems/pump_rod.yaml
@@ -28,8 +28,9 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # configure, so a build directory configured earlier keeps no stale value.
 WERROR ?= 0
 CMAKE_WERROR := -DBEAMROTOR_WERROR=$(if $(filter 1 ON On on YES yes TRUE true,$(WERROR)),ON,OFF)
-# Each target builds only what it runs: the executable (run, bench, report, ...), the executable
-# and the Python module (package); the test suite only for test and hostile.
+# Each target builds only what it runs: the executable (run, bench, report, ...), what the
+# package ships (package: the executable, the Python module and the manual page); the test
+# suite only for test and hostile.
 BUILD_EXE := cmake --build $(BUILD) -j $(JOBS) --target beamrotor
 
 # Installs what is missing (without Debian's recommended extras: the project names all it needs,
@@ -81,7 +82,8 @@ run: configure
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# The Debian package (CPack, dependencies from dpkg-shlibdeps): $(BUILD)/beamrotor_<version>_<arch>.deb.
+# The Debian package (CPack, dependencies from dpkg-shlibdeps): $(BUILD)/beamrotor_<version>_<arch>.deb,
+# built from what it ships only (beamrotor_installed; CPack's install step builds nothing more).
 package: configure
 	cmake --build $(BUILD) -j $(JOBS) --target beamrotor_installed
 	cd $(BUILD) && cpack
@@ -128,6 +130,16 @@ bench: configure
 	$(COLD) out/bench/cold_rotor_200.json -- ./$(BUILD)/beamrotor bench --kind rotor \
 	  --elements 200 --repeat 1 --cold
 	$(PY) tests/bench/compare.py out/bench
+	$(PY) tests/bench/output_bench.py --exe ./$(BUILD)/beamrotor --json out/bench/output.json
+
+# What writing costs beside the solve, per shipped deck (also the end of `make bench`; about a
+# minute): medians of 5 runs of `solve` per deck (solve and write seconds from the summary's
+# cost line, CPU seconds of the run and its gnuplot processes), and per-point files of a
+# 200-value sweep and a 1000-point study in points per second; out/bench/output.json.
+.PHONY: bench-output
+bench-output: configure
+	$(BUILD_EXE)
+	$(PY) tests/bench/output_bench.py --exe ./$(BUILD)/beamrotor --json out/bench/output.json
 
 # Design-study throughput (never part of `make test`; a few minutes): the pump rod's
 # stroke-and-wear grid of 10^5 points (all reactions and the largest stress per point, the
@@ -145,17 +157,15 @@ clean:
 # one self-contained page with every shipped deck's checks, the convergence charts and the
 # failure-case studies. Each deck's convergence study (`beamrotor converge`, its default
 # quantity: the first that changes with the mesh or time step) runs first into
-# out/report/convergence/<deck>/; a study that fails stops the report.
+# out/report/convergence/<deck>/ (`report --converge`); a deck with nothing to converge (a
+# mechanism given by closed forms) is skipped and named on the page; a study that fails stops
+# the report. tests/verify/test_report.cpp runs the same command on two decks.
 REPORT_DIR := out/report
 .PHONY: report
 report: configure
 	$(BUILD_EXE)
 	rm -rf $(REPORT_DIR) && mkdir -p $(REPORT_DIR)
-	for deck in problems/*.yaml; do \
-	  ./$(BUILD)/beamrotor converge $$deck --out $(REPORT_DIR)/convergence/$$(basename $$deck .yaml) \
-	    || exit 1; \
-	done
-	./$(BUILD)/beamrotor report --out $(REPORT_DIR)
+	./$(BUILD)/beamrotor report --converge --out $(REPORT_DIR)
 
 # Frames against a second method (never part of `make test`; about 15 seconds): the two-bay
 # portal frame and the 3d base frame of tests/verify/frames/ written both as beamrotor decks and

@@ -1,6 +1,6 @@
-// The layout the README promises, kept true: includes run one way only (elements -> fem,
+// The layout docs/layout.md promises, kept true: includes run one way only (elements -> fem,
 // meshes -> fem and elements, problems -> all; inside fem/ and problems/ the rooms below, in
-// order), every folder has a line in the README's layout table, and nothing in the repository
+// order), every folder has a line in its layout table, and nothing in the repository
 // points at a file outside it.
 #include <doctest/doctest.h>
 
@@ -81,7 +81,7 @@ std::optional<Layer> layerOf(const std::string& relative) {
   REQUIRE_MESSAGE(room != rooms->second.end(),
                   "folder " << top << "/" << layer.roomName
                             << " has no place in the import order: add it to kRoomRank and "
-                               "to the README's layout table");
+                               "to the layout table (docs/layout.md)");
   layer.room = room->second;
   const auto inner = kInnerRank.find(top + "/" + layer.roomName);
   ++part;
@@ -91,7 +91,7 @@ std::optional<Layer> layerOf(const std::string& relative) {
   REQUIRE_MESSAGE(innerRoom != inner->second.end(),
                   "folder " << top << "/" << layer.roomName << "/" << layer.innerName
                             << " has no place in the import order: add it to kInnerRank and "
-                               "to the README's layout table");
+                               "to the layout table (docs/layout.md)");
   layer.inner = innerRoom->second;
   return layer;
 }
@@ -176,8 +176,8 @@ TEST_SUITE("layout") {
                            *layerOf("problems/deck/rotor/DeckRotor.hpp")));
   }
 
-  TEST_CASE("every room has a line in the README's layout table") {
-    const std::string readme = readText(kSourceRoot / "README.md");
+  TEST_CASE("every room has a line in the layout table (docs/layout.md)") {
+    const std::string readme = readText(kSourceRoot / "docs" / "layout.md");
     for (const auto& [top, rooms] : kRoomRank) {
       std::set<std::string> onDisk;
       for (const auto& entry : fs::directory_iterator(kSourceRoot / top))
@@ -218,7 +218,7 @@ TEST_SUITE("layout") {
                                                ".py",  ".txt", ".dict", ".json"};
     std::vector<fs::path> files{kSourceRoot / "README.md", kSourceRoot / "Makefile",
                                 kSourceRoot / "CMakeLists.txt", kSourceRoot / ".ci" / "run"};
-    for (const std::string top : {"fem", "elements", "meshes", "problems", "tests"})
+    for (const std::string top : {"fem", "elements", "meshes", "problems", "tests", "docs"})
       for (const auto& entry : fs::recursive_directory_iterator(kSourceRoot / top))
         if (entry.is_regular_file() && textExtensions.count(entry.path().extension().string()))
           files.push_back(entry.path());

@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <new>
 #include <string>
 #include <vector>
@@ -19,11 +21,35 @@ namespace beamrotor::cli {
 
 namespace {
 
-constexpr const char* kDescription =
-    "beamrotor: finite-element beams and rotors.\n"
-    "Solves the engineering scenes described by YAML decks (see problems/*.yaml).\n"
-    "Exit codes: 0 ok, 1 an analysis failed (study: no point succeeded), 2 bad input, 3 a check\n"
-    "failed (check); stopped by SIGINT or SIGTERM: ended by the signal (130, 143).";
+/// Where the worked examples are, for --help: the installed ones beside this executable
+/// (PREFIX/share/beamrotor/examples for PREFIX/bin/beamrotor), else the source tree's when
+/// run from a build directory in it. $BEAMROTOR_EXAMPLES_PLACE, when set, is said instead:
+/// the manual page is made by the build tree's executable, for the installed one.
+std::string examplesPlace() {
+  namespace fs = std::filesystem;
+  if (const char* place = std::getenv("BEAMROTOR_EXAMPLES_PLACE"); place && *place) return place;
+  std::error_code ec;
+  const fs::path bin = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (!ec) {
+    const fs::path installed = bin.parent_path() / "share" / "beamrotor" / "examples";
+    if (fs::is_directory(installed, ec)) return fs::weakly_canonical(installed, ec).string();
+    if (fs::is_directory(bin.parent_path() / "problems", ec) &&
+        fs::exists(bin.parent_path() / "problems" / "deck" / "FORMAT.md", ec))
+      return "problems/ of the source tree";
+  }
+  return "share/beamrotor/examples/ of the installation";
+}
+
+std::string description() {
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) on "literal" + a temporary.
+  std::string text = "beamrotor: finite-element beams, frames and rotors.\n";
+  text += "Solves the engineering scenes described by YAML decks; worked examples, each with "
+          "its reference solution: ";
+  text += examplesPlace();
+  text += ".\nExit codes: 0 ok, 1 an analysis failed (study: no point succeeded), 2 bad input, 3 a "
+          "check failed (check); stopped by SIGINT or SIGTERM: ended by the signal (130, 143).";
+  return text;
+}
 
 /// The options every deck-reading subcommand shares.
 void addDeckOptions(CLI::App& sub, StudyRequest& request) {
@@ -64,7 +90,7 @@ std::string unknownCommand(const CLI::App& app, int argc, const char* const* arg
 }  // namespace
 
 int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App app{kDescription, "beamrotor"};
+  CLI::App app{description(), "beamrotor"};
   app.set_version_flag("--version", std::string("beamrotor ") + BEAMROTOR_VERSION);
   app.require_subcommand(1);
 
@@ -84,6 +110,23 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                    "(default: <out>/matrices)")
       ->expected(0, 1)
       ->type_name("[DIR]");
+  std::string charts;
+  solveCmd
+      ->add_option("--charts", charts,
+                   "chart images: png (default), svg, both or none; replaces the deck's "
+                   "output: charts")
+      ->check(CLI::IsMember(chartFormatNames()))
+      ->type_name("FORMAT");
+  bool fullTables = false;
+  CLI::Option* fullTablesFlag = solveCmd->add_flag(
+      "--full-tables", fullTables,
+      "a long line's fields table at every station (5 an element), not thinned to "
+      "about 4000 stations");
+  bool pointFiles = false;
+  CLI::Option* pointFilesFlag = solveCmd->add_flag(
+      "--point-files", pointFiles,
+      "a sweep: also every value's own results directory (value_000/, ...) and a ParaView "
+      "series over them");
 
   StudyRequest check;
   CLI::App* checkCmd = app.add_subcommand(
@@ -124,18 +167,22 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                      "leave the heap unpopulated, as `solve` does: first-touch page faults count "
                      "(make bench times such runs as fresh processes)");
 
-  verify::ReportOptions report;
+  ReportRequest report;
   CLI::App* reportCmd =
       app.add_subcommand("report",
                          "Regenerate the verification report (one HTML page): every shipped deck's "
                          "checks, convergence charts when present, and the failure-case studies.");
-  reportCmd->add_option("--out,-o", report.outDir, "output directory (default: out/report/)")
+  reportCmd
+      ->add_option("--out,-o", report.report.outDir, "output directory (default: out/report/)")
       ->type_name("DIR");
   reportCmd
-      ->add_option("--decks", report.problemsDir,
+      ->add_option("--decks", report.report.problemsDir,
                    "directory of the decks to check (default: problems/ of the source "
                    "tree, when run from it)")
       ->type_name("DIR");
+  reportCmd->add_flag("--converge", report.converge,
+                      "first run each deck's convergence study into DIR/convergence/<deck>/ "
+                      "(skipping, and naming on the page, decks with nothing to converge)");
 
   ConvergeRequest converge;
   CLI::App* convergeCmd =
@@ -175,9 +222,10 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->allow_extra_args(false);
   overlayCmd
       ->add_option("--quantity", overlay.quantity,
-                   "the diagram to draw: deflection, rotation, moment, stress, shear or all "
-                   "(default)")
-      ->check(CLI::IsMember({"deflection", "rotation", "moment", "stress", "shear", "all"}))
+                   "the diagram to draw: deflection, rotation, moment, force (shear force), "
+                   "stress, shear (shear stress) or all (default)")
+      ->check(CLI::IsMember({"deflection", "rotation", "moment", "force", "stress", "shear",
+                             "all"}))
       ->type_name("Q");
   overlayCmd->add_option("--out,-o", overlay.outDir, "output directory (default: out/overlay/)")
       ->type_name("DIR");
@@ -273,6 +321,9 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
              "mpirun.\n";
     return kInputError;
   }
+  if (!charts.empty()) solve.output.charts = chartFormatNamed(charts);
+  if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
+  if (fullTablesFlag->count() > 0) solve.output.fullTables = fullTables;
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);

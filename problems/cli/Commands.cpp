@@ -103,12 +103,13 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     AlsoWrite also;
     if (inside)
       also = [&](const fs::path& temporary) { exportStudyMatrices(s, temporary / inResults); };
+    const OutputChoices choices = chooseOutput(s.deck.output, options.output);
     std::string writeError;
     try {
       if (s.run)
-        writeRunOutputs(*s.run, dir, also);
+        writeRunOutputs(*s.run, dir, choices, also);
       else
-        writeSweepOutputs(*s.sweep, dir, also);
+        writeSweepOutputs(*s.sweep, dir, choices, also);
       if (options.exportMatrices && !inside)
         writeDirectoryAtomically(
             matricesDir, [&](const fs::path& temporary) { exportStudyMatrices(s, temporary); });

@@ -9,6 +9,7 @@
 
 #include "problems/bench/Bench.hpp"
 #include "problems/converge/ConvergeStudy.hpp"
+#include "problems/deck/OutputChoices.hpp"
 #include "problems/run/Study.hpp"
 #include "problems/study/DesignStudyRun.hpp"
 
@@ -19,6 +20,8 @@ struct SolveOptions {
   std::string outDir;  ///< empty: out/<deck stem>
   /// Set: also export the free-free matrices there (empty: <outDir>/matrices).
   std::optional<std::string> exportMatrices;
+  /// `--charts`, `--point-files`: over the deck's `output:` choices.
+  DeckOutput output;
 };
 
 /// `beamrotor solve`: solve, write results.json, CSV, VTK and charts, print a summary.

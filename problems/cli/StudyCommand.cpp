@@ -110,6 +110,12 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
                 c.read * us, c.model * us, c.assembly * us, c.factor * us, c.solve * us,
                 c.measure * us, o.rowSeconds * us);
   out << line;
+  if (o.pointFileSeconds > 0) {
+    std::snprintf(line, sizeof line,
+                  "point files: %.1f us per point (solved in full and written), %.0f points/s\n",
+                  o.pointFileSeconds * us, double(o.points) / o.pointFileSeconds);
+    out << line;
+  }
 }
 
 /// A study into a directory holding a partial study replaces it: said first, with the way

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/ChartBatch.hpp"
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/Gnuplot.hpp"
@@ -121,6 +122,8 @@ void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::
   std::vector<CsvTable> tables;
   for (const ConvergeSeries& s : study.series) tables.push_back(convergenceTable(s));
   writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
+    // Both charts drawn together, as SVG (the verification report inlines them) and PNG.
+    ChartBatch charts(ChartFormat::both);
     writeJson(doc, temporary / kConvergenceJson);
     for (const CsvTable& t : tables) t.write(temporary / t.title());
     // The size of the discretisation: free dofs on a mesh, steps in time.
@@ -129,6 +132,7 @@ void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::
     else
       drawChart(temporary, errorChart(study, "convergence_dofs", "dofs", "free dofs"));
     drawChart(temporary, errorChart(study, "convergence_time", "total", "wall time (total) [s]"));
+    charts.draw();
   });
 }
 

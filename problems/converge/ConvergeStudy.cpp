@@ -43,20 +43,12 @@ bool studiable(const DeckAnalysis& a) {
   return !a.as<RigidBodySpec>() && !a.as<CrankSliderSpec>();
 }
 
-/// Refuses a deck none of whose analyses a study can refine (e.g. a crank-slider or a rigid
-/// body given by its own inputs, problems/deck/FORMAT.md "Mechanisms without a model"): no
-/// quantity of it depends on a mesh or a time step, so any "convergence" would be a
-/// meaningless row of equal values.
+/// Refuses a deck none of whose analyses a study can refine (nothingToConverge).
 void requireSomethingToRefine(const Deck& deck) {
-  if (std::any_of(deck.analyses.begin(), deck.analyses.end(), studiable)) return;
-  std::string kinds;
-  for (const DeckAnalysis& a : deck.analyses)
-    kinds += (kinds.empty() ? "" : ", ") + a.type() + " '" + a.name + "'";
+  const std::optional<std::string> why = nothingToConverge(deck);
+  if (!why) return;
   const DeckPlace place = deck.analyses.empty() ? kQuantityOption : deck.analyses.front().place;
-  throw DeckError(deck.path, place,
-                  "nothing to converge: the deck has no mesh or time step to refine (its "
-                  "analyses, " + kinds + ", are closed forms that are the same at any "
-                  "discretisation); `beamrotor solve` gives their figures");
+  throw DeckError(deck.path, place, *why);
 }
 
 const DeckAnalysis* analysisNamed(const Deck& deck, const std::string& name) {
@@ -303,6 +295,21 @@ void measureErrors(ConvergeSeries& s, const DeckCheck* check) {
 }
 
 }  // namespace
+
+std::optional<std::string> nothingToConverge(const Deck& deck) {
+  if (std::any_of(deck.analyses.begin(), deck.analyses.end(), studiable)) return std::nullopt;
+  std::string kinds;
+  for (const DeckAnalysis& a : deck.analyses) {
+    kinds += kinds.empty() ? "" : ", ";
+    kinds += a.type() + " '" + a.name + "'";
+  }
+  std::string why = "nothing to converge: the deck has no mesh or time step to refine (its "
+                    "analyses, ";
+  why += kinds;
+  why += ", are closed forms that are the same at any discretisation); `beamrotor solve` gives "
+         "their figures";
+  return why;
+}
 
 ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
   // 1. What to measure and against what.

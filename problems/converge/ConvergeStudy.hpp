@@ -70,4 +70,10 @@ struct ConvergeStudy {
 /// deck cannot give or too few levels, and DeckSolveError when a solve fails.
 ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options);
 
+/// Why a study of the deck would be meaningless ("nothing to converge: ..."), when none of its
+/// analyses depends on a mesh or a time step (a crank-slider, a rigid body given by its own
+/// inputs: FORMAT.md "Mechanisms without a model"); nullopt when there is something to refine.
+/// runConvergence refuses such a deck with this message.
+std::optional<std::string> nothingToConverge(const Deck& deck);
+
 }  // namespace beamrotor

@@ -21,6 +21,7 @@
 #include "problems/deck/structure/DeckFrame.hpp"
 #include "problems/deck/rotor/DeckRotor.hpp"
 #include "problems/deck/transient/DeckTransient.hpp"
+#include "problems/deck/OutputChoices.hpp"
 #include "problems/deck/Quantity.hpp"
 #include "problems/deck/parse/Units.hpp"
 
@@ -225,6 +226,7 @@ struct Deck {
   std::vector<DeckCheck> checks;
   std::optional<DeckSweep> sweep;
   std::optional<DeckAccuracy> accuracy;  ///< `accuracy:`: pick the cheapest adequate model
+  DeckOutput output;                     ///< `output:`: chart format, a sweep's files per value
 
   /// Total length of the line (m).
   double length() const {

@@ -120,6 +120,8 @@ void resolveHistoryQuantity(const Context& c, Quantity& q, const Field& f,
 void readReport(Context& c);
 /// `accuracy:` (ReadAccuracy.cpp).
 void readAccuracy(Context& c);
+/// `output:`: chart format and a sweep's per-value files into deck.output (ReadOutput.cpp).
+void readOutput(Context& c);
 
 /// The beam formulation a field names (euler-bernoulli, timoshenko, ...).
 BeamTheory formulationOf(const Field& f);

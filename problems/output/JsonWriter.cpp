@@ -381,12 +381,13 @@ Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,
   for (std::size_t i = 0; i < runDocs.size(); ++i) {
     Json analyses = Json::array();
     for (const Json& a : runDocs[i].at("analyses")) analyses.push_back(sweepAnalysisJson(a));
-    runs.push_back({{"value", sweep.values[i]},
-                    {"directory", directories[i]},
-                    {"parameters", runDocs[i].at("parameters")},
-                    {"reported", runDocs[i].value("reported", Json::object())},
-                    {"analyses", analyses},
-                    {"checks", runDocs[i].at("checks")}});
+    Json entry = {{"value", sweep.values[i]}};
+    if (!directories[i].empty()) entry["directory"] = directories[i];
+    entry["parameters"] = runDocs[i].at("parameters");
+    entry["reported"] = runDocs[i].value("reported", Json::object());
+    entry["analyses"] = analyses;
+    entry["checks"] = runDocs[i].at("checks");
+    runs.push_back(entry);
   }
   doc["runs"] = runs;
   doc["worst"] = sweepWorstJson(sweep, runDocs);

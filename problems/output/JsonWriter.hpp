@@ -43,7 +43,8 @@ Json reactionsJson(const StaticResult& r);
 /// other analyses), see elementPeaks; the largest stress and shear are read from them.
 Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>& peaks);
 
-/// sweep.json from the values and each value's results.json (runDocs) and sub-directory.
+/// sweep.json from the values and each value's results.json (runDocs) and sub-directory
+/// (empty: none, the entry names no directory).
 Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,
                const std::vector<std::string>& directories);
 

@@ -10,7 +10,9 @@
 #include <variant>
 
 #include "problems/deck/parse/Suggest.hpp"
+#include "problems/output/ChartCaption.hpp"
 #include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/ChartBatch.hpp"
 #include "problems/output/structure/Charts.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
@@ -36,58 +38,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// "pump_rod: static (eta = 0.4, w0 = 0.001 in SI units)": the caption of a run's charts; `what` follows
-/// the analysis' name, and the parameter `left` out is not listed. A long caption puts the
-/// parameters on lines of their own ('\n'), so that the chart's width holds them.
-std::string caption(const RunResult& run, const std::string& analysis, const std::string& what = "",
-                    const std::string& left = "") {
-  constexpr std::size_t kLine = 90;  // characters across a 900-pixel chart at its title font
-  const std::string head = (run.deckName.empty() ? "" : run.deckName + ": ") + analysis + what;
-  std::vector<std::string> items;
-  for (const auto& [name, value] : run.parameters)
-    if (name != left) items.push_back(name + " = " + exactDecimal(value));
-  // A deck's bare numbers are SI (FORMAT.md): say so, since a parameter has no unit of its own.
-  if (!items.empty()) items.back() += " in SI units";
-  std::string oneLine = head;
-  for (std::size_t i = 0; i < items.size(); ++i)
-    oneLine += (i ? ", " : " (") + items[i] + (i + 1 == items.size() ? ")" : "");
-  if (oneLine.size() <= kLine) return oneLine;
-  std::string text = head, line;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::string item = items[i] + (i + 1 == items.size() ? "" : ",");
-    if (!line.empty() && line.size() + 1 + item.size() > kLine) text += "\n" + line, line.clear();
-    line += (line.empty() ? "" : " ") + item;
-  }
-  return line.empty() ? text : text + "\n" + line;
-}
-
-/// The load cases and combinations of a static analysis's results.json entry as one table:
-/// reactions, point displacements and member resultant extremes, one value per row.
-CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
-  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
-                    {"component", ""}, {"value", ""}});
-  for (const Json& c : analysis.at("cases")) {
-    const std::string name = c.at("name").get<std::string>();
-    const long long combination = c.at("combination").get<bool>() ? 1 : 0;
-    for (const char* key : {"reactions", "displacements"})
-      for (const auto& where : c.at(key).items())
-        for (const auto& component : where.value().items())
-          t.addRow({name, combination, std::string(key == std::string("reactions")
-                                                        ? "reaction" : "displacement"),
-                    where.key(), component.key(), component.value().get<double>()});
-    if (!c.contains("members")) continue;
-    for (const auto& member : c.at("members").items())
-      for (const auto& component : member.value().items()) {
-        const Json& v = component.value();
-        if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
-        for (const char* extreme : {"max", "min"})
-          t.addRow({name, combination, std::string("member"), member.key(),
-                    component.key() + " " + extreme, v.at(extreme).at("value").get<double>()});
-      }
-  }
-  return t;
-}
-
 /// A static analysis' files: its fields, members, load cases, VTK and diagrams.
 void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
                       const StaticResult& statics, const fs::path& dir, bool charts) {
@@ -95,10 +45,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   const Model& model = *run.model;
   const AnalysisOutcome& a = *p.outcome;
   p.fields->write(dir / fieldsCsv(p.stem));
-  if (!casesOf(a).empty())
-    for (const Json& entry : prepared.doc.at("analyses"))
-      if (entry.at("name") == a.name && entry.contains("cases"))
-        loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
+  if (p.caseTable) p.caseTable->write(dir / casesCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
     for (const CsvTable& table : *list) table.write(dir / table.title());
   writeStaticVtu(dir / staticVtu(p.stem), model, statics, p.stations, p.peaks);
@@ -111,18 +58,18 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
     writePvd(dir / casesPvd(p.stem), entries);
   }
   if (charts && !p.stations.empty() && p.members.empty())
-    drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
+    drawChart(dir, staticDiagrams(chartCaption(run, a.name), diagramsChart(p.stem),
                                   {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
   if (charts && !p.members.empty()) {
     // A frame: the whole structure at once, not a line coordinate through its members.
     std::vector<MemberSeries> series;
     for (const CsvTable& member : p.members)
       series.push_back({member.title(), &member, member.title()});
-    drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), model,
+    drawChart(dir, frameChart(chartCaption(run, a.name), frameShapeChart(p.stem), model,
                               statics.displacement, series, run.dimension == "planar"));
     for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
       const std::string& member = model.members()[m].first;
-      drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),
+      drawChart(dir, memberEnvelopeChart(chartCaption(run, a.name, ", envelope of " + member),
                                          envelopeChart(p.stem, member), p.envelopes[m],
                                          p.envelopes[m].title()));
     }
@@ -143,8 +90,8 @@ void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const Mode
   }
   writePvd(dir / collectionPvd(p.stem), entries);
   if (charts && p.shapes->rowCount() > 0)
-    drawChart(dir, modeShapesChart(caption(run, p.outcome->name), shapesChart(p.stem), model, modal,
-                                   *p.shapes, shapesCsv(p.stem)));
+    drawChart(dir, modeShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem),
+                                   model, modal, *p.shapes, shapesCsv(p.stem)));
 }
 
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
@@ -160,7 +107,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeStaticFiles(prepared, p, r.secondOrder, dir, charts);
             },
             [&](const BucklingResult&) {
-              writeBucklingFiles(p, model, dir, caption(run, a.name), charts);
+              writeBucklingFiles(p, model, dir, chartCaption(run, a.name), charts);
             },
             [&](const ModalResult& r) { writeModalFiles(run, p, model, r, dir, charts); },
             [&](const TorsionOutcome& r) {
@@ -168,14 +115,14 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             },
             [&](const TransientOutcome& r) {
               writeTransientFiles(dir, model, p.stem, r, *p.history,
-                                  charts ? caption(run, a.name) : "");
+                                  charts ? chartCaption(run, a.name) : "");
             },
             [&](const RotorResult auto& r) {
-              writeRotorFiles({*p.rotor, p.stem, model, dir, caption(run, a.name), charts}, r);
+              writeRotorFiles({*p.rotor, p.stem, model, dir, chartCaption(run, a.name), charts}, r);
             },
             [&](const CrankSliderOutcome& r) {
               for (const CsvTable& table : p.crank) table.write(dir / table.title());
-              if (charts) drawCrankCharts(dir, r, p.stem, caption(run, a.name));
+              if (charts) drawCrankCharts(dir, r, p.stem, chartCaption(run, a.name));
             }},
         a.result);
   }
@@ -183,41 +130,51 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 }  // namespace
 
-void writeRunOutputs(const RunResult& run, const fs::path& dir, const AlsoWrite& also) {
-  const PreparedRun prepared = prepareRun(run);
+void writeRunOutputs(const RunResult& run, const fs::path& dir, const OutputChoices& choices,
+                     const AlsoWrite& also) {
+  const PreparedRun prepared = prepareRun(run, choices.fullTables);
   writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
-    writeRunFiles(prepared, temporary, /*charts=*/true);
+    ChartBatch charts(choices.charts);
+    writeRunFiles(prepared, temporary, choices.charts != ChartFormat::none);
+    charts.draw();
     if (also) also(temporary);
   });
 }
 
-void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const AlsoWrite& also) {
+void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const OutputChoices& choices,
+                       const AlsoWrite& also) {
   // 1. Prepare every value and the sweep's own tables before writing anything.
   if (sweep.values.empty()) throw std::invalid_argument("a sweep needs at least one value");
   if (sweep.runs.size() != sweep.values.size())
     throw std::invalid_argument("sweep over '" + sweep.parameter + "' has " +
                                 std::to_string(sweep.values.size()) + " values but " +
                                 std::to_string(sweep.runs.size()) + " runs");
+  // Each value's tables only where they are written: in its own directory, or read by the
+  // overlaid diagrams of a short sweep. Otherwise its results.json document alone.
+  const bool tables = choices.pointFiles || sweep.values.size() <= kOverlaidValues;
   std::vector<PreparedRun> prepared;
   std::vector<Json> docs;
-  std::vector<std::string> directories;
+  std::vector<std::string> directories;  // empty names without point files
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    prepared.push_back(prepareRun(sweep.runs[i]));
-    docs.push_back(prepared.back().doc);
-    directories.push_back(sweepValueDirectory(i, sweep.runs.size()));
+    if (tables) prepared.push_back(prepareRun(sweep.runs[i], choices.fullTables));
+    docs.push_back(tables ? prepared.back().doc : prepareRunDocument(sweep.runs[i]));
+    directories.push_back(choices.pointFiles ? sweepValueDirectory(i, sweep.runs.size()) : "");
   }
   const Json sweepDoc = sweepJson(sweep, docs, directories);
   requireFiniteNumbers(sweepDoc, kSweepJson);
   const std::vector<SweepQuantity> quantities = sweepQuantities(docs);
   const CsvTable table = sweepTable(kSweepCsv, sweep, docs, quantities);
 
-  // 2. Per value its own results (no charts: they would dominate the time of a long sweep),
-  // then the sweep's JSON, CSV, a .pvd series per static analysis, and the sweep charts.
+  // 2. Per value its own results when asked for (no charts: they would dominate the time of a
+  // long sweep), then the sweep's JSON, CSV, a .pvd series per static analysis over the
+  // values' files, and the sweep charts.
   writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
-    for (std::size_t i = 0; i < prepared.size(); ++i) {
-      fs::create_directory(temporary / directories[i]);
-      writeRunFiles(prepared[i], temporary / directories[i], /*charts=*/false);
-    }
+    ChartBatch charts(choices.charts);
+    if (choices.pointFiles)
+      for (std::size_t i = 0; i < prepared.size(); ++i) {
+        fs::create_directory(temporary / directories[i]);
+        writeRunFiles(prepared[i], temporary / directories[i], /*charts=*/false);
+      }
     writeJson(sweepDoc, temporary / kSweepJson);
     table.write(temporary / kSweepCsv);
     const RunResult& first = sweep.runs.front();
@@ -225,23 +182,31 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
       const AnalysisOutcome& a = first.analyses[k];
       const std::string stem = fileStem(a.name);
       if (staticsOf(a)) {
-        std::vector<PvdEntry> series;
-        for (std::size_t i = 0; i < sweep.values.size(); ++i)
-          series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
-        writePvd(temporary / collectionPvd(stem), series);
+        if (choices.pointFiles) {
+          std::vector<PvdEntry> series;
+          for (std::size_t i = 0; i < sweep.values.size(); ++i)
+            series.push_back({sweep.values[i], directories[i] + "/" + staticVtu(stem)});
+          writePvd(temporary / collectionPvd(stem), series);
+        }
+        // Diagrams along a line; a frame's members are in its own files per value. They read
+        // each value's fields from its directory, or without one from a table of their own.
+        const bool overlaid = sweep.values.size() <= kOverlaidValues &&
+                              choices.charts != ChartFormat::none &&
+                              !prepared.front().analyses[k].stations.empty() &&
+                              prepared.front().analyses[k].members.empty();
         std::vector<const CsvTable*> fields;
         std::vector<std::string> files, values;
-        for (std::size_t i = 0; i < prepared.size(); ++i) {
+        for (std::size_t i = 0; i < prepared.size() && overlaid; ++i) {
           fields.push_back(&*prepared[i].analyses[k].fields);
-          files.push_back(directories[i] + "/" + fieldsCsv(stem));
-          values.push_back(exactDecimal(sweep.values[i]));
+          files.push_back(choices.pointFiles ? directories[i] + "/" + fieldsCsv(stem)
+                                             : sweepFieldsCsv(stem, i, prepared.size()));
+          if (!choices.pointFiles) fields.back()->write(temporary / files.back());
+          values.push_back(labelNumber(sweep.values[i]));
         }
-        // Diagrams along a line; a frame's members are in its own files per value.
-        if (!prepared.front().analyses[k].stations.empty() &&
-            prepared.front().analyses[k].members.empty())
+        if (overlaid)
           drawOverlaidDiagrams(
               temporary,
-              caption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
+              chartCaption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
                       sweep.parameter),
               diagramsChart(stem), sweep, fields, files);
       }
@@ -253,6 +218,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Also
                                         sweepChart(stem), sweep.parameter, sweep.unit, own, table,
                                         kSweepCsv));
     }
+    charts.draw();
     if (also) also(temporary);
   });
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "problems/deck/OutputChoices.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
@@ -14,13 +15,14 @@ namespace beamrotor {
 /// matrices), so that they are replaced with it.
 using AlsoWrite = std::function<void(const std::filesystem::path&)>;
 
-/// All outputs of one run into dir (replacing an earlier run's directory).
+/// All outputs of one run into dir (replacing an earlier run's directory), the charts in the
+/// format `choices` names, drawn together at the end (ChartBatch).
 void writeRunOutputs(const RunResult& run, const std::filesystem::path& dir,
-                     const AlsoWrite& also = {});
+                     const OutputChoices& choices = {}, const AlsoWrite& also = {});
 
-/// All outputs of a sweep into dir: one sub-directory per value plus the sweep tables,
-/// charts and a .pvd series.
+/// All outputs of a sweep into dir: the sweep tables and charts, and with choices.pointFiles
+/// one sub-directory per value (its results without charts) and a .pvd series over them.
 void writeSweepOutputs(const SweepResult& sweep, const std::filesystem::path& dir,
-                       const AlsoWrite& also = {});
+                       const OutputChoices& choices = {}, const AlsoWrite& also = {});
 
 }  // namespace beamrotor

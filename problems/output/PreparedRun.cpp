@@ -5,10 +5,13 @@
 
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/FileNames.hpp"
+#include "problems/output/rotor/RotorFileNames.hpp"
+#include "problems/output/rotor/RotorOrbitChart.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 #include "problems/output/structure/StabilityOutput.hpp"
 #include "problems/output/structure/Tables.hpp"
+#include "problems/output/structure/ThinnedStations.hpp"
 #include "problems/output/transient/TransientFiles.hpp"
 #include "problems/run/Overloaded.hpp"
 
@@ -18,10 +21,12 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
   std::vector<std::pair<std::string, const CsvTable*>> all;
   for (const std::optional<CsvTable>* t : {&fields, &modes, &shapes, &history})
     if (*t) all.emplace_back((*t)->title(), &**t);
+  if (caseTable) all.emplace_back(caseTable->title(), &*caseTable);
   if (rotor)
     for (const std::optional<CsvTable>* t :
-         {&rotor->modes, &rotor->campbell, &rotor->critical, &rotor->unbalance, &rotor->api684,
-          &rotor->frf, &rotor->bearings})
+         {&rotor->modes, &rotor->orbits, &rotor->campbell, &rotor->critical, &rotor->unbalance,
+          &rotor->api684, &rotor->frf, &rotor->bearings, &rotor->map, &rotor->mapBearings,
+          &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag})
       if (*t) all.emplace_back((*t)->title(), &**t);
   for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
@@ -29,6 +34,33 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
 }
 
 namespace {
+
+/// The load cases and combinations of a static analysis's results.json entry as one table:
+/// reactions, point displacements and member resultant extremes, one value per row.
+CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
+  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
+                    {"component", ""}, {"value", ""}});
+  for (const Json& c : analysis.at("cases")) {
+    const std::string name = c.at("name").get<std::string>();
+    const long long combination = c.at("combination").get<bool>() ? 1 : 0;
+    for (const char* key : {"reactions", "displacements"})
+      for (const auto& where : c.at(key).items())
+        for (const auto& component : where.value().items())
+          t.addRow({name, combination, std::string(key == std::string("reactions")
+                                                        ? "reaction" : "displacement"),
+                    where.key(), component.key(), component.value().get<double>()});
+    if (!c.contains("members")) continue;
+    for (const auto& member : c.at("members").items())
+      for (const auto& component : member.value().items()) {
+        const Json& v = component.value();
+        if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
+        for (const char* extreme : {"max", "min"})
+          t.addRow({name, combination, std::string("member"), member.key(),
+                    component.key() + " " + extreme, v.at(extreme).at("value").get<double>()});
+      }
+  }
+  return t;
+}
 
 /// Each case's VTK samples and, for a frame with combinations, the envelope along every member.
 void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
@@ -54,32 +86,51 @@ void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
 
 /// A static analysis sampled along the line, its fields and member tables, and its cases.
 void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticResult& statics,
-                   PreparedAnalysis& p) {
+                   PreparedAnalysis& p, bool fullTables) {
   p.stations = sampleStatics(model, statics.displacement);
   p.peaks = elementPeaks(model, statics.displacement);
-  p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
+  p.fields = staticFieldsTable(fieldsCsv(p.stem),
+                               fullTables ? p.stations : thinnedStations(p.stations));
   for (const auto& [name, elements] : model.members())
     p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
   prepareCases(a, p);
 }
 
-}  // namespace
-
-PreparedRun prepareRun(const RunResult& run) {
-  // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
+/// Refuses non-finite numbers and analyses that would overwrite each other's files.
+void requireWritable(const RunResult& run) {
   requireFinite(run);
   requireDistinctFileStems(run.analyses);
+}
+
+}  // namespace
+
+Json prepareRunDocument(const RunResult& run) {
+  requireWritable(run);
+  std::vector<std::vector<ElementPeaks>> peaks;
+  for (const AnalysisOutcome& a : run.analyses)
+    peaks.push_back(staticsOf(a) ? elementPeaks(*run.model, staticsOf(a)->displacement)
+                                 : std::vector<ElementPeaks>{});
+  Json doc = runJson(run, peaks);
+  requireFiniteNumbers(doc, kResultsJson);
+  return doc;
+}
+
+PreparedRun prepareRun(const RunResult& run, bool fullTables) {
+  // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
+  requireWritable(run);
   const Model& model = *run.model;
 
   // 2. Sample the statics along the line and build every table.
   PreparedRun prepared{&run, {}, {}};
   std::vector<std::vector<ElementPeaks>> peaks;
   for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
-            [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p); },
-            [&](const SecondOrderResult& r) { prepareStatic(model, a, r.secondOrder, p); },
+            [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p, fullTables); },
+            [&](const SecondOrderResult& r) {
+              prepareStatic(model, a, r.secondOrder, p, fullTables);
+            },
             [&](const ModalResult& r) {
               p.modes = modesTable(modesCsv(p.stem), r);
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, r);
@@ -93,6 +144,10 @@ PreparedRun prepareRun(const RunResult& run) {
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(r));
             },
             [&](const TransientOutcome& r) { p.history = historyTable(historyCsv(p.stem), r); },
+            [&](const RotorModesResult& r) {
+              p.rotor = prepareRotor(r, p.stem);
+              p.rotor->orbits = modeOrbitsTable(orbitsCsv(p.stem), r, model);
+            },
             [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
             [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); }},
         a.result);
@@ -103,6 +158,12 @@ PreparedRun prepareRun(const RunResult& run) {
   // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
   prepared.doc = runJson(run, peaks);
   requireFiniteNumbers(prepared.doc, kResultsJson);
+  // 4. The load cases' table, read from the document's entries.
+  for (PreparedAnalysis& p : prepared.analyses)
+    if (!casesOf(*p.outcome).empty())
+      for (const Json& entry : prepared.doc.at("analyses"))
+        if (entry.at("name") == p.outcome->name && entry.contains("cases"))
+          p.caseTable = loadCasesTable(entry, casesCsv(p.stem));
   return prepared;
 }
 

@@ -39,6 +39,7 @@ struct PreparedAnalysis {
   std::vector<CsvTable> members;        ///< statics of a frame: <stem>_member_<name>.csv each
   std::vector<CsvTable> envelopes;      ///< frame with combinations: <stem>_envelope_<name>.csv
   std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
+  std::optional<CsvTable> caseTable;    ///< statics with load cases: <stem>_cases.csv
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
 
   /// Every table this analysis has, each with its CSV file name, in writing order.
@@ -51,8 +52,13 @@ struct PreparedRun {
   Json doc;  ///< results.json
 };
 
-/// Prepares run. Throws std::runtime_error naming the first non-finite number, or analyses
-/// whose files would overwrite each other's.
-PreparedRun prepareRun(const RunResult& run);
+/// Prepares run: a long line's fields table thinned (thinnedStations) unless `fullTables`.
+/// Throws std::runtime_error naming the first non-finite number, or analyses whose files would
+/// overwrite each other's.
+PreparedRun prepareRun(const RunResult& run, bool fullTables = false);
+
+/// Only the results.json document of run, checked as prepareRun checks it, without its tables
+/// (a long sweep's values, whose tables are not written).
+Json prepareRunDocument(const RunResult& run);
 
 }  // namespace beamrotor

@@ -16,9 +16,16 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <unistd.h>
+
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -26,9 +33,11 @@
 #include "fem/solvers/BlasThreads.hpp"
 #include "problems/deck/parse/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/parse/Suggest.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/output/PreparedRun.hpp"
 #include "problems/run/Study.hpp"
+#include "problems/study/DesignStudyRun.hpp"
 
 namespace py = pybind11;
 
@@ -99,13 +108,26 @@ py::dict unitsOf(const CsvTable& table) {
   return units;
 }
 
+/// write()'s keyword arguments as choices over the deck's: charts="png"|"svg"|"both"|"none".
+DeckOutput outputFrom(const std::optional<std::string>& charts, std::optional<bool> pointFiles) {
+  DeckOutput output;
+  if (charts) {
+    output.charts = chartFormatNamed(*charts);
+    if (!output.charts)
+      throw py::value_error("charts: '" + *charts + "' is not one of " +
+                            joinNames(chartFormatNames()));
+  }
+  output.pointFiles = pointFiles;
+  return output;
+}
+
 // 2. Results as Python objects ---------------------------------------------------------------
 
 /// One solved run: its results.json document and its tables, built once by the same code
 /// that writes the results directory.
 class PythonRun {
  public:
-  explicit PythonRun(RunResult run) : run_(std::move(run)) {
+  PythonRun(RunResult run, DeckOutput output) : run_(std::move(run)), output_(output) {
     const PreparedRun prepared = prepareRun(run_);
     results_ = toPython(prepared.doc);
     for (const PreparedAnalysis& a : prepared.analyses) {
@@ -157,9 +179,10 @@ class PythonRun {
       }
     throw py::key_error("no analysis named '" + analysis + "'");
   }
-  void write(const std::filesystem::path& dir) const {
+  void write(const std::filesystem::path& dir, const std::optional<std::string>& charts) const {
+    const OutputChoices choices = chooseOutput(output_, outputFrom(charts, std::nullopt));
     py::gil_scoped_release free;
-    writeRunOutputs(run_, dir);
+    writeRunOutputs(run_, dir, choices);
   }
   std::string repr() const {
     return "<beamrotor.Run " + run_.deckName + ": " + std::to_string(run_.analyses.size()) +
@@ -169,6 +192,7 @@ class PythonRun {
 
  private:
   RunResult run_;
+  DeckOutput output_;  ///< the deck's `output:` choices
   py::object results_;
   py::dict tables_, units_;
 };
@@ -176,21 +200,24 @@ class PythonRun {
 /// A deck solved over the values of one parameter.
 class PythonSweep {
  public:
-  explicit PythonSweep(SweepResult sweep) : sweep_(std::move(sweep)) {
-    for (const RunResult& r : sweep_.runs) runs_.emplace_back(r);
+  PythonSweep(SweepResult sweep, DeckOutput output) : sweep_(std::move(sweep)), output_(output) {
+    for (const RunResult& r : sweep_.runs) runs_.emplace_back(r, output);
   }
   const std::string& parameter() const { return sweep_.parameter; }
   py::array_t<double> values() const {
     return py::array_t<double>(py::ssize_t(sweep_.values.size()), sweep_.values.data());
   }
   const std::vector<PythonRun>& runs() const { return runs_; }
-  void write(const std::filesystem::path& dir) const {
+  void write(const std::filesystem::path& dir, const std::optional<std::string>& charts,
+             std::optional<bool> pointFiles) const {
+    const OutputChoices choices = chooseOutput(output_, outputFrom(charts, pointFiles));
     py::gil_scoped_release free;
-    writeSweepOutputs(sweep_, dir);
+    writeSweepOutputs(sweep_, dir, choices);
   }
 
  private:
   SweepResult sweep_;
+  DeckOutput output_;
   std::vector<PythonRun> runs_;
 };
 
@@ -230,8 +257,115 @@ py::object solve(const std::filesystem::path& deck, const py::dict& set, const s
     py::gil_scoped_release free;
     study = solveStudy(request);
   }
-  if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep)));
-  return py::cast(PythonRun(std::move(*study.run)));
+  if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep), study.deck.output));
+  return py::cast(PythonRun(std::move(*study.run), study.deck.output));
+}
+
+// 4. Design studies ------------------------------------------------------------------------
+
+/// The cells of one line of a CSV file beamrotor wrote: text cells quoted ("" a quote inside),
+/// numbers bare, an empty cell empty.
+std::vector<std::string> csvLine(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+      cells.back() += '"', ++i;
+    else if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      cells.emplace_back();
+    else
+      cells.back() += c;
+  }
+  return cells;
+}
+
+/// study.csv as columns: a column whose every cell is a number or empty as a NumPy array (NaN
+/// where empty), read back to the same bits the study computed (the file holds each number's
+/// shortest exact decimal); any other as a list of str.
+py::dict studyColumns(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> names = csvLine(line);
+  std::vector<std::vector<std::string>> cells(names.size());
+  while (std::getline(in, line)) {
+    const std::vector<std::string> row = csvLine(line);
+    for (std::size_t c = 0; c < names.size(); ++c) cells[c].push_back(c < row.size() ? row[c] : "");
+  }
+  py::dict columns;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    std::vector<double> numbers;
+    bool numeric = true;
+    for (const std::string& cell : cells[c]) {
+      if (cell.empty()) {
+        numbers.push_back(std::numeric_limits<double>::quiet_NaN());
+        continue;
+      }
+      char* end = nullptr;
+      numbers.push_back(std::strtod(cell.c_str(), &end));
+      numeric = numeric && end == cell.c_str() + cell.size();
+    }
+    if (numeric)
+      columns[py::str(names[c])] = py::array_t<double>(py::ssize_t(numbers.size()), numbers.data());
+    else
+      columns[py::str(names[c])] = py::cast(cells[c]);
+  }
+  return columns;
+}
+
+/// A design study run from Python: its table, summary and worst point.
+struct PythonStudy {
+  py::dict table;         ///< study.csv's columns
+  py::object summary;     ///< summary.json
+  py::object worst;       ///< the worst point's Run, or None
+  std::filesystem::path directory;
+};
+
+py::object study(const std::filesystem::path& deck, const std::vector<std::string>& sweep,
+                 const py::dict& sample, std::optional<long long> samples,
+                 const std::vector<std::string>& outputs, int threads,
+                 std::optional<std::uint64_t> seed, const std::string& sampling,
+                 const py::dict& set, const std::optional<std::filesystem::path>& out) {
+  DesignStudyRequest request;
+  request.deckPath = deck.string();
+  request.sets = overridesFrom(set);
+  request.study.sweeps = sweep;
+  for (const auto& [name, distribution] : sample)
+    request.study.samples.push_back(py::str(name).cast<std::string>() + "=" +
+                                    py::str(distribution).cast<std::string>());
+  request.study.count = samples;
+  request.study.outputs = outputs;
+  request.study.seed = seed;
+  request.study.sampling = sampling;
+  request.threads = threads;
+  // Without `out`, the study's directory is a temporary one, removed once read.
+  const bool temporary = !out;
+  std::string scratch = "beamrotor-study-";  // appended: GCC 12's -Wrestrict on "..." + temp
+  scratch += std::to_string(::getpid());
+  scratch += "-";
+  scratch += std::to_string(reinterpret_cast<std::uintptr_t>(&request));
+  const std::filesystem::path dir = out ? *out : std::filesystem::temp_directory_path() / scratch;
+  request.outDir = dir.string();
+  DesignStudyOutcome outcome;
+  {
+    py::gil_scoped_release free;
+    outcome = runDesignStudy(request);
+  }
+  PythonStudy result{studyColumns(outcome.dir / "study.csv"), toPython(outcome.summary),
+                     py::none(), temporary ? std::filesystem::path() : outcome.dir};
+  if (temporary) std::filesystem::remove_all(outcome.dir);
+  // The worst point solved in full, as the command line writes it into worst/.
+  if (outcome.summary.contains("worst_point") &&
+      outcome.summary["worst_point"].contains("directory")) {
+    py::dict at = set;
+    for (const auto& [name, value] : outcome.summary["worst_point"]["parameters"].items())
+      at[py::str(name)] = value.get<double>();
+    result.worst = solve(deck, at, "", "", true);
+  }
+  return py::cast(std::move(result));
 }
 
 py::dict parameters(const std::filesystem::path& deck) {
@@ -241,7 +375,32 @@ py::dict parameters(const std::filesystem::path& deck) {
   return p;
 }
 
-// 4. Errors ------------------------------------------------------------------------------
+// 5. Errors ------------------------------------------------------------------------------
+
+/// Imports NumPy, or fails the import of this module with an ImportError that names NumPy,
+/// the Python running and the one the module was built for (pybind11 alone says
+/// "initialization failed", and only the chained error names NumPy).
+void requireNumPy() {
+  try {
+    py::module_::import("numpy");
+  } catch (py::error_already_set& e) {
+    const py::module_ sys = py::module_::import("sys");
+    std::string message = "beamrotor needs NumPy, which this Python cannot import (";
+    message += e.what();
+    const std::string version = py::str(sys.attr("version")).cast<std::string>();
+    message += "). The module was built for Python ";
+    message += std::to_string(PY_MAJOR_VERSION);
+    message += ".";
+    message += std::to_string(PY_MINOR_VERSION);
+    message += "; this is ";
+    message += py::str(sys.attr("executable")).cast<std::string>();
+    message += ", Python ";
+    message += version.substr(0, version.find(' '));
+    message += ". Install NumPy for it (Debian: apt install python3-numpy).";
+    // A std::exception leaving the module's initialisation becomes an ImportError with this text.
+    throw std::runtime_error(message);
+  }
+}
 
 /// Raises `type` with the diagnostic's parts as attributes.
 void raise(const py::object& type, const DeckDiagnostic& e) {
@@ -266,6 +425,7 @@ PYBIND11_MODULE(beamrotor, m) {
   // imports NumPy, and an import can hand the GIL to another thread: two threads making their
   // first Run at once then deadlocked (one in the import waiting for the GIL, the other holding
   // the GIL waiting for the static). Made here, while the import of this module holds the GIL.
+  requireNumPy();
   py::array_t<double>(py::ssize_t(0));
   useOneBlasThreadPerCall();
 
@@ -297,22 +457,48 @@ PYBIND11_MODULE(beamrotor, m) {
       .def_property_readonly("nodes", &PythonRun::nodes, "node coordinates (m), n x 3")
       .def("displacements", &PythonRun::displacements, py::arg("analysis"),
            "nodal displacements of a static analysis, n x 6 (ux uy uz rx ry rz; m, rad)")
-      .def("write", &PythonRun::write, py::arg("directory"),
-           "writes the results directory, as `beamrotor solve --out`")
+      .def("write", &PythonRun::write, py::arg("directory"), py::kw_only(),
+           py::arg("charts") = py::none(),
+           "writes the results directory, as `beamrotor solve --out`; charts: 'png', 'svg', "
+           "'both' or 'none' (default: the deck's output: charts, else png)")
       .def("__repr__", &PythonRun::repr);
 
   py::class_<PythonSweep>(m, "Sweep", "A deck solved over the values of one parameter.")
       .def_property_readonly("parameter", &PythonSweep::parameter)
       .def_property_readonly("values", &PythonSweep::values)
       .def_property_readonly("runs", &PythonSweep::runs, "one Run per value")
-      .def("write", &PythonSweep::write, py::arg("directory"),
-           "writes the sweep's results directory, as `beamrotor solve --out`");
+      .def("write", &PythonSweep::write, py::arg("directory"), py::kw_only(),
+           py::arg("charts") = py::none(), py::arg("point_files") = py::none(),
+           "writes the sweep's results directory, as `beamrotor solve --out`; charts as "
+           "Run.write; point_files: also every value's own results directory");
 
   m.def("solve", &beamrotor::solve, py::arg("deck"), py::kw_only(), py::arg("set") = py::dict(),
         py::arg("sweep") = "", py::arg("formulation") = "", py::arg("sweep_off") = false,
         "Reads a deck, applies `set` ({name: number or expression}) and solves it. Returns a "
         "Run, or a Sweep when the deck (or `sweep`, e.g. 'eta=0:0.4:4') sweeps a parameter; "
         "`sweep_off` solves the parameters' own values. Raises DeckError or SolveError.");
+  py::class_<PythonStudy>(m, "Study", "A design study: its table, summary and worst point.")
+      .def_readonly("table", &PythonStudy::table,
+                    "study.csv's columns: NumPy arrays (text columns as lists of str)")
+      .def_readonly("summary", &PythonStudy::summary, "summary.json as dicts and lists")
+      .def_readonly("worst", &PythonStudy::worst, "the worst point's Run (None without one)")
+      .def_property_readonly(
+          "directory",
+          [](const PythonStudy& s) -> py::object {
+            return s.directory.empty() ? py::none() : py::cast(s.directory);
+          },
+          "the results directory written (`out`), or None");
+
+  m.def("study", &beamrotor::study, py::arg("deck"), py::kw_only(),
+        py::arg("sweep") = std::vector<std::string>{}, py::arg("sample") = py::dict(),
+        py::arg("samples") = py::none(), py::arg("outputs") = std::vector<std::string>{},
+        py::arg("threads") = 1, py::arg("seed") = py::none(), py::arg("sampling") = "",
+        py::arg("set") = py::dict(), py::arg("out") = py::none(),
+        "Runs a design study as `beamrotor study` does: `sweep` grid axes ('eta=0:0.4:99'), "
+        "`sample` {name: 'normal(1e-3,0.2e-3)'} with `samples` points, `outputs` ('stress max "
+        "<= 150 MPa'), on `threads` threads. Returns a Study: its table (the columns of "
+        "study.csv, the same numbers to the bit), summary and worst point's Run; `out` keeps "
+        "the results directory there.");
   m.def("parameters", &beamrotor::parameters, py::arg("deck"),
         "The deck's parameters and their values, in deck order.");
 }

@@ -189,6 +189,8 @@ RunResult runDeck(const Deck& deck, RunCache* cache) {
   run.deckName = deck.stem;
   run.parameters = deck.parameters;
   run.reported = deck.reported;
+  for (const auto& [name, dimension] : deck.dimensions)
+    run.units.emplace_back(name, siUnitOf(dimension));
   run.dimension = deck.dimension;
 
   // 1. The model.

@@ -125,6 +125,10 @@ struct RunResult {
   std::string deckName;                                    ///< file stem, e.g. "pump_rod"
   std::vector<std::pair<std::string, double>> parameters;  ///< values used, deck order
   std::vector<std::pair<std::string, double>> reported;    ///< the deck's `report:` values
+  /// The parameters set on the command line (--set), which chart titles name.
+  std::vector<std::string> setParameters;
+  /// The SI unit of each parameter or derived value the deck wrote with a unit ("m", "N").
+  std::vector<std::pair<std::string, std::string>> units;
   std::shared_ptr<const Model> model;
   std::string dimension;  ///< "planar" or "3d"
   std::vector<AnalysisOutcome> analyses;

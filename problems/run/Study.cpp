@@ -34,6 +34,11 @@ Study solve(const DeckSource& source, const StudyRequest& request, const SweepPr
     study.sweep = runSweep(source, overrides, study.deck, progress, adjust);
   else
     study.run = runDeck(study.deck);
+  std::vector<std::string> set;
+  for (const ParameterOverride& o : overrides) set.push_back(o.name);
+  if (study.run) study.run->setParameters = set;
+  if (study.sweep)
+    for (RunResult& run : study.sweep->runs) run.setParameters = set;
   return study;
 }
 

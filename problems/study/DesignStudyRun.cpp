@@ -181,10 +181,14 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
           TableWriter rows(csv, table, summary, resumed ? &*resumed : nullptr, progress,
                            points.size());
           // A point's own results directory, for a row solved here or stored.
+          // A point's own results without charts: drawing them would cost more than the rest.
           const auto writePointFiles = [&](const StudyRow& row) {
+            Stopwatch pointClock;
             unlessStopping(pointDir(row.index), [&] {
-              writeRunOutputs(pointFiles->solveFully(row.parameters), pointDir(row.index));
+              writeRunOutputs(pointFiles->solveFully(row.parameters), pointDir(row.index),
+                              OutputChoices{ChartFormat::none, false});
             });
+            outcome.pointFileSeconds += pointClock.lap();
           };
           if (pointFiles)  // a stored point's files come along, or are made when it has none
             rows.onStored = [&](const StudyRow& row) {

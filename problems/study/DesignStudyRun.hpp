@@ -32,7 +32,7 @@ struct DesignStudyRequest {
   std::string outDir;      ///< empty: out/<deck stem>_study, or where --resume's study goes
   std::string resumeDir;   ///< --resume: a partial study to continue, or empty
   int threads = 1;         ///< threads over points on this machine (per MPI rank)
-  bool pointFiles = false; ///< also every point's results directory, points/<k>/
+  bool pointFiles = false; ///< also every point's results directory (no charts), points/<k>/
   bool fullPath = false;   ///< read the deck in full at every point (StudyPlan::lean false)
 };
 
@@ -52,6 +52,9 @@ struct DesignStudyOutcome {
   PointRanges missing;    ///< points without a row (a stopped study's)
   bool worstWritten = false;  ///< worst/ holds the worst point's results
   std::string resumeNote;     ///< what resuming did beyond the table ("" when nothing)
+  /// The time spent solving each point in full and writing its results directory
+  /// (--point-files), summed over the points.
+  double pointFileSeconds = 0;
   Json summary;
   bool partial() const { return !missing.empty(); }
 };

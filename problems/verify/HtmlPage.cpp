@@ -111,6 +111,12 @@ std::string reportHtml(const ReportContent& content) {
     html << "<p>No convergence study found: these charts come from <code>beamrotor converge"
             "</code> (written to DIR/convergence/) once that command is available.</p>\n";
   for (const ReportFigure& f : content.convergence) writeFigure(html, f);
+  if (!content.notConverged.empty()) {
+    html << "<p>Decks without a convergence study:</p>\n<ul>\n";
+    for (const auto& [deck, why] : content.notConverged)
+      html << "<li><code>" << xmlEscape(deck) << "</code>: " << xmlEscape(why) << "</li>\n";
+    html << "</ul>\n";
+  }
   html << "<h2>3. Where methods fail, and the remedies</h2>\n";
   for (const ReportFigure& f : content.failures) writeFigure(html, f);
   html << "</body></html>\n";

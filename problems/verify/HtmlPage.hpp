@@ -21,6 +21,8 @@ struct ReportContent {
   std::string generated;  ///< e.g. "beamrotor 0.1.0, 2026-11-22 20:10 UTC"
   std::vector<DeckChecks> decks;
   std::vector<ReportFigure> convergence;  ///< empty: a note on how to add them
+  /// Decks without a convergence study and why (deck file, reason), e.g. nothing to refine.
+  std::vector<std::pair<std::string, std::string>> notConverged;
   std::vector<ReportFigure> failures;
 };
 

@@ -4,6 +4,7 @@
 #include <ctime>
 
 #include "problems/output/files/AtomicDirectory.hpp"
+#include "problems/output/files/ChartBatch.hpp"
 #include "problems/output/files/FileWriting.hpp"
 #include "problems/verify/HtmlPage.hpp"
 
@@ -78,12 +79,15 @@ ReportSummary writeReport(const ReportOptions& options, std::ostream& log) {
   log << "running the failure-case studies\n";
   const std::vector<StudyChart> studies = failureCharts(options.failures);
   writeDirectoryAtomically(charts, [&](const fs::path& temporary) {
+    ChartBatch drawn(ChartFormat::both);  // SVG, which the page inlines, and PNG; drawn together
     for (const StudyChart& chart : studies) writeStudyChart(temporary, chart);
+    drawn.draw();
   });
   for (const StudyChart& chart : studies)
     content.failures.push_back({chart.title, chart.caption, charts / (chart.name + ".svg")});
   // 3. The convergence charts, when a converge run left them.
   content.convergence = convergenceFigures(options.outDir / "convergence");
+  content.notConverged = options.notConverged;
   // 4. The page.
   summary.page = page;
   const std::string html = reportHtml(content);

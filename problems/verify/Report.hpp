@@ -14,6 +14,9 @@ struct ReportOptions {
   std::filesystem::path outDir = "out/report";
   std::filesystem::path problemsDir = "problems";  ///< whose *.yaml decks are checked
   FailureChartOptions failures;
+  /// Decks whose convergence study was skipped, with the reason (deck file, reason): said on
+  /// the page beside the convergence charts.
+  std::vector<std::pair<std::string, std::string>> notConverged;
 };
 
 /// What the report found.

@@ -25,7 +25,7 @@ struct StudyChart {
 };
 
 /// Writes dir/<name>-<k>.csv per series (columns x, y) and draws dir/<name>.svg and .png.
-/// Returns whether gnuplot drew the chart (see drawChart).
+/// Returns whether gnuplot drew the chart, or, inside a ChartBatch, took it (see drawChart).
 bool writeStudyChart(const std::filesystem::path& dir, const StudyChart& chart);
 
 }  // namespace beamrotor::verify

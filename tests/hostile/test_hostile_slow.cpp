@@ -113,7 +113,7 @@ TEST_SUITE("slow hostile: full device") {
         CHECK_FALSE(fs::exists(root / "disk" / "out"));
       } else {
         ++succeeded;
-        CHECK(fs::exists(root / "disk" / "out" / "bend_diagrams.svg"));
+        CHECK(fs::exists(root / "disk" / "out" / "bend_diagrams.png"));
       }
       requireCompleteOrAbsent(root / "disk" / "out");
     }

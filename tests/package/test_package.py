@@ -2,7 +2,8 @@
 the .deb CPack builds, unpacked with dpkg-deb, must each run a shipped deck to the very same
 results (same code, same libraries: tables byte for byte, results.json equal but for its
 wall-clock times; not within a tolerance), import as a Python
-module, and (the .deb) declare the Debian runtime packages it needs."""
+module, and (the .deb) declare the Debian runtime packages it needs. Installed, `--help`
+names the installed examples; the .deb ships the ParaView script and the manual page."""
 import filecmp
 import json
 import os
@@ -74,6 +75,12 @@ def reference_module_answer(deck):
     return assert_module_solves(BUILD / "python", deck)
 
 
+def assert_help_names_examples(executable, examples):
+    """--help names the examples directory beside the installed executable."""
+    text = " ".join(run(str(executable), "--help").stdout.split())
+    assert str(examples.resolve()) in text, text
+
+
 def test_cmake_install_runs_like_the_build_tree(tmp_path):
     prefix = tmp_path / "prefix"
     run("cmake", "--install", str(BUILD), "--prefix", str(prefix))
@@ -82,6 +89,8 @@ def test_cmake_install_runs_like_the_build_tree(tmp_path):
         p.name for p in (SOURCE / "problems").glob("*.yaml"))
     for doc in ("README.md", "FORMAT.md", "scenes.md"):
         assert (prefix / "share" / "doc" / "beamrotor" / doc).is_file()
+    assert (prefix / "share" / "beamrotor" / "open_results.py").is_file()
+    assert_help_names_examples(prefix / "bin" / "beamrotor", examples)
     deck = examples / DECK
     installed = solve(prefix / "bin" / "beamrotor", deck, tmp_path / "installed")
     reference = solve(BUILD / "beamrotor", deck, tmp_path / "reference")
@@ -121,6 +130,11 @@ def test_deb_unpacks_runs_and_names_its_runtime_packages(tmp_path):
     root = tmp_path / "root"
     run("dpkg-deb", "-x", str(debs[0]), str(root))
     usr = root / "usr"
+    assert (usr / "share" / "beamrotor" / "open_results.py").is_file()
+    manual = usr / "share" / "man" / "man1" / "beamrotor.1"
+    assert manual.is_file()
+    assert "beamrotor solve" in manual.read_text() and "examples" in manual.read_text()
+    assert_help_names_examples(usr / "bin" / "beamrotor", usr / "share" / "beamrotor" / "examples")
     deck = usr / "share" / "beamrotor" / "examples" / DECK
     installed = solve(usr / "bin" / "beamrotor", deck, tmp_path / "installed")
     reference = solve(BUILD / "beamrotor", deck, tmp_path / "reference")

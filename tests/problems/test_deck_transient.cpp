@@ -236,7 +236,7 @@ TEST_SUITE("deck transient") {
     CHECK(a.at("energy_balance_error").get<double>() < 1e-12);
     CHECK(std::abs(a.at("maxima").at("x_max").get<double>() - 0.01) < 1e-9);
     CHECK(a.at("files").at("vtu").size() == 11);
-    for (const char* name : {"run_history.csv", "run_history.svg", "run.pvd", "run_frame_0011.vtu"})
+    for (const char* name : {"run_history.csv", "run_history.png", "run.pvd", "run_frame_0011.vtu"})
       CHECK(fs::exists(out / name));
     // The last frame read back by VTK: one vertex at the body, displaced as the history ends
     // (x = 0.01 cos(20 t) at t = 0.5 s, to Newmark's phase error 1.2e-5 m).

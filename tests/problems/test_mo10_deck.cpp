@@ -160,7 +160,7 @@ TEST_SUITE("MO-10 deck") {
     const auto r = test::runBeamrotor({"solve", kMo10Deck.string(), "--out", out.string(),
                                        "--sweep", "c=1e4,1e6", "--set", "cycles=2"});
     REQUIRE(r.exitCode == 0);
-    CHECK(fs::exists(out / "sweep_blows.svg"));
+    CHECK(fs::exists(out / "sweep_blows.png"));
     std::ifstream in(out / "sweep.json");
     const nlohmann::json doc = nlohmann::json::parse(in);
     REQUIRE(doc.at("runs").size() == 2);

@@ -49,7 +49,7 @@ TEST_SUITE("overlay command") {
     // pinned end of variant B carries none (round-off of the recovered moment).
     CHECK(std::abs(std::abs(firstRowValue(a, "Mz")) - 7.66e3) <= 5);
     CHECK(std::abs(firstRowValue(b, "Mz")) < 1e-6);
-    // One chart reading both tables, all five panels by default.
+    // One chart reading both tables, all six panels by default.
     const std::string script = fileContents(out / "overlay.gp");
     for (const char* s : {"pump_rod_fields.csv", "pump_rod_hinged_fields.csv", "deflection",
                           "rotation", "bending moment", "normal stress", "shear stress"})

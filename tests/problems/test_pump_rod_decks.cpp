@@ -162,8 +162,8 @@ TEST_SUITE("pump rod decks") {
     const SolvedDeck solved = solveShippedDeckToScratch("pump_rod_hinged.yaml", "pump-rod-hinged");
     // One chart script reads the three values' field tables, one line each.
     const std::string script = solved.text("bending_diagrams.gp");
-    for (const char* v : {"value_000/bending_fields.csv", "value_001/bending_fields.csv",
-                          "value_002/bending_fields.csv", "eta = 0.2", "shear stress"})
+    for (const char* v : {"bending_fields_value_000.csv", "bending_fields_value_001.csv",
+                          "bending_fields_value_002.csv", "eta = 0.2", "shear stress"})
       CHECK(script.find(v) != std::string::npos);
     // The worst normal stress over the sweep is the largest of the runs' closed-form peaks
     // (their `largest stress closed form` references), and lies on the thin rod.

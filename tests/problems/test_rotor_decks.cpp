@@ -232,7 +232,7 @@ TEST_SUITE("rotor decks") {
     //    line; gnuplot drew both charts (a script error leaves only a .log).
     for (const char* f :
          {"campbell_campbell.csv", "campbell_critical_speeds.csv", "unbalance_unbalance.csv",
-          "spin_modes.csv", "spin.pvd", "campbell_campbell.svg", "unbalance_unbalance.svg"})
+          "spin_modes.csv", "spin.pvd", "campbell_campbell.png", "unbalance_unbalance.png"})
       CHECK(fs::exists(dir / f));
     std::ifstream campbell(dir / "campbell_campbell.csv");
     int rows = -1;  // the header
@@ -454,7 +454,7 @@ analyses:
     for (std::size_t l = 0; l < campbell.lines.size(); ++l)
       for (std::size_t s = 0; s < campbell.speeds.size(); ++s)
         checkDecrementJson(lines.at(l).at("log_decrement").at(s), campbell.lines[l][s].logDecrement);
-    CHECK(fs::exists(dir / "campbell_stability.svg"));
+    CHECK(fs::exists(dir / "campbell_stability.png"));
     fs::remove_all(dir);
   }
 

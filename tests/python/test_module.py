@@ -4,6 +4,9 @@ import json
 import math
 import os
 import pathlib
+import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -181,3 +184,105 @@ def test_a_mechanism_raises_solve_error():
 def test_set_refuses_what_is_not_a_number_or_expression():
     with pytest.raises(TypeError):
         beamrotor.solve(PROBLEMS / "cantilever.yaml", set={"P": [1, 2]})
+
+
+def csv_header_and_rows(path):
+    lines = path.read_text().splitlines()
+    return lines[0], len(lines) - 1
+
+
+@pytest.mark.parametrize("deck", ["continuous_beam.yaml", "compressor_rotor.yaml",
+                                  "forme_shaft_rotor.yaml", "portal_frame.yaml",
+                                  "snt32_drive.yaml", "mo10_steady.yaml", "pump_rod.yaml"])
+def test_tables_hold_every_table_the_command_line_writes(tmp_path, deck):
+    """Every CSV file of the results directory is a table of run.tables, with its columns and
+    rows: the load cases, the bearing loads, the critical-speed map and the orbits too."""
+    run = beamrotor.solve(PROBLEMS / deck, sweep_off=True)
+    run.write(tmp_path / "out", charts="none")
+    written = sorted((tmp_path / "out").glob("*.csv"))
+    assert written
+    # The files' stems: the analysis' name, characters other than letters, digits, - _ . as _.
+    stems = {name: re.sub(r"[^A-Za-z0-9._-]", "_", name) for name in run.tables}
+    found = 0
+    for path in written:
+        owners = [name for name, stem in stems.items() if path.name.startswith(stem + "_")]
+        assert owners, path.name
+        name = max(owners, key=len)
+        key = path.name[len(stems[name]) + 1:-len(".csv")]
+        assert key in run.tables[name], (path.name, list(run.tables[name]))
+        table = run.tables[name][key]
+        _, rows = csv_header_and_rows(path)
+        assert len(table) == len(run.units[name][key])
+        assert all(len(column) == rows for column in table.values()), path.name
+        found += 1
+    assert found == sum(len(tables) for tables in run.tables.values())
+
+
+def test_a_python_without_numpy_gets_an_error_naming_numpy_and_the_python(tmp_path):
+    code = ("import sys; sys.modules['numpy'] = None\n"
+            "try:\n    import beamrotor\n"
+            "except ImportError as e:\n    print(e)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env=dict(os.environ))
+    message = done.stdout
+    assert "beamrotor needs NumPy" in message, (done.stdout, done.stderr)
+    built = f"{sys.version_info.major}.{sys.version_info.minor}"
+    assert f"built for Python {built}" in message
+    assert sys.executable in message
+    assert "python3-numpy" in message
+
+
+def read_study_csv(path):
+    """study.csv as {column: list of cells}, numbers as floats (the file's shortest exact
+    decimals read back), empty cells as NaN, text as str."""
+    import csv
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    columns = {}
+    for k, name in enumerate(rows[0]):
+        cells = [row[k] for row in rows[1:]]
+        try:
+            columns[name] = [float(c) if c else math.nan for c in cells]
+        except ValueError:
+            columns[name] = cells
+    return columns
+
+
+def test_study_gives_the_command_lines_table_to_the_bit(tmp_path):
+    """beamrotor.study against `beamrotor study` with the same grid: every column of the table
+    equal bit for bit, the same summary, and the worst point's run at the worst parameters."""
+    deck = PROBLEMS / "pump_rod.yaml"
+    grid = ["eta=0:0.4:4", "w0=0.5e-3:1.5e-3:2"]
+    outputs = ["stress max <= 60 MPa"]
+    study = beamrotor.study(deck, sweep=grid, outputs=outputs, threads=2)
+    command = [os.environ["BEAMROTOR_EXE"], "study", str(deck), "--out", str(tmp_path / "cli")]
+    for axis in grid:
+        command += ["--sweep", axis]
+    command += ["--output", outputs[0]]
+    subprocess.run(command, check=True, capture_output=True)
+    expected = read_study_csv(tmp_path / "cli" / "study.csv")
+    assert list(study.table) == list(expected)
+    # Rows in point order (threads may finish points in another order).
+    ours_order = np.argsort(study.table["point"], kind="stable")
+    theirs_order = np.argsort(np.array(expected["point"]), kind="stable")
+    for name, cells in expected.items():
+        ours = study.table[name]
+        cells = [cells[i] for i in theirs_order]
+        if isinstance(ours, np.ndarray):
+            ours = ours[ours_order]
+            theirs = np.array(cells, dtype=float)
+            assert ours.shape == theirs.shape, name
+            same = (ours == theirs) | (np.isnan(ours) & np.isnan(theirs))
+            assert same.all(), name
+        else:
+            assert [ours[i] for i in ours_order] == cells, name
+    assert len(study.table["point"]) == 15
+    summary = json.loads((tmp_path / "cli" / "summary.json").read_text())
+    assert study.summary["points"] == summary["points"] == 15
+    assert study.summary["worst_point"]["parameters"] == summary["worst_point"]["parameters"]
+    worst = study.worst
+    for name, value in summary["worst_point"]["parameters"].items():
+        assert worst.parameters[name] == value
+    written = json.loads((tmp_path / "cli" / "worst" / "results.json").read_text())
+    assert worst.results["analyses"][0]["reactions"] == written["analyses"][0]["reactions"]
+    assert study.directory is None

@@ -47,6 +47,14 @@ std::string number(double x) {
   return buffer;
 }
 
+std::string labelNumber(double x, double scale) {
+  constexpr double kRoundOff = 1e-9;
+  if (x == 0 || std::abs(x) <= kRoundOff * std::abs(scale)) return "0";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", x);
+  return text;
+}
+
 std::string logAxis(const std::string& axis, double low, double high) {
   if (!(low > 0) || !(high >= low) || !std::isfinite(high))
     return "  set logscale " + axis + "\n  set format " + axis + " '%g'\n";

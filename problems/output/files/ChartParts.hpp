@@ -22,6 +22,11 @@ std::string colourValue(std::size_t i);
 /// x with 6 significant digits, as gnuplot reads it.
 std::string number(double x);
 
+/// x as a label or title shows a value to a reader: 4 significant digits, and "0" for a zero
+/// of either sign or a value within round-off of `scale` (1e-9 of it: a resultant that is zero
+/// but for the solve's round-off, not 2.274e-16).
+std::string labelNumber(double x, double scale = 0);
+
 /// A caption of one or more lines (separated by '\n') as a gnuplot string expression.
 std::string captionText(const std::string& caption);
 

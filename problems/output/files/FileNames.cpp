@@ -60,4 +60,10 @@ std::string sweepValueDirectory(std::size_t index, std::size_t count) {
   return "value_" + std::string(std::max<int>(0, width - int(digits.size())), '0') + digits;
 }
 
+std::string sweepFieldsCsv(const std::string& stem, std::size_t index, std::size_t count) {
+  std::string file = stem + "_fields_";
+  file += sweepValueDirectory(index, count);
+  return file + ".csv";
+}
+
 }  // namespace beamrotor

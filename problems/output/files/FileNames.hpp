@@ -86,5 +86,8 @@ inline std::string historyChart(const std::string& stem) {
 std::string frameVtu(const std::string& stem, int number);
 /// Sub-directory of a sweep for value number `index` of `count`: value_000, value_001, ...
 std::string sweepValueDirectory(std::size_t index, std::size_t count);
+/// A short sweep without per-value directories: value `index`'s fields along the line, which
+/// its overlaid diagrams read: static_fields_value_000.csv, ...
+std::string sweepFieldsCsv(const std::string& stem, std::size_t index, std::size_t count);
 
 }  // namespace beamrotor

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "problems/deck/parse/PlainText.hpp"
+#include "problems/output/files/ChartBatch.hpp"
 #include "problems/output/files/FileWriting.hpp"
 
 extern char** environ;
@@ -80,10 +81,11 @@ std::string spaceLeft(const fs::path& dir) {
   return "; the device has " + std::to_string(space.available / 1024) + " kB free";
 }
 
-/// Runs `gnuplot ./SCRIPT` in dir, stdin from /dev/null, stdout and stderr into dir/LOG;
-/// returns its exit status (-1 when it could not be started or did not exit normally).
-int runGnuplot(const fs::path& gnuplot, const fs::path& dir, const std::string& script,
-               const std::string& log) {
+/// Starts `gnuplot ./A.gp ./B.gp ...` in dir (gnuplot draws the scripts one after another and
+/// stops at the first that fails), stdin from /dev/null, stdout and stderr into dir/LOG;
+/// returns the child's id, or -1 when it could not be started.
+pid_t startGnuplot(const fs::path& gnuplot, const fs::path& dir,
+                   const std::vector<std::string>& scripts, const std::string& log) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
@@ -92,17 +94,86 @@ int runGnuplot(const fs::path& gnuplot, const fs::path& dir, const std::string& 
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   const std::string program = fs::absolute(gnuplot).string();
   // "./" keeps a script name from reading as an option (a name may start with '-').
-  const std::string argument = "./" + script;
-  char* const argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(argument.c_str()),
-                        nullptr};
+  std::vector<std::string> arguments;
+  for (const std::string& script : scripts) arguments.push_back("./" + script);
+  std::vector<char*> argv{const_cast<char*>(program.c_str())};
+  for (std::string& argument : arguments) argv.push_back(argument.data());
+  argv.push_back(nullptr);
   pid_t child = 0;
-  const int spawned = posix_spawn(&child, program.c_str(), &actions, nullptr, argv, environ);
+  const int spawned = posix_spawn(&child, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
+  return spawned == 0 ? child : -1;
+}
+
+/// The exit status of a started gnuplot (-1 when it was not started or did not exit normally).
+int exitStatus(pid_t child) {
+  if (child < 0) return -1;
   int status = 0;
   while (waitpid(child, &status, 0) < 0)
     if (errno != EINTR) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The images a chart named `name` becomes in `format`.
+std::vector<fs::path> imagesOf(const fs::path& dir, const std::string& name, ChartFormat format) {
+  std::vector<fs::path> images;
+  if (format == ChartFormat::svg || format == ChartFormat::both)
+    images.push_back(dir / (name + ".svg"));
+  if (format == ChartFormat::png || format == ChartFormat::both)
+    images.push_back(dir / (name + ".png"));
+  return images;
+}
+
+/// The worst state among a chart's images: absent when any is missing, else incomplete when
+/// any is cut short.
+ImageState chartState(const std::vector<fs::path>& images) {
+  ImageState worst = ImageState::complete;
+  for (const fs::path& image : images) {
+    const ImageState state = imageState(image);
+    if (state == ImageState::absent) return state;
+    if (state == ImageState::incomplete) worst = state;
+  }
+  return worst;
+}
+
+/// What drawing a chart costs, roughly, in bytes of data: gnuplot's start and the image's
+/// drawing and encoding, about what reading 200 kB costs, plus the data files its script reads
+/// (each once: a panel that reads a file again reads only its own rows, `every`).
+std::uintmax_t drawingCost(const fs::path& dir, const std::string& body) {
+  constexpr std::uintmax_t kEachChart = 200000;
+  std::uintmax_t cost = kEachChart + body.size();
+  std::vector<std::string> read;
+  for (std::size_t at = body.find("'./"); at != std::string::npos; at = body.find("'./", at + 1)) {
+    const std::size_t end = body.find('\'', at + 3);
+    if (end == std::string::npos) break;
+    const std::string file = body.substr(at + 3, end - at - 3);
+    if (std::find(read.begin(), read.end(), file) != read.end()) continue;
+    read.push_back(file);
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(dir / file, ec);
+    if (!ec) cost += size;
+  }
+  return cost;
+}
+
+/// The charts (indices) split into at most `parts` shares of about equal cost: the dearest
+/// chart first into the cheapest share. Each share keeps the charts' own order.
+std::vector<std::vector<std::size_t>> shares(const std::vector<std::uintmax_t>& costs, int parts) {
+  std::vector<std::size_t> order(costs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
+  const std::size_t count = std::min<std::size_t>(std::size_t(std::max(parts, 1)), costs.size());
+  std::vector<std::vector<std::size_t>> split(count);
+  std::vector<std::uintmax_t> load(count, 0);
+  for (std::size_t chart : order) {
+    const std::size_t cheapest =
+        std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
+    split[cheapest].push_back(chart);
+    load[cheapest] += costs[chart];
+  }
+  for (auto& share : split) std::sort(share.begin(), share.end());
+  return split;
 }
 
 /// Text for a comment line: plain, and not ending in a backslash (which would continue the
@@ -113,14 +184,29 @@ std::string gnuplotComment(const std::string& text) {
   return plain;
 }
 
-/// The script: the chart body drawn once per output format.
-std::string script(const ChartScript& chart) {
+/// gnuplot's list of the formats to draw.
+std::string formatList(ChartFormat format) {
+  switch (format) {
+    case ChartFormat::svg:
+      return "'svg'";
+    case ChartFormat::both:
+      return "'svg png'";
+    default:
+      return "'png'";
+  }
+}
+
+/// The script: the chart body drawn once per output format. It starts from gnuplot's defaults
+/// (`reset session`, the encoding too), so that one gnuplot drawing several scripts in turn
+/// draws each as a gnuplot of its own would.
+std::string script(const ChartScript& chart, ChartFormat format) {
   const std::string size = std::to_string(chart.width) + "," + std::to_string(chart.height);
   std::ostringstream s;
   s << "# " << gnuplotComment(chart.purpose) << "\n"
     << "# Written by beamrotor. Redraw it from this directory with: gnuplot "
     << gnuplotComment(chart.name) << ".gp\n"
-    << "do for [format in 'svg png'] {\n"
+    << "reset session\n"
+    << "do for [format in " << formatList(format) << "] {\n"
     << "  if (format eq 'svg') {\n"
     << "    set terminal svg size " << size
     << " dynamic enhanced font 'Sans,12' background rgb 'white'\n"
@@ -134,11 +220,18 @@ std::string script(const ChartScript& chart) {
     << "  }\n"
     << "  set output " << gnuplotFile(chart.name) << ".'.'.format\n"
     << "  reset\n"
+    << "  set encoding default\n"
     << "  set datafile separator ','\n"
     << chart.body << "  set output\n"
     << "}\n";
   return s.str();
 }
+
+/// One gnuplot process's share of the charts, in drawing order.
+struct GnuplotRun {
+  std::vector<std::size_t> charts;
+  pid_t child = -1;
+};
 
 }  // namespace
 
@@ -155,36 +248,81 @@ std::optional<fs::path> findGnuplot() {
 }
 
 bool drawChart(const fs::path& dir, const ChartScript& chart) {
+  if (ChartBatch* batch = ChartBatch::active()) return batch->add(dir, chart);
+  return drawCharts(dir, {chart}, ChartFormat::both, 1) == 1;
+}
+
+int drawCharts(const fs::path& dir, const std::vector<ChartScript>& charts, ChartFormat format,
+               int processes) {
+  if (format == ChartFormat::none || charts.empty()) return 0;
+  std::vector<std::string> names;
+  for (const ChartScript& chart : charts) names.push_back(confinedFileName(chart.name));
   static std::atomic<bool> warnedMissing{false};
   const auto gnuplot = findGnuplot();
   if (!gnuplot) {
     if (!warnedMissing.exchange(true))
       warn("gnuplot not found (install gnuplot or set BEAMROTOR_GNUPLOT); charts skipped");
-    return false;
+    return 0;
   }
-  const std::string name = confinedFileName(chart.name);
-  const std::string scriptName = name + ".gp", logName = name + ".log";
-  // The script is a file of ours like any other: failing to write it fails the run.
-  writeFile(dir / scriptName, [&](std::ostream& out) { out << script(chart); });
-  const int status = runGnuplot(*gnuplot, dir, scriptName, logName);
-  const fs::path images[] = {dir / (name + ".svg"), dir / (name + ".png")};
-  if (status == 0) {
-    // gnuplot succeeded: an image cut short means the write failed, as for any other file.
-    for (const fs::path& image : images)
-      if (imageState(image) == ImageState::incomplete)
-        throw std::runtime_error(
-            writeFailure(image, 0, "gnuplot's output is incomplete" + spaceLeft(dir)));
-    if (imageState(images[0]) == ImageState::complete &&
-        imageState(images[1]) == ImageState::complete) {
-      std::error_code ignored;
-      fs::remove(dir / logName, ignored);
-      return true;
+  // The scripts are files of ours like any other: failing to write one fails the run. An
+  // image left from an earlier drawing would pass for this one's.
+  std::vector<std::uintmax_t> costs;
+  for (std::size_t i = 0; i < charts.size(); ++i) {
+    writeFile(dir / (names[i] + ".gp"),
+              [&](std::ostream& out) { out << script(charts[i], format); });
+    std::error_code ignored;
+    for (const fs::path& image : imagesOf(dir, names[i], ChartFormat::both))
+      fs::remove(image, ignored);
+    costs.push_back(drawingCost(dir, charts[i].body));
+  }
+  std::vector<GnuplotRun> runs;
+  for (std::vector<std::size_t>& share : shares(costs, processes)) runs.push_back({share, -1});
+  int drawn = 0;
+  while (!runs.empty()) {
+    for (GnuplotRun& run : runs) {
+      std::vector<std::string> scripts;
+      for (std::size_t chart : run.charts) scripts.push_back(names[chart] + ".gp");
+      run.child = startGnuplot(*gnuplot, dir, scripts, names[run.charts.front()] + ".log");
     }
+    std::vector<GnuplotRun> again;  // the charts after one gnuplot failed on
+    for (GnuplotRun& run : runs) {
+      const int status = exitStatus(run.child);
+      const std::string log = names[run.charts.front()] + ".log";
+      bool stopped = false, logKept = false;
+      for (std::size_t k = 0; k < run.charts.size() && !stopped; ++k) {
+        const std::size_t chart = run.charts[k];
+        const ImageState state = chartState(imagesOf(dir, names[chart], format));
+        if (state == ImageState::complete) {
+          ++drawn;
+          continue;
+        }
+        if (state == ImageState::incomplete && status == 0) {
+          // gnuplot succeeded: an image cut short means the write failed, as for any file.
+          for (const fs::path& image : imagesOf(dir, names[chart], format))
+            if (imageState(image) == ImageState::incomplete)
+              throw std::runtime_error(
+                  writeFailure(image, 0, "gnuplot's output is incomplete" + spaceLeft(dir)));
+        }
+        const std::string own = names[chart] + ".log";
+        std::error_code ignored;
+        if (own == log)
+          logKept = true;
+        else
+          fs::copy_file(dir / log, dir / own, fs::copy_options::overwrite_existing, ignored);
+        warn("gnuplot could not draw " + names[chart] + " (" +
+             (run.child < 0 ? std::string("it could not be started") : lastMessageLine(dir / own)) +
+             "); see " + own);
+        // gnuplot stops at the script that fails: the rest of its share is drawn anew.
+        stopped = status != 0;
+        if (stopped && k + 1 < run.charts.size())
+          again.push_back({{run.charts.begin() + std::ptrdiff_t(k) + 1, run.charts.end()}, -1});
+      }
+      std::error_code ignored;
+      if (!logKept) fs::remove(dir / log, ignored);
+    }
+    runs = std::move(again);
   }
-  warn("gnuplot could not draw " + name + " (" +
-       (status == -1 ? std::string("it could not be started") : lastMessageLine(dir / logName)) +
-       "); see " + logName);
-  return false;
+  return drawn;
 }
 
 std::string gnuplotText(const std::string& text) {

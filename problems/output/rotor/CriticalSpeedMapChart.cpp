@@ -53,14 +53,20 @@ ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::strin
          << map.column(mapColumn(j)) << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 "
          << colour(j - 1) << " title " << gnuplotText("critical speed " + std::to_string(j));
   // Bearings: stiffness across, speed up, so a crossing with a map line is a critical speed.
-  // Even bearings wide and black, odd ones narrow and brown on top: equal bearings stay visible.
+  // Each bearing its own dark colour, kxx solid and kyy dashed and half as wide, drawn over it;
+  // even bearings wide, odd ones narrower on top: equal bearings, and a bearing whose kyy equals
+  // its kxx, stay visible one within the other. Five bearings, two directions: ten styles.
+  static const char* const kBearingColours[] = {"black", "#8c564b", "#555555", "#6b6b00",
+                                                "#004c4c"};
   const int index = bearings.column("bearing_index"), speed = bearings.column("speed_rpm");
   for (std::size_t b = 0; b < bearingNames.size(); ++b)
     for (const char* d : {"kxx", "kyy"})
       body << ", \\\n       " << gnuplotFile(bearingsFile) << " skip 1 using ($" << index
            << " == " << b + 1 << " ? $" << bearings.column(d) << " : NaN):" << speed
-           << " with lines linewidth " << (b % 2 ? "2" : "5") << " dashtype " << (d[1] == 'x' ? 1 : 4)
-           << " linecolor rgb '" << (b % 2 ? "#8c564b" : "black") << "' title "
+           << " with lines linewidth "
+           << (d[1] == 'x' ? (b % 2 ? "3" : "5") : (b % 2 ? "1.5" : "2.5"))
+           << " dashtype " << (d[1] == 'x' ? 1 : 2) << " linecolor rgb '" << kBearingColours[b % 5]
+           << "' title "
            << gnuplotText("bearing " + bearingNames[b] + " " + d);
   if (crossingData.table.rowCount() > 0)
     body << ", \\\n       " << gnuplotFile(crossingData.file) << " skip 1 using "

@@ -151,13 +151,31 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
 ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
                                    const CsvTable& response, const std::string& csvFile,
                                    const std::vector<std::string>& points,
-                                   const std::optional<OperatingBand>& band) {
+                                   const std::optional<OperatingBand>& band,
+                                   std::optional<double> unstableFromRpm) {
   const int x = response.column("speed_rpm");
-  // The amplitude axis in whole decades of the positive amplitudes (um).
+  // The amplitude axis in whole decades of the positive amplitudes (um), at most
+  // kAmplitudeDecades below the largest: the response at rest is no reader's question.
   PositiveRange amplitudes;
   for (const std::string& p : points)
     for (double a : response.numbers(p + "_amplitude")) amplitudes.include(a * 1e6);
-  const BandCommands shading = operatingBandCommands(band);
+  amplitudes.low = std::max(amplitudes.low, amplitudes.high * std::pow(10.0, -kAmplitudeDecades));
+  // A marker every few rows (about 15 along the curve) and each curve thinner than the last.
+  const std::size_t every = std::max<std::size_t>(1, response.rowCount() / 15);
+  const auto width_ = [](std::size_t k) { return number(std::max(1.0, 3.5 - 1.0 * double(k))); };
+  BandCommands shading = operatingBandCommands(band);
+  if (unstableFromRpm) {
+    // Beyond the onset no steady response exists: shaded in red and named in the key.
+    std::string name = "unstable above ";
+    name += labelNumber(*unstableFromRpm);
+    name += " rpm";
+    const std::string fill = " fillstyle transparent solid 0.15 noborder fillcolor rgb '#c0392b'";
+    shading.setup += "  set object 90 rectangle from first ";
+    shading.setup += number(*unstableFromRpm);
+    shading.setup += ", graph 0 to graph 1, graph 1 back" + fill + "\n";
+    shading.keyEntries += ", \\\n       NaN with boxes" + fill + " title " + gnuplotText(name);
+    shading.titles.push_back(name);
+  }
   std::vector<std::string> titles = points;
   titles.insert(titles.end(), shading.titles.begin(), shading.titles.end());
   const int keyMargin = keyWidth(titles);
@@ -174,8 +192,8 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
         s << "($" << column << " > 0 ? $" << column << "*" << number(scale) << " : NaN)";
       else
         s << column;
-      s << " with linespoints linewidth 2 pointtype 7 pointsize 0.5 " << lineStyle(k)
-        << " title " << gnuplotText(points[k]);
+      s << " with linespoints linewidth " << width_(k) << " pointtype 7 pointsize 0.6 "
+        << "pointinterval " << every << " " << lineStyle(k) << " title " << gnuplotText(points[k]);
     }
     return s.str() + shading.keyEntries + "\n";
   };

@@ -26,10 +26,18 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
 /// Two panels against speed (rpm) from an unbalanceTable in csvFile: the orbit semi-major
 /// axis (um, log scale) and the phase of uy (deg, unwrapped: continuous through the criticals,
 /// a lag negative), one curve per response point; the operating band shaded when given.
+/// Above `unstableFromRpm` (the onset of instability) the speeds are shaded and marked
+/// "unstable": a steady response there is not what the rotor does. The amplitude axis spans at
+/// most kAmplitudeDecades below the largest amplitude; each curve is a line with a marker every
+/// few rows, each drawn thinner than the one before, so that equal curves show one within the
+/// other.
 ChartScript unbalanceResponseChart(const std::string& caption, const std::string& chartName,
                                    const CsvTable& response, const std::string& csvFile,
                                    const std::vector<std::string>& points,
-                                   const std::optional<OperatingBand>& band = std::nullopt);
+                                   const std::optional<OperatingBand>& band = std::nullopt,
+                                   std::optional<double> unstableFromRpm = std::nullopt);
+/// Decades of amplitude the unbalance chart shows below its largest.
+inline constexpr double kAmplitudeDecades = 4;
 
 /// Two panels against frequency (Hz) from a frequencyResponseTable in csvFile: the receptance
 /// magnitude (log scale) and its phase (deg, unwrapped as on the unbalance chart); `what` names

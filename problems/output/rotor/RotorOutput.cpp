@@ -113,7 +113,8 @@ void writeRotorFiles(const RotorFiles& f, const RotorModesResult& r) {
     entries.push_back({double(number), modeVtu(stem, number)});
   }
   writePvd(f.dir / collectionPvd(stem), entries);
-  const CsvTable orbits = modeOrbitsTable(orbitsCsv(stem), r, f.model);
+  const CsvTable orbits =
+      f.tables.orbits ? *f.tables.orbits : modeOrbitsTable(orbitsCsv(stem), r, f.model);
   orbits.write(f.dir / orbitsCsv(stem));
   if (f.charts && !r.modes.empty())
     drawChart(f.dir, modeOrbitsChart(fitted(f.caption), orbitsChart(stem), r, f.model, orbits,
@@ -156,8 +157,12 @@ void writeRotorFiles(const RotorFiles& f, const UnbalanceOutcome& r) {
   std::optional<OperatingBand> band;
   if (r.operating) band = bandOfPeaks(*r.operating, r.peaks);
   if (f.charts && p.unbalance->rowCount() > 0)
-    drawChart(f.dir, unbalanceResponseChart(fitted(f.caption), unbalanceChart(stem), *p.unbalance,
-                                            unbalanceCsv(stem), r.responsePoints, band));
+    drawChart(f.dir, unbalanceResponseChart(
+                         fitted(f.caption), unbalanceChart(stem), *p.unbalance,
+                         unbalanceCsv(stem), r.responsePoints, band,
+                         r.stability && r.stability->onset
+                             ? std::optional<double>(r.stability->onset->rpm)
+                             : std::nullopt));
 }
 
 void writeRotorFiles(const RotorFiles&, const RigidBodyOutcome&) {}  // results.json holds it

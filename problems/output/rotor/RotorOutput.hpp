@@ -25,6 +25,8 @@ struct PreparedRotor {
   std::optional<CsvTable> mapCrossings;  ///< critical-speed-map: <stem>_map_crossings.csv
   std::optional<CsvTable> bearingLoads;  ///< bearing-loads: <stem>_bearing_loads.csv
   std::optional<CsvTable> sag;           ///< bearing-loads: <stem>_sag.csv
+  /// rotor: <stem>_orbits.csv (modeOrbitsTable; it needs the model, so prepareRun adds it).
+  std::optional<CsvTable> orbits;
 };
 
 /// Builds the tables of a solved rotor analysis, those of its kind (a rigid body has none:

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -11,20 +12,50 @@
 
 namespace beamrotor {
 
+namespace {
+
+/// The colours of decrements from least to most over the part of this scale the data reach:
+/// dark red (growing), orange at the stability limit 0, gold at 0.1 (API 684's least
+/// acceptable decrement), green-yellow at 0.5, green at 1 and dark green above, so that lines
+/// of little and of much damping differ in colour wherever the data lie.
+std::string stabilityPalette(double least, double most) {
+  const std::vector<std::pair<double, const char*>> stops{
+      {0, "orange"}, {0.1, "gold"}, {0.5, "greenyellow"}, {1, "forest-green"}};
+  // The ends take the colour of the stop just beyond them, so the colours stay in order.
+  const char* low = "dark-red";
+  for (const auto& [at, colour] : stops)
+    if (least >= at) low = colour;
+  const char* high = "dark-green";
+  for (auto it = stops.rbegin(); it != stops.rend(); ++it)
+    if (most <= it->first) high = it->second;
+  std::string palette = number(least) + " '" + low + "'";
+  for (const auto& [at, colour] : stops)
+    if (at > least && at < most) palette += ", " + number(at) + " '" + colour + "'";
+  return palette + ", " + number(most) + " '" + high + "'";
+}
+
+}  // namespace
+
 ChartScript stabilityDiagram(const std::string& caption, const std::string& chartName,
                              const CsvTable& campbell, const std::string& csvFile,
                              std::optional<double> onsetRpm,
                              const std::optional<OperatingBand>& band) {
   const int x = campbell.column("speed_rpm");
   const int lines = campbellLineCount(campbell);
-  // The decrement axis: the finite values, with zero always in view.
-  double low = 0, high = 0.1;
+  // The colour scale spans the finite decrements themselves, so that lines of different
+  // damping differ in colour; the decrement axis spans them too, with zero (the stability
+  // limit) always in view. Nothing finite is clipped.
+  double least = std::numeric_limits<double>::infinity(), most = -least;
   for (int l = 1; l <= lines; ++l)
     for (double d : campbell.numbers(campbellColumn(l, "log_decrement")))
-      if (std::isfinite(d)) low = std::min(low, d), high = std::max(high, d);
-  high = std::min(high, 5.0);  // above 5 a mode is overdamped for any practical purpose
-  const double pad = 0.05 * (high - low);
-  low -= pad, high += pad;
+      if (std::isfinite(d)) least = std::min(least, d), most = std::max(most, d);
+  if (!(least <= most)) least = 0, most = 1;  // no finite decrement at all
+  if (most - least < 1e-9 * std::max(1.0, std::abs(most))) {
+    const double half = std::max(0.05 * std::abs(most), 0.05);
+    least -= half, most += half;
+  }
+  const double pad = 0.05 * (std::max(most, 0.0) - std::min(least, 0.0));
+  const double low = std::min(least, 0.0) - pad, high = std::max(most, 0.0) + pad;
 
   std::vector<std::string> titles;
   for (int l = 1; l <= lines; ++l) titles.push_back("line " + std::to_string(l));
@@ -33,13 +64,13 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
   keyTitles.push_back("stability limit");
   const int keyMargin = std::max(keyWidth(keyTitles), 110);
   const int width = 800 + keyMargin, height = 860;
-  // Decrements above the axis are drawn at its top; an empty cell (a real eigenvalue, whose
-  // decrement is infinite) at the top when it decays, at the bottom when it grows.
+  // An empty cell (a real eigenvalue, whose decrement is infinite) is drawn at the axis' top
+  // when it decays, at its bottom when it grows.
   const auto clipped = [&](int l) {
     const std::string d = std::to_string(campbell.column(campbellColumn(l, "log_decrement")));
     const std::string z = std::to_string(campbell.column(campbellColumn(l, "damping_ratio")));
-    return "(valid(" + d + ") ? ($" + d + " > " + number(high) + " ? " + number(high) + " : $" +
-           d + ") : ($" + z + " > 0 ? " + number(high) + " : " + number(low) + "))";
+    return "(valid(" + d + ") ? $" + d + " : ($" + z + " > 0 ? " + number(high) + " : " +
+           number(low) + "))";
   };
   std::ostringstream body;
   body << "  set encoding utf8\n"
@@ -54,9 +85,8 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
          << "'red'\n";
   // 1. The Campbell diagram coloured by log decrement: dark red (most negative) through orange
   //    (zero) to green (the best damped).
-  body << "  set cbrange [" << number(low) << ":" << number(high) << "]\n"
-       << "  set palette defined (" << number(low) << " 'dark-red', 0 'orange', "
-       << number(std::max(high, 1e-3)) << " 'forest-green')\n"
+  body << "  set cbrange [" << number(least) << ":" << number(most) << "]\n"
+       << "  set palette defined (" << stabilityPalette(least, most) << ")\n"
        << "  set cblabel 'log decrement'\n"
        << "  set ylabel 'whirl frequency [Hz]'\n  set yrange [0:*]\n" << shading.setup
        << "  plot ";

@@ -133,6 +133,7 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
       {"normal stress [MPa]", {"stress_top", "'σ top fibre'"}, Drawn{"stress_bottom", "'σ bottom fibre'"},
        1e-6, true},
       {"shear stress [MPa]", {"shear_y", "'τ of V_y'"}, Drawn{"shear_z", "'τ of V_z'"}, 1e-6, true},
+      {"shear force [kN]", {"Vy", "'V_y'"}, Drawn{"Vz", "'V_z'"}, 1e-3, true},
   };
   std::vector<Panel> panels;
   for (Diagram d : shown) panels.push_back(every.at(std::size_t(d)));
@@ -182,7 +183,8 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
          << plotCommand(curvesOf(panels[p]), panels[p].scale, panels[p].filled);
   }
   body << "  unset multiplot\n";
-  return {chartName, "Deflection, rotation, bending moment, normal and shear stress along the line",
+  return {chartName,
+          "Deflection, rotation, bending moment, shear force, normal and shear stress along the line",
           width, height, body.str()};
 }
 
@@ -193,6 +195,7 @@ std::string_view diagramName(Diagram d) {
     case Diagram::moment: return "moment";
     case Diagram::stress: return "stress";
     case Diagram::shear: return "shear";
+    case Diagram::force: return "force";
   }
   return "?";
 }

@@ -31,9 +31,11 @@ std::vector<ChartMarker> commonPointMarkers(const std::vector<const Model*>& mod
 
 /// The diagrams along a line, top to bottom as staticDiagrams stacks them; each named by the
 /// word `beamrotor overlay --quantity` takes.
-enum class Diagram { deflection, rotation, moment, stress, shear };
+/// `force` is the shear force, `shear` the shear stress.
+enum class Diagram { deflection, rotation, moment, stress, shear, force };
 inline const std::vector<Diagram> kAllDiagrams{Diagram::deflection, Diagram::rotation,
-                                               Diagram::moment, Diagram::stress, Diagram::shear};
+                                               Diagram::moment,     Diagram::force,
+                                               Diagram::stress,     Diagram::shear};
 std::string_view diagramName(Diagram d);
 
 /// One static solution on the diagrams: its staticFieldsTable, the CSV file it was written
@@ -45,8 +47,8 @@ struct FieldSeries {
 };
 
 /// Stacked diagrams along the line (those in `shown`): deflection uy (mm), rotation rz (mrad),
-/// bending moment Mz (kN m), normal stress at the top and bottom fibre and shear stress of Vy,
-/// signed (MPa); uz, ry, My and the shear of Vz are added when they are not zero everywhere
+/// bending moment Mz (kN m), shear force Vy (kN), normal stress at the top and bottom fibre and shear stress of Vy,
+/// signed (MPa); uz, ry, My, Vz and the shear of Vz are added when they are not zero everywhere
 /// (3D models). Several series (the values of a short
 /// sweep) are overlaid, one line each, like the published figures of the pump rod.
 ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,

@@ -12,6 +12,14 @@ namespace beamrotor {
 
 namespace {
 
+/// The largest magnitude of a resultant's envelope along the member (N or N m).
+double largestOf(const CsvTable& table, const std::string& component) {
+  double m = 0;
+  for (const char* side : {"_max", "_min"})
+    for (double v : table.numbers(component + side)) m = std::max(m, std::abs(v));
+  return m;
+}
+
 /// One resultant's panel: its columns and how it is labelled.
 struct EnvelopePanel {
   std::string component;  ///< "N", ..., "Mz"
@@ -25,12 +33,7 @@ std::vector<EnvelopePanel> panelsOf(const CsvTable& table) {
   const std::vector<std::pair<std::string, std::string>> all{
       {"N", "axial force N [kN]"},  {"Vy", "shear force Vy [kN]"}, {"Vz", "shear force Vz [kN]"},
       {"T", "torque T [kN m]"},     {"My", "moment My [kN m]"},    {"Mz", "moment Mz [kN m]"}};
-  const auto largest = [&](const std::string& c) {
-    double m = 0;
-    for (const char* side : {"_max", "_min"})
-      for (double v : table.numbers(c + side)) m = std::max(m, std::abs(v));
-    return m;
-  };
+  const auto largest = [&](const std::string& c) { return largestOf(table, c); };
   const double forces = std::max({largest("N"), largest("Vy"), largest("Vz")});
   const double moments = std::max({largest("T"), largest("My"), largest("Mz")});
   std::vector<EnvelopePanel> out;
@@ -45,7 +48,8 @@ std::vector<EnvelopePanel> panelsOf(const CsvTable& table) {
 }
 
 /// A label at the largest (side "_max") or smallest ("_min") value of the envelope, naming the
-/// combination that gives it and the value in kN or kN m (`unit`).
+/// combination that gives it and the value in kN or kN m (`unit`), 0 where it is round-off of
+/// the resultant's largest value along the member.
 std::string extremeLabel(const CsvTable& table, const std::string& component,
                          const std::string& side, const std::string& unit) {
   const std::vector<double> values = table.numbers(component + side);
@@ -57,8 +61,7 @@ std::string extremeLabel(const CsvTable& table, const std::string& component,
   const std::string name = std::get<std::string>(governing);
   // Written towards the middle of the member, so that a label at an end stays inside the plot.
   const bool rightHalf = s[row] > 0.5 * (s.front() + s.back());
-  char value[32];
-  std::snprintf(value, sizeof value, "%.4g", *it / 1e3);
+  const std::string value = labelNumber(*it / 1e3, largestOf(table, component) / 1e3);
   std::ostringstream label;
   label << "  set label " << gnuplotText(name + ": " + value + " " + unit) << " at first "
         << number(s[row]) << ", first " << number(*it / 1e3) << (rightHalf ? " right" : " left")

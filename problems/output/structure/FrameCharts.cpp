@@ -74,10 +74,11 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   const double perMoment = largestM > 0 ? kDiagramShare * size / largestM : 0;
 
   // 2. The panels' common set-up: equal scales on every axis.
-  const int width = planar ? 1200 : 1300, height = planar ? 560 : 640;
+  const int width = planar ? 1200 : 1400, height = planar ? 560 : 640;
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << panelLayout(1, 2, caption, width, height) << "  unset key\n"
+       // A 3d view's z axis and its label stand out right of its panel: room for them.
+       << panelLayout(1, 2, caption, width, height, planar ? 30 : 80) << "  unset key\n"
        << "  set grid\n";
   // Drawn axes: a planar frame's x and y; a 3d frame's x, z, y, so that global y (up, the
   // direction of self-weight) is the chart's vertical.

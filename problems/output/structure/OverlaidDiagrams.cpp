@@ -1,5 +1,6 @@
 #include "problems/output/structure/OverlaidDiagrams.hpp"
 
+#include "problems/output/files/ChartParts.hpp"
 #include "problems/output/structure/Charts.hpp"
 
 namespace beamrotor {
@@ -16,7 +17,7 @@ void drawOverlaidDiagrams(const std::filesystem::path& dir, const std::string& c
   for (const RunResult& run : sweep.runs) models.push_back(run.model.get());
   for (std::size_t i = 0; i < fields.size(); ++i)
     series.push_back(
-        {fields[i], csvFiles[i], sweep.parameter + " = " + exactDecimal(sweep.values[i])});
+        {fields[i], csvFiles[i], sweep.parameter + " = " + labelNumber(sweep.values[i])});
   drawChart(dir, staticDiagrams(caption, chartName, series, commonPointMarkers(models)));
 }
 

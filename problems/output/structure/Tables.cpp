@@ -77,17 +77,37 @@ CsvTable modeShapesTable(const std::string& title, const Model& model, const Mod
     rotations.push_back(isRotation(charted) ? std::optional<Dof>(charted) : std::nullopt);
     if (rotations.back()) columns.push_back({modeShapeColumn(int(m) + 1, charted), ""});
   }
-  CsvTable table(title, columns);
+  // The nodes hold the largest translation 1 (displayModeShape), but an element's cubic may
+  // bulge past its nodes (1.02 on a coarse mesh): such a mode's samples are scaled so that the
+  // largest drawn is 1 (its translations together, its charted rotation apart). A mode whose
+  // samples stay within 1 is left as it is (a torsion mode's round-off translations too).
+  std::vector<std::vector<double>> rows;
   for (const LinePlace& p : placesAlongLine(model, kIntervalsPerElement)) {
     const auto& line = static_cast<const LineElement&>(*model.elements()[p.element]);
-    std::vector<CsvCell> row{p.x};
+    std::vector<double> row{p.x};
     for (std::size_t m = 0; m < shapes.size(); ++m) {
       const auto u = displacementAlong(line, shapes[m], p.s, SpanLoad::none);
       row.insert(row.end(), {u[0], u[1], u[2]});
       if (rotations[m]) row.push_back(u[dofIndex(*rotations[m])]);
     }
-    table.addRow(std::move(row));
+    rows.push_back(std::move(row));
   }
+  std::size_t first = 1;  // the mode's first column
+  for (std::size_t m = 0; m < shapes.size(); ++m) {
+    const std::size_t width = rotations[m] ? 4 : 3;
+    for (const auto& [from, to] : {std::pair<std::size_t, std::size_t>{first, first + 3},
+                                   {first + 3, first + width}}) {
+      double largest = 0;
+      for (const auto& row : rows)
+        for (std::size_t c = from; c < to; ++c) largest = std::max(largest, std::abs(row[c]));
+      if (largest > 1)
+        for (auto& row : rows)
+          for (std::size_t c = from; c < to; ++c) row[c] /= largest;
+    }
+    first += width;
+  }
+  CsvTable table(title, columns);
+  for (const auto& row : rows) table.addRow(std::vector<CsvCell>(row.begin(), row.end()));
   return table;
 }
 

@@ -96,7 +96,8 @@ TEST_SUITE("charts read right") {
       CAPTURE(c.deck);
       CAPTURE(c.options.size());
       const fs::path out = scratchDir("chart-reading-" + c.deck) / "out";
-      std::vector<std::string> arguments{"solve", "problems/" + c.deck, "--out", out.string()};
+      std::vector<std::string> arguments{"solve", "problems/" + c.deck, "--out", out.string(),
+                                         "--charts", "both"};
       arguments.insert(arguments.end(), c.options.begin(), c.options.end());
       const ProcessResult solved = runBeamrotor(arguments);
       REQUIRE(solved.exitCode == 0);

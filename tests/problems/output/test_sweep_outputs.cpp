@@ -36,7 +36,7 @@ TEST_SUITE("output") {
     const SweepResult sweep = tipForceSweep(forces);
     ScratchDir scratch;
     const fs::path out = scratch / "sweep";
-    writeSweepOutputs(sweep, out);
+    writeSweepOutputs(sweep, out, {ChartFormat::both, /*pointFiles=*/true});
 
     const Cantilever c;
     const auto doc = readJson(out / "sweep.json");

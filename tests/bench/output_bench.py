@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""What writing the results costs beside the solve, per shipped deck (part of make bench;
+never part of make test).
+
+Each deck of problems/ is solved --repeat times with `beamrotor solve` into a scratch
+directory; the summary's cost line `time: T s (solve S s, write W s)` gives the solve and the
+write, and the kernel's accounting of the finished children gives the CPU time of the whole
+run (beamrotor and the gnuplot processes it started). Medians per deck. Then the two ways a
+sweep or study writes a result per point: a sweep of the pump rod over 200 values with
+--point-files, and a study of 1000 points with --point-files (its `point files:` line).
+
+With --baseline, a second executable (built before a change) runs in turn with the first
+on every deck, so that both see the same load.
+
+The issue's targets (issue 43): writing at most 0.3 s beyond the solve for every shipped deck
+on two cores, and at least 100 points per second for per-point files. The JSON holds every
+figure and whether each target is met; the machine may be shared, so the CPU seconds are
+given beside the wall seconds.
+"""
+import argparse
+import glob
+import json
+import os
+import re
+import resource
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+
+WRITE_TARGET_S = 0.3
+POINTS_TARGET = 100.0
+
+
+def children_cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def run(command):
+    """Runs a command; returns (stdout, CPU seconds of it and its children)."""
+    before = children_cpu_seconds()
+    done = subprocess.run(command, capture_output=True, text=True)
+    cpu = children_cpu_seconds() - before
+    if done.returncode != 0:
+        sys.exit("failed: " + " ".join(command) + "\n" + done.stdout + done.stderr)
+    return done.stdout, cpu
+
+
+def solve_costs(stdout):
+    """(solve s, write s) from the summary's cost line."""
+    match = re.search(r"time: [0-9.]+ s \(solve ([0-9.]+) s, write ([0-9.]+) s\)", stdout)
+    if not match:
+        sys.exit("the summary has no cost line:\n" + stdout)
+    return float(match.group(1)), float(match.group(2))
+
+
+def deck_figures(executables, deck, repeat, scratch):
+    """Medians per executable; the executables take turns run by run, so that a machine whose
+    load changes weighs on each alike."""
+    samples = {exe: ([], [], []) for exe in executables}
+    for _ in range(repeat):
+        for exe in executables:
+            out = os.path.join(scratch, "deck")
+            stdout, cpu = run([exe, "solve", deck, "--out", out])
+            solve, write = solve_costs(stdout)
+            for values, value in zip(samples[exe], (solve, write, cpu)):
+                values.append(value)
+            shutil.rmtree(out, ignore_errors=True)
+    figures = {}
+    for exe, (solves, writes, cpus) in samples.items():
+        write = statistics.median(writes)
+        figures[exe] = {"solve_s": statistics.median(solves), "write_s": write,
+                        "run_cpu_s": statistics.median(cpus),
+                        "within_target": write <= WRITE_TARGET_S}
+    return figures
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--exe", default="./build/beamrotor")
+    parser.add_argument("--decks", default="problems")
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--json", required=True)
+    parser.add_argument("--baseline",
+                        help="another executable (e.g. one built before a change) run in turn "
+                             "with --exe on every deck; its figures go to the JSON as baseline")
+    parser.add_argument("--scratch", default=None,
+                        help="where the results are written (default: the system's temporary "
+                             "directory; /dev/shm leaves the disk's file creation out)")
+    args = parser.parse_args()
+    scratch = tempfile.mkdtemp(prefix="beamrotor-output-bench-", dir=args.scratch)
+    report = {"repeat": args.repeat, "write_target_s": WRITE_TARGET_S, "decks": {}}
+    if args.baseline:
+        report["baseline"] = {}
+    executables = [args.exe] + ([args.baseline] if args.baseline else [])
+    try:
+        print(f"{'deck':28} {'solve s':>9} {'write s':>9} {'run CPU s':>10}" +
+              (f" {'baseline write s':>17} {'CPU s':>7}" if args.baseline else ""))
+        for deck in sorted(glob.glob(os.path.join(args.decks, "*.yaml"))):
+            name = os.path.splitext(os.path.basename(deck))[0]
+            figures = deck_figures(executables, deck, args.repeat, scratch)
+            ours = figures[args.exe]
+            report["decks"][name] = ours
+            line = (f"{name:28} {ours['solve_s']:9.3f} {ours['write_s']:9.3f} "
+                    f"{ours['run_cpu_s']:10.3f}")
+            if args.baseline:
+                base = figures[args.baseline]
+                report["baseline"][name] = base
+                line += f" {base['write_s']:17.3f} {base['run_cpu_s']:7.3f}"
+            print(line + ("" if ours["within_target"] else "  over"))
+        writes = [d["write_s"] for d in report["decks"].values()]
+        report["largest_write_s"] = max(writes)
+        report["all_within_target"] = all(d["within_target"] for d in report["decks"].values())
+        pump_rod = os.path.join(args.decks, "pump_rod.yaml")
+        out = os.path.join(scratch, "sweep")
+        stdout, _ = run([args.exe, "solve", pump_rod, "--out", out, "--point-files",
+                         "--sweep", "eta=0:0.4:199"])
+        solve, write = solve_costs(stdout)
+        report["sweep_point_files"] = {"values": 200, "write_s": write,
+                                       "points_per_s": 200 / write}
+        out = os.path.join(scratch, "study")
+        stdout, _ = run([args.exe, "study", pump_rod, "--out", out, "--point-files",
+                         "--sweep", "eta=0:0.4:39", "--sweep", "w0=0.5e-3:1.5e-3:24"])
+        match = re.search(r"point files: ([0-9.]+) us per point .*, ([0-9]+) points/s", stdout)
+        if not match:
+            sys.exit("the study printed no point-files line:\n" + stdout)
+        report["study_point_files"] = {"points": 1000, "us_per_point": float(match.group(1)),
+                                       "points_per_s": float(match.group(2))}
+        for kind in ("sweep_point_files", "study_point_files"):
+            figures = report[kind]
+            figures["within_target"] = figures["points_per_s"] >= POINTS_TARGET
+            print(f"{kind}: {figures['points_per_s']:.0f} points/s")
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    os.makedirs(os.path.dirname(os.path.abspath(args.json)), exist_ok=True)
+    with open(args.json, "w") as f:
+        json.dump(report, f, indent=2)
+        f.write("\n")
+    print("json:", args.json)
+
+
+if __name__ == "__main__":
+    main()
