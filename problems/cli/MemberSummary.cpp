@@ -17,13 +17,13 @@ void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model
       deck.dimension == "planar"
           ? std::vector<ForceComponent>{ForceComponent::N, ForceComponent::Vy, ForceComponent::Mz}
           : std::vector<ForceComponent>(kForceComponents.begin(), kForceComponents.end());
-  const MemberValue top = largestDisplacement(model, statics.displacement);
+  const MemberValue top = largestDisplacement({model, statics.displacement});
   const Eigen::Vector3d& at = top.x;
   out << "  largest displacement " << formatValue(top.value) << " m at (" << formatValue(at.x())
       << ", " << formatValue(at.y()) << ", " << formatValue(at.z()) << ") m\n";
   out << "  members (largest |value| in member axes, at m from the member's start; N, N m, m):\n";
   for (const auto& [name, elements] : model.members()) {
-    const auto ranges = memberForceRanges(model, elements, statics.displacement);
+    const auto ranges = memberForceRanges({model, statics.displacement}, elements);
     out << "    " << padded(name, 12);
     for (ForceComponent c : shown) {
       const ComponentRange& r = ranges[int(c)];
@@ -32,9 +32,8 @@ void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model
                         formatValue(top.along),
                     26);
     }
-    out << "deflection " << formatValue(largestChordDeflection(model, elements,
-                                                               statics.displacement)
-                                            .value)
+    out << "deflection "
+        << formatValue(largestChordDeflection({model, statics.displacement}, elements).value)
         << "\n";
   }
 }

@@ -34,7 +34,7 @@ struct Peak {
 
 /// Largest normal (first) and shear (second) stress of a static solution: exact element peaks.
 std::pair<Peak, Peak> peaksOf(const Model& model, const StaticResult& r, std::size_t run) {
-  const std::vector<ElementPeaks> peaks = elementPeaks(model, r.displacement);
+  const std::vector<ElementPeaks> peaks = elementPeaks({model, r.displacement});
   std::pair<Peak, Peak> out;
   if (const auto top = largestAlongLine(model, peaks, &ElementPeaks::stress))
     out.first = {run, *top, true};

@@ -90,15 +90,14 @@ Json peakJson(const Model& model, const std::optional<LinePeak>& top) {
 }
 
 /// One load case or combination: its reactions, point displacements and member extremes.
-Json caseJson(const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
+Json caseJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
               const CaseOutcome& c, const std::string& stem) {
-  const Model& model = *c.model;
   Json out = {{"name", c.name}, {"combination", c.combination}};
   out["reactions"] = reactionsJson(c.statics);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, c.statics);
   if (!model.members().empty()) {
-    out["max_displacement"] = maxDisplacementJson(model, c.statics.displacement);
-    Json members = membersJson(model, c.statics.displacement, stem);
+    out["max_displacement"] = maxDisplacementJson(c.on(model));
+    Json members = membersJson(c.on(model), stem);
     for (auto& item : members.items()) item.value().erase("csv");  // written for the analysis only
     out["members"] = members;
   }
@@ -150,8 +149,8 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   out["reactions"] = reactionsJson(r);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
   if (!model.members().empty()) {
-    out["max_displacement"] = maxDisplacementJson(model, r.displacement);
-    out["members"] = membersJson(model, r.displacement, stem);
+    out["max_displacement"] = maxDisplacementJson({model, r.displacement});
+    out["members"] = membersJson({model, r.displacement}, stem);
   }
   for (const auto& [key, kind] : {std::pair{"max_stress", &ElementPeaks::stress},
                                   std::pair{"max_shear", &ElementPeaks::shear}})
@@ -169,7 +168,7 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   if (!casesOf(a).empty()) {
     Json cases = Json::array();
     for (const CaseOutcome& c : casesOf(a)) {
-      cases.push_back(caseJson(dofs, carried, c, stem));
+      cases.push_back(caseJson(model, dofs, carried, c, stem));
       cases.back()["vtu"] = caseVtu(stem, int(cases.size()));
     }
     out["cases"] = cases;

@@ -101,11 +101,11 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
         loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
     for (const CsvTable& table : *list) table.write(dir / table.title());
-  writeStaticVtu(dir / staticVtu(p.stem), model, statics, p.stations, p.peaks);
+  writeStaticVtu(dir / staticVtu(p.stem), {model, statics.displacement}, p.stations, p.peaks);
   if (!p.cases.empty()) {
     std::vector<PvdEntry> entries;
     for (const PreparedCase& c : p.cases) {
-      writeStaticVtu(dir / c.vtu, *c.outcome->model, c.outcome->statics, c.stations, c.peaks);
+      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.stations, c.peaks);
       entries.push_back({double(entries.size() + 1), c.vtu});
     }
     writePvd(dir / casesPvd(p.stem), entries);
@@ -115,11 +115,14 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
                                   {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
   if (charts && !p.members.empty()) {
     // A frame: the whole structure at once, not a line coordinate through its members.
-    std::vector<MemberSeries> series;
-    for (const CsvTable& member : p.members)
-      series.push_back({member.title(), &member, member.title()});
-    drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), model,
-                              statics.displacement, series, run.dimension == "planar"));
+    const StationsByElement byElement(p.stations, model.elements().size());
+    std::vector<std::array<ComponentRange, 6>> ranges;
+    for (const auto& [name, elements] : model.members())
+      ranges.push_back(memberForceRanges({model, statics.displacement}, elements));
+    const FrameDrawing frame{&model, &byElement, &ranges,
+                             largestDisplacement({model, statics.displacement}).value};
+    drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), frame,
+                              run.dimension == "planar"));
     for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
       const std::string& member = model.members()[m].first;
       drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),

@@ -31,22 +31,21 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
 namespace {
 
 /// Each case's VTK samples and, for a frame with combinations, the envelope along every member.
-void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
+void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis& p) {
   for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
     const CaseOutcome& c = casesOf(a)[i];
-    const NodalField& u = c.statics.displacement;
-    p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(*c.model, u),
-                       elementPeaks(*c.model, u)});
+    p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(c.on(model)),
+                       elementPeaks(c.on(model))});
   }
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
   for (const CaseOutcome& c : casesOf(a))
     if (c.combination) {
-      combinations.push_back({c.model.get(), &c.statics.displacement});
+      combinations.push_back(c.on(model));
       names.push_back(c.name);
     }
   if (combinations.empty()) return;
-  for (const auto& [name, elements] : combinations.front().model->members())
+  for (const auto& [name, elements] : model.members())
     p.envelopes.push_back(memberEnvelopeTable(
         envelopeCsv(p.stem, name), memberEnvelope(combinations, elements, kIntervalsPerElement),
         names));
@@ -55,12 +54,16 @@ void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
 /// A static analysis sampled along the line, its fields and member tables, and its cases.
 void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticResult& statics,
                    PreparedAnalysis& p) {
-  p.stations = sampleStatics(model, statics.displacement);
-  p.peaks = elementPeaks(model, statics.displacement);
+  p.stations = sampleStatics({model, statics.displacement});
+  p.peaks = elementPeaks({model, statics.displacement});
   p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
-  for (const auto& [name, elements] : model.members())
-    p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
-  prepareCases(a, p);
+  const StationsByElement byElement(p.stations, model.elements().size());
+  if (oneMembersTable(model))
+    p.members.push_back(membersTable(membersCsv(p.stem), model, byElement));
+  else
+    for (const auto& [name, elements] : model.members())
+      p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, byElement));
+  prepareCases(model, a, p);
 }
 
 }  // namespace

@@ -36,7 +36,9 @@ struct PreparedAnalysis {
   std::optional<CsvTable> shapes;  ///< modal, buckling: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
   std::optional<PreparedRotor> rotor;   ///< rotor analyses
-  std::vector<CsvTable> members;        ///< statics of a frame: <stem>_member_<name>.csv each
+  /// Statics of a frame: <stem>_member_<name>.csv each, or the one <stem>_members.csv
+  /// (oneMembersTable).
+  std::vector<CsvTable> members;
   std::vector<CsvTable> envelopes;      ///< frame with combinations: <stem>_envelope_<name>.csv
   std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table

@@ -120,7 +120,7 @@ std::string script(const ChartScript& chart) {
   s << "# " << gnuplotComment(chart.purpose) << "\n"
     << "# Written by beamrotor. Redraw it from this directory with: gnuplot "
     << gnuplotComment(chart.name) << ".gp\n"
-    << "do for [format in 'svg png'] {\n"
+    << chart.data << "do for [format in 'svg png'] {\n"
     << "  if (format eq 'svg') {\n"
     << "    set terminal svg size " << size
     << " dynamic enhanced font 'Sans,12' background rgb 'white'\n"

@@ -1,7 +1,6 @@
 // Member output of a static analysis (see MemberOutput.hpp).
 #include "problems/output/structure/MemberOutput.hpp"
 
-#include <map>
 
 #include "fem/assembly/MemberExtrema.hpp"
 
@@ -20,31 +19,73 @@ std::string memberCsv(const std::string& stem, const std::string& member) {
   return stem + "_member_" + member + ".csv";
 }
 
-CsvTable memberTable(const std::string& title, const Model& model,
-                     const std::vector<int>& elements, const std::vector<StaticStation>& stations) {
-  CsvTable table(title, {{"s", "m"},   {"x", "m"},    {"y", "m"},     {"z", "m"},
-                         {"ux", "m"},  {"uy", "m"},   {"uz", "m"},    {"rx", "rad"},
-                         {"ry", "rad"}, {"rz", "rad"}, {"N", "N"},    {"Vy", "N"},
-                         {"Vz", "N"},  {"T", "N m"},  {"My", "N m"},  {"Mz", "N m"},
-                         {"stress", "Pa"}, {"element", ""}, {"ey_x", ""}, {"ey_y", ""},
-                         {"ey_z", ""},  {"ez_x", ""},  {"ez_y", ""},    {"ez_z", ""}});
-  std::map<int, std::vector<const StaticStation*>> byElement;
-  for (const StaticStation& st : stations) byElement[st.place.element].push_back(&st);
+std::string membersCsv(const std::string& stem) {
+  return stem + "_members.csv";
+}
+
+bool oneMembersTable(const Model& model) {
+  return model.members().size() > kMemberFilesUpTo;
+}
+
+std::string memberCsvOf(const Model& model, const std::string& stem, const std::string& member) {
+  return oneMembersTable(model) ? membersCsv(stem) : memberCsv(stem, member);
+}
+
+namespace {
+
+/// The member table's columns, after `member` when the table holds every member.
+std::vector<CsvColumn> memberColumns(bool named) {
+  std::vector<CsvColumn> columns{
+      {"s", "m"},     {"x", "m"},    {"y", "m"},    {"z", "m"},     {"ux", "m"},
+      {"uy", "m"},    {"uz", "m"},   {"rx", "rad"}, {"ry", "rad"},  {"rz", "rad"},
+      {"N", "N"},     {"Vy", "N"},   {"Vz", "N"},   {"T", "N m"},   {"My", "N m"},
+      {"Mz", "N m"},  {"stress", "Pa"}, {"element", ""}, {"ey_x", ""}, {"ey_y", ""},
+      {"ey_z", ""},   {"ez_x", ""},  {"ez_y", ""},  {"ez_z", ""}};
+  if (named) columns.insert(columns.begin(), {"member", ""});
+  return columns;
+}
+
+/// The rows of one member (its elements' stations from its start), `name` first when given.
+void addMemberRows(CsvTable& table, const Model& model, const std::vector<int>& elements,
+                   const StationsByElement& stations, const std::string* name) {
   double start = 0;
   for (int e : elements) {
     const LineElement& line = *asLine(model.elements().at(e));
     const double length = line.length();
     const Eigen::Matrix3d R = line.localAxes();
-    for (const StaticStation* st : byElement[e]) {
-      const Eigen::Vector3d x = placeOnElement(model, e, st->place.s);
-      const auto& u = st->displacement;
-      const SectionForces& f = st->forces;
-      table.addRow({start + st->place.s * length, x.x(), x.y(), x.z(), u[0], u[1], u[2], u[3],
-                    u[4], u[5], f.N, f.Vy, f.Vz, f.T, f.My, f.Mz, st->stress, (long long)e,
-                    R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)});
+    for (const StaticStation& st : stations.of(e)) {
+      const Eigen::Vector3d x = placeOnElement(model, e, st.place.s);
+      const auto& u = st.displacement;
+      const SectionForces& f = st.forces;
+      std::vector<CsvCell> row;
+      row.reserve(25);
+      if (name) row.emplace_back(std::in_place_type<std::string>, *name);
+      for (double v : {start + st.place.s * length, x.x(), x.y(), x.z(), u[0], u[1], u[2], u[3],
+                       u[4], u[5], f.N, f.Vy, f.Vz, f.T, f.My, f.Mz, st.stress})
+        row.emplace_back(std::in_place_type<double>, v);
+      row.emplace_back(std::in_place_type<long long>, e);
+      for (double v : {R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)})
+        row.emplace_back(std::in_place_type<double>, v);
+      table.addRow(std::move(row));
     }
     start += length;
   }
+}
+
+}  // namespace
+
+CsvTable memberTable(const std::string& title, const Model& model,
+                     const std::vector<int>& elements, const StationsByElement& stations) {
+  CsvTable table(title, memberColumns(false));
+  addMemberRows(table, model, elements, stations, nullptr);
+  return table;
+}
+
+CsvTable membersTable(const std::string& title, const Model& model,
+                      const StationsByElement& stations) {
+  CsvTable table(title, memberColumns(true));
+  for (const auto& [name, elements] : model.members())
+    addMemberRows(table, model, elements, stations, &name);
   return table;
 }
 
@@ -67,18 +108,21 @@ CsvTable memberEnvelopeTable(const std::string& title, const std::vector<Envelop
   CsvTable table(title, columns);
   for (const EnvelopeStation& st : stations) {
     std::vector<CsvCell> row{st.along, (long long)st.element};
+    // Each cell made in place: moving a variant that may hold a string draws a false
+    // -Wmaybe-uninitialized from GCC 12 in some unity batches.
     for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
-      row.push_back(st.max[c]);
-      row.push_back(solutionNames.at(st.maxBy[c]));
-      row.push_back(st.min[c]);
-      row.push_back(solutionNames.at(st.minBy[c]));
+      row.emplace_back(std::in_place_type<double>, st.max[c]);
+      row.emplace_back(std::in_place_type<std::string>, solutionNames.at(st.maxBy[c]));
+      row.emplace_back(std::in_place_type<double>, st.min[c]);
+      row.emplace_back(std::in_place_type<std::string>, solutionNames.at(st.minBy[c]));
     }
     table.addRow(row);
   }
   return table;
 }
 
-Json membersJson(const Model& model, const NodalField& displacement, const std::string& stem) {
+Json membersJson(const LoadedSolution& solution, const std::string& stem) {
+  const Model& model = *solution.model;
   Json out = Json::object();
   for (const auto& [name, elements] : model.members()) {
     double length = 0;
@@ -89,20 +133,20 @@ Json membersJson(const Model& model, const NodalField& displacement, const std::
               {"elements", elements.size()},
               {"from", model.nameOf(first.endNodes()[0])},
               {"to", model.nameOf(last.endNodes()[1])},
-              {"csv", memberCsv(stem, name)}};
-    const auto ranges = memberForceRanges(model, elements, displacement);
+              {"csv", memberCsvOf(model, stem, name)}};
+    const auto ranges = memberForceRanges(solution, elements);
     for (std::size_t c = 0; c < kForceComponents.size(); ++c)
       m[componentName(kForceComponents[c])] = {{"max", valueJson(ranges[c].max)},
                                                {"min", valueJson(ranges[c].min)}};
     m["chord_deflection"] =
-        valueJson(largestChordDeflection(model, elements, displacement));
+        valueJson(largestChordDeflection(solution, elements));
     out[name] = m;
   }
   return out;
 }
 
-Json maxDisplacementJson(const Model& model, const NodalField& displacement) {
-  const MemberValue top = largestDisplacement(model, displacement);
+Json maxDisplacementJson(const LoadedSolution& solution) {
+  const MemberValue top = largestDisplacement(solution);
   return {{"value", top.value}, {"x", top.x.x()}, {"y", top.x.y()}, {"z", top.x.z()}};
 }
 

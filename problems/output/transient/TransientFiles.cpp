@@ -13,7 +13,10 @@ CsvTable historyTable(const std::string& title, const TransientOutcome& transien
   const std::vector<double>& times = transient.result.times;
   for (std::size_t i = 0; i < times.size(); ++i) {
     std::vector<CsvCell> row{times[i]};
-    for (const NamedHistory& h : transient.histories) row.push_back(h.values.at(i));
+    // In place: moving a variant that may hold a string draws a false -Wmaybe-uninitialized
+    // from GCC 12 in some unity batches.
+    for (const NamedHistory& h : transient.histories)
+      row.emplace_back(std::in_place_type<double>, h.values.at(i));
     table.addRow(std::move(row));
   }
   return table;
