@@ -19,16 +19,24 @@ constexpr int kDisplacementSamples = 6;
 /// applied): interpolated through six places, exact for degree <= 5 (cubic shape functions
 /// plus a linear span load's quintic).
 std::array<Polynomial, 3> translationSeries(const LoadedSolution& solution, int element) {
-  Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples> V;
+  using Square = Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples>;
+  // The Vandermonde matrix of the places, decomposed once for every element.
+  static const Eigen::FullPivLU<Square> vandermonde = [] {
+    Square V;
+    for (int i = 0; i < kDisplacementSamples; ++i)
+      for (int k = 0; k < kDisplacementSamples; ++k)
+        V(i, k) = std::pow(double(i) / (kDisplacementSamples - 1), k);
+    return V.fullPivLu();
+  }();
+  const LineElement& line = *asLine(solution.model->elements().at(element));
+  const ElementVector u = elementValues(line, *solution.displacement);
+  const ElementSpanLoad q = solution.spanOn(element, line);
   Eigen::Matrix<double, kDisplacementSamples, 3> values;
   for (int i = 0; i < kDisplacementSamples; ++i) {
-    const double s = double(i) / (kDisplacementSamples - 1);
-    for (int k = 0; k < kDisplacementSamples; ++k) V(i, k) = std::pow(s, k);
-    const auto d = solution.displacementAt(element, s);
+    const auto d = line.displacementAt(u, double(i) / (kDisplacementSamples - 1), q);
     for (int c = 0; c < 3; ++c) values(i, c) = d[c];
   }
-  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients =
-      V.fullPivLu().solve(values);
+  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients = vandermonde.solve(values);
   std::array<Polynomial, 3> out;
   for (int c = 0; c < 3; ++c)
     out[c] = Polynomial(coefficients.col(c).data(),

@@ -96,10 +96,11 @@ Mechanism findMechanism(const Model& model, const DofMap& dofs, const SparseMatr
     Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
     y[k] = 1;
     if (rank > 0) {
-      const Eigen::VectorXd column = R.col(k).toDense();
-      y.head(rank) = -R.topLeftCorner(rank, rank)
-                          .triangularView<Eigen::Upper>()
-                          .solve(Eigen::VectorXd(column.head(rank)));
+      // Solved in place into a named vector: an unnamed temporary here draws a false
+      // -Wuse-after-free from GCC 12 in some unity batches.
+      Eigen::VectorXd head = R.col(k).toDense().head(rank);
+      R.topLeftCorner(rank, rank).triangularView<Eigen::Upper>().solveInPlace(head);
+      y.head(rank) = -head;
     }
     Eigen::VectorXd x(n);
     for (Eigen::Index i = 0; i < n; ++i) x[E.indices()[i]] = y[i];

@@ -216,15 +216,17 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     if (!analysed_) {
       // Held dofs clear rows and columns alike: K's symmetry is the held matrix's.
       const std::vector<int> nodeOfRow = dofs_.freeNodes();
+      // A supported structure's stiffness is positive definite: a large one may take the
+      // supernodal Cholesky (a mechanism or negative springs fall back to the LDL').
       if (reuse_)
-        solver_ = &reuse_->analysedFor(A, symmetry_, nodeOfRow);
+        solver_ = &reuse_->analysedFor(A, symmetry_, nodeOfRow, Definiteness::positiveExpected);
       else
-        solver_->analyzePattern(A, symmetry_, nodeOfRow);
+        solver_->analyzePattern(A, symmetry_, nodeOfRow, Definiteness::positiveExpected);
       analysed_ = true;
-      solverName_ = solver_->methodName() + ", " + solver_->orderingName() + " ordering";
     }
     if (!sameFactor) {
       solver_->factorize(A);
+      solverName_ = solver_->methodName() + ", " + solver_->orderingName() + " ordering";
       rcond_ = solver_->rcond();
       if (!solver_->healthy(singularRcond)) requireHeld();
     }

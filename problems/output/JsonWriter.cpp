@@ -23,6 +23,13 @@
 
 namespace beamrotor {
 
+Json& appendNew(Json& object, std::string key, Json value) {
+  auto& entries = object.get_ref<Json::object_t&>();
+  using Entries = std::vector<Json::object_t::value_type>;
+  static_cast<Entries&>(entries).emplace_back(std::move(key), std::move(value));
+  return entries.back().second;
+}
+
 namespace {
 
 /// The dof kinds some node of the model carries.
@@ -50,7 +57,7 @@ Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
   std::sort(points.begin(), points.end());
   Json out = Json::object();
   for (const auto& [node, name] : points) {
-    Json& components = out[name] = Json::object();
+    Json& components = appendNew(out, name);
     for (Dof d : kAllDofs)
       if (dofs.equation(node, d) >= 0)
         components[std::string(dofName(d))] = r.displacement(node, dofIndex(d));
@@ -89,18 +96,34 @@ Json peakJson(const Model& model, const std::optional<LinePeak>& top) {
           {"section", line.section().name}};
 }
 
-/// One load case or combination: its reactions, point displacements and member extremes.
+/// The largest normal and shear stress of a solution, under `max_stress` and `max_shear`.
+void stressPeaksJson(Json& out, const Model& model, const std::vector<ElementPeaks>& peaks) {
+  for (const auto& [key, kind] : {std::pair{"max_stress", &ElementPeaks::stress},
+                                  std::pair{"max_shear", &ElementPeaks::shear}})
+    if (Json top = peakJson(model, largestAlongLine(model, peaks, kind)); !top.is_null())
+      out[key] = top;
+}
+
+/// One load case or combination: its factors (a combination), reactions, point displacements,
+/// largest stresses, member extremes and warnings.
 Json caseJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
-              const CaseOutcome& c, const std::string& stem) {
+              const CaseOutcome& c, const StaticExtremes& extremes, const std::string& stem) {
   Json out = {{"name", c.name}, {"combination", c.combination}};
+  if (c.combination) {
+    Json factors = Json::object();
+    for (const auto& [name, factor] : c.factors) factors[name] = factor;
+    out["factors"] = factors;
+  }
   out["reactions"] = reactionsJson(c.statics);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, c.statics);
+  stressPeaksJson(out, model, extremes.peaks);
   if (!model.members().empty()) {
-    out["max_displacement"] = maxDisplacementJson(c.on(model));
-    Json members = membersJson(c.on(model), stem);
+    out["max_displacement"] = maxDisplacementJson(extremes.largestDisplacement);
+    Json members = membersJson(model, extremes, stem);
     for (auto& item : members.items()) item.value().erase("csv");  // written for the analysis only
-    out["members"] = members;
+    out["members"] = std::move(members);
   }
+  out["warnings"] = c.warnings;
   return out;
 }
 
@@ -142,20 +165,18 @@ Json envelopeJson(const Json& cases) {
 }
 
 Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
-                const AnalysisOutcome& a, const std::vector<ElementPeaks>& peaks) {
+                const AnalysisOutcome& a, const AnalysisExtremes& extremes) {
+  const StaticExtremes& own = extremes.own.value();
   const StaticResult& r = *staticsOf(a);
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
   out["reactions"] = reactionsJson(r);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
   if (!model.members().empty()) {
-    out["max_displacement"] = maxDisplacementJson({model, r.displacement});
-    out["members"] = membersJson({model, r.displacement}, stem);
+    out["max_displacement"] = maxDisplacementJson(own.largestDisplacement);
+    out["members"] = membersJson(model, own, stem);
   }
-  for (const auto& [key, kind] : {std::pair{"max_stress", &ElementPeaks::stress},
-                                  std::pair{"max_shear", &ElementPeaks::shear}})
-    if (Json top = peakJson(model, largestAlongLine(model, peaks, kind)); !top.is_null())
-      out[key] = top;
+  stressPeaksJson(out, model, own.peaks);
   if (!r.contacts.empty()) {
     out["contacts"] = contactsJson(r.contacts);
     out["active_set_iterations"] = r.activeSetIterations;
@@ -167,16 +188,16 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
   if (!casesOf(a).empty()) {
     Json cases = Json::array();
-    for (const CaseOutcome& c : casesOf(a)) {
-      cases.push_back(caseJson(model, dofs, carried, c, stem));
+    for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
+      cases.push_back(caseJson(model, dofs, carried, casesOf(a)[i], extremes.cases.at(i), stem));
       cases.back()["vtu"] = caseVtu(stem, int(cases.size()));
     }
-    out["cases"] = cases;
+    out["cases"] = std::move(cases);
     out["files"]["cases_csv"] = casesCsv(stem);
     out["files"]["cases_pvd"] = casesPvd(stem);
     if (std::any_of(casesOf(a).begin(), casesOf(a).end(),
                     [](const CaseOutcome& c) { return c.combination; })) {
-      out["envelope"] = envelopeJson(cases);
+      out["envelope"] = envelopeJson(out["cases"]);
       if (!model.members().empty()) {
         Json files = Json::object();
         for (const auto& [name, elements] : model.members()) files[name] = envelopeCsv(stem, name);
@@ -317,17 +338,32 @@ Json sweepWorstJson(const SweepResult& sweep, const std::vector<Json>& runDocs) 
 Json reactionsJson(const StaticResult& r) {
   Json out = Json::object();
   for (const SupportReactions& s : reactionsBySupport(r)) {
-    Json& components = out[s.support] = Json::object();
+    Json& components = appendNew(out, s.support);
     for (const auto& [dof, value] : s.components)
       components[std::string(reactionName(dof))] = value;
   }
   return out;
 }
 
-Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>& peaks) {
+std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
+  std::vector<AnalysisExtremes> out(run.analyses.size());
+  for (std::size_t i = 0; i < run.analyses.size(); ++i) {
+    const AnalysisOutcome& a = run.analyses[i];
+    if (const StaticResult* s = staticsOf(a)) out[i].own = staticExtremes({*run.model, s->displacement});
+    for (const CaseOutcome& c : casesOf(a)) out[i].cases.push_back(staticExtremes(c.on(*run.model)));
+  }
+  return out;
+}
+
+Json runJson(const RunResult& run) {
   if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
-  if (peaks.size() != run.analyses.size())
-    throw std::invalid_argument("runJson needs one list of element peaks per analysis");
+  return runJson(run, runExtremes(run));
+}
+
+Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes) {
+  if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
+  if (extremes.size() != run.analyses.size())
+    throw std::invalid_argument("runJson needs the extremes of every analysis");
   const Model& model = *run.model;
   const DofMap dofs(model);
   const auto carried = kindsCarried(model, dofs);
@@ -339,9 +375,9 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
     const AnalysisOutcome& a = run.analyses[i];
     analyses.push_back(std::visit(
         Overloaded{
-            [&](const StaticOutcome&) { return staticJson(model, dofs, carried, a, peaks[i]); },
+            [&](const StaticOutcome&) { return staticJson(model, dofs, carried, a, extremes[i]); },
             [&](const SecondOrderResult& r) {
-              Json entry = staticJson(model, dofs, carried, a, peaks[i]);
+              Json entry = staticJson(model, dofs, carried, a, extremes[i]);
               entry["second_order"] = secondOrderJson(r);
               return entry;
             },

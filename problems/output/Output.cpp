@@ -101,11 +101,12 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
         loadCasesTable(entry, casesCsv(p.stem)).write(dir / casesCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
     for (const CsvTable& table : *list) table.write(dir / table.title());
-  writeStaticVtu(dir / staticVtu(p.stem), {model, statics.displacement}, p.stations, p.peaks);
+  writeStaticVtu(dir / staticVtu(p.stem), {model, statics.displacement}, p.stations,
+                 p.extremes->own->peaks);
   if (!p.cases.empty()) {
     std::vector<PvdEntry> entries;
     for (const PreparedCase& c : p.cases) {
-      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.stations, c.peaks);
+      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.stations, c.extremes->peaks);
       entries.push_back({double(entries.size() + 1), c.vtu});
     }
     writePvd(dir / casesPvd(p.stem), entries);
@@ -116,11 +117,8 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   if (charts && !p.members.empty()) {
     // A frame: the whole structure at once, not a line coordinate through its members.
     const StationsByElement byElement(p.stations, model.elements().size());
-    std::vector<std::array<ComponentRange, 6>> ranges;
-    for (const auto& [name, elements] : model.members())
-      ranges.push_back(memberForceRanges({model, statics.displacement}, elements));
-    const FrameDrawing frame{&model, &byElement, &ranges,
-                             largestDisplacement({model, statics.displacement}).value};
+    const StaticExtremes& own = *p.extremes->own;
+    const FrameDrawing frame{&model, &byElement, &own.ranges, own.largestDisplacement.value};
     drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), frame,
                               run.dimension == "planar"));
     for (std::size_t m = 0; m < p.envelopes.size(); ++m) {

@@ -35,7 +35,7 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
   for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
     const CaseOutcome& c = casesOf(a)[i];
     p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(c.on(model)),
-                       elementPeaks(c.on(model))});
+                       &p.extremes->cases.at(i)});
   }
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
@@ -55,7 +55,6 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
 void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticResult& statics,
                    PreparedAnalysis& p) {
   p.stations = sampleStatics({model, statics.displacement});
-  p.peaks = elementPeaks({model, statics.displacement});
   p.fields = staticFieldsTable(fieldsCsv(p.stem), p.stations);
   const StationsByElement byElement(p.stations, model.elements().size());
   if (oneMembersTable(model))
@@ -74,11 +73,11 @@ PreparedRun prepareRun(const RunResult& run) {
   requireDistinctFileStems(run.analyses);
   const Model& model = *run.model;
 
-  // 2. Sample the statics along the line and build every table.
-  PreparedRun prepared{&run, {}, {}};
-  std::vector<std::vector<ElementPeaks>> peaks;
-  for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  // 2. The extremes of every static solution, then the samples along the line and every table.
+  PreparedRun prepared{&run, runExtremes(run), {}, {}};
+  for (std::size_t i = 0; i < run.analyses.size(); ++i) {
+    const AnalysisOutcome& a = run.analyses[i];
+    PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
             [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p); },
@@ -99,12 +98,11 @@ PreparedRun prepareRun(const RunResult& run) {
             [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
             [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); }},
         a.result);
-    peaks.push_back(p.peaks);
     prepared.analyses.push_back(std::move(p));
   }
 
   // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
-  prepared.doc = runJson(run, peaks);
+  prepared.doc = runJson(run, prepared.extremes);
   requireFiniteNumbers(prepared.doc, kResultsJson);
   return prepared;
 }

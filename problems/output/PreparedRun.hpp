@@ -12,6 +12,7 @@
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/structure/StaticExtremes.hpp"
 #include "problems/output/rotor/RotorOutput.hpp"
 #include "problems/run/RunResult.hpp"
 
@@ -22,7 +23,7 @@ struct PreparedCase {
   const CaseOutcome* outcome = nullptr;
   std::string vtu;                      ///< <stem>_case_NN.vtu
   std::vector<StaticStation> stations;
-  std::vector<ElementPeaks> peaks;
+  const StaticExtremes* extremes = nullptr;  ///< its extremes (PreparedRun::extremes)
 };
 
 /// What one analysis writes, computed before writing.
@@ -30,7 +31,8 @@ struct PreparedAnalysis {
   const AnalysisOutcome* outcome = nullptr;
   std::string stem;                     ///< file stem of its files
   std::vector<StaticStation> stations;  ///< statics only
-  std::vector<ElementPeaks> peaks;      ///< statics only: each element's exact largest values
+  /// Statics: the extremes of its own solution and of each case (PreparedRun::extremes).
+  const AnalysisExtremes* extremes = nullptr;
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
   std::optional<CsvTable> modes;   ///< modal: <stem>_modes.csv; buckling: <stem>_factors.csv
   std::optional<CsvTable> shapes;  ///< modal, buckling: <stem>_shapes.csv
@@ -49,6 +51,7 @@ struct PreparedAnalysis {
 
 struct PreparedRun {
   const RunResult* run = nullptr;  ///< must outlive this
+  std::vector<AnalysisExtremes> extremes;  ///< per analysis, computed once (runExtremes)
   std::vector<PreparedAnalysis> analyses;
   Json doc;  ///< results.json
 };

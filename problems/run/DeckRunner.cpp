@@ -40,7 +40,7 @@ namespace {
 CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
                           std::span<const CaseOutcome> cases) {
   Stopwatch clock;
-  CaseOutcome out{k.name, true, k.factors, nullptr, {}};
+  CaseOutcome out{k.name, true, k.factors, nullptr, {}, {}};
   std::vector<std::pair<std::shared_ptr<const Loading>, double>> parts;
   StaticResult& r = out.statics;
   const StaticResult& first = cases.front().statics;
@@ -75,13 +75,15 @@ std::vector<CaseOutcome> solveCases(const Deck& deck, const Model& model,
   std::vector<const Loading*> loadings;
   for (const DeckLoadCase& lc : deck.loadCases) {
     out.push_back({lc.name, false, {},
-                   std::make_shared<const Loading>(loadingOf(deck, model, lc.loads)), {}});
+                   std::make_shared<const Loading>(loadingOf(deck, model, lc.loads)), {}, {}});
     loadings.push_back(out.back().loading.get());
   }
   std::vector<StaticResult> results = solveLoadings(model, loadings, options);
   for (std::size_t i = 0; i < results.size(); ++i) out[i].statics = std::move(results[i]);
   const std::span<const CaseOutcome> cases(out.data(), out.size());
   for (const DeckCombination& k : deck.combinations) out.push_back(combinationOf(k, model, cases));
+  for (CaseOutcome& c : out)
+    if (auto w = displacementWarning(model, c.statics)) c.warnings.push_back(*w);
   return out;
 }
 

@@ -52,6 +52,7 @@ struct CaseOutcome {
   std::vector<std::pair<std::string, double>> factors;  ///< a combination's: case, factor
   std::shared_ptr<const Loading> loading;
   StaticResult statics;
+  std::vector<std::string> warnings;  ///< not errors, e.g. displacements past the model's size
   /// The solution as recovery reads it, on `model` (the run's model).
   LoadedSolution on(const Model& model) const {
     return {model, statics.displacement, loading.get()};

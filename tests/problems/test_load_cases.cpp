@@ -183,7 +183,7 @@ TEST_SUITE("load cases") {
     const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
     const RunResult& run = onlyRun(s);
     const Json doc =
-        runJson(run, {elementPeaks({*run.model, staticsOf(run.analyses.front())->displacement})});
+        runJson(run);
     const Json& analysis = doc["analyses"][0];
     REQUIRE(analysis.contains("envelope"));
     REQUIRE(analysis["cases"].size() == 5);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/study/DesignStudy.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"

@@ -77,6 +77,9 @@ void addMemberRows(CsvTable& table, const Model& model, const std::vector<int>& 
 CsvTable memberTable(const std::string& title, const Model& model,
                      const std::vector<int>& elements, const StationsByElement& stations) {
   CsvTable table(title, memberColumns(false));
+  std::size_t rows = 0;
+  for (int e : elements) rows += stations.of(e).size();
+  table.reserveRows(rows);
   addMemberRows(table, model, elements, stations, nullptr);
   return table;
 }
@@ -84,6 +87,10 @@ CsvTable memberTable(const std::string& title, const Model& model,
 CsvTable membersTable(const std::string& title, const Model& model,
                       const StationsByElement& stations) {
   CsvTable table(title, memberColumns(true));
+  std::size_t rows = 0;
+  for (const auto& [name, elements] : model.members())
+    for (int e : elements) rows += stations.of(e).size();
+  table.reserveRows(rows);
   for (const auto& [name, elements] : model.members())
     addMemberRows(table, model, elements, stations, &name);
   return table;
@@ -121,10 +128,10 @@ CsvTable memberEnvelopeTable(const std::string& title, const std::vector<Envelop
   return table;
 }
 
-Json membersJson(const LoadedSolution& solution, const std::string& stem) {
-  const Model& model = *solution.model;
+Json membersJson(const Model& model, const StaticExtremes& extremes, const std::string& stem) {
   Json out = Json::object();
-  for (const auto& [name, elements] : model.members()) {
+  for (std::size_t i = 0; i < model.members().size(); ++i) {
+    const auto& [name, elements] = model.members()[i];
     double length = 0;
     for (int e : elements) length += asLine(model.elements().at(e))->length();
     const LineElement& first = *asLine(model.elements().at(elements.front()));
@@ -134,19 +141,17 @@ Json membersJson(const LoadedSolution& solution, const std::string& stem) {
               {"from", model.nameOf(first.endNodes()[0])},
               {"to", model.nameOf(last.endNodes()[1])},
               {"csv", memberCsvOf(model, stem, name)}};
-    const auto ranges = memberForceRanges(solution, elements);
+    const auto& ranges = extremes.ranges.at(i);
     for (std::size_t c = 0; c < kForceComponents.size(); ++c)
       m[componentName(kForceComponents[c])] = {{"max", valueJson(ranges[c].max)},
                                                {"min", valueJson(ranges[c].min)}};
-    m["chord_deflection"] =
-        valueJson(largestChordDeflection(solution, elements));
-    out[name] = m;
+    m["chord_deflection"] = valueJson(extremes.chordDeflections.at(i));
+    appendNew(out, name, std::move(m));
   }
   return out;
 }
 
-Json maxDisplacementJson(const LoadedSolution& solution) {
-  const MemberValue top = largestDisplacement(solution);
+Json maxDisplacementJson(const MemberValue& top) {
   return {{"value", top.value}, {"x", top.x.x()}, {"y", top.x.y()}, {"z", top.x.z()}};
 }
 

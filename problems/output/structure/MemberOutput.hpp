@@ -12,6 +12,7 @@
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/structure/StaticExtremes.hpp"
 
 namespace beamrotor {
 
@@ -54,9 +55,9 @@ CsvTable memberEnvelopeTable(const std::string& title, const std::vector<Envelop
 /// {"NAME": {"length", "elements", "from", "to", "N": {"max": {value, s, x, y, z, element},
 /// "min": {...}}, ... "Mz": ..., "chord_deflection": {value, s, x, y, z, element}, "csv"}}; "csv"
 /// names memberCsvOf.
-Json membersJson(const LoadedSolution& solution, const std::string& stem);
+Json membersJson(const Model& model, const StaticExtremes& extremes, const std::string& stem);
 
 /// {value, x, y, z}: the largest translation anywhere and where (undeformed place).
-Json maxDisplacementJson(const LoadedSolution& solution);
+Json maxDisplacementJson(const MemberValue& top);
 
 }  // namespace beamrotor
