@@ -162,10 +162,11 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
                               prescribedValues(model, dofs_));
 }
 
-void LinearStatics::setLoads(const Loading& loading) {
-  loading_ = &loading;
-  rhs_ = reducedRightHandSide(model_, dofs_, loadVector(model_, dofs_, loading),
-                              prescribedValues(model_, dofs_));
+void LinearStatics::setLoads(const Loading* loading) {
+  loading_ = loading;
+  rhs_ = reducedRightHandSide(
+      model_, dofs_, loading ? loadVector(model_, dofs_, *loading) : loadVector(model_, dofs_),
+      prescribedValues(model_, dofs_));
 }
 
 Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double singularRcond) {

@@ -40,9 +40,10 @@ class LinearStatics {
   Eigen::VectorXd solve(const std::vector<HeldDof>& held, double singularRcond);
 
   /// Replaces the loads (point and span loads) by `loading`'s, a load case on this model
-  /// (fem/model/Loading.hpp), which must outlive the solves and reactions that use it; the
-  /// next solve without held dofs reuses the factor. Prescribed values stay the model's.
-  void setLoads(const Loading& loading);
+  /// (fem/model/Loading.hpp), which must outlive the solves and reactions that use it, or by
+  /// the model's own when null; the next solve without held dofs reuses the factor.
+  /// Prescribed values stay the model's.
+  void setLoads(const Loading* loading);
 
   /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
   Eigen::VectorXd residual(const Eigen::VectorXd& u) const;

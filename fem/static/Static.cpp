@@ -76,7 +76,7 @@ std::vector<StaticResult> solveLoadings(const Model& model,
     Stopwatch total;
     StaticResult result;
     const double factorBefore = system.factorSeconds(), solveBefore = system.solveSeconds();
-    system.setLoads(*loadings[k]);
+    system.setLoads(loadings[k]);
     const Eigen::VectorXd u = system.solve({}, options.singularRcond);
     result.activeSetIterations = 1;
     result.time.factor = system.factorSeconds() - factorBefore;

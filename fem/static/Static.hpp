@@ -26,10 +26,10 @@ struct StaticOptions {
 StaticResult solveStatic(const Model& model, const StaticOptions& options = {});
 
 /// Solves model's statics under each of `loadings` (load cases on the one model, each in
-/// place of the model's own loads; Loading.hpp) with one factorisation of K: each loading is
-/// one more right-hand side. The loadings must outlive nothing here: the results hold plain
-/// values. No contacts (they are not linear in the loads): std::invalid_argument. Throws as
-/// solveStatic does.
+/// place of the model's own loads, Loading.hpp; null: the model's own loads) with one
+/// factorisation of K: each loading is one more right-hand side. The results hold plain values
+/// (nothing refers to the loadings). No contacts (they are not linear in the loads):
+/// std::invalid_argument. Throws as solveStatic does.
 std::vector<StaticResult> solveLoadings(const Model& model,
                                         const std::vector<const Loading*>& loadings,
                                         const StaticOptions& options = {});

@@ -14,6 +14,7 @@
 #include "problems/output/structure/Charts.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
+#include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/structure/EnvelopeCharts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
@@ -88,6 +89,45 @@ CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
   return t;
 }
 
+/// A frame's charts: the whole structure at once, not a line coordinate through its members.
+/// The deformed shape and moments under the deck's own loads (unless only its load cases load
+/// it), under each combination that governs an extreme (governingCombinations), the envelope
+/// of the moments on the frame, and up to kEnvelopeChartsUpTo members' own envelope charts.
+void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, const fs::path& dir) {
+  const RunResult& run = *prepared.run;
+  const Model& model = *run.model;
+  const AnalysisOutcome& a = *p.outcome;
+  const bool planar = run.dimension == "planar";
+  const auto draw = [&](const std::vector<StaticStation>& stations, const StaticExtremes& x,
+                        const std::string& what, const std::string& chart) {
+    const StationsByElement byElement(stations, model.elements().size());
+    const FrameDrawing frame{&model, &byElement, &x.ranges, x.largestDisplacement.value};
+    drawChart(dir, frameChart(caption(run, a.name, what), chart, frame, planar));
+  };
+  const StaticOutcome* statics = resultOf<StaticOutcome>(a);
+  if (!statics || statics->ownLoads || p.cases.empty())
+    draw(p.stations, *p.extremes->own, "", frameShapeChart(p.stem));
+  if (p.envelopeStations.empty()) return;
+  const std::vector<CaseOutcome>& cases = casesOf(a);
+  const CaseEnvelope envelope = caseEnvelope(model, cases, p.extremes->cases);
+  for (int k : governingCombinations(envelope, planar))
+    draw(p.cases.at(k).stations, p.extremes->cases.at(k), ", combination " + cases[k].name,
+         caseFrameChart(p.stem, k + 1));
+  std::vector<std::string> names;
+  for (const CaseOutcome& c : cases)
+    if (c.combination) names.push_back(c.name);
+  drawChart(dir, frameEnvelopeChart(caption(run, a.name, ", envelope of the combinations"),
+                                    frameEnvelopeChart(p.stem), model, p.envelopeStations, names,
+                                    planar));
+  if (model.members().size() > kEnvelopeChartsUpTo) return;
+  for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
+    const std::string& member = model.members()[m].first;
+    drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),
+                                       envelopeChart(p.stem, member), p.envelopes[m],
+                                       p.envelopes[m].title()));
+  }
+}
+
 /// A static analysis' files: its fields, members, load cases, VTK and diagrams.
 void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
                       const StaticResult& statics, const fs::path& dir, bool charts) {
@@ -114,20 +154,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   if (charts && !p.stations.empty() && p.members.empty())
     drawChart(dir, staticDiagrams(caption(run, a.name), diagramsChart(p.stem),
                                   {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
-  if (charts && !p.members.empty()) {
-    // A frame: the whole structure at once, not a line coordinate through its members.
-    const StationsByElement byElement(p.stations, model.elements().size());
-    const StaticExtremes& own = *p.extremes->own;
-    const FrameDrawing frame{&model, &byElement, &own.ranges, own.largestDisplacement.value};
-    drawChart(dir, frameChart(caption(run, a.name), frameShapeChart(p.stem), frame,
-                              run.dimension == "planar"));
-    for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
-      const std::string& member = model.members()[m].first;
-      drawChart(dir, memberEnvelopeChart(caption(run, a.name, ", envelope of " + member),
-                                         envelopeChart(p.stem, member), p.envelopes[m],
-                                         p.envelopes[m].title()));
-    }
-  }
+  if (charts && !p.members.empty()) drawFrameCharts(prepared, p, dir);
 }
 
 /// A modal analysis' files: its frequencies, shapes, one VTK file per mode and the chart.

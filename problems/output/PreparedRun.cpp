@@ -46,9 +46,15 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
     }
   if (combinations.empty()) return;
   for (const auto& [name, elements] : model.members())
-    p.envelopes.push_back(memberEnvelopeTable(
-        envelopeCsv(p.stem, name), memberEnvelope(combinations, elements, kIntervalsPerElement),
-        names));
+    p.envelopeStations.push_back(memberEnvelope(combinations, elements, kIntervalsPerElement));
+  if (oneMembersTable(model)) {
+    p.envelopes.push_back(
+        membersEnvelopeTable(envelopesCsv(p.stem), model, p.envelopeStations, names));
+    return;
+  }
+  for (std::size_t m = 0; m < model.members().size(); ++m)
+    p.envelopes.push_back(memberEnvelopeTable(envelopeCsv(p.stem, model.members()[m].first),
+                                              p.envelopeStations[m], names));
 }
 
 /// A static analysis sampled along the line, its fields and member tables, and its cases.
@@ -77,7 +83,7 @@ PreparedRun prepareRun(const RunResult& run) {
   PreparedRun prepared{&run, runExtremes(run), {}, {}};
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
-    PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
             [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p); },

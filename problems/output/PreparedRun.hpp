@@ -41,7 +41,10 @@ struct PreparedAnalysis {
   /// Statics of a frame: <stem>_member_<name>.csv each, or the one <stem>_members.csv
   /// (oneMembersTable).
   std::vector<CsvTable> members;
-  std::vector<CsvTable> envelopes;      ///< frame with combinations: <stem>_envelope_<name>.csv
+  /// Frame with combinations: <stem>_envelope_<name>.csv each, or the one
+  /// <stem>_envelopes.csv (oneMembersTable); the envelope along each member they hold.
+  std::vector<CsvTable> envelopes;
+  std::vector<std::vector<EnvelopeStation>> envelopeStations;
   std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
 

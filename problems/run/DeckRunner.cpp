@@ -66,25 +66,27 @@ CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
   return out;
 }
 
-/// Each load case as a loading of the one model, all solved with one factorisation of K (one
-/// more right-hand side each), then each combination as the factored sum of its cases.
-std::vector<CaseOutcome> solveCases(const Deck& deck, const Model& model,
-                                    const StaticOptions& options) {
-  std::vector<CaseOutcome> out;
+/// The deck's own loads and each load case as loadings of the one model, all solved with one
+/// factorisation of K (one more right-hand side each), then each combination as the factored
+/// sum of its cases.
+StaticOutcome solveWithCases(const Deck& deck, const Model& model, const StaticOptions& options) {
+  StaticOutcome statics;
+  std::vector<CaseOutcome>& out = statics.cases;
   out.reserve(deck.loadCases.size() + deck.combinations.size());  // `cases` below stays valid
-  std::vector<const Loading*> loadings;
+  std::vector<const Loading*> loadings{nullptr};  // the model's own loads first
   for (const DeckLoadCase& lc : deck.loadCases) {
     out.push_back({lc.name, false, {},
                    std::make_shared<const Loading>(loadingOf(deck, model, lc.loads)), {}, {}});
     loadings.push_back(out.back().loading.get());
   }
   std::vector<StaticResult> results = solveLoadings(model, loadings, options);
-  for (std::size_t i = 0; i < results.size(); ++i) out[i].statics = std::move(results[i]);
+  statics.statics = std::move(results.front());
+  for (std::size_t i = 1; i < results.size(); ++i) out[i - 1].statics = std::move(results[i]);
   const std::span<const CaseOutcome> cases(out.data(), out.size());
   for (const DeckCombination& k : deck.combinations) out.push_back(combinationOf(k, model, cases));
   for (CaseOutcome& c : out)
     if (auto w = displacementWarning(model, c.statics)) c.warnings.push_back(*w);
-  return out;
+  return statics;
 }
 
 AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model,
@@ -99,10 +101,14 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
               if (spec.secondOrder) return solveSecondOrder(model);
               StaticOptions options;
               if (cache) options.reuse = &cache->statics;
-              StaticOutcome statics{solveStatic(model, options), {}};
+              // Load cases share the factorisation of the deck's own loads (no contacts then:
+              // the reader refuses cases with contacts).
+              StaticOutcome statics = deck.loadCases.empty()
+                                          ? StaticOutcome{solveStatic(model, options), {}}
+                                          : solveWithCases(deck, model, options);
+              statics.ownLoads = !deck.loads.empty();
               if (auto w = overRefinementWarning(model, statics.statics)) out.warnings.push_back(*w);
               if (auto w = displacementWarning(model, statics.statics)) out.warnings.push_back(*w);
-              statics.cases = solveCases(deck, model, options);
               return statics;
             },
             [&](const BucklingSpec& spec) -> AnalysisResult {

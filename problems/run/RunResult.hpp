@@ -63,6 +63,9 @@ struct CaseOutcome {
 struct StaticOutcome {
   StaticResult statics;
   std::vector<CaseOutcome> cases;  ///< the load cases, then the combinations
+  /// Whether the deck's `loads:` loads the structure; false when only its load cases do (the
+  /// solution above is then the unloaded one, which the summary and charts leave out).
+  bool ownLoads = true;
 };
 
 /// What one analysis produced: one value type per kind of result. A static analysis with

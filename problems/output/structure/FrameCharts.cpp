@@ -120,6 +120,89 @@ std::string plotOf(bool planar, const std::vector<std::string>& clauses) {
   return s + "\n";
 }
 
+/// How the panels of a chart of `panels` panels lie: side by side, or one above the other when
+/// the frame is long and flat (a continuous beam), each as tall as its drawing.
+struct PanelGrid {
+  int rows = 1, columns = 1, width = 1200, height = 560;
+};
+
+/// The drawn ranges of a planar frame (x and y, m) at true proportions: the frame with room
+/// for the diagrams across it, and at least a fifth of its length tall so that a flat frame's
+/// panel does not shrink to a sliver crowded with ticks.
+struct PlanarRanges {
+  double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  double aspect() const { return (y1 - y0) / (x1 - x0); }
+};
+
+/// The smallest box holding the model's nodes, and its largest side (m; 1 without nodes).
+struct Extent {
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
+  double size = 1;
+};
+Extent extentOf(const Model& model) {
+  Extent e;
+  for (const auto& x : model.nodes()) e.low = e.low.cwiseMin(x), e.high = e.high.cwiseMax(x);
+  if (!model.nodes().empty()) e.size = std::max((e.high - e.low).maxCoeff(), 1e-30);
+  return e;
+}
+
+PlanarRanges planarRanges(const Eigen::Vector3d& low, const Eigen::Vector3d& high, double size) {
+  // Diagrams stand off the members by up to kDiagramShare of the size, on either side.
+  const double margin = kDiagramShare * size + 0.05 * size;
+  const double half = std::max(0.5 * (high.y() - low.y()) + margin, 0.1 * size);
+  const double middle = 0.5 * (low.y() + high.y());
+  return {low.x() - margin, high.x() + margin, middle - half, middle + half};
+}
+
+/// Panels side by side for a planar frame about as tall as wide, else one above the other, each
+/// sized to its drawing; a 3d frame's side by side.
+PanelGrid panelGrid(int panels, bool planar, const PlanarRanges& r) {
+  if (!planar) return {1, panels, 1300, 640};
+  if (panels == 1 || r.aspect() > 0.5) {
+    const int width = panels == 1 ? 1000 : 1200;
+    const int plot = (width - 100 * panels) / panels;  // each panel's plot width in pixels
+    return {1, panels, width, std::clamp(int(200 + plot * r.aspect()), 360, 800)};
+  }
+  const int plot = 900;
+  return {panels, 1, 1000, std::clamp(int(120 + panels * (plot * r.aspect() + 100)), 400, 1000)};
+}
+
+/// Equal scales on every axis: a planar frame in its plane, a 3d frame in a 3d view with
+/// global y (up) vertical. The vertical range holds the magnified shape and the diagrams (a
+/// flat frame would otherwise get a sliver of an axis crowded with ticks); the view shrunk a
+/// little and the z ticks moved off the corner they share with the x axis' last tick.
+std::string axesSetup(bool planar, const Eigen::Vector3d& low, const Eigen::Vector3d& high,
+                      double size) {
+  if (planar) {
+    const PlanarRanges r = planarRanges(low, high, size);
+    std::string out = "  set size ratio -1\n  set xlabel 'x [m]'\n  set ylabel 'y [m]'\n";
+    out += "  set xrange [" + number(r.x0) + ":" + number(r.x1) + "]\n";
+    out += "  set yrange [" + number(r.y0) + ":" + number(r.y1) + "]\n";
+    return out;
+  }
+  std::string out = "  set view equal xyz\n  set view 64, 28, 0.9\n  set ytics offset 1.5,0\n";
+  out += "  set zrange [" + number(low.y() - 0.2 * size) + ":" + number(high.y() + 0.2 * size);
+  out += "]\n  set xyplane at " + number(low.y() - 0.2 * size);
+  out += "\n  set xlabel 'x [m]'\n  set ylabel 'z [m]'\n  set zlabel 'y [m]'\n";
+  return out;
+}
+
+/// Where a moment of component k (Mz or My) of value M is drawn from its place on element
+/// `element`: across the member on its tension side (Mz > 0 stretches the fibres on local -y,
+/// My > 0 those on local +z), `scale` m per N m.
+Eigen::Vector3d momentOffset(const Model& model, int element, ForceComponent k, double M,
+                             double scale) {
+  const Eigen::Matrix3d R = asLine(model.elements()[element])->localAxes();
+  return scale * M *
+         (k == ForceComponent::Mz ? Eigen::Vector3d(-R.row(1).transpose())
+                                  : Eigen::Vector3d(R.row(2).transpose()));
+}
+
+/// "linecolor rgb '...'" without its "linecolor ": a label's textcolor.
+std::string textColour(std::size_t i) {
+  return colour(i).substr(std::string("linecolor ").size());
+}
+
 /// A moment to label: its value, where it is drawn and the component.
 struct MomentLabel {
   double value = 0;
@@ -139,9 +222,7 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   const Coordinates coordinates(planar);
 
   // 1. Scales: the frame's size against the largest displacement and moment.
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
-  for (const auto& x : model.nodes()) low = low.cwiseMin(x), high = high.cwiseMax(x);
-  const double size = model.nodes().empty() ? 1 : std::max((high - low).maxCoeff(), 1e-30);
+  const auto [low, high, size] = extentOf(model);
   const double largestU = frame.largestDisplacement;
   const double magnify = largestU > 0 ? roundFactor(kDeformedShare * size / largestU) : 1;
   const std::vector<ForceComponent> moments =
@@ -194,13 +275,8 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
       const ForceComponent k = moments[c];
       const ComponentRange& r = ranges[m][int(k)];
       if (!(std::max(std::abs(r.max.value), std::abs(r.min.value)) > 1e-9 * largestM)) continue;
-      // Mz > 0 stretches the fibres on local -y, My > 0 those on local +z: the diagram lies
-      // on the tension side.
       const auto offset = [&](int element, double value) {
-        const Eigen::Matrix3d R = asLine(model.elements()[element])->localAxes();
-        return Eigen::Vector3d(perMoment * value *
-                               (k == ForceComponent::Mz ? Eigen::Vector3d(-R.row(1).transpose())
-                                                        : Eigen::Vector3d(R.row(2).transpose())));
+        return momentOffset(model, element, k, value, perMoment);
       };
       for (const StaticStation* st : along) {
         const Eigen::Vector3d x = placeOnElement(model, st->place.element, st->place.s);
@@ -220,24 +296,16 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   if (labels.size() > kMomentLabels) labels.resize(kMomentLabels);
 
   // 3. The panels' common set-up: equal scales on every axis.
-  const int width = planar ? 1200 : 1300, height = planar ? 560 : 640;
+  const PanelGrid grid = panelGrid(2, planar, planarRanges(low, high, size));
+  const int width = grid.width, height = grid.height;
   std::string data = outline.finished();
   for (std::size_t c = 0; c < moments.size(); ++c)
     data += diagrams[c].finished() + hatches[c].finished();
   std::ostringstream body;
-  body << "  set encoding utf8\n" << panelLayout(1, 2, caption, width, height) << "  unset key\n"
+  body << "  set encoding utf8\n"
+       << panelLayout(grid.rows, grid.columns, caption, width, height) << "  unset key\n"
        << "  set grid\n";
-  if (planar)
-    body << "  set size ratio -1\n  set xlabel 'x [m]'\n  set ylabel 'y [m]'\n"
-         << "  set offsets graph 0.08, graph 0.08, graph 0.08, graph 0.08\n";
-  else
-    // The vertical range holds the magnified shape and the diagrams (a flat frame would
-    // otherwise get a sliver of an axis crowded with ticks).
-    // Shrunk a little and the z ticks moved off the corner they share with the x axis' last tick.
-    body << "  set view equal xyz\n  set view 64, 28, 0.9\n  set ytics offset 1.5,0\n  set zrange ["
-         << number(low.y() - 0.2 * size) << ":" << number(high.y() + 0.2 * size)
-         << "]\n  set xyplane at " << number(low.y() - 0.2 * size)
-         << "\n  set xlabel 'x [m]'\n  set ylabel 'z [m]'\n  set zlabel 'y [m]'\n";
+  body << axesSetup(planar, low, high, size);
   const std::string undeformedStyle = " with lines linewidth 1.5 dashtype 2 linecolor rgb 'gray55'";
   const std::string first = coordinates.columns(), second = coordinates.columns(1 + int(coordinates.count()));
 
@@ -280,7 +348,7 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
     text += value;
     body << "  set label " << gnuplotText(text) << " at " << coordinates.text(l.tip, ", ")
          << (rightmost ? " right offset -0.4,0.4" : " offset 0.4,0.4") << " textcolor "
-         << colour(l.colourIndex).substr(std::string("linecolor ").size()) << "\n";
+         << textColour(l.colourIndex) << "\n";
   }
   std::string title = planar ? "bending moment M_z" : "bending moments M_z (red), M_y (green)";
   title += " [kN m], drawn on the tension side";
@@ -295,6 +363,142 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
        << "  unset multiplot\n";
   return {chartName, "Deformed shape and bending moment diagram of the frame", width, height,
           body.str(), data};
+}
+
+ChartScript frameEnvelopeChart(const std::string& caption, const std::string& chartName,
+                               const Model& model,
+                               const std::vector<std::vector<EnvelopeStation>>& envelope,
+                               const std::vector<std::string>& names, bool planar) {
+  const auto& members = model.members();
+  const Coordinates coordinates(planar);
+  const auto [low, high, size] = extentOf(model);
+  const std::vector<ForceComponent> moments =
+      planar ? std::vector<ForceComponent>{ForceComponent::Mz}
+             : std::vector<ForceComponent>{ForceComponent::Mz, ForceComponent::My};
+
+  // 1. Each member's largest |moment| over the envelope, and the largest of all.
+  std::vector<double> memberMoment(members.size(), 0);
+  for (std::size_t m = 0; m < members.size() && m < envelope.size(); ++m)
+    for (const EnvelopeStation& st : envelope[m])
+      for (ForceComponent k : moments)
+        memberMoment[m] = std::max({memberMoment[m], std::abs(st.max[int(k)]),
+                                    std::abs(st.min[int(k)])});
+  const double largestM =
+      memberMoment.empty() ? 0 : *std::max_element(memberMoment.begin(), memberMoment.end());
+  const double perMoment = largestM > 0 ? kDiagramShare * size / largestM : 0;
+
+  // 2. The outline: every member's envelope places, or its ends when they pass the budget.
+  std::size_t places = 0;
+  for (const auto& along : envelope) places += along.size();
+  Datablock outline("$outline");
+  for (const auto& along : envelope) {
+    for (std::size_t i = 0; i < along.size(); ++i)
+      if (places <= kOutlinePoints || i == 0 || i + 1 == along.size())
+        outline.line(coordinates.text(placeOnElement(model, along[i].element, along[i].s)));
+    outline.endCurve();
+  }
+
+  // 3. The bands of the members of the largest moments, and the frame's extremes.
+  std::vector<std::size_t> order(members.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return memberMoment[a] > memberMoment[b]; });
+  std::vector<Datablock> largest, smallest, bands;
+  struct Extreme {
+    double value = 0;
+    int by = -1;
+    Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+  };
+  std::vector<std::array<Extreme, 2>> extremes(moments.size());  // largest, smallest
+  for (ForceComponent k : moments) {
+    const std::string name = componentName(k);
+    largest.emplace_back("$" + name + "_max");
+    smallest.emplace_back("$" + name + "_min");
+    bands.emplace_back("$" + name + "_band");
+  }
+  std::size_t drawnMembers = 0, drawnPoints = 0;
+  for (std::size_t m : order) {
+    if (m >= envelope.size() || !(memberMoment[m] > 1e-9 * largestM)) break;
+    if (drawnMembers == kDiagramMembers ||
+        (drawnPoints + envelope[m].size() > kDiagramPoints && drawnMembers > 0))
+      break;
+    drawnPoints += envelope[m].size();
+    ++drawnMembers;
+    for (std::size_t c = 0; c < moments.size(); ++c) {
+      const ForceComponent k = moments[c];
+      for (const EnvelopeStation& st : envelope[m]) {
+        const Eigen::Vector3d x = placeOnElement(model, st.element, st.s);
+        const Eigen::Vector3d hi = x + momentOffset(model, st.element, k, st.max[int(k)], perMoment);
+        const Eigen::Vector3d lo = x + momentOffset(model, st.element, k, st.min[int(k)], perMoment);
+        largest[c].line(coordinates.text(hi));
+        smallest[c].line(coordinates.text(lo));
+        bands[c].line(coordinates.text(lo) + "," + coordinates.text(hi - lo));
+        Extreme& top = extremes[c][0];
+        Extreme& bottom = extremes[c][1];
+        if (top.by < 0 || st.max[int(k)] > top.value) top = {st.max[int(k)], st.maxBy[int(k)], hi};
+        if (bottom.by < 0 || st.min[int(k)] < bottom.value)
+          bottom = {st.min[int(k)], st.minBy[int(k)], lo};
+      }
+      largest[c].endCurve();
+      smallest[c].endCurve();
+    }
+  }
+
+  // 4. One panel per moment: the outline, the band hatched between its largest (red) and
+  //    smallest (blue) curve, the extremes labelled with their combinations.
+  std::string data = outline.finished();
+  for (std::size_t c = 0; c < moments.size(); ++c)
+    data += largest[c].finished() + smallest[c].finished() + bands[c].finished();
+  const PanelGrid grid = panelGrid(int(moments.size()), planar, planarRanges(low, high, size));
+  const int width = grid.width, height = grid.height;
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(grid.rows, grid.columns, caption, width, height) << "  unset key\n"
+       << "  set grid\n" << axesSetup(planar, low, high, size);
+  const std::string first = coordinates.columns(),
+                    second = coordinates.columns(1 + int(coordinates.count()));
+  for (std::size_t c = 0; c < moments.size(); ++c) {
+    const std::string name = componentName(moments[c]);
+    body << "  unset label\n";
+    for (std::size_t e = 0; e < 2; ++e) {
+      const Extreme& x = extremes[c][e];
+      if (x.by < 0 || !(std::abs(x.value) > 1e-9 * largestM)) continue;
+      char value[32];
+      std::snprintf(value, sizeof value, "%.3g", x.value * 1e-3);
+      std::string text = value;
+      text += " (";
+      text += names.at(std::size_t(x.by));
+      text += ")";
+      body << "  set label " << gnuplotText(text) << " at " << coordinates.text(x.tip, ", ")
+           << " offset 0.4," << (e == 0 ? "0.6" : "-0.6") << " textcolor "
+           << textColour(e == 0 ? 1 : 0) << " front\n";
+    }
+    std::string title = "envelope of ";
+    title += name == "Mz" ? "M_z" : "M_y";
+    title += " over the combinations [kN m]: largest (red), smallest (blue)";
+    if (drawnMembers < members.size() && drawnMembers > 0) {
+      title += "\n(the ";
+      title += std::to_string(drawnMembers);
+      title += " members of largest |M| among ";
+      title += std::to_string(members.size());
+      title += ")";
+    }
+    body << "  set title " << captionText(title) << "\n";
+    std::vector<std::string> clauses{outline.name() + " using " + first +
+                                     " with lines linewidth 2 linecolor rgb 'gray30'"};
+    if (!largest[c].empty()) {
+      clauses.push_back(bands[c].name() + " using " + first + ":" + second +
+                        " with vectors nohead linewidth 0.6 linecolor rgb 'gray65'");
+      clauses.push_back(largest[c].name() + " using " + first + " with lines linewidth 2 " +
+                        colour(1));
+      clauses.push_back(smallest[c].name() + " using " + first + " with lines linewidth 2 " +
+                        colour(0));
+    }
+    body << plotOf(planar, clauses);
+  }
+  body << "  unset multiplot\n";
+  return {chartName, "Envelope of the bending moments over the load combinations", width,
+          height, body.str(), data};
 }
 
 }  // namespace beamrotor

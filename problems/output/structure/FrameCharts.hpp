@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/assembly/MemberEnvelope.hpp"
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/Model.hpp"
 #include "problems/output/files/Gnuplot.hpp"
@@ -43,5 +44,17 @@ struct FrameDrawing {
 /// a 3d one, each along the local axis that shows its tension side).
 ChartScript frameChart(const std::string& caption, const std::string& chartName,
                        const FrameDrawing& frame, bool planar);
+
+/// The envelope of the bending moments over the load combinations drawn on the frame: one
+/// panel per moment (Mz in a planar frame; Mz and My in a 3d one), on each member the largest
+/// and smallest value along it (memberEnvelope, one list per member in Model::members() order)
+/// drawn as the moment diagram is, the band between them hatched; the frame's largest and
+/// smallest value labelled with the combination that governs it (`names`, by the stations'
+/// maxBy and minBy). The same bounds as frameChart: the outline within kOutlinePoints, the
+/// bands of the kDiagramMembers members of the largest moments.
+ChartScript frameEnvelopeChart(const std::string& caption, const std::string& chartName,
+                               const Model& model,
+                               const std::vector<std::vector<EnvelopeStation>>& envelope,
+                               const std::vector<std::string>& names, bool planar);
 
 }  // namespace beamrotor

@@ -100,8 +100,22 @@ std::string envelopeCsv(const std::string& stem, const std::string& member) {
   return stem + "_envelope_" + member + ".csv";
 }
 
-CsvTable memberEnvelopeTable(const std::string& title, const std::vector<EnvelopeStation>& stations,
-                             const std::vector<std::string>& solutionNames) {
+std::string envelopesCsv(const std::string& stem) {
+  return stem + "_envelopes.csv";
+}
+
+std::string envelopeCsvOf(const Model& model, const std::string& stem, const std::string& member) {
+  return oneMembersTable(model) ? envelopesCsv(stem) : envelopeCsv(stem, member);
+}
+
+bool caseMemberDetail(const Model& model, std::size_t cases) {
+  return model.members().size() * cases <= kCaseMemberEntries;
+}
+
+namespace {
+
+/// The envelope table's columns, after `member` when the table holds every member.
+std::vector<CsvColumn> envelopeColumns(bool named) {
   std::vector<CsvColumn> columns{{"s", "m"}, {"element", ""}};
   for (ForceComponent c : kForceComponents) {
     const std::string name = componentName(c);
@@ -112,9 +126,18 @@ CsvTable memberEnvelopeTable(const std::string& title, const std::vector<Envelop
     columns.push_back({name + "_min", unit});
     columns.push_back({name + "_min_case", ""});
   }
-  CsvTable table(title, columns);
+  if (named) columns.insert(columns.begin(), {"member", ""});
+  return columns;
+}
+
+/// The rows of one member's envelope, `name` first when given.
+void addEnvelopeRows(CsvTable& table, const std::vector<EnvelopeStation>& stations,
+                     const std::vector<std::string>& solutionNames, const std::string* name) {
   for (const EnvelopeStation& st : stations) {
-    std::vector<CsvCell> row{st.along, (long long)st.element};
+    std::vector<CsvCell> row;
+    if (name) row.emplace_back(std::in_place_type<std::string>, *name);
+    row.emplace_back(std::in_place_type<double>, st.along);
+    row.emplace_back(std::in_place_type<long long>, st.element);
     // Each cell made in place: moving a variant that may hold a string draws a false
     // -Wmaybe-uninitialized from GCC 12 in some unity batches.
     for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
@@ -123,8 +146,25 @@ CsvTable memberEnvelopeTable(const std::string& title, const std::vector<Envelop
       row.emplace_back(std::in_place_type<double>, st.min[c]);
       row.emplace_back(std::in_place_type<std::string>, solutionNames.at(st.minBy[c]));
     }
-    table.addRow(row);
+    table.addRow(std::move(row));
   }
+}
+
+}  // namespace
+
+CsvTable memberEnvelopeTable(const std::string& title, const std::vector<EnvelopeStation>& stations,
+                             const std::vector<std::string>& solutionNames) {
+  CsvTable table(title, envelopeColumns(false));
+  addEnvelopeRows(table, stations, solutionNames, nullptr);
+  return table;
+}
+
+CsvTable membersEnvelopeTable(const std::string& title, const Model& model,
+                              const std::vector<std::vector<EnvelopeStation>>& stations,
+                              const std::vector<std::string>& solutionNames) {
+  CsvTable table(title, envelopeColumns(true));
+  for (std::size_t m = 0; m < model.members().size(); ++m)
+    addEnvelopeRows(table, stations.at(m), solutionNames, &model.members()[m].first);
   return table;
 }
 

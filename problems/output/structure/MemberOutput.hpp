@@ -45,12 +45,29 @@ CsvTable membersTable(const std::string& title, const Model& model,
 
 /// `<stem>_envelope_<name>.csv`.
 std::string envelopeCsv(const std::string& stem, const std::string& member);
+/// `<stem>_envelopes.csv`: every member's envelope in one table (oneMembersTable).
+std::string envelopesCsv(const std::string& stem);
+/// The CSV file that holds member `member`'s envelope: its own, or the one envelopes table.
+std::string envelopeCsvOf(const Model& model, const std::string& stem, const std::string& member);
+
+/// Whether results.json and the cases CSV give each load case's and combination's member
+/// extremes: while members times cases stay within kCaseMemberEntries. Beyond, each case keeps
+/// its reactions, point displacements, largest displacement and stresses, and the envelope
+/// gives every member's extremes over the combinations with the one that governs each.
+inline constexpr std::size_t kCaseMemberEntries = 20000;
+bool caseMemberDetail(const Model& model, std::size_t cases);
 
 /// The envelope over the combinations along one member (memberEnvelope), one row per place:
 /// s (m from its start), element, then for each of N Vy Vz T My Mz its largest value, the
 /// combination giving it, its smallest value and the combination giving that.
 CsvTable memberEnvelopeTable(const std::string& title, const std::vector<EnvelopeStation>& stations,
                              const std::vector<std::string>& solutionNames);
+
+/// Every member's envelope (memberEnvelope of each, Model::members() order) in one table, each
+/// row led by a `member` column.
+CsvTable membersEnvelopeTable(const std::string& title, const Model& model,
+                              const std::vector<std::vector<EnvelopeStation>>& stations,
+                              const std::vector<std::string>& solutionNames);
 
 /// {"NAME": {"length", "elements", "from", "to", "N": {"max": {value, s, x, y, z, element},
 /// "min": {...}}, ... "Mz": ..., "chord_deflection": {value, s, x, y, z, element}, "csv"}}; "csv"
