@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/cli/ExitCodes.hpp"
@@ -104,10 +105,12 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     if (inside)
       also = [&](const fs::path& temporary) { exportStudyMatrices(s, temporary / inResults); };
     std::string writeError;
+    std::optional<PreparedRun> prepared;  // the run's extremes, computed once for the summary too
     try {
-      if (s.run)
-        writeRunOutputs(*s.run, dir, also);
-      else
+      if (s.run) {
+        prepared = prepareRun(*s.run);
+        writePreparedRun(*prepared, dir, also);
+      } else
         writeSweepOutputs(*s.sweep, dir, also);
       if (options.exportMatrices && !inside)
         writeDirectoryAtomically(
@@ -120,7 +123,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     // 3. The summary.
     printHeader(out, s, options.study);
     if (s.run)
-      printRunResults(out, s.deck, *s.run);
+      printRunResults(out, s.deck, *s.run, prepared ? &prepared->extremes : nullptr);
     else
       printSweepResults(out, s.deck, *s.sweep);
     printSweepPeaks(out, s, options.study.deckPath);

@@ -370,16 +370,6 @@ Json reactionsJson(const StaticResult& r) {
   return out;
 }
 
-std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
-  std::vector<AnalysisExtremes> out(run.analyses.size());
-  for (std::size_t i = 0; i < run.analyses.size(); ++i) {
-    const AnalysisOutcome& a = run.analyses[i];
-    if (const StaticResult* s = staticsOf(a)) out[i].own = staticExtremes({*run.model, s->displacement});
-    for (const CaseOutcome& c : casesOf(a)) out[i].cases.push_back(staticExtremes(c.on(*run.model)));
-  }
-  return out;
-}
-
 Json runJson(const RunResult& run) {
   if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
   return runJson(run, runExtremes(run));

@@ -52,8 +52,6 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
 /// The same, the extremes computed here.
 Json runJson(const RunResult& run);
 
-/// The extremes of each analysis of a run, as runJson reads them.
-std::vector<AnalysisExtremes> runExtremes(const RunResult& run);
 
 /// sweep.json from the values and each value's results.json (runDocs) and sub-directory.
 Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,

@@ -212,7 +212,10 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 }  // namespace
 
 void writeRunOutputs(const RunResult& run, const fs::path& dir, const AlsoWrite& also) {
-  const PreparedRun prepared = prepareRun(run);
+  writePreparedRun(prepareRun(run), dir, also);
+}
+
+void writePreparedRun(const PreparedRun& prepared, const fs::path& dir, const AlsoWrite& also) {
   writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
     writeRunFiles(prepared, temporary, /*charts=*/true);
     if (also) also(temporary);

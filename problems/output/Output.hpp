@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "problems/output/PreparedRun.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
@@ -17,6 +18,10 @@ using AlsoWrite = std::function<void(const std::filesystem::path&)>;
 /// All outputs of one run into dir (replacing an earlier run's directory).
 void writeRunOutputs(const RunResult& run, const std::filesystem::path& dir,
                      const AlsoWrite& also = {});
+/// The same from the run already prepared (prepareRun, PreparedRun.hpp), whose extremes the
+/// caller may go on to read (the summary).
+void writePreparedRun(const PreparedRun& prepared, const std::filesystem::path& dir,
+                      const AlsoWrite& also = {});
 
 /// All outputs of a sweep into dir: one sub-directory per value plus the sweep tables,
 /// charts and a .pvd series.

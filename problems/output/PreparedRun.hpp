@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "fem/assembly/MemberEnvelope.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/structure/LineSampling.hpp"

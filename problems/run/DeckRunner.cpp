@@ -106,7 +106,9 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
               StaticOutcome statics = deck.loadCases.empty()
                                           ? StaticOutcome{solveStatic(model, options), {}}
                                           : solveWithCases(deck, model, options);
-              statics.ownLoads = !deck.loads.empty();
+              // With load cases and an empty `loads:` (cases refuse prescribed support values)
+              // the deck's own solution is the unloaded one.
+              statics.ownLoads = !(deck.loads.empty() && !deck.loadCases.empty());
               if (auto w = overRefinementWarning(model, statics.statics)) out.warnings.push_back(*w);
               if (auto w = displacementWarning(model, statics.statics)) out.warnings.push_back(*w);
               return statics;

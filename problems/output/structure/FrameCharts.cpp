@@ -293,6 +293,18 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   std::stable_sort(labels.begin(), labels.end(), [](const MomentLabel& a, const MomentLabel& b) {
     return std::abs(a.value) > std::abs(b.value);
   });
+  // One label for a peak two members share (a continuous beam's support moment, at the end of
+  // one span and the start of the next): the same value, drawn at the same place.
+  const auto same = [&](const MomentLabel& a, const MomentLabel& b) {
+    return a.component == b.component && std::abs(a.value - b.value) <= 1e-6 * largestM &&
+           (a.tip - b.tip).norm() <= 0.02 * size;
+  };
+  std::vector<MomentLabel> distinct;
+  for (const MomentLabel& l : labels)
+    if (std::none_of(distinct.begin(), distinct.end(),
+                     [&](const MomentLabel& d) { return same(d, l); }))
+      distinct.push_back(l);
+  labels.swap(distinct);
   if (labels.size() > kMomentLabels) labels.resize(kMomentLabels);
 
   // 3. The panels' common set-up: equal scales on every axis.

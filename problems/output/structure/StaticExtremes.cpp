@@ -15,4 +15,16 @@ StaticExtremes staticExtremes(const LoadedSolution& solution) {
   return out;
 }
 
+std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
+  std::vector<AnalysisExtremes> out(run.analyses.size());
+  for (std::size_t i = 0; i < run.analyses.size(); ++i) {
+    const AnalysisOutcome& a = run.analyses[i];
+    if (const StaticResult* s = staticsOf(a))
+      out[i].own = staticExtremes({*run.model, s->displacement});
+    for (const CaseOutcome& c : casesOf(a))
+      out[i].cases.push_back(staticExtremes(c.on(*run.model)));
+  }
+  return out;
+}
+
 }  // namespace beamrotor

@@ -12,6 +12,7 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "problems/output/structure/LineSampling.hpp"
+#include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 
@@ -32,5 +33,8 @@ struct AnalysisExtremes {
   std::optional<StaticExtremes> own;
   std::vector<StaticExtremes> cases;
 };
+
+/// The extremes of each analysis of a run (run.analyses order).
+std::vector<AnalysisExtremes> runExtremes(const RunResult& run);
 
 }  // namespace beamrotor
