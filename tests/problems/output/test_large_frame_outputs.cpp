@@ -15,7 +15,8 @@
 
 using namespace beamrotor;
 
-namespace {
+// Named, not anonymous: the test sources are compiled in unity batches.
+namespace large_frame {
 
 // A continuous beam of `spans` equal spans L under a uniform q, pinned at every joint, written
 // as a planar frame of one member per span. Far from its ends it is the infinite continuous
@@ -42,7 +43,9 @@ std::string continuousBeam(int spans) {
   return d.str();
 }
 
-}  // namespace
+}  // namespace large_frame
+
+using namespace large_frame;
 
 TEST_SUITE("output") {
   TEST_CASE("above 100 members one members table holds every member, exact along each") {
