@@ -312,9 +312,14 @@ void Beam::setDistributedLoad(const Eigen::Vector3d& q) {
 
 void Beam::setDistributedLoad(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd) {
   Properties p = *p_;
-  p.qMean = p.R * (qStart + qEnd) / 2;
-  p.qHalfRise = p.R * (qEnd - qStart) / 2;
+  const ElementSpanLoad q = spanLoadOf(qStart, qEnd);
+  p.qMean = q.mean;
+  p.qHalfRise = q.halfRise;
   setProperties(std::move(p));
+}
+
+ElementSpanLoad Beam::spanLoadOf(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd) const {
+  return {p_->R * (qStart + qEnd) / 2, p_->R * (qEnd - qStart) / 2};
 }
 
 void Beam::setAxialPreload(double N) {
@@ -416,9 +421,9 @@ ElementMatrix Beam::geometricStiffness(const ElementVector& u) const {
   return toCarried(toGlobal(KG, p_->R));
 }
 
-Vector12 Beam::localLoad() const {
+Vector12 Beam::localLoad(const ElementSpanLoad& q) const {
   const double L = p_->L;
-  const Eigen::Vector3d &m = p_->qMean, &d = p_->qHalfRise;
+  const Eigen::Vector3d &m = q.mean, &d = q.halfRise;
   Vector12 f = Vector12::Zero();
   // Linear shape functions (the bar, and the linear elements' deflections): L (2 qa + qb) / 6
   // at the start, L (qa + 2 qb) / 6 at the end.
@@ -544,9 +549,9 @@ ElementMatrix Beam::gyroscopic() const {
   return toCarried(toGlobal(G, p_->R));
 }
 
-ElementVector Beam::load() const {
-  if (p_->qMean.isZero() && p_->qHalfRise.isZero()) return {};
-  Vector12 f = localLoad();
+ElementVector Beam::loadOf(const ElementSpanLoad& q) const {
+  if (q.isZero()) return {};
+  Vector12 f = localLoad(q);
   if (!p_->released.empty()) {
     Matrix12 K = localStiffness();
     condense(K, nullptr, &f);
@@ -566,11 +571,11 @@ Vector12 Beam::toLocal(const ElementVector& u) const {
   return l;
 }
 
-Vector12 Beam::localEndDisplacements(const ElementVector& u, SpanLoad load) const {
+Vector12 Beam::localEndDisplacements(const ElementVector& u, const ElementSpanLoad& q) const {
   Vector12 l = toLocal(u);
   if (p_->released.empty()) return l;
   const Matrix12 K = localStiffness();
-  const Vector12 f = load == SpanLoad::applied ? localLoad() : Vector12::Zero();
+  const Vector12 f = q.isZero() ? Vector12::Zero() : localLoad(q);
   for (int b : p_->released) l[b] = 0;  // a node may carry the axis: its value is not the end's
   const int nb = int(p_->released.size());
   Eigen::MatrixXd Kbb(nb, nb);
@@ -589,10 +594,10 @@ bool Beam::releases(int end) const {
 }
 
 std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, double s,
-                                                   SpanLoad load) const {
+                                                   const ElementSpanLoad& q) const {
   // 1. End values in the element frame; bending about local z interpolates (v, rz), about
   //    local y (w, -ry) (right-hand rule: dw/dx = -ry).
-  const Vector12 l = localEndDisplacements(u, load);
+  const Vector12 l = localEndDisplacements(u, q);
   const BeamTheory t = p_->options.theory;
   const auto [phiY, phiZ] = shearParameters();
   const Eigen::Vector4d xy(l[1], l[5], l[7], l[11]), xz(l[2], -l[4], l[8], -l[10]);
@@ -603,16 +608,16 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
 
   // 2. The span load's share: a bar fixed at both ends (EA u'' + qx = 0) and, for the elements
   //    with fixed-end moments, the clamped-clamped bending solution.
-  if (load == SpanLoad::applied && !(p_->qMean.isZero() && p_->qHalfRise.isZero())) {
+  if (!q.isZero()) {
     const Section& sec = *p_->section;
     const double x = s * p_->L, a = s * (1 - s);
     // EA u'' + qx = 0 with u = 0 at both ends: the mean's parabola and the rise's cubic.
-    d.x() += (p_->qMean.x() * a / 2 + p_->qHalfRise.x() * a * (2 * s - 1) / 6) * p_->L * p_->L /
+    d.x() += (q.mean.x() * a / 2 + q.halfRise.x() * a * (2 * s - 1) / 6) * p_->L * p_->L /
              sec.EA();
     if (!isLinear(t)) {
       const auto bending = [&](int k, double EI, double Phi) {
-        const SpanBending mean = clampedSpanBending(p_->qMean[k], EI, Phi, p_->L, x);
-        const SpanBending rise = clampedAntisymmetricBending(p_->qHalfRise[k], EI, Phi, p_->L, x);
+        const SpanBending mean = clampedSpanBending(q.mean[k], EI, Phi, p_->L, x);
+        const SpanBending rise = clampedAntisymmetricBending(q.halfRise[k], EI, Phi, p_->L, x);
         return SpanBending{mean.deflection + rise.deflection, mean.rotation + rise.rotation};
       };
       const SpanBending y = bending(1, sec.EIz(), phiY);
@@ -629,13 +634,14 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
   return {dg.x(), dg.y(), dg.z(), rg.x(), rg.y(), rg.z()};
 }
 
-SectionForceSeries Beam::sectionForceSeries(const ElementVector& u) const {
+SectionForceSeries Beam::sectionForceSeries(const ElementVector& u,
+                                            const ElementSpanLoad& q) const {
   // Forces the nodes exert on the element (local frame): K l - f with the released rotations
   // recovered, which vanishes on their rows; then equilibrium of the part [0, x = s L].
   // With q(s) = qa + (qb - qa) s: the load on [0, x] is qa L s + (qb - qa) L s^2 / 2 and its
   // moment about the cut qa L^2 s^2 / 2 + (qb - qa) L^2 s^3 / 6.
-  const Vector12 F = localStiffness() * localEndDisplacements(u, SpanLoad::applied) - localLoad();
-  const Eigen::Vector3d qa = p_->qMean - p_->qHalfRise, rise = 2 * p_->qHalfRise;
+  const Vector12 F = localStiffness() * localEndDisplacements(u, q) - localLoad(q);
+  const Eigen::Vector3d qa = q.mean - q.halfRise, rise = 2 * q.halfRise;
   const double L = p_->L;
   SectionForceSeries r;
   r.c[0] = {-F[0], -F[1], -F[2], -F[3], -F[4], -F[5]};

@@ -76,7 +76,11 @@ class Beam : public LineElement {
   /// Geometric stiffness of the axial force the state u puts in the beam (linear along it
   /// under an axial span load), global frame, releases condensed as in mass().
   ElementMatrix geometricStiffness(const ElementVector& u) const override;
-  ElementVector load() const override;
+  ElementVector load() const override { return loadOf(spanLoad()); }
+  ElementSpanLoad spanLoad() const override { return {p_->qMean, p_->qHalfRise}; }
+  ElementSpanLoad spanLoadOf(const Eigen::Vector3d& qStart,
+                             const Eigen::Vector3d& qEnd) const override;
+  ElementVector loadOf(const ElementSpanLoad& q) const override;
   std::string kind() const override;
   /// Same section object, carried dofs, options, length, axes, preload, span load and
   /// releases.
@@ -86,14 +90,17 @@ class Beam : public LineElement {
   double length() const override { return p_->L; }
   const Section& section() const override { return *p_->section; }
   Eigen::Matrix3d localAxes() const override { return p_->R; }
-  SectionForceSeries sectionForceSeries(const ElementVector& u) const override;
+  using LineElement::displacementAt;
+  using LineElement::sectionForceSeries;
+  SectionForceSeries sectionForceSeries(const ElementVector& u,
+                                        const ElementSpanLoad& q) const override;
   /// Axial displacement and twist linear (plus the bar's share of an axial span load);
   /// deflections and section rotations by the theory's own shape functions (Hermite cubics,
   /// the interdependent interpolation, or linear), which are exact for end-loaded elements,
   /// plus with `load` the clamped-clamped solution of the linear span load (exact for
   /// Euler-Bernoulli and interdependent Timoshenko elements; not added to the linear ones).
   std::array<double, kDofKinds> displacementAt(const ElementVector& u, double s,
-                                               SpanLoad load) const override;
+                                               const ElementSpanLoad& q) const override;
   bool releases(int end) const override;
   const BeamOptions& options() const { return p_->options; }
 
@@ -105,7 +112,9 @@ class Beam : public LineElement {
   /// Local gyroscopic matrix (skew-symmetric), local dofs as localMass(); zero without
   /// rotary inertia.
   Matrix12 localGyroscopic() const;
-  Vector12 localLoad() const;
+  /// Fixed-end forces of span load q (local dofs, before releases); localLoad() of its own.
+  Vector12 localLoad(const ElementSpanLoad& q) const;
+  Vector12 localLoad() const { return localLoad(spanLoad()); }
   /// Local geometric stiffness for an axial force varying linearly from N0 at the start to N1
   /// at the end (N, tension positive), local dofs as localStiffness():
   ///   bending, each plane: int N(x) v'^T v' dx with the deflection interpolation v of the
@@ -129,8 +138,8 @@ class Beam : public LineElement {
   Vector12 toLocal(const ElementVector& u) const;
   /// The 12 local end displacements with every released rotation recovered from the
   /// condensation: the released rows of K l = f (no end moment there) give
-  /// Kbb l_b = f_b - Kba l_a, f the span load's fixed-end forces when `load` is applied.
-  Vector12 localEndDisplacements(const ElementVector& u, SpanLoad load) const;
+  /// Kbb l_b = f_b - Kba l_a, f the fixed-end forces of span load q.
+  Vector12 localEndDisplacements(const ElementVector& u, const ElementSpanLoad& q) const;
 
   /// Everything a beam has but its nodes. The beams of a uniform run (a line's segment) share
   /// one, so each holds 32 bytes, where a beam with its own took 320 (a planar line of 10^6

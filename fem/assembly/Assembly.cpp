@@ -274,9 +274,13 @@ ElementVector gather(const Element& e, const DofMap& dofs, const Eigen::VectorXd
   return ue;
 }
 
-Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs) {
+namespace {
+
+/// Full-length vector of point loads on the model's dofs.
+Eigen::VectorXd pointLoadVector(const Model& model, const DofMap& dofs,
+                                const std::vector<NodalLoad>& loads) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.size());
-  for (const NodalLoad& l : model.loads()) {
+  for (const NodalLoad& l : loads) {
     const int eq = dofs.equation(l.node, l.dof);
     if (eq < 0)
       throw std::invalid_argument("a load acts on " + model.describe({l.node, l.dof}) +
@@ -284,6 +288,12 @@ Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs) {
     f[eq] += l.value;
   }
   return f;
+}
+
+}  // namespace
+
+Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs) {
+  return pointLoadVector(model, dofs, model.loads());
 }
 
 Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
@@ -308,26 +318,33 @@ Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs) {
 }
 
 namespace {
-/// What an element's end forces are made of (endForces).
-std::pair<ElementMatrix, ElementVector> stiffnessAndLoad(const Element& e) {
-  return {e.stiffness(), e.load()};
-}
-}  // namespace
 
-Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+/// An element's own loads (Element::load).
+ElementVector ownLoad(int, const Element& e) {
+  return e.load();
+}
+
+/// The element forces K u - f over every element, f from loadOf(index, element).
+template <class LoadOf>
+Eigen::VectorXd elementForcesWith(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
+                                  LoadOf&& loadOf) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.size());
-  ReusedForEqual<std::pair<ElementMatrix, ElementVector>> equations;
-  for (const auto& e : model.elements()) {
-    const auto d = e->dofs();
-    const auto& [K, load] = equations.of(*e, stiffnessAndLoad);
-    const ElementVector fe = endForces(K, load, gather(*e, dofs, u));
+  ReusedForEqual<ElementMatrix> stiffnessOf;
+  const auto& elements = model.elements();
+  for (int i = 0; i < int(elements.size()); ++i) {
+    const Element& e = *elements[i];
+    const auto d = e.dofs();
+    const ElementMatrix& K = stiffnessOf.of(e, [](const Element& x) { return x.stiffness(); });
+    const ElementVector fe = endForces(K, loadOf(i, e), gather(e, dofs, u));
     for (int a = 0; a < int(d.size()); ++a) r[dofs.equation(d[a])] += fe[a];
   }
   return r;
 }
 
-Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
-                                         const Eigen::VectorXd& u) {
+/// The same at the constrained dofs alone (entry k for equation freeCount + k).
+template <class LoadOf>
+Eigen::VectorXd constrainedForcesWith(const Model& model, const DofMap& dofs,
+                                      const Eigen::VectorXd& u, LoadOf&& loadOf) {
   // The elements touching a constrained dof are found part by part (a pass over every
   // element). Their forces are then added by parts that each own a range of the constrained
   // equations, in the model's order.
@@ -346,19 +363,61 @@ Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
       const int k = dofs.equation(d) - firstConstrained;
       return k >= owners[part] && k < owners[part + 1];
     };
-    // The supported elements of a uniform line are equal: their K and load computed once.
-    ReusedForEqual<std::pair<ElementMatrix, ElementVector>> equations;
+    // The supported elements of a uniform line are equal: their K computed once.
+    ReusedForEqual<ElementMatrix> stiffnessOf;
     for (int i : touching) {
       const Element& e = *elements[i];
       const auto d = e.dofs();
       if (std::none_of(d.begin(), d.end(), owned)) continue;
-      const auto& [K, load] = equations.of(e, stiffnessAndLoad);
+      const ElementMatrix& K = stiffnessOf.of(e, [](const Element& x) { return x.stiffness(); });
+      const ElementVector load = loadOf(i, e);
       const ElementVector fe = endForces(K, load, gather(e, dofs, u));
       for (int a = 0; a < int(d.size()); ++a)
         if (owned(d[a])) r[dofs.equation(d[a]) - firstConstrained] += fe[a];
     }
   });
   return r;
+}
+
+/// A loading's load on element i: its span load's equivalent nodal loads on a line element,
+/// none on the others.
+auto loadingLoad(const Loading& loading) {
+  return [&loading](int i, const Element& e) {
+    const LineElement* line = e.asLineElement();
+    return line ? line->loadOf(loading.spanOn(i)) : ElementVector();
+  };
+}
+
+}  // namespace
+
+Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs, const Loading& loading) {
+  Eigen::VectorXd f = pointLoadVector(model, dofs, loading.nodal());
+  for (int i : loading.loadedElements()) {
+    const Element& e = *model.elements().at(i);
+    const ElementVector fe = loadingLoad(loading)(i, e);
+    const auto d = e.dofs();
+    for (int a = 0; a < int(fe.size()); ++a) f[dofs.equation(d[a])] += fe[a];
+  }
+  return f;
+}
+
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+  return elementForcesWith(model, dofs, u, ownLoad);
+}
+
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
+                              const Loading& loading) {
+  return elementForcesWith(model, dofs, u, loadingLoad(loading));
+}
+
+Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
+                                         const Eigen::VectorXd& u) {
+  return constrainedForcesWith(model, dofs, u, ownLoad);
+}
+
+Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
+                                         const Eigen::VectorXd& u, const Loading& loading) {
+  return constrainedForcesWith(model, dofs, u, loadingLoad(loading));
 }
 
 void dropExactZeros(SparseMatrix& A) {

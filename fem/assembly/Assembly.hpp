@@ -9,6 +9,7 @@
 
 #include "fem/model/DofMap.hpp"
 #include "fem/model/Element.hpp"
+#include "fem/model/Loading.hpp"
 
 namespace beamrotor {
 
@@ -114,13 +115,23 @@ Eigen::VectorXd nodalLoadVector(const Model& model, const DofMap& dofs);
 /// Full-length vector of applied loads: nodal loads plus element equivalent loads.
 Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs);
 
+/// Full-length vector of a loading's loads on the model (a load case, fem/model/Loading.hpp):
+/// its point loads plus its span loads' equivalent nodal loads.
+Eigen::VectorXd loadVector(const Model& model, const DofMap& dofs, const Loading& loading);
+
 /// Full-length vector of the element forces K u - f_elem for a full-length displacement u;
 /// at a constrained dof, this minus the nodal loads there is the support reaction.
 Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u);
+/// The same with each element's load that of `loading` in place of its own.
+Eigen::VectorXd elementForces(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u,
+                              const Loading& loading);
 
 /// The same at the constrained dofs alone (entry k for equation freeCount + k), from the
 /// elements that touch one: a large model's reactions in the time of its supported elements.
 Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
                                          const Eigen::VectorXd& u);
+/// The same with each element's load that of `loading` in place of its own.
+Eigen::VectorXd constrainedElementForces(const Model& model, const DofMap& dofs,
+                                         const Eigen::VectorXd& u, const Loading& loading);
 
 }  // namespace beamrotor

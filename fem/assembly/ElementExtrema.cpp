@@ -126,14 +126,13 @@ ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& 
           })};
 }
 
-std::vector<ElementPeaks> elementPeaks(const Model& model, const NodalField& displacement) {
+std::vector<ElementPeaks> elementPeaks(const LoadedSolution& solution) {
   std::vector<ElementPeaks> out;
-  const auto& elements = model.elements();
+  const auto& elements = solution.model->elements();
   for (int i = 0; i < int(elements.size()); ++i) {
     const LineElement* line = asLine(elements[i]);
     if (!line) continue;
-    ElementPeaks p =
-        elementPeaks(*line, line->sectionForceSeries(elementValues(*line, displacement)));
+    ElementPeaks p = elementPeaks(*line, solution.forceSeries(i));
     p.stress.element = p.shear.element = p.moment.element = i;
     out.push_back(p);
   }

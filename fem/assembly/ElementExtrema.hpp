@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "fem/assembly/Recovery.hpp"
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
@@ -32,7 +33,7 @@ struct ElementPeaks {
 ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& forces);
 
 /// The peaks of every line element of a static solution, in element order.
-std::vector<ElementPeaks> elementPeaks(const Model& model, const NodalField& displacement);
+std::vector<ElementPeaks> elementPeaks(const LoadedSolution& solution);
 
 /// The largest of one kind over the elements (the first on ties); a value that is not finite
 /// anywhere makes the result NaN, so a check on it fails instead of reading a smaller number.

@@ -48,9 +48,8 @@ std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& s
     // Each solution's six resultants on this element, as polynomials in s.
     std::vector<std::array<Polynomial, 6>> resultants;
     for (const LoadedSolution& sol : solutions) {
-      const LineElement& line = lineOf(*sol.model, e);
-      const SectionForceSeries series =
-          line.sectionForceSeries(elementValues(line, *sol.displacement));
+      lineOf(*sol.model, e);  // a line element, or a clear error
+      const SectionForceSeries series = sol.forceSeries(e);
       std::array<Polynomial, 6> polynomials;
       for (std::size_t c = 0; c < kForceComponents.size(); ++c)
         polynomials[c] = componentPolynomial(series, kForceComponents[c]);

@@ -10,17 +10,11 @@
 #include <vector>
 
 #include "fem/assembly/MemberExtrema.hpp"
+#include "fem/assembly/Recovery.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 
 namespace beamrotor {
-
-/// One static solution: the model it was solved on (carrying its own span loads; every model
-/// shares the structure, so element numbers agree) and its displacement.
-struct LoadedSolution {
-  const Model* model = nullptr;
-  const NodalField* displacement = nullptr;
-};
 
 /// The envelope at one place on a member; max and min in the order of kForceComponents,
 /// maxBy and minBy the index of the solution that gives each.
@@ -33,7 +27,7 @@ struct EnvelopeStation {
 };
 
 /// The envelope along member `elements` (line elements from its start to its end) over
-/// `solutions` (at least one), at intervalsPerElement + 1 even places per element (ends
+/// `solutions` (at least one, all of one structure: LoadedSolution, Recovery.hpp), at intervalsPerElement + 1 even places per element (ends
 /// included) and every interior stationary point of a solution's resultant, in order.
 std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& solutions,
                                             const std::vector<int>& elements,

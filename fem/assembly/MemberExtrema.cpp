@@ -18,17 +18,25 @@ constexpr int kDisplacementSamples = 6;
 /// The three translations along a line element as polynomials in s (static, span load
 /// applied): interpolated through six places, exact for degree <= 5 (cubic shape functions
 /// plus a linear span load's quintic).
-std::array<Polynomial, 3> translationSeries(const LineElement& element, const NodalField& u) {
-  Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples> V;
+std::array<Polynomial, 3> translationSeries(const LoadedSolution& solution, int element) {
+  using Square = Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples>;
+  // The Vandermonde matrix of the places, decomposed once for every element.
+  static const Eigen::FullPivLU<Square> vandermonde = [] {
+    Square V;
+    for (int i = 0; i < kDisplacementSamples; ++i)
+      for (int k = 0; k < kDisplacementSamples; ++k)
+        V(i, k) = std::pow(double(i) / (kDisplacementSamples - 1), k);
+    return V.fullPivLu();
+  }();
+  const LineElement& line = *asLine(solution.model->elements().at(element));
+  const ElementVector u = elementValues(line, *solution.displacement);
+  const ElementSpanLoad q = solution.spanOn(element, line);
   Eigen::Matrix<double, kDisplacementSamples, 3> values;
   for (int i = 0; i < kDisplacementSamples; ++i) {
-    const double s = double(i) / (kDisplacementSamples - 1);
-    for (int k = 0; k < kDisplacementSamples; ++k) V(i, k) = std::pow(s, k);
-    const auto d = displacementAlong(element, u, s, SpanLoad::applied);
+    const auto d = line.displacementAt(u, double(i) / (kDisplacementSamples - 1), q);
     for (int c = 0; c < 3; ++c) values(i, c) = d[c];
   }
-  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients =
-      V.fullPivLu().solve(values);
+  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients = vandermonde.solve(values);
   std::array<Polynomial, 3> out;
   for (int c = 0; c < 3; ++c)
     out[c] = Polynomial(coefficients.col(c).data(),
@@ -107,17 +115,16 @@ Polynomial componentPolynomial(const SectionForceSeries& series, ForceComponent 
   return p;
 }
 
-std::array<ComponentRange, 6> memberForceRanges(const Model& model,
-                                                const std::vector<int>& elements,
-                                                const NodalField& displacement) {
+std::array<ComponentRange, 6> memberForceRanges(const LoadedSolution& solution,
+                                                const std::vector<int>& elements) {
+  const Model& model = *solution.model;
   std::array<ComponentRange, 6> out;
   const double inf = std::numeric_limits<double>::infinity();
   for (ComponentRange& r : out) r.max.value = -inf, r.min.value = inf;
   double start = 0;
   for (int e : elements) {
     const LineElement& line = lineElement(model, e);
-    const SectionForceSeries series =
-        line.sectionForceSeries(elementValues(line, displacement));
+    const SectionForceSeries series = solution.forceSeries(e);
     for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
       const ForceComponent component = kForceComponents[c];
       const Polynomial p = componentPolynomial(series, component);
@@ -137,8 +144,9 @@ std::array<ComponentRange, 6> memberForceRanges(const Model& model,
   return out;
 }
 
-MemberValue largestChordDeflection(const Model& model, const std::vector<int>& elements,
-                                   const NodalField& displacement) {
+MemberValue largestChordDeflection(const LoadedSolution& solution,
+                                   const std::vector<int>& elements) {
+  const Model& model = *solution.model;
   if (elements.empty()) throw std::invalid_argument("a member needs at least one element");
   const LineElement& first = lineElement(model, elements.front());
   const LineElement& last = lineElement(model, elements.back());
@@ -146,11 +154,12 @@ MemberValue largestChordDeflection(const Model& model, const std::vector<int>& e
   const Eigen::Vector3d chord = model.nodes()[last.endNodes()[1]] - x0;
   const double length = chord.norm();
   const Eigen::Vector3d axis = chord / length;
-  const auto endTranslation = [&](const LineElement& line, double s) {
-    const auto d = displacementAlong(line, displacement, s, SpanLoad::applied);
+  const auto endTranslation = [&](int element, double s) {
+    const auto d = solution.displacementAt(element, s);
     return Eigen::Vector3d(d[0], d[1], d[2]);
   };
-  const Eigen::Vector3d u0 = endTranslation(first, 0), u1 = endTranslation(last, 1);
+  const Eigen::Vector3d u0 = endTranslation(elements.front(), 0);
+  const Eigen::Vector3d u1 = endTranslation(elements.back(), 1);
 
   MemberValue best{elements.front(), 0, 0, -std::numeric_limits<double>::infinity()};
   double start = 0;
@@ -159,7 +168,7 @@ MemberValue largestChordDeflection(const Model& model, const std::vector<int>& e
     // Member fraction t = t0 + s dt along this element; chord displacement linear in t.
     const double t0 = (model.nodes()[line.endNodes()[0]] - x0).dot(axis) / length;
     const double dt = line.length() / length;
-    const std::array<Polynomial, 3> u = translationSeries(line, displacement);
+    const std::array<Polynomial, 3> u = translationSeries(solution, e);
     std::array<Polynomial, 3> deviation;
     for (int c = 0; c < 3; ++c) {
       const Polynomial chordPart{u0[c] + t0 * (u1[c] - u0[c]), dt * (u1[c] - u0[c])};
@@ -179,7 +188,9 @@ MemberValue largestChordDeflection(const Model& model, const std::vector<int>& e
   return best;
 }
 
-MemberValue largestDisplacement(const Model& model, const NodalField& displacement) {
+MemberValue largestDisplacement(const LoadedSolution& solution) {
+  const Model& model = *solution.model;
+  const NodalField& displacement = *solution.displacement;
   MemberValue best{-1, 0, 0, -std::numeric_limits<double>::infinity()};
   for (int n = 0; n < model.nodeCount(); ++n) {
     const double v = std::sqrt(std::pow(displacement(n, 0), 2) + std::pow(displacement(n, 1), 2) +
@@ -190,7 +201,7 @@ MemberValue largestDisplacement(const Model& model, const NodalField& displaceme
   for (int e = 0; e < int(model.elements().size()); ++e) {
     const LineElement* line = asLine(model.elements()[e]);
     if (!line) continue;
-    const std::array<Polynomial, 3> u = translationSeries(*line, displacement);
+    const std::array<Polynomial, 3> u = translationSeries(solution, e);
     Polynomial squared;
     for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(u[c], u[c]));
     const auto [s, value] = largestRoot(squared);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fem/assembly/Polynomial.hpp"
+#include "fem/assembly/Recovery.hpp"
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
@@ -56,18 +57,17 @@ struct ComponentRange {
 
 /// Resultant ranges of member `elements` (line elements from its start to its end) in a
 /// static solution, in the order of kForceComponents.
-std::array<ComponentRange, 6> memberForceRanges(const Model& model,
-                                                const std::vector<int>& elements,
-                                                const NodalField& displacement);
+std::array<ComponentRange, 6> memberForceRanges(const LoadedSolution& solution,
+                                                const std::vector<int>& elements);
 
 /// The largest distance (m) of the member's deflected axis from its deflected chord (the line
 /// through its displaced ends), measured across the chord's original direction.
-MemberValue largestChordDeflection(const Model& model, const std::vector<int>& elements,
-                                   const NodalField& displacement);
+MemberValue largestChordDeflection(const LoadedSolution& solution,
+                                   const std::vector<int>& elements);
 
 /// The largest translation magnitude (m) anywhere: inside every line element (static
 /// solution with its span loads) and at every node. element is -1 for a node off the beams
 /// (then `along` is unused and s is the node index).
-MemberValue largestDisplacement(const Model& model, const NodalField& displacement);
+MemberValue largestDisplacement(const LoadedSolution& solution);
 
 }  // namespace beamrotor

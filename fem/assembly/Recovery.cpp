@@ -17,21 +17,31 @@ std::array<double, kDofKinds> displacementAlong(const LineElement& element, cons
   return element.displacementAt(elementValues(element, field), s, load);
 }
 
+SectionForceSeries LoadedSolution::forceSeries(int element) const {
+  const LineElement& line = *asLine(model->elements().at(element));
+  return line.sectionForceSeries(elementValues(line, *displacement), spanOn(element, line));
+}
+
+std::array<double, kDofKinds> LoadedSolution::displacementAt(int element, double s) const {
+  const LineElement& line = *asLine(model->elements().at(element));
+  return line.displacementAt(elementValues(line, *displacement), s, spanOn(element, line));
+}
+
 namespace {
 
 /// Fills the sides of the nodes in `sides` (indexed by node; the others null) from the line
 /// elements ending or starting there.
-void fillSides(const Model& model, const NodalField& displacement,
-               std::vector<SideRotations*>& sides) {
-  for (const auto& e : model.elements()) {
-    const LineElement* line = asLine(e);
+void fillSides(const LoadedSolution& solution, std::vector<SideRotations*>& sides) {
+  const auto& elements = solution.model->elements();
+  for (int i = 0; i < int(elements.size()); ++i) {
+    const LineElement* line = asLine(elements[i]);
     if (!line) continue;
     for (int end : {0, 1}) {
       SideRotations* at = sides[line->endNodes()[end]];
       if (!at) continue;
       std::optional<Eigen::Vector3d>& side = end == 1 ? at->left : at->right;
       if (side) continue;  // the first element in model order on that side
-      const auto u = displacementAlong(*line, displacement, end, SpanLoad::applied);
+      const auto u = solution.displacementAt(i, end);
       side = Eigen::Vector3d(u[3], u[4], u[5]);
     }
   }
@@ -39,15 +49,16 @@ void fillSides(const Model& model, const NodalField& displacement,
 
 }  // namespace
 
-SideRotations rotationsBeside(const Model& model, const NodalField& displacement, int node) {
+SideRotations rotationsBeside(const LoadedSolution& solution, int node) {
   SideRotations out{node, {}, {}};
-  std::vector<SideRotations*> sides(model.nodeCount(), nullptr);
+  std::vector<SideRotations*> sides(solution.model->nodeCount(), nullptr);
   sides.at(node) = &out;
-  fillSides(model, displacement, sides);
+  fillSides(solution, sides);
   return out;
 }
 
-std::vector<SideRotations> hingeRotations(const Model& model, const NodalField& displacement) {
+std::vector<SideRotations> hingeRotations(const LoadedSolution& solution) {
+  const Model& model = *solution.model;
   // The released ends are found part by part (a pass over every element, which is most of
   // the time when there are none).
   const auto& elements = model.elements();
@@ -65,19 +76,20 @@ std::vector<SideRotations> hingeRotations(const Model& model, const NodalField& 
   if (out.empty()) return out;
   std::vector<SideRotations*> sides(model.nodeCount(), nullptr);
   for (SideRotations& s : out) sides[s.node] = &s;
-  fillSides(model, displacement, sides);
+  fillSides(solution, sides);
   return out;
 }
 
-std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField& displacement,
-                                           int perElement) {
+std::vector<BeamStation> recoverBeamFields(const LoadedSolution& solution, int perElement) {
+  const Model& model = *solution.model;
   std::vector<BeamStation> out;
   const auto& elements = model.elements();
   for (int i = 0; i < int(elements.size()); ++i) {
     const LineElement* beam = asLine(elements[i]);
     if (!beam) continue;
-    const ElementVector u = elementValues(*beam, displacement);
-    const SectionForceSeries forces = beam->sectionForceSeries(u);
+    const ElementVector u = elementValues(*beam, *solution.displacement);
+    const ElementSpanLoad q = solution.spanOn(i, *beam);
+    const SectionForceSeries forces = beam->sectionForceSeries(u, q);
     const auto [n1, n2] = beam->endNodes();
     const Eigen::Vector3d x1 = model.nodes()[n1], x2 = model.nodes()[n2];
     for (int k = 0; k <= perElement; ++k) {
@@ -85,7 +97,7 @@ std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField&
       st.element = i;
       st.s = double(k) / perElement;
       st.position = x1 + st.s * (x2 - x1);
-      st.displacement = beam->displacementAt(u, st.s, SpanLoad::applied);
+      st.displacement = beam->displacementAt(u, st.s, q);
       st.forces = forces.at(st.s);
       st.stress = maxNormalStress(beam->section(), st.forces);
       st.shear = maxShearStress(beam->section(), st.forces);

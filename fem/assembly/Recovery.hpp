@@ -7,10 +7,32 @@
 #include <vector>
 
 #include "fem/model/LineElement.hpp"
+#include "fem/model/Loading.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 
 namespace beamrotor {
+
+/// One static solution as recovery reads it: the model, its nodal field, and the loading it
+/// was solved under when that is not the model's own (a load case on the same structure,
+/// Loading.hpp; null: the loads the model's elements carry). Converts from a model and a
+/// field, the usual case.
+struct LoadedSolution {
+  const Model* model = nullptr;
+  const NodalField* displacement = nullptr;
+  const Loading* loading = nullptr;
+
+  LoadedSolution(const Model& m, const NodalField& u, const Loading* l = nullptr)
+      : model(&m), displacement(&u), loading(l) {}
+  /// The span load line element `element` carries in this solution.
+  ElementSpanLoad spanOn(int element, const LineElement& line) const {
+    return loading ? loading->spanOn(element) : line.spanLoad();
+  }
+  /// Line element `element`'s resultants along it (its span load included).
+  SectionForceSeries forceSeries(int element) const;
+  /// Line element `element`'s displacements at fraction s (its span load's share included).
+  std::array<double, kDofKinds> displacementAt(int element, double s) const;
+};
 
 /// An element's nodal values, ordered as its dofs(), from a nodal field.
 ElementVector elementValues(const Element& element, const NodalField& field);
@@ -22,11 +44,11 @@ std::array<double, kDofKinds> displacementAlong(const LineElement& element, cons
                                                 double s, SpanLoad load);
 
 /// The rotations on the two sides of a node (see SideRotations), each beam end's own.
-SideRotations rotationsBeside(const Model& model, const NodalField& displacement, int node);
+SideRotations rotationsBeside(const LoadedSolution& solution, int node);
 
 /// The side rotations at every node where a line element releases a rotation (a hinge), in
 /// node order.
-std::vector<SideRotations> hingeRotations(const Model& model, const NodalField& displacement);
+std::vector<SideRotations> hingeRotations(const LoadedSolution& solution);
 
 /// Fields at one station of one line element.
 struct BeamStation {
@@ -41,7 +63,6 @@ struct BeamStation {
 
 /// Samples a static solution on every line element at `perElement` + 1 evenly spaced
 /// stations (ends included), in element order. Other elements (springs, masses) are skipped.
-std::vector<BeamStation> recoverBeamFields(const Model& model, const NodalField& displacement,
-                                           int perElement = 1);
+std::vector<BeamStation> recoverBeamFields(const LoadedSolution& solution, int perElement = 1);
 
 }  // namespace beamrotor

@@ -31,6 +31,24 @@ struct SectionForceSeries {
 /// shape or any other field of the nodes alone does not.
 enum class SpanLoad { applied, none };
 
+/// A load per length on a line element varying linearly along it, in the element frame:
+/// q(s) = mean + halfRise (2 s - 1) (N/m; local x, y, z components), s the fraction of the
+/// length from the start node. Everything an element derives from it is linear in it, so a
+/// factored sum of span loads gives the factored sum of their effects.
+struct ElementSpanLoad {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  Eigen::Vector3d halfRise = Eigen::Vector3d::Zero();
+  bool isZero() const { return mean.isZero() && halfRise.isZero(); }
+  ElementSpanLoad& operator+=(const ElementSpanLoad& o) {
+    mean += o.mean;
+    halfRise += o.halfRise;
+    return *this;
+  }
+  friend ElementSpanLoad operator*(double factor, const ElementSpanLoad& q) {
+    return {factor * q.mean, factor * q.halfRise};
+  }
+};
+
 /// The normal stress over a section as a linear field of the local coordinates:
 /// sigma(y, z) = c + a y + b z with c = N/A, a = -Mz/Iz, b = My/Iy (principal axes; the signs
 /// make the stresses' moments on the +x face equal Mz = -int y sigma dA, My = int z sigma dA).
@@ -58,19 +76,38 @@ class LineElement : public Element {
   virtual const Section& section() const = 0;
   /// Rows are the local x, y, z axes in global coordinates.
   virtual Eigen::Matrix3d localAxes() const = 0;
+  /// The span load the element carries (zero when none).
+  virtual ElementSpanLoad spanLoad() const = 0;
+  /// A load per length varying linearly from qStart at the start node to qEnd at the end node
+  /// (N/m, global frame) as this element carries it (in its frame).
+  virtual ElementSpanLoad spanLoadOf(const Eigen::Vector3d& qStart,
+                                     const Eigen::Vector3d& qEnd) const = 0;
+  /// Equivalent nodal loads of span load q on this element (global frame, ordered as dofs(),
+  /// released rotations condensed); empty when q is zero. load() is this of spanLoad().
+  virtual ElementVector loadOf(const ElementSpanLoad& q) const = 0;
   /// Resultants along the element from its nodal displacements u (global frame, ordered as
-  /// dofs()), span load included.
-  virtual SectionForceSeries sectionForceSeries(const ElementVector& u) const = 0;
+  /// dofs()) under span load q (a load case's, in place of the element's own).
+  virtual SectionForceSeries sectionForceSeries(const ElementVector& u,
+                                                const ElementSpanLoad& q) const = 0;
+  /// The same under the element's own span load.
+  SectionForceSeries sectionForceSeries(const ElementVector& u) const {
+    return sectionForceSeries(u, spanLoad());
+  }
   /// Resultants at fraction s in [0, 1] of the length (sectionForceSeries at s).
   SectionForces sectionForces(const ElementVector& u, double s) const {
     return sectionForceSeries(u).at(s);
   }
   /// Displacements (global frame: ux uy uz (m), rx ry rz (rad)) at fraction s of the length,
   /// from the nodal displacements u (ordered as dofs()) by the element's own interpolation,
-  /// with the span load's share when `load` is applied. A released end (a hinge) has its own
-  /// rotation, recovered from the element's condensation, not its node's.
+  /// with span load q's share (zero: the nodes' field alone). A released end (a hinge) has its
+  /// own rotation, recovered from the element's condensation, not its node's.
   virtual std::array<double, kDofKinds> displacementAt(const ElementVector& u, double s,
-                                                       SpanLoad load) const = 0;
+                                                       const ElementSpanLoad& q) const = 0;
+  /// The same with the element's own span load when `load` is applied, none otherwise.
+  std::array<double, kDofKinds> displacementAt(const ElementVector& u, double s,
+                                               SpanLoad load) const {
+    return displacementAt(u, s, load == SpanLoad::applied ? spanLoad() : ElementSpanLoad{});
+  }
   /// Whether some rotation of end 0 (start) or 1 (end) is released (a hinge).
   virtual bool releases(int end) const = 0;
 

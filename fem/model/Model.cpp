@@ -15,14 +15,18 @@ void Model::nameNode(const std::string& name, int node) {
   auto [it, inserted] = names_.emplace(name, node);
   if (!inserted && it->second != node)
     throw std::invalid_argument("point name '" + name + "' is used twice");
+  // A node of several names goes by the first in the names' order.
+  auto [first, added] = firstNames_.emplace(node, name);
+  if (!added && name < first->second) first->second = name;
 }
 
 void Model::addMember(const std::string& name, std::vector<int> elements) {
-  for (const auto& [other, list] : members_)
-    if (other == name) throw std::invalid_argument("member name '" + name + "' is used twice");
+  if (memberNames_.count(name))
+    throw std::invalid_argument("member name '" + name + "' is used twice");
   for (int e : elements)
     if (e < 0 || e >= int(elements_.size()))
       throw std::out_of_range("member '" + name + "': no element " + std::to_string(e));
+  memberNames_.insert(name);
   members_.emplace_back(name, std::move(elements));
 }
 
@@ -33,9 +37,8 @@ int Model::node(const std::string& name) const {
 }
 
 std::string Model::nameOf(int node) const {
-  for (const auto& [name, n] : names_)
-    if (n == node) return name;
-  return {};
+  const auto it = firstNames_.find(node);
+  return it == firstNames_.end() ? std::string() : it->second;
 }
 
 std::string Model::describe(const NodeDof& d) const {

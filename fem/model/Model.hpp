@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,7 +93,9 @@ class Model {
   std::vector<NodalLoad> loads_;
   std::vector<ContactConstraint> contacts_;
   std::map<std::string, int> names_;
+  std::map<int, std::string> firstNames_;  ///< each named node's first name (nameOf)
   std::vector<std::pair<std::string, std::vector<int>>> members_;
+  std::set<std::string> memberNames_;
 };
 
 }  // namespace beamrotor

@@ -152,6 +152,16 @@ void SparseLDLT::analyseInOrder(const SparseMatrix& A, std::vector<int> order) {
   m_factorizationIsOk = false;
 }
 
+std::vector<int> SparseLDLT::order() const {
+  std::vector<int> out(m_cholmodFactor ? m_cholmodFactor->n : 0);
+  std::iota(out.begin(), out.end(), 0);
+  if (m_cholmodFactor && m_cholmodFactor->Perm && m_cholmodFactor->ordering != CHOLMOD_NATURAL) {
+    const auto* perm = static_cast<const int*>(m_cholmodFactor->Perm);
+    std::copy(perm, perm + out.size(), out.begin());
+  }
+  return out;
+}
+
 int SparseLDLT::negativePivots() const {
   const FactorView f = factorView();
   int negative = 0;
@@ -233,11 +243,19 @@ bool LinearSolver::splitIfDecoupled(const SparseMatrix& A, std::span<const int> 
 }
 
 void LinearSolver::analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry,
-                                  std::span<const int> nodeOfRow) {
+                                  std::span<const int> nodeOfRow, Definiteness definiteness) {
   symmetric_ = symmetry == MatrixSymmetry::byConstruction || isNumericallySymmetric(A);
   blocks_.clear();
+  cholesky_.reset();
+  usingCholesky_ = false;
   if (symmetric_) {
-    if (!splitIfDecoupled(A, nodeOfRow)) ldlt_.analyzePattern(A, nodeOfRow);
+    if (splitIfDecoupled(A, nodeOfRow)) return;
+    ldlt_.analyzePattern(A, nodeOfRow);
+    if (definiteness == Definiteness::positiveExpected &&
+        ldlt_.predictedFactorEntries() >= kSupernodalFrom) {
+      cholesky_ = std::make_unique<SupernodalCholesky>();
+      cholesky_->analyse(A, ldlt_.order());
+    }
   } else {
     lu_.analyzePattern(A);
   }
@@ -252,7 +270,8 @@ void LinearSolver::factorize(const SparseMatrix& A) {
     return;
   }
   if (symmetric_) {
-    ldlt_.factorize(A);
+    usingCholesky_ = cholesky_ && cholesky_->factorize(A);
+    if (!usingCholesky_) ldlt_.factorize(A);
     return;
   }
   // UMFPACK scales rows only; the columns (the dofs' units) are scaled here.
@@ -276,7 +295,10 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
   }
   if (symmetric_) {
     Eigen::VectorXd x;
-    ldlt_.solveInto(b, x);
+    if (usingCholesky_)
+      cholesky_->solveInto(b, x);
+    else
+      ldlt_.solveInto(b, x);
     return x;
   }
   const Eigen::VectorXd scaledB = luScale_.cwiseProduct(b);
@@ -285,6 +307,7 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
 
 std::string LinearSolver::methodName() const {
   if (!blocks_.empty()) return "CHOLMOD LDL' of 2 decoupled blocks";
+  if (usingCholesky_) return "CHOLMOD supernodal LL'";
   return symmetric_ ? "CHOLMOD LDL'" : "UMFPACK LU";
 }
 
@@ -294,6 +317,10 @@ std::string LinearSolver::orderingName() const {
 }
 
 double LinearSolver::rcond() const {
+  if (usingCholesky_) {
+    const auto [smallest, largest] = cholesky_->scaledPivotRange();
+    return largest > 0 ? smallest / largest : 0;
+  }
   if (blocks_.empty()) return symmetric_ ? ldlt_.scaledRcond() : lu_.rcond();
   double smallest = std::numeric_limits<double>::infinity(), largest = 0;
   for (const Block& b : blocks_) {
@@ -310,13 +337,15 @@ bool LinearSolver::healthy(double tol) const {
       !blocks_.empty()
           ? std::all_of(blocks_.begin(), blocks_.end(),
                         [](const Block& b) { return b.ldlt->info() == Eigen::Success; })
-      : symmetric_ ? ldlt_.info() == Eigen::Success
+      : usingCholesky_ ? true
+      : symmetric_     ? ldlt_.info() == Eigen::Success
                    : lu_.info() == Eigen::Success;
   return factorised && rcond() > tol;
 }
 
 double LinearSolver::factorEntries() const {
   if (!blocks_.empty()) return blocks_[0].ldlt->factorEntries() + blocks_[1].ldlt->factorEntries();
+  if (usingCholesky_) return cholesky_->factorEntries();
   return symmetric_ ? ldlt_.factorEntries() : lu_.factorEntries();
 }
 

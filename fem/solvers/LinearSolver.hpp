@@ -14,6 +14,7 @@
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/solvers/SparseLU.hpp"
+#include "fem/solvers/SupernodalCholesky.hpp"
 
 namespace beamrotor {
 
@@ -58,6 +59,9 @@ class SparseLDLT : public Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Uppe
   /// The fill-reducing ordering the analysis chose: "natural", "AMD", "AMD by node", "METIS",
   /// "NESDIS".
   const char* orderingName() const;
+  /// That ordering as a permutation (row k of P A P' is row order()[k] of A), after the
+  /// analysis.
+  std::vector<int> order() const;
 
   /// The last factorisation as CHOLMOD holds it, P A P' = L D L': L unit lower, each column
   /// starting at its diagonal entry, which holds D (a simplicial factor may leave room after a
@@ -92,6 +96,15 @@ enum class MatrixSymmetry {
   byConstruction,  ///< assembled from symmetric parts only (SparseAssembler::stiffnessSymmetric)
 };
 
+/// What the caller expects of a symmetric matrix: nothing, or positive definiteness (a
+/// supported structure's stiffness), which lets a large factor be a supernodal Cholesky.
+enum class Definiteness { unknown, positiveExpected };
+
+/// Factors the LDL' analysis predicts this many entries or more are made by the supernodal
+/// Cholesky when positive definiteness is expected: below it the simplicial LDL' takes well
+/// under a second, above it the supernodal factor's dense blocks win by 5-20x.
+inline constexpr double kSupernodalFrom = 2e6;
+
 class LinearSolver {
  public:
   /// Chooses the method (from A's values unless `symmetry` says it is symmetric by
@@ -99,8 +112,13 @@ class LinearSolver {
   /// matrices with the same pattern (and the same symmetry).
   /// `nodeOfRow` (optional) names each row's node, rows of a node consecutive: a sparse
   /// factor's fill-reducing order is then found on the graph of nodes (SparseLDLT).
+  /// With Definiteness::positiveExpected a symmetric matrix whose factor is large
+  /// (kSupernodalFrom) is also analysed for CHOLMOD's supernodal Cholesky, in the same order;
+  /// factorize() tries it first and falls back to the LDL' when the matrix is not positive
+  /// definite (a mechanism, negative springs).
   void analyzePattern(const SparseMatrix& A, MatrixSymmetry symmetry = MatrixSymmetry::unknown,
-                      std::span<const int> nodeOfRow = {});
+                      std::span<const int> nodeOfRow = {},
+                      Definiteness definiteness = Definiteness::unknown);
   /// Numeric factorisation. Check healthy() before solving. A non-symmetric matrix is
   /// factorised symmetrically scaled, S A S with S = |diag(A)|^-1/2, and solved as
   /// x = S (S A S)^-1 S b.
@@ -108,7 +126,7 @@ class LinearSolver {
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
   bool symmetric() const { return symmetric_; }
-  /// "CHOLMOD LDL'" or "UMFPACK LU".
+  /// "CHOLMOD LDL'", "CHOLMOD supernodal LL'" (of the last factorisation) or "UMFPACK LU".
   std::string methodName() const;
   /// The fill-reducing ordering of the symbolic analysis (SparseLDLT, SparseLU).
   std::string orderingName() const;
@@ -135,6 +153,10 @@ class LinearSolver {
   bool symmetric_ = false;
   std::vector<Block> blocks_;  ///< two when split, else empty (ldlt_ holds the factor)
   SparseLDLT ldlt_;
+  /// Analysed when a large positive definite matrix is expected; holds the last factor when
+  /// it succeeded (usingCholesky_), else ldlt_ does.
+  std::unique_ptr<SupernodalCholesky> cholesky_;
+  bool usingCholesky_ = false;
   SparseLU lu_;
   Eigen::VectorXd luScale_;  ///< S of the scaled non-symmetric matrix
   SparseMatrix luMatrix_;    ///< S A S, referenced by lu_

@@ -96,13 +96,11 @@ Mechanism findMechanism(const Model& model, const DofMap& dofs, const SparseMatr
     Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
     y[k] = 1;
     if (rank > 0) {
-      const Eigen::VectorXd column = R.col(k).toDense();
-      // Solved into its own vector first: GCC 12 takes the solve assigned straight into a
-      // block for a use after free in some unity batches (-Wuse-after-free).
-      const Eigen::VectorXd solved = R.topLeftCorner(rank, rank)
-                                         .triangularView<Eigen::Upper>()
-                                         .solve(Eigen::VectorXd(column.head(rank)));
-      y.head(rank) = -solved;
+      // Solved in place into a named vector: an unnamed temporary here draws a false
+      // -Wuse-after-free from GCC 12 in some unity batches.
+      Eigen::VectorXd head = R.col(k).toDense().head(rank);
+      R.topLeftCorner(rank, rank).triangularView<Eigen::Upper>().solveInPlace(head);
+      y.head(rank) = -head;
     }
     Eigen::VectorXd x(n);
     for (Eigen::Index i = 0; i < n; ++i) x[E.indices()[i]] = y[i];

@@ -24,7 +24,8 @@ class SymbolicReuse {
   /// skips the scan).
   LinearSolver& analysedFor(const SparseMatrix& A,
                             MatrixSymmetry symmetry = MatrixSymmetry::unknown,
-                            std::span<const int> nodeOfRow = {});
+                            std::span<const int> nodeOfRow = {},
+                            Definiteness definiteness = Definiteness::unknown);
 
   /// Analyses done and analyses saved so far.
   long long analyses() const { return analyses_; }
@@ -33,6 +34,7 @@ class SymbolicReuse {
  private:
   LinearSolver solver_;
   bool reusable_ = false;  ///< solver_ holds a symmetric analysis of the pattern below
+  Definiteness definiteness_ = Definiteness::unknown;  ///< what that analysis expected
   KeptPattern pattern_;
   long long analyses_ = 0, reuses_ = 0;
 };

@@ -38,7 +38,7 @@ Eigen::VectorXd tangentTimes(const Model& model, const DofMap& dofs, const Eigen
 
 /// The largest of one peak kind over a static solution's beams (0 without beams).
 double largestAlongBeams(const Model& model, const NodalField& u, BeamPeak ElementPeaks::*kind) {
-  const auto peak = largestPeak(elementPeaks(model, u), kind);
+  const auto peak = largestPeak(elementPeaks({model, u}), kind);
   return peak ? std::abs(peak->value) : 0.0;
 }
 
@@ -117,7 +117,7 @@ SecondOrderResult solveSecondOrder(const Model& model, const SecondOrderOptions&
   s.activeSetIterations = result.iterations;
   const Eigen::VectorXd forces = tangentTimes(model, dofs, u, u) - f;
   for (ReactionComponent& r : s.reactions) r.value = forces[dofs.equation(r.node, r.dof)];
-  s.hinges = hingeRotations(model, s.displacement);
+  s.hinges = hingeRotations({model, s.displacement});
   const auto ratio = [](double a, double b) { return b > 0 ? a / b : 1.0; };
   result.displacementAmplification =
       ratio(largest(s.displacement, 0), largest(result.firstOrder.displacement, 0));

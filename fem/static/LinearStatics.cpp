@@ -134,7 +134,7 @@ double measuredError(const SymmetricBand& A, const Eigen::VectorXd& b,
 }  // namespace
 
 LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
-    : model_(model), loaded_(&model), dofs_(model), reuse_(reuse) {
+    : model_(model), dofs_(model), reuse_(reuse) {
   // A line numbered node by node goes into a band, without a pattern (fem/assembly/
   // BandAssembly); other structures into the sparse pattern.
   if (const std::optional<int> kd = stiffnessBand(model, dofs_)) {
@@ -143,7 +143,8 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
     // The sparse K a fallback makes of it keeps the same entries.
     stiffnessEntries_ = bandK_.nonZeros();
     solverName_ = "LAPACK band Cholesky, half-bandwidth " + std::to_string(*kd);
-    setLoads(model);
+    rhs_ = reducedRightHandSide(model, dofs_, loadVector(model, dofs_),
+                                prescribedValues(model, dofs_));
     return;
   }
   // K is assembled once; the assembler's pattern becomes K itself (no copy kept).
@@ -154,31 +155,25 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
   // keeps only their storage: a planar line's 40 % less, which the factor then reuses.
   dropExactZeros(K_);
   stiffnessEntries_ = K_.nonZeros();
-  setLoads(model);
-}
-
-void LinearStatics::setLoads(const Model& loaded) {
-  if (&loaded != &model_) {
-    const bool same = loaded.nodes().size() == model_.nodes().size() &&
-                      loaded.elements().size() == model_.elements().size() &&
-                      loaded.supports().size() == model_.supports().size() &&
-                      DofMap(loaded).freeCount() == dofs_.freeCount();
-    if (!same)
-      throw std::invalid_argument("LinearStatics::setLoads: the loaded model's structure differs");
-  }
-  loaded_ = &loaded;
   // Only the reduced right-hand side is kept: the nodal loads and the prescribed values are
   // made again where needed (a pass over the loads or the supports), not held through the
   // factorisation, when a static run's memory peaks.
-  rhs_ = reducedRightHandSide(loaded, dofs_, loadVector(loaded, dofs_),
-                              prescribedValues(loaded, dofs_));
+  rhs_ = reducedRightHandSide(model, dofs_, loadVector(model, dofs_),
+                              prescribedValues(model, dofs_));
+}
+
+void LinearStatics::setLoads(const Loading* loading) {
+  loading_ = loading;
+  rhs_ = reducedRightHandSide(
+      model_, dofs_, loading ? loadVector(model_, dofs_, *loading) : loadVector(model_, dofs_),
+      prescribedValues(model_, dofs_));
 }
 
 Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double singularRcond) {
   if (released_) throw std::logic_error("LinearStatics::solve after releaseMatrices()");
   Stopwatch clock;
   const int nf = dofs_.freeCount();
-  if (nf == 0) return prescribedValues(*loaded_, dofs_);
+  if (nf == 0) return prescribedValues(model_, dofs_);
 
   // A nearly singular matrix: a mechanism (named in words), or a structure that is held but
   // ill-conditioned, whose solution's measured round-off then tells how much of it holds.
@@ -222,15 +217,17 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     if (!analysed_) {
       // Held dofs clear rows and columns alike: K's symmetry is the held matrix's.
       const std::vector<int> nodeOfRow = dofs_.freeNodes();
+      // A supported structure's stiffness is positive definite: a large one may take the
+      // supernodal Cholesky (a mechanism or negative springs fall back to the LDL').
       if (reuse_)
-        solver_ = &reuse_->analysedFor(A, symmetry_, nodeOfRow);
+        solver_ = &reuse_->analysedFor(A, symmetry_, nodeOfRow, Definiteness::positiveExpected);
       else
-        solver_->analyzePattern(A, symmetry_, nodeOfRow);
+        solver_->analyzePattern(A, symmetry_, nodeOfRow, Definiteness::positiveExpected);
       analysed_ = true;
-      solverName_ = solver_->methodName() + ", " + solver_->orderingName() + " ordering";
     }
     if (!sameFactor) {
       solver_->factorize(A);
+      solverName_ = solver_->methodName() + ", " + solver_->orderingName() + " ordering";
       rcond_ = solver_->rcond();
       if (!solver_->healthy(singularRcond)) requireHeld();
     }
@@ -254,7 +251,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     }
   }
   const Eigen::VectorXd& b = held.empty() ? rhs_ : heldRhs;
-  Eigen::VectorXd u = prescribedValues(*loaded_, dofs_);
+  Eigen::VectorXd u = prescribedValues(model_, dofs_);
   if (banded_) {
     u.head(nf) = b;
     bandFactor_.solveInPlace(u.head(nf));
@@ -286,12 +283,16 @@ void LinearStatics::releaseMatrices() {
 
 Eigen::VectorXd LinearStatics::residual(const Eigen::VectorXd& u) const {
   // Element forces already net out the loads the elements carry.
-  return elementForces(*loaded_, dofs_, u) - nodalLoadVector(*loaded_, dofs_);
+  if (!loading_) return elementForces(model_, dofs_, u) - nodalLoadVector(model_, dofs_);
+  Eigen::VectorXd r = elementForces(model_, dofs_, u, *loading_);
+  for (const NodalLoad& l : loading_->nodal()) r[dofs_.equation(l.node, l.dof)] -= l.value;
+  return r;
 }
 
 Eigen::VectorXd LinearStatics::reactions(const Eigen::VectorXd& u) const {
-  Eigen::VectorXd r = constrainedElementForces(*loaded_, dofs_, u);
-  for (const NodalLoad& l : loaded_->loads()) {
+  Eigen::VectorXd r = loading_ ? constrainedElementForces(model_, dofs_, u, *loading_)
+                               : constrainedElementForces(model_, dofs_, u);
+  for (const NodalLoad& l : loading_ ? loading_->nodal() : model_.loads()) {
     const int eq = dofs_.equation(l.node, l.dof);
     if (dofs_.isConstrained(eq)) r[eq - dofs_.freeCount()] -= l.value;
   }

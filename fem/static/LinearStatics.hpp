@@ -39,11 +39,11 @@ class LinearStatics {
   /// structure whose solution is not finite; otherwise roundOff() says how much of it holds.
   Eigen::VectorXd solve(const std::vector<HeldDof>& held, double singularRcond);
 
-  /// Replaces the loads (nodal, element-carried, prescribed values) by those of `loaded`, a
-  /// model of the same structure that carries other loads (a load case); the next solve
-  /// without held dofs reuses the factor. Throws std::invalid_argument when the structure
-  /// differs (node, element or support counts, or the dof numbering).
-  void setLoads(const Model& loaded);
+  /// Replaces the loads (point and span loads) by `loading`'s, a load case on this model
+  /// (fem/model/Loading.hpp), which must outlive the solves and reactions that use it, or by
+  /// the model's own when null; the next solve without held dofs reuses the factor.
+  /// Prescribed values stay the model's.
+  void setLoads(const Loading* loading);
 
   /// Full-length K u - f: at a constrained or held dof, the force its support or stop exerts.
   Eigen::VectorXd residual(const Eigen::VectorXd& u) const;
@@ -75,7 +75,7 @@ class LinearStatics {
 
  private:
   const Model& model_;
-  const Model* loaded_;  ///< the model whose loads are on the right-hand side
+  const Loading* loading_ = nullptr;  ///< the loads on the right-hand side; null: the model's
   DofMap dofs_;
   bool banded_ = false;  ///< K is bandK_ (factorised by bandFactor_), else K_
   SymmetricBand bandK_;

@@ -13,10 +13,10 @@ namespace beamrotor {
 namespace {
 
 /// Reactions (what each support exerts: K u - f at its dofs), the nodal field, hinge rotations
-/// and the solve's diagnostics of displacement u of `loaded`, solved by `system`, whose
-/// matrices are freed first when `lastSolve`.
-void recover(const Model& loaded, LinearStatics& system, const Eigen::VectorXd& u,
-             StaticResult& result, bool lastSolve) {
+/// and the solve's diagnostics of displacement u of `loaded` under `loading` (null: its own
+/// loads), solved by `system`, whose matrices are freed first when `lastSolve`.
+void recover(const Model& loaded, const Loading* loading, LinearStatics& system,
+             const Eigen::VectorXd& u, StaticResult& result, bool lastSolve) {
   if (lastSolve) system.releaseMatrices();
   const DofMap& dofs = system.dofs();
   const Eigen::VectorXd r = system.reactions(u);
@@ -25,7 +25,7 @@ void recover(const Model& loaded, LinearStatics& system, const Eigen::VectorXd& 
       result.reactions.push_back(
           {s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof) - dofs.freeCount()]});
   result.displacement = toNodalField(loaded, dofs, u);
-  result.hinges = hingeRotations(loaded, result.displacement);
+  result.hinges = hingeRotations({loaded, result.displacement, loading});
   result.rcond = system.rcond();
   result.roundOff = system.roundOff();
   result.solver = system.solverName();
@@ -57,31 +57,31 @@ StaticResult solveStatic(const Model& model, const StaticOptions& options) {
   result.time.solve = system.solveSeconds();
 
   // 3. Recover reactions and the nodal field.
-  recover(model, system, u, result, true);
+  recover(model, nullptr, system, u, result, true);
   result.time.total = total.lap();
   return result;
 }
 
-std::vector<StaticResult> solveStaticCases(const std::vector<const Model*>& loadings,
-                                           const StaticOptions& options) {
+std::vector<StaticResult> solveLoadings(const Model& model,
+                                        const std::vector<const Loading*>& loadings,
+                                        const StaticOptions& options) {
   std::vector<StaticResult> results;
   if (loadings.empty()) return results;
-  for (const Model* m : loadings)
-    if (!m->contacts().empty())
-      throw std::invalid_argument("solveStaticCases: contacts are not linear in the loads");
+  if (!model.contacts().empty())
+    throw std::invalid_argument("solveLoadings: contacts are not linear in the loads");
   Stopwatch clock;
-  LinearStatics system(*loadings.front(), options.reuse);
+  LinearStatics system(model, options.reuse);
   const double assembly = clock.lap();
-  for (const Model* loaded : loadings) {
+  for (std::size_t k = 0; k < loadings.size(); ++k) {
     Stopwatch total;
     StaticResult result;
     const double factorBefore = system.factorSeconds(), solveBefore = system.solveSeconds();
-    system.setLoads(*loaded);
+    system.setLoads(loadings[k]);
     const Eigen::VectorXd u = system.solve({}, options.singularRcond);
     result.activeSetIterations = 1;
     result.time.factor = system.factorSeconds() - factorBefore;
     result.time.solve = system.solveSeconds() - solveBefore;
-    recover(*loaded, system, u, result, loaded == loadings.back());
+    recover(model, loadings[k], system, u, result, k + 1 == loadings.size());
     result.time.assembly = results.empty() ? assembly : 0;
     result.time.total = total.lap() + result.time.assembly;
     results.push_back(std::move(result));

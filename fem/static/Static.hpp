@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "fem/model/Loading.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 #include "fem/solvers/Tolerances.hpp"
@@ -24,11 +25,13 @@ struct StaticOptions {
 /// or SolveError for a system that is singular for another reason.
 StaticResult solveStatic(const Model& model, const StaticOptions& options = {});
 
-/// Solves the statics of models that differ only in their loads (load cases: same nodes,
-/// elements, supports and stiffness) with one factorisation of K: the first model's, the
-/// others as further right-hand sides. No contacts (they are not linear in the loads).
-/// Throws as solveStatic does, std::invalid_argument for models whose structure differs.
-std::vector<StaticResult> solveStaticCases(const std::vector<const Model*>& loadings,
-                                           const StaticOptions& options = {});
+/// Solves model's statics under each of `loadings` (load cases on the one model, each in
+/// place of the model's own loads, Loading.hpp; null: the model's own loads) with one
+/// factorisation of K: each loading is one more right-hand side. The results hold plain values
+/// (nothing refers to the loadings). No contacts (they are not linear in the loads):
+/// std::invalid_argument. Throws as solveStatic does.
+std::vector<StaticResult> solveLoadings(const Model& model,
+                                        const std::vector<const Loading*>& loadings,
+                                        const StaticOptions& options = {});
 
 }  // namespace beamrotor

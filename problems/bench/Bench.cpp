@@ -47,9 +47,11 @@ BenchReport runBench(const BenchOptions& options) {
     report = benchGrid(options);
   else if (options.kind == "rotor")
     report = benchRotor(options);
+  else if (options.kind == "frame3d")
+    report = benchFrame(options);
   else
     throw std::invalid_argument("bench kind '" + options.kind +
-                                "' is not available (available: planar, grid3d, rotor)");
+                                "' is not available (available: planar, grid3d, rotor, frame3d)");
   report.options = options;
   report.peakRssMb = peakRssMb();
   report.hugePagesMb = hugePagesMb();

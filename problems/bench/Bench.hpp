@@ -8,13 +8,17 @@
 namespace beamrotor {
 
 struct BenchOptions {
-  std::string kind = "planar";  ///< planar, grid3d or rotor (StandardModels.hpp)
+  /// planar, grid3d or rotor (StandardModels.hpp), or frame3d (a building frame run as a deck,
+  /// BenchFrame.cpp)
+  std::string kind = "planar";
   int elements = 1000;          ///< model size, unless dofs > 0
   /// Lowest modes (rotor: lines of the Campbell diagram); -1 the kind's default (10, rotor
   /// 12); 0 skips the modal part.
   int modes = -1;
   int repeat = 3;
   long long dofs = 0;           ///< > 0: the size whose free dof count is nearest this
+  int members = 0;              ///< frame3d: > 0, the member count to come nearest
+  int combinations = 0;         ///< frame3d: load combinations of its three load cases
   std::string exportDir;        ///< not empty: write K, M and f there (Matrix Market)
   /// As a user's `solve` runs: the heap is not populated before each run (prepareMemory),
   /// so first-touch page faults fall inside the timings.

@@ -13,6 +13,7 @@ namespace beamrotor {
 BenchReport benchPlanar(const BenchOptions& options);
 BenchReport benchGrid(const BenchOptions& options);
 BenchReport benchRotor(const BenchOptions& options);
+BenchReport benchFrame(const BenchOptions& options);
 
 /// Collects one bench's per-run times; the report keeps their medians.
 class BenchSamples {

@@ -139,8 +139,8 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       app.add_subcommand("bench",
                          "Time a standard model (medians of repeated runs) and report its accuracy "
                          "against the exact reference.");
-  benchCmd->add_option("--kind", bench.kind, "standard model: planar, grid3d or rotor")
-      ->check(CLI::IsMember({"planar", "grid3d", "rotor"}));
+  benchCmd->add_option("--kind", bench.kind, "standard model: planar, grid3d, rotor or frame3d")
+      ->check(CLI::IsMember({"planar", "grid3d", "rotor", "frame3d"}));
   CLI::Option* elements =
       benchCmd
           ->add_option("--elements", bench.elements,
@@ -151,6 +151,16 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->type_name("N")
       ->check(wholeNumber(1, 1000000000))
       ->excludes(elements);
+  benchCmd
+      ->add_option("--members", bench.members,
+                   "frame3d: the member count to come nearest (a building of n x n bays and n "
+                   "storeys)")
+      ->check(CLI::Range(1, 10000000))
+      ->excludes(elements);
+  benchCmd
+      ->add_option("--combinations", bench.combinations,
+                   "frame3d: load combinations of its three load cases (default 0)")
+      ->check(CLI::Range(0, 100000));
   benchCmd
       ->add_option("--modes", bench.modes,
                    "lowest modes, rotor: Campbell lines (default 10, rotor 12; 0: statics only)")

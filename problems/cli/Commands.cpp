@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/cli/ExitCodes.hpp"
@@ -105,10 +106,12 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
       also = [&](const fs::path& temporary) { exportStudyMatrices(s, temporary / inResults); };
     const OutputChoices choices = chooseOutput(s.deck.output, options.output);
     std::string writeError;
+    std::optional<PreparedRun> prepared;  // the run's extremes, computed once for the summary too
     try {
-      if (s.run)
-        writeRunOutputs(*s.run, dir, choices, also);
-      else
+      if (s.run) {
+        prepared = prepareRun(*s.run, choices.fullTables);
+        writePreparedRun(*prepared, dir, choices, also);
+      } else
         writeSweepOutputs(*s.sweep, dir, choices, also);
       if (options.exportMatrices && !inside)
         writeDirectoryAtomically(
@@ -121,7 +124,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     // 3. The summary.
     printHeader(out, s, options.study);
     if (s.run)
-      printRunResults(out, s.deck, *s.run);
+      printRunResults(out, s.deck, *s.run, prepared ? &prepared->extremes : nullptr);
     else
       printSweepResults(out, s.deck, *s.sweep);
     printSweepPeaks(out, s, options.study.deckPath);

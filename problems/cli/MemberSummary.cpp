@@ -2,40 +2,65 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
+#include <vector>
 
-#include "fem/assembly/MemberExtrema.hpp"
 #include "problems/cli/Summary.hpp"
 
 namespace beamrotor::cli {
 
+namespace {
+
+/// The larger in magnitude of a range's two ends.
+const MemberValue& largerEnd(const ComponentRange& r) {
+  return std::abs(r.max.value) >= std::abs(r.min.value) ? r.max : r.min;
+}
+
+}  // namespace
+
 void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model,
-                         const StaticResult& statics) {
+                         const StaticExtremes& extremes, const std::string& indent) {
   if (model.members().empty()) return;
   // The components a planar frame carries: N, Vy, Mz; a 3d one all six.
   const std::vector<ForceComponent> shown =
       deck.dimension == "planar"
           ? std::vector<ForceComponent>{ForceComponent::N, ForceComponent::Vy, ForceComponent::Mz}
           : std::vector<ForceComponent>(kForceComponents.begin(), kForceComponents.end());
-  const MemberValue top = largestDisplacement(model, statics.displacement);
+  const MemberValue& top = extremes.largestDisplacement;
   const Eigen::Vector3d& at = top.x;
-  out << "  largest displacement " << formatValue(top.value) << " m at (" << formatValue(at.x())
-      << ", " << formatValue(at.y()) << ", " << formatValue(at.z()) << ") m\n";
-  out << "  members (largest |value| in member axes, at m from the member's start; N, N m, m):\n";
-  for (const auto& [name, elements] : model.members()) {
-    const auto ranges = memberForceRanges(model, elements, statics.displacement);
-    out << "    " << padded(name, 12);
+  out << indent << "largest displacement " << formatValue(top.value) << " m at ("
+      << formatValue(at.x()) << ", " << formatValue(at.y()) << ", " << formatValue(at.z())
+      << ") m\n";
+
+  // Every member, or the kSummaryMembers of the largest bending moment, in the model's order.
+  const auto& members = model.members();
+  std::vector<std::size_t> listed(members.size());
+  std::iota(listed.begin(), listed.end(), std::size_t{0});
+  if (listed.size() > kSummaryMembers) {
+    const auto moment = [&](std::size_t m) {
+      return std::max(std::abs(largerEnd(extremes.ranges[m][int(ForceComponent::Mz)]).value),
+                      std::abs(largerEnd(extremes.ranges[m][int(ForceComponent::My)]).value));
+    };
+    std::stable_sort(listed.begin(), listed.end(),
+                     [&](std::size_t a, std::size_t b) { return moment(a) > moment(b); });
+    listed.resize(kSummaryMembers);
+    std::sort(listed.begin(), listed.end());
+  }
+  out << indent << "members (largest |value| in member axes, at m from the member's start; N, N m, m)";
+  if (listed.size() < members.size())
+    out << ", the " << listed.size() << " of the largest bending moment among "
+        << members.size() << " (all in results.json)";
+  out << ":\n";
+  for (std::size_t m : listed) {
+    out << indent << "  " << padded(members[m].first, 12);
     for (ForceComponent c : shown) {
-      const ComponentRange& r = ranges[int(c)];
-      const MemberValue& top = std::abs(r.max.value) >= std::abs(r.min.value) ? r.max : r.min;
-      out << padded(std::string(componentName(c)) + " " + formatValue(top.value) + " @ " +
-                        formatValue(top.along),
+      const MemberValue& v = largerEnd(extremes.ranges[m][int(c)]);
+      out << padded(std::string(componentName(c)) + " " + formatValue(v.value) + " @ " +
+                        formatValue(v.along),
                     26);
     }
-    out << "deflection " << formatValue(largestChordDeflection(model, elements,
-                                                               statics.displacement)
-                                            .value)
-        << "\n";
+    out << "deflection " << formatValue(extremes.chordDeflections[m].value) << "\n";
   }
 }
 

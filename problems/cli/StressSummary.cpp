@@ -32,9 +32,9 @@ struct Peak {
   bool found = false;  ///< false: no beams
 };
 
-/// Largest normal (first) and shear (second) stress of a static solution: exact element peaks.
-std::pair<Peak, Peak> peaksOf(const Model& model, const StaticResult& r, std::size_t run) {
-  const std::vector<ElementPeaks> peaks = elementPeaks(model, r.displacement);
+/// Largest normal (first) and shear (second) stress among a solution's exact element peaks.
+std::pair<Peak, Peak> peaksOf(const Model& model, const std::vector<ElementPeaks>& peaks,
+                              std::size_t run) {
   std::pair<Peak, Peak> out;
   if (const auto top = largestAlongLine(model, peaks, &ElementPeaks::stress))
     out.first = {run, *top, true};
@@ -45,9 +45,9 @@ std::pair<Peak, Peak> peaksOf(const Model& model, const StaticResult& r, std::si
 
 /// "  largest normal stress 12.3 MPa at x = 0.575 m (rod)" without the line's end.
 void printPeak(std::ostream& out, const char* what, const Deck& deck, const Model& model,
-               const Peak& p) {
+               const Peak& p, const std::string& indent = "  ") {
   const LineElement& line = *asLine(model.elements()[p.peak.place.element]);
-  out << "  largest " << what << " " << formatValue(p.peak.value * 1e-6) << " MPa at ";
+  out << indent << "largest " << what << " " << formatValue(p.peak.value * 1e-6) << " MPa at ";
   if (const auto member = memberLocation(model, p.peak.place.element, p.peak.place.s)) {
     out << formatValue(member->second) << " m along member "
         << model.members()[member->first].first << " (" << line.section().name << ")";
@@ -66,12 +66,12 @@ const StaticResult* firstStatic(const RunResult& r) {
 }  // namespace
 
 void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
-                      const StaticResult& statics) {
-  const auto [normal, shear] = peaksOf(model, statics, 0);
+                      const std::vector<ElementPeaks>& peaks, const std::string& indent) {
+  const auto [normal, shear] = peaksOf(model, peaks, 0);
   if (!normal.found) return;  // no beams
-  printPeak(out, "normal stress", deck, model, normal);
+  printPeak(out, "normal stress", deck, model, normal, indent);
   out << "\n";
-  printPeak(out, "shear stress ", deck, model, shear);
+  printPeak(out, "shear stress ", deck, model, shear, indent);
   out << "\n";
 }
 
@@ -79,7 +79,8 @@ void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResul
   Peak normal, shear;
   for (std::size_t k = 0; k < sweep.runs.size(); ++k)
     if (const StaticResult* s = firstStatic(sweep.runs[k])) {
-      const auto [n, t] = peaksOf(*sweep.runs[k].model, *s, k);
+      const auto [n, t] =
+          peaksOf(*sweep.runs[k].model, elementPeaks({*sweep.runs[k].model, s->displacement}), k);
       if (n.found && (!normal.found || n.peak.value > normal.peak.value)) normal = n;
       if (t.found && (!shear.found || t.peak.value > shear.peak.value)) shear = t;
     }

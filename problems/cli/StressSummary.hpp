@@ -5,6 +5,7 @@
 
 #include <ostream>
 
+#include "fem/assembly/ElementExtrema.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 #include "problems/deck/Deck.hpp"
@@ -12,9 +13,10 @@
 
 namespace beamrotor::cli {
 
-/// "  largest normal stress 49.9 MPa at x = 0.575 m (rod)" and the shear stress line.
+/// "  largest normal stress 49.9 MPa at x = 0.575 m (rod)" and the shear stress line, from a
+/// solution's element peaks (elementPeaks), each line led by `indent`.
 void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
-                      const StaticResult& statics);
+                      const std::vector<ElementPeaks>& peaks, const std::string& indent = "  ");
 
 /// The same over every run of a sweep (first static analysis of each), with "at eta = 0.4".
 void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep);

@@ -9,6 +9,8 @@
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/model/DofMap.hpp"
 #include "problems/cli/AdequateSummary.hpp"
+#include "problems/cli/CaseSummary.hpp"
+#include "problems/cli/SolutionSummary.hpp"
 #include "problems/cli/CrankSummary.hpp"
 #include "problems/cli/MemberSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
@@ -21,11 +23,6 @@
 namespace beamrotor::cli {
 
 namespace {
-
-/// Unit of a displacement component.
-const char* motionUnit(Dof d) {
-  return isRotation(d) ? "rad" : "m";
-}
 
 SystemSize sizeOf(const RunResult& run) {
   using Size = std::optional<SystemSize>;
@@ -54,75 +51,32 @@ SystemSize sizeOf(const RunResult& run) {
   return systemSize(*run.model, DofMap(*run.model), 0, 0);
 }
 
-/// The points worth reporting: the deck's own, or start and end when it names none.
-std::vector<const DeckPoint*> reportedPoints(const Deck& deck) {
-  std::vector<const DeckPoint*> out;
-  for (const DeckPoint& p : deck.points)
-    if (p.name != "start" && p.name != "end") out.push_back(&p);
-  if (out.empty())
-    for (const DeckPoint& p : deck.points) out.push_back(&p);
-  return out;
-}
-
 void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
-                 const AnalysisOutcome& a) {
+                 const AnalysisOutcome& a, const AnalysisExtremes& extremes) {
   const StaticResult& r = *staticsOf(a);
   char conditioning[64];
   std::snprintf(conditioning, sizeof conditioning, "rcond %.1e, round-off <= %.1e", r.rcond,
                 r.roundOff);
   out << "static analysis '" << a.name << "' (" << r.solver << ", " << conditioning << ")\n";
-  out << "  reactions (force on the structure; N, N m):\n";
-  // Named as in results.json and sweep.csv: fx ... mz.
-  for (const SupportReactions& support : reactionsBySupport(r)) {
-    out << "    " << padded(support.support, 12);
-    for (const auto& [dof, value] : support.components)
-      out << padded(std::string(reactionName(dof)) + " " + formatValue(value) + " " +
-                        std::string(reactionUnit(dof)),
-                    22);
-    out << "\n";
-  }
-  out << "  displacements at points (m, rad):\n";
-  for (const DeckPoint* p : reportedPoints(deck)) {
-    const int node = run.model->node(p->name);
-    out << "    " << padded(p->name, 12);
-    if (deck.frame) {
-      // A frame's points are places in space, not stations along one line.
-      const Eigen::Vector3d& x = run.model->nodes()[node];
-      std::string at = "at (" + formatValue(x.x()) + ", " + formatValue(x.y());
-      if (deck.dimension == "3d") at += ", " + formatValue(x.z());
-      out << padded(at + ") m", 24);
-    } else {
-      out << padded("x = " + formatValue(p->at) + " m", 16);
+  if (const auto* s = resultOf<StaticOutcome>(a); s && !s->ownLoads) {
+    // The solution of the empty `loads:` is all zeros: only the cases say anything.
+    out << "  (its `loads:` is empty: the structure is loaded by its load cases alone)\n";
+  } else {
+    printReactions(out, r, "  ");
+    printPointDisplacements(out, deck, run, r, "  ");
+    if (!r.contacts.empty()) {
+      out << "  contacts (after " << r.activeSetIterations << " active-set solves):\n";
+      for (const ContactState& k : r.contacts)
+        out << "    " << padded(k.name, 12)
+            << (k.active ? "closed, " + std::string(isRotation(k.dof) ? "moment " : "force ") +
+                               formatValue(k.force) + " " + (isRotation(k.dof) ? "N m" : "N")
+                         : "open, gap " + formatValue(k.gap) + " " + motionUnit(k.dof))
+            << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
     }
-    const auto hinge = std::find_if(r.hinges.begin(), r.hinges.end(),
-                                    [&](const SideRotations& h) { return h.node == node; });
-    for (Dof d : kAllDofs) {
-      if (!deck.dofs.contains(d)) continue;
-      const std::string name(dofName(d));
-      if (!isRotation(d) || hinge == r.hinges.end()) {
-        out << padded(
-            name + " " + formatValue(r.displacement(node, dofIndex(d))) + " " + motionUnit(d), 22);
-        continue;
-      }
-      // A hinge: the beam end on each side turns on its own.
-      for (const auto& [side, value] :
-           {std::pair{" left ", &hinge->left}, std::pair{" right ", &hinge->right}})
-        if (*value)
-          out << padded(name + side + formatValue((**value)[dofIndex(d) - 3]) + " rad", 26);
-    }
-    out << "\n";
+    printStressPeaks(out, deck, *run.model, extremes.own->peaks);
+    printMemberExtremes(out, deck, *run.model, *extremes.own);
   }
-  if (!r.contacts.empty()) {
-    out << "  contacts (after " << r.activeSetIterations << " active-set solves):\n";
-    for (const ContactState& k : r.contacts)
-      out << "    " << padded(k.name, 12)
-          << (k.active ? "closed, " + std::string(isRotation(k.dof) ? "moment " : "force ") +
-                             formatValue(k.force) + " " + (isRotation(k.dof) ? "N m" : "N")
-                       : "open, gap " + formatValue(k.gap) + " " + motionUnit(k.dof))
-          << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
-  }
-  printStressPeaks(out, deck, *run.model, r);
-  printMemberExtremes(out, deck, *run.model, r);
+  printCases(out, deck, run, a, extremes);
 }
 
 /// "reported: wstar = 0.00215712, theta_p = 0.00167015" (the deck's `report:`).
@@ -168,7 +122,11 @@ std::string formatValue(double v) {
   return buf;
 }
 
-void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) {
+void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
+                     const std::vector<AnalysisExtremes>* extremes) {
+  const std::vector<AnalysisExtremes> computed =
+      extremes ? std::vector<AnalysisExtremes>() : runExtremes(run);
+  const std::vector<AnalysisExtremes>& x = extremes ? *extremes : computed;
   const SystemSize size = sizeOf(run);
   if (run.model->nodeCount() == 0)
     out << "model: none (the deck's analyses are mechanisms that need no model)\n";
@@ -178,12 +136,13 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run) 
   printReported(out, run.reported);
   for (const std::string& w : run.warnings) out << "warning: " << w << "\n";
   if (run.adequate) printAdequateChoice(out, *run.adequate);
-  for (const AnalysisOutcome& a : run.analyses) {
+  for (std::size_t i = 0; i < run.analyses.size(); ++i) {
+    const AnalysisOutcome& a = run.analyses[i];
     std::visit(
         Overloaded{
-            [&](const StaticOutcome&) { printStatic(out, deck, run, a); },
+            [&](const StaticOutcome&) { printStatic(out, deck, run, a, x.at(i)); },
             [&](const SecondOrderResult&) {
-              printStatic(out, deck, run, a);
+              printStatic(out, deck, run, a, x.at(i));
               printSecondOrder(out, a);
             },
             [&](const BucklingResult&) { printBuckling(out, a); },

@@ -7,12 +7,17 @@
 #include <vector>
 
 #include "problems/deck/Deck.hpp"
+#include "problems/output/structure/StaticExtremes.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
 
-/// Model size, reactions by support, displacements at the named points, frequencies.
-void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run);
+/// Model size, reactions by support, displacements at the named points, stresses, member
+/// extremes, load cases and their envelope, frequencies. The static extremes are read from
+/// `extremes` (runExtremes, one per analysis: what the results directory was written from)
+/// when given, else computed here.
+void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
+                     const std::vector<AnalysisExtremes>* extremes = nullptr);
 
 /// One row per swept value: reactions of the first static analysis and the lowest
 /// frequencies of the first modal one.

@@ -10,6 +10,7 @@
 #include "fem/model/DofMap.hpp"
 #include "problems/deck/AnalysisKinds.hpp"
 #include "problems/output/structure/AdequateJson.hpp"
+#include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/FileNames.hpp"
@@ -22,6 +23,13 @@
 #include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
+
+Json& appendNew(Json& object, std::string key, Json value) {
+  auto& entries = object.get_ref<Json::object_t&>();
+  using Entries = std::vector<Json::object_t::value_type>;
+  static_cast<Entries&>(entries).emplace_back(std::move(key), std::move(value));
+  return entries.back().second;
+}
 
 namespace {
 
@@ -50,7 +58,7 @@ Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
   std::sort(points.begin(), points.end());
   Json out = Json::object();
   for (const auto& [node, name] : points) {
-    Json& components = out[name] = Json::object();
+    Json& components = appendNew(out, name);
     for (Dof d : kAllDofs)
       if (dofs.equation(node, d) >= 0)
         components[std::string(dofName(d))] = r.displacement(node, dofIndex(d));
@@ -83,25 +91,49 @@ Json contactsJson(const std::vector<ContactState>& contacts) {
 Json peakJson(const Model& model, const std::optional<LinePeak>& top) {
   if (!top) return nullptr;  // no line elements: the key is dropped by the caller
   const LineElement& line = *asLine(model.elements()[top->place.element]);
-  return {{"value", top->value},
-          {"x", top->place.x},
-          {"element", top->place.element},
-          {"section", line.section().name}};
+  Json out = {{"value", top->value},
+              {"x", top->place.x},
+              {"element", top->place.element},
+              {"section", line.section().name}};
+  // In a frame, also the member and the place in space (x above is along the elements' chain).
+  if (const auto member = memberLocation(model, top->place.element, top->place.s)) {
+    const Eigen::Vector3d at = placeOnElement(model, top->place.element, top->place.s);
+    out["member"] = model.members()[member->first].first;
+    out["s"] = member->second;
+    out["point"] = {at.x(), at.y(), at.z()};
+  }
+  return out;
 }
 
-/// One load case or combination: its reactions, point displacements and member extremes.
-Json caseJson(const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
-              const CaseOutcome& c, const std::string& stem) {
-  const Model& model = *c.model;
+/// The largest normal and shear stress of a solution, under `max_stress` and `max_shear`.
+void stressPeaksJson(Json& out, const Model& model, const std::vector<ElementPeaks>& peaks) {
+  for (const auto& [key, kind] : {std::pair{"max_stress", &ElementPeaks::stress},
+                                  std::pair{"max_shear", &ElementPeaks::shear}})
+    if (Json top = peakJson(model, largestAlongLine(model, peaks, kind)); !top.is_null())
+      out[key] = top;
+}
+
+/// One load case or combination: its factors (a combination), reactions, point displacements,
+/// largest stresses, member extremes and warnings.
+Json caseJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
+              const CaseOutcome& c, const StaticExtremes& extremes, const std::string& stem,
+              bool memberDetail) {
   Json out = {{"name", c.name}, {"combination", c.combination}};
+  if (c.combination) {
+    Json factors = Json::object();
+    for (const auto& [name, factor] : c.factors) factors[name] = factor;
+    out["factors"] = factors;
+  }
   out["reactions"] = reactionsJson(c.statics);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, c.statics);
-  if (!model.members().empty()) {
-    out["max_displacement"] = maxDisplacementJson(model, c.statics.displacement);
-    Json members = membersJson(model, c.statics.displacement, stem);
+  stressPeaksJson(out, model, extremes.peaks);
+  if (!model.members().empty()) out["max_displacement"] = maxDisplacementJson(extremes.largestDisplacement);
+  if (memberDetail) {
+    Json members = membersJson(model, extremes, stem);
     for (auto& item : members.items()) item.value().erase("csv");  // written for the analysis only
-    out["members"] = members;
+    out["members"] = std::move(members);
   }
+  out["warnings"] = c.warnings;
   return out;
 }
 
@@ -112,51 +144,59 @@ void widen(Json& bound, double value, const std::string& name, bool larger) {
     bound = {{"value", value}, {"case", name}};
 }
 
-/// The envelope over the combinations' entries: for each reaction and point displacement
-/// component its max and min, for each member force component the max of its maxima and the
-/// min of its minima along the member; each with the combination that gives it.
-Json envelopeJson(const Json& cases) {
+/// {value, case}: a governed value and its combination's name.
+Json governedJson(const Governed& g, const std::vector<CaseOutcome>& cases) {
+  return {{"value", g.value}, {"case", cases.at(g.by).name}};
+}
+
+/// The envelope over the combinations: for each point displacement component (from the cases'
+/// entries) and each reaction component its max and min, for each member resultant the max of
+/// its maxima and the min of its minima along the member, the largest displacement and normal
+/// stress; each with the combination that gives it.
+Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases,
+                  const CaseEnvelope& envelope, const Model& model) {
   Json out = {{"reactions", Json::object()}, {"displacements", Json::object()},
               {"members", Json::object()}};
-  for (const Json& c : cases) {
+  for (const auto& [r, range] : envelope.reactions)
+    out["reactions"][r.support][std::string(reactionName(r.dof))] = {
+        {"max", governedJson(range.max, cases)}, {"min", governedJson(range.min, cases)}};
+  for (const Json& c : caseEntries) {
     if (!c.at("combination").get<bool>()) continue;
     const std::string name = c.at("name").get<std::string>();
-    for (const char* key : {"reactions", "displacements"})
-      for (const auto& where : c.at(key).items())
-        for (const auto& component : where.value().items()) {
-          Json& e = out[key][where.key()][component.key()];
-          widen(e["max"], component.value().get<double>(), name, true);
-          widen(e["min"], component.value().get<double>(), name, false);
-        }
-    if (!c.contains("members")) continue;
-    for (const auto& member : c.at("members").items())
-      for (const ForceComponent f : kForceComponents) {
-        const std::string component = componentName(f);
-        const Json& m = member.value();
-        if (!m.contains(component)) continue;
-        Json& e = out["members"][member.key()][component];
-        widen(e["max"], m.at(component).at("max").at("value").get<double>(), name, true);
-        widen(e["min"], m.at(component).at("min").at("value").get<double>(), name, false);
+    for (const auto& where : c.at("displacements").items())
+      for (const auto& component : where.value().items()) {
+        Json& e = out["displacements"][where.key()][component.key()];
+        widen(e["max"], component.value().get<double>(), name, true);
+        widen(e["min"], component.value().get<double>(), name, false);
       }
   }
+  for (std::size_t m = 0; m < envelope.members.size(); ++m) {
+    Json& member = appendNew(out["members"], model.members()[m].first);
+    for (std::size_t f = 0; f < kForceComponents.size(); ++f)
+      member[componentName(kForceComponents[f])] = {
+          {"max", governedJson(envelope.members[m][f].max, cases)},
+          {"min", governedJson(envelope.members[m][f].min, cases)}};
+  }
+  if (envelope.largestDisplacement.by >= 0)
+    out["max_displacement"] = governedJson(envelope.largestDisplacement, cases);
+  if (envelope.largestStress.by >= 0)
+    out["max_stress"] = governedJson(envelope.largestStress, cases);
   return out;
 }
 
 Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
-                const AnalysisOutcome& a, const std::vector<ElementPeaks>& peaks) {
+                const AnalysisOutcome& a, const AnalysisExtremes& extremes) {
+  const StaticExtremes& own = extremes.own.value();
   const StaticResult& r = *staticsOf(a);
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
   out["reactions"] = reactionsJson(r);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
   if (!model.members().empty()) {
-    out["max_displacement"] = maxDisplacementJson(model, r.displacement);
-    out["members"] = membersJson(model, r.displacement, stem);
+    out["max_displacement"] = maxDisplacementJson(own.largestDisplacement);
+    out["members"] = membersJson(model, own, stem);
   }
-  for (const auto& [key, kind] : {std::pair{"max_stress", &ElementPeaks::stress},
-                                  std::pair{"max_shear", &ElementPeaks::shear}})
-    if (Json top = peakJson(model, largestAlongLine(model, peaks, kind)); !top.is_null())
-      out[key] = top;
+  stressPeaksJson(out, model, own.peaks);
   if (!r.contacts.empty()) {
     out["contacts"] = contactsJson(r.contacts);
     out["active_set_iterations"] = r.activeSetIterations;
@@ -165,22 +205,27 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   out["round_off"] = r.roundOff;
   out["solver"] = r.solver;
   out["time_s"] = r.time.total;
+  if (const auto* s = resultOf<StaticOutcome>(a); s && !s->ownLoads) out["loaded"] = false;
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
   if (!casesOf(a).empty()) {
     Json cases = Json::array();
-    for (const CaseOutcome& c : casesOf(a)) {
-      cases.push_back(caseJson(dofs, carried, c, stem));
+    const bool detail = caseMemberDetail(model, casesOf(a).size());
+    for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
+      cases.push_back(
+          caseJson(model, dofs, carried, casesOf(a)[i], extremes.cases.at(i), stem, detail));
       cases.back()["vtu"] = caseVtu(stem, int(cases.size()));
     }
-    out["cases"] = cases;
+    out["cases"] = std::move(cases);
     out["files"]["cases_csv"] = casesCsv(stem);
     out["files"]["cases_pvd"] = casesPvd(stem);
     if (std::any_of(casesOf(a).begin(), casesOf(a).end(),
                     [](const CaseOutcome& c) { return c.combination; })) {
-      out["envelope"] = envelopeJson(cases);
+      out["envelope"] = envelopeJson(out["cases"], casesOf(a),
+                                     caseEnvelope(model, casesOf(a), extremes.cases), model);
       if (!model.members().empty()) {
         Json files = Json::object();
-        for (const auto& [name, elements] : model.members()) files[name] = envelopeCsv(stem, name);
+        for (const auto& [name, elements] : model.members())
+          appendNew(files, name, envelopeCsvOf(model, stem, name));
         out["files"]["envelope_csv"] = files;
       }
     }
@@ -318,17 +363,22 @@ Json sweepWorstJson(const SweepResult& sweep, const std::vector<Json>& runDocs) 
 Json reactionsJson(const StaticResult& r) {
   Json out = Json::object();
   for (const SupportReactions& s : reactionsBySupport(r)) {
-    Json& components = out[s.support] = Json::object();
+    Json& components = appendNew(out, s.support);
     for (const auto& [dof, value] : s.components)
       components[std::string(reactionName(dof))] = value;
   }
   return out;
 }
 
-Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>& peaks) {
+Json runJson(const RunResult& run) {
   if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
-  if (peaks.size() != run.analyses.size())
-    throw std::invalid_argument("runJson needs one list of element peaks per analysis");
+  return runJson(run, runExtremes(run));
+}
+
+Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes) {
+  if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
+  if (extremes.size() != run.analyses.size())
+    throw std::invalid_argument("runJson needs the extremes of every analysis");
   const Model& model = *run.model;
   const DofMap dofs(model);
   const auto carried = kindsCarried(model, dofs);
@@ -340,9 +390,9 @@ Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>&
     const AnalysisOutcome& a = run.analyses[i];
     analyses.push_back(std::visit(
         Overloaded{
-            [&](const StaticOutcome&) { return staticJson(model, dofs, carried, a, peaks[i]); },
+            [&](const StaticOutcome&) { return staticJson(model, dofs, carried, a, extremes[i]); },
             [&](const SecondOrderResult& r) {
-              Json entry = staticJson(model, dofs, carried, a, peaks[i]);
+              Json entry = staticJson(model, dofs, carried, a, extremes[i]);
               entry["second_order"] = secondOrderJson(r);
               return entry;
             },

@@ -30,18 +30,28 @@
 #include <vector>
 
 #include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/structure/StaticExtremes.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
 
 using Json = nlohmann::ordered_json;
 
+/// Adds `key` to `object`, which must not hold it yet, and returns its value: without the
+/// ordered map's search for the key (linear in its size, so quadratic over a frame's 10^4
+/// members or named points).
+Json& appendNew(Json& object, std::string key, Json value = Json::object());
+
 /// Reactions per support: {support: {fx ... mz}}, the components the support holds.
 Json reactionsJson(const StaticResult& r);
 
-/// results.json of one run. `peaks[i]` are the element peaks of run.analyses[i] (empty for
-/// other analyses), see elementPeaks; the largest stress and shear are read from them.
-Json runJson(const RunResult& run, const std::vector<std::vector<ElementPeaks>>& peaks);
+/// results.json of one run. `extremes[i]` are those of run.analyses[i] (staticExtremes of its
+/// own solution and of each load case and combination; empty for other kinds): the largest
+/// stresses, member extremes and largest displacements are read from them.
+Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes);
+/// The same, the extremes computed here.
+Json runJson(const RunResult& run);
+
 
 /// sweep.json from the values and each value's results.json (runDocs) and sub-directory
 /// (empty: none, the entry names no directory).

@@ -13,9 +13,11 @@
 #include "problems/output/ChartCaption.hpp"
 #include "problems/output/files/AtomicDirectory.hpp"
 #include "problems/output/files/ChartBatch.hpp"
+#include "problems/output/files/ChartParts.hpp"
 #include "problems/output/structure/Charts.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
+#include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/structure/EnvelopeCharts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
@@ -38,6 +40,45 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// A frame's charts: the whole structure at once, not a line coordinate through its members.
+/// The deformed shape and moments under the deck's own loads (unless only its load cases load
+/// it), under each combination that governs an extreme (governingCombinations), the envelope
+/// of the moments on the frame, and up to kEnvelopeChartsUpTo members' own envelope charts.
+void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, const fs::path& dir) {
+  const RunResult& run = *prepared.run;
+  const Model& model = *run.model;
+  const AnalysisOutcome& a = *p.outcome;
+  const bool planar = run.dimension == "planar";
+  const auto draw = [&](const std::vector<StaticStation>& stations, const StaticExtremes& x,
+                        const std::string& what, const std::string& chart) {
+    const StationsByElement byElement(stations, model.elements().size());
+    const FrameDrawing frame{&model, &byElement, &x.ranges, x.largestDisplacement.value};
+    drawChart(dir, frameChart(chartCaption(run, a.name, what), chart, frame, planar));
+  };
+  const StaticOutcome* statics = resultOf<StaticOutcome>(a);
+  if (!statics || statics->ownLoads || p.cases.empty())
+    draw(p.stations, *p.extremes->own, "", frameShapeChart(p.stem));
+  if (p.envelopeStations.empty()) return;
+  const std::vector<CaseOutcome>& cases = casesOf(a);
+  const CaseEnvelope envelope = caseEnvelope(model, cases, p.extremes->cases);
+  for (int k : governingCombinations(envelope, planar))
+    draw(p.cases.at(k).stations, p.extremes->cases.at(k), ", combination " + cases[k].name,
+         caseFrameChart(p.stem, k + 1));
+  std::vector<std::string> names;
+  for (const CaseOutcome& c : cases)
+    if (c.combination) names.push_back(c.name);
+  drawChart(dir, frameEnvelopeChart(chartCaption(run, a.name, ", envelope of the combinations"),
+                                    frameEnvelopeChart(p.stem), model, p.envelopeStations, names,
+                                    planar));
+  if (model.members().size() > kEnvelopeChartsUpTo) return;
+  for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
+    const std::string& member = model.members()[m].first;
+    drawChart(dir, memberEnvelopeChart(chartCaption(run, a.name, ", envelope of " + member),
+                                       envelopeChart(p.stem, member), p.envelopes[m],
+                                       p.envelopes[m].title()));
+  }
+}
+
 /// A static analysis' files: its fields, members, load cases, VTK and diagrams.
 void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
                       const StaticResult& statics, const fs::path& dir, bool charts) {
@@ -48,11 +89,12 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   if (p.caseTable) p.caseTable->write(dir / casesCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
     for (const CsvTable& table : *list) table.write(dir / table.title());
-  writeStaticVtu(dir / staticVtu(p.stem), model, statics, p.stations, p.peaks);
+  writeStaticVtu(dir / staticVtu(p.stem), {model, statics.displacement}, p.stations,
+                 p.extremes->own->peaks);
   if (!p.cases.empty()) {
     std::vector<PvdEntry> entries;
     for (const PreparedCase& c : p.cases) {
-      writeStaticVtu(dir / c.vtu, *c.outcome->model, c.outcome->statics, c.stations, c.peaks);
+      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.stations, c.extremes->peaks);
       entries.push_back({double(entries.size() + 1), c.vtu});
     }
     writePvd(dir / casesPvd(p.stem), entries);
@@ -60,20 +102,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   if (charts && !p.stations.empty() && p.members.empty())
     drawChart(dir, staticDiagrams(chartCaption(run, a.name), diagramsChart(p.stem),
                                   {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
-  if (charts && !p.members.empty()) {
-    // A frame: the whole structure at once, not a line coordinate through its members.
-    std::vector<MemberSeries> series;
-    for (const CsvTable& member : p.members)
-      series.push_back({member.title(), &member, member.title()});
-    drawChart(dir, frameChart(chartCaption(run, a.name), frameShapeChart(p.stem), model,
-                              statics.displacement, series, run.dimension == "planar"));
-    for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
-      const std::string& member = model.members()[m].first;
-      drawChart(dir, memberEnvelopeChart(chartCaption(run, a.name, ", envelope of " + member),
-                                         envelopeChart(p.stem, member), p.envelopes[m],
-                                         p.envelopes[m].title()));
-    }
-  }
+  if (charts && !p.members.empty()) drawFrameCharts(prepared, p, dir);
 }
 
 /// A modal analysis' files: its frequencies, shapes, one VTK file per mode and the chart.
@@ -132,7 +161,11 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 void writeRunOutputs(const RunResult& run, const fs::path& dir, const OutputChoices& choices,
                      const AlsoWrite& also) {
-  const PreparedRun prepared = prepareRun(run, choices.fullTables);
+  writePreparedRun(prepareRun(run, choices.fullTables), dir, choices, also);
+}
+
+void writePreparedRun(const PreparedRun& prepared, const fs::path& dir,
+                      const OutputChoices& choices, const AlsoWrite& also) {
   writeDirectoryAtomically(dir, [&](const fs::path& temporary) {
     ChartBatch charts(choices.charts);
     writeRunFiles(prepared, temporary, choices.charts != ChartFormat::none);

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "problems/deck/OutputChoices.hpp"
+#include "problems/output/PreparedRun.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
@@ -19,6 +20,10 @@ using AlsoWrite = std::function<void(const std::filesystem::path&)>;
 /// format `choices` names, drawn together at the end (ChartBatch).
 void writeRunOutputs(const RunResult& run, const std::filesystem::path& dir,
                      const OutputChoices& choices = {}, const AlsoWrite& also = {});
+/// The same from the run already prepared (prepareRun, PreparedRun.hpp), whose extremes the
+/// caller may go on to read (the summary).
+void writePreparedRun(const PreparedRun& prepared, const std::filesystem::path& dir,
+                      const OutputChoices& choices = {}, const AlsoWrite& also = {});
 
 /// All outputs of a sweep into dir: the sweep tables and charts, and with choices.pointFiles
 /// one sub-directory per value (its results without charts) and a .pvd series over them.

@@ -26,7 +26,7 @@ bool writeOverlay(const std::filesystem::path& dir, const std::vector<OverlaidRu
     if (!a) throw std::invalid_argument(r.label + " has no static analysis along a line");
     const std::string file = r.label + "_fields.csv";
     tables.push_back(
-        staticFieldsTable(file, sampleStatics(*r.run->model, staticsOf(*a)->displacement)));
+        staticFieldsTable(file, sampleStatics({*r.run->model, staticsOf(*a)->displacement})));
     tables.back().write(dir / file);
     series.push_back({&tables.back(), file, r.label});
     models.push_back(r.run->model.get());

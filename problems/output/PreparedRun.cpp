@@ -63,37 +63,45 @@ CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
 }
 
 /// Each case's VTK samples and, for a frame with combinations, the envelope along every member.
-void prepareCases(const AnalysisOutcome& a, PreparedAnalysis& p) {
+void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis& p) {
   for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
     const CaseOutcome& c = casesOf(a)[i];
-    const NodalField& u = c.statics.displacement;
-    p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(*c.model, u),
-                       elementPeaks(*c.model, u)});
+    p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(c.on(model)),
+                       &p.extremes->cases.at(i)});
   }
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
   for (const CaseOutcome& c : casesOf(a))
     if (c.combination) {
-      combinations.push_back({c.model.get(), &c.statics.displacement});
+      combinations.push_back(c.on(model));
       names.push_back(c.name);
     }
   if (combinations.empty()) return;
-  for (const auto& [name, elements] : combinations.front().model->members())
-    p.envelopes.push_back(memberEnvelopeTable(
-        envelopeCsv(p.stem, name), memberEnvelope(combinations, elements, kIntervalsPerElement),
-        names));
+  for (const auto& [name, elements] : model.members())
+    p.envelopeStations.push_back(memberEnvelope(combinations, elements, kIntervalsPerElement));
+  if (oneMembersTable(model)) {
+    p.envelopes.push_back(
+        membersEnvelopeTable(envelopesCsv(p.stem), model, p.envelopeStations, names));
+    return;
+  }
+  for (std::size_t m = 0; m < model.members().size(); ++m)
+    p.envelopes.push_back(memberEnvelopeTable(envelopeCsv(p.stem, model.members()[m].first),
+                                              p.envelopeStations[m], names));
 }
 
 /// A static analysis sampled along the line, its fields and member tables, and its cases.
 void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticResult& statics,
                    PreparedAnalysis& p, bool fullTables) {
-  p.stations = sampleStatics(model, statics.displacement);
-  p.peaks = elementPeaks(model, statics.displacement);
+  p.stations = sampleStatics({model, statics.displacement});
   p.fields = staticFieldsTable(fieldsCsv(p.stem),
                                fullTables ? p.stations : thinnedStations(p.stations));
-  for (const auto& [name, elements] : model.members())
-    p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, p.stations));
-  prepareCases(a, p);
+  const StationsByElement byElement(p.stations, model.elements().size());
+  if (oneMembersTable(model))
+    p.members.push_back(membersTable(membersCsv(p.stem), model, byElement));
+  else
+    for (const auto& [name, elements] : model.members())
+      p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, byElement));
+  prepareCases(model, a, p);
 }
 
 /// Refuses non-finite numbers and analyses that would overwrite each other's files.
@@ -106,11 +114,7 @@ void requireWritable(const RunResult& run) {
 
 Json prepareRunDocument(const RunResult& run) {
   requireWritable(run);
-  std::vector<std::vector<ElementPeaks>> peaks;
-  for (const AnalysisOutcome& a : run.analyses)
-    peaks.push_back(staticsOf(a) ? elementPeaks(*run.model, staticsOf(a)->displacement)
-                                 : std::vector<ElementPeaks>{});
-  Json doc = runJson(run, peaks);
+  Json doc = runJson(run, runExtremes(run));
   requireFiniteNumbers(doc, kResultsJson);
   return doc;
 }
@@ -120,11 +124,12 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables) {
   requireWritable(run);
   const Model& model = *run.model;
 
-  // 2. Sample the statics along the line and build every table.
-  PreparedRun prepared{&run, {}, {}};
-  std::vector<std::vector<ElementPeaks>> peaks;
-  for (const AnalysisOutcome& a : run.analyses) {
-    PreparedAnalysis p{&a, fileStem(a.name), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  // 2. The extremes of every static solution, then the samples along the line and every table.
+  PreparedRun prepared{&run, runExtremes(run), {}, {}};
+  for (std::size_t i = 0; i < run.analyses.size(); ++i) {
+    const AnalysisOutcome& a = run.analyses[i];
+    PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {},
+                       {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
             [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p, fullTables); },
@@ -151,12 +156,11 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables) {
             [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
             [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); }},
         a.result);
-    peaks.push_back(p.peaks);
     prepared.analyses.push_back(std::move(p));
   }
 
   // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
-  prepared.doc = runJson(run, peaks);
+  prepared.doc = runJson(run, prepared.extremes);
   requireFiniteNumbers(prepared.doc, kResultsJson);
   // 4. The load cases' table, read from the document's entries.
   for (PreparedAnalysis& p : prepared.analyses)

@@ -9,9 +9,11 @@
 #include <utility>
 #include <vector>
 
+#include "fem/assembly/MemberEnvelope.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/structure/StaticExtremes.hpp"
 #include "problems/output/rotor/RotorOutput.hpp"
 #include "problems/run/RunResult.hpp"
 
@@ -22,7 +24,7 @@ struct PreparedCase {
   const CaseOutcome* outcome = nullptr;
   std::string vtu;                      ///< <stem>_case_NN.vtu
   std::vector<StaticStation> stations;
-  std::vector<ElementPeaks> peaks;
+  const StaticExtremes* extremes = nullptr;  ///< its extremes (PreparedRun::extremes)
 };
 
 /// What one analysis writes, computed before writing.
@@ -30,14 +32,20 @@ struct PreparedAnalysis {
   const AnalysisOutcome* outcome = nullptr;
   std::string stem;                     ///< file stem of its files
   std::vector<StaticStation> stations;  ///< statics only
-  std::vector<ElementPeaks> peaks;      ///< statics only: each element's exact largest values
+  /// Statics: the extremes of its own solution and of each case (PreparedRun::extremes).
+  const AnalysisExtremes* extremes = nullptr;
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
   std::optional<CsvTable> modes;   ///< modal: <stem>_modes.csv; buckling: <stem>_factors.csv
   std::optional<CsvTable> shapes;  ///< modal, buckling: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
   std::optional<PreparedRotor> rotor;   ///< rotor analyses
-  std::vector<CsvTable> members;        ///< statics of a frame: <stem>_member_<name>.csv each
-  std::vector<CsvTable> envelopes;      ///< frame with combinations: <stem>_envelope_<name>.csv
+  /// Statics of a frame: <stem>_member_<name>.csv each, or the one <stem>_members.csv
+  /// (oneMembersTable).
+  std::vector<CsvTable> members;
+  /// Frame with combinations: <stem>_envelope_<name>.csv each, or the one
+  /// <stem>_envelopes.csv (oneMembersTable); the envelope along each member they hold.
+  std::vector<CsvTable> envelopes;
+  std::vector<std::vector<EnvelopeStation>> envelopeStations;
   std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
   std::optional<CsvTable> caseTable;    ///< statics with load cases: <stem>_cases.csv
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
@@ -48,6 +56,7 @@ struct PreparedAnalysis {
 
 struct PreparedRun {
   const RunResult* run = nullptr;  ///< must outlive this
+  std::vector<AnalysisExtremes> extremes;  ///< per analysis, computed once (runExtremes)
   std::vector<PreparedAnalysis> analyses;
   Json doc;  ///< results.json
 };

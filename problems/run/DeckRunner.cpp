@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <new>
+#include <span>
 #include <stdexcept>
 #include <variant>
 
@@ -34,40 +35,59 @@ namespace beamrotor {
 
 namespace {
 
-/// The deck with its `loads:` replaced by loads (the deck's other parts unchanged).
-Deck withLoads(const Deck& deck, std::vector<DeckLoad> loads) {
-  Deck d = deck;
-  d.loads = std::move(loads);
-  d.loadCases.clear();
-  d.combinations.clear();
-  return d;
-}
-
-/// The loads of combination k: each factored case's loads, scaled by its factor.
-std::vector<DeckLoad> combinedLoads(const Deck& deck, const DeckCombination& k) {
-  std::vector<DeckLoad> loads;
+/// A combination's solution: the factored sum of its cases' displacements and reactions
+/// (every case has the same supports, so their reactions line up), the hinge rotations
+/// recovered under its loading, the factored sum of the cases'.
+CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
+                          std::span<const CaseOutcome> cases) {
+  Stopwatch clock;
+  CaseOutcome out{k.name, true, k.factors, nullptr, {}, {}};
+  std::vector<std::pair<std::shared_ptr<const Loading>, double>> parts;
+  StaticResult& r = out.statics;
+  const StaticResult& first = cases.front().statics;
+  r.displacement = NodalField::Zero(first.displacement.rows(), first.displacement.cols());
+  r.reactions = first.reactions;
+  for (ReactionComponent& c : r.reactions) c.value = 0;
   for (const auto& [name, factor] : k.factors)
-    for (const DeckLoadCase& lc : deck.loadCases)
-      if (lc.name == name)
-        for (const DeckLoad& l : lc.loads) loads.push_back(scaledLoad(l, factor));
-  return loads;
+    for (const CaseOutcome& c : cases)
+      if (c.name == name) {
+        parts.emplace_back(c.loading, factor);
+        r.displacement += factor * c.statics.displacement;
+        for (std::size_t i = 0; i < r.reactions.size(); ++i)
+          r.reactions[i].value += factor * c.statics.reactions[i].value;
+        r.roundOff = std::max(r.roundOff, c.statics.roundOff);
+      }
+  out.loading = std::make_shared<const Loading>(Loading::combination(parts));
+  r.hinges = hingeRotations(out.on(model));
+  r.activeSetIterations = 1;
+  r.rcond = first.rcond;
+  r.solver = first.solver;
+  r.size = first.size;
+  r.time.total = clock.lap();
+  return out;
 }
 
-/// Each load case and each combination (its cases' loads, factored) as a model of its own,
-/// all solved with one factorisation of K: the models differ only in their loads, so each is
-/// one more right-hand side. Each model is kept for member forces, which need its distributed
-/// loads.
-std::vector<CaseOutcome> solveCases(const Deck& deck, const StaticOptions& options) {
-  std::vector<CaseOutcome> out;
-  for (const DeckLoadCase& lc : deck.loadCases)
-    out.push_back({lc.name, false, buildModel(withLoads(deck, lc.loads)), {}});
-  for (const DeckCombination& k : deck.combinations)
-    out.push_back({k.name, true, buildModel(withLoads(deck, combinedLoads(deck, k))), {}});
-  std::vector<const Model*> models;
-  for (const CaseOutcome& c : out) models.push_back(c.model.get());
-  std::vector<StaticResult> results = solveStaticCases(models, options);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i].statics = std::move(results[i]);
-  return out;
+/// The deck's own loads and each load case as loadings of the one model, all solved with one
+/// factorisation of K (one more right-hand side each), then each combination as the factored
+/// sum of its cases.
+StaticOutcome solveWithCases(const Deck& deck, const Model& model, const StaticOptions& options) {
+  StaticOutcome statics;
+  std::vector<CaseOutcome>& out = statics.cases;
+  out.reserve(deck.loadCases.size() + deck.combinations.size());  // `cases` below stays valid
+  std::vector<const Loading*> loadings{nullptr};  // the model's own loads first
+  for (const DeckLoadCase& lc : deck.loadCases) {
+    out.push_back({lc.name, false, {},
+                   std::make_shared<const Loading>(loadingOf(deck, model, lc.loads)), {}, {}});
+    loadings.push_back(out.back().loading.get());
+  }
+  std::vector<StaticResult> results = solveLoadings(model, loadings, options);
+  statics.statics = std::move(results.front());
+  for (std::size_t i = 1; i < results.size(); ++i) out[i - 1].statics = std::move(results[i]);
+  const std::span<const CaseOutcome> cases(out.data(), out.size());
+  for (const DeckCombination& k : deck.combinations) out.push_back(combinationOf(k, model, cases));
+  for (CaseOutcome& c : out)
+    if (auto w = displacementWarning(model, c.statics)) c.warnings.push_back(*w);
+  return statics;
 }
 
 AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model,
@@ -82,15 +102,22 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
               if (spec.secondOrder) return solveSecondOrder(model);
               StaticOptions options;
               if (cache) options.reuse = &cache->statics;
-              StaticOutcome statics{solveStatic(model, options), {}};
-              if (!spec.acceptRoundOff) refuseUntrustedStatics(deck, model, statics.statics);
+              // Load cases share the factorisation of the deck's own loads (no contacts then:
+              // the reader refuses cases with contacts).
+              StaticOutcome statics = deck.loadCases.empty()
+                                          ? StaticOutcome{solveStatic(model, options), {}}
+                                          : solveWithCases(deck, model, options);
+              // With load cases and an empty `loads:` (cases refuse prescribed support values)
+              // the deck's own solution is the unloaded one.
+              statics.ownLoads = !(deck.loads.empty() && !deck.loadCases.empty());
+              if (!spec.acceptRoundOff) {
+                if (statics.ownLoads) refuseUntrustedStatics(deck, model, statics.statics);
+                for (const CaseOutcome& c : statics.cases)
+                  refuseUntrustedStatics(deck, model, c.statics,
+                                         (c.combination ? "combination " : "load case ") + c.name);
+              }
               if (auto w = overRefinementWarning(model, statics.statics)) out.warnings.push_back(*w);
               if (auto w = displacementWarning(model, statics.statics)) out.warnings.push_back(*w);
-              statics.cases = solveCases(deck, options);
-              if (!spec.acceptRoundOff)
-                for (const CaseOutcome& c : statics.cases)
-                  refuseUntrustedStatics(deck, *c.model, c.statics,
-                                         (c.combination ? "combination " : "load case ") + c.name);
               return statics;
             },
             [&](const BucklingSpec& spec) -> AnalysisResult {
@@ -156,13 +183,7 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
     }
     c.quantity += " (case " + k.loadCase + ")";
     for (const CaseOutcome& lc : casesOf(a))
-      if (lc.name == k.loadCase) {
-        AnalysisOutcome one;
-        one.type = a.type;
-        one.name = a.name;
-        one.result = StaticOutcome{lc.statics, {}};
-        c.computed = measure(k.quantity, one, *lc.model);
-      }
+      if (lc.name == k.loadCase) c.computed = measureStatic(k.quantity, lc.statics, lc.on(model));
   }
   // A NaN compares false with everything: it must never reach a pass, a table or the
   // accuracy search's convergence test.

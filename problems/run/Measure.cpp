@@ -35,12 +35,14 @@ double measureHistory(const Quantity& q, const TransientOutcome& outcome) {
 /// A point's displacement, or the rotation of the beam end on one side of it. A dof the node
 /// does not carry (a rotation every beam end there releases, a translation of a body that has
 /// no mass along it) is an error, never a zero.
-double measureDisplacement(const Quantity& q, const StaticResult& r, const Model& model) {
+double measureDisplacement(const Quantity& q, const StaticResult& r,
+                           const LoadedSolution& solution) {
+  const Model& model = *solution.model;
   const int node = model.node(q.target);
   const std::string what = "point '" + q.target + "' ";
   const int k = dofIndex(q.dof);
   if (q.side != Quantity::Side::node) {
-    const SideRotations sides = rotationsBeside(model, r.displacement, node);
+    const SideRotations sides = rotationsBeside(solution, node);
     const bool left = q.side == Quantity::Side::left;
     const auto& rotation = left ? sides.left : sides.right;
     if (!rotation)
@@ -59,12 +61,12 @@ double measureDisplacement(const Quantity& q, const StaticResult& r, const Model
 }
 
 /// A member quantity: an extreme of one resultant, or the deflection from the chord.
-double measureMember(const Quantity& q, const StaticResult& r, const Model& model) {
-  for (const auto& [name, elements] : model.members()) {
+double measureMember(const Quantity& q, const LoadedSolution& solution) {
+  for (const auto& [name, elements] : solution.model->members()) {
     if (name != q.target) continue;
     if (q.kind == Quantity::Kind::memberDeflection)
-      return largestChordDeflection(model, elements, r.displacement).value;
-    const auto ranges = memberForceRanges(model, elements, r.displacement);
+      return largestChordDeflection(solution, elements).value;
+    const auto ranges = memberForceRanges(solution, elements);
     for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
       if (q.property != componentName(kForceComponents[c])) continue;
       const ComponentRange& range = ranges[c];
@@ -107,24 +109,27 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
   }
   const StaticResult* statics = staticsOf(outcome);
   if (!statics) throw std::invalid_argument("analysis '" + outcome.name + "' is not static");
-  const StaticResult& r = *statics;
+  return measureStatic(q, *statics, {model, statics->displacement});
+}
+
+double measureStatic(const Quantity& q, const StaticResult& r, const LoadedSolution& solution) {
   switch (q.kind) {
     case Quantity::Kind::reaction:
       return r.reaction(q.target, q.dof);
     case Quantity::Kind::displacement:
-      return measureDisplacement(q, r, model);
+      return measureDisplacement(q, r, solution);
     case Quantity::Kind::maxDisplacement:
-      return largestDisplacement(model, r.displacement).value;
+      return largestDisplacement(solution).value;
     case Quantity::Kind::memberForce:
     case Quantity::Kind::memberDeflection:
-      return measureMember(q, r, model);
+      return measureMember(q, solution);
     default: {
       // The exact element peaks (the same numbers results.json and the summary report); a
       // value that is not finite anywhere makes the quantity NaN, and its check fail.
       const auto kind = q.kind == Quantity::Kind::maxStress  ? &ElementPeaks::stress
                         : q.kind == Quantity::Kind::maxShear ? &ElementPeaks::shear
                                                              : &ElementPeaks::moment;
-      const auto top = largestPeak(elementPeaks(model, r.displacement), kind);
+      const auto top = largestPeak(elementPeaks(solution), kind);
       if (!top) throw std::invalid_argument("'" + q.text + "': the model has no beams");
       return top->value;
     }

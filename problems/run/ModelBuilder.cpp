@@ -29,17 +29,32 @@ void at(const Deck& deck, const DeckPlace& place, Step&& step) {
   }
 }
 
-/// Index of the segment each beam of the line lies in (beams run start to end, one after the
-/// other, so a beam's midpoint station identifies its segment).
-std::vector<int> segmentOfBeams(const Deck& deck, const Line& line) {
+/// A beam of the model and the deck segment it lies in (a frame's member).
+struct BeamInSegment {
+  int element = -1;  ///< index into Model::elements()
+  int segment = -1;
+};
+
+/// Every beam of the model built from the deck with its segment: a frame's members are its
+/// segments in deck order; a line's beams run along x from 0, one segment after the other, so
+/// a beam's midpoint tells its segment.
+std::vector<BeamInSegment> beamsInSegments(const Deck& deck, const Model& model) {
+  std::vector<BeamInSegment> out;
+  if (deck.frame) {
+    for (std::size_t m = 0; m < model.members().size(); ++m)
+      for (int e : model.members()[m].second) out.push_back({e, int(m)});
+    return out;
+  }
   std::vector<double> ends;
   double x = 0;
   for (const DeckSegment& s : deck.segments) ends.push_back(x += s.length);
-  std::vector<int> out;
-  for (std::size_t b = 0; b < line.beams.size(); ++b) {
-    const double mid = 0.5 * (line.stations[b] + line.stations[b + 1]);
+  for (int e = 0; e < int(model.elements().size()); ++e) {
+    const LineElement* line = asLine(model.elements()[e]);
+    if (!line) continue;
+    const auto [a, b] = line->endNodes();
+    const double mid = 0.5 * (model.nodes()[a].x() + model.nodes()[b].x());
     const auto it = std::upper_bound(ends.begin(), ends.end(), mid);
-    out.push_back(std::min(int(it - ends.begin()), int(ends.size()) - 1));
+    out.push_back({e, std::min(int(it - ends.begin()), int(ends.size()) - 1)});
   }
   return out;
 }
@@ -67,7 +82,7 @@ SegmentAxis segmentAxis(const Deck& deck, int segment) {
 /// inside or outside it), linear from q at `from` to qEnd at `to` inside; turned from member
 /// axes, or scaled per projected length (component k by the length of the segment's
 /// projection across direction k, sqrt(1 - e_k^2) per unit length).
-Eigen::Vector3d distributedLoadAt(const DeckLoad& l, const Beam& beam, const SegmentAxis& axis,
+Eigen::Vector3d distributedLoadAt(const DeckLoad& l, const LineElement& beam, const SegmentAxis& axis,
                                   const std::array<double, 2>& span, int end) {
   constexpr double kInside = 1e-9;  // fractions: a node at the part's end, up to round-off
   const double middle = 0.5 * (span[0] + span[1]);
@@ -84,26 +99,18 @@ Eigen::Vector3d distributedLoadAt(const DeckLoad& l, const Beam& beam, const Seg
 /// Supports, springs, contacts, masses and point loads at their nodes (model: not null).
 void addAttachments(const Deck& deck, Model* model);
 
-/// The beams of the model in order and the deck segment (a frame's member) of each.
-struct BuiltBeams {
-  std::vector<Beam*> beams;
-  std::vector<int> segmentOf;
-};
-
 /// The line: segments cut at every named point.
-BuiltBeams addLine(const Deck& deck, Model& model) {
+void addLine(const Deck& deck, Model& model) {
   LineSpec spec;
   spec.dofs = deck.dofs;
   for (const DeckSegment& s : deck.segments)
     spec.segments.push_back({s.length, s.section, s.elements, s.size, s.options});
   for (const DeckPoint& p : deck.points) spec.points.push_back({p.name, p.at});
-  Line line;
-  at(deck, deck.segments.front().place, [&] { line = buildLine(model, spec); });
-  return {line.beams, segmentOfBeams(deck, line)};
+  at(deck, deck.segments.front().place, [&] { buildLine(model, spec); });
 }
 
 /// The frame: joints, members cut at their stations; each member named in the model.
-BuiltBeams addFrame(const Deck& deck, Model& model) {
+void addFrame(const Deck& deck, Model& model) {
   const DeckFrame& frame = *deck.frame;
   FrameSpec spec;
   spec.dofs = deck.dofs;
@@ -118,24 +125,51 @@ BuiltBeams addFrame(const Deck& deck, Model& model) {
   spec.stations = frame.stations;
   FrameMesh mesh;
   at(deck, frame.members.front().place, [&] { mesh = buildFrame(model, spec); });
-  BuiltBeams out;
   std::map<const Element*, int> index;
   for (std::size_t e = 0; e < model.elements().size(); ++e) index[model.elements()[e].get()] = int(e);
   for (std::size_t m = 0; m < mesh.memberBeams.size(); ++m) {
     std::vector<int> elements;
-    for (Beam* beam : mesh.memberBeams[m]) {
-      out.beams.push_back(beam);
-      out.segmentOf.push_back(int(m));
-      elements.push_back(index.at(beam));
-    }
+    for (Beam* beam : mesh.memberBeams[m]) elements.push_back(index.at(beam));
     model.addMember(deck.segments[m].name, std::move(elements));
   }
-  return out;
 }
 
 bool acts(const DeckLoad& l, int segment) {
   return l.segments.empty() ||
          std::find(l.segments.begin(), l.segments.end(), segment) != l.segments.end();
+}
+
+/// The span load `loads` put on `beam` of segment `segment` (N/m, global frame, at its start
+/// and end node): the distributed loads acting there and self-weight, summed.
+std::array<Eigen::Vector3d, 2> spanLoadOn(const Deck& deck, const std::vector<DeckLoad>& loads,
+                                          const Model& model, const LineElement& beam,
+                                          int segment) {
+  const SegmentAxis axis = segmentAxis(deck, segment);
+  std::array<double, 2> span;  // the beam's ends as fractions of its segment's length
+  for (int end = 0; end < 2; ++end)
+    span[end] =
+        (model.nodes()[beam.endNodes()[end]] - axis.start).dot(axis.direction) / axis.length;
+  std::array<Eigen::Vector3d, 2> q{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  for (const DeckLoad& l : loads) {
+    if (!acts(l, segment)) continue;
+    if (l.kind == DeckLoad::Kind::distributed)
+      for (int end = 0; end < 2; ++end) q[end] += distributedLoadAt(l, beam, axis, span, end);
+    if (l.kind == DeckLoad::Kind::selfWeight)
+      for (Eigen::Vector3d& qe : q) qe.y() -= beam.section().rhoA() * l.g;
+  }
+  return q;
+}
+
+/// The point loads of `loads` at their nodes.
+std::vector<NodalLoad> pointLoads(const Deck& deck, const Model& model,
+                                  const std::vector<DeckLoad>& loads) {
+  std::vector<NodalLoad> out;
+  for (const DeckLoad& l : loads)
+    if (l.kind == DeckLoad::Kind::point)
+      at(deck, l.place, [&] {
+        for (const auto& [d, value] : l.components) out.push_back({model.node(l.point), d, value});
+      });
+  return out;
 }
 
 /// The dofs on which a body has inertia: translations with m, rotations with Jp (about the
@@ -167,28 +201,21 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
   }
 
   // 1. The beams: a line of segments cut at every named point, or a frame's members.
-  const BuiltBeams beams = deck.frame ? addFrame(deck, *model) : addLine(deck, *model);
+  if (deck.frame)
+    addFrame(deck, *model);
+  else
+    addLine(deck, *model);
+  std::vector<Beam*> beams;
+  for (const BeamInSegment& b : beamsInSegments(deck, *model)) {
+    Beam* beam = dynamic_cast<Beam*>(model->elements()[b.element].get());
+    if (!beam) throw std::logic_error("a deck's line element is not a beam");
+    beams.push_back(beam);
 
-  // 2. Distributed loads and self-weight, summed per beam (a beam holds one load varying
-  //    linearly from its start to its end).
-  for (std::size_t b = 0; b < beams.beams.size(); ++b) {
-    Beam& beam = *beams.beams[b];
-    const int segment = beams.segmentOf[b];
-    const SegmentAxis axis = segmentAxis(deck, segment);
-    std::array<double, 2> span;  // the beam's ends as fractions of its segment's length
-    for (int end = 0; end < 2; ++end)
-      span[end] = (model->nodes()[beam.endNodes()[end]] - axis.start).dot(axis.direction) /
-                  axis.length;
-    std::array<Eigen::Vector3d, 2> q{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-    for (const DeckLoad& l : deck.loads) {
-      if (!acts(l, segment)) continue;
-      if (l.kind == DeckLoad::Kind::distributed)
-        for (int end = 0; end < 2; ++end) q[end] += distributedLoadAt(l, beam, axis, span, end);
-      if (l.kind == DeckLoad::Kind::selfWeight)
-        for (Eigen::Vector3d& qe : q) qe.y() -= beam.section().rhoA() * l.g;
-    }
-    if (!q[0].isZero() || !q[1].isZero()) beam.setDistributedLoad(q[0], q[1]);
-    beam.setAxialPreload(deck.segments[segment].axialForce);
+    // 2. Distributed loads and self-weight, summed per beam (a beam holds one load varying
+    //    linearly from its start to its end).
+    const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, deck.loads, *model, *beam, b.segment);
+    if (!q[0].isZero() || !q[1].isZero()) beam->setDistributedLoad(q[0], q[1]);
+    beam->setAxialPreload(deck.segments[b.segment].axialForce);
   }
 
   // 3. Hinges: release the rotations of every beam end at the point; a rotation released on
@@ -196,7 +223,7 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
   for (const DeckHinge& h : deck.hinges)
     at(deck, h.place, [&] {
       const int node = model->node(h.point);
-      for (Beam* beam : beams.beams)
+      for (Beam* beam : beams)
         for (int end = 0; end < 2; ++end)
           if (beam->endNodes()[end] == node)
             for (Dof d : h.released) beam->release(end, d);
@@ -241,14 +268,19 @@ void addAttachments(const Deck& deck, Model* model) {
       else
         model->add<Bearing>(model->node(b.point), b.speeds, b.table);
     });
-  for (const DeckLoad& l : deck.loads)
-    if (l.kind == DeckLoad::Kind::point)
-      at(deck, l.place, [&] {
-        for (const auto& [d, value] : l.components)
-          model->addLoad({model->node(l.point), d, value});
-      });
+  for (const NodalLoad& l : pointLoads(deck, *model, deck.loads)) model->addLoad(l);
 }
 
 }  // namespace
+
+Loading loadingOf(const Deck& deck, const Model& model, const std::vector<DeckLoad>& loads) {
+  std::vector<std::pair<int, ElementSpanLoad>> span;
+  for (const BeamInSegment& b : beamsInSegments(deck, model)) {
+    const LineElement& line = *asLine(model.elements()[b.element]);
+    const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, loads, model, line, b.segment);
+    if (!q[0].isZero() || !q[1].isZero()) span.emplace_back(b.element, line.spanLoadOf(q[0], q[1]));
+  }
+  return Loading(pointLoads(deck, model, loads), std::move(span));
+}
 
 }  // namespace beamrotor

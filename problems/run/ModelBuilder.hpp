@@ -4,7 +4,9 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
+#include "fem/model/Loading.hpp"
 #include "fem/model/Model.hpp"
 #include "problems/deck/Deck.hpp"
 
@@ -12,5 +14,10 @@ namespace beamrotor {
 
 /// Builds the model a deck describes. Throws DeckError.
 std::shared_ptr<Model> buildModel(const Deck& deck);
+
+/// `loads` (a load case's, in the syntax of `loads:`) on the model buildModel(deck) built: its
+/// point loads at their nodes and each beam's span load, exactly as buildModel puts the deck's
+/// own loads on its beams. Throws DeckError.
+Loading loadingOf(const Deck& deck, const Model& model, const std::vector<DeckLoad>& loads);
 
 }  // namespace beamrotor

@@ -11,6 +11,8 @@
 #include <variant>
 #include <vector>
 
+#include "fem/assembly/Recovery.hpp"
+#include "fem/model/Loading.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 #include "fem/stability/StabilityResults.hpp"
@@ -40,20 +42,30 @@ struct Check {
   bool pass() const { return std::isfinite(computed) && relError() <= tolerance; }
 };
 
-/// A static analysis under one load case or combination: the model carrying its loads (for
-/// member forces, which need the distributed loads) and its solution. A combination's model
-/// carries its cases' loads, factored; all cases and combinations share one factorisation.
+/// A static analysis under one load case or combination, on the run's model: its loads there
+/// (Loading.hpp: member forces need its span loads) and its solution. The cases are solved as
+/// further right-hand sides of one factorisation; a combination is the factored sum of its
+/// cases' solutions (linear statics superpose), its loading their loadings factored.
 struct CaseOutcome {
   std::string name;
   bool combination = false;
-  std::shared_ptr<const Model> model;
+  std::vector<std::pair<std::string, double>> factors;  ///< a combination's: case, factor
+  std::shared_ptr<const Loading> loading;
   StaticResult statics;
+  std::vector<std::string> warnings;  ///< not errors, e.g. displacements past the model's size
+  /// The solution as recovery reads it, on `model` (the run's model).
+  LoadedSolution on(const Model& model) const {
+    return {model, statics.displacement, loading.get()};
+  }
 };
 
 /// A linear static analysis: its solution, and each load case and combination solved apart.
 struct StaticOutcome {
   StaticResult statics;
   std::vector<CaseOutcome> cases;  ///< the load cases, then the combinations
+  /// Whether the deck's `loads:` loads the structure; false when only its load cases do (the
+  /// solution above is then the unloaded one, which the summary and charts leave out).
+  bool ownLoads = true;
 };
 
 /// What one analysis produced: one value type per kind of result. A static analysis with

@@ -93,10 +93,10 @@ const CaseOutcome& caseOf(const RunResult& run, const std::string& name) {
   return *it;
 }
 
-double memberMaxAbsMz(const CaseOutcome& c, const std::string& member) {
-  for (const auto& [name, elements] : c.model->members())
+double memberMaxAbsMz(const LoadedSolution& solution, const std::string& member) {
+  for (const auto& [name, elements] : solution.model->members())
     if (name == member) {
-      const auto ranges = memberForceRanges(*c.model, elements, c.statics.displacement);
+      const auto ranges = memberForceRanges(solution, elements);
       const ComponentRange& r = ranges[5];  // Mz
       return std::max(std::abs(r.max.value), std::abs(r.min.value));
     }
@@ -133,17 +133,17 @@ TEST_SUITE("load cases") {
     CHECK(both.statics.reaction("A", Dof::uy) == doctest::Approx(3 * qL / 8).epsilon(kExact));
     // The support moment qL^2/8 is the largest |Mz| of either span (the span moments are
     // 9qL^2/128).
-    CHECK(memberMaxAbsMz(both, "span1") == doctest::Approx(qL2 / 8).epsilon(kExact));
-    CHECK(memberMaxAbsMz(both, "span2") == doctest::Approx(qL2 / 8).epsilon(kExact));
+    CHECK(memberMaxAbsMz(both.on(*run.model), "span1") == doctest::Approx(qL2 / 8).epsilon(kExact));
+    CHECK(memberMaxAbsMz(both.on(*run.model), "span2") == doctest::Approx(qL2 / 8).epsilon(kExact));
 
     const CaseOutcome& one = caseOf(run, "one");
     CHECK_FALSE(one.combination);
     CHECK(one.statics.reaction("A", Dof::uy) == doctest::Approx(7 * qL / 16).epsilon(kExact));
     CHECK(one.statics.reaction("B", Dof::uy) == doctest::Approx(10 * qL / 16).epsilon(kExact));
     CHECK(one.statics.reaction("C", Dof::uy) == doctest::Approx(-qL / 16).epsilon(kExact));
-    CHECK(memberMaxAbsMz(one, "span1") == doctest::Approx(49 * qL2 / 512).epsilon(kExact));
+    CHECK(memberMaxAbsMz(one.on(*run.model), "span1") == doctest::Approx(49 * qL2 / 512).epsilon(kExact));
     // The unloaded span carries the support moment qL^2/16, falling linearly to C.
-    CHECK(memberMaxAbsMz(one, "span2") == doctest::Approx(qL2 / 16).epsilon(kExact));
+    CHECK(memberMaxAbsMz(one.on(*run.model), "span2") == doctest::Approx(qL2 / 16).epsilon(kExact));
   }
 
   TEST_CASE("a combination equals the factored sum of its cases solved as separate decks") {
@@ -166,16 +166,16 @@ TEST_SUITE("load cases") {
       CHECK(uls.statics.reaction(support, Dof::uy) ==
             doctest::Approx(expected).epsilon(kExact).scale(kQ * kL));
     }
-    // Member forces of the combination (from its model with the factored loads) match those
-    // of one deck carrying the factored loads.
+    // Member forces of the combination (under its cases' span loads, factored) match those of
+    // one deck carrying the factored loads.
     const Study sf = test::solveDeckText(
         twoSpanDeck("loads: [" + spanLoad("span1", 1.35 * kQ) + ", " + spanLoad("span2", 1.5 * kQ) +
                     "]\n"),
         "factored.yaml");
     const RunResult& f = onlyRun(sf);
-    CaseOutcome direct{"direct", false, f.model, *staticsOf(f.analyses.front())};
+    const LoadedSolution direct{*f.model, staticsOf(f.analyses.front())->displacement};
     for (const char* member : {"span1", "span2"})
-      CHECK(memberMaxAbsMz(uls, member) ==
+      CHECK(memberMaxAbsMz(uls.on(*run.model), member) ==
             doctest::Approx(memberMaxAbsMz(direct, member)).epsilon(kExact));
   }
 
@@ -183,7 +183,7 @@ TEST_SUITE("load cases") {
     const Study s = test::solveDeckText(twoSpanDeck(kCases), "two_span.yaml");
     const RunResult& run = onlyRun(s);
     const Json doc =
-        runJson(run, {elementPeaks(*run.model, staticsOf(run.analyses.front())->displacement)});
+        runJson(run);
     const Json& analysis = doc["analyses"][0];
     REQUIRE(analysis.contains("envelope"));
     REQUIRE(analysis["cases"].size() == 5);
@@ -206,9 +206,9 @@ TEST_SUITE("load cases") {
       double hi = -1e300, lo = 1e300;
       for (const CaseOutcome& c : casesOf(run.analyses.front())) {
         if (!c.combination) continue;
-        for (const auto& [name, elements] : c.model->members())
+        for (const auto& [name, elements] : run.model->members())
           if (name == member) {
-            const auto r = memberForceRanges(*c.model, elements, c.statics.displacement)[5];
+            const auto r = memberForceRanges(c.on(*run.model), elements)[5];
             hi = std::max(hi, r.max.value);
             lo = std::min(lo, r.min.value);
           }
@@ -284,16 +284,6 @@ TEST_SUITE("load cases") {
     for (const char* support : {"A", "B", "C"})
       CHECK(two.statics.reaction(support, Dof::uy) ==
             doctest::Approx(direct.reaction(support, Dof::uy)).epsilon(1e-12).scale(kQ * kL));
-    // Models of another structure cannot share a factor.
-    const Study other = test::solveDeckText(
-        "model: {dimension: planar}\nmaterials: [{name: steel, E: 210e9, nu: 0.3}]\n"
-        "sections: [{name: b, shape: rectangle, b: 0.1, h: 0.1}]\n"
-        "segments: [{length: 1, section: b, elements: 3}]\n"
-        "supports: [{at: start, fix: clamped}]\nloads: [{type: point, at: end, fy: 1}]\n"
-        "analyses: [{type: static}]\n",
-        "other.yaml");
-    CHECK_THROWS_AS(solveStaticCases({run.model.get(), onlyRun(other).model.get()}),
-                    std::invalid_argument);
   }
 
   TEST_CASE("the envelope along a member against the closed forms of pattern loading") {
@@ -303,7 +293,7 @@ TEST_SUITE("load cases") {
     std::vector<std::string> names;
     for (const CaseOutcome& c : casesOf(run.analyses.front()))
       if (c.combination) {
-        combinations.push_back({c.model.get(), &c.statics.displacement});
+        combinations.push_back(c.on(*run.model));
         names.push_back(c.name);
       }
     REQUIRE(combinations.size() == 3);
@@ -315,11 +305,10 @@ TEST_SUITE("load cases") {
     std::string saggingBy, hoggingBy;
     for (const EnvelopeStation& st : env) {
       // At every place, the largest and smallest over the combinations, each recomputed here
-      // from the element's own resultants.
+      // from the element's own resultants under the combination's span loads.
       double hi = -1e300, lo = 1e300;
       for (const LoadedSolution& sol : combinations) {
-        const LineElement& line = *asLine(sol.model->elements().at(st.element));
-        const double mz = line.sectionForces(elementValues(line, *sol.displacement), st.s).Mz;
+        const double mz = sol.forceSeries(st.element).at(st.s).Mz;
         hi = std::max(hi, mz), lo = std::min(lo, mz);
       }
       CHECK(st.max[5] == doctest::Approx(hi).epsilon(1e-14).scale(kQ * kL * kL));

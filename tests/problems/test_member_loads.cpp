@@ -50,8 +50,8 @@ const RunResult& theRun(const Study& s) {
 }
 
 std::array<ComponentRange, 6> beamRanges(const RunResult& run) {
-  return memberForceRanges(*run.model, run.model->members().front().second,
-                           staticsOf(run.analyses.front())->displacement);
+  return memberForceRanges({*run.model, staticsOf(run.analyses.front())->displacement},
+                           run.model->members().front().second);
 }
 
 
@@ -107,7 +107,7 @@ TEST_SUITE("member loads") {
                          (7 * std::pow(L, 4) - 10 * L * L * xPeak * xPeak + 3 * std::pow(xPeak, 4)) /
                          (360 * L * EI);
     const MemberValue largest =
-        largestDisplacement(*run.model, staticsOf(run.analyses.front())->displacement);
+        largestDisplacement({*run.model, staticsOf(run.analyses.front())->displacement});
     CHECK(largest.value == doctest::Approx(vPeak).epsilon(kExact));
     // A stationary point found by bisection to the last bit: its place to about sqrt(eps).
     CHECK(largest.x.x() == doctest::Approx(xPeak).epsilon(1e-7));

@@ -32,7 +32,7 @@ const RunResult solved(const std::string& deck, double eta, double w0 = 0.001) {
 double peakStress(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
     if (staticsOf(a))
-      return largestPeak(elementPeaks(*run.model, staticsOf(a)->displacement),
+      return largestPeak(elementPeaks({*run.model, staticsOf(a)->displacement}),
                          &ElementPeaks::stress)
           ->value;
   throw std::logic_error("no static analysis");
@@ -45,7 +45,7 @@ double peakRotation(const RunResult& run) {
   for (const AnalysisOutcome& a : run.analyses)
     if (staticsOf(a)) {
       double peak = 0;
-      for (const StaticStation& st : sampleStatics(*run.model, staticsOf(a)->displacement, 1000))
+      for (const StaticStation& st : sampleStatics({*run.model, staticsOf(a)->displacement}, 1000))
         peak = std::max(peak, std::abs(st.displacement[dofIndex(Dof::rz)]));
       return peak;
     }

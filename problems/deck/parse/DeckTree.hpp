@@ -32,7 +32,7 @@ class DeckTree {
  public:
   /// Most nodes a deck may hold once its aliases are expanded (each alias is a copy of what it
   /// names): a deck of kLargestDeck bytes written out holds at most about half as many.
-  static constexpr std::size_t kMostNodes = 1000000;
+  static constexpr std::size_t kMostNodes = 4000000;
   /// Deepest nesting of maps and lists (a deck needs a handful; an alias inside the list or
   /// map it names would otherwise nest without end).
   static constexpr int kDeepest = 200;

@@ -36,11 +36,11 @@ Eigen::Vector3d coordinates(const Context& c, const Field& f, const std::string&
 /// The index of the joint a field names.
 int jointIndex(const Context& c, const Field& f) {
   const std::string name = f.name();
+  const auto& joints = c.deck.frame->joints;
+  for (std::size_t j = 0; j < joints.size(); ++j)
+    if (joints[j].name == name) return int(j);
   std::vector<std::string> names;
-  for (std::size_t j = 0; j < c.deck.frame->joints.size(); ++j) {
-    if (c.deck.frame->joints[j].name == name) return int(j);
-    names.push_back(c.deck.frame->joints[j].name);
-  }
+  for (const DeckJoint& j : joints) names.push_back(j.name);
   f.fail("no node named '" + name + "'" + didYouMean(name, names) + " (nodes: " +
          joinNames(names) + ")");
 }

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -27,14 +28,19 @@ std::string header(const CsvColumn& c) {
   return plain ? text : quoted(text);
 }
 
+/// The shortest exact decimal of x into buffer; returns its end.
+char* decimalInto(char (&buffer)[32], double x) {
+  if (x == 0) x = 0.0;  // "-0" (from negating a zero force) reads as a sign error to a person
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  if (error != std::errc()) throw std::logic_error("to_chars failed");
+  return end;
+}
+
 }  // namespace
 
 std::string exactDecimal(double x) {
-  if (x == 0) x = 0.0;  // "-0" (from negating a zero force) reads as a sign error to a person
   char buffer[32];
-  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-  if (error != std::errc()) throw std::logic_error("to_chars failed");
-  return std::string(buffer, end);
+  return std::string(buffer, decimalInto(buffer, x));
 }
 
 CsvTable::CsvTable(std::string title, std::vector<CsvColumn> columns)
@@ -47,9 +53,10 @@ void CsvTable::addRow(std::vector<CsvCell> row) {
   for (std::size_t c = 0; c < row.size(); ++c)
     if (const double* x = std::get_if<double>(&row[c]); x && !std::isfinite(*x))
       throw std::runtime_error(title_ + ": column '" + columns_[c].name + "', row " +
-                               std::to_string(rows_.size() + 1) + " would be " + exactDecimal(*x) +
+                               std::to_string(rowCount() + 1) + " would be " + exactDecimal(*x) +
                                "; only finite numbers are written");
-  rows_.push_back(std::move(row));
+  cells_.insert(cells_.end(), std::make_move_iterator(row.begin()),
+                std::make_move_iterator(row.end()));
 }
 
 bool CsvTable::hasColumn(std::string_view name) const {
@@ -67,13 +74,14 @@ int CsvTable::column(std::string_view name) const {
 std::vector<double> CsvTable::numbers(std::string_view name) const {
   const int c = column(name) - 1;
   std::vector<double> values;
-  values.reserve(rows_.size());
-  for (const auto& row : rows_) {
-    if (const double* x = std::get_if<double>(&row[c]))
+  values.reserve(rowCount());
+  for (std::size_t r = 0; r < rowCount(); ++r) {
+    const CsvCell& value = cell(r, std::size_t(c));
+    if (const double* x = std::get_if<double>(&value))
       values.push_back(*x);
-    else if (const long long* n = std::get_if<long long>(&row[c]))
+    else if (const long long* n = std::get_if<long long>(&value))
       values.push_back(double(*n));
-    else if (std::holds_alternative<std::monostate>(row[c]))
+    else if (std::holds_alternative<std::monostate>(value))
       values.push_back(std::numeric_limits<double>::quiet_NaN());
     else
       throw std::invalid_argument(title_ + ": column '" + std::string(name) + "' holds text");
@@ -88,17 +96,23 @@ void CsvTable::write(const std::filesystem::path& file) const {
 void CsvTable::writeTo(std::ostream& out) const {
   for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << header(columns_[c]);
   out << '\n';
-  for (const auto& row : rows_) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c) out << ',';
-      if (const double* x = std::get_if<double>(&row[c]))
-        out << exactDecimal(*x);
-      else if (const long long* n = std::get_if<long long>(&row[c]))
-        out << *n;
-      else if (const std::string* text = std::get_if<std::string>(&row[c]))
-        out << quoted(*text);
+  // A row at a time into a buffer, one stream write each (a large table has 10^7 cells).
+  char buffer[32];
+  std::string line;
+  for (std::size_t r = 0; r < rowCount(); ++r) {
+    line.clear();
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+      if (c) line += ',';
+      const CsvCell& value = cell(r, c);
+      if (const double* x = std::get_if<double>(&value))
+        line.append(buffer, decimalInto(buffer, *x));
+      else if (const long long* n = std::get_if<long long>(&value))
+        line += std::to_string(*n);
+      else if (const std::string* text = std::get_if<std::string>(&value))
+        line += quoted(*text);
     }
-    out << '\n';
+    line += '\n';
+    out.write(line.data(), std::streamsize(line.size()));
   }
 }
 

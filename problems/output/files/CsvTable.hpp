@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <stdexcept>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -31,6 +32,8 @@ class CsvTable {
   /// std::runtime_error for a NaN or infinite number (naming the column and row), so a table
   /// that exists holds only finite numbers.
   void addRow(std::vector<CsvCell> row);
+  /// Room for `rows` rows in all, so that a large table grows without copying itself.
+  void reserveRows(std::size_t rows) { cells_.reserve(rows * columns_.size()); }
 
   /// 1-based position of a column (gnuplot's numbering); throws std::out_of_range if absent.
   int column(std::string_view name) const;
@@ -41,12 +44,13 @@ class CsvTable {
 
   /// The cell of a row (0-based) and column (0-based position).
   const CsvCell& cell(std::size_t row, std::size_t column) const {
-    return rows_.at(row).at(column);
+    if (column >= columns_.size()) throw std::out_of_range(title_ + ": no such column");
+    return cells_.at(row * columns_.size() + column);
   }
 
   const std::string& title() const { return title_; }
   const std::vector<CsvColumn>& columns() const { return columns_; }
-  std::size_t rowCount() const { return rows_.size(); }
+  std::size_t rowCount() const { return columns_.empty() ? 0 : cells_.size() / columns_.size(); }
 
   /// Writes the table; numbers in the shortest form that reads back exactly.
   /// Throws std::runtime_error when the file cannot be written.
@@ -57,7 +61,7 @@ class CsvTable {
  private:
   std::string title_;
   std::vector<CsvColumn> columns_;
-  std::vector<std::vector<CsvCell>> rows_;
+  std::vector<CsvCell> cells_;  ///< row by row: one allocation, not one per row
 };
 
 /// The shortest decimal text that reads back as exactly x (std::to_chars); -0 is written 0.

@@ -50,6 +50,14 @@ std::string caseVtu(const std::string& stem, int number) {
   return numberedVtu(stem, "case", number, 2);
 }
 
+std::string caseFrameChart(const std::string& stem, int number) {
+  const std::string vtu = caseVtu(stem, number);
+  std::string name = stem;
+  name += "_frame";
+  name += vtu.substr(stem.size(), vtu.size() - stem.size() - 4);  // "_case_NN"
+  return name;
+}
+
 std::string frameVtu(const std::string& stem, int number) {
   return numberedVtu(stem, "frame", number, 4);
 }

@@ -68,6 +68,12 @@ inline std::string diagramsChart(const std::string& stem) {
 inline std::string frameShapeChart(const std::string& stem) {
   return stem + "_frame";
 }
+/// The same under load case or combination `number` (numbered as caseVtu): `<stem>_frame_case_NN`.
+std::string caseFrameChart(const std::string& stem, int number);
+/// Statics of a frame with combinations: the envelope of the bending moments on the frame.
+inline std::string frameEnvelopeChart(const std::string& stem) {
+  return stem + "_frame_envelope";
+}
 inline std::string shapesChart(const std::string& stem) {
   return stem + "_shapes";
 }

@@ -206,6 +206,7 @@ std::string script(const ChartScript& chart, ChartFormat format) {
     << "# Written by beamrotor. Redraw it from this directory with: gnuplot "
     << gnuplotComment(chart.name) << ".gp\n"
     << "reset session\n"
+    << chart.data
     << "do for [format in " << formatList(format) << "] {\n"
     << "  if (format eq 'svg') {\n"
     << "    set terminal svg size " << size

@@ -28,6 +28,9 @@ struct ChartScript {
   /// Commands that draw the chart (after terminal and output are set); data files are named
   /// relative to the directory, where gnuplot runs.
   std::string body;
+  /// Data the body reads, defined once before it (gnuplot datablocks, `$name << EOD` .. `EOD`,
+  /// values separated by ','); empty when the body reads files.
+  std::string data{};
 };
 
 /// The gnuplot to run: $BEAMROTOR_GNUPLOT when set (a path, or a name looked up on PATH),

@@ -10,6 +10,10 @@
 
 namespace beamrotor {
 
+/// Frames of at most this many members chart each member's envelope on its own (with more, the
+/// envelope drawn on the frame, frameEnvelopeChart, and the envelope tables remain).
+inline constexpr std::size_t kEnvelopeChartsUpTo = 12;
+
 /// `<stem>_envelope_<member>`: the chart of one member's envelope.
 std::string envelopeChart(const std::string& stem, const std::string& member);
 

@@ -39,11 +39,12 @@ std::vector<LinePlace> placesAlongLine(const Model& model, int intervalsPerEleme
   return places;
 }
 
-std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& displacement,
+std::vector<StaticStation> sampleStatics(const LoadedSolution& solution,
                                          int intervalsPerElement) {
+  const Model& model = *solution.model;
   const std::vector<LinePlace> places = placesAlongLine(model, intervalsPerElement);
   const std::vector<BeamStation> recovered =
-      recoverBeamFields(model, displacement, intervalsPerElement);
+      recoverBeamFields(solution, intervalsPerElement);
   if (recovered.size() != places.size())
     throw std::logic_error("recoverBeamFields sampled different stations");
   std::vector<StaticStation> stations;
@@ -59,6 +60,22 @@ std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& d
                         signedShearY(section, forces), signedShearZ(section, forces)});
   }
   return stations;
+}
+
+StationsByElement::StationsByElement(const std::vector<StaticStation>& stations,
+                                     std::size_t elementCount)
+    : stations_(&stations), range_(elementCount, {0, 0}) {
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    auto& [first, count] = range_.at(std::size_t(stations[i].place.element));
+    if (count == 0) first = i;
+    if (first + count != i) throw std::logic_error("an element's stations are not together");
+    ++count;
+  }
+}
+
+std::span<const StaticStation> StationsByElement::of(int element) const {
+  const auto& [first, count] = range_.at(std::size_t(element));
+  return {stations_->data() + first, count};
 }
 
 std::optional<LinePeak> largestAlongLine(const Model& model, const std::vector<ElementPeaks>& peaks,

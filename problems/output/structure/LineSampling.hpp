@@ -7,9 +7,11 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/Recovery.hpp"
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
@@ -53,8 +55,22 @@ struct StaticStation {
 };
 
 /// Samples a static solution at placesAlongLine(model, intervalsPerElement).
-std::vector<StaticStation> sampleStatics(const Model& model, const NodalField& displacement,
+std::vector<StaticStation> sampleStatics(const LoadedSolution& solution,
                                          int intervalsPerElement = kIntervalsPerElement);
+
+/// The stations of each element in a sampling, found in one pass (sampleStatics keeps each
+/// element's stations together), so that reading a member's stations costs their own number,
+/// not the model's.
+class StationsByElement {
+ public:
+  StationsByElement(const std::vector<StaticStation>& stations, std::size_t elementCount);
+  /// The stations of element `element` in station order; empty for one not sampled.
+  std::span<const StaticStation> of(int element) const;
+
+ private:
+  const std::vector<StaticStation>* stations_;
+  std::vector<std::pair<std::size_t, std::size_t>> range_;  ///< per element: first, count
+};
 
 /// A largest value over the line elements and its place along the line.
 struct LinePeak {

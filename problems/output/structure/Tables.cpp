@@ -29,6 +29,7 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
                          {"shear_y", "Pa"},
                          {"shear_z", "Pa"},
                          {"element", ""}});
+  table.reserveRows(stations.size());
   for (const StaticStation& st : stations) {
     const auto& u = st.displacement;
     const SectionForces& f = st.forces;

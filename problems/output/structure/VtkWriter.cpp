@@ -131,15 +131,16 @@ void writeVtu(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
   writeFile(file, [&](std::ostream& out) { out << text; });
 }
 
-void writeStaticVtu(const std::filesystem::path& file, const Model& model,
-                    const StaticResult& result, const std::vector<StaticStation>& stations,
+void writeStaticVtu(const std::filesystem::path& file, const LoadedSolution& solution,
+                    const std::vector<StaticStation>& stations,
                     const std::vector<ElementPeaks>& peaks) {
+  const Model& model = *solution.model;
   auto grid = lineGrid(model);
-  grid->GetPointData()->AddArray(pointVectors("displacement", result.displacement, 0));
-  grid->GetPointData()->AddArray(pointVectors("rotation", result.displacement, 3));
+  grid->GetPointData()->AddArray(pointVectors("displacement", *solution.displacement, 0));
+  grid->GetPointData()->AddArray(pointVectors("rotation", *solution.displacement, 3));
 
   // Section forces at mid-length: recovery with two intervals puts station 1 of 3 there.
-  const std::vector<BeamStation> mid = recoverBeamFields(model, result.displacement, 2);
+  const std::vector<BeamStation> mid = recoverBeamFields(solution, 2);
   const vtkIdType cells = grid->GetNumberOfCells();
   if (vtkIdType(mid.size()) != 3 * cells) throw std::logic_error("mid-length stations missing");
   const char* names[] = {"N", "Vy", "Vz", "T", "My", "Mz"};

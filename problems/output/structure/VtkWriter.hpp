@@ -23,8 +23,8 @@ namespace beamrotor {
 /// rotations `rotation_start`, `rotation_end` (rx ry rz, rad; at a hinge they differ from the
 /// node's; read from the end `stations`) and section properties `A` (m^2), `Iy`, `Iz` (m^4), `E`
 /// (Pa). Throws std::runtime_error when VTK cannot write the file.
-void writeStaticVtu(const std::filesystem::path& file, const Model& model,
-                    const StaticResult& result, const std::vector<StaticStation>& stations,
+void writeStaticVtu(const std::filesystem::path& file, const LoadedSolution& solution,
+                    const std::vector<StaticStation>& stations,
                     const std::vector<ElementPeaks>& peaks);
 
 /// One mode on the mesh: point data `mode_shape` (translations scaled by displayModeShape,

@@ -76,7 +76,7 @@ Passes runPasses(const Model& model) {
   NodalField field = NodalField::Zero(model.nodeCount(), kDofKinds);
   for (int eq = 0; eq < dofs.size(); ++eq)
     field(dofs.dofOf(eq).node, dofIndex(dofs.dofOf(eq).dof)) = u[eq];
-  out.hinges = hingeRotations(model, field);
+  out.hinges = hingeRotations({model, field});
   return out;
 }
 

@@ -86,7 +86,7 @@ TEST_SUITE("statics") {
         CHECK(relError(r.displacement(line.nodes.back(), axis), tip) < kExact);
         CHECK(std::abs(r.displacement(line.nodes.back(), 3 - axis)) < kExact * std::abs(tip));
         // Stations every quarter of each element, ends included.
-        const std::vector<BeamStation> stations = recoverBeamFields(m, r.displacement, 4);
+        const std::vector<BeamStation> stations = recoverBeamFields({m, r.displacement}, 4);
         REQUIRE(stations.size() == std::size_t(n * 5));
         for (std::size_t i = 0; i < stations.size(); ++i) {
           const BeamStation& st = stations[i];

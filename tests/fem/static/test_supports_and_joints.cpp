@@ -54,7 +54,7 @@ TEST_SUITE("supports and joints") {
     const double EI = steelCircle(0.05)->EIz();
     CHECK(relError(r.displacement(line.nodes[1], 1), -100 * 1.0 / (6 * EI)) < kJointsExact);
     // The moment vanishes at the hinge.
-    const auto stations = recoverBeamFields(m, r.displacement, 2);
+    const auto stations = recoverBeamFields({m, r.displacement}, 2);
     for (const BeamStation& st : stations)
       if ((st.element == 0 && st.s == 1) || (st.element == 1 && st.s == 0))
         CHECK(std::abs(st.forces.Mz) < 1e-9 * 100);

@@ -35,7 +35,7 @@ TEST_SUITE("output") {
     const StaticResult r = solveStatic(model);
     const double EI = section->EIy();
     const double tip = P * L * L * L / (3 * EI);
-    for (const StaticStation& st : sampleStatics(model, r.displacement)) {
+    for (const StaticStation& st : sampleStatics({model, r.displacement})) {
       const double x = st.place.x;
       CAPTURE(x);
       CHECK(std::abs(st.displacement[2] - P * x * x * (3 * L - x) / (6 * EI)) <= kPartsExact * tip);
@@ -61,7 +61,7 @@ TEST_SUITE("output") {
     model.addLoad({line.nodes.back(), Dof::uy, P * normal.y()});
     const StaticResult r = solveStatic(model);
     const double EI = section->EIz(), tip = P * L * L * L / (3 * EI);
-    for (const StaticStation& st : sampleStatics(model, r.displacement)) {
+    for (const StaticStation& st : sampleStatics({model, r.displacement})) {
       const double s = st.place.x;
       CAPTURE(s);
       const Eigen::Vector3d u(st.displacement[0], st.displacement[1], st.displacement[2]);

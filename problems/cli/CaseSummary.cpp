@@ -1,0 +1,143 @@
+// The summary of load cases and combinations (see CaseSummary.hpp).
+#include "problems/cli/CaseSummary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "problems/cli/MemberSummary.hpp"
+#include "problems/cli/SolutionSummary.hpp"
+#include "problems/cli/StressSummary.hpp"
+#include "problems/cli/Summary.hpp"
+#include "problems/output/structure/CaseEnvelope.hpp"
+#include "problems/output/structure/Reactions.hpp"
+
+namespace beamrotor::cli {
+
+namespace {
+
+/// "case 'dead'" or "combination 'ULS' = 1.35 dead + 1.5 live1".
+std::string caseTitle(const CaseOutcome& c) {
+  std::string title = c.combination ? "combination '" : "case '";
+  title += c.name;
+  title += "'";
+  for (std::size_t i = 0; i < c.factors.size(); ++i) {
+    title += i ? " + " : " = ";
+    title += formatValue(c.factors[i].second);
+    title += " ";
+    title += c.factors[i].first;
+  }
+  return title;
+}
+
+/// One case in full: reactions, point displacements, stresses, members, warnings.
+void printCase(std::ostream& out, const Deck& deck, const RunResult& run, const CaseOutcome& c,
+               const StaticExtremes& x) {
+  out << "    " << caseTitle(c) << ":\n";
+  printReactions(out, c.statics, "      ");
+  printPointDisplacements(out, deck, run, c.statics, "      ");
+  printStressPeaks(out, deck, *run.model, x.peaks, "      ");
+  printMemberExtremes(out, deck, *run.model, x, "      ");
+  for (const std::string& w : c.warnings) out << "      warning: " << w << "\n";
+}
+
+/// One case on one line: its largest displacement (a frame) and normal stress.
+void printCaseLine(std::ostream& out, const Model& model, const CaseOutcome& c,
+                   const StaticExtremes& x) {
+  out << "    " << padded(caseTitle(c), 30);
+  if (!model.members().empty())
+    out << "largest displacement " << padded(formatValue(x.largestDisplacement.value) + " m,", 16);
+  if (const auto top = largestPeak(x.peaks, &ElementPeaks::stress))
+    out << "largest normal stress " << formatValue(top->value * 1e-6) << " MPa";
+  out << (c.warnings.empty() ? "" : " (warning: see results.json)") << "\n";
+}
+
+/// "value unit [combination]".
+std::string governed(const Governed& g, const std::vector<CaseOutcome>& cases,
+                     const std::string& unit = "", double scale = 1) {
+  std::string out = formatValue(g.value * scale);
+  if (!unit.empty()) out += " " + unit;
+  out += " [";
+  out += cases.at(std::size_t(g.by)).name;
+  return out + "]";
+}
+
+/// The envelope over the combinations, each value with the combination that governs it.
+void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
+                   const std::vector<CaseOutcome>& cases, const CaseEnvelope& e) {
+  const Model& model = *run.model;
+  out << "  envelope over the combinations (largest and smallest, the governing combination in "
+         "brackets):\n";
+  if (e.largestDisplacement.by >= 0)
+    out << "    largest displacement " << governed(e.largestDisplacement, cases, "m") << "\n";
+  if (e.largestStress.by >= 0)
+    out << "    largest normal stress " << governed(e.largestStress, cases, "MPa", 1e-6) << "\n";
+  out << "    reactions (N, N m):\n";
+  std::string support;
+  std::size_t supports = 0;
+  for (const auto& [r, range] : e.reactions) {
+    if (r.support != support) {
+      if (++supports > kSummarySupports) break;
+      out << (support.empty() ? "" : "\n") << "      " << padded(r.support, 12);
+      support = r.support;
+    }
+    out << padded(std::string(reactionName(r.dof)) + " " + governed(range.max, cases) + " / " +
+                      governed(range.min, cases),
+                  46);
+  }
+  if (!support.empty()) out << "\n";
+  if (e.members.empty()) return;
+  // The members of the largest bending moments, as the member lines of a case.
+  const std::vector<ForceComponent> shown =
+      deck.dimension == "planar"
+          ? std::vector<ForceComponent>{ForceComponent::N, ForceComponent::Vy, ForceComponent::Mz}
+          : std::vector<ForceComponent>(kForceComponents.begin(), kForceComponents.end());
+  const auto moment = [&](std::size_t m) {
+    double largest = 0;
+    for (ForceComponent f : {ForceComponent::Mz, ForceComponent::My})
+      largest = std::max({largest, std::abs(e.members[m][int(f)].max.value),
+                          std::abs(e.members[m][int(f)].min.value)});
+    return largest;
+  };
+  std::vector<std::size_t> listed(e.members.size());
+  std::iota(listed.begin(), listed.end(), std::size_t{0});
+  if (listed.size() > kSummaryMembers) {
+    std::stable_sort(listed.begin(), listed.end(),
+                     [&](std::size_t a, std::size_t b) { return moment(a) > moment(b); });
+    listed.resize(kSummaryMembers);
+    std::sort(listed.begin(), listed.end());
+  }
+  out << "    members (largest / smallest along each; N, N m)";
+  if (listed.size() < e.members.size())
+    out << ", the " << listed.size() << " of the largest bending moment among "
+        << e.members.size();
+  out << ":\n";
+  for (std::size_t m : listed) {
+    out << "      " << model.members()[m].first << ":";
+    for (ForceComponent f : shown)
+      out << "  " << componentName(f) << " " << governed(e.members[m][int(f)].max, cases) << " / "
+          << governed(e.members[m][int(f)].min, cases);
+    out << "\n";
+  }
+}
+
+}  // namespace
+
+void printCases(std::ostream& out, const Deck& deck, const RunResult& run,
+                const AnalysisOutcome& a, const AnalysisExtremes& extremes) {
+  const std::vector<CaseOutcome>& cases = casesOf(a);
+  if (cases.empty()) return;
+  out << "  load cases and combinations (" << cases.size() << "):\n";
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    if (cases.size() <= kSummaryCases)
+      printCase(out, deck, run, cases[i], extremes.cases.at(i));
+    else
+      printCaseLine(out, *run.model, cases[i], extremes.cases.at(i));
+  }
+  const CaseEnvelope envelope = caseEnvelope(*run.model, cases, extremes.cases);
+  if (!envelope.empty()) printEnvelope(out, deck, run, cases, envelope);
+}
+
+}  // namespace beamrotor::cli

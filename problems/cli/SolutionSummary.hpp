@@ -1,0 +1,33 @@
+// The summary's lines on one static solution, the analysis' own or a load case's: reactions by
+// support and displacements at the deck's named points.
+#pragma once
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "problems/deck/Deck.hpp"
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor::cli {
+
+/// Supports listed at most (a frame may have hundreds; all are in results.json).
+inline constexpr std::size_t kSummarySupports = 20;
+
+/// The points worth reporting: the deck's own, or start and end when it names none.
+std::vector<const DeckPoint*> reportedPoints(const Deck& deck);
+
+/// Unit of a displacement component: "m" or "rad".
+const char* motionUnit(Dof d);
+
+/// Reactions by support, each line led by `indent`; the first kSummarySupports supports when
+/// there are more (the rest in results.json).
+void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent);
+
+/// Displacements at the deck's reported points, each line led by `indent` (at a hinge, each
+/// side's own rotation).
+void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResult& run,
+                             const StaticResult& r, const std::string& indent);
+
+}  // namespace beamrotor::cli

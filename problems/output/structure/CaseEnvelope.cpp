@@ -1,0 +1,70 @@
+// The envelope over the load combinations (see CaseEnvelope.hpp).
+#include "problems/output/structure/CaseEnvelope.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace beamrotor {
+
+namespace {
+
+/// Keeps the larger (or smaller) of v and the bound's, with the combination that gave it; the
+/// first of equal values governs.
+void widen(Governed& bound, double v, int by, bool larger) {
+  if (bound.by < 0 || (larger ? v > bound.value : v < bound.value)) bound = {v, by};
+}
+
+void widen(GovernedRange& range, double max, double min, int by) {
+  widen(range.max, max, by, true);
+  widen(range.min, min, by, false);
+}
+
+}  // namespace
+
+CaseEnvelope caseEnvelope(const Model& model, const std::vector<CaseOutcome>& cases,
+                          const std::vector<StaticExtremes>& extremes) {
+  if (extremes.size() != cases.size())
+    throw std::invalid_argument("caseEnvelope needs the extremes of every case");
+  CaseEnvelope out;
+  for (int k = 0; k < int(cases.size()); ++k) {
+    const CaseOutcome& c = cases[k];
+    if (!c.combination) continue;
+    const StaticExtremes& x = extremes[k];
+    const auto& reactions = c.statics.reactions;
+    if (out.reactions.empty())
+      for (const ReactionComponent& r : reactions) out.reactions.push_back({r, {}});
+    for (std::size_t i = 0; i < reactions.size() && i < out.reactions.size(); ++i)
+      widen(out.reactions[i].second, reactions[i].value, reactions[i].value, k);
+    out.members.resize(x.ranges.size());
+    for (std::size_t m = 0; m < x.ranges.size(); ++m)
+      for (std::size_t f = 0; f < kForceComponents.size(); ++f)
+        widen(out.members[m][f], x.ranges[m][f].max.value, x.ranges[m][f].min.value, k);
+    if (!model.members().empty()) widen(out.largestDisplacement, x.largestDisplacement.value, k, true);
+    if (const auto top = largestPeak(x.peaks, &ElementPeaks::stress))
+      widen(out.largestStress, top->value, k, true);
+  }
+  return out;
+}
+
+std::vector<int> governingCombinations(const CaseEnvelope& envelope, bool planar) {
+  std::vector<int> out{envelope.largestDisplacement.by, envelope.largestStress.by};
+  for (ForceComponent f : planar ? std::vector<ForceComponent>{ForceComponent::Mz}
+                                 : std::vector<ForceComponent>{ForceComponent::Mz,
+                                                               ForceComponent::My}) {
+    Governed top, bottom;
+    for (const auto& member : envelope.members) {
+      const GovernedRange& r = member[int(f)];
+      widen(top, r.max.value, r.max.by, true);
+      widen(bottom, r.min.value, r.min.by, false);
+    }
+    out.push_back(top.by);
+    out.push_back(bottom.by);
+  }
+  std::erase(out, -1);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace beamrotor

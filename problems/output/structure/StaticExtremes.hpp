@@ -1,0 +1,40 @@
+// The extremes of one static solution (the analysis' own, a load case's or a combination's)
+// that results.json, the CSV tables and the charts report, computed once per solution: each
+// element's exact peaks, each member's resultant ranges and deflection from its chord, and the
+// largest displacement (fem/assembly/ElementExtrema.hpp, MemberExtrema.hpp).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/MemberExtrema.hpp"
+#include "fem/assembly/Recovery.hpp"
+#include "problems/output/structure/LineSampling.hpp"
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor {
+
+struct StaticExtremes {
+  std::vector<ElementPeaks> peaks;                    ///< every line element's, in order
+  std::vector<std::array<ComponentRange, 6>> ranges;  ///< per member, Model::members() order
+  std::vector<MemberValue> chordDeflections;          ///< per member
+  MemberValue largestDisplacement;  ///< anywhere (largestDisplacement); frames only
+};
+
+/// The extremes of `solution`; the member parts and the largest displacement left empty for
+/// a model without members (a line).
+StaticExtremes staticExtremes(const LoadedSolution& solution);
+
+/// The extremes of a static analysis: its own solution's and each of its load cases' and
+/// combinations' (casesOf order). Empty for the other kinds of analysis.
+struct AnalysisExtremes {
+  std::optional<StaticExtremes> own;
+  std::vector<StaticExtremes> cases;
+};
+
+/// The extremes of each analysis of a run (run.analyses order).
+std::vector<AnalysisExtremes> runExtremes(const RunResult& run);
+
+}  // namespace beamrotor
