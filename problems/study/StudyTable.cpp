@@ -11,9 +11,13 @@ namespace beamrotor {
 
 namespace {
 
-/// A CSV cell: quoted (quotes doubled) when it holds a comma, a quote or a space.
+/// A CSV cell: bare where it can be (so that NumPy reads "reaction left rz" as a name, not
+/// with its quotes); quoted (quotes doubled) when it holds a comma, a quote, a line break or a
+/// '#' (a comment to NumPy and gnuplot), or begins or ends with a space.
 std::string studyCell(const std::string& text) {
-  if (text.find_first_of(",\" ") == std::string::npos) return text;
+  if (text.find_first_of(",\"\n\r#") == std::string::npos &&
+      (text.empty() || (text.front() != ' ' && text.back() != ' ')))
+    return text;
   std::string quoted = "\"";
   for (char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
   return quoted + "\"";

@@ -38,6 +38,7 @@ std::vector<std::vector<std::string>> csvCells(const std::filesystem::path& file
   std::vector<std::vector<std::string>> rows;
   std::istringstream in(fileContents(file));
   for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] == '#') continue;  // the units line (CsvTable.hpp)
     std::vector<std::string> cells;
     std::istringstream fields(line + ',');  // the comma closes a last cell that is empty
     for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);

@@ -253,7 +253,7 @@ TEST_SUITE("deck transient") {
     std::ifstream csv(out / "run_history.csv");
     int rows = 0;
     for (std::string line; std::getline(csv, line);) ++rows;
-    CHECK(rows == 1 + 501);  // header, t = 0 and every step
+    CHECK(rows == 2 + 501);  // names, units, t = 0 and every step
     fs::remove_all(dir);
   }
 

@@ -75,15 +75,16 @@ struct DofRow {
 std::vector<DofRow> readDofs(const std::filesystem::path& file) {
   std::ifstream in(file);
   std::string line;
-  std::getline(in, line);  // header
+  std::getline(in, line);  // names
   std::vector<DofRow> rows;
   while (std::getline(in, line)) {
+    if (line.rfind("# units:", 0) == 0) continue;
     std::vector<std::string> cells;
     std::stringstream s(line);
     for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
     REQUIRE(cells.size() == 7);
     CHECK(std::stoi(cells[0]) == int(rows.size()) + 1);
-    const auto dof = parseDof(cells[3].substr(1, cells[3].size() - 2));  // quoted text
+    const auto dof = parseDof(cells[3]);  // text needs no quotes
     REQUIRE(dof);
     rows.push_back({std::stoi(cells[1]), *dof});
   }

@@ -24,11 +24,12 @@ double firstRowValue(const std::string& csv, const std::string& name) {
   std::string header, row, cell;
   std::getline(in, header);
   std::getline(in, row);
+  if (row.rfind("# units:", 0) == 0) std::getline(in, row);
   std::vector<std::string> heads, cells;
   for (std::istringstream h(header); std::getline(h, cell, ',');) heads.push_back(cell);
   for (std::istringstream r(row); std::getline(r, cell, ',');) cells.push_back(cell);
   for (std::size_t i = 0; i < heads.size() && i < cells.size(); ++i)
-    if (heads[i] == name || heads[i].rfind(name + " ", 0) == 0) return std::stod(cells[i]);
+    if (heads[i] == name) return std::stod(cells[i]);
   FAIL("no column " << name << " in " << header);
   return 0;
 }

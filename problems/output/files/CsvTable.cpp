@@ -22,9 +22,12 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-std::string header(const CsvColumn& c) {
-  const std::string text = c.unit.empty() ? c.name : c.name + " [" + c.unit + "]";
-  const bool plain = text.find_first_of(",\"\n") == std::string::npos;
+/// A text cell or column name as written: bare, unless RFC 4180 needs quotes (a comma, a
+/// quote, a line break) or a reader would take it otherwise (a '#' starts a comment for
+/// NumPy and gnuplot; spaces at either end are trimmed by some readers).
+std::string field(const std::string& text) {
+  const bool plain = text.find_first_of(",\"\n\r#") == std::string::npos &&
+                     (text.empty() || (text.front() != ' ' && text.back() != ' '));
   return plain ? text : quoted(text);
 }
 
@@ -94,8 +97,18 @@ void CsvTable::write(const std::filesystem::path& file) const {
 }
 
 void CsvTable::writeTo(std::ostream& out) const {
-  for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << header(columns_[c]);
-  out << '\n';
+  // The names, then their units on a comment line (skipped by gnuplot, NumPy's genfromtxt and
+  // pandas' read_csv(comment='#')), so that a name reads as a name: "speed", not "speed_rpm".
+  std::string names, units = "# units: ";
+  bool anyUnit = false;
+  for (std::size_t c = 0; c < columns_.size(); ++c) {
+    if (c) names += ',', units += ',';
+    names += field(columns_[c].name);
+    units += field(columns_[c].unit);
+    anyUnit = anyUnit || !columns_[c].unit.empty();
+  }
+  out << names << '\n';
+  if (anyUnit) out << units << '\n';
   // A row at a time into a buffer, one stream write each (a large table has 10^7 cells).
   char buffer[32];
   std::string line;
@@ -109,7 +122,7 @@ void CsvTable::writeTo(std::ostream& out) const {
       else if (const long long* n = std::get_if<long long>(&value))
         line += std::to_string(*n);
       else if (const std::string* text = std::get_if<std::string>(&value))
-        line += quoted(*text);
+        line += field(*text);
     }
     line += '\n';
     out.write(line.data(), std::streamsize(line.size()));

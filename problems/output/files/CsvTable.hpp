@@ -1,6 +1,7 @@
-// A small typed table written as CSV (RFC 4180): a header of "name [unit]" and one row per
-// record. The charts read the same table, asking for a column's position by name, so a chart
-// never plots a column the table does not have.
+// A small typed table written as CSV (RFC 4180): a line of column names, a comment line of
+// their units ("# units: m,m,,rad"; a unitless column's unit is empty) and one row per record;
+// text is quoted only where CSV or a reader needs it. The charts read the same table, asking
+// for a column's position by name, so a chart never plots a column the table does not have.
 #pragma once
 
 #include <filesystem>

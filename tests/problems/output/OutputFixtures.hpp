@@ -142,6 +142,7 @@ inline NumericCsv readNumericCsv(const std::filesystem::path& file) {
   };
   if (std::getline(in, line)) csv.header = split(line);
   while (std::getline(in, line)) {
+    if (!line.empty() && line[0] == '#') continue;  // the units line (CsvTable.hpp)
     std::vector<double> row;
     for (const std::string& cell : split(line)) row.push_back(std::stod(cell));
     csv.rows.push_back(row);

@@ -209,7 +209,7 @@ TEST_SUITE("output") {
     CHECK(thinned.back() == full.back());  // the tip, as written in full
     CHECK(thinned[1] == full[1]);          // the root
     // The step at x = 1 m: both sides, as the full table has them, so the diagram's step stays.
-    const std::size_t x = csvColumn(full.front(), "x [m]");
+    const std::size_t x = csvColumn(full.front(), "x");
     const auto atStep = [&](const std::vector<std::vector<std::string>>& table) {
       std::vector<std::vector<std::string>> rows;
       for (std::size_t r = 1; r < table.size(); ++r)

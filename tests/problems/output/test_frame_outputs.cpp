@@ -77,10 +77,10 @@ TEST_SUITE("output") {
     const std::string table = solved.text(csv);
     CHECK(table.find("Mz") != std::string::npos);
     CHECK(table.find("ey_x") != std::string::npos);
-    // A header line, then 5 stations (4 intervals) per element of the member.
+    // The names and units lines, then 5 stations (4 intervals) per element of the member.
     const long elements = statics["members"]["cross"]["elements"].get<long>();
     CHECK(elements >= 2);  // the pump's station cuts the tube in two at least
-    CHECK(std::count(table.begin(), table.end(), '\n') == 1 + 5 * elements);
+    CHECK(std::count(table.begin(), table.end(), '\n') == 2 + 5 * elements);
 
     // VTK: the element axes and the tube radius per point (the rail's outer radius at A).
     vtkNew<vtkXMLUnstructuredGridReader> reader;

@@ -124,7 +124,13 @@ TEST_SUITE("output") {
     ScratchDir scratch;
     table.write(scratch / "t.csv");
     CHECK(readText(scratch / "t.csv") ==
-          "mode,description,f [Hz]\n1,\"bending, \"\"stiff\"\"\",0.1\n");
+          "mode,description,f\n# units: ,,Hz\n1,\"bending, \"\"stiff\"\"\",0.1\n");
+    // Text that needs no quotes has none (NumPy's genfromtxt keeps quotes as part of a text);
+    // a '#', which NumPy and gnuplot take for a comment, and spaces at an end are quoted.
+    CsvTable plain("p.csv", {{"case", ""}, {"value", ""}});
+    for (const char* name : {"ULS both", "#2", " edge"}) plain.addRow({std::string(name), 1.0});
+    plain.write(scratch / "p.csv");
+    CHECK(readText(scratch / "p.csv") == "case,value\nULS both,1\n\"#2\",1\n\" edge\",1\n");
   }
 
   TEST_CASE("requireFiniteNumbers names the JSON path of a NaN") {

@@ -117,16 +117,19 @@ TEST_SUITE("output") {
     writeRunOutputs(cantileverRun(c), scratch / "out");
     const NumericCsv csv = readNumericCsv(scratch / "out" / "tip_fields.csv");
 
-    const std::vector<std::string> expected{"x [m]",    "ux [m]",      "uy [m]",     "uz [m]",
-                                            "rx [rad]", "ry [rad]",    "rz [rad]",   "N [N]",
-                                            "Vy [N]",   "Vz [N]",      "T [N m]",    "My [N m]",
-                                            "Mz [N m]", "stress [Pa]", "shear [Pa]",
-                                            "stress_top [Pa]", "stress_bottom [Pa]",
-                                            "shear_y [Pa]", "shear_z [Pa]", "element"};
+    const std::vector<std::string> expected{"x",  "ux", "uy", "uz", "rx", "ry", "rz",
+                                            "N",  "Vy", "Vz", "T",  "My", "Mz", "stress",
+                                            "shear", "stress_top", "stress_bottom",
+                                            "shear_y", "shear_z", "element"};
     CHECK(csv.header == expected);
+    // The units on the comment line after the names, one per column.
+    const std::string text = readText(scratch / "out" / "tip_fields.csv");
+    const std::size_t second = text.find('\n') + 1;
+    CHECK(text.substr(second, text.find('\n', second) - second) ==
+          "# units: m,m,m,m,rad,rad,rad,N,N,N,N m,N m,N m,Pa,Pa,Pa,Pa,Pa,Pa,");
     REQUIRE(csv.rows.size() == std::size_t(c.elements * 5));  // 4 intervals: 5 stations each
-    const int x = csv.column("x [m]"), uy = csv.column("uy [m]"), rz = csv.column("rz [rad]"),
-              Mz = csv.column("Mz [N m]"), shear = csv.column("shear [Pa]");
+    const int x = csv.column("x"), uy = csv.column("uy"), rz = csv.column("rz"),
+              Mz = csv.column("Mz"), shear = csv.column("shear");
     CHECK(csv.rows.front()[x] == 0.0);
     // Shear force P everywhere; largest shear stress of a solid circle by the elasticity
     // solution (Timoshenko & Goodier, art. 124): (3 + 2 nu) / (2 (1 + nu)) P / A.
@@ -263,8 +266,10 @@ TEST_SUITE("output") {
             modal.modes[m].effectiveMass[1] / modal.totalMass[1]);
     }
     const std::string table = readText(out / "modes_modes.csv");
-    CHECK(std::count(table.begin(), table.end(), '\n') == modes + 1);  // header + one per mode
-    CHECK(table.rfind("mode,frequency [Hz],description,", 0) == 0);
+    // The names, their units, one line per mode.
+    CHECK(std::count(table.begin(), table.end(), '\n') == modes + 2);
+    CHECK(table.rfind("mode,frequency,description,", 0) == 0);
+    CHECK(table.find("\n# units: ,Hz,,") != std::string::npos);
   }
 
   TEST_CASE("charts: SVG and PNG drawn by gnuplot, with the script kept") {

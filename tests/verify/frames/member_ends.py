@@ -126,7 +126,8 @@ def ccx_quantities(model, mesh, stem):
 
 def _member_rows(path):
     with open(path) as fh:
-        rows = list(csv.DictReader(fh))
+        # The line after the names holds their units, as a comment ("# units: ...").
+        rows = [r for r in csv.DictReader(fh) if not next(iter(r.values()), "").startswith("#")]
     return rows[0], rows[-1]
 
 
@@ -153,6 +154,5 @@ def beamrotor_quantities(model, directory):
                                      f"the ccx input assumed {m['axes'][axis]}")
         for row, joint in ((first, m["from"]), (last, m["to"])):
             for c in comps["member"]:
-                unit = " [N]" if c in ("N", "Vy", "Vz") else " [N m]"
-                out[f"member {m['name']}@{joint} {c}"] = float(row[c + unit])
+                out[f"member {m['name']}@{joint} {c}"] = float(row[c])
     return out
