@@ -29,15 +29,16 @@ struct Printed {
   double value = 0, halfUnit = 0;
 };
 
-/// "1033" -> 1033 +- 0.5; "18260" -> 18260 +- 5 (four significant digits, the tables' rule
-/// for integers); "5.24" -> 5.24 +- 0.005.
+/// "5.24" -> 5.24 +- 0.005; an integer's trailing zeros are not digits unless fewer than three
+/// remain (tables print at least three): "1033" -> +- 0.5, "18260" -> +- 5, "8030" -> +- 5.
 Printed printed(const std::string& text) {
   const double v = std::stod(text);
   const auto point = text.find('.');
   if (point != std::string::npos)
     return {v, 0.5 * std::pow(10.0, -double(text.size() - point - 1))};
   const int digits = int(text.size());
-  return {v, 0.5 * std::pow(10.0, std::max(0, digits - 4))};
+  const int significant = std::max(3, int(text.find_last_not_of('0')) + 1);
+  return {v, 0.5 * std::pow(10.0, std::max(0, digits - significant))};
 }
 
 /// The largest |computed / printed - 1| per property of a family, for the report below.
@@ -65,6 +66,22 @@ void compare(const std::string& row, const std::string& property, double compute
       return;
     }
   worst.push_back({property, relative, row});
+}
+
+/// One property of a row: computed (SI), printed (text, in the table's unit: `unit` SI per
+/// table unit) and the allowance beyond half a printed digit where the formulas differ.
+struct Expected {
+  const char* property;
+  double computed;
+  const char* printed;
+  double unit;
+  double extra = 0;
+};
+
+void compareAll(const std::string& row, const std::vector<Expected>& expected,
+                std::vector<Worst>& worst) {
+  for (const Expected& e : expected)
+    compare(row, e.property, e.computed, e.printed, e.unit, e.extra, worst);
 }
 
 // ArcelorMittal Europe, "Sections and merchant bars" sales programme, tables of IPE, HE A and
@@ -129,6 +146,37 @@ const LRow kLRows[] = {
     {"L80x80x8", "12.3", "72.2", "12.6", "115", "29.9"},
     {"L90x90x9", "15.5", "116", "17.9", "184", "47.8"},
     {"L100x100x10", "19.2", "177", "24.6", "280", "73.0"},
+};
+
+// HE M and UPN as printed to three or four significant digits in the profile tables (EN 10365
+// dimensions; UPN to DIN 1026-1): A cm^2, Iy, Iz cm^4, Wel,y, Wel,z cm^3 (a channel's Wel,z to
+// the flange tips, the far side from its centroid).
+struct WelRow {
+  const char *designation, *A, *Iy, *Iz, *Wely, *Welz;
+};
+// UPN: the sloping-flange channel outline (StandardSections' channel: 8 % or 5 % slope, tf at
+// b/2 from the web's back, root r1 = tf, toe r2 = r1 / 2) is not quite the tables': on several
+// rows Iy, Wel,y (UPN 50: +0.37 %, UPN 100: -0.32 %) and most of all the weak axis' Iz and
+// Wel,z (0.2 % to 0.57 % below) miss the printed three digits, while HE M agrees to them.
+// Allowed beyond half a digit for UPN: 0.6 %.
+constexpr double kChannelOutlineGap = 6e-3;
+const WelRow kWelRows[] = {
+    {"HEM100", "53.2", "1143", "399", "190", "75.3"},
+    {"HEM140", "80.6", "3291", "1144", "411", "157"},
+    {"HEM200", "131", "10640", "3651", "967", "354"},
+    {"HEM300", "303", "59200", "19400", "3480", "1250"},
+    {"HEM400", "326", "104100", "19340", "4820", "1260"},
+    {"UPN50", "7.12", "26.4", "9.12", "10.6", "3.75"},
+    {"UPN80", "11.0", "106", "19.4", "26.5", "6.36"},
+    {"UPN100", "13.5", "206", "29.3", "41.2", "8.49"},
+    {"UPN120", "17.0", "364", "43.2", "60.7", "11.1"},
+    {"UPN140", "20.4", "605", "62.7", "86.4", "14.8"},
+    {"UPN160", "24.0", "925", "85.3", "116", "18.3"},
+    {"UPN180", "28.0", "1350", "114", "150", "22.4"},
+    {"UPN200", "32.2", "1910", "148", "191", "27.0"},
+    {"UPN220", "37.4", "2690", "197", "245", "33.6"},
+    {"UPN240", "42.3", "3600", "248", "300", "39.6"},
+    {"UPN300", "58.8", "8030", "495", "535", "67.8"},
 };
 
 const CatalogEntry& entry(const std::string& designation) {
@@ -289,14 +337,33 @@ supports:
       const CatalogEntry& e = entry(r.designation);
       std::vector<Worst>& worst = byFamily[e.family];
       const CatalogProperties p = catalogProperties(e);
-      compare(r.designation, "A", p.A, r.A, 1e-4, 0, worst);
-      compare(r.designation, "Iy", p.Iy, r.Iy, 1e-8, 0, worst);
-      compare(r.designation, "Iz", p.Iz, r.Iz, 1e-8, 0, worst);
-      compare(r.designation, "Wel,y", p.Wely, r.Wely, 1e-6, 0, worst);
-      compare(r.designation, "Wel,z", p.Welz, r.Welz, 1e-6, 0, worst);
-      compare(r.designation, "Wpl,y", p.Wply, r.Wply, 1e-6, 0, worst);
-      compare(r.designation, "Wpl,z", p.Wplz, r.Wplz, 1e-6, 0, worst);
-      compare(r.designation, "It", p.It, r.It, 1e-8, kTorsionFormulaGap, worst);
+      compareAll(r.designation,
+                 {{"A", p.A, r.A, 1e-4},
+                  {"Iy", p.Iy, r.Iy, 1e-8},
+                  {"Iz", p.Iz, r.Iz, 1e-8},
+                  {"Wel,y", p.Wely, r.Wely, 1e-6},
+                  {"Wel,z", p.Welz, r.Welz, 1e-6},
+                  {"Wpl,y", p.Wply, r.Wply, 1e-6},
+                  {"Wpl,z", p.Wplz, r.Wplz, 1e-6},
+                  {"It", p.It, r.It, 1e-8, kTorsionFormulaGap}},
+                 worst);
+    }
+    for (const auto& [family, worst] : byFamily) report(family, worst);
+  }
+
+  TEST_CASE("HE M and UPN against the printed A, I and Wel (5 and 11 rows)") {
+    std::map<std::string, std::vector<Worst>> byFamily;
+    for (const WelRow& r : kWelRows) {
+      const CatalogEntry& e = entry(r.designation);
+      const CatalogProperties p = catalogProperties(e);
+      const double gap = e.family == "UPN" ? kChannelOutlineGap : 0;
+      compareAll(r.designation,
+                 {{"A", p.A, r.A, 1e-4, gap},
+                  {"Iy", p.Iy, r.Iy, 1e-8, gap},
+                  {"Iz", p.Iz, r.Iz, 1e-8, gap},
+                  {"Wel,y", p.Wely, r.Wely, 1e-6, gap},
+                  {"Wel,z", p.Welz, r.Welz, 1e-6, gap}},
+                 byFamily[e.family]);
     }
     for (const auto& [family, worst] : byFamily) report(family, worst);
   }
@@ -305,12 +372,14 @@ supports:
     std::vector<Worst> worst;
     for (const LRow& r : kLRows) {
       const CatalogProperties p = catalogProperties(entry(r.designation));
-      compare(r.designation, "A", p.A, r.A, 1e-4, 0, worst);
-      compare(r.designation, "Iy", p.Iy, r.Iy, 1e-8, 0, worst);
-      compare(r.designation, "Iz", p.Iz, r.Iy, 1e-8, 0, worst);
-      compare(r.designation, "Wel", p.Wely, r.Wel, 1e-6, 0, worst);
-      compare(r.designation, "Iu", p.Iu, r.Iu, 1e-8, 0, worst);
-      compare(r.designation, "Iv", p.Iv, r.Iv, 1e-8, kPrintedIvGap, worst);
+      compareAll(r.designation,
+                 {{"A", p.A, r.A, 1e-4},
+                  {"Iy", p.Iy, r.Iy, 1e-8},
+                  {"Iz", p.Iz, r.Iy, 1e-8},
+                  {"Wel", p.Wely, r.Wel, 1e-6},
+                  {"Iu", p.Iu, r.Iu, 1e-8},
+                  {"Iv", p.Iv, r.Iv, 1e-8, kPrintedIvGap}},
+                 worst);
     }
     report("L", worst);
   }
