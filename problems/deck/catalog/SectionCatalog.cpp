@@ -139,6 +139,8 @@ Section catalogSection(const CatalogEntry& e, std::string name, const Material& 
 
 CatalogProperties catalogProperties(const CatalogEntry& e) {
   CatalogProperties p;
+  // The torsion constant (and a tube's A and I) as the model's section has them; the material
+  // plays no part in those.
   const Section s = catalogSection(e, e.designation, Material::fromEnu("steel", 210e9, 0.3, 0));
   p.It = s.J;
   if (e.shape == CatalogShape::circularHollow) {
