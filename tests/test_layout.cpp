@@ -51,12 +51,12 @@ const std::map<std::string, std::map<std::string, int>> kRoomRank{
                   {"converge", 4}, {"verify", 4}, {"bench", 4}, {"study", 4},
                   {"cli", 5}, {"python", 5}}}};
 
-/// The inner rooms of a room: the machinery (reading a deck's text, writing files) first,
-/// knowing no analysis family; the beams and frames next, which the other families build on;
+/// The inner rooms of a room: the machinery (reading a deck's text, writing files) and the
+/// section catalogue (tables of shapes, no deck syntax) first, knowing no analysis family; the beams and frames next, which the other families build on;
 /// then the other families, peers that never include each other.
 const std::map<std::string, std::map<std::string, int>> kInnerRank{
-    {"problems/deck", {{"parse", 0}, {"structure", 1}, {"rotor", 2}, {"transient", 2},
-                       {"crank", 2}, {"torsion", 2}, {"study", 2}}},
+    {"problems/deck", {{"parse", 0}, {"catalog", 0}, {"structure", 1}, {"rotor", 2},
+                       {"transient", 2}, {"crank", 2}, {"torsion", 2}, {"study", 2}}},
     {"problems/output", {{"files", 0}, {"structure", 1}, {"rotor", 2}, {"transient", 2},
                          {"crank", 2}}}};
 // clang-format on

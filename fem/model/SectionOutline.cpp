@@ -174,4 +174,19 @@ std::vector<StressFibre> outlineFibres(const OutlineLoop& outer, const OutlinePr
   return fibres;
 }
 
+std::vector<std::array<double, 2>> outlinePolygon(const OutlineLoop& loop, int segmentsPerArc) {
+  std::vector<std::array<double, 2>> points;
+  for (const Rounded& k : roundCorners(loop)) {
+    if (k.turn == 0) {
+      points.push_back({k.y1, k.z1});
+      continue;
+    }
+    for (int j = 0; j <= segmentsPerArc; ++j) {
+      const double t = k.start + k.turn * j / segmentsPerArc;
+      points.push_back({k.cy + k.radius * std::cos(t), k.cz + k.radius * std::sin(t)});
+    }
+  }
+  return points;
+}
+
 }  // namespace beamrotor

@@ -6,6 +6,7 @@
 // Gauss-Legendre rules far beyond their degree).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "fem/model/Section.hpp"
@@ -44,5 +45,9 @@ OutlineProperties outlineProperties(const std::vector<OutlineLoop>& loops);
 /// axes: coordinates from the centroid, rotated by -principalAngle. The largest of a linear
 /// field over the section lies on them.
 std::vector<StressFibre> outlineFibres(const OutlineLoop& outer, const OutlineProperties& p);
+
+/// The loop as a polygon: sharp corners as they are, each rounded corner's arc by
+/// `segmentsPerArc` chords (their ends on the arc), in the loop's order and orientation.
+std::vector<std::array<double, 2>> outlinePolygon(const OutlineLoop& loop, int segmentsPerArc);
 
 }  // namespace beamrotor

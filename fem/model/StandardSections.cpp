@@ -68,6 +68,30 @@ double openTorsion(const std::vector<Wall>& walls) {
 
 }  // namespace
 
+std::vector<OutlineLoop> iSectionOutline(double h, double b, double tw, double tf, double r) {
+  const double y = h / 2, yi = h / 2 - tf, z = b / 2, zw = tw / 2;
+  return {{{-y, -z},    {-yi, -z},    {-yi, -zw, r}, {yi, -zw, r}, {yi, -z},   {y, -z},
+           {y, z},      {yi, z},      {yi, zw, r},   {-yi, zw, r}, {-yi, z},   {-y, z}}};
+}
+
+std::vector<OutlineLoop> channelOutline(double h, double b, double tw, double tf, double r,
+                                        double rToe, double taper) {
+  const double y = h / 2, atRoot = y - tf - taper * (b / 2 - tw), atToe = y - tf + taper * b / 2;
+  return {{{-y, 0},           {y, 0},          {y, b},           {atToe, b, rToe},
+           {atRoot, tw, r},   {-atRoot, tw, r}, {-atToe, b, rToe}, {-y, b}}};
+}
+
+std::vector<OutlineLoop> angleOutline(double h, double b, double t, double r, double rToe) {
+  return {{{0, 0}, {h, 0}, {h, t, rToe}, {t, t, r}, {t, b, rToe}, {0, b}}};
+}
+
+std::vector<OutlineLoop> hollowRectangleOutline(double h, double b, double t, double ro,
+                                                double ri) {
+  const double y = h / 2, z = b / 2, yi = y - t, zi = z - t;
+  return {{{-y, -z, ro}, {y, -z, ro}, {y, z, ro}, {-y, z, ro}},
+          {{-yi, -zi, ri}, {-yi, zi, ri}, {yi, zi, ri}, {yi, -zi, ri}}};
+}
+
 Section iSection(std::string name, const Material& m, double h, double b, double tw, double tf,
                  double r) {
   requireShapeValue(positive(h) && positive(b) && positive(tw) && positive(tf) && nonNegative(r),
@@ -75,11 +99,9 @@ Section iSection(std::string name, const Material& m, double h, double b, double
   requireShapeValue(2 * tf < h, "the flanges (2 tf) must be thinner than the depth h");
   requireShapeValue(tw + 2 * r <= b, "the web and its root fillets (tw + 2 r) must fit in the width b");
   requireShapeValue(2 * (tf + r) <= h, "the flanges and root fillets (2 (tf + r)) must fit in the depth h");
-  const double y = h / 2, yi = h / 2 - tf, z = b / 2, zw = tw / 2;
-  const OutlineLoop outline{{-y, -z},     {-yi, -z},    {-yi, -zw, r}, {yi, -zw, r},
-                            {yi, -z},     {y, -z},      {y, z},        {yi, z},
-                            {yi, zw, r},  {-yi, zw, r}, {-yi, z},      {-y, z}};
-  Section s = fromOutline(std::move(name), Section::Shape::iSection, m, {outline}, h);
+  Section s = fromOutline(std::move(name), Section::Shape::iSection, m,
+                          iSectionOutline(h, b, tw, tf, r), h);
+  const double z = b / 2;
 
   // Torsion: two flanges and the web as rectangles (Roark's series for each), plus the
   // contribution of the two web-flange junctions with their fillets, alpha D^4 each (El Darwish
@@ -119,9 +141,7 @@ Section channelSection(std::string name, const Material& m, double h, double b, 
   const double y = h / 2, atRoot = y - tf - taper * (b / 2 - tw), atToe = y - tf + taper * b / 2;
   requireShapeValue(atRoot > 0, "the flanges (tf, with their taper) must leave room for the web");
   requireShapeValue(atToe < y, "the taper leaves the flange tips no thickness");
-  const OutlineLoop outline{{-y, 0},          {y, 0},           {y, b},
-                            {atToe, b, rToe}, {atRoot, tw, r},  {-atRoot, tw, r},
-                            {-atToe, b, rToe}, {-y, b}};
+  const OutlineLoop outline = channelOutline(h, b, tw, tf, r, rToe, taper).front();
   Section s = fromOutline(std::move(name), Section::Shape::channel, m, {outline}, h);
   // The outline's centroid lies at e from the web's back; fromOutline measured the fibres
   // from it. The midline walls, from the same centroid: web at z = tw/2 - e, flanges to b - e.
@@ -135,14 +155,8 @@ Section channelSection(std::string name, const Material& m, double h, double b, 
   return s;
 }
 
-namespace {
-OutlineLoop angleOutline(double h, double b, double t, double r, double rToe) {
-  return {{0, 0}, {h, 0}, {h, t, rToe}, {t, t, r}, {t, b, rToe}, {0, b}};
-}
-}  // namespace
-
 double angleLegAngle(double h, double b, double t, double r, double rToe) {
-  return outlineProperties({angleOutline(h, b, t, r, rToe)}).principalAngle;
+  return outlineProperties(angleOutline(h, b, t, r, rToe)).principalAngle;
 }
 
 Section angleSection(std::string name, const Material& m, double h, double b, double t, double r,
@@ -150,7 +164,7 @@ Section angleSection(std::string name, const Material& m, double h, double b, do
   requireShapeValue(positive(h) && positive(b) && positive(t) && nonNegative(r) && nonNegative(rToe),
           "angle dimensions h, b, t must be positive and r, r_toe non-negative");
   requireShapeValue(t < h && t < b, "the legs must be longer than the thickness t");
-  const OutlineLoop outline = angleOutline(h, b, t, r, rToe);
+  const OutlineLoop outline = angleOutline(h, b, t, r, rToe).front();
   Section s = fromOutline(std::move(name), Section::Shape::angle, m, {outline}, std::max(h, b));
   // Midline legs from the heel's midline corner (t/2, t/2), in principal axes.
   const OutlineProperties p = outlineProperties({outline});
@@ -176,10 +190,8 @@ Section hollowRectangleSection(std::string name, const Material& m, double h, do
   requireShapeValue(2 * t < std::min(h, b), "the wall t must be thinner than half the smaller side");
   requireShapeValue(2 * ro <= std::min(h, b) && 2 * ri <= std::min(h, b) - 2 * t,
           "the corner radii must fit the sides");
-  const double y = h / 2, z = b / 2, yi = y - t, zi = z - t;
-  const OutlineLoop outer{{-y, -z, ro}, {y, -z, ro}, {y, z, ro}, {-y, z, ro}};
-  const OutlineLoop hole{{-yi, -zi, ri}, {-yi, zi, ri}, {yi, zi, ri}, {yi, -zi, ri}};
-  Section s = fromOutline(std::move(name), Section::Shape::hollowRectangle, m, {outer, hole}, h);
+  Section s = fromOutline(std::move(name), Section::Shape::hollowRectangle, m,
+                          hollowRectangleOutline(h, b, t, ro, ri), h);
 
   // Torsion of a closed thin wall (EN 10219-2:2006, Annex B, after Bredt): It = t^3 p / 3 +
   // 2 K Ah with the midline's enclosed area Ah = (b - t)(h - t) - Rc^2 (4 - pi), perimeter

@@ -8,10 +8,22 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "fem/model/Section.hpp"
+#include "fem/model/SectionOutline.hpp"
 
 namespace beamrotor {
+
+/// The outlines the shapes below are drawn from (drawing axes: y along the depth h, z along
+/// the width b; the I-section and the rectangle centred on the origin, the channel with its
+/// web's back on z = 0, the angle with its heel at the origin and the leg h along y).
+std::vector<OutlineLoop> iSectionOutline(double h, double b, double tw, double tf, double r);
+std::vector<OutlineLoop> channelOutline(double h, double b, double tw, double tf, double r,
+                                        double rToe, double taper);
+std::vector<OutlineLoop> angleOutline(double h, double b, double t, double r, double rToe);
+std::vector<OutlineLoop> hollowRectangleOutline(double h, double b, double t, double ro,
+                                                double ri);
 
 /// Doubly symmetric I/H section: depth h, flange width b, web tw, flanges tf, root radius r
 /// (0 for a welded section, whose fillet welds are not counted). The published tables' y-y

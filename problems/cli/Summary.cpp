@@ -89,6 +89,22 @@ void printReported(std::ostream& out, const std::vector<std::pair<std::string, d
   if (!values.empty()) out << "\n";
 }
 
+/// "section col: IPE300 (catalogue): A 53.81 cm^2, Iy 8356 cm^4, ..." in the tables' units
+/// and axes (y-y strong, a member's local z).
+void printCatalogSections(std::ostream& out, const std::vector<DeckCatalogSection>& sections) {
+  for (const DeckCatalogSection& s : sections) {
+    const CatalogProperties& p = s.properties;
+    out << "section " << s.name << ": " << s.designation << " (catalogue; y-y strong = local z): A "
+        << formatValue(p.A * 1e4) << " cm^2, Iy " << formatValue(p.Iy * 1e8) << " cm^4, Iz "
+        << formatValue(p.Iz * 1e8) << " cm^4, It " << formatValue(p.It * 1e8) << " cm^4, Wel,y "
+        << formatValue(p.Wely * 1e6) << " cm^3, Wel,z " << formatValue(p.Welz * 1e6)
+        << " cm^3, Wpl,y " << formatValue(p.Wply * 1e6) << " cm^3, Wpl,z "
+        << formatValue(p.Wplz * 1e6) << " cm^3";
+    if (p.Iu > 0) out << ", Iu " << formatValue(p.Iu * 1e8) << " cm^4, Iv " << formatValue(p.Iv * 1e8) << " cm^4";
+    out << "\n";
+  }
+}
+
 /// A modal or torsion analysis' frequencies and what each mode does.
 void printModes(std::ostream& out, const AnalysisOutcome& a, const ModalResult& m) {
   out << a.type << " analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
@@ -134,6 +150,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
     out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
         << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free)\n";
   printReported(out, run.reported);
+  printCatalogSections(out, run.catalogSections);
   for (const std::string& w : run.warnings) out << "warning: " << w << "\n";
   if (run.adequate) printAdequateChoice(out, *run.adequate);
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {

@@ -15,6 +15,7 @@
 #include "fem/model/Dof.hpp"
 #include "fem/model/Section.hpp"
 #include "problems/deck/AnalysisKinds.hpp"
+#include "problems/deck/catalog/SectionCatalog.hpp"
 #include "problems/deck/study/DeckAccuracy.hpp"
 #include "problems/deck/crank/DeckCrank.hpp"
 #include "problems/deck/parse/DeckError.hpp"
@@ -189,6 +190,14 @@ struct DeckSweep {
   DeckPlace place;
 };
 
+/// A section the deck picked from the catalogue (`catalog: IPE300`), with the properties the
+/// steel tables print, in their axes (y-y strong; see SectionCatalog.hpp), for the output.
+struct DeckCatalogSection {
+  std::string name;         ///< the deck's section name
+  std::string designation;  ///< as the table spells it
+  CatalogProperties properties;
+};
+
 struct Deck {
   std::string path;   ///< as given, for messages
   std::string stem;   ///< e.g. "pump_rod"
@@ -212,6 +221,7 @@ struct Deck {
   std::vector<DeckSegment> segments;  ///< the line's pieces, or a frame's members
   std::optional<DeckFrame> frame;     ///< `nodes:` and `members:` (segments are its members)
   std::vector<DeckSectionGaps> sectionGaps;  ///< one per `general` section missing something
+  std::vector<DeckCatalogSection> catalogSections;  ///< the sections taken from the catalogue
   std::vector<DeckPoint> points;  ///< including the automatic "start" and "end"
   std::vector<DeckSupport> supports;
   std::vector<DeckSpring> springs;

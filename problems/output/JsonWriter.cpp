@@ -370,6 +370,31 @@ Json reactionsJson(const StaticResult& r) {
   return out;
 }
 
+namespace {
+
+/// The catalogue's sections with the properties their tables print (SI units, the tables'
+/// axes: y-y strong, which is a member's local z; see FORMAT.md).
+Json catalogSectionsJson(const std::vector<DeckCatalogSection>& sections) {
+  Json out = Json::array();
+  for (const DeckCatalogSection& s : sections) {
+    const CatalogProperties& p = s.properties;
+    Json entry = {{"name", s.name},       {"designation", s.designation},
+                  {"A", p.A},             {"Iy", p.Iy},
+                  {"Iz", p.Iz},           {"It", p.It},
+                  {"Wel_y", p.Wely},      {"Wel_z", p.Welz},
+                  {"Wpl_y", p.Wply},      {"Wpl_z", p.Wplz},
+                  {"axes", "tables' y-y (strong) = member local z"}};
+    if (p.Iu > 0) {
+      entry["Iu"] = p.Iu;
+      entry["Iv"] = p.Iv;
+    }
+    out.push_back(entry);
+  }
+  return out;
+}
+
+}  // namespace
+
 Json runJson(const RunResult& run) {
   if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
   return runJson(run, runExtremes(run));
@@ -413,6 +438,7 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
   doc["checks"] = checksJson(run.checks);
   doc["skipped_checks"] = run.skippedChecks;
   doc["parameters"] = parametersJson(run.parameters);
+  if (!run.catalogSections.empty()) doc["catalog_sections"] = catalogSectionsJson(run.catalogSections);
   if (!run.warnings.empty()) doc["warnings"] = run.warnings;
   if (!run.reported.empty()) doc["reported"] = parametersJson(run.reported);
   if (run.adequate) doc["accuracy"] = adequateJson(*run.adequate);

@@ -210,6 +210,7 @@ RunResult runDeck(const Deck& deck, RunCache* cache) {
   run.deckName = deck.stem;
   run.parameters = deck.parameters;
   run.reported = deck.reported;
+  run.catalogSections = deck.catalogSections;
   for (const auto& [name, dimension] : deck.dimensions)
     run.units.emplace_back(name, siUnitOf(dimension));
   run.dimension = deck.dimension;

@@ -16,6 +16,7 @@
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 #include "fem/stability/StabilityResults.hpp"
+#include "problems/deck/Deck.hpp"
 #include "problems/run/AdequateChoice.hpp"
 #include "problems/run/CrankSliderOutcome.hpp"
 #include "problems/run/RotorRunResult.hpp"
@@ -151,6 +152,8 @@ struct RunResult {
   double modelSeconds = 0, analysesSeconds = 0, checksSeconds = 0;
   std::optional<AdequateChoice> adequate;  ///< `accuracy:` decks: the model chosen
   std::vector<std::string> warnings;       ///< the deck's own (implausible materials)
+  /// The sections taken from the catalogue, with their tables' properties (y-y strong).
+  std::vector<DeckCatalogSection> catalogSections;
 };
 
 /// A deck solved over a list of values of one parameter.

@@ -62,6 +62,27 @@ def test_cantilever_against_beam_theory():
     assert len(run.tables["modal"]["modes"]["frequency"]) == 4
 
 
+def test_catalogue_section_properties_and_pick():
+    # steel_column.yaml takes HEB200 from the section catalogue; results.json carries its
+    # properties in the tables' axes (y-y strong), SI units. The printed HE B 200 values are
+    # the computed ones to half a unit of their last digit: 5696 cm^4 to 8.8e-5, 2003 cm^4 to
+    # 2.5e-4, 642.5 cm^3 to 7.8e-5.
+    run = beamrotor.solve(PROBLEMS / "steel_column.yaml")
+    (section,) = run.results["catalog_sections"]
+    assert section["designation"] == "HEB200" and section["name"] == "column"
+    assert abs(section["Iy"] / 5696e-8 - 1) < 8.8e-5
+    assert abs(section["Iz"] / 2003e-8 - 1) < 2.5e-4
+    assert abs(section["Wpl_y"] / 642.5e-6 - 1) < 7.8e-5
+    # `pick` chooses from the list by a parameter: 3 is HEB240, stiffer about y-y, so the
+    # deflection in the web's plane falls as Iy rises (exactly, for these elements).
+    bigger = beamrotor.solve(PROBLEMS / "steel_column.yaml", set={"size": 3})
+    (other,) = bigger.results["catalog_sections"]
+    assert other["designation"] == "HEB240"
+    uy = run.results["analyses"][0]["displacements"]["end"]["uy"]
+    uy_bigger = bigger.results["analyses"][0]["displacements"]["end"]["uy"]
+    assert abs(uy_bigger / uy - section["Iy"] / other["Iy"]) < 1e-10
+
+
 def test_pump_rod_published_reactions_over_a_sweep():
     sweep = beamrotor.solve(PROBLEMS / "pump_rod.yaml", sweep="eta=0,0.4")
     assert isinstance(sweep, beamrotor.Sweep)

@@ -5,6 +5,7 @@
 
 #include "fem/model/StandardSections.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/catalog/SectionCatalog.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 
@@ -51,8 +52,47 @@ std::shared_ptr<const Section> readShape(const Context& c, const Field& f,
   return std::make_shared<Section>(make(v));
 }
 
+/// The catalogue row a designation names; fails at the field suggesting the nearest one,
+/// compared as designations are (without spaces and case) and named as its table spells it.
+const CatalogEntry& catalogEntryAt(const Field& field) {
+  const std::string designation = field.text();
+  if (const CatalogEntry* entry = findCatalogEntry(designation)) return *entry;
+  std::vector<std::string> known;
+  for (const CatalogEntry& e : sectionCatalog())
+    known.push_back(normalizedDesignation(e.designation));
+  const std::string near = closestMatch(normalizedDesignation(designation), known, 2);
+  const CatalogEntry* nearest = near.empty() ? nullptr : findCatalogEntry(near);
+  field.fail("no section '" + designation + "' in the catalogue" +
+             (nearest ? "; did you mean '" + nearest->designation + "'?" : std::string()) +
+             " (families: IPE, HEA, HEB, HEM, UPN, L, CHS, RHS, SHS; see FORMAT.md)");
+}
+
+/// A section picked from the catalogue by designation (problems/deck/catalog): its shape and
+/// dimensions come from the table, so no shape key may be given beside it. A list of
+/// designations with `pick` (1 for the first) lets a parameter choose one, so that sweeps and
+/// design studies can: every designation in the list must exist.
+std::shared_ptr<const Section> readCatalogSection(Context& c, const Field& f,
+                                                  const std::string& name) {
+  f.allowOnly({"name", "catalog", "pick", "material"}, "a catalogue section");
+  const Field listed = f.require("catalog");
+  const auto pick = f.get("pick");
+  if (listed.isList() != pick.has_value())
+    (pick ? *pick : listed)
+        .fail(pick ? "`pick` chooses from a list of designations: give `catalog` a list"
+                   : "a list of designations needs `pick` (1 for the first) to choose one");
+  std::vector<const CatalogEntry*> entries;
+  for (const Field& item : listed.itemsOrSingle()) entries.push_back(&catalogEntryAt(item));
+  if (entries.empty()) listed.fail("the list of designations is empty");
+  const CatalogEntry& entry =
+      *entries[pick ? std::size_t(pick->integer(c.evaluator, 1, int(entries.size())) - 1) : 0];
+  const Material& m = materialFor(c, f);
+  c.deck.catalogSections.push_back({name, entry.designation, catalogProperties(entry)});
+  return std::make_shared<Section>(catalogSection(entry, name, m));
+}
+
 std::shared_ptr<const Section> readSection(Context& c, const Field& f, const std::string& name) {
   const ExpressionEvaluator& ev = c.evaluator;
+  if (f.has("catalog") && !f.has("shape")) return readCatalogSection(c, f, name);
   const std::vector<std::string> common{"name", "shape", "material"};
   const std::string shape = f.require("shape").choice(
       {"circle", "tube", "rectangle", "I", "channel", "angle", "rhs", "general"});

@@ -1,0 +1,459 @@
+// The section catalogue (problems/deck/catalog): every row's properties computed from its
+// dimensions against the steel tables' printed values (a documented sample of rows, to their
+// printed digits) or, for the hollow sections, against closed forms of their own; catalogue
+// sections in decks: a cantilever of IPE 300 bent about its strong and its weak axis against
+// P L^3 / (3 E I) with the printed I, and an unknown designation refused at its line with the
+// nearest one suggested.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "fem/model/StandardSections.hpp"
+#include "problems/deck/catalog/SectionCatalog.hpp"
+#include "problems/deck/parse/DeckError.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/Helpers.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+/// A printed value and half a unit of its last printed digit (both in the table's unit).
+struct Printed {
+  double value = 0, halfUnit = 0;
+};
+
+/// "5.24" -> 5.24 +- 0.005; an integer's trailing zeros are not digits unless fewer than three
+/// remain (tables print at least three): "1033" -> +- 0.5, "18260" -> +- 5, "8030" -> +- 5.
+Printed printed(const std::string& text) {
+  const double v = std::stod(text);
+  const auto point = text.find('.');
+  if (point != std::string::npos)
+    return {v, 0.5 * std::pow(10.0, -double(text.size() - point - 1))};
+  const int digits = int(text.size());
+  const int significant = std::max(3, int(text.find_last_not_of('0')) + 1);
+  return {v, 0.5 * std::pow(10.0, std::max(0, digits - significant))};
+}
+
+/// The largest |computed / printed - 1| per property of a family, for the report below.
+struct Worst {
+  std::string property;
+  double relative = 0;
+  std::string row;
+};
+
+void compare(const std::string& row, const std::string& property, double computed,
+             const std::string& text, double unit, double extra, std::vector<Worst>& worst) {
+  const Printed p = printed(text);
+  const double value = computed / unit;
+  CAPTURE(row);
+  CAPTURE(property);
+  CAPTURE(value);
+  CAPTURE(text);
+  // Within half a unit of the last printed digit, plus `extra` (relative) where the table's
+  // formula differs from ours (the torsion constant, below).
+  CHECK(std::abs(value - p.value) <= p.halfUnit + extra * p.value);
+  const double relative = std::abs(value / p.value - 1);
+  for (Worst& w : worst)
+    if (w.property == property) {
+      if (relative > w.relative) w = {property, relative, row};
+      return;
+    }
+  worst.push_back({property, relative, row});
+}
+
+/// One property of a row: computed (SI), printed (text, in the table's unit: `unit` SI per
+/// table unit) and the allowance beyond half a printed digit where the formulas differ.
+struct Expected {
+  const char* property;
+  double computed;
+  const char* printed;
+  double unit;
+  double extra = 0;
+};
+
+void compareAll(const std::string& row, const std::vector<Expected>& expected,
+                std::vector<Worst>& worst) {
+  for (const Expected& e : expected)
+    compare(row, e.property, e.computed, e.printed, e.unit, e.extra, worst);
+}
+
+// ArcelorMittal Europe, "Sections and merchant bars" sales programme, tables of IPE, HE A and
+// HE B (dimensions as EN 10365): A cm^2; Iy, Iz, It cm^4; Wel, Wpl cm^3, y-y the strong axis.
+// A sample of 27 rows (10 HE A, 10 HE B, 7 IPE) with every property.
+struct IRow {
+  const char* designation;
+  const char *A, *Iy, *Wely, *Wply, *Iz, *Welz, *Wplz, *It;
+};
+const IRow kIRows[] = {
+    {"HEA100", "21.24", "349.2", "72.76", "83.01", "133.8", "26.76", "41.14", "5.24"},
+    {"HEA120", "25.34", "606.2", "106.3", "119.5", "230.9", "38.48", "58.85", "5.99"},
+    {"HEA140", "31.42", "1033", "155.4", "173.5", "389.3", "55.62", "84.85", "8.13"},
+    {"HEA160", "38.77", "1673", "220.1", "245.1", "615.6", "76.95", "117.6", "12.19"},
+    {"HEA180", "45.25", "2510", "293.6", "324.9", "924.6", "102.7", "156.5", "14.80"},
+    {"HEA200", "53.83", "3692", "388.6", "429.5", "1336", "133.6", "203.8", "20.98"},
+    {"HEA220", "64.34", "5410", "515.2", "568.5", "1955", "177.7", "270.6", "28.46"},
+    {"HEA240", "76.84", "7763", "675.1", "744.6", "2769", "230.7", "351.7", "41.55"},
+    {"HEA260", "86.82", "10450", "836.4", "919.8", "3668", "282.1", "430.2", "52.37"},
+    {"HEA300", "112.5", "18260", "1260", "1383", "6310", "420.6", "641.2", "85.17"},
+    {"HEB100", "26.04", "449.5", "89.91", "104.2", "167.3", "33.45", "51.42", "9.25"},
+    {"HEB120", "34.01", "864.4", "144.1", "165.2", "317.5", "52.92", "80.97", "13.84"},
+    {"HEB140", "42.96", "1509", "215.6", "245.4", "549.7", "78.52", "119.8", "20.06"},
+    {"HEB160", "54.25", "2492", "311.5", "354.0", "889.2", "111.2", "170.0", "31.24"},
+    {"HEB180", "65.25", "3831", "425.7", "481.4", "1363", "151.4", "231.0", "42.16"},
+    {"HEB200", "78.08", "5696", "569.6", "642.5", "2003", "200.3", "305.8", "59.28"},
+    {"HEB220", "91.04", "8091", "735.5", "827.0", "2843", "258.5", "393.9", "76.57"},
+    {"HEB240", "106.0", "11260", "938.3", "1053", "3923", "326.9", "498.4", "102.7"},
+    {"HEB260", "118.4", "14920", "1148", "1283", "5135", "395.0", "602.2", "123.8"},
+    {"HEB300", "149.1", "25170", "1678", "1869", "8563", "570.9", "870.1", "185.0"},
+    {"IPE200", "28.48", "1943", "194.3", "220.6", "142.4", "28.47", "44.61", "6.98"},
+    {"IPE240", "39.12", "3892", "324.3", "366.6", "283.6", "47.27", "73.92", "12.88"},
+    {"IPE270", "45.95", "5790", "428.9", "484.0", "419.9", "62.20", "96.95", "15.94"},
+    {"IPE300", "53.81", "8356", "557.1", "628.4", "603.8", "80.50", "125.2", "20.12"},
+    {"IPE330", "62.61", "11770", "713.1", "804.3", "788.1", "98.52", "153.7", "28.15"},
+    {"IPE360", "72.73", "16270", "903.6", "1019", "1043", "122.8", "191.1", "37.32"},
+    {"IPE400", "84.46", "23130", "1156", "1307", "1318", "146.4", "229.0", "51.08"},
+};
+
+// The torsion constant: the tables' It lies 0.35 % to 0.54 % below Roark's formula with El
+// Darwish and Johnston's junction term (StandardSections.cpp), which our I-sections use; the
+// difference is that term's (the tables' junctions come out 1.7 % smaller on every row; their
+// formula is not printed with them). Allowed: 0.6 %.
+constexpr double kTorsionFormulaGap = 6e-3;
+
+// EN 10056-1 equal angles as printed in the same kind of table (3 significant digits): A cm^2,
+// Iy = Iz about the axes parallel to the legs cm^4, Wel about them cm^3, Iu, Iv cm^4.
+struct LRow {
+  const char *designation, *A, *Iy, *Wel, *Iu, *Iv;
+};
+// The printed Iv lies below the outline's by more than its last digit on four of these rows,
+// by up to 0.36 % (L 45x45x5: 3.25 printed, 3.2615 computed), while A, Iy, Wel and Iu agree to
+// their digits; Iu + Iv = 2 Iy holds exactly for an equal angle, and the printed values miss it
+// by as much, so the table's Iv is the one off. Allowed beyond half a digit: 0.25 %.
+constexpr double kPrintedIvGap = 2.5e-3;
+const LRow kLRows[] = {
+    {"L40x40x4", "3.08", "4.47", "1.55", "7.09", "1.86"},
+    {"L45x45x5", "4.30", "7.84", "2.43", "12.4", "3.25"},
+    {"L50x50x5", "4.80", "11.0", "3.05", "17.4", "4.54"},
+    {"L60x60x6", "6.91", "22.8", "5.29", "36.1", "9.43"},
+    {"L70x70x7", "9.40", "42.3", "8.41", "67.1", "17.5"},
+    {"L80x80x8", "12.3", "72.2", "12.6", "115", "29.9"},
+    {"L90x90x9", "15.5", "116", "17.9", "184", "47.8"},
+    {"L100x100x10", "19.2", "177", "24.6", "280", "73.0"},
+};
+
+// HE M and UPN as printed to three or four significant digits in the profile tables (EN 10365
+// dimensions; UPN to DIN 1026-1): A cm^2, Iy, Iz cm^4, Wel,y, Wel,z cm^3 (a channel's Wel,z to
+// the flange tips, the far side from its centroid).
+struct WelRow {
+  const char *designation, *A, *Iy, *Iz, *Wely, *Welz;
+};
+// UPN: the sloping-flange channel outline (StandardSections' channel: 8 % or 5 % slope, tf at
+// b/2 from the web's back, root r1 = tf, toe r2 = r1 / 2) is not quite the tables': on several
+// rows Iy, Wel,y (UPN 50: +0.37 %, UPN 100: -0.32 %) and most of all the weak axis' Iz and
+// Wel,z (0.2 % to 0.57 % below) miss the printed three digits, while HE M agrees to them.
+// Allowed beyond half a digit for UPN: 0.6 %.
+constexpr double kChannelOutlineGap = 6e-3;
+const WelRow kWelRows[] = {
+    {"HEM100", "53.2", "1143", "399", "190", "75.3"},
+    {"HEM140", "80.6", "3291", "1144", "411", "157"},
+    {"HEM200", "131", "10640", "3651", "967", "354"},
+    {"HEM300", "303", "59200", "19400", "3480", "1250"},
+    {"HEM400", "326", "104100", "19340", "4820", "1260"},
+    {"UPN50", "7.12", "26.4", "9.12", "10.6", "3.75"},
+    {"UPN80", "11.0", "106", "19.4", "26.5", "6.36"},
+    {"UPN100", "13.5", "206", "29.3", "41.2", "8.49"},
+    {"UPN120", "17.0", "364", "43.2", "60.7", "11.1"},
+    {"UPN140", "20.4", "605", "62.7", "86.4", "14.8"},
+    {"UPN160", "24.0", "925", "85.3", "116", "18.3"},
+    {"UPN180", "28.0", "1350", "114", "150", "22.4"},
+    {"UPN200", "32.2", "1910", "148", "191", "27.0"},
+    {"UPN220", "37.4", "2690", "197", "245", "33.6"},
+    {"UPN240", "42.3", "3600", "248", "300", "39.6"},
+    {"UPN300", "58.8", "8030", "495", "535", "67.8"},
+};
+
+const CatalogEntry& entry(const std::string& designation) {
+  const CatalogEntry* e = findCatalogEntry(designation);
+  REQUIRE_MESSAGE(e != nullptr, designation);
+  return *e;
+}
+
+void report(const std::string& family, const std::vector<Worst>& worst) {
+  std::string line = family + ": largest |computed / printed - 1|:";
+  for (const Worst& w : worst) line += " " + w.property + " " + std::to_string(w.relative) + " (" + w.row + ")";
+  MESSAGE(line);
+}
+
+// A spandrel: the corner square r x r less the quarter disc that rounds it, its square's
+// inner edge at distance c from the axis and the corner at c + r. Its integrals of |y|^k dA
+// about the axis (k = 0, 1, 2), the quarter disc's by integrating (c + rho cos t)^k rho.
+double spandrel(double r, double c, int k) {
+  const double pi = std::numbers::pi;
+  const double square = r * (std::pow(c + r, k + 1) - std::pow(c, k + 1)) / (k + 1);
+  const double quarter = k == 0   ? pi * r * r / 4
+                         : k == 1 ? c * pi * r * r / 4 + r * r * r / 3
+                                  : c * c * pi * r * r / 4 + 2 * c * r * r * r / 3 +
+                                        pi * std::pow(r, 4) / 16;
+  return square - quarter;
+}
+
+/// A rectangle H x B less its four rounded corners (radius r): area (k = 0), half its
+/// plastic modulus (k = 1, the first moment of the upper half) or its second moment (k = 2)
+/// about the axis across H.
+double roundedRectangle(double H, double B, double r, int k) {
+  const double whole = k == 0 ? B * H : k == 1 ? B * H * H / 8 : B * H * H * H / 12;
+  const int corners = k == 1 ? 2 : 4;  // the upper half holds two
+  return whole - corners * spandrel(r, H / 2 - r, k);
+}
+
+// A column of IPE 300 from the catalogue, clamped at its foot, pushed at its head: in the
+// frame's plane (global x, across the web: the strong axis) and, in 3D, out of it (global z,
+// along the flanges: the weak axis). Euler-Bernoulli elements are exact for a tip load:
+// u = P L^3 / (3 E I).
+std::string column(bool threeD, const std::string& load, const std::string& measured,
+                   const std::string& I) {
+  const std::string z = threeD ? ", 0" : "";
+  return std::string(threeD ? "model: {dimension: 3d}\n" : "") + R"(
+materials:
+  - {name: steel, E: 210 GPa, nu: 0.3, rho: 7850}
+sections:
+  - {name: col, catalog: IPE300}
+parameters: {L: 4 m, P: 10 kN}
+nodes:
+  - {name: foot, at: [0, 0)" + z + R"(]}
+  - {name: head, at: [0, L)" + z + R"(]}
+members:
+  - {name: column, from: foot, to: head, section: col, elements: 4}
+supports:
+  - {name: base, at: foot, fix: clamped}
+loads:
+  - {type: point, at: head, )" + load + R"(: P}
+checks:
+  - {name: sway, quantity: displacement head )" + measured + R"(,
+     reference: P * L^3 / (3 * 210 GPa * )" + I + R"(), tolerance: 1e-4}
+)";
+}
+
+double tipDeflection(const std::string& deck) {
+  const Study study = test::solveDeckText(deck, "column.yaml");
+  REQUIRE(study.run);
+  REQUIRE(study.run->checks.size() == 1);
+  CHECK(study.run->checks.front().pass());
+  return study.run->checks.front().computed;
+}
+
+}  // namespace
+
+TEST_SUITE("section catalogue") {
+  TEST_CASE("an IPE 300 column bends about its strong axis in the plane, its weak one across") {
+    // The printed Iy 8356 cm^4 and Iz 603.8 cm^4 (ArcelorMittal) are the exact outline's to
+    // half a unit of their last digit: 6.0e-5 and 8.3e-5 of them; 1e-4 allows for that.
+    const double E = 210e9, L = 4, P = 10e3;
+    const double strong = P * L * L * L / (3 * E * 8356e-8);
+    CHECK(test::relError(tipDeflection(column(true, "fx", "ux", "8356 cm^4")), strong) < 1e-4);
+    CHECK(test::relError(tipDeflection(column(true, "fz", "uz", "603.8 cm^4")), P * L * L * L / (3 * E * 603.8e-8)) <
+          1e-4);
+    // The same column in a planar frame bends the strong way.
+    CHECK(test::relError(tipDeflection(column(false, "fx", "ux", "8356 cm^4")), strong) < 1e-4);
+  }
+
+  TEST_CASE("a parameter picks the designation from a list, as a sweep would") {
+    // problems/steel_column.yaml picks HEB200 (size 2); size 3 is HEB240. Its sway across the
+    // web is Hy h^3 / (3 E Iy), exact for its elements: the two runs' ratio is the inverse
+    // ratio of the catalogue's Iy, to round-off.
+    const std::string text = test::fileContents(test::problemsDir() / "steel_column.yaml");
+    std::string bigger = text;
+    bigger.replace(bigger.find("size: 2 "), 8, "size: 3 ");
+    const Study two = test::solveDeckText(text, "steel_column.yaml");
+    const Study three = test::solveDeckText(bigger, "steel_column.yaml");
+    REQUIRE(two.run);
+    REQUIRE(three.run);
+    REQUIRE(two.run->catalogSections.size() == 1);
+    REQUIRE(three.run->catalogSections.size() == 1);
+    CHECK(two.run->catalogSections[0].designation == "HEB200");
+    CHECK(three.run->catalogSections[0].designation == "HEB240");
+    const double ratio = three.run->checks[0].computed / two.run->checks[0].computed;
+    CHECK(test::relError(ratio, two.run->catalogSections[0].properties.Iy /
+                                    three.run->catalogSections[0].properties.Iy) < 1e-10);
+    std::string outside = text;
+    outside.replace(outside.find("size: 2 "), 8, "size: 4 ");
+    CHECK_THROWS_WITH_AS(test::solveDeckText(outside, "steel_column.yaml"),
+                         doctest::Contains("sections[0].pick"), DeckError);
+  }
+
+  TEST_CASE("an unknown designation: exit 2 at its line, the nearest row suggested") {
+    const auto dir = test::scratchDir("catalog_unknown");
+    const auto deck = dir / "typo.yaml";
+    std::ofstream(deck) << R"(materials:
+  - {name: steel, E: 210 GPa, nu: 0.3}
+sections:
+  - {name: beam, catalog: HEB 2O0}
+segments:
+  - {length: 3, section: beam, elements: 2}
+supports:
+  - {name: root, at: start, fix: clamped}
+)";
+    const test::ProcessResult r = test::runBeamrotor({"check", deck.string()});
+    CAPTURE(r.err);
+    CHECK(r.exitCode == 2);
+    CHECK(r.err.find(deck.string() + ":4:") != std::string::npos);
+    CHECK(r.err.find("sections[0].catalog") != std::string::npos);
+    CHECK(r.err.find("no section 'HEB 2O0' in the catalogue; did you mean 'HEB200'?") !=
+          std::string::npos);
+  }
+
+  TEST_CASE("the tables hold every family, with the rows' dimensions read") {
+    std::map<std::string, int> rows;
+    for (const CatalogEntry& e : sectionCatalog()) ++rows[e.family];
+    std::string counts;
+    for (const auto& [family, n] : rows) counts += family + " " + std::to_string(n) + ", ";
+    MESSAGE("rows per family: " << counts);
+    CHECK(rows["IPE"] == 18);  // IPE 80 to 600
+    CHECK(rows["HEA"] == 24);  // HE 100 to 1000
+    CHECK(rows["HEB"] == 24);
+    CHECK(rows["HEM"] == 24);
+    CHECK(rows["UPN"] == 18);  // UPN 50 to 400
+    CHECK(rows["L"] > 40);
+    CHECK(rows["CHS"] > 70);
+    CHECK(rows["RHS"] > 100);
+    CHECK(rows["SHS"] > 150);
+    const CatalogEntry& ipe = entry("IPE 300");
+    CHECK(ipe.dim("h") == 300);
+    CHECK(ipe.dim("tf") == 10.7);
+    CHECK(entry("HE 300 B").designation == "HEB300");
+    CHECK(entry("shs100x100x5-cf").dim("r_out") == 10);  // 2 t for t <= 6 mm (EN 10219-2)
+  }
+
+  TEST_CASE("I and H sections against the printed A, I, Wel, Wpl and It (27 rows)") {
+    std::map<std::string, std::vector<Worst>> byFamily;
+    for (const IRow& r : kIRows) {
+      const CatalogEntry& e = entry(r.designation);
+      std::vector<Worst>& worst = byFamily[e.family];
+      const CatalogProperties p = catalogProperties(e);
+      compareAll(r.designation,
+                 {{"A", p.A, r.A, 1e-4},
+                  {"Iy", p.Iy, r.Iy, 1e-8},
+                  {"Iz", p.Iz, r.Iz, 1e-8},
+                  {"Wel,y", p.Wely, r.Wely, 1e-6},
+                  {"Wel,z", p.Welz, r.Welz, 1e-6},
+                  {"Wpl,y", p.Wply, r.Wply, 1e-6},
+                  {"Wpl,z", p.Wplz, r.Wplz, 1e-6},
+                  {"It", p.It, r.It, 1e-8, kTorsionFormulaGap}},
+                 worst);
+    }
+    for (const auto& [family, worst] : byFamily) report(family, worst);
+  }
+
+  TEST_CASE("HE M and UPN against the printed A, I and Wel (5 and 11 rows)") {
+    std::map<std::string, std::vector<Worst>> byFamily;
+    for (const WelRow& r : kWelRows) {
+      const CatalogEntry& e = entry(r.designation);
+      const CatalogProperties p = catalogProperties(e);
+      const double gap = e.family == "UPN" ? kChannelOutlineGap : 0;
+      compareAll(r.designation,
+                 {{"A", p.A, r.A, 1e-4, gap},
+                  {"Iy", p.Iy, r.Iy, 1e-8, gap},
+                  {"Iz", p.Iz, r.Iz, 1e-8, gap},
+                  {"Wel,y", p.Wely, r.Wely, 1e-6, gap},
+                  {"Wel,z", p.Welz, r.Welz, 1e-6, gap}},
+                 byFamily[e.family]);
+    }
+    for (const auto& [family, worst] : byFamily) report(family, worst);
+  }
+
+  TEST_CASE("equal angles against the printed A, I about the legs, Wel, Iu and Iv (8 rows)") {
+    std::vector<Worst> worst;
+    for (const LRow& r : kLRows) {
+      const CatalogProperties p = catalogProperties(entry(r.designation));
+      compareAll(r.designation,
+                 {{"A", p.A, r.A, 1e-4},
+                  {"Iy", p.Iy, r.Iy, 1e-8},
+                  {"Iz", p.Iz, r.Iy, 1e-8},
+                  {"Wel", p.Wely, r.Wel, 1e-6},
+                  {"Iu", p.Iu, r.Iu, 1e-8},
+                  {"Iv", p.Iv, r.Iv, 1e-8, kPrintedIvGap}},
+                 worst);
+    }
+    report("L", worst);
+  }
+
+  TEST_CASE("unequal angles: the printed area and centroid (6 rows)") {
+    // A profile table of EN 10056-1 angles printing A (mm^2, four digits) and the centroid's
+    // distances from the backs of the legs (mm): e across the long leg (from its back, along the
+    // short leg) and along it. They fix the rows' root and toe radii (r2 = r1 / 2): one
+    // millimetre of r1 moves A by 2 to 4 mm^2 here, beyond the printed digit. Left out: the
+    // table's L 100x50x8, whose A (1141 mm^2, r1 = 7) contradicts its own centroid (11.25 and
+    // 35.9 mm) and the 8.99 kg/m of mass tables, both of which r1 = 9 meets (the catalogue's).
+    struct URow {
+      const char *designation, *A, *eShort, *eLong;
+    };
+    const URow rows[] = {
+        {"L50x30x5", "378", "7.41", "17.27"},     {"L60x40x6", "568", "10.11", "19.98"},
+        {"L80x40x8", "901", "9.63", "29.4"},      {"L100x65x7", "1117", "15.12", "32.3"},
+        {"L150x100x10", "2418", "23.36", "48"},
+        {"L200x100x10", "2924", "20.13", "69.3"},
+    };
+    std::vector<Worst> worst;
+    for (const URow& r : rows) {
+      const CatalogEntry& e = entry(r.designation);
+      const auto d = [&](const char* k) { return e.dim(k) * 1e-3; };
+      // The heel at the origin, the leg h (the long one) along y: the centroid's y is its
+      // distance along the long leg, z across it.
+      const OutlineProperties o =
+          outlineProperties(angleOutline(d("h"), d("b"), d("t"), d("r"), d("r_toe")));
+      compareAll(r.designation,
+                 {{"A", catalogProperties(e).A, r.A, 1e-6},
+                  {"e across the long leg", o.cz, r.eShort, 1e-3},
+                  {"e along the long leg", o.cy, r.eLong, 1e-3}},
+                 worst);
+    }
+    report("L unequal", worst);
+  }
+
+  TEST_CASE("every hollow section against the closed forms of its rounded corners") {
+    // A, I and Wpl of an RHS are a rounded rectangle less its rounded hole: exact in closed
+    // form, so they agree with the outline's Green's-theorem integrals and polygon clipping to
+    // round-off (1e-9 relative allows for the plastic modulus' 512-chord arcs). A CHS: the
+    // ring's A = pi (D^2 - d^2) / 4, I = pi (D^4 - d^4) / 64, Wpl = (D^3 - d^3) / 6.
+    int checked = 0;
+    for (const CatalogEntry& e : sectionCatalog()) {
+      CAPTURE(e.designation);
+      const CatalogProperties p = catalogProperties(e);
+      if (e.shape == CatalogShape::rectangularHollow) {
+        const double H = e.dim("h") * 1e-3, B = e.dim("b") * 1e-3, t = e.dim("t") * 1e-3;
+        const double ro = e.dim("r_out") * 1e-3, ri = e.dim("r_in") * 1e-3;
+        const auto tube = [&](double h, double b, int k) {
+          return roundedRectangle(h, b, ro, k) - roundedRectangle(h - 2 * t, b - 2 * t, ri, k);
+        };
+        const auto across = [&](double h, double b, int k) {  // bending about the other axis
+          return roundedRectangle(b, h, ro, k) - roundedRectangle(b - 2 * t, h - 2 * t, ri, k);
+        };
+        CHECK(test::relError(p.A, tube(H, B, 0)) < 1e-12);
+        CHECK(test::relError(p.Iy, tube(H, B, 2)) < 1e-12);
+        CHECK(test::relError(p.Iz, across(H, B, 2)) < 1e-12);
+        CHECK(test::relError(p.Wely, tube(H, B, 2) / (H / 2)) < 1e-12);
+        CHECK(test::relError(p.Wply, 2 * tube(H, B, 1)) < 1e-9);
+        CHECK(test::relError(p.Wplz, 2 * across(H, B, 1)) < 1e-9);
+        ++checked;
+      }
+      if (e.shape == CatalogShape::circularHollow) {
+        const double D = e.dim("D") * 1e-3, d = D - 2 * e.dim("t") * 1e-3;
+        const double pi = std::numbers::pi;
+        CHECK(test::relError(p.A, pi * (D * D - d * d) / 4) < 1e-12);
+        CHECK(test::relError(p.Iy, pi * (std::pow(D, 4) - std::pow(d, 4)) / 64) < 1e-12);
+        CHECK(test::relError(p.Wply, (D * D * D - d * d * d) / 6) < 1e-12);
+        CHECK(test::relError(p.It, 2 * p.Iy) < 1e-12);
+        ++checked;
+      }
+    }
+    CHECK(checked > 300);
+  }
+}
