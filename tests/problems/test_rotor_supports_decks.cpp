@@ -18,10 +18,7 @@ using namespace beamrotor::test;
 namespace {
 
 RunResult solvedDeck(const std::string& deck, std::vector<std::string> sets = {}) {
-  StudyRequest request;
-  request.deckPath = (problemsDir() / deck).string();
-  request.sets = std::move(sets);
-  const Study s = solveStudy(request);
+  const Study s = solveStudy(shippedDeckRequest(deck, std::move(sets)));
   REQUIRE(s.run);
   return *s.run;
 }
