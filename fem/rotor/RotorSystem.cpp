@@ -1,6 +1,9 @@
 #include "fem/rotor/RotorSystem.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <utility>
+#include <stdexcept>
 
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/model/Model.hpp"
@@ -51,6 +54,60 @@ RotorSystem::RotorSystem(const Model& model, ProportionalDamping damping)
       }
     terms_.push_back(std::move(term));
   }
+  if (proportional_.internal != 0) assembleShaft();
+}
+
+namespace {
+
+/// The quarter turn about the shaft's axis x at one dof: the dof whose value R puts here and
+/// its sign, (R q)_uy = q_uz, (R q)_uz = -q_uy, (R q)_ry = q_rz, (R q)_rz = -q_ry; none for
+/// ux and rx, which a turn about x leaves alone and which so carry no circulatory term.
+std::optional<std::pair<Dof, double>> quarterTurnSource(Dof d) {
+  switch (d) {
+    case Dof::uy: return std::pair{Dof::uz, 1.0};
+    case Dof::uz: return std::pair{Dof::uy, -1.0};
+    case Dof::ry: return std::pair{Dof::rz, 1.0};
+    case Dof::rz: return std::pair{Dof::ry, -1.0};
+    default: return std::nullopt;
+  }
+}
+
+}  // namespace
+
+void RotorSystem::assembleShaft() {
+  shaft_ = K0_;
+  shaft_.coeffs().setZero();
+  circulatory_ = shaft_;
+  auto add = [&](SparseMatrix& A, int row, int col, double v) {
+    if (!dofs_.isFree(row) || !dofs_.isFree(col) || v == 0) return;
+    const int slot = valueIndex(A, row, col);
+    if (slot < 0)  // the pattern holds every dof pair of an element's nodes
+      throw std::logic_error("internal damping: an entry outside the rotor's pattern");
+    A.valuePtr()[slot] += v;
+  };
+  for (const auto& e : model_.elements()) {
+    if (!e->asLineElement()) continue;  // the shaft: beams spin, springs and bearings do not
+    const auto d = e->dofs();
+    const int n = int(d.size());
+    const ElementMatrix k = e->stiffness();
+    for (int b = 0; b < n; ++b) {
+      const int col = dofs_.equation(d[b]);
+      for (int a = 0; a < n; ++a) add(shaft_, dofs_.equation(d[a]), col, k(a, b));
+    }
+    for (int b = 0; b < n; ++b) {
+      const auto source = quarterTurnSource(d[b].dof);
+      if (!source) continue;
+      // Row i of R q reads q at source(i): R(i, source(i)) = sign(i). Hence column
+      // source(i) of K_s R is sign(i) times column i of K_s.
+      int target = -1;
+      for (int c = 0; c < n; ++c)
+        if (d[c].node == d[b].node && d[c].dof == source->first) target = c;
+      if (target < 0) continue;  // a lateral dof without its partner: no turn there
+      const int col = dofs_.equation(d[target]);
+      for (int a = 0; a < n; ++a)
+        add(circulatory_, dofs_.equation(d[a]), col, source->second * k(a, b));
+    }
+  }
 }
 
 SparseMatrix RotorSystem::atSpeed(const SparseMatrix& A, double speed, bool stiffness) const {
@@ -69,13 +126,17 @@ SparseMatrix RotorSystem::atSpeed(const SparseMatrix& A, double speed, bool stif
 }
 
 SparseMatrix RotorSystem::stiffness(double speed) const {
-  return atSpeed(K0_, speed, true);
+  SparseMatrix K = atSpeed(K0_, speed, true);
+  if (proportional_.internal != 0 && speed != 0)
+    K += (speed * proportional_.internal) * circulatory_;
+  return K;
 }
 
 SparseMatrix RotorSystem::damping(double speed) const {
   SparseMatrix C = atSpeed(C0_, speed, false);
   if (proportional_.alpha != 0) C += proportional_.alpha * M_;
-  if (proportional_.beta != 0) C += proportional_.beta * stiffness(speed);
+  if (proportional_.beta != 0) C += proportional_.beta * atSpeed(K0_, speed, true);
+  if (proportional_.internal != 0) C += proportional_.internal * shaft_;
   return C;
 }
 

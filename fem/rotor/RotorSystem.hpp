@@ -17,11 +17,20 @@ namespace beamrotor {
 
 class Model;
 
-/// Proportional (Rayleigh) damping added to the elements' own: C += alpha M + beta K(Omega),
-/// K the whole stiffness at that speed, bearings included.
+/// Damping added to the elements' own. Proportional (Rayleigh), on the fixed frame:
+/// C += alpha M + beta K(Omega), K the whole stiffness at that speed, bearings included.
+/// Internal (rotating) damping of the shaft, viscous in the material of the beams that spin
+/// with it: C += beta_i K_s and, because that damping acts on the strain rate seen in the
+/// rotating frame, the circulatory stiffness K += Omega beta_i K_s R (K_s the beams' own
+/// stiffness, R the quarter turn (uy, uz, ry, rz) -> (uz, -uy, rz, -ry) at every node; skew
+/// for an axisymmetric shaft). On a Jeffcott rotor c_i = beta_i k: m r'' + (c_e + c_i) r' +
+/// (k - i Omega c_i) r = 0 with r = uy + i uz, whose forward whirl grows above
+/// Omega = omega_n (1 + c_e / c_i) (Genta, Dynamics of Rotating Systems, 2005, sec. 6.3;
+/// Friswell et al., Dynamics of Rotating Machines, 2010, sec. 5.4).
 struct ProportionalDamping {
-  double alpha = 0;  ///< 1/s
-  double beta = 0;   ///< s
+  double alpha = 0;     ///< 1/s
+  double beta = 0;      ///< s
+  double internal = 0;  ///< s: beta_i of the shaft's internal damping
 };
 
 class RotorSystem {
@@ -38,7 +47,8 @@ class RotorSystem {
   const SparseMatrix& mass() const { return M_; }
   /// Gyroscopic matrix per unit spin speed (kg m^2), skew-symmetric.
   const SparseMatrix& gyroscopic() const { return G_; }
-  /// Stiffness at spin speed Omega (rad/s); non-symmetric with cross-coupled bearings.
+  /// Stiffness at spin speed Omega (rad/s); non-symmetric with cross-coupled bearings or
+  /// internal damping (its circulatory part).
   SparseMatrix stiffness(double speed) const;
   /// Viscous damping at spin speed Omega (rad/s), proportional damping included.
   SparseMatrix damping(double speed) const;
@@ -56,10 +66,15 @@ class RotorSystem {
   /// A plus the changes (kind at speed minus kind at rest) of the speed-dependent elements.
   SparseMatrix atSpeed(const SparseMatrix& A, double speed, bool stiffness) const;
 
+  /// The beams' own stiffness K_s and K_s R (ProportionalDamping::internal), on the pattern;
+  /// empty without internal damping.
+  void assembleShaft();
+
   const Model& model_;
   DofMap dofs_;
   ProportionalDamping proportional_;
   SparseMatrix M_, G_, K0_, C0_;
+  SparseMatrix shaft_, circulatory_;  ///< K_s and K_s R when beta_i != 0
   std::vector<SpeedTerm> terms_;
 };
 

@@ -19,7 +19,8 @@ UnbalanceResult solveUnbalance(const Model& model, const std::vector<Unbalance>&
   result.orbits.assign(nodes.size(), {});
 
   // 1. Matrices, and the unit force pattern: F = Omega^2 f with f_y = m e e^{i phase},
-  //    f_z = -i m e e^{i phase} (Re(-i e^{i(Omega t + phase)}) = sin(Omega t + phase)).
+  //    f_z = -i m e e^{i phase} (Re(-i e^{i(Omega t + phase)}) = sin(Omega t + phase)); a
+  //    couple f_rz = U_c e^{i phase}, f_ry = i U_c e^{i phase} (Re(i e^{i(...)}) = -sin).
   const RotorSystem system(model, damping);
   const DofMap& dofs = system.dofs();
   Eigen::VectorXcd f = Eigen::VectorXcd::Zero(system.size());
@@ -31,6 +32,14 @@ UnbalanceResult solveUnbalance(const Model& model, const std::vector<Unbalance>&
     const Complex heavy = u.me * std::polar(1.0, u.phase);
     f[y] += heavy;
     f[z] += Complex(0, -1) * heavy;
+    if (u.moment == 0) continue;
+    const int ry = dofs.equation(u.node, Dof::ry), rz = dofs.equation(u.node, Dof::rz);
+    if (!dofs.isFree(ry) || !dofs.isFree(rz))
+      throw std::invalid_argument("a couple unbalance needs free ry and rz at " +
+                                  model.describe({u.node, Dof::ry}));
+    const Complex couple = u.moment * std::polar(1.0, u.phase);
+    f[rz] += couple;
+    f[ry] += Complex(0, 1) * couple;
   }
   const ComplexSparseMatrix M = system.mass().cast<Complex>();
   const ComplexSparseMatrix G = system.gyroscopic().cast<Complex>();

@@ -28,6 +28,7 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
     case K::memberForce:  // N, Vy, Vz are forces; T, My, Mz moments
       return {q.property == "N" || q.property.starts_with('V') ? dim::force : dim::moment};
     case K::criticalSpeed:
+    case K::instabilityOnset:
       return kRpmField;
     case K::unbalanceAmplitude:
       return {dim::length};

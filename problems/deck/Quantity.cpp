@@ -17,6 +17,7 @@ constexpr const char* kGrammar =
     "'displacement POINT ROTATION left|right', 'frequency N', 'stress max', "
     "'shear max', 'moment max', 'displacement max', 'member NAME N|Vy|Vz|T|My|Mz max|min|maxabs', "
     "'member NAME deflection max', 'buckling_factor N', 'log_decrement N', 'critical_speed N', "
+    "'instability_onset', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
     "'crank PROPERTY at PHI deg', "

@@ -18,6 +18,7 @@
 //   frequency N               in a rotor analysis: damped whirl frequency of mode N (Hz)
 //   log_decrement N           logarithmic decrement of mode N of a rotor analysis
 //   critical_speed N          N-th critical speed of a campbell analysis (rpm), ascending
+//   instability_onset         onset of instability of a campbell analysis (rpm)
 //   unbalance_amplitude POINT at RPM   orbit semi-major axis of POINT at RPM (m)
 //   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
 //                             (N, per unit modal amplitude) of a rigid-body analysis
@@ -48,6 +49,7 @@ struct Quantity {
     bucklingFactor,  // buckling analyses
     logDecrement,
     criticalSpeed,
+    instabilityOnset,
     unbalanceAmplitude,
     rigidBody,  // rotor analyses
     crankSlider,  // crank-slider analyses (CrankQuantity.hpp)

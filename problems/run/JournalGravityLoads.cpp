@@ -27,7 +27,10 @@ bool needsJournalLoads(const Deck& deck) {
 
 Deck withJournalLoads(const Deck& deck) {
   // 1. The rotor with placeholder bearings (they become pinned supports below).
+  //    Pinned, a bearing carries the same load with or without a pedestal in series: the
+  //    pedestals are left out, so that every bearing is one the pinning finds.
   Deck placeholder = deck;
+  for (DeckBearing& b : placeholder.rotor.bearings) b.pedestal.reset();
   for (DeckBearing& b : placeholder.rotor.bearings)
     if (waitsForLoad(b)) {
       b.speeds.clear();

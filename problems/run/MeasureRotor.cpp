@@ -65,6 +65,13 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
                                     std::to_string(q.mode));
       return r->criticalSpeeds[q.mode - 1].rpm;
     }
+    case Quantity::Kind::instabilityOnset: {
+      const auto* r = resultOf<CampbellOutcome>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not a campbell analysis");
+      if (!r->onset)
+        throw std::invalid_argument(name + " finds no onset of instability in its speed range");
+      return r->onset->rpm;
+    }
     case Quantity::Kind::unbalanceAmplitude: {
       const auto* r = resultOf<UnbalanceOutcome>(outcome);
       if (!r) throw std::invalid_argument(name + " is not an unbalance analysis");

@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "elements/Bearing.hpp"
+#include "elements/BearingOnPedestal.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/Spring.hpp"
+#include "elements/TurnedBearing.hpp"
 #include "meshes/FrameBuilder.hpp"
 #include "meshes/LineBuilder.hpp"
 #include "problems/run/JournalGravityLoads.hpp"
@@ -236,6 +238,26 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
 
 namespace {
 
+/// The bearing on its pedestal: a housing node at the bearing's point (uy, uz free, every
+/// other dof fixed), the pedestal's mass there and its springs to the ground, and the bearing
+/// between journal and housing.
+void addPedestal(const Deck& deck, const DeckBearing& b, std::vector<BearingCoefficients> table,
+                 Model* model) {
+  const DeckPedestal& p = *b.pedestal;
+  const int journal = model->node(b.point);
+  const Eigen::Vector3d x = model->nodes()[journal];
+  const int housing = model->addNode(x);
+  Support fixed{b.name + " pedestal", housing, {}};
+  for (Dof d : kAllDofs)
+    if (deck.dofs.contains(d) && d != Dof::uy && d != Dof::uz) fixed.dofs.push_back({d, 0});
+  if (!fixed.dofs.empty()) model->addSupport(std::move(fixed));
+  if (p.m > 0) model->add<PointInertia>(housing, DofSet{Dof::uy, Dof::uz}, p.m);
+  model->add<Spring>(NodeDof{housing, Dof::uy}, p.kyy, p.cyy);
+  model->add<Spring>(NodeDof{housing, Dof::uz}, p.kzz, p.czz);
+  std::vector<double> speeds = b.speeds.empty() ? std::vector<double>{0.0} : b.speeds;
+  model->add<BearingOnPedestal>(journal, housing, std::move(speeds), std::move(table));
+}
+
 void addAttachments(const Deck& deck, Model* model) {
   for (const DeckSupport& s : deck.supports)
     at(deck, s.place, [&] {
@@ -263,10 +285,17 @@ void addAttachments(const Deck& deck, Model* model) {
     });
   for (const DeckBearing& b : deck.rotor.bearings)
     at(deck, b.place, [&] {
+      std::vector<BearingCoefficients> table;
+      for (const BearingCoefficients& row : b.table)
+        table.push_back(turnedCoefficients(row, b.loadAngle));
+      if (b.pedestal) {
+        addPedestal(deck, b, std::move(table), model);
+        return;
+      }
       if (b.speeds.empty())
-        model->add<Bearing>(model->node(b.point), b.table.front());
+        model->add<Bearing>(model->node(b.point), table.front());
       else
-        model->add<Bearing>(model->node(b.point), b.speeds, b.table);
+        model->add<Bearing>(model->node(b.point), b.speeds, std::move(table));
     });
   for (const NodalLoad& l : pointLoads(deck, *model, deck.loads)) model->addLoad(l);
 }

@@ -28,7 +28,7 @@ namespace {
 std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
   std::vector<JournalBearingCurve> out;
   for (const DeckBearing& b : deck.rotor.bearings) {
-    if (!b.journal) continue;
+    if (!b.journal || b.journal->load == 0) continue;  // a centred journal: no eccentricity
     JournalBearingCurve curve{b.name, *b.journal, b.speeds, {}, {}, {}, b.table};
     for (double w : b.speeds) {
       const double eps = eccentricityRatio(*b.journal, w);
@@ -126,7 +126,7 @@ UnbalanceOutcome runUnbalance(const Deck& deck, const RotorFamily& s, const Mode
   const DeckRotorAnalysis& r = s.rotor;
   std::vector<Unbalance> unbalance;
   for (const DeckUnbalance& u : r.unbalance)
-    unbalance.push_back({model.node(u.point), u.me, u.phase});
+    unbalance.push_back({model.node(u.point), u.me, u.phase, u.moment});
   std::vector<int> nodes;
   for (const std::string& p : r.response) nodes.push_back(model.node(p));
   UnbalanceOutcome out;

@@ -16,6 +16,15 @@
 
 namespace beamrotor {
 
+/// A pedestal (foundation) under a bearing: its mass, and its stiffness and damping to the
+/// ground along global y (kxx, cxx) and z (kyy, cyy), in series with the bearing
+/// (elements/BearingOnPedestal.hpp).
+struct DeckPedestal {
+  double m = 0;             ///< kg
+  double kyy = 0, kzz = 0;  ///< N/m
+  double cyy = 0, czz = 0;  ///< N s/m
+};
+
 /// A bearing at a point (elements/Bearing): constant coefficients (speeds empty, one row)
 /// or a table against spin speed (speeds ascending, one row each). Global axes y, z.
 struct DeckBearing {
@@ -29,13 +38,21 @@ struct DeckBearing {
   /// A plain journal with `load: gravity`: its load is the rotor's weight share on pinned
   /// bearings, found when the deck runs (journal->load and table are empty until then).
   bool loadFromGravity = false;
+  /// `load_angle`: the bearing's own axes (and a journal's load, along -x_b) turned by this
+  /// angle (rad) about +x from global (y, z) (elements/TurnedBearing.hpp); the table stays in
+  /// the bearing's axes, the model gets it turned.
+  double loadAngle = 0;
+  /// `pedestal:` the bearing's housing on a pedestal instead of the ground
+  std::optional<DeckPedestal> pedestal;
   DeckPlace place;
 };
 
-/// An unbalance m e at a point, heavy spot at `phase` (rad from +y towards +z) at t = 0.
+/// An unbalance m e at a point, heavy spot at `phase` (rad from +y towards +z) at t = 0, and a
+/// couple unbalance (fem/rotor/RotorUnbalance.hpp) at the same phase.
 struct DeckUnbalance {
   std::string point;
-  double me = 0;     ///< kg m
+  double me = 0;      ///< kg m
+  double moment = 0;  ///< kg m^2
   double phase = 0;  ///< rad
   DeckPlace place;
 };

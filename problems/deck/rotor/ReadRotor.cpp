@@ -62,7 +62,8 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
     type.fail("unknown bearing type '" + type.text() + "'" +
               didYouMean(type.text(), {"plain-journal"}) +
               " (a bearing is plain-journal, or has coefficients or a table)");
-  f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "from_rpm", "to_rpm", "steps"},
+  f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
+               "from_rpm", "to_rpm", "steps"},
               "a plain-journal bearing");
   const ExpressionEvaluator& ev = c.evaluator;
   PlainJournal j;
@@ -80,7 +81,13 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
   j.viscosity = f.require("mu").positive(ev, dim::viscosity);
   const Field load = f.require("load");
   b.loadFromGravity = load.isScalar() && load.text() == "gravity";
-  if (!b.loadFromGravity) j.load = load.positive(ev, dim::force);
+  // load: 0 is an unloaded journal (a vertical rotor's): it runs centred
+  // (elements/ConcentricJournal.hpp).
+  if (!b.loadFromGravity) j.load = load.nonNegative(ev, dim::force);
+  if (b.loadFromGravity && f.has("load_angle"))
+    f.require("load_angle")
+        .fail("load: gravity takes the rotor's weight along -y; give the load as a number (N) "
+              "to set its direction with load_angle");
   b.speeds = readSpeedRange(c, f);
   if (!(b.speeds.front() > 0))
     f.require("from_rpm").fail("a plain journal bearing has no film at rest: from_rpm must be > 0 "
@@ -94,6 +101,34 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
       f.require("from_rpm").fail(e.what());
     }
   }
+}
+
+/// pedestal: {m, k, c} or with kxx, kyy, cxx, cyy (global y, z) in place of k, c: a mass
+/// (kg) on stiffness (N/m) and damping (N s/m) to the ground under the bearing.
+DeckPedestal readPedestal(const Context& c, const Field& f) {
+  if (!f.isMap()) f.fail("expected {m: KG, k: N_PER_M, c: N_S_PER_M}, got " + f.describe());
+  f.allowOnly({"m", "k", "c", "kxx", "kyy", "cxx", "cyy"}, "a pedestal");
+  const ExpressionEvaluator& ev = c.evaluator;
+  DeckPedestal p;
+  if (auto m = f.get("m")) p.m = m->nonNegative(ev, dim::mass);
+  // One value for both directions, or each its own (the other then must be given too).
+  auto pair = [&](const char* both, const char* y, const char* z, const FieldUnit& unit,
+                  double& vy, double& vz) {
+    if (auto v = f.get(both)) {
+      if (f.has(y) || f.has(z))
+        v->fail(std::string("give either ") + both + " or " + y + " and " + z + ", not both");
+      vy = vz = v->nonNegative(ev, unit);
+      return;
+    }
+    if (auto v = f.get(y)) vy = v->nonNegative(ev, unit);
+    if (auto v = f.get(z)) vz = v->nonNegative(ev, unit);
+  };
+  pair("k", "kxx", "kyy", dim::stiffness, p.kyy, p.kzz);
+  pair("c", "cxx", "cyy", dim::damping, p.cyy, p.czz);
+  if (!(p.kyy > 0) || !(p.kzz > 0))
+    f.fail("a pedestal needs a positive stiffness to the ground in both directions (k, or kxx "
+           "and kyy, N/m)");
+  return p;
 }
 
 bool carriesLateral(const Deck& deck) {
@@ -116,10 +151,12 @@ void readBearings(Context& c) {
     auto nameField = f.get("name");
     b.name = nameField ? nameField->name() : b.point;
     claimName(nameField ? *nameField : at, b.name, names, "a bearing");
+    if (auto angle = f.get("load_angle")) b.loadAngle = angle->number(c.evaluator, dim::angle);
+    if (auto pedestal = f.get("pedestal")) b.pedestal = readPedestal(c, *pedestal);
     if (auto type = f.get("type")) {
       readPlainJournal(c, f, *type, b);
     } else if (auto table = f.get("table")) {
-      f.allowOnly({"name", "at", "table"}, "a tabulated bearing");
+      f.allowOnly({"name", "at", "table", "load_angle", "pedestal"}, "a tabulated bearing");
       const std::vector<Field> rows = table->items();
       if (rows.empty()) table->fail("the bearing table is empty");
       for (const Field& row : rows) {
@@ -131,7 +168,8 @@ void readBearings(Context& c) {
         b.table.push_back(readCoefficients(c, row, {"speed_rpm"}, "a bearing table row"));
       }
     } else {
-      b.table.push_back(readCoefficients(c, f, {"name", "at", "table"}, "a bearing"));
+      b.table.push_back(
+          readCoefficients(c, f, {"name", "at", "table", "load_angle", "pedestal"}, "a bearing"));
     }
     c.deck.rotor.bearings.push_back(std::move(b));
   }
@@ -140,10 +178,17 @@ void readBearings(Context& c) {
 void readDamping(Context& c) {
   auto f = c.root.get("damping");
   if (!f || f->isNull()) return;
-  f->allowOnly({"alpha", "beta"}, "damping");
+  f->allowOnly({"alpha", "beta", "internal"}, "damping");
   if (auto a = f->get("alpha"))
     c.deck.rotor.damping.alpha = a->nonNegative(c.evaluator, dim::frequency);
   if (auto b = f->get("beta")) c.deck.rotor.damping.beta = b->nonNegative(c.evaluator, dim::time);
+  if (auto i = f->get("internal")) {
+    // The shaft's rotating damping beta_i (s): only lateral rotor models spin about x.
+    if (!carriesLateral(c.deck))
+      i->fail("internal damping acts on a spinning shaft's uy, uz: use model: "
+              "{dimension: lateral}, not " + c.deck.dimension);
+    c.deck.rotor.damping.internal = i->nonNegative(c.evaluator, dim::time);
+  }
 }
 
 /// `fromKey`, `toKey` (in `unit`) and steps: steps intervals from `from` to `to` (the last
@@ -199,12 +244,17 @@ OperatingRange readOperatingRange(const Context& c, const Field& f, double& minL
 
 void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   for (const Field& u : f.require("unbalance").itemsOrSingle()) {
-    if (!u.isMap()) u.fail("expected {at: POINT, me: KG_M, phase: RAD}, got " + u.describe());
-    u.allowOnly({"at", "me", "phase"}, "an unbalance");
+    if (!u.isMap())
+      u.fail("expected {at: POINT, me: KG_M, moment: KG_M2, phase: RAD}, got " + u.describe());
+    u.allowOnly({"at", "me", "moment", "phase"}, "an unbalance");
     DeckUnbalance d;
     d.place = u.place();
     d.point = c.point(u.require("at")).name;
-    d.me = u.require("me").positive(c.evaluator, dim::massLength);
+    // A static unbalance me, a couple unbalance moment (m e d of two opposite heavy spots a
+    // distance d apart), or both at one phase.
+    const auto moment = u.get("moment");
+    if (moment) d.moment = moment->positive(c.evaluator, dim::inertia);
+    if (!moment || u.has("me")) d.me = u.require("me").positive(c.evaluator, dim::massLength);
     if (auto p = u.get("phase")) d.phase = p->number(c.evaluator, dim::angle);
     r.unbalance.push_back(std::move(d));
   }
@@ -214,6 +264,14 @@ void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
       p.fail("point '" + name + "' is listed twice");
     r.response.push_back(name);
   }
+}
+
+/// Fails at analysis entry f when a bearing stands on a pedestal: `why` the analysis cannot.
+void refusePedestals(const Context& c, const Field& f, const std::string& why) {
+  for (const DeckBearing& b : c.deck.rotor.bearings)
+    if (b.pedestal)
+      f.fail(why + " on the ground; bearing '" + b.name +
+             "' stands on a pedestal (remove it for this analysis)");
 }
 
 /// critical-speed-map: from_k, to_k (N/m), points (log-spaced, ends included) and
@@ -227,6 +285,7 @@ void readCriticalSpeedMap(const Context& c, const Field& f, DeckRotorAnalysis& r
   if (c.deck.rotor.bearings.empty())
     f.fail("a critical-speed map puts its stiffness in place of the deck's bearings: add "
            "bearings");
+  refusePedestals(c, f, "a critical-speed map puts its stiffness in place of the bearings");
   const ExpressionEvaluator& ev = c.evaluator;
   const double from = f.require("from_k").positive(ev, dim::stiffness);
   const Field toField = f.require("to_k");
@@ -245,6 +304,7 @@ void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
               "a bearing-loads analysis");
   if (c.deck.rotor.bearings.empty())
     f.fail("a bearing-loads analysis reports the loads of the deck's bearings: add bearings");
+  refusePedestals(c, f, "a bearing-loads analysis pins the bearings");
   double g = 9.81;
   if (auto v = f.get("g")) g = v->positive(c.evaluator, dim::acceleration);
   std::string direction = "-y";

@@ -24,7 +24,8 @@ struct RotorSpec : RotorFamily {
 
 struct CampbellSpec : RotorFamily {
   static constexpr std::string_view deckType = "campbell";
-  static constexpr std::array answers{Quantity::Kind::criticalSpeed};
+  static constexpr std::array answers{Quantity::Kind::criticalSpeed,
+                                      Quantity::Kind::instabilityOnset};
   static constexpr bool needsMass = true;
   void read(const reader::Context& c, const Field& f);
 };

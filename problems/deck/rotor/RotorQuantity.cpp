@@ -25,6 +25,11 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
         parseOrdinal(words[1], head == "log_decrement" ? "mode number" : "critical speed number");
     return true;
   }
+  if (head == "instability_onset") {
+    if (words.size() != 1) throw std::invalid_argument("expected 'instability_onset'");
+    q.kind = Kind::instabilityOnset;
+    return true;
+  }
   if (head == "unbalance_amplitude") {
     if (words.size() != 4 || words[2] != "at")
       throw std::invalid_argument("expected 'unbalance_amplitude POINT at RPM'");

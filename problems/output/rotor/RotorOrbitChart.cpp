@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "elements/Bearing.hpp"
+#include "elements/BearingOnPedestal.hpp"
 #include "elements/PointInertia.hpp"
+#include "fem/model/LineElement.hpp"
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
 
@@ -30,10 +32,26 @@ constexpr double kLineOrbit = 1e-6;
 /// Palette slots of the senses (as on the Campbell diagram).
 constexpr int kForwardSlot = 1, kBackwardSlot = 0, kPlanarSlot = 2;
 
-/// Nodes that carry a lateral orbit, in the order of x.
+/// Whether each node is on the shaft: an end of a line element, or every node of a model
+/// without any (a bearing's pedestal adds a housing node beside the shaft, which is not).
+std::vector<bool> nodesOnShaft(const Model& model) {
+  std::vector<bool> on(model.nodes().size(), false);
+  bool lines = false;
+  for (const auto& e : model.elements())
+    if (const LineElement* line = e->asLineElement()) {
+      for (int n : line->endNodes()) on[std::size_t(n)] = true;
+      lines = true;
+    }
+  if (!lines) on.assign(on.size(), true);
+  return on;
+}
+
+/// Nodes of the shaft that carry a lateral orbit, in the order of x.
 std::vector<int> stationsAlongShaft(const Model& model, const RotorMode& mode) {
-  std::vector<int> nodes(std::size_t(mode.shape.rows()));
-  std::iota(nodes.begin(), nodes.end(), 0);
+  const std::vector<bool> onShaft = nodesOnShaft(model);
+  std::vector<int> nodes;
+  for (int n = 0; n < int(mode.shape.rows()); ++n)
+    if (onShaft[std::size_t(n)]) nodes.push_back(n);
   std::stable_sort(nodes.begin(), nodes.end(),
                    [&](int a, int b) { return model.nodes()[a].x() < model.nodes()[b].x(); });
   return nodes;
@@ -160,13 +178,16 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
       body << "  set arrow " << tag++ << " from " << number(x) << "," << number(-half) << " to "
            << number(x) << "," << number(half)
            << " nohead linewidth 7 linecolor rgb '#99555555' back\n";
-    } else if (dynamic_cast<const Bearing*>(e.get())) {
+    } else if (dynamic_cast<const Bearing*>(e.get()) ||
+               dynamic_cast<const BearingOnPedestal*>(e.get())) {
       body << "  set label " << tag++ << " '' at " << number(x) << "," << number(bottom)
            << " point pointtype 9 pointsize 2.2 linecolor rgb 'black' front\n";
     }
   }
+  const std::vector<bool> onShaft = nodesOnShaft(model);
   for (const Support& s : model.supports())
-    body << "  set label " << tag++ << " '' at " << number(model.nodes()[s.node].x()) << ","
+    if (onShaft[std::size_t(s.node)])  // not a pedestal's housing, held in its tilts only
+      body << "  set label " << tag++ << " '' at " << number(model.nodes()[s.node].x()) << ","
          << number(bottom) << " point pointtype 5 pointsize 1.8 linecolor rgb 'black' front\n";
   // 2. One panel per mode: the orbits as short vectors (an arrow head on the first step of each
   //    orbit shows its sense), coloured by sense, and the deflected line at angle 0.
