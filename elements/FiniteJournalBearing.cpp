@@ -15,10 +15,10 @@ namespace beamrotor {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kPiFilm = std::numbers::pi;
 
-using Matrix = Eigen::SparseMatrix<double>;
-using Vector = Eigen::VectorXd;
+using FilmMatrix = Eigen::SparseMatrix<double>;
+using FilmVector = Eigen::VectorXd;
 
 /// The discrete film: finite volumes centred on the nodes theta_i = i dtheta (i = 1 .. n - 1;
 /// node 0, the line of largest film, holds P = 0) and zeta_j = j dzeta (j = 0 .. m - 1; the
@@ -28,7 +28,7 @@ class Film {
   Film(double eps, double lengthOverDiameter, const ReynoldsGrid& grid, const JournalMotion& motion)
       : n_(grid.circumferential), m_(grid.axial), eps_(eps), motion_(motion),
         kappa_(1 / (lengthOverDiameter * lengthOverDiameter)),
-        dt_(2 * kPi / n_), dz_(1.0 / m_) {}
+        dt_(2 * kPiFilm / n_), dz_(1.0 / m_) {}
 
   int size() const { return (n_ - 1) * m_; }
   int index(int i, int j) const { return (i - 1) * m_ + j; }
@@ -76,7 +76,7 @@ class Film {
   }
 
   /// The film operator A (A P = f on pressurised nodes; symmetric, an M-matrix).
-  Matrix operatorMatrix() const {
+  FilmMatrix operatorMatrix() const {
     std::vector<Eigen::Triplet<double>> t;
     t.reserve(5 * size());
     forEachNode([&](int i, int j) {
@@ -90,15 +90,15 @@ class Film {
       }
       t.emplace_back(k, k, diagonal);
     });
-    Matrix a(size(), size());
+    FilmMatrix a(size(), size());
     a.setFromTriplets(t.begin(), t.end());
     return a;
   }
 
   /// f: the wedge term -6 dH/dtheta and the squeeze term -12 dH/dtau over each cell, exact
   /// (H at the faces; dH/dtau = -(v1 cos + v2 sin) integrated in closed form).
-  Vector wedge() const {
-    Vector f(size());
+  FilmVector wedge() const {
+    FilmVector f(size());
     const double v1 = motion_.velocity[0], v2 = motion_.velocity[1];
     forEachNode([&](int i, int j) {
       const double te = theta(i) + 0.5 * dt_, tw = theta(i) - 0.5 * dt_;
@@ -113,15 +113,15 @@ class Film {
   /// theta = 0, 1: towards theta = pi/2), dH = -(cos, sin)(theta) per unit of x / c, and of f
   /// for a journal velocity along it (dH/dtau = -(cos, sin) per unit of x' / (c Omega)).
   struct Perturbation {
-    Vector displacement;  ///< d f / d x - (d A / d x) P
-    Vector velocity;      ///< d f / d x'
+    FilmVector displacement;  ///< d f / d x - (d A / d x) P
+    FilmVector velocity;      ///< d f / d x'
   };
 
-  Perturbation perturbation(int axis, const Vector& p) const {
+  Perturbation perturbation(int axis, const FilmVector& p) const {
     auto shape = [axis](double t) { return axis == 0 ? -std::cos(t) : -std::sin(t); };
     // Exact cell integral of the shape: int cos = sin, int sin = -cos.
     auto integral = [axis](double t) { return axis == 0 ? -std::sin(t) : std::cos(t); };
-    Perturbation out{Vector::Zero(size()), Vector::Zero(size())};
+    Perturbation out{FilmVector::Zero(size()), FilmVector::Zero(size())};
     forEachNode([&](int i, int j) {
       const int k = index(i, j);
       const double te = theta(i) + 0.5 * dt_, tw = theta(i) - 0.5 * dt_;
@@ -138,7 +138,7 @@ class Film {
   }
 
   /// -sum P (cos, sin) over the cells: Fbar.
-  std::array<double, 2> force(const Vector& p) const {
+  std::array<double, 2> force(const FilmVector& p) const {
     std::array<double, 2> f{0, 0};
     forEachNode([&](int i, int j) {
       const double area = dt_ * width(j) * p[index(i, j)];
@@ -161,7 +161,7 @@ class Film {
   double kappa_, dt_, dz_;
 };
 
-std::string formatRatio(double v) {
+std::string filmRatioText(double v) {
   std::string s = std::to_string(v);
   while (s.size() > 1 && s.back() == '0') s.pop_back();
   return s;
@@ -169,47 +169,52 @@ std::string formatRatio(double v) {
 
 /// The film operator on the pressurised nodes (others decoupled with a unit diagonal, their
 /// right-hand side 0): symmetric positive definite.
-Matrix restricted(const Matrix& a, const std::vector<char>& active) {
-  Matrix r = a;
+FilmMatrix onPressurised(const FilmMatrix& a, const std::vector<char>& active) {
+  FilmMatrix r = a;
   for (int col = 0; col < r.outerSize(); ++col)
-    for (Matrix::InnerIterator it(r, col); it; ++it)
+    for (FilmMatrix::InnerIterator it(r, col); it; ++it)
       if (!active[it.row()] || !active[it.col()])
         it.valueRef() = it.row() == it.col() ? 1.0 : 0.0;
   return r;
 }
 
-Vector masked(const Vector& v, const std::vector<char>& active) {
-  Vector out = v;
+FilmVector maskedToPressurised(const FilmVector& v, const std::vector<char>& active) {
+  FilmVector out = v;
   for (int k = 0; k < v.size(); ++k)
     if (!active[k]) out[k] = 0;
   return out;
 }
 
 /// The film at eps; its coefficients too when asked (the equilibrium search needs the force
-/// only).
+/// only). `cavity`, when given and of the grid's size, is the first guess of the pressurised
+/// nodes (a neighbouring eccentricity's), and returns this film's.
 FilmSolution filmAt(double eps, double lengthOverDiameter, const ReynoldsGrid& grid,
-                    const JournalMotion& motion, bool withCoefficients) {
+                    const JournalMotion& motion, bool withCoefficients,
+                    std::vector<char>* cavity = nullptr) {
   if (!(eps > 0 && eps < 1) || !(lengthOverDiameter > 0) || grid.circumferential < 8 ||
       grid.axial < 1)
     throw std::invalid_argument("solveFilm: needs 0 < eps < 1, L/D > 0 and a grid of at least 8 x 1");
   const Film film(eps, lengthOverDiameter, grid, motion);
-  const Matrix a = film.operatorMatrix();
-  const Vector f = film.wedge();
+  const FilmMatrix a = film.operatorMatrix();
+  const FilmVector f = film.wedge();
   // Primal-dual active set: start from the converging half (f > 0), then keep the nodes
   // where P - w / a_kk > 0 (w = A P - f the complementary residual) until the set settles.
   std::vector<char> active(f.size());
-  for (int k = 0; k < f.size(); ++k) active[k] = f[k] > 0;
-  Eigen::SimplicialLDLT<Matrix> solver;
-  Vector p;
+  if (cavity && cavity->size() == active.size())
+    active = *cavity;
+  else
+    for (int k = 0; k < f.size(); ++k) active[k] = f[k] > 0;
+  Eigen::SimplicialLDLT<FilmMatrix> solver;
+  FilmVector p;
   FilmSolution out;
   for (int iteration = 1;; ++iteration) {
-    const Matrix r = restricted(a, active);
+    const FilmMatrix r = onPressurised(a, active);
     if (iteration == 1) solver.analyzePattern(r);
     solver.factorize(r);
     if (solver.info() != Eigen::Success)
       throw std::runtime_error("solveFilm: the film operator did not factorise");
-    p = solver.solve(masked(f, active));
-    const Vector w = a * p - f;
+    p = solver.solve(maskedToPressurised(f, active));
+    const FilmVector w = a * p - f;
     bool changed = false;
     for (int k = 0; k < f.size(); ++k) {
       const bool keep = p[k] - w[k] / a.coeff(k, k) > 0;
@@ -223,19 +228,27 @@ FilmSolution filmAt(double eps, double lengthOverDiameter, const ReynoldsGrid& g
   }
   for (int k = 0; k < p.size(); ++k)
     if (!active[k]) p[k] = 0;
+  if (cavity) *cavity = active;
   const auto base = film.force(p);
   out.force[0] = base[0];
   out.force[1] = base[1];
   if (!withCoefficients) return out;
   for (int axis = 0; axis < 2; ++axis) {
     const Film::Perturbation d = film.perturbation(axis, p);
-    const auto dk = film.force(solver.solve(masked(d.displacement, active)));
-    const auto dc = film.force(solver.solve(masked(d.velocity, active)));
+    const auto dk = film.force(solver.solve(maskedToPressurised(d.displacement, active)));
+    const auto dc = film.force(solver.solve(maskedToPressurised(d.velocity, active)));
     for (int i = 0; i < 2; ++i) {
       out.stiffness[i][axis] = -dk[i];
       out.damping[i][axis] = -dc[i];
     }
   }
+  // A plain bearing has no preferred direction: the film starts at the largest gap wherever
+  // the journal is, so a displacement across the line of centres (axis 2, eta) turns the
+  // whole film by -eta / eps, F(eta) = R(-eta / eps) F. Its stiffness is exact from the force:
+  // -dF/deta = (-F2, F1) / eps (Lund's derivation from the static solution). Along the line of
+  // centres (axis 1) the largest gap stays at theta = 0 and the linearised film above holds.
+  out.stiffness[0][1] = -out.force[1] / eps;
+  out.stiffness[1][1] = out.force[0] / eps;
   return out;
 }
 
@@ -252,8 +265,9 @@ JournalOperatingPoint finiteJournalPoint(const PlainJournal& bearing, double spe
   const double target = ld * ld / bearing.sommerfeld(speed);  // |Fbar| = 1 / (pi S)
   if (!(target > 0) || !std::isfinite(target))
     throw std::invalid_argument("a plain journal bearing needs a positive speed, load and geometry");
+  std::vector<char> cavity;  // each solve starts from the last one's pressurised nodes
   auto magnitude = [&](double eps) {
-    const FilmSolution s = filmAt(eps, ld, grid, {}, false);
+    const FilmSolution s = filmAt(eps, ld, grid, {}, false, &cavity);
     return std::hypot(s.force[0], s.force[1]);
   };
   // |Fbar| rises monotonically with eps, like eps at light load and like a power of
@@ -267,13 +281,13 @@ JournalOperatingPoint finiteJournalPoint(const PlainJournal& bearing, double spe
   const double top = gap(uOf(kFiniteMaxEccentricity));
   if (top < 0)
     throw std::invalid_argument("the film carries the load only at an eccentricity ratio above " +
-                                formatRatio(kFiniteMaxEccentricity));
+                                filmRatioText(kFiniteMaxEccentricity));
   double eps = kLightest;
   if (const double bottom = gap(uOf(kLightest)); bottom < 0)
-    eps = epsOf(speedRoot(gap, uOf(kLightest), bottom, uOf(kFiniteMaxEccentricity), top, 1e-13).speed);
+    eps = epsOf(speedRoot(gap, uOf(kLightest), bottom, uOf(kFiniteMaxEccentricity), top, 1e-10).speed);
   else
     eps = kLightest * target / magnitude(kLightest);  // linear in eps down there
-  const FilmSolution s = solveFilm(eps, ld, grid);
+  const FilmSolution s = filmAt(eps, ld, grid, {}, true, &cavity);
   const double load = std::hypot(s.force[0], s.force[1]);
   // Global axes: the film force on the journal points along +y (it carries the load, which
   // acts towards -y). The frame of the line of centres turns by gamma = -(its force angle).
@@ -294,7 +308,7 @@ JournalOperatingPoint finiteJournalPoint(const PlainJournal& bearing, double spe
   out.eccentricity = eps;
   // The journal's centre lies towards the thinnest film (theta = pi), the load line at
   // theta_global = pi: the attitude angle is gamma, folded into (-pi, pi].
-  out.attitude = std::remainder(gamma, 2 * kPi);
+  out.attitude = std::remainder(gamma, 2 * kPiFilm);
   const double kScale = bearing.load / bearing.clearance;
   const auto k = toGlobal(s.stiffness, kScale);
   const auto c = toGlobal(s.damping, kScale / speed);

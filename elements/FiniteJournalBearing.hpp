@@ -20,10 +20,13 @@
 // the Sommerfeld number S = (mu N L D / W)(R/c)^2 = 1 / (pi |Fbar|). The eccentricity ratio
 // that carries the load is the root of |Fbar(eps)| = 1 / (pi S) (regula falsi, Illinois).
 //
-// Coefficients: the film equation linearised about the equilibrium for small displacements
-// and velocities of the journal, on the pressurised nodes of the equilibrium (the perturbed
-// pressure is 0 on the cavity's boundary, where the base pressure and its gradient vanish).
-// Their forces are exact derivatives of the discrete force; rotated into global axes.
+// Coefficients: the film equation linearised about the equilibrium for small velocities of
+// the journal and a small displacement along the line of centres, on the pressurised nodes of
+// the equilibrium (the perturbed pressure is 0 on the cavity's boundary, where the base
+// pressure and its gradient vanish, and on the line of largest film, which these do not move).
+// A displacement across the line of centres turns the film with the journal (the film starts
+// at the largest gap, wherever that is): its stiffness follows from the force itself. Their
+// forces are exact derivatives of the discrete force; rotated into global axes.
 //
 // Discretisation: cells of equal size, `circumferential` around the circumference and `axial`
 // on the half length; second order in both (docs/finite-journal-bearing.md measures it).
@@ -50,7 +53,9 @@ struct FilmSolution {
 };
 
 /// A journal displaced from eccentricity eps by `displacement` (/ c) and moving at `velocity`
-/// (/ (c Omega)), in the frame of FilmSolution; the film still starts at theta = 0.
+/// (/ (c Omega)), in the frame of FilmSolution; the film still starts at theta = 0 (for a
+/// displacement across the line of centres that is not where the gap is largest: the
+/// stiffness column of such a displacement is the turned film's, see the header).
 struct JournalMotion {
   double displacement[2] = {0, 0};
   double velocity[2] = {0, 0};

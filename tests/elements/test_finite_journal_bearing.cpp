@@ -8,6 +8,7 @@
 //  4. the observed order of the finite-volume solution on refined grids.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -180,23 +181,36 @@ TEST_CASE("finite journal bearing: second-order convergence on refined grids") {
 
 TEST_CASE("finite journal bearing: linearised coefficients against differences of the film force") {
   // A second method for the eight coefficients: the film solved again with the journal moved
-  // (or moving) by +-h along each axis, its force differenced. With the cavity's nodes
-  // unchanged at this small h the discrete force is smooth in the motion: central differences
-  // agree to O(h^2) plus round-off / h (about 1e-9 relative at h = 1e-5).
+  // (or moving) by +-h along each axis, its force differenced. Across the line of centres the
+  // moved journal's film starts at its own largest gap: the film at eps' = sqrt(eps^2 + h^2)
+  // turned by atan2(h, eps) backwards. With the cavity's nodes unchanged at this small h the
+  // discrete force is smooth in the motion: central differences agree to O(h^2) plus
+  // round-off / h (about 1e-9 relative at h = 1e-5).
   for (double ld : {0.5, 1.0, 2.0}) {
     const ReynoldsGrid grid{72, int(8 * std::max(1.0, ld))};
     const double eps = 0.6, h = 1e-5;
     const FilmSolution base = solveFilm(eps, ld, grid);
     const double scale = std::hypot(base.force[0], base.force[1]);
+    auto moved = [&](int axis, bool velocity, double step) {
+      JournalMotion m;
+      if (velocity) {
+        m.velocity[axis] = step;
+      } else if (axis == 0) {
+        m.displacement[0] = step;
+      } else {
+        const FilmSolution s = solveFilm(std::hypot(eps, step), ld, grid);
+        const double turn = -std::atan2(step, eps), c = std::cos(turn), sn = std::sin(turn);
+        return std::array<double, 2>{c * s.force[0] - sn * s.force[1],
+                                     sn * s.force[0] + c * s.force[1]};
+      }
+      const FilmSolution s = solveFilm(eps, ld, grid, m);
+      return std::array<double, 2>{s.force[0], s.force[1]};
+    };
     for (int axis = 0; axis < 2; ++axis) {
       for (bool velocity : {false, true}) {
-        JournalMotion plus, minus;
-        (velocity ? plus.velocity : plus.displacement)[axis] = h;
-        (velocity ? minus.velocity : minus.displacement)[axis] = -h;
-        const FilmSolution up = solveFilm(eps, ld, grid, plus);
-        const FilmSolution down = solveFilm(eps, ld, grid, minus);
+        const auto up = moved(axis, velocity, h), down = moved(axis, velocity, -h);
         for (int i = 0; i < 2; ++i) {
-          const double difference = -(up.force[i] - down.force[i]) / (2 * h);
+          const double difference = -(up[i] - down[i]) / (2 * h);
           const double linear = velocity ? base.damping[i][axis] : base.stiffness[i][axis];
           CAPTURE(ld);
           CAPTURE(axis);
