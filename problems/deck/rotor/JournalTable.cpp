@@ -2,6 +2,7 @@
 
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "elements/PlainJournalBearing.hpp"
 #include "problems/deck/parse/Field.hpp"
@@ -13,15 +14,36 @@ void fillJournalTable(DeckBearing& b) {
   // Below 1 % of the clearance the film is thinner than any real surface finish allows (the
   // journal runs on the bearing), and the linear coefficients grow without bound.
   constexpr double kThinnestFilm = 0.01;
-  const double slowest = eccentricityRatio(j, b.speeds.front());
-  if (slowest > 1 - kThinnestFilm)
-    throw std::invalid_argument(
-        "at " + formatNumber(b.speeds.front() * 30 / std::numbers::pi) + " rpm the film carries the load (" +
-        formatNumber(j.load) + " N) only at eccentricity " + formatNumber(slowest) +
+  static_assert(kFiniteMaxEccentricity == 1 - kThinnestFilm);
+  const std::string slowestRpm = formatNumber(b.speeds.front() * 30 / std::numbers::pi);
+  auto touches = [&](const std::string& eccentricity) {
+    return std::invalid_argument(
+        "at " + slowestRpm + " rpm the film carries the load (" + formatNumber(j.load) +
+        " N) only at eccentricity " + eccentricity +
         " (thinner than 1 % of c: the journal touches the bearing); raise from_rpm, mu or L, or "
         "check load and c");
+  };
   b.table.clear();
-  for (double w : b.speeds) b.table.push_back(shortBearingCoefficients(j, w));
+  b.journalPoints.clear();
+  if (b.journalModel == DeckBearing::JournalModel::shortBearing) {
+    const double slowest = eccentricityRatio(j, b.speeds.front());
+    if (slowest > 1 - kThinnestFilm) throw touches(formatNumber(slowest));
+    for (double w : b.speeds) {
+      const double eps = eccentricityRatio(j, w);
+      b.journalPoints.push_back({eps, attitudeAngle(eps), shortBearingCoefficients(j, w)});
+    }
+  } else {
+    // The film is solved once per table speed (the table is the cache the runs read).
+    for (double w : b.speeds) {
+      try {
+        b.journalPoints.push_back(finiteJournalPoint(j, w, b.journalGrid));
+      } catch (const std::invalid_argument&) {
+        if (b.journalPoints.empty()) throw touches("above " + formatNumber(kFiniteMaxEccentricity));
+        throw;
+      }
+    }
+  }
+  for (const JournalOperatingPoint& p : b.journalPoints) b.table.push_back(p.coefficients);
 }
 
 }  // namespace beamrotor
