@@ -2,8 +2,8 @@
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -26,9 +26,13 @@ using FilmVector = Eigen::VectorXd;
 class Film {
  public:
   Film(double eps, double lengthOverDiameter, const ReynoldsGrid& grid, const JournalMotion& motion)
-      : n_(grid.circumferential), m_(grid.axial), eps_(eps), motion_(motion),
+      : n_(grid.circumferential),
+        m_(grid.axial),
+        eps_(eps),
+        motion_(motion),
         kappa_(1 / (lengthOverDiameter * lengthOverDiameter)),
-        dt_(2 * kPiFilm / n_), dz_(1.0 / m_) {}
+        dt_(2 * kPiFilm / n_),
+        dz_(1.0 / m_) {}
 
   int size() const { return (n_ - 1) * m_; }
   int index(int i, int j) const { return (i - 1) * m_ + j; }
@@ -173,8 +177,7 @@ FilmMatrix onPressurised(const FilmMatrix& a, const std::vector<char>& active) {
   FilmMatrix r = a;
   for (int col = 0; col < r.outerSize(); ++col)
     for (FilmMatrix::InnerIterator it(r, col); it; ++it)
-      if (!active[it.row()] || !active[it.col()])
-        it.valueRef() = it.row() == it.col() ? 1.0 : 0.0;
+      if (!active[it.row()] || !active[it.col()]) it.valueRef() = it.row() == it.col() ? 1.0 : 0.0;
   return r;
 }
 
@@ -193,7 +196,8 @@ FilmSolution filmAt(double eps, double lengthOverDiameter, const ReynoldsGrid& g
                     std::vector<char>* cavity = nullptr) {
   if (!(eps > 0 && eps < 1) || !(lengthOverDiameter > 0) || grid.circumferential < 8 ||
       grid.axial < 1)
-    throw std::invalid_argument("solveFilm: needs 0 < eps < 1, L/D > 0 and a grid of at least 8 x 1");
+    throw std::invalid_argument(
+        "solveFilm: needs 0 < eps < 1, L/D > 0 and a grid of at least 8 x 1");
   const Film film(eps, lengthOverDiameter, grid, motion);
   const FilmMatrix a = film.operatorMatrix();
   const FilmVector f = film.wedge();
@@ -264,7 +268,8 @@ JournalOperatingPoint finiteJournalPoint(const PlainJournal& bearing, double spe
   const double ld = bearing.length / bearing.diameter;
   const double target = ld * ld / bearing.sommerfeld(speed);  // |Fbar| = 1 / (pi S)
   if (!(target > 0) || !std::isfinite(target))
-    throw std::invalid_argument("a plain journal bearing needs a positive speed, load and geometry");
+    throw std::invalid_argument(
+        "a plain journal bearing needs a positive speed, load and geometry");
   std::vector<char> cavity;  // each solve starts from the last one's pressurised nodes
   auto magnitude = [&](double eps) {
     const FilmSolution s = filmAt(eps, ld, grid, {}, false, &cavity);
@@ -284,7 +289,8 @@ JournalOperatingPoint finiteJournalPoint(const PlainJournal& bearing, double spe
                                 filmRatioText(kFiniteMaxEccentricity));
   double eps = kLightest;
   if (const double bottom = gap(uOf(kLightest)); bottom < 0)
-    eps = epsOf(speedRoot(gap, uOf(kLightest), bottom, uOf(kFiniteMaxEccentricity), top, 1e-10).speed);
+    eps = epsOf(
+        speedRoot(gap, uOf(kLightest), bottom, uOf(kFiniteMaxEccentricity), top, 1e-10).speed);
   else
     eps = kLightest * target / magnitude(kLightest);  // linear in eps down there
   const FilmSolution s = filmAt(eps, ld, grid, {}, true, &cavity);
@@ -294,7 +300,7 @@ JournalOperatingPoint finiteJournalPoint(const PlainJournal& bearing, double spe
   const double gamma = -std::atan2(s.force[1], s.force[0]);
   const double cg = std::cos(gamma), sg = std::sin(gamma);
   const double rot[2][2] = {{cg, -sg}, {sg, cg}};
-  auto toGlobal = [&](const double (&m)[2][2], double scale) {
+  auto toGlobal = [&](const double(&m)[2][2], double scale) {
     double g[2][2]{};
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j)

@@ -46,9 +46,9 @@ struct ReynoldsGrid {
 /// The film at eccentricity ratio eps, dimensionless, in the frame of the line of centres:
 /// axis 1 towards the largest film (theta = 0), axis 2 a quarter turn later.
 struct FilmSolution {
-  double force[2] = {0, 0};   ///< Fbar (see the header)
-  double stiffness[2][2]{};   ///< -dFbar_i / d(x_j / c)
-  double damping[2][2]{};     ///< -dFbar_i / d(x_j' / (c Omega))
+  double force[2] = {0, 0};  ///< Fbar (see the header)
+  double stiffness[2][2]{};  ///< -dFbar_i / d(x_j / c)
+  double damping[2][2]{};    ///< -dFbar_i / d(x_j' / (c Omega))
   int activeSetIterations = 0;
 };
 

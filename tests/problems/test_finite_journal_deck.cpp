@@ -126,8 +126,9 @@ TEST_SUITE("rotor decks") {
   }
 
   TEST_CASE("finite journal bearing deck: the shipped compressor on L/D 1.2 bearings") {
-    const Study s = solveStudyText(fileContents(problemsDir() / "compressor_rotor_long_bearings.yaml"),
-                                   shippedDeckRequest("compressor_rotor_long_bearings.yaml"));
+    const Study s =
+        solveStudyText(fileContents(problemsDir() / "compressor_rotor_long_bearings.yaml"),
+                       shippedDeckRequest("compressor_rotor_long_bearings.yaml"));
     CHECK(checkAllPass(s) == 1);
     const CampbellOutcome& c = *resultOf<CampbellOutcome>(s.run->analyses.at(2));
     REQUIRE(c.journals.size() == 2);
@@ -173,12 +174,13 @@ bearings:
       CHECK(e.place().line == 9);
       return e.message();
     };
-    CHECK(messageOf("L: 150 mm, load: 1000 N, model: short").find(
-              "the short-bearing theory holds for L/D <= 1 (here L/D = 1.5); use model: finite") !=
+    CHECK(messageOf("L: 150 mm, load: 1000 N, model: short")
+              .find("the short-bearing theory holds for L/D <= 1 (here L/D = 1.5); use model: "
+                    "finite") != std::string::npos);
+    CHECK(messageOf("L: 50 mm, load: 1000 N, model: fnite").find("did you mean 'finite'") !=
           std::string::npos);
-    CHECK(messageOf("L: 50 mm, load: 1000 N, model: fnite").find("did you mean 'finite'") != std::string::npos);
-    CHECK(messageOf("L: 50 mm, load: 1000 N, grid: {axial: 4}").find("a film grid belongs to model: finite") !=
-          std::string::npos);
+    CHECK(messageOf("L: 50 mm, load: 1000 N, grid: {axial: 4}")
+              .find("a film grid belongs to model: finite") != std::string::npos);
     CHECK(messageOf("L: 150 mm, load: 1000 N, grid: {axial: 1}").find("between 2 and 500") !=
           std::string::npos);
     CHECK(messageOf("L: 150 mm, load: 1000 N, grid: {radial: 4}")
@@ -187,8 +189,9 @@ bearings:
     CHECK(messageOf("L: 150 mm, load: 1e7 N").find("the journal touches the bearing") !=
           std::string::npos);
     // The default above L/D = 1 is the finite film, and reads.
-    const Study s = solveDeckText(deckWith("L: 150 mm, load: 1000 N") + "analyses: [{type: campbell, name: c, "
-                                                          "modes: 2, from_rpm: 3000, to_rpm: 6000, steps: 2}]\n",
+    const Study s = solveDeckText(deckWith("L: 150 mm, load: 1000 N") +
+                                      "analyses: [{type: campbell, name: c, "
+                                      "modes: 2, from_rpm: 3000, to_rpm: 6000, steps: 2}]\n",
                                   "journal.yaml");
     REQUIRE(s.run);
   }

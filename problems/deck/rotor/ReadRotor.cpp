@@ -92,8 +92,9 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
   if (auto model = f.get("model")) {
     const std::string m = model->text();
     if (m != "short" && m != "finite")
-      model->fail("unknown journal bearing model '" + m + "'" + didYouMean(m, {"short", "finite"}) +
-                  " (short: Ocvirk's closed forms, L/D <= 1; finite: Reynolds' equation on a grid)");
+      model->fail(
+          "unknown journal bearing model '" + m + "'" + didYouMean(m, {"short", "finite"}) +
+          " (short: Ocvirk's closed forms, L/D <= 1; finite: Reynolds' equation on a grid)");
     b.journalModel = m == "finite" ? Model::finite : Model::shortBearing;
     if (b.journalModel == Model::shortBearing && ld > 1)
       length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " + formatNumber(ld) +
