@@ -30,11 +30,10 @@ std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
   for (const DeckBearing& b : deck.rotor.bearings) {
     if (!b.journal || b.journal->load == 0) continue;  // a centred journal: no eccentricity
     JournalBearingCurve curve{b.name, *b.journal, b.speeds, {}, {}, {}, b.table};
-    for (double w : b.speeds) {
-      const double eps = eccentricityRatio(*b.journal, w);
-      curve.eccentricity.push_back(eps);
-      curve.attitude.push_back(attitudeAngle(eps));
-      curve.sommerfeld.push_back(b.journal->sommerfeld(w));
+    for (std::size_t i = 0; i < b.speeds.size(); ++i) {
+      curve.eccentricity.push_back(b.journalPoints.at(i).eccentricity);
+      curve.attitude.push_back(b.journalPoints.at(i).attitude);
+      curve.sommerfeld.push_back(b.journal->sommerfeld(b.speeds[i]));
     }
     out.push_back(std::move(curve));
   }

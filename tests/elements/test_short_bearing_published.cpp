@@ -26,23 +26,6 @@ namespace {
 constexpr double kPiShort = std::numbers::pi;
 constexpr double kRadPerRpmShort = kPiShort / 30;
 
-/// The rotor-bearing stability threshold of a mass m on one bearing with coefficients K, C
-/// (2 x 2, any symmetry): on the boundary an eigenvalue is i w, and det(K - w^2 m I + i w C) = 0
-/// splits into a real and an imaginary part. The imaginary part, linear in the unknowns
-/// k_eq = m w^2 and w, gives the equivalent stiffness
-///   k_eq = (kyy czz + kzz cyy - kyz czy - kzy cyz) / (cyy + czz),
-/// the real part the whirl frequency
-///   w^2 = ((kyy - k_eq)(kzz - k_eq) - kyz kzy) / (cyy czz - cyz czy)
-/// (Lund's form of the threshold, e.g. Friswell et al. 2010, sec. 5.5; Childs 1993, ch. 3).
-/// Returns the threshold mass k_eq / w^2 (kg; negative or infinite: stable whatever the mass).
-double thresholdMass(const BearingCoefficients& k) {
-  const double keq = (k.kyy * k.czz + k.kzz * k.cyy - k.kyz * k.czy - k.kzy * k.cyz) /
-                     (k.cyy + k.czz);
-  const double w2 =
-      ((k.kyy - keq) * (k.kzz - keq) - k.kyz * k.kzy) / (k.cyy * k.czz - k.cyz * k.czy);
-  return keq / w2;
-}
-
 /// A plain journal whose coefficients are the short-bearing ones at exactly the speed asked
 /// (no table between speeds), so the refined onset is the model's own.
 class ExactJournal : public SpeedDependentElement {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "elements/Bearing.hpp"
+#include "elements/FiniteJournalBearing.hpp"
 #include "elements/PlainJournalBearing.hpp"
 #include "fem/rotor/Api684.hpp"
 #include "fem/rotor/RotorSystem.hpp"
@@ -33,8 +34,13 @@ struct DeckBearing {
   std::vector<double> speeds;              ///< rad/s; empty for constant coefficients
   std::vector<BearingCoefficients> table;  ///< N/m, N s/m
   /// A plain journal bearing (type: plain-journal): its geometry and oil; the table then holds
-  /// its short-bearing coefficients at `speeds`.
+  /// its coefficients at `speeds`, by the short-bearing theory or the finite film (`model`).
   std::optional<PlainJournal> journal;
+  enum class JournalModel { shortBearing, finite };
+  JournalModel journalModel = JournalModel::shortBearing;
+  ReynoldsGrid journalGrid;  ///< the finite film's grid (model: finite)
+  /// The journal's operating point at each of `speeds` (what `table` was filled from).
+  std::vector<JournalOperatingPoint> journalPoints;
   /// A plain journal with `load: gravity`: its load is the rotor's weight share on pinned
   /// bearings, found when the deck runs (journal->load and table are empty until then).
   bool loadFromGravity = false;

@@ -7,9 +7,10 @@
 
 namespace beamrotor {
 
-/// Fills b.table with the short-bearing coefficients at b.speeds for b.journal (set, with its
-/// load). Throws std::invalid_argument, naming the speed, when the film at the slowest speed
-/// would be thinner than 1 % of the clearance (the journal touches the bearing).
+/// Fills b.journalPoints and b.table at b.speeds for b.journal (set, with its load), by the
+/// short-bearing theory or the finite film (b.journalModel). Throws std::invalid_argument, naming
+/// the speed, when the film at the slowest speed would be thinner than 1 % of the clearance (the
+/// journal touches the bearing).
 void fillJournalTable(DeckBearing& b);
 
 }  // namespace beamrotor

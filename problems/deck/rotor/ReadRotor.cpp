@@ -55,24 +55,55 @@ BearingCoefficients readCoefficients(const Context& c, const Field& f,
 
 std::vector<double> readSpeedRange(const Context& c, const Field& f);
 
+/// The finite film's grid: `grid: {circumferential: N, axial: M}` (cells around the journal,
+/// cells from the mid-plane to an end); by default 72 around and 8 L/D (at least 8) along.
+ReynoldsGrid readJournalGrid(const Context& c, const Field* f, double lengthOverDiameter) {
+  ReynoldsGrid grid;
+  grid.axial = std::max(8, int(std::ceil(8 * lengthOverDiameter - 1e-9)));
+  if (!f) return grid;
+  if (!f->isMap()) f->fail("expected {circumferential: 72, axial: 8}, got " + f->describe());
+  f->allowOnly({"circumferential", "axial"}, "a film grid");
+  if (auto n = f->get("circumferential")) grid.circumferential = n->integer(c.evaluator, 16, 2000);
+  if (auto m = f->get("axial")) grid.axial = m->integer(c.evaluator, 2, 500);
+  return grid;
+}
+
 /// A plain journal bearing: geometry, oil and load, and the speeds of its coefficient table.
-/// The short-bearing theory (elements/PlainJournalBearing.hpp) gives the coefficients there.
+/// The short-bearing theory (elements/PlainJournalBearing.hpp) or the finite film
+/// (elements/FiniteJournalBearing.hpp, `model: finite`) gives the coefficients there.
 void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckBearing& b) {
   if (type.text() != "plain-journal")
     type.fail("unknown bearing type '" + type.text() + "'" +
               didYouMean(type.text(), {"plain-journal"}) +
               " (a bearing is plain-journal, or has coefficients or a table)");
   f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
-               "from_rpm", "to_rpm", "steps"},
+               "from_rpm", "to_rpm", "steps", "model", "grid"},
               "a plain-journal bearing");
   const ExpressionEvaluator& ev = c.evaluator;
   PlainJournal j;
   j.diameter = f.require("D").positive(ev, dim::length);
   const Field length = f.require("L");
   j.length = length.positive(ev, dim::length);
-  if (j.length > j.diameter)
-    length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " +
-                formatNumber(j.length / j.diameter) + ")");
+  const double ld = j.length / j.diameter;
+  // Short theory up to L/D = 1 unless asked otherwise (decks written before the finite film
+  // keep their answers), the finite film beyond.
+  using Model = DeckBearing::JournalModel;
+  b.journalModel = ld > 1 ? Model::finite : Model::shortBearing;
+  if (auto model = f.get("model")) {
+    const std::string m = model->text();
+    if (m != "short" && m != "finite")
+      model->fail(
+          "unknown journal bearing model '" + m + "'" + didYouMean(m, {"short", "finite"}) +
+          " (short: Ocvirk's closed forms, L/D <= 1; finite: Reynolds' equation on a grid)");
+    b.journalModel = m == "finite" ? Model::finite : Model::shortBearing;
+    if (b.journalModel == Model::shortBearing && ld > 1)
+      length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " + formatNumber(ld) +
+                  "); use model: finite");
+  }
+  auto grid = f.get("grid");
+  if (grid && b.journalModel != Model::finite)
+    grid->fail("a film grid belongs to model: finite (the short theory has closed forms)");
+  b.journalGrid = readJournalGrid(c, grid ? &*grid : nullptr, ld);
   const Field clearance = f.require("c");
   j.clearance = clearance.positive(ev, dim::length);
   if (!(j.clearance < 0.01 * j.diameter))
