@@ -243,14 +243,17 @@ void addAttachments(const Deck& deck, Model* model) {
       for (const auto& [d, value] : s.dofs) support.dofs.push_back({d, value});
       model->addSupport(std::move(support));
     });
-  for (const DeckSpring& s : deck.springs)
+  for (std::size_t i = 0; i < deck.springs.size(); ++i) {
+    const DeckSpring& s = deck.springs[i];
     at(deck, s.place, [&] {
       const NodeDof a{model->node(s.point), s.dof};
       if (s.toPoint.empty())
         model->add<Spring>(a, s.k, s.c);
       else
         model->add<Spring>(a, NodeDof{model->node(s.toPoint), s.dof}, s.k, s.c);
+      model->nameElement(springName(deck, i), int(model->elements().size()) - 1);
     });
+  }
   for (const DeckContact& k : deck.contacts)
     at(deck, k.place, [&] {
       model->addContact({k.name, model->node(k.point), k.dof, k.lower, k.upper});
@@ -267,6 +270,7 @@ void addAttachments(const Deck& deck, Model* model) {
         model->add<Bearing>(model->node(b.point), b.table.front());
       else
         model->add<Bearing>(model->node(b.point), b.speeds, b.table);
+      model->nameElement(b.name, int(model->elements().size()) - 1);
     });
   for (const NodalLoad& l : pointLoads(deck, *model, deck.loads)) model->addLoad(l);
 }
