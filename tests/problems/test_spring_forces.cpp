@@ -1,9 +1,9 @@
-// Forces of springs and contacts (support-like parts that are not supports): a cantilever
-// propped by a spring at its tip, under a tip load and a uniform load, against the closed
-// forms of compatibility (the tip deflection of the cantilever under the load and the spring
-// force equals the spring's own stretch); the same in load cases and a combination (the
-// factored sum); a contact's force; and each as it reaches results.json, the springs CSV, the
-// summary and a check quantity (`reaction NAME DOF`).
+// Forces of springs, bearings and contacts (support-like parts that are not supports): a
+// cantilever propped by a spring at its tip, under a tip load and a uniform load, against the
+// closed forms of compatibility (the tip deflection of the cantilever under the load and the
+// spring force equals the spring's own stretch); the same in load cases and a combination (the
+// factored sum); a contact's force; a shaft's bearings; and each as it reaches results.json,
+// the springs CSV, the summary and a check quantity (`reaction NAME DOF`).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -158,6 +158,33 @@ TEST_SUITE("spring forces") {
     const StaticResult& r = *staticsOf(onlyRun(s).analyses.front());
     CHECK(r.reaction("stop", Dof::uy) == doctest::Approx(kP / 2).epsilon(kExact));
     CHECK(test::checkAllPass(s) == 1);
+  }
+
+  TEST_CASE("a shaft on two bearings under a central load: each bearing carries half") {
+    // Statics by symmetry (equal bearings at equal distances): P / 2 in each direction, exact
+    // but for round-off; the bearings' stiffnesses differ between y and z, which must not
+    // matter.
+    const std::string deck =
+        "model: {dimension: lateral}\n"
+        "materials: [{name: steel, E: 210e9, nu: 0.3, rho: 7850}]\n"
+        "sections: [{name: s, shape: circle, D: 0.05}]\n"
+        "segments: [{name: shaft, length: 1, section: s, elements: 4}]\n"
+        "points: [{name: mid, at: 0.5}]\n"
+        "bearings:\n"
+        "  - {name: A, at: start, kxx: 1e8, kyy: 2e8}\n"
+        "  - {name: B, at: end, kxx: 1e8, kyy: 2e8}\n"
+        "loads: [{type: point, at: mid, fy: -1000, fz: 400}]\n"
+        "analyses: [{type: static}]\n"
+        "checks:\n"
+        "  - {name: A, quantity: reaction A fy, reference: 500, tolerance: 1e-9}\n"
+        "  - {name: B, quantity: reaction B uz, reference: -200, tolerance: 1e-9}\n";
+    const Study s = test::solveDeckText(deck, "bearings.yaml");
+    const StaticResult& r = *staticsOf(onlyRun(s).analyses.front());
+    for (const char* bearing : {"A", "B"}) {
+      CHECK(r.reaction(bearing, Dof::uy) == doctest::Approx(500).epsilon(kExact));
+      CHECK(r.reaction(bearing, Dof::uz) == doctest::Approx(-200).epsilon(kExact));
+    }
+    CHECK(test::checkAllPass(s) == 2);
   }
 
   TEST_CASE("the springs CSV and the summary list each spring's force") {
