@@ -114,7 +114,7 @@ void addFrame(const Deck& deck, Model& model) {
   const DeckFrame& frame = *deck.frame;
   FrameSpec spec;
   spec.dofs = deck.dofs;
-  for (const DeckJoint& j : frame.joints) spec.joints.push_back({j.name, j.x});
+  for (const DeckJoint& j : frame.joints) spec.joints.push_back({j.name, j.x, j.member, j.fraction});
   for (std::size_t m = 0; m < frame.members.size(); ++m) {
     const DeckSegment& s = deck.segments[m];
     const DeckMember& member = frame.members[m];
