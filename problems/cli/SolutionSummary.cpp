@@ -48,7 +48,9 @@ void printForces(std::ostream& out, const std::string& title,
 }  // namespace
 
 void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent) {
-  printForces(out, "reactions", reactionsBySupport(r), "supports", indent);
+  // A model held by springs or bearings alone has no reactions to list.
+  if (!r.reactions.empty() || r.elementForces.empty())
+    printForces(out, "reactions", reactionsBySupport(r), "supports", indent);
   if (!r.elementForces.empty())
     printForces(out, "springs and bearings", forcesByName(r.elementForces), "springs and bearings",
                 indent);
