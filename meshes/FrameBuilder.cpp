@@ -80,6 +80,12 @@ FrameMesh buildFrame(Model& model, const FrameSpec& spec) {
     mesh.length = L;
 
     std::vector<double> cuts{0, 1};
+    std::vector<std::pair<double, int>> inside;  // joints on this member: fraction, node
+    for (std::size_t j = 0; j < spec.joints.size(); ++j)
+      if (spec.joints[j].member == int(m)) {
+        cuts.push_back(spec.joints[j].fraction);
+        inside.emplace_back(spec.joints[j].fraction, frame.jointNodes[j]);
+      }
     for (const MemberStation& s : spec.stations)
       if (s.member == int(m)) {
         if (!(s.fraction >= 0 && s.fraction <= 1))
@@ -100,7 +106,11 @@ FrameMesh buildFrame(Model& model, const FrameSpec& spec) {
       const int n = elementsFor(mesh, piece * L);
       for (int e = 1; e <= n; ++e) {
         const double f = e == n ? cuts[c + 1] : cuts[c] + piece * e / n;
-        const int to = f == 1 ? frame.jointNodes[member.to] : model.addNode(x1 + f * (x2 - x1));
+        int to = -1;
+        if (f == 1) to = frame.jointNodes[member.to];
+        for (const auto& [fraction, node] : inside)
+          if (e == n && std::abs(fraction - f) <= kFractionTolerance) to = node;
+        if (to < 0) to = model.addNode(x1 + f * (x2 - x1));
         beams.push_back(&model.add<Beam>(from, model.nodes()[from], to, model.nodes()[to],
                                          mesh.section, spec.dofs, mesh.options,
                                          Eigen::Vector3d(R.row(2).transpose())));

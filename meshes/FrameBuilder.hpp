@@ -17,6 +17,10 @@ namespace beamrotor {
 struct FrameJoint {
   std::string name;
   Eigen::Vector3d x = Eigen::Vector3d::Zero();  ///< m, global frame
+  /// A joint inside a member (another member starts or ends there): that member's index and
+  /// the fraction of its length at x; the member is cut there and shares the joint's node.
+  int member = -1;
+  double fraction = 0;
 };
 
 /// How a member's local y and z axes are chosen about its axis.

@@ -27,6 +27,18 @@ std::array<double, kDofKinds> LoadedSolution::displacementAt(int element, double
   return line.displacementAt(elementValues(line, *displacement), s, spanOn(element, line));
 }
 
+std::vector<ReactionComponent> namedElementForces(const Model& model, const NodalField& field) {
+  std::vector<ReactionComponent> out;
+  for (const auto& [name, index] : model.namedElements()) {
+    const Element& e = *model.elements().at(index);
+    const ElementVector f = e.endForces(elementValues(e, field));
+    const auto d = e.dofs();
+    for (int a = 0; a < int(d.size()); ++a)
+      if (d[a].node == d[0].node) out.push_back({name, d[a].node, d[a].dof, -f[a]});
+  }
+  return out;
+}
+
 namespace {
 
 /// Fills the sides of the nodes in `sides` (indexed by node; the others null) from the line

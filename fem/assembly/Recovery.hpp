@@ -50,6 +50,11 @@ SideRotations rotationsBeside(const LoadedSolution& solution, int node);
 /// node order.
 std::vector<SideRotations> hingeRotations(const LoadedSolution& solution);
 
+/// The force each named element (Model::namedElements) exerts on the structure at its first
+/// node, per dof it acts on there: -(K u) of the element's first node's rows (springs and
+/// bearings carry no loads of their own).
+std::vector<ReactionComponent> namedElementForces(const Model& model, const NodalField& field);
+
 /// Fields at one station of one line element.
 struct BeamStation {
   int element = -1;                              ///< index into model.elements()

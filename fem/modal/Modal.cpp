@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "fem/assembly/ReducedSystem.hpp"
+#include "fem/modal/RigidMotion.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/SupportCheck.hpp"
 #include "fem/solvers/SymmetricEigen.hpp"
@@ -111,6 +112,13 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
       for (double& s : mode.energyShare) s /= sum;
     mode.description = describeMode(mode.energyShare);
     result.modes.push_back(std::move(mode));
+  }
+  // A frame's modes are named by the rigid motion their effective mass follows (sway,
+  // torsion), which the energy shares by global dof kind do not tell for members across x.
+  if (!model.members().empty()) {
+    const std::vector<RigidShares> shares = rigidMotionShares(model, dofs, M, pairs.vectors);
+    for (std::size_t m = 0; m < shares.size(); ++m)
+      result.modes[m].description = describeRigidMotion(shares[m], "mass");
   }
   result.size = systemSize(model, dofs, K.nonZeros(), pairs.factorEntries);
   result.time.total = total.lap();

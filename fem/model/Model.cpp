@@ -20,6 +20,16 @@ void Model::nameNode(const std::string& name, int node) {
   if (!added && name < first->second) first->second = name;
 }
 
+void Model::nameElement(const std::string& name, int element) {
+  if (element < 0 || element >= int(elements_.size()))
+    throw std::out_of_range("no element " + std::to_string(element));
+  for (const auto& [other, e] : namedElements_)
+    if (other == name)
+      throw std::invalid_argument("'" + name +
+                                  "' names two springs or bearings; give them distinct names");
+  namedElements_.emplace_back(name, element);
+}
+
 void Model::addMember(const std::string& name, std::vector<int> elements) {
   if (memberNames_.count(name))
     throw std::invalid_argument("member name '" + name + "' is used twice");

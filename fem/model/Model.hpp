@@ -69,6 +69,9 @@ class Model {
   void addSupport(Support s) { supports_.push_back(std::move(s)); }
   void addLoad(const NodalLoad& l) { loads_.push_back(l); }
   void addContact(ContactConstraint c) { contacts_.push_back(std::move(c)); }
+  /// Names an element that acts like a support (a spring, a bearing), so that the force it
+  /// exerts on the structure is reported under its name. Names are unique among them.
+  void nameElement(const std::string& name, int element);
   /// Names a member: a chain of line elements (indices into elements(), from its start to
   /// its end) that output reports as one piece, e.g. a frame's column. Names are unique.
   void addMember(const std::string& name, std::vector<int> elements);
@@ -79,6 +82,8 @@ class Model {
   const std::vector<NodalLoad>& loads() const { return loads_; }
   const std::vector<ContactConstraint>& contacts() const { return contacts_; }
   const std::map<std::string, int>& namedNodes() const { return names_; }
+  /// The named elements in the order they were named: name and element index.
+  const std::vector<std::pair<std::string, int>>& namedElements() const { return namedElements_; }
   /// The members in the order they were added: name and element indices.
   const std::vector<std::pair<std::string, std::vector<int>>>& members() const { return members_; }
   int nodeCount() const { return int(nodes_.size()); }
@@ -96,6 +101,7 @@ class Model {
   std::map<int, std::string> firstNames_;  ///< each named node's first name (nameOf)
   std::vector<std::pair<std::string, std::vector<int>>> members_;
   std::set<std::string> memberNames_;
+  std::vector<std::pair<std::string, int>> namedElements_;
 };
 
 }  // namespace beamrotor

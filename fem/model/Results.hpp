@@ -65,6 +65,9 @@ struct StaticResult {
   NodalField displacement;                   ///< m and rad
   std::vector<ReactionComponent> reactions;  ///< every constrained dof, in support order
   std::vector<ContactState> contacts;        ///< settled contact states, in model order
+  /// The force each named element (Model::namedElements: springs, bearings) exerts on the
+  /// structure at its first node, per dof it acts on there: as a support's reaction.
+  std::vector<ReactionComponent> elementForces;
   std::vector<SideRotations> hinges;         ///< at every node with a released beam end
   int activeSetIterations = 0;               ///< linear solves the contact loop needed
   double rcond = 0;     ///< reciprocal condition estimate of the scaled system D^-1/2 K D^-1/2
@@ -73,7 +76,8 @@ struct StaticResult {
   SystemSize size;
   SolveTimings time;
 
-  /// Sum of the reaction components of one support along one dof kind.
+  /// Sum of the reaction components of one support along one dof kind; for a name no support
+  /// has, the force of the named element (a spring, a bearing) or of the contact so named.
   double reaction(const std::string& support, Dof d) const;
 };
 

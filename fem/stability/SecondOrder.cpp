@@ -5,6 +5,7 @@
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -118,11 +119,18 @@ SecondOrderResult solveSecondOrder(const Model& model, const SecondOrderOptions&
   const Eigen::VectorXd forces = tangentTimes(model, dofs, u, u) - f;
   for (ReactionComponent& r : s.reactions) r.value = forces[dofs.equation(r.node, r.dof)];
   s.hinges = hingeRotations({model, s.displacement});
+  s.elementForces = namedElementForces(model, s.displacement);
   const auto ratio = [](double a, double b) { return b > 0 ? a / b : 1.0; };
+  // Magnitudes, not components: a sway that turns the largest displacement's direction would
+  // otherwise be compared along one axis only.
+  const auto rotation = [](const NodalField& u) {
+    return u.rows() ? u.rightCols(3).rowwise().norm().maxCoeff() : 0.0;
+  };
+  result.firstOrderTranslation = largestDisplacement({model, result.firstOrder.displacement}).value;
+  result.firstOrderRotation = rotation(result.firstOrder.displacement);
   result.displacementAmplification =
-      ratio(largest(s.displacement, 0), largest(result.firstOrder.displacement, 0));
-  result.rotationAmplification =
-      ratio(largest(s.displacement, 1), largest(result.firstOrder.displacement, 1));
+      ratio(largestDisplacement({model, s.displacement}).value, result.firstOrderTranslation);
+  result.rotationAmplification = ratio(rotation(s.displacement), result.firstOrderRotation);
   for (auto [kind, out] : {std::pair{&ElementPeaks::moment, &result.momentAmplification},
                            std::pair{&ElementPeaks::stress, &result.stressAmplification}})
     *out = ratio(largestAlongBeams(model, s.displacement, kind),

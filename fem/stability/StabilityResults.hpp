@@ -37,8 +37,14 @@ struct SecondOrderResult {
   /// The lowest positive buckling factor of the first-order state (infinity when nothing is
   /// compressed): the load is that many times below the critical one.
   double criticalFactor = std::numeric_limits<double>::infinity();
-  /// Largest translation (and rotation) of the second-order state over the first-order one.
+  /// Largest translation magnitude |(ux, uy, uz)| (and rotation magnitude) of the
+  /// second-order state over the first-order one: translations anywhere along the beams and at
+  /// the nodes, as `displacement max` measures them (largestDisplacement), rotations at the
+  /// nodes.
   double displacementAmplification = 1, rotationAmplification = 1;
+  /// The first-order state's largest translation magnitude (m) and rotation magnitude (rad),
+  /// the denominators of the two ratios above.
+  double firstOrderTranslation = 0, firstOrderRotation = 0;
   /// Largest bending moment (and outer-fibre normal stress, axial stress included) along the
   /// beams, exact between nodes, of the second-order state over the first-order one; 1 when
   /// the first-order value is zero.

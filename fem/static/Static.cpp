@@ -26,6 +26,7 @@ void recover(const Model& loaded, const Loading* loading, LinearStatics& system,
           {s.name, s.node, p.dof, r[dofs.equation(s.node, p.dof) - dofs.freeCount()]});
   result.displacement = toNodalField(loaded, dofs, u);
   result.hinges = hingeRotations({loaded, result.displacement, loading});
+  result.elementForces = namedElementForces(loaded, result.displacement);
   result.rcond = system.rcond();
   result.roundOff = system.roundOff();
   result.solver = system.solverName();

@@ -2,8 +2,10 @@
 #include "problems/cli/SolutionSummary.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "problems/cli/Summary.hpp"
+#include "problems/output/structure/MemberEndRotations.hpp"
 #include "problems/output/structure/Reactions.hpp"
 
 namespace beamrotor::cli {
@@ -21,12 +23,16 @@ std::vector<const DeckPoint*> reportedPoints(const Deck& deck) {
   return out;
 }
 
-void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent) {
-  const std::vector<SupportReactions> supports = reactionsBySupport(r);
-  out << indent << "reactions (force on the structure; N, N m)";
+namespace {
+
+/// Forces by name under `title`, each line led by `indent`; the first kSummarySupports names.
+void printForces(std::ostream& out, const std::string& title,
+                 const std::vector<SupportReactions>& supports, const std::string& what,
+                 const std::string& indent) {
+  out << indent << title << " (force on the structure; N, N m)";
   if (supports.size() > kSummarySupports)
-    out << ", the first " << kSummarySupports << " of " << supports.size()
-        << " supports (all in results.json)";
+    out << ", the first " << kSummarySupports << " of " << supports.size() << " " << what
+        << " (all in results.json)";
   out << ":\n";
   // Named as in results.json and sweep.csv: fx ... mz.
   for (std::size_t i = 0; i < supports.size() && i < kSummarySupports; ++i) {
@@ -39,10 +45,24 @@ void printReactions(std::ostream& out, const StaticResult& r, const std::string&
   }
 }
 
+}  // namespace
+
+void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent) {
+  // A model held by springs or bearings alone has no reactions to list.
+  if (!r.reactions.empty() || r.elementForces.empty())
+    printForces(out, "reactions", reactionsBySupport(r), "supports", indent);
+  if (!r.elementForces.empty())
+    printForces(out, "springs and bearings", forcesByName(r.elementForces), "springs and bearings",
+                indent);
+}
+
 void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResult& run,
                              const StaticResult& r, const std::string& indent) {
   const std::vector<const DeckPoint*> points = reportedPoints(deck);
   out << indent << "displacements at points (m, rad):\n";
+  std::map<int, std::vector<MemberEndRotation>> ends;
+  if (deck.frame && !r.hinges.empty())
+    ends = memberEndRotations({*run.model, r.displacement}, r.hinges);
   for (const DeckPoint* p : points) {
     const int node = run.model->node(p->name);
     out << indent << "  " << padded(p->name, 12);
@@ -57,12 +77,21 @@ void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResul
     }
     const auto hinge = std::find_if(r.hinges.begin(), r.hinges.end(),
                                     [&](const SideRotations& h) { return h.node == node; });
+    // A frame's hinged joint: each member end there turns on its own, named by its member.
+    const auto memberEnds = ends.find(node);
     for (Dof d : kAllDofs) {
       if (!deck.dofs.contains(d)) continue;
       const std::string name(dofName(d));
       if (!isRotation(d) || hinge == r.hinges.end()) {
         out << padded(
             name + " " + formatValue(r.displacement(node, dofIndex(d))) + " " + motionUnit(d), 22);
+        continue;
+      }
+      if (memberEnds != ends.end()) {
+        for (const MemberEndRotation& e : memberEnds->second)
+          out << padded(name + " " + e.label + " " + formatValue(e.rotation[dofIndex(d) - 3]) +
+                            " rad",
+                        26);
         continue;
       }
       // A hinge: the beam end on each side turns on its own.

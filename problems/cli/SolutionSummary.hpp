@@ -21,8 +21,9 @@ std::vector<const DeckPoint*> reportedPoints(const Deck& deck);
 /// Unit of a displacement component: "m" or "rad".
 const char* motionUnit(Dof d);
 
-/// Reactions by support, each line led by `indent`; the first kSummarySupports supports when
-/// there are more (the rest in results.json).
+/// Reactions by support, then the forces of the springs and bearings by name, each line led by
+/// `indent`; the first kSummarySupports of each when there are more (the rest in
+/// results.json).
 void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent);
 
 /// Displacements at the deck's reported points, each line led by `indent` (at a hinge, each

@@ -246,4 +246,13 @@ struct Deck {
   }
 };
 
+/// The name spring `index` (its place in `springs:`, from 0) goes by in outputs and check
+/// quantities: its own, or `spring<N>` (N its place, from 1) when it has none.
+inline std::string springName(const Deck& deck, std::size_t index) {
+  if (!deck.springs.at(index).name.empty()) return deck.springs[index].name;
+  std::string name = "spring";  // appended: GCC 12 warns on "literal" + a temporary string
+  name += std::to_string(index + 1);
+  return name;
+}
+
 }  // namespace beamrotor

@@ -98,6 +98,9 @@ void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r);
 /// Fails at `f` when a crank quantity asks for what analysis `a` was not given (masses, a
 /// plunger, a lambda outside its table).
 void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis& a);
+/// Fails at `f` unless `reaction NAME DOF` names a support that holds DOF, or a spring, bearing
+/// or contact that acts along it (each exerts a force on the structure, reported by its name).
+void requireReactionTarget(const Deck& deck, const Quantity& q, const Field& f);
 /// Fails at `f` unless the quantity's names exist in the deck and its analysis (the one
 /// `analysisField` names, else the first that can give it) can give it; returns the name of
 /// the analysis it reads. `applicable`: whether a check's `when:` holds (history times).

@@ -2,6 +2,7 @@
 #include "problems/output/JsonWriter.hpp"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -9,6 +10,7 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
 #include "problems/deck/AnalysisKinds.hpp"
+#include "problems/output/structure/MemberEndRotations.hpp"
 #include "problems/output/structure/AdequateJson.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
@@ -50,20 +52,30 @@ Json modelJson(const RunResult& run, const DofMap& dofs) {
 
 /// Displacements of the named points, in node order (the order along a line). At a hinge each
 /// rotation the model carries is also given per side, "rz_left" and "rz_right" (the beam ends'
-/// own), and the node's value only where the node carries it.
+/// own), and the node's value only where the node carries it. In a frame, where several
+/// members may meet, per member end instead: "rz_<member>_start", "rz_<member>_end" (or
+/// _before and _after where the joint lies inside the member; memberEndRotations).
 Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
                             const std::array<bool, kDofKinds>& carried, const StaticResult& r) {
   std::vector<std::pair<int, std::string>> points;
   for (const auto& [name, node] : model.namedNodes()) points.emplace_back(node, name);
   std::sort(points.begin(), points.end());
+  const bool frame = !model.members().empty();
+  std::map<int, std::vector<MemberEndRotation>> ends;
+  if (frame && !r.hinges.empty()) ends = memberEndRotations({model, r.displacement}, r.hinges);
   Json out = Json::object();
   for (const auto& [node, name] : points) {
     Json& components = appendNew(out, name);
     for (Dof d : kAllDofs)
       if (dofs.equation(node, d) >= 0)
         components[std::string(dofName(d))] = r.displacement(node, dofIndex(d));
+    if (const auto at = ends.find(node); at != ends.end())
+      for (Dof d : kAllDofs)
+        if (isRotation(d) && carried[dofIndex(d)])
+          for (const MemberEndRotation& e : at->second)
+            components[std::string(dofName(d)) + "_" + e.label] = e.rotation[dofIndex(d) - 3];
     for (const SideRotations& h : r.hinges) {
-      if (h.node != node) continue;
+      if (frame || h.node != node) continue;
       for (Dof d : kAllDofs)
         if (isRotation(d) && carried[dofIndex(d)])
           for (const auto& [side, value] :
@@ -125,6 +137,7 @@ Json caseJson(const Model& model, const DofMap& dofs, const std::array<bool, kDo
     out["factors"] = factors;
   }
   out["reactions"] = reactionsJson(c.statics);
+  if (!c.statics.elementForces.empty()) out["springs"] = forcesJson(c.statics.elementForces);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, c.statics);
   stressPeaksJson(out, model, extremes.peaks);
   if (!model.members().empty()) out["max_displacement"] = maxDisplacementJson(extremes.largestDisplacement);
@@ -191,6 +204,7 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   const std::string stem = fileStem(a.name);
   Json out = {{"type", a.type}, {"name", a.name}};
   out["reactions"] = reactionsJson(r);
+  if (!r.elementForces.empty()) out["springs"] = forcesJson(r.elementForces);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
   if (!model.members().empty()) {
     out["max_displacement"] = maxDisplacementJson(own.largestDisplacement);
@@ -361,8 +375,12 @@ Json sweepWorstJson(const SweepResult& sweep, const std::vector<Json>& runDocs) 
 }  // namespace
 
 Json reactionsJson(const StaticResult& r) {
+  return forcesJson(r.reactions);
+}
+
+Json forcesJson(const std::vector<ReactionComponent>& forces) {
   Json out = Json::object();
-  for (const SupportReactions& s : reactionsBySupport(r)) {
+  for (const SupportReactions& s : forcesByName(forces)) {
     Json& components = appendNew(out, s.support);
     for (const auto& [dof, value] : s.components)
       components[std::string(reactionName(dof))] = value;

@@ -44,6 +44,8 @@ Json& appendNew(Json& object, std::string key, Json value = Json::object());
 
 /// Reactions per support: {support: {fx ... mz}}, the components the support holds.
 Json reactionsJson(const StaticResult& r);
+/// The same of any such forces by name, e.g. springs' and bearings' (StaticResult::elementForces).
+Json forcesJson(const std::vector<ReactionComponent>& forces);
 
 /// results.json of one run. `extremes[i]` are those of run.analyses[i] (staticExtremes of its
 /// own solution and of each load case and combination; empty for other kinds): the largest

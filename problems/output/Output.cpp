@@ -4,6 +4,7 @@
 // temporary directory that replaces the output directory only when complete.
 #include "problems/output/Output.hpp"
 
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <stdexcept>
@@ -87,6 +88,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   const AnalysisOutcome& a = *p.outcome;
   p.fields->write(dir / fieldsCsv(p.stem));
   if (p.caseTable) p.caseTable->write(dir / casesCsv(p.stem));
+  if (p.springs) p.springs->write(dir / springsCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
     for (const CsvTable& table : *list) table.write(dir / table.title());
   writeStaticVtu(dir / staticVtu(p.stem), {model, statics.displacement}, p.stations,
@@ -118,9 +120,25 @@ void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const Mode
     entries.push_back({double(number), modeVtu(p.stem, number)});
   }
   writePvd(dir / collectionPvd(p.stem), entries);
-  if (charts && p.shapes->rowCount() > 0)
+  if (!charts || p.shapes->rowCount() == 0) return;
+  if (model.members().empty()) {
     drawChart(dir, modeShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem),
                                    model, modal, *p.shapes, shapesCsv(p.stem)));
+    return;
+  }
+  std::vector<std::string> titles;
+  for (std::size_t m = 0; m < modal.modes.size(); ++m) {
+    char frequency[32];
+    std::snprintf(frequency, sizeof frequency, "%.4g", modal.modes[m].frequencyHz);
+    std::string title = "mode " + std::to_string(m + 1);
+    title += ": ";
+    title += frequency;
+    title += " Hz, ";
+    title += modal.modes[m].description;
+    titles.push_back(std::move(title));
+  }
+  drawChart(dir, frameShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem), model,
+                                  modal.modes, titles, run.dimension == "planar"));
 }
 
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
@@ -136,7 +154,8 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeStaticFiles(prepared, p, r.secondOrder, dir, charts);
             },
             [&](const BucklingResult&) {
-              writeBucklingFiles(p, model, dir, chartCaption(run, a.name), charts);
+              writeBucklingFiles(p, model, dir, chartCaption(run, a.name), charts,
+                                 run.dimension == "planar");
             },
             [&](const ModalResult& r) { writeModalFiles(run, p, model, r, dir, charts); },
             [&](const TorsionOutcome& r) {

@@ -19,7 +19,7 @@ namespace beamrotor {
 
 std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() const {
   std::vector<std::pair<std::string, const CsvTable*>> all;
-  for (const std::optional<CsvTable>* t : {&fields, &modes, &shapes, &history})
+  for (const std::optional<CsvTable>* t : {&fields, &springs, &modes, &shapes, &history})
     if (*t) all.emplace_back((*t)->title(), &**t);
   if (caseTable) all.emplace_back(caseTable->title(), &*caseTable);
   if (rotor)
@@ -36,19 +36,22 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
 namespace {
 
 /// The load cases and combinations of a static analysis's results.json entry as one table:
-/// reactions, point displacements and member resultant extremes, one value per row.
+/// reactions, spring and bearing forces, point displacements and member resultant extremes,
+/// one value per row.
 CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
   CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
                     {"component", ""}, {"value", ""}});
   for (const Json& c : analysis.at("cases")) {
     const std::string name = c.at("name").get<std::string>();
     const long long combination = c.at("combination").get<bool>() ? 1 : 0;
-    for (const char* key : {"reactions", "displacements"})
-      for (const auto& where : c.at(key).items())
-        for (const auto& component : where.value().items())
-          t.addRow({name, combination, std::string(key == std::string("reactions")
-                                                        ? "reaction" : "displacement"),
-                    where.key(), component.key(), component.value().get<double>()});
+    for (const auto& [key, quantity] : {std::pair{"reactions", "reaction"},
+                                        std::pair{"springs", "spring"},
+                                        std::pair{"displacements", "displacement"}})
+      if (c.contains(key))
+        for (const auto& where : c.at(key).items())
+          for (const auto& component : where.value().items())
+            t.addRow({name, combination, std::string(quantity), where.key(), component.key(),
+                      component.value().get<double>()});
     if (!c.contains("members")) continue;
     for (const auto& member : c.at("members").items())
       for (const auto& component : member.value().items()) {
@@ -95,6 +98,8 @@ void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticRes
   p.stations = sampleStatics({model, statics.displacement});
   p.fields = staticFieldsTable(fieldsCsv(p.stem),
                                fullTables ? p.stations : thinnedStations(p.stations));
+  if (!statics.elementForces.empty())
+    p.springs = springForcesTable(springsCsv(p.stem), model, statics);
   const StationsByElement byElement(p.stations, model.elements().size());
   if (oneMembersTable(model))
     p.members.push_back(membersTable(membersCsv(p.stem), model, byElement));
@@ -128,7 +133,7 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables) {
   PreparedRun prepared{&run, runExtremes(run), {}, {}};
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
-    PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {},
+    PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {}, {},
                        {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
@@ -146,7 +151,7 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables) {
             },
             [&](const BucklingResult& r) {
               p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), r);
-              p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(r));
+              p.shapes = modeShapesTable(shapesCsv(p.stem), model, bucklingShapes(model, r));
             },
             [&](const TransientOutcome& r) { p.history = historyTable(historyCsv(p.stem), r); },
             [&](const RotorModesResult& r) {

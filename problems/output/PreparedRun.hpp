@@ -35,6 +35,7 @@ struct PreparedAnalysis {
   /// Statics: the extremes of its own solution and of each case (PreparedRun::extremes).
   const AnalysisExtremes* extremes = nullptr;
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
+  std::optional<CsvTable> springs;      ///< statics with springs or bearings: <stem>_springs.csv
   std::optional<CsvTable> modes;   ///< modal: <stem>_modes.csv; buckling: <stem>_factors.csv
   std::optional<CsvTable> shapes;  ///< modal, buckling: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv

@@ -48,6 +48,8 @@ CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
   r.displacement = NodalField::Zero(first.displacement.rows(), first.displacement.cols());
   r.reactions = first.reactions;
   for (ReactionComponent& c : r.reactions) c.value = 0;
+  r.elementForces = first.elementForces;
+  for (ReactionComponent& c : r.elementForces) c.value = 0;
   for (const auto& [name, factor] : k.factors)
     for (const CaseOutcome& c : cases)
       if (c.name == name) {
@@ -55,6 +57,8 @@ CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
         r.displacement += factor * c.statics.displacement;
         for (std::size_t i = 0; i < r.reactions.size(); ++i)
           r.reactions[i].value += factor * c.statics.reactions[i].value;
+        for (std::size_t i = 0; i < r.elementForces.size(); ++i)
+          r.elementForces[i].value += factor * c.statics.elementForces[i].value;
         r.roundOff = std::max(r.roundOff, c.statics.roundOff);
       }
   out.loading = std::make_shared<const Loading>(Loading::combination(parts));

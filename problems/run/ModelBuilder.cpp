@@ -116,7 +116,7 @@ void addFrame(const Deck& deck, Model& model) {
   const DeckFrame& frame = *deck.frame;
   FrameSpec spec;
   spec.dofs = deck.dofs;
-  for (const DeckJoint& j : frame.joints) spec.joints.push_back({j.name, j.x});
+  for (const DeckJoint& j : frame.joints) spec.joints.push_back({j.name, j.x, j.member, j.fraction});
   for (std::size_t m = 0; m < frame.members.size(); ++m) {
     const DeckSegment& s = deck.segments[m];
     const DeckMember& member = frame.members[m];
@@ -265,14 +265,17 @@ void addAttachments(const Deck& deck, Model* model) {
       for (const auto& [d, value] : s.dofs) support.dofs.push_back({d, value});
       model->addSupport(std::move(support));
     });
-  for (const DeckSpring& s : deck.springs)
+  for (std::size_t i = 0; i < deck.springs.size(); ++i) {
+    const DeckSpring& s = deck.springs[i];
     at(deck, s.place, [&] {
       const NodeDof a{model->node(s.point), s.dof};
       if (s.toPoint.empty())
         model->add<Spring>(a, s.k, s.c);
       else
         model->add<Spring>(a, NodeDof{model->node(s.toPoint), s.dof}, s.k, s.c);
+      model->nameElement(springName(deck, i), int(model->elements().size()) - 1);
     });
+  }
   for (const DeckContact& k : deck.contacts)
     at(deck, k.place, [&] {
       model->addContact({k.name, model->node(k.point), k.dof, k.lower, k.upper});
@@ -288,14 +291,13 @@ void addAttachments(const Deck& deck, Model* model) {
       std::vector<BearingCoefficients> table;
       for (const BearingCoefficients& row : b.table)
         table.push_back(turnedCoefficients(row, b.loadAngle));
-      if (b.pedestal) {
+      if (b.pedestal)  // the bearing acts between journal and housing: its force as it is
         addPedestal(deck, b, std::move(table), model);
-        return;
-      }
-      if (b.speeds.empty())
+      else if (b.speeds.empty())
         model->add<Bearing>(model->node(b.point), table.front());
       else
         model->add<Bearing>(model->node(b.point), b.speeds, std::move(table));
+      model->nameElement(b.name, int(model->elements().size()) - 1);
     });
   for (const NodalLoad& l : pointLoads(deck, *model, deck.loads)) model->addLoad(l);
 }

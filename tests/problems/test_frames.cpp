@@ -455,4 +455,50 @@ TEST_SUITE("frames") {
               "checks: [{name: c, quantity: member n Mz max, reference: 1, tolerance: 1}]\n",
           "checks[0].quantity");
   }
+
+  TEST_CASE("a member starting on another member shares its node there") {
+    // A post standing on the middle of a simply supported beam (span L, E I) carries a load P
+    // from its top into the beam: the beam takes P at midspan, deflecting P L^3 / (48 E I)
+    // there, the supports P / 2 each, and the top moves down P h / (E A) more (the post's
+    // shortening). Euler-Bernoulli elements are exact for point loads: round-off only.
+    constexpr double E = 210e9, I = 8356e-8, A = 53.8e-4, L = 6, h = 2, P = 30e3;
+    for (const std::string from : {"front@0.5", "{member: front, at: 0.5}"}) {
+      std::ostringstream d;
+      d.precision(17);
+      d << "model: {dimension: planar}\n"
+        << "materials: [{name: steel, E: " << E << ", nu: 0.3}]\n"
+        << "sections: [{name: s, shape: general, A: " << A << ", I: " << I
+        << ", J: 1e-6, depth: 0.3}]\n"
+        << "nodes: [{name: A, at: [0, 0]}, {name: B, at: [" << L << ", 0]}, {name: C, at: ["
+        << L / 2 << ", " << h << "]}]\n"
+        << "members:\n"
+        << "  - {name: front, from: A, to: B, section: s, elements: 3}\n"
+        << "  - {name: post, from: " << from << ", to: C, section: s, elements: 2}\n"
+        << "supports: [{name: A, at: A, fix: pinned}, {name: B, at: B, fix: [uy]}]\n"
+        << "loads: [{type: point, at: C, fy: " << -P << "}]\n";
+      INFO(from);
+      const Study s = test::solveDeckText(d.str(), "post.yaml");
+      REQUIRE(s.run);
+      const RunResult& run = *s.run;
+      const StaticResult& r = *staticsOf(run.analyses.front());
+      const int mid = run.model->node("front@0.5");
+      const double sag = P * L * L * L / (48 * E * I);
+      CHECK(relError(-r.displacement(mid, 1), sag) < 1e-10);
+      CHECK(relError(-r.displacement(run.model->node("C"), 1), sag + P * h / (E * A)) < 1e-10);
+      CHECK(relError(r.reaction("B", Dof::uy), P / 2) < 1e-10);
+      // The beam is cut at the post: 3 elements and the cut make 4, the post 2.
+      CHECK(run.model->elements().size() == 6);
+    }
+    const DeckError e = test::readingError(
+        "model: {dimension: planar}\n"
+        "materials: [{name: steel, E: 210e9, nu: 0.3}]\n"
+        "sections: [{name: s, shape: general, A: 1e-3, I: 1e-6, J: 1e-6, depth: 0.3}]\n"
+        "nodes: [{name: A, at: [0, 0]}, {name: B, at: [6, 0]}, {name: C, at: [3, 2]}]\n"
+        "members:\n"
+        "  - {name: post, from: front@0.5, to: C, section: s, elements: 2}\n"
+        "  - {name: front, from: A, to: B, section: s, elements: 3}\n",
+        "bad.yaml");
+    CHECK(std::string(e.what()).find("no member named 'front' before this one") !=
+          std::string::npos);
+  }
 }

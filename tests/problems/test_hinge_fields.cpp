@@ -1,7 +1,8 @@
 // Fields next to a hinge: a Gerber beam (clamped, hinged, propped) under a uniform load
 // against its closed form along both elements, the two rotations at the hinge as check
 // quantities, in results.json and in the summary, and the hinge's missing rotation as bad
-// input; and an element released at one end only, against the condensation by hand.
+// input; an element released at one end only, against the condensation by hand; and a
+// frame's hinged joint, each member end's rotation by its member.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -227,5 +228,43 @@ TEST_SUITE("hinge fields") {
     CHECK(std::abs(leftQuarter[rz] - g.leftRotation(0.75 * h)) <= 1e-12 * thetaScale);
     CHECK(std::abs(rightQuarter[uy] - g.rightDeflection(1.25 * h)) <= 1e-12 * wScale);
     CHECK(std::abs(rightQuarter[rz] - g.rightRotation(1.25 * h)) <= 1e-12 * thetaScale);
+  }
+
+  // A frame's hinged joint: two clamped members meeting at a hinge under a load there, each a
+  // cantilever carrying half the load (equal tip deflections by symmetry), so each end turns
+  // by (P/2) L^2 / (2 EI), the two in opposite senses; results.json names each by its member.
+  TEST_CASE("each member end at a hinged joint is reported by its member") {
+    constexpr double kE = 210e9, kI = 8356e-8, kL = 3, kP = 20e3;
+    std::ostringstream d;
+    d.precision(17);
+    d << "model: {dimension: planar}\n"
+      << "materials: [{name: steel, E: " << kE << ", nu: 0.3}]\n"
+      << "sections: [{name: beam, shape: general, A: 53.8e-4, I: " << kI
+      << ", J: 1e-6, depth: 0.3}]\n"
+      << "nodes: [{name: A, at: [0, 0]}, {name: B, at: [" << kL << ", 0]}, {name: C, at: ["
+      << 2 * kL << ", 0]}]\n"
+      << "members:\n"
+      << "  - {name: west, from: A, to: B, section: beam, elements: 3}\n"
+      << "  - {name: east, from: B, to: C, section: beam, elements: 3}\n"
+      << "supports: [{name: A, at: A, fix: clamped}, {name: C, at: C, fix: clamped}]\n"
+      << "hinges: [{at: B}]\n"
+      << "loads: [{type: point, at: B, fy: " << -kP << "}]\n";
+    const Study s = test::solveDeckText(d.str(), "hinged.yaml");
+    const auto runs = test::runsOf(s);
+    REQUIRE(runs.size() == 1);
+    const Json doc = runJson(*runs.front());
+    const Json& B = doc["analyses"][0]["displacements"]["B"];
+    INFO(B.dump());
+    // Euler-Bernoulli elements under nodal loads are exact: round-off only (1e-10 leaves room).
+    const double theta = (kP / 2) * kL * kL / (2 * kE * kI);
+    REQUIRE(B.contains("rz_west_end"));
+    REQUIRE(B.contains("rz_east_start"));
+    CHECK(B["rz_west_end"].get<double>() == doctest::Approx(-theta).epsilon(1e-10));
+    CHECK(B["rz_east_start"].get<double>() == doctest::Approx(theta).epsilon(1e-10));
+    // A line's left and right name one member end of several at a joint: not given in a frame.
+    CHECK_FALSE(B.contains("rz_left"));
+    CHECK_FALSE(B.contains("rz_right"));
+    CHECK(B["uy"].get<double>() ==
+          doctest::Approx(-(kP / 2) * kL * kL * kL / (3 * kE * kI)).epsilon(1e-10));
   }
 }

@@ -148,6 +148,31 @@ def test_torsion_of_two_disks(tmp_path):
     assert frequencies[1] == pytest.approx(f, rel=1e-11)
 
 
+def test_spring_force_of_a_propped_cantilever(tmp_path):
+    # A cantilever (EI, L) propped at its tip by a spring of k = 3 EI / L^3, the tip stiffness:
+    # the spring takes half the tip load P (compatibility), exact with Hermite elements but for
+    # round-off.
+    E, I, L, P = 210e9, 8356e-8, 4.0, 10e3
+    k = 3 * E * I / L**3
+    deck = tmp_path / "prop.yaml"
+    deck.write_text(
+        "model: {dimension: planar}\n"
+        f"materials: [{{name: steel, E: {E!r}, nu: 0.3}}]\n"
+        f"sections: [{{name: b, shape: general, A: 5e-3, I: {I!r}, J: 1e-6, depth: 0.3}}]\n"
+        f"nodes: [{{name: A, at: [0, 0]}}, {{name: B, at: [{L!r}, 0]}}]\n"
+        "members: [{name: beam, from: A, to: B, section: b, elements: 2}]\n"
+        "supports: [{name: A, at: A, fix: clamped}]\n"
+        f"springs: [{{name: prop, at: B, dof: uy, k: {k!r}}}]\n"
+        f"loads: [{{type: point, at: B, fy: {-P!r}}}]\n")
+    run = beamrotor.solve(deck)
+    static = run.results["analyses"][0]
+    assert static["springs"]["prop"]["fy"] == pytest.approx(P / 2, rel=EXACT)
+    table = run.tables["static"]["springs"]
+    assert list(table["spring"]) == ["prop"]
+    assert table["force"][0] == pytest.approx(P / 2, rel=EXACT)
+    assert run.units["static"]["springs"]["force"] == "N"
+
+
 def numbers_of(run):
     """A run's results and tables without the times it took, tables as plain lists."""
     def untimed(x):

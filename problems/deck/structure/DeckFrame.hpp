@@ -19,6 +19,10 @@ struct DeckJoint {
   std::string name;
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   DeckPlace place;
+  /// A joint a member starts or ends at on another member (`from: front@0.5`): that member
+  /// (index into DeckFrame::members) and the fraction of its length; -1 for a node.
+  int member = -1;
+  double fraction = 0;
 };
 
 /// A member between two joints; its segment (same index) holds name, section and mesh.

@@ -96,7 +96,8 @@ void readSprings(Context& c) {
   auto springs = block(c, "springs");
   if (!springs) return;
   std::vector<std::string> names;
-  for (const Field& f : springs->items()) {
+  const std::vector<Field> items = springs->items();
+  for (const Field& f : items) {
     f.allowOnly({"name", "at", "to", "dof", "k", "c"}, "a spring");
     DeckSpring s;
     s.place = f.place();
@@ -104,6 +105,11 @@ void readSprings(Context& c) {
     if (auto n = f.get("name")) {
       s.name = n->name();
       claimName(*n, s.name, names, "a spring");
+      // Outputs and `reaction NAME DOF` report a spring's force by its name, as a support's.
+      for (const DeckSupport& support : c.deck.supports)
+        if (support.name == s.name)
+          n->fail("there is already a support named '" + s.name +
+                  "'; a spring's force is reported by its name, so give it another");
     }
     if (auto to = f.get("to")) {
       const DeckPoint& q = c.point(*to);
@@ -119,6 +125,14 @@ void readSprings(Context& c) {
     if (s.k == 0 && s.c == 0) k.fail("a spring needs a positive stiffness k (or damping c)");
     c.deck.springs.push_back(std::move(s));
   }
+  // A spring without a name goes by spring<N> (springName): no named one may take it.
+  for (std::size_t i = 0; i < c.deck.springs.size(); ++i)
+    if (!c.deck.springs[i].name.empty())
+      for (std::size_t j = 0; j < c.deck.springs.size(); ++j)
+        if (c.deck.springs[j].name.empty() && springName(c.deck, j) == c.deck.springs[i].name)
+          items[i].require("name").fail("spring " + std::to_string(j + 1) +
+                                        " has no name and goes by '" + c.deck.springs[i].name +
+                                        "'; name this one otherwise");
 }
 
 /// The support holding dof d at point p, if any (in a line model, any point at p's place).

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/ReaderContext.hpp"
@@ -103,6 +104,8 @@ std::array<std::vector<Dof>, 2> readReleases(const Context& c, const Field& f) {
   return out;
 }
 
+int memberEnd(Context& c, const Field& f);
+
 double readMembers(Context& c) {
   const Field block = c.root.require("members");
   std::vector<std::string> names;
@@ -118,8 +121,8 @@ double readMembers(Context& c) {
     claimName(nf, s.name, names, "a member");
     DeckMember m;
     m.place = f.place();
-    m.from = jointIndex(c, f.require("from"));
-    m.to = jointIndex(c, f.require("to"));
+    m.from = memberEnd(c, f.require("from"));
+    m.to = memberEnd(c, f.require("to"));
     if (m.from == m.to) f.require("to").fail("a member joins two different nodes");
     const Eigen::Vector3d axis =
         c.deck.frame->joints[m.to].x - c.deck.frame->joints[m.from].x;
@@ -174,6 +177,48 @@ std::pair<int, double> memberPlace(const Context& c, const Field& f,
                        " m long; at_length lies in [0, " + formatNumber(L) + "], got " +
                        formatNumber(value));
   return {m, fraction};
+}
+
+/// The joint a member's `from:` or `to:` names: a node, or a place on a member listed before
+/// it, `{member: front, at: 0.5}` (or at_length) or `front@0.5`: its end node, or inside it a
+/// joint of its own named "front@0.5", where that member is cut and shares its node.
+int memberEnd(Context& c, const Field& f) {
+  std::pair<int, double> place{-1, 0};
+  if (f.isMap()) {
+    place = memberPlace(c, f, {});
+  } else if (f.isScalar() && f.text().find('@') != std::string::npos) {
+    const std::string text = f.text();
+    const std::string host = text.substr(0, text.find('@'));
+    const auto& segments = c.deck.segments;
+    std::vector<std::string> names;
+    for (const DeckSegment& s : segments) names.push_back(s.name);
+    const auto it = std::find(names.begin(), names.end(), host);
+    if (it == names.end())
+      f.fail("no member named '" + host + "' before this one" + didYouMean(host, names) +
+             " (a member may start or end on a member listed before it: " + joinNames(names) +
+             ")");
+    char* end = nullptr;
+    const std::string digits = text.substr(text.find('@') + 1);
+    const double fraction = std::strtod(digits.c_str(), &end);
+    if (digits.empty() || *end != '\0' || !(fraction >= 0 && fraction <= 1))
+      f.fail("expected MEMBER@FRACTION with a fraction of the member's length in [0, 1] (e.g. " +
+             host + "@0.5), got '" + text + "'");
+    place = {int(it - names.begin()), fraction};
+  } else {
+    return jointIndex(c, f);
+  }
+  const auto [m, fraction] = place;
+  auto& joints = c.deck.frame->joints;
+  const DeckMember& host = c.deck.frame->members[m];
+  if (fraction <= kEndTolerance) return host.from;
+  if (fraction >= 1 - kEndTolerance) return host.to;
+  const std::string name = placeName(c, m, fraction);
+  for (std::size_t j = 0; j < joints.size(); ++j)
+    if (joints[j].name == name) return int(j);
+  const Eigen::Vector3d x = joints[host.from].x + fraction * (joints[host.to].x - joints[host.from].x);
+  c.deck.points.push_back({name, 0, f.place()});
+  joints.push_back({name, x, f.place(), m, fraction});
+  return int(joints.size()) - 1;
 }
 
 /// Registers the place (a point and, inside the member, a station) unless it exists.

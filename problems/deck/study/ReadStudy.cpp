@@ -209,6 +209,44 @@ void requireMass(const Context& c, const Field& f, const std::string& type) {
   f.fail("a " + type + " analysis needs mass: give the materials a density rho or add masses");
 }
 
+void requireReactionTarget(const Deck& deck, const Quantity& q, const Field& f) {
+  const std::string dof(dofName(q.dof));
+  const auto actsAlong = [&](const std::string& what, const std::vector<Dof>& dofs) {
+    std::vector<std::string> along;
+    for (Dof d : dofs) {
+      if (d == q.dof) return;
+      along.emplace_back(dofName(d));
+    }
+    f.fail(what + " '" + q.target + "' acts along " + joinNames(along) + " only, not " + dof);
+  };
+  std::vector<std::string> names;
+  for (const DeckSupport& s : deck.supports) {
+    names.push_back(s.name);
+    if (s.name != q.target) continue;
+    std::vector<std::string> held;
+    for (const auto& [d, v] : s.dofs) {
+      if (d == q.dof) return;
+      held.emplace_back(dofName(d));
+    }
+    f.fail("support '" + q.target + "' does not hold " + dof + " (it holds " + joinNames(held) +
+           "), so its reaction there is zero by definition");
+  }
+  for (std::size_t i = 0; i < deck.springs.size(); ++i) {
+    names.push_back(springName(deck, i));
+    if (names.back() == q.target) return actsAlong("spring", {deck.springs[i].dof});
+  }
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    names.push_back(b.name);
+    if (b.name == q.target) return actsAlong("bearing", {Dof::uy, Dof::uz});
+  }
+  for (const DeckContact& c : deck.contacts) {
+    names.push_back(c.name);
+    if (c.name == q.target) return actsAlong("contact", {c.dof});
+  }
+  f.fail("no support, spring, bearing or contact named '" + q.target + "'" +
+         didYouMean(q.target, names) + " (" + joinNames(names) + ")");
+}
+
 std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
                             const std::optional<Field>& analysisField, bool applicable) {
   const Deck& deck = c.deck;
@@ -236,26 +274,7 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
   }
 
   // 2. The names and dofs it refers to.
-  if (q.kind == Quantity::Kind::reaction) {
-    std::vector<std::string> names;
-    const DeckSupport* support = nullptr;
-    for (const DeckSupport& s : deck.supports) {
-      if (s.name == q.target) support = &s;
-      names.push_back(s.name);
-    }
-    if (!support)
-      f.fail("no support named '" + q.target + "'" + didYouMean(q.target, names) +
-             " (supports: " + joinNames(names) + ")");
-    std::vector<std::string> held;
-    bool holds = false;
-    for (const auto& [d, v] : support->dofs) {
-      held.emplace_back(dofName(d));
-      holds = holds || d == q.dof;
-    }
-    if (!holds)
-      f.fail("support '" + q.target + "' does not hold " + std::string(dofName(q.dof)) +
-             " (it holds " + joinNames(held) + "), so its reaction there is zero by definition");
-  }
+  if (q.kind == Quantity::Kind::reaction) requireReactionTarget(deck, q, f);
   if (q.kind == Quantity::Kind::displacement) {
     std::vector<std::string> names;
     for (const DeckPoint& p : deck.points) names.push_back(p.name);

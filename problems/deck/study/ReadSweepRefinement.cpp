@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/parse/Suggest.hpp"
@@ -23,8 +24,7 @@ void requireNames(const Field& qf, const Quantity& q, const Deck& deck, const De
   };
   switch (q.kind) {
     case Quantity::Kind::reaction:
-      for (const DeckSupport& s : deck.supports) names.push_back(s.name);
-      return require("support");
+      return reader::requireReactionTarget(deck, q, qf);
     case Quantity::Kind::displacement:
       for (const DeckPoint& p : deck.points) names.push_back(p.name);
       return require("point");

@@ -26,6 +26,10 @@ inline constexpr const char* kSweepCsv = "sweep.csv";
 inline std::string fieldsCsv(const std::string& stem) {
   return stem + "_fields.csv";
 }
+/// Statics of a model with springs or bearings: the force each exerts on the structure.
+inline std::string springsCsv(const std::string& stem) {
+  return stem + "_springs.csv";
+}
 /// Statics with load cases: one row per case or combination and reported value.
 inline std::string casesCsv(const std::string& stem) {
   return stem + "_cases.csv";

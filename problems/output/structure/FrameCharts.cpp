@@ -7,7 +7,10 @@
 #include <numeric>
 #include <sstream>
 
+#include "fem/assembly/Recovery.hpp"
+#include "fem/model/LineElement.hpp"
 #include "problems/output/files/ChartParts.hpp"
+#include "problems/output/structure/ModeShapes.hpp"
 
 namespace beamrotor {
 
@@ -513,6 +516,92 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
   body << "  unset multiplot\n";
   return {chartName, "Envelope of the bending moments over the load combinations", width,
           height, body.str(), data};
+}
+
+ChartScript frameShapesChart(const std::string& caption, const std::string& chartName,
+                             const Model& model, const std::vector<Mode>& modes,
+                             const std::vector<std::string>& titles, bool planar) {
+  constexpr double kShapeShare = 0.12;  // of the frame's size: the largest translation drawn
+  const Coordinates coordinates(planar);
+  const Extent extent = extentOf(model);
+  const std::size_t panels = std::min({modes.size(), titles.size(), kShapePanels});
+
+  // 1. How finely to sample: kIntervalsPerElement pieces per element while every panel stays
+  //    within its share of kOutlinePoints, else the element ends, else the member ends.
+  std::size_t elements = 0, memberCount = model.members().size();
+  for (const auto& [name, list] : model.members()) elements += list.size();
+  const std::size_t budget = kOutlinePoints / std::max<std::size_t>(panels, 1);
+  const Detail detail = elements * (kIntervalsPerElement + 1) <= budget ? Detail::stations
+                        : elements + memberCount <= budget              ? Detail::elementEnds
+                                                                        : Detail::memberEnds;
+
+  // 2. Each shape's datablock: per member one curve of (undeformed, deformed) places.
+  std::string data;
+  std::vector<std::string> names;
+  for (std::size_t m = 0; m < panels; ++m) {
+    const NodalField shape = displayModeShape(model, modes[m].shape);
+    Datablock block("$shape" + std::to_string(m + 1));
+    const auto place = [&](int element, double s) {
+      const auto& line = static_cast<const LineElement&>(*model.elements()[element]);
+      const auto u = displacementAlong(line, shape, s, SpanLoad::none);
+      const Eigen::Vector3d x = placeOnElement(model, element, s);
+      block.line(coordinates.text(x) + "," +
+                 coordinates.text(x + kShapeShare * extent.size * Eigen::Vector3d(u[0], u[1], u[2])));
+    };
+    for (const auto& [name, list] : model.members()) {
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const bool first = i == 0, last = i + 1 == list.size();
+        if (detail == Detail::stations) {
+          for (int k = first ? 0 : 1; k <= kIntervalsPerElement; ++k)
+            place(list[i], double(k) / kIntervalsPerElement);
+          continue;
+        }
+        if (first) place(list[i], 0);
+        if (detail == Detail::elementEnds || last) place(list[i], 1);
+      }
+      block.endCurve();
+    }
+    data += block.finished();
+    names.push_back(block.name());
+  }
+
+  // 3. The panels: up to three across, the shapes in rows.
+  const int columns = int(std::min<std::size_t>(panels, 3));
+  const int rows = int((panels + 2) / 3);
+  const int width = planar ? 500 * std::max(columns, 2) : 560 * std::max(columns, 2);
+  const int height = 80 + rows * (planar ? 420 : 460);
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(std::max(rows, 1), std::max(columns, 1), caption, width, height,
+                      planar ? 30 : 80)
+       << "  unset key\n  set grid\n"
+       << axesSetup(planar, extent.low, extent.high, extent.size);
+  if (!planar) {
+    // Every panel at the same scale and place (gnuplot's x and y are global x and z), the view
+    // a little smaller than the static chart's so that a panel's lower neighbour keeps clear.
+    const double pad = 0.2 * extent.size;
+    body << "  set view 64, 28, 0.8\n  set xrange [" << number(extent.low.x() - pad) << ":"
+         << number(extent.high.x() + pad) << "]\n  set yrange [" << number(extent.low.z() - pad)
+         << ":" << number(extent.high.z() + pad) << "]\n";
+  }
+  const std::string first = coordinates.columns(),
+                    second = coordinates.columns(1 + int(coordinates.count()));
+  for (std::size_t m = 0; m < panels; ++m) {
+    body << "  set title " << gnuplotText(titles[m]) << "\n";
+    if (m == 0 && model.namedNodes().size() <= kJointLabels)
+      for (const auto& [name, node] : model.namedNodes())
+        body << "  set label " << gnuplotText(name) << " at "
+             << coordinates.text(model.nodes()[node], ", ")
+             << " offset 0.6,0.6 textcolor rgb '#303030'\n";
+    body << plotOf(planar, {names[m] + " using " + first +
+                                " with lines linewidth 1.5 dashtype 2 linecolor rgb 'gray55'",
+                            names[m] + " using " + second + " with lines linewidth 2.5 " +
+                                colour(m % 6)})
+         << "  unset label\n";
+  }
+  body << "  unset multiplot\n";
+  return {chartName, "Mode or buckling shapes of the frame, each over its outline", width, height,
+          body.str(), data};
 }
 
 }  // namespace beamrotor

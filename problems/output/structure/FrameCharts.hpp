@@ -19,6 +19,7 @@
 #include "fem/assembly/MemberEnvelope.hpp"
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 #include "problems/output/structure/LineSampling.hpp"
 
@@ -56,5 +57,17 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
                                const Model& model,
                                const std::vector<std::vector<EnvelopeStation>>& envelope,
                                const std::vector<std::string>& names, bool planar);
+
+/// Mode or buckling shapes of a frame (each scaled to a largest nodal translation of 1,
+/// displayModeShape): one panel per shape, at most kShapePanels, the deformed frame (each
+/// element sampled by its own interpolation, its translation drawn at kShapeShare of the
+/// frame's size) over the outline, planar frames in their plane and 3d frames in the static
+/// chart's 3d view; each panel titled by `titles[i]`. The named joints are labelled on the
+/// first panel when there are at most kJointLabels. Bounded as frameChart: every panel draws at
+/// most kOutlinePoints / panels places.
+inline constexpr std::size_t kShapePanels = 6;
+ChartScript frameShapesChart(const std::string& caption, const std::string& chartName,
+                             const Model& model, const std::vector<Mode>& modes,
+                             const std::vector<std::string>& titles, bool planar);
 
 }  // namespace beamrotor

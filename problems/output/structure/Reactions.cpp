@@ -15,8 +15,12 @@ std::string_view reactionUnit(Dof d) {
 }
 
 std::vector<SupportReactions> reactionsBySupport(const StaticResult& result) {
+  return forcesByName(result.reactions);
+}
+
+std::vector<SupportReactions> forcesByName(const std::vector<ReactionComponent>& forces) {
   std::vector<SupportReactions> grouped;
-  for (const ReactionComponent& r : result.reactions) {
+  for (const ReactionComponent& r : forces) {
     auto support = std::find_if(grouped.begin(), grouped.end(),
                                 [&](const SupportReactions& s) { return s.support == r.support; });
     if (support == grouped.end()) support = grouped.insert(grouped.end(), {r.support, {}});

@@ -26,5 +26,7 @@ struct SupportReactions {
 
 /// Supports in the order they first appear in result.reactions (the model's support order).
 std::vector<SupportReactions> reactionsBySupport(const StaticResult& result);
+/// The same for any such forces, e.g. those of springs and bearings (elementForces).
+std::vector<SupportReactions> forcesByName(const std::vector<ReactionComponent>& forces);
 
 }  // namespace beamrotor

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fem/modal/RigidMotion.hpp"
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/structure/Charts.hpp"
+#include "problems/output/structure/FrameCharts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 #include "problems/output/structure/VtkWriter.hpp"
@@ -31,12 +33,14 @@ CsvTable bucklingFactorsTable(const std::string& title, const BucklingResult& r)
   return t;
 }
 
-ModalResult bucklingShapes(const BucklingResult& r) {
+ModalResult bucklingShapes(const Model& model, const BucklingResult& r) {
   ModalResult out;
   for (const BucklingMode* b : allModes(r)) {
     Mode m;
     m.shape = b->shape;
     m.description = "load factor " + number(b->factor) + (b->factor < 0 ? " (load reversed)" : "");
+    if (!model.members().empty())
+      m.description += ", " + describeRigidMotion(rigidMotionShares(model, b->shape), "motion");
     out.modes.push_back(std::move(m));
   }
   return out;
@@ -67,7 +71,6 @@ Json bucklingJson(const AnalysisOutcome& a) {
 }
 
 Json secondOrderJson(const SecondOrderResult& r) {
-  const NodalField& u1 = r.firstOrder.displacement;
   Json out = Json::object();
   // No compression: no critical load (null rather than an infinite number).
   if (std::isfinite(r.criticalFactor))
@@ -79,14 +82,15 @@ Json secondOrderJson(const SecondOrderResult& r) {
   out["moment_amplification"] = r.momentAmplification;
   out["stress_amplification"] = r.stressAmplification;
   out["iterations"] = r.iterations;
-  out["first_order"] = {{"max_translation", u1.leftCols(3).cwiseAbs().maxCoeff()},
-                        {"max_rotation", u1.rightCols(3).cwiseAbs().maxCoeff()}};
+  out["first_order"] = {{"max_translation", r.firstOrderTranslation},
+                        {"max_rotation", r.firstOrderRotation}};
   out["first_order"]["reactions"] = reactionsJson(r.firstOrder);
   return out;
 }
 
 void writeBucklingFiles(const PreparedAnalysis& p, const Model& model,
-                        const std::filesystem::path& dir, const std::string& caption, bool charts) {
+                        const std::filesystem::path& dir, const std::string& caption, bool charts,
+                        bool planar) {
   const BucklingResult& r = *resultOf<BucklingResult>(*p.outcome);
   p.modes->write(dir / bucklingFactorsCsv(p.stem));
   p.shapes->write(dir / shapesCsv(p.stem));
@@ -100,10 +104,18 @@ void writeBucklingFiles(const PreparedAnalysis& p, const Model& model,
   }
   writePvd(dir / collectionPvd(p.stem), entries);
   if (!charts || p.shapes->rowCount() == 0) return;
-  const ModalResult shapes = bucklingShapes(r);
+  const ModalResult shapes = bucklingShapes(model, r);
   std::vector<std::string> labels;
-  for (std::size_t i = 0; i < std::min<std::size_t>(4, shapes.modes.size()); ++i)
-    labels.push_back(shapes.modes[i].description);
+  for (std::size_t i = 0; i < shapes.modes.size(); ++i)
+    labels.push_back(model.members().empty() ? shapes.modes[i].description
+                                             : "mode " + std::to_string(i + 1) + ": " +
+                                                   shapes.modes[i].description);
+  if (!model.members().empty()) {
+    drawChart(dir, frameShapesChart(caption, shapesChart(p.stem), model, shapes.modes, labels,
+                                    planar));
+    return;
+  }
+  labels.resize(std::min<std::size_t>(4, labels.size()));
   drawChart(dir, labelledShapesChart(caption, shapesChart(p.stem), model, shapes.modes, labels,
                                      *p.shapes, shapesCsv(p.stem)));
 }

@@ -17,8 +17,10 @@ namespace beamrotor {
 CsvTable bucklingFactorsTable(const std::string& title, const BucklingResult& r);
 
 /// The buckling modes (positive factors, then the reversed ones) as modes for the shape
-/// table, the VTK files and the chart; each description names its factor.
-ModalResult bucklingShapes(const BucklingResult& r);
+/// table, the VTK files and the chart; each description names its factor and, in a frame, the
+/// rigid motion the shape mostly is (describeRigidMotion with a unit mass per translation:
+/// "load factor 4.2, sway ux, 97 % of the motion").
+ModalResult bucklingShapes(const Model& model, const BucklingResult& r);
 
 /// results.json entry: {type, name, load_factors [...], reversed_load_factors [...], modes
 /// [{mode, load_factor}], reference {reactions}, time_s, files}.
@@ -32,7 +34,9 @@ Json secondOrderJson(const SecondOrderResult& r);
 
 /// Writes a buckling analysis' files into dir (charts when asked); p.modes holds its
 /// bucklingFactorsTable, p.shapes the modeShapesTable of bucklingShapes.
+/// A frame's chart is frameShapesChart (`planar`: a planar frame's).
 void writeBucklingFiles(const PreparedAnalysis& p, const Model& model,
-                        const std::filesystem::path& dir, const std::string& caption, bool charts);
+                        const std::filesystem::path& dir, const std::string& caption, bool charts,
+                        bool planar);
 
 }  // namespace beamrotor

@@ -1,8 +1,11 @@
 // The CSV tables of one run (see Tables.hpp).
 #include "problems/output/structure/Tables.hpp"
 
+#include "problems/output/structure/Reactions.hpp"
+
 #include <optional>
 
+#include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "problems/output/structure/ModeShapes.hpp"
 
@@ -40,6 +43,23 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
   return table;
 }
 
+CsvTable springForcesTable(const std::string& title, const Model& model,
+                           const StaticResult& statics) {
+  CsvTable table(title, {{"spring", ""}, {"at", ""}, {"component", ""}, {"force", "N"},
+                         {"moment", "N m"}});
+  for (const ReactionComponent& f : statics.elementForces) {
+    std::string at = model.nameOf(f.node);
+    if (at.empty()) at = "node " + std::to_string(f.node);
+    std::vector<CsvCell> row{f.support, at, std::string(reactionName(f.dof))};
+    if (isRotation(f.dof))
+      row.insert(row.end(), {std::monostate{}, f.value});
+    else
+      row.insert(row.end(), {f.value, std::monostate{}});
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
 CsvTable modesTable(const std::string& title, const ModalResult& modal) {
   std::vector<CsvColumn> columns{{"mode", ""}, {"frequency", "Hz"}, {"description", ""}};
   for (int k = 0; k < 3; ++k)
@@ -65,7 +85,39 @@ std::string modeShapeColumn(int mode, Dof dof) {
   return "mode" + std::to_string(mode) + "_" + std::string(dofName(dof));
 }
 
+namespace {
+
+/// A frame's shapes: per member (its rows together, from its start) kIntervalsPerElement
+/// pieces of each element, at the places' coordinates x, y, z, each mode's translations.
+CsvTable frameShapesTable(const std::string& title, const Model& model, const ModalResult& modal) {
+  std::vector<CsvColumn> columns{{"member", ""}, {"x", "m"}, {"y", "m"}, {"z", "m"}};
+  std::vector<NodalField> shapes;
+  for (std::size_t m = 0; m < modal.modes.size(); ++m) {
+    shapes.push_back(displayModeShape(model, modal.modes[m].shape));
+    for (int k = 0; k < 3; ++k) columns.push_back({modeShapeColumn(int(m) + 1, kAllDofs[k]), ""});
+  }
+  CsvTable table(title, columns);
+  for (const auto& [name, elements] : model.members())
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      const auto& line = static_cast<const LineElement&>(*model.elements()[elements[i]]);
+      for (int k = i == 0 ? 0 : 1; k <= kIntervalsPerElement; ++k) {
+        const double s = double(k) / kIntervalsPerElement;
+        const Eigen::Vector3d x = placeOnElement(model, elements[i], s);
+        std::vector<CsvCell> row{name, x.x(), x.y(), x.z()};
+        for (const NodalField& shape : shapes) {
+          const auto u = displacementAlong(line, shape, s, SpanLoad::none);
+          row.insert(row.end(), {u[0], u[1], u[2]});
+        }
+        table.addRow(std::move(row));
+      }
+    }
+  return table;
+}
+
+}  // namespace
+
 CsvTable modeShapesTable(const std::string& title, const Model& model, const ModalResult& modal) {
+  if (!model.members().empty()) return frameShapesTable(title, model, modal);
   // Translations of every mode; a torsional mode also its rotation (largest 1), which is
   // what its chart draws.
   std::vector<CsvColumn> columns{{"x", "m"}};

@@ -15,13 +15,22 @@ namespace beamrotor {
 /// (Pa, largest |normal stress| of the section); element (index into model.elements()).
 CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticStation>& stations);
 
+/// One row per force component of a spring or bearing (StaticResult::elementForces): spring
+/// (its name), at (its point, or the node's number), component (fx .. mz), and the force (N)
+/// or moment (N m) it exerts on the structure, the other cell empty.
+CsvTable springForcesTable(const std::string& title, const Model& model,
+                           const StaticResult& statics);
+
 /// One row per mode: mode (1-based), frequency (Hz), description, effective masses (kg) and
 /// their ratios to the total mass along ux uy uz (0 where the total is 0), energy shares.
 CsvTable modesTable(const std::string& title, const ModalResult& modal);
 
 /// One row per station along the line: x (m), then for every mode k columns mode<k>_ux,
 /// mode<k>_uy, mode<k>_uz: translations of the shape scaled by displayModeShape; a torsional
-/// mode (isTorsionalShape) also mode<k>_rx (or _ry, _rz: its chartedDof), largest 1.
+/// mode (isTorsionalShape) also mode<k>_rx (or _ry, _rz: its chartedDof), largest 1. A frame's
+/// table instead has one row per place along each member (kIntervalsPerElement pieces of
+/// each element, the member's rows together from its start): member, its coordinates x, y, z
+/// (m), and each mode's mode<k>_ux, _uy, _uz (displayModeShape's scale).
 CsvTable modeShapesTable(const std::string& title, const Model& model, const ModalResult& modal);
 
 /// Name of a mode-shape column, e.g. "mode2_uy", "mode3_rx".
