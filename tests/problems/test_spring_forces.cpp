@@ -203,10 +203,10 @@ TEST_SUITE("spring forces") {
     REQUIRE(rows.size() == 2);
     const auto& header = rows.front();
     // Text cells are quoted.
-    CHECK(rows[1][test::csvColumn(header, "spring")] == "\"prop\"");
-    CHECK(rows[1][test::csvColumn(header, "at")] == "\"B\"");
-    CHECK(rows[1][test::csvColumn(header, "component")] == "\"fy\"");
-    CHECK(std::stod(rows[1][test::csvColumn(header, "force [N]")]) ==
+    CHECK(rows[1][test::csvColumn(header, "spring")] == "prop");
+    CHECK(rows[1][test::csvColumn(header, "at")] == "B");
+    CHECK(rows[1][test::csvColumn(header, "component")] == "fy");
+    CHECK(std::stod(rows[1][test::csvColumn(header, "force")]) ==
           doctest::Approx(kP / 2).epsilon(kExact));
     std::filesystem::remove_all(dir);
   }
