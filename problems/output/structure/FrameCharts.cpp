@@ -190,6 +190,19 @@ std::string axesSetup(bool planar, const Eigen::Vector3d& low, const Eigen::Vect
   return out;
 }
 
+/// A diagram title's second line when only the `drawn` members of largest |M| among `total`
+/// are drawn (the chart's budget), else nothing. Appended piece by piece: GCC 12 takes
+/// "literal" + a temporary for an overlapping copy (a false -Wrestrict).
+std::string drawnShare(std::size_t drawn, std::size_t total) {
+  if (drawn == 0 || drawn >= total) return {};
+  std::string line = "\n(the ";
+  line += std::to_string(drawn);
+  line += " members of largest |M| among ";
+  line += std::to_string(total);
+  line += ")";
+  return line;
+}
+
 /// Where a moment of component k (Mz or My) of value M is drawn from its place on element
 /// `element`: across the member on its tension side (Mz > 0 stretches the fibres on local -y,
 /// My > 0 those on local +z), `scale` m per N m.
@@ -368,13 +381,7 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   }
   std::string title = planar ? "bending moment M_z" : "bending moments M_z (red), M_y (green)";
   title += " [kN m], drawn on the tension side";
-  if (drawnMembers < members.size() && drawnMembers > 0) {
-    title += "\n(the ";
-    title += std::to_string(drawnMembers);
-    title += " members of largest |M| among ";
-    title += std::to_string(members.size());
-    title += ")";
-  }
+  title += drawnShare(drawnMembers, members.size());
   body << "  set title " << captionText(title) << "\n" << plotOf(planar, clauses)
        << "  unset multiplot\n";
   return {chartName, "Deformed shape and bending moment diagram of the frame", width, height,
@@ -493,13 +500,7 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
     std::string title = "envelope of ";
     title += name == "Mz" ? "M_z" : "M_y";
     title += " over the combinations [kN m]: largest (red), smallest (blue)";
-    if (drawnMembers < members.size() && drawnMembers > 0) {
-      title += "\n(the ";
-      title += std::to_string(drawnMembers);
-      title += " members of largest |M| among ";
-      title += std::to_string(members.size());
-      title += ")";
-    }
+    title += drawnShare(drawnMembers, members.size());
     body << "  set title " << captionText(title) << "\n";
     std::vector<std::string> clauses{outline.name() + " using " + first +
                                      " with lines linewidth 2 linecolor rgb 'gray30'"};
