@@ -64,6 +64,27 @@ std::string governed(const Governed& g, const std::vector<CaseOutcome>& cases,
   return out + "]";
 }
 
+/// The envelope of reactions or of springs' forces, one line per support or spring (the first
+/// kSummarySupports).
+void printEnvelopeForces(std::ostream& out, const std::string& title,
+                         const std::vector<std::pair<ReactionComponent, GovernedRange>>& forces,
+                         const std::vector<CaseOutcome>& cases) {
+  out << "    " << title << " (N, N m):\n";
+  std::string name;
+  std::size_t names = 0;
+  for (const auto& [r, range] : forces) {
+    if (r.support != name) {
+      if (++names > kSummarySupports) break;
+      out << (name.empty() ? "" : "\n") << "      " << padded(r.support, 12);
+      name = r.support;
+    }
+    out << padded(std::string(reactionName(r.dof)) + " " + governed(range.max, cases) + " / " +
+                      governed(range.min, cases),
+                  46);
+  }
+  if (!name.empty()) out << "\n";
+}
+
 /// The envelope over the combinations, each value with the combination that governs it.
 void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
                    const std::vector<CaseOutcome>& cases, const CaseEnvelope& e) {
@@ -74,20 +95,9 @@ void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
     out << "    largest displacement " << governed(e.largestDisplacement, cases, "m") << "\n";
   if (e.largestStress.by >= 0)
     out << "    largest normal stress " << governed(e.largestStress, cases, "MPa", 1e-6) << "\n";
-  out << "    reactions (N, N m):\n";
-  std::string support;
-  std::size_t supports = 0;
-  for (const auto& [r, range] : e.reactions) {
-    if (r.support != support) {
-      if (++supports > kSummarySupports) break;
-      out << (support.empty() ? "" : "\n") << "      " << padded(r.support, 12);
-      support = r.support;
-    }
-    out << padded(std::string(reactionName(r.dof)) + " " + governed(range.max, cases) + " / " +
-                      governed(range.min, cases),
-                  46);
-  }
-  if (!support.empty()) out << "\n";
+  if (!e.reactions.empty() || e.springs.empty())
+    printEnvelopeForces(out, "reactions", e.reactions, cases);
+  if (!e.springs.empty()) printEnvelopeForces(out, "springs and bearings", e.springs, cases);
   if (e.members.empty()) return;
   // The members of the largest bending moments, as the member lines of a case.
   const std::vector<ForceComponent> shown =

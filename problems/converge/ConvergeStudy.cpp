@@ -94,7 +94,7 @@ Deck studyDeck(const Deck& deck, const std::vector<const DeckAnalysis*>& analyse
 std::optional<double> valueIn(const RunResult& run, const Target& t) {
   for (const AnalysisOutcome& a : run.analyses)
     if (a.name == t.analysis->name) try {
-        const double v = measure(t.quantity, a, *run.model);
+        const double v = measure(t.quantity, a, run);
         if (std::isfinite(v)) return v;
       } catch (const std::exception&) {
       }
@@ -247,7 +247,7 @@ ConvergeLevel solveLevel(const Deck& deck, const Quantity& q, int level, int rep
     const SolveCost cost = costOf(a);
     if (r == 0) {
       try {
-        out.value = measure(q, a, *run.model);
+        out.value = measure(q, a, run);
       } catch (const std::logic_error& e) {  // e.g. a point the deck does not name
         throw DeckError(deck.path, kQuantityOption, e.what());
       }

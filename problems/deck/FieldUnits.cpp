@@ -27,6 +27,10 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
       return {dim::length};
     case K::memberForce:  // N, Vy, Vz are forces; T, My, Mz moments
       return {q.property == "N" || q.property.starts_with('V') ? dim::force : dim::moment};
+    case K::sectionProperty:  // A an area, I and It second moments, W moduli (m^3)
+      return {q.property == "A"             ? dim::area
+              : q.property.starts_with('W') ? Dimension::of(3, 0, 0, 0)
+                                            : dim::secondMoment};
     case K::criticalSpeed:
     case K::instabilityOnset:
       return kRpmField;

@@ -1,6 +1,7 @@
 #include "problems/deck/Quantity.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -16,7 +17,7 @@ constexpr const char* kGrammar =
     "expected 'reaction SUPPORT DOF', 'displacement POINT DOF', "
     "'displacement POINT ROTATION left|right', 'frequency N', 'stress max', "
     "'shear max', 'moment max', 'displacement max', 'member NAME N|Vy|Vz|T|My|Mz max|min|maxabs', "
-    "'member NAME deflection max', 'buckling_factor N', 'log_decrement N', 'critical_speed N', "
+    "'member NAME deflection max', 'section NAME PROPERTY', 'buckling_factor N', 'log_decrement N', 'critical_speed N', "
     "'instability_onset', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
@@ -97,6 +98,17 @@ Quantity parseQuantity(const std::string& text) {
     q.kind = Quantity::Kind::memberForce;
     q.property = words[2];
     q.extreme = words[3];
+    return q;
+  }
+  if (head == "section" && words.size() == 3) {
+    q.kind = Quantity::Kind::sectionProperty;
+    q.target = words[1];
+    q.property = words[2];
+    if (std::none_of(std::begin(kSectionProperties), std::end(kSectionProperties),
+                     [&](const char* p) { return q.property == p; }))
+      throw std::invalid_argument("'" + q.property +
+                                  "' is not a section property (A Iy Iz It Wel_y Wel_z Wpl_y "
+                                  "Wpl_z; y-y the strong axis)");
     return q;
   }
   if (head == "frequency" && words.size() == 2) {

@@ -12,6 +12,9 @@
 //   member NAME COMP max|min|maxabs   extreme of a resultant (N Vy Vz T My Mz) along a member
 //   member NAME deflection max   largest deflection of a member from its chord (m)
 //   buckling_factor N         N-th lowest positive load factor of a buckling analysis
+//   section NAME PROPERTY     a cross-section's A, Iy, Iz, It, Wel_y, Wel_z, Wpl_y or Wpl_z in
+//                             the steel tables' axes (y-y strong; m^2, m^4, m^3), from any
+//                             analysis of the beams (MeasureSection.hpp)
 //   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
 //                             interpolated linearly between samples
 // those of the rotor analyses (RotorQuantity.cpp):
@@ -47,6 +50,7 @@ struct Quantity {
     memberForce,
     memberDeflection,
     bucklingFactor,  // buckling analyses
+    sectionProperty,  // any analysis of the beams
     logDecrement,
     criticalSpeed,
     instabilityOnset,
@@ -68,13 +72,18 @@ struct Quantity {
   Side side = Side::node;
   int mode = 1;  ///< frequency, buckling_factor, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
-  std::string property;  ///< rigid_body: which property; memberForce: N, Vy, Vz, T, My, Mz
+  std::string property;  ///< rigid_body: which property; memberForce: N, Vy, Vz, T, My, Mz;
+                         ///< sectionProperty: one of kSectionProperties
   std::string extreme;   ///< memberForce: max, min or maxabs
   double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own
   std::optional<double> crankAngle;  ///< crankSlider `... at PHI deg`: the crank angle (rad)
   std::string text;      ///< as written, for reports
   // Which analyses give it: the rows of problems/deck/AnalysisKinds.hpp say.
 };
+
+/// The properties `section NAME PROPERTY` names, in the steel tables' axes.
+inline constexpr const char* kSectionProperties[] = {"A",     "Iy",    "Iz",    "It",
+                                                     "Wel_y", "Wel_z", "Wpl_y", "Wpl_z"};
 
 /// Parses the phrase; throws std::invalid_argument saying what is wrong and what is allowed.
 /// Names are not checked here (the deck reader knows them).

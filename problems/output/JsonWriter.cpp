@@ -163,16 +163,20 @@ Json governedJson(const Governed& g, const std::vector<CaseOutcome>& cases) {
 }
 
 /// The envelope over the combinations: for each point displacement component (from the cases'
-/// entries) and each reaction component its max and min, for each member resultant the max of
-/// its maxima and the min of its minima along the member, the largest displacement and normal
-/// stress; each with the combination that gives it.
+/// entries), each reaction component and each spring's or bearing's force its max and min, for
+/// each member resultant the max of its maxima and the min of its minima along the member, the
+/// largest displacement and normal stress; each with the combination that gives it.
 Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases,
                   const CaseEnvelope& envelope, const Model& model) {
   Json out = {{"reactions", Json::object()}, {"displacements", Json::object()},
               {"members", Json::object()}};
-  for (const auto& [r, range] : envelope.reactions)
-    out["reactions"][r.support][std::string(reactionName(r.dof))] = {
-        {"max", governedJson(range.max, cases)}, {"min", governedJson(range.min, cases)}};
+  const auto forces = [&](const char* key, const auto& list) {
+    for (const auto& [r, range] : list)
+      out[key][r.support][std::string(reactionName(r.dof))] = {
+          {"max", governedJson(range.max, cases)}, {"min", governedJson(range.min, cases)}};
+  };
+  forces("reactions", envelope.reactions);
+  if (!envelope.springs.empty()) forces("springs", envelope.springs);
   for (const Json& c : caseEntries) {
     if (!c.at("combination").get<bool>()) continue;
     const std::string name = c.at("name").get<std::string>();

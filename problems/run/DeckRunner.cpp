@@ -181,8 +181,9 @@ Check evaluate(const DeckCheck& k, const RunResult& run, const Model& model) {
   c.reason = k.reason;
   for (const AnalysisOutcome& a : run.analyses) {
     if (a.name != k.analysis) continue;
-    if (k.loadCase.empty()) {
-      c.computed = measure(k.quantity, a, model);
+    // A section's figures are the same in every case.
+    if (k.loadCase.empty() || k.quantity.kind == Quantity::Kind::sectionProperty) {
+      c.computed = measure(k.quantity, a, run);
       continue;
     }
     c.quantity += " (case " + k.loadCase + ")";

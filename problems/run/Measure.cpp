@@ -11,6 +11,7 @@
 #include "fem/model/DofMap.hpp"
 #include "problems/deck/AnalysisKinds.hpp"
 #include "problems/run/MeasureRotor.hpp"
+#include "problems/run/MeasureSection.hpp"
 #include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/TransientOutcome.hpp"
 
@@ -80,7 +81,14 @@ double measureMember(const Quantity& q, const LoadedSolution& solution) {
 
 }  // namespace
 
+double measure(const Quantity& q, const AnalysisOutcome& outcome, const RunResult& run) {
+  if (q.kind == Quantity::Kind::sectionProperty)
+    return measureSection(q, *run.model, run.catalogSections);
+  return measure(q, outcome, *run.model);
+}
+
 double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& model) {
+  if (q.kind == Quantity::Kind::sectionProperty) return measureSection(q, model, {});
   if (isRotorResult(outcome)) return measureRotor(q, outcome);
   if (const auto* crank = resultOf<CrankSliderOutcome>(outcome)) return measureCrank(q, *crank);
   if (q.kind == Quantity::Kind::frequency) {

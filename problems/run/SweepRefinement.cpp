@@ -13,7 +13,7 @@ namespace {
 /// The refinement's quantity in one run.
 double measured(const RunResult& run, const DeckSweepRefinement& refine) {
   for (const AnalysisOutcome& a : run.analyses)
-    if (a.name == refine.analysis) return measure(refine.quantity, a, *run.model);
+    if (a.name == refine.analysis) return measure(refine.quantity, a, run);
   throw std::invalid_argument("no analysis '" + refine.analysis + "' in the run");
 }
 

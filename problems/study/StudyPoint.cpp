@@ -140,7 +140,7 @@ StudyRow PointSolver::solve(long long index, const std::vector<double>& values) 
     for (std::size_t k = 0; k < plan_.spec.outputs.size(); ++k) {
       const StudyOutput& o = plan_.spec.outputs[k];
       for (const AnalysisOutcome& a : run.analyses)
-        if (a.name == o.analysis) row.outputs[k] = measure(o.quantity, a, *run.model);
+        if (a.name == o.analysis) row.outputs[k] = measure(o.quantity, a, run);
       if (!std::isfinite(row.outputs[k]))
         throw std::domain_error("output '" + o.text + "' is not a finite number");
     }

@@ -2,7 +2,7 @@
 // cantilever propped by a spring at its tip, under a tip load and a uniform load, against the
 // closed forms of compatibility (the tip deflection of the cantilever under the load and the
 // spring force equals the spring's own stretch); the same in load cases and a combination (the
-// factored sum); a contact's force; a shaft's bearings; and each as it reaches results.json,
+// factored sum) and their envelope over the combinations; a contact's force; a shaft's bearings; and each as it reaches results.json,
 // the springs CSV, the summary and a check quantity (`reaction NAME DOF`).
 #include <doctest/doctest.h>
 
@@ -144,6 +144,52 @@ TEST_SUITE("spring forces") {
         found = true;
       }
     CHECK(found);
+  }
+
+  TEST_CASE("the envelope gives each spring's largest and smallest force and its combination") {
+    // k = 3 EI / L^3: the spring carries P / 2 of a tip load and, of a uniform load q (here
+    // upward, lifting the tip off the spring), 3 q L / 16 pulling down.
+    const std::string deck = cantilever(
+        "springs: [{name: prop, at: B, dof: uy, k: " + number(kTip) + "}]\n",
+        "load_cases:\n"
+        "  - {name: tip, loads: [{type: point, at: B, fy: " + number(-kP) + "}]}\n"
+        "  - {name: lift, loads: [{type: distributed, member: beam, qy: " + number(kQ) + "}]}\n"
+        "combinations:\n"
+        "  - {name: push, factors: {tip: 1.35}}\n"
+        "  - {name: pull, factors: {tip: 1.0, lift: 3.0}}\n");
+    const double tip = kP / 2, lift = -3 * kQ * kL / 16;  // 5000 N and -2250 N
+    CHECK(tip == doctest::Approx(tipLoadSpringForce(kTip, kP)).epsilon(kExact));
+    CHECK(-lift == doctest::Approx(uniformLoadSpringForce(kTip, kQ)).epsilon(kExact));
+    // By hand: push 1.35 * 5000 = 6750 N, pull 5000 - 3 * 2250 = -1750 N.
+    const double push = 1.35 * tip, pull = 1.0 * tip + 3.0 * lift;
+    const Study s = test::solveDeckText(deck, "prop_envelope.yaml");
+    const Json doc = runJson(onlyRun(s));
+    const Json& env = doc["analyses"][0]["envelope"];
+    REQUIRE(env.contains("springs"));
+    const Json& fy = env["springs"]["prop"]["fy"];
+    MESSAGE("envelope of prop fy: " << fy.dump());
+    CHECK(fy["max"]["value"].get<double>() == doctest::Approx(push).epsilon(kExact));
+    CHECK(fy["max"]["case"] == "push");
+    CHECK(fy["min"]["value"].get<double>() == doctest::Approx(pull).epsilon(kExact));
+    CHECK(fy["min"]["case"] == "pull");
+    // The clamp's reaction is enveloped beside it: the load less the spring's share.
+    CHECK(env["reactions"]["A"]["fy"]["max"]["value"].get<double>() ==
+          doctest::Approx(1.35 * (kP - tip)).epsilon(kExact));
+
+    // The summary's envelope lists the spring with both extremes and their combinations.
+    const auto dir = test::scratchDir("spring-envelope");
+    std::ofstream(dir / "prop.yaml") << deck;
+    const auto p = test::runBeamrotor({"solve", (dir / "prop.yaml").string(), "--out",
+                                       (dir / "out").string(), "--charts", "none"});
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    const auto block = p.out.find("envelope over the combinations");
+    REQUIRE(block != std::string::npos);
+    const std::string envelope = p.out.substr(block);
+    MESSAGE(envelope);
+    CHECK(envelope.find("springs and bearings (N, N m):") != std::string::npos);
+    CHECK(envelope.find("prop") != std::string::npos);
+    CHECK(envelope.find("fy 6750 [push] / -1750 [pull]") != std::string::npos);
+    std::filesystem::remove_all(dir);
   }
 
   TEST_CASE("a contact's force is a check quantity: P - 3 EI gap / L^3 once it closes") {

@@ -13,7 +13,7 @@ struct StaticSpec {
   static constexpr std::array answers{
       Quantity::Kind::reaction,    Quantity::Kind::displacement,    Quantity::Kind::maxStress,
       Quantity::Kind::maxShear,    Quantity::Kind::maxMoment,       Quantity::Kind::maxDisplacement,
-      Quantity::Kind::memberForce, Quantity::Kind::memberDeflection};
+      Quantity::Kind::memberForce, Quantity::Kind::memberDeflection, Quantity::Kind::sectionProperty};
   static constexpr bool needsMass = false;
   void read(const reader::Context& c, const Field& f);
   bool secondOrder = false;  ///< equilibrium in the deformed state (fem/stability)
@@ -24,7 +24,7 @@ struct StaticSpec {
 
 struct ModalSpec {
   static constexpr std::string_view deckType = "modal";
-  static constexpr std::array answers{Quantity::Kind::frequency};
+  static constexpr std::array answers{Quantity::Kind::frequency, Quantity::Kind::sectionProperty};
   static constexpr bool needsMass = true;
   void read(const reader::Context& c, const Field& f);
   int modes = 6;
@@ -34,7 +34,8 @@ struct ModalSpec {
 
 struct BucklingSpec {
   static constexpr std::string_view deckType = "buckling";
-  static constexpr std::array answers{Quantity::Kind::bucklingFactor};
+  static constexpr std::array answers{Quantity::Kind::bucklingFactor,
+                                      Quantity::Kind::sectionProperty};
   static constexpr bool needsMass = false;
   void read(const reader::Context& c, const Field& f);
   int modes = 4;

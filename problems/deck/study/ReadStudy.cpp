@@ -291,6 +291,14 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     for (const DeckSegment& s : deck.segments) names.push_back(s.name);
     requireNamed(f, q.target, names, "member");
   }
+  if (q.kind == Quantity::Kind::sectionProperty) {
+    // The sections the beams use: those a run can measure.
+    std::vector<std::string> names;
+    for (const DeckSegment& s : deck.segments)
+      if (s.section && std::find(names.begin(), names.end(), s.section->name) == names.end())
+        names.push_back(s.section->name);
+    requireNamed(f, q.target, names, "section");
+  }
   if (q.kind == Quantity::Kind::maxDisplacement && deck.segments.empty())
     f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
   if (analysis->as<TransientSpec>()) resolveHistoryQuantity(c, q, f, *analysis, applicable);

@@ -20,6 +20,16 @@ void widen(GovernedRange& range, double max, double min, int by) {
   widen(range.min, min, by, false);
 }
 
+/// Widens each of `forces` (one combination's, in the order of every combination's list) by
+/// that combination, k.
+void widen(std::vector<std::pair<ReactionComponent, GovernedRange>>& envelope,
+           const std::vector<ReactionComponent>& forces, int k) {
+  if (envelope.empty())
+    for (const ReactionComponent& r : forces) envelope.push_back({r, {}});
+  for (std::size_t i = 0; i < forces.size() && i < envelope.size(); ++i)
+    widen(envelope[i].second, forces[i].value, forces[i].value, k);
+}
+
 }  // namespace
 
 CaseEnvelope caseEnvelope(const Model& model, const std::vector<CaseOutcome>& cases,
@@ -31,11 +41,8 @@ CaseEnvelope caseEnvelope(const Model& model, const std::vector<CaseOutcome>& ca
     const CaseOutcome& c = cases[k];
     if (!c.combination) continue;
     const StaticExtremes& x = extremes[k];
-    const auto& reactions = c.statics.reactions;
-    if (out.reactions.empty())
-      for (const ReactionComponent& r : reactions) out.reactions.push_back({r, {}});
-    for (std::size_t i = 0; i < reactions.size() && i < out.reactions.size(); ++i)
-      widen(out.reactions[i].second, reactions[i].value, reactions[i].value, k);
+    widen(out.reactions, c.statics.reactions, k);
+    widen(out.springs, c.statics.elementForces, k);
     out.members.resize(x.ranges.size());
     for (std::size_t m = 0; m < x.ranges.size(); ++m)
       for (std::size_t f = 0; f < kForceComponents.size(); ++f)

@@ -1,5 +1,5 @@
 // The envelope of a static analysis' load combinations, computed once for results.json, the
-// summary and the charts: for every reaction component, member resultant, the largest
+// summary and the charts: for every reaction component, spring force, member resultant, the largest
 // displacement and the largest normal stress, the largest and smallest value over the
 // combinations and the combination that gives each. From each combination's own extremes
 // (StaticExtremes: exact along the members, not sampled).
@@ -30,6 +30,8 @@ struct GovernedRange {
 struct CaseEnvelope {
   /// One per reaction component, in the order of the solutions' reaction lists.
   std::vector<std::pair<ReactionComponent, GovernedRange>> reactions;
+  /// The same for the forces of springs, bearings and contacts (StaticResult::elementForces).
+  std::vector<std::pair<ReactionComponent, GovernedRange>> springs;
   /// Per member (Model::members() order), per resultant (kForceComponents order): the largest
   /// of the maxima and the smallest of the minima along it.
   std::vector<std::array<GovernedRange, 6>> members;
