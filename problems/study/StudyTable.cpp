@@ -7,21 +7,11 @@
 #include <limits>
 #include <vector>
 
+#include "problems/output/files/CsvTable.hpp"
+
 namespace beamrotor {
 
 namespace {
-
-/// A CSV cell: bare where it can be (so that NumPy reads "reaction left rz" as a name, not
-/// with its quotes); quoted (quotes doubled) when it holds a comma, a quote, a line break or a
-/// '#' (a comment to NumPy and gnuplot), or begins or ends with a space.
-std::string studyCell(const std::string& text) {
-  if (text.find_first_of(",\"\n\r#") == std::string::npos &&
-      (text.empty() || (text.front() != ' ' && text.back() != ' ')))
-    return text;
-  std::string quoted = "\"";
-  for (char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return quoted + "\"";
-}
 
 void appendNumber(std::string& line, double v) {
   line += ',';
@@ -38,7 +28,7 @@ std::string studyCsvHeader(const StudyPlan& plan) {
   // Appended piece by piece: `"," + temporary` trips GCC 12's false -Wrestrict when inlined.
   const auto appendCell = [&line](const std::string& text) {
     line += ',';
-    line += studyCell(text);
+    line += csvField(text);
   };
   for (const std::string& name : plan.parameterNames) appendCell(name);
   for (const StudyOutput& o : plan.spec.outputs) appendCell(o.text);
@@ -58,7 +48,7 @@ std::string studyCsvRow(const StudyRow& row) {
     line += ',';
     if (row.passed[k] >= 0) line += row.passed[k] ? '1' : '0';
   }
-  return line + "," + studyCell(row.status) + "\n";
+  return line + "," + csvField(row.status) + "\n";
 }
 
 namespace {

@@ -22,15 +22,6 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-/// A text cell or column name as written: bare, unless RFC 4180 needs quotes (a comma, a
-/// quote, a line break) or a reader would take it otherwise (a '#' starts a comment for
-/// NumPy and gnuplot; spaces at either end are trimmed by some readers).
-std::string field(const std::string& text) {
-  const bool plain = text.find_first_of(",\"\n\r#") == std::string::npos &&
-                     (text.empty() || (text.front() != ' ' && text.back() != ' '));
-  return plain ? text : quoted(text);
-}
-
 /// The shortest exact decimal of x into buffer; returns its end.
 char* decimalInto(char (&buffer)[32], double x) {
   if (x == 0) x = 0.0;  // "-0" (from negating a zero force) reads as a sign error to a person
@@ -40,6 +31,12 @@ char* decimalInto(char (&buffer)[32], double x) {
 }
 
 }  // namespace
+
+std::string csvField(const std::string& text) {
+  const bool plain = text.find_first_of(",\"\n\r#") == std::string::npos &&
+                     (text.empty() || (text.front() != ' ' && text.back() != ' '));
+  return plain ? text : quoted(text);
+}
 
 std::string exactDecimal(double x) {
   char buffer[32];
@@ -103,8 +100,8 @@ void CsvTable::writeTo(std::ostream& out) const {
   bool anyUnit = false;
   for (std::size_t c = 0; c < columns_.size(); ++c) {
     if (c) names += ',', units += ',';
-    names += field(columns_[c].name);
-    units += field(columns_[c].unit);
+    names += csvField(columns_[c].name);
+    units += csvField(columns_[c].unit);
     anyUnit = anyUnit || !columns_[c].unit.empty();
   }
   out << names << '\n';
@@ -122,7 +119,7 @@ void CsvTable::writeTo(std::ostream& out) const {
       else if (const long long* n = std::get_if<long long>(&value))
         line += std::to_string(*n);
       else if (const std::string* text = std::get_if<std::string>(&value))
-        line += field(*text);
+        line += csvField(*text);
     }
     line += '\n';
     out.write(line.data(), std::streamsize(line.size()));

@@ -65,6 +65,11 @@ class CsvTable {
   std::vector<CsvCell> cells_;  ///< row by row: one allocation, not one per row
 };
 
+/// A text cell or column name as written: bare, unless RFC 4180 needs quotes (a comma, a
+/// quote, a line break; quotes inside doubled) or a reader would take it otherwise (a '#'
+/// starts a comment for NumPy and gnuplot; spaces at either end are trimmed by some readers).
+std::string csvField(const std::string& text);
+
 /// The shortest decimal text that reads back as exactly x (std::to_chars); -0 is written 0.
 std::string exactDecimal(double x);
 

@@ -56,16 +56,30 @@ fs::path tools(const ScratchDir& scratch) {
   return dir;
 }
 
+/// A charts directory in a scratch directory, drawn by recordingGnuplot (its starts recorded
+/// in `record`; a script named `failing` fails) for as long as this lives.
+struct RecordedCharts {
+  explicit RecordedCharts(const std::string& failing = "")
+      : dir(makeDir(scratch / "charts")),
+        record(scratch / "record.txt"),
+        gnuplot("BEAMROTOR_GNUPLOT", recordingGnuplot(tools(scratch), record, failing).c_str()) {}
+
+  static fs::path makeDir(const fs::path& dir) {
+    fs::create_directories(dir);
+    return dir;
+  }
+
+  ScratchDir scratch;
+  const fs::path dir, record;
+  const ScopedEnvironment gnuplot;
+};
+
 }  // namespace
 
 TEST_SUITE("output") {
   TEST_CASE("a batch of charts: one gnuplot per process share, each drawing several scripts") {
-    ScratchDir scratch;
-    const fs::path dir = scratch / "charts";
-    fs::create_directories(dir);
-    const fs::path record = scratch / "record.txt";
-    const ScopedEnvironment gnuplot("BEAMROTOR_GNUPLOT",
-                                    recordingGnuplot(tools(scratch), record).c_str());
+    const RecordedCharts recorded;
+    const fs::path &dir = recorded.dir, &record = recorded.record;
     std::vector<ChartScript> charts;
     for (const char* name : {"a", "b", "c", "d", "e", "f", "g"}) charts.push_back(chart(name));
     CHECK(drawCharts(dir, charts, ChartFormat::png, 2) == 7);
@@ -87,12 +101,8 @@ TEST_SUITE("output") {
   }
 
   TEST_CASE("a script gnuplot fails on costs that chart only; the rest of its share is drawn") {
-    ScratchDir scratch;
-    const fs::path dir = scratch / "charts";
-    fs::create_directories(dir);
-    const fs::path record = scratch / "record.txt";
-    const ScopedEnvironment gnuplot("BEAMROTOR_GNUPLOT",
-                                    recordingGnuplot(tools(scratch), record, "b").c_str());
+    const RecordedCharts recorded("b");
+    const fs::path &dir = recorded.dir, &record = recorded.record;
     const std::vector<ChartScript> four{chart("a"), chart("b"), chart("c"), chart("d")};
     CHECK(drawCharts(dir, four, ChartFormat::png, 1) == 3);
     const auto starts = lines(readText(record));
@@ -105,12 +115,8 @@ TEST_SUITE("output") {
   }
 
   TEST_CASE("inside a ChartBatch, drawChart hands the chart over; none draws nothing") {
-    ScratchDir scratch;
-    const fs::path dir = scratch / "charts";
-    fs::create_directories(dir);
-    const fs::path record = scratch / "record.txt";
-    const ScopedEnvironment gnuplot("BEAMROTOR_GNUPLOT",
-                                    recordingGnuplot(tools(scratch), record).c_str());
+    const RecordedCharts recorded;
+    const fs::path &dir = recorded.dir, &record = recorded.record;
     {
       ChartBatch none(ChartFormat::none);
       CHECK_FALSE(drawChart(dir, chart("n")));
