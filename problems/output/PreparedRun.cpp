@@ -115,13 +115,19 @@ void requireWritable(const RunResult& run) {
   requireDistinctFileStems(run.analyses);
 }
 
+/// results.json of run from its extremes, with derived numbers (largest stress, ratios)
+/// checked for NaN and infinity as well.
+Json checkedDocument(const RunResult& run, const std::vector<AnalysisExtremes>& extremes) {
+  Json doc = runJson(run, extremes);
+  requireFiniteNumbers(doc, kResultsJson);
+  return doc;
+}
+
 }  // namespace
 
 Json prepareRunDocument(const RunResult& run) {
   requireWritable(run);
-  Json doc = runJson(run, runExtremes(run));
-  requireFiniteNumbers(doc, kResultsJson);
-  return doc;
+  return checkedDocument(run, runExtremes(run));
 }
 
 PreparedRun prepareRun(const RunResult& run, bool fullTables) {
@@ -164,9 +170,8 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables) {
     prepared.analyses.push_back(std::move(p));
   }
 
-  // 3. results.json, with derived numbers (largest stress, ratios) checked as well.
-  prepared.doc = runJson(run, prepared.extremes);
-  requireFiniteNumbers(prepared.doc, kResultsJson);
+  // 3. results.json.
+  prepared.doc = checkedDocument(run, prepared.extremes);
   // 4. The load cases' table, read from the document's entries.
   for (PreparedAnalysis& p : prepared.analyses)
     if (!casesOf(*p.outcome).empty())

@@ -10,22 +10,11 @@
 
 namespace beamrotor {
 
-void fillJournalTable(DeckBearing& b) {
+namespace {
+
+/// The operating points of a loaded journal at each table speed, by its model.
+void fillLoadedJournalPoints(DeckBearing& b) {
   const PlainJournal& j = *b.journal;
-  b.table.clear();
-  b.journalPoints.clear();
-  if (j.load == 0) {  // an unloaded journal runs centred
-    if (b.journalModel != DeckBearing::JournalModel::shortBearing)
-      throw std::invalid_argument(
-          "an unloaded journal (load: 0) runs centred with the short-bearing coefficients at "
-          "zero eccentricity; the finite film is solved for a load only (give the load, or "
-          "model: short where L/D <= 1)");
-    for (double w : b.speeds) {
-      b.journalPoints.push_back({0.0, attitudeAngle(0.0), concentricJournalCoefficients(j, w)});
-      b.table.push_back(b.journalPoints.back().coefficients);
-    }
-    return;
-  }
   // Below 1 % of the clearance the film is thinner than any real surface finish allows (the
   // journal runs on the bearing), and the linear coefficients grow without bound.
   constexpr double kThinnestFilm = 0.01;
@@ -55,6 +44,25 @@ void fillJournalTable(DeckBearing& b) {
         throw;
       }
     }
+  }
+}
+
+}  // namespace
+
+void fillJournalTable(DeckBearing& b) {
+  const PlainJournal& j = *b.journal;
+  b.table.clear();
+  b.journalPoints.clear();
+  if (j.load == 0) {  // an unloaded journal runs centred
+    if (b.journalModel != DeckBearing::JournalModel::shortBearing)
+      throw std::invalid_argument(
+          "an unloaded journal (load: 0) runs centred with the short-bearing coefficients at "
+          "zero eccentricity; the finite film is solved for a load only (give the load, or "
+          "model: short where L/D <= 1)");
+    for (double w : b.speeds)
+      b.journalPoints.push_back({0.0, attitudeAngle(0.0), concentricJournalCoefficients(j, w)});
+  } else {
+    fillLoadedJournalPoints(b);
   }
   for (const JournalOperatingPoint& p : b.journalPoints) b.table.push_back(p.coefficients);
 }
