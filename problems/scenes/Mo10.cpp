@@ -110,8 +110,9 @@ void Mo10ClosedForm::build(double x, double v, int cycles) {
     c.B2 = P * c1 - Q / k_ * s1;
     cycles_.push_back(c);
     // 4. The cycle's end state starts the next one.
-    x = shifted(i, T_, 0);
-    v = shifted(i, T_, 1);
+    const int last = int(cycles_.size()) - 1;
+    x = shifted(last, T_, 0);
+    v = shifted(last, T_, 1);
   }
 }
 
@@ -130,8 +131,8 @@ double Mo10ClosedForm::shifted(int i, double tau, int derivative) const {
   return homogeneous + particular(c, tau, derivative);
 }
 
-std::pair<int, double> Mo10ClosedForm::locate(double t) const {
-  const int last = int(cycles_.size()) - 1;
+std::pair<int, double> Mo10ClosedForm::locate(double t, int cycles) const {
+  const int last = cycles - 1;
   if (t < 0 || t > (last + 1) * T_ * (1 + 1e-12))
     throw std::out_of_range("MO-10 closed form: t = " + std::to_string(t) +
                             " s is outside the computed cycles");
@@ -146,13 +147,24 @@ double Mo10ClosedForm::moment(double t) const {
 }
 
 double Mo10ClosedForm::phi(double t) const {
-  const auto [i, tau] = locate(t);
+  return phiOverCycles(int(cycles_.size()), t);
+}
+
+double Mo10ClosedForm::phiOverCycles(int cycles, double t) const {
+  const auto [i, tau] = locate(t, std::clamp(cycles, 1, int(cycles_.size())));
   return shifted(i, tau, 0) - p_.phi0();
 }
 
 double Mo10ClosedForm::rate(double t) const {
-  const auto [i, tau] = locate(t);
+  const auto [i, tau] = locate(t, int(cycles_.size()));
   return shifted(i, tau, 1);
+}
+
+void Mo10ClosedForm::extend(int cycles) {
+  const int last = int(cycles_.size()) - 1;
+  if (cycles <= last + 1) return;
+  // The state at the end of the last cycle, as build() hands it to the next one.
+  build(shifted(last, T_, 0), shifted(last, T_, 1), cycles - last - 1);
 }
 
 Mo10Extremes Mo10ClosedForm::extremes() const {

@@ -74,6 +74,12 @@ class Mo10ClosedForm {
   /// Rotation phi (rad) and its rate (rad/s) for 0 <= t <= cycles T.
   double phi(double t) const;
   double rate(double t) const;
+  /// phi(t) as the form of the first `cycles` cycles alone gives it, to the bit (t = k T is the
+  /// end of cycle k there, not the start of k + 1), for 1 <= cycles <= cycles().size().
+  double phiOverCycles(int cycles, double t) const;
+  /// Computes the cycles after the last one up to `cycles` in all (none when it has as many):
+  /// each the same, to the bit, as in a form built with `cycles` cycles at once.
+  void extend(int cycles);
   /// True when k is within sqrt(machine epsilon) of mu and the resonant form is used: there the
   /// off-resonance form loses digits as eps / |k - mu| while the limit form errs by O(|k - mu|),
   /// so the switch point balances the two at ~1e-8.
@@ -88,10 +94,10 @@ class Mo10ClosedForm {
   double shifted(int i, double tau, int derivative) const;
   /// The blow's particular solution (C1, C2, D terms of c) or its derivative at tau.
   double particular(const Mo10Cycle& c, double tau, int derivative) const;
-  /// The cycles' constants from x = phi + phi0 and v = phi' at t = 0.
+  /// Appends `cycles` cycles' constants, the first starting from x = phi + phi0 and v = phi'.
   void build(double x, double v, int cycles);
-  /// Cycle index and cycle time of t.
-  std::pair<int, double> locate(double t) const;
+  /// Cycle index and cycle time of t among the first `cycles` cycles.
+  std::pair<int, double> locate(double t, int cycles) const;
 
   Mo10Parameters p_;
   double k_, mu_, T_, t1_;

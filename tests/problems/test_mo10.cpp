@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "fem/transient/Transient.hpp"
+#include "problems/deck/parse/Expression.hpp"
 #include "problems/scenes/Mo10.hpp"
 #include "tests/Helpers.hpp"
 
@@ -73,6 +75,49 @@ TEST_SUITE("MO-10") {
             CHECK(std::abs(cf.phi(t - e) - cf.phi(t + e)) < 1e-6 * scale);
             CHECK(std::abs(cf.rate(t - e) - cf.rate(t + e)) < 1e-6 * scale * p.k());
           }
+      }
+    }
+  }
+
+  // A deck's history calls mo10_phi(t, ...) at every step; the function keeps one form and
+  // extends it cycle by cycle (problems/deck/parse/SceneFunctions.cpp). The reference is a
+  // form built afresh for each call, as before: the same operations, so equal to the bit.
+  TEST_CASE("closed form: extended cycle by cycle it is the form built at once, to the bit") {
+    Mo10Parameters p;
+    p.a = 0.002;
+    Mo10ClosedForm grown(p, 1);
+    for (int cycles = 2; cycles <= 6; ++cycles) {
+      grown.extend(cycles);
+      const Mo10ClosedForm once(p, cycles);
+      REQUIRE(grown.cycles().size() == std::size_t(cycles));
+      for (int i = 0; i < cycles; ++i) {
+        const Mo10Cycle &a = grown.cycles()[i], &b = once.cycles()[i];
+        CHECK(a.A1 == b.A1);
+        CHECK(a.A2 == b.A2);
+        CHECK(a.B1 == b.B1);
+        CHECK(a.B2 == b.B2);
+        CHECK(a.C1 == b.C1);
+      }
+      // t = k T ends cycle k in a form of k cycles: the grown form reads it there too.
+      for (int k = 1; k <= cycles; ++k)
+        CHECK(grown.phiOverCycles(k, k * p.period()) == Mo10ClosedForm(p, k).phi(k * p.period()));
+    }
+  }
+
+  TEST_CASE("mo10_phi in an expression equals a fresh closed form at every t, to the bit") {
+    const ExpressionEvaluator ev;
+    // Forward in time, back to an earlier cycle, and across a change of parameters.
+    for (double c : {1e5, 3e5, 1e5}) {
+      const CompiledExpression phi = ev.compile(
+          "mo10_phi(t, 0.5, " + std::to_string(c) + ", 0.1, 0.002, 200, 37.18)", {"t"});
+      Mo10Parameters p;
+      p.c = c;
+      p.a = 0.002;
+      const double T = p.period();
+      for (double t : {0.0, 0.3 * T, T, 2.5 * T, 3 * T, 5.97 * T, 1.2 * T, 6 * T, 0.95 * T}) {
+        CAPTURE(t / T);
+        const int cycles = int(std::max(1.0, std::ceil(t / T * (1 - 1e-14))));
+        CHECK(phi(t) == Mo10ClosedForm(p, cycles).phi(t));
       }
     }
   }
