@@ -131,8 +131,8 @@ double readMembers(Context& c) {
     m.orientation = readOrientation(c, f, axis);
     if (auto release = f.get("release")) m.releases = readReleases(c, *release);
     elements += s.elementEstimate();
-    if (!(elements <= kMaxElements))
-      f.fail("the frame would have more than " + std::to_string(kMaxElements) +
+    if (!(elements <= kMaxFrameElements))
+      f.fail("the frame would have more than " + std::to_string(kMaxFrameElements) +
              " elements; use fewer elements or a larger size");
     c.deck.segments.push_back(std::move(s));
     c.deck.frame->members.push_back(std::move(m));
@@ -240,8 +240,8 @@ void readStations(Context& c, std::vector<std::string>& pointNames, double eleme
     claimName(nf, name, pointNames, "a point or node");
     c.deck.points.push_back({name, 0, f.place()});
     c.deck.frame->stations.push_back({name, m, fraction});
-    if (double(c.deck.frame->stations.size()) + elements > kMaxElements)
-      f.fail("too many points: the frame would have more than " + std::to_string(kMaxElements) +
+    if (double(c.deck.frame->stations.size()) + elements > kMaxFrameElements)
+      f.fail("too many points: the frame would have more than " + std::to_string(kMaxFrameElements) +
              " elements");
   }
 }
