@@ -99,7 +99,7 @@ double backwardError(const SparseMatrix& K, const Eigen::VectorXd& x, const Eige
 
 TEST_SUITE("linear solver") {
   TEST_CASE("a 3D frame: supernodal LL' and simplicial LDL' give the same answer to round-off") {
-    const Building b = building(4, 3);  // 208 members, 624 beams, 3606 free dofs
+    const Building b = building(4, 3);  // 260 members, 780 beams, a factor of 45,851 entries
     SparseLDLT ldlt;
     ldlt.analyzePattern(b.K, b.nodes);
     ldlt.factorize(b.K);
@@ -113,12 +113,14 @@ TEST_SUITE("linear solver") {
     cholesky.solveInto(b.f, x2);
 
     // Both are backward stable (Higham, Accuracy and Stability, ch. 10): the residual is a
-    // modest multiple of the unit round-off 1.1e-16 times ||K|| ||x||.
+    // modest multiple of the round-off eps = 2.2e-16 times ||K|| ||x|| (measured 1.1e-17 and
+    // 8.5e-18 here, 1.5e-17 and 5.7e-17 on the large frame below).
     const double eps = std::numeric_limits<double>::epsilon();
-    CHECK(backwardError(b.K, x1, b.f) < 100 * eps);
-    CHECK(backwardError(b.K, x2, b.f) < 100 * eps);
+    CHECK(backwardError(b.K, x1, b.f) < 10 * eps);
+    CHECK(backwardError(b.K, x2, b.f) < 10 * eps);
     // The two solutions differ by at most the forward error bound, the backward error times
-    // the condition number; on the symmetrically scaled system that is 1 / scaled rcond.
+    // the condition number; on the symmetrically scaled system that is 1 / scaled rcond
+    // (7.4e-4 here: the bound is 3e-11, the difference measured 8e-15).
     const double rcond = ldlt.scaledRcond();
     REQUIRE(rcond > 0);
     CHECK((x1 - x2).norm() / x1.norm() < 100 * eps / rcond);
@@ -150,11 +152,11 @@ TEST_SUITE("linear solver") {
     solver.factorize(negative);
     CHECK(solver.methodName() == "CHOLMOD LDL'");
     const Eigen::VectorXd x = solver.solve(-b.f);
-    CHECK(backwardError(b.K, x, b.f) < 100 * std::numeric_limits<double>::epsilon());
+    CHECK(backwardError(b.K, x, b.f) < 10 * std::numeric_limits<double>::epsilon());
   }
 
   TEST_CASE("a large frame's stiffness goes to the supernodal factor, same answer as LDL'") {
-    const Building b = building(8, 2);  // 1856 members; its LDL' would hold over 2e6 entries
+    const Building b = building(12, 1);  // 5772 members; a factor of 3.2e6 entries
     LinearSolver chosen;
     chosen.analyzePattern(b.K, MatrixSymmetry::byConstruction, b.nodes,
                           Definiteness::positiveExpected);
@@ -169,9 +171,10 @@ TEST_SUITE("linear solver") {
     const Eigen::VectorXd x1 = plain.solve(b.f);
 
     const double eps = std::numeric_limits<double>::epsilon();
-    CHECK(backwardError(b.K, x2, b.f) < 100 * eps);
-    CHECK(backwardError(b.K, x1, b.f) < 100 * eps);
+    CHECK(backwardError(b.K, x2, b.f) < 10 * eps);
+    CHECK(backwardError(b.K, x1, b.f) < 10 * eps);
     CHECK((x1 - x2).norm() / x1.norm() < 100 * eps / plain.rcond());
     CHECK(chosen.factorEntries() == doctest::Approx(plain.factorEntries()));
+    CHECK(plain.factorEntries() >= kSupernodalFrom);
   }
 }
