@@ -5,13 +5,14 @@ gathering of every other figure of out/bench into summary.json.
 Reads DIR/planar_static_N.json, DIR/scipy_static_N.json (N = 1e3 .. 1e6),
 DIR/planar_modal_10000.json and DIR/scipy_modal_10000.json, DIR/planar_modal_1000000.json
 (modes against statics in one run); prints the table and ratios,
-and adds, when their files are there: rotor_800.json, frames_ccx.json and frames_ccx_large.json
-(3D frames against CalculiX), frame3d_combinations_{1,20,200}.json, frame3d_100000.json,
+and adds, when their files are there: rotor_800.json, frames_ccx*.json (3D frames against
+CalculiX), frame3d_combinations_{1,20,200}.json, frame3d_100000.json,
 output.json (shipped decks end to end) and study.json (points per second);
 checks that both give the same answers, fits the log-log slope of beamrotor's static cost
 against N, and writes DIR/summary.json and the chart DIR/planar_static_scaling.{svg,png}.
 Usage: compare.py DIR
 """
+import glob
 import json
 import math
 import os
@@ -73,10 +74,7 @@ def frames(directory):
     """3D frames: against CalculiX (frames_ccx*.json), load combinations and the 10^5-member
     frame3d bench."""
     out = {}
-    for name in ("frames_ccx.json", "frames_ccx_large.json"):
-        path = os.path.join(directory, name)
-        if not os.path.exists(path):
-            continue
+    for path in sorted(glob.glob(os.path.join(directory, "frames_ccx*.json"))):
         for frame, r in load(path)["frames"].items():
             out.setdefault("frames_ccx", {})[frame] = r
             line = (f"{frame}, {r['members']} members: beamrotor whole run "
