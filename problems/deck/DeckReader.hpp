@@ -15,11 +15,6 @@ namespace beamrotor {
 /// Most beam elements a deck may ask for (a line of 1e5 elements is already far finer than any
 /// beam needs; the cap keeps a typo such as `size: 1e-9` from exhausting memory).
 inline constexpr int kMaxElements = 100000;
-/// Most beam elements a frame deck may ask for: a building of 10^5 members at 5 elements each
-/// (5x10^5 elements, 3x10^6 dofs) solves in about 1.3 GB (docs/performance.md); beyond 10^6 a
-/// 3D frame's factor outgrows a workstation's memory. requireMemory (problems/run) still
-/// refuses a run that the machine cannot hold.
-inline constexpr int kMaxFrameElements = 1000000;
 /// Most values a sweep may take.
 inline constexpr int kMaxSweepValues = 1000;
 /// Most modes a modal analysis may ask for.

@@ -63,8 +63,12 @@ def solve_costs(stdout):
 
 
 def analysis_seconds(out):
-    """{analysis name: its solve seconds} from results.json's time_s."""
-    with open(os.path.join(out, "results.json")) as f:
+    """{analysis name: its solve seconds} from results.json's time_s ({} for a deck whose
+    output names no results.json)."""
+    path = os.path.join(out, "results.json")
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
         analyses = json.load(f).get("analyses", [])
     return {a["name"]: a["time_s"] for a in analyses if "time_s" in a}
 

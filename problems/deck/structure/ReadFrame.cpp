@@ -16,6 +16,14 @@ namespace beamrotor::reader {
 
 namespace {
 
+/// Most beam elements a frame deck may ask for (a line keeps kMaxElements): a building of 10^5
+/// members at 5 elements each (512,160 elements, 2.7x10^6 dofs) ran in a peak of 5.6 GB, its
+/// factor 3e8 entries (docs/performance.md). A 3D frame's factor grows faster than its
+/// elements (its fill as about elements^1.5), so the cap stays near that size: a typo cannot
+/// ask for much more than about 7 GB. requireMemory (problems/run) still refuses a run the
+/// machine cannot hold.
+constexpr int kMaxFrameElements = 600000;
+
 /// Fractions this close to a member's end are the joint itself.
 constexpr double kEndTolerance = 1e-12;
 
