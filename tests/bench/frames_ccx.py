@@ -35,6 +35,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "verify", "frames"))
 sys.path.insert(0, HERE)
 import beamrotor_deck  # noqa: E402
+from bench_io import solve_costs, write_json  # noqa: E402
 import ccx_input  # noqa: E402
 import ccx_results  # noqa: E402
 import frame_grid  # noqa: E402
@@ -62,14 +63,6 @@ def timed(command, cwd=None, env=None):
         sys.exit("failed: " + " ".join(command) + "\n" + done.stdout[-2000:] + done.stderr)
     peak = re.findall(r"peak ([0-9]+)", done.stderr)
     return wall, float(peak[-1]) / 1024, done.stdout
-
-
-def beamrotor_costs(stdout):
-    """(solve s, write s) from the summary's cost line."""
-    match = re.search(r"time: [0-9.]+ s \(solve ([0-9.]+) s, write ([0-9.]+) s\)", stdout)
-    if not match:
-        sys.exit("the summary has no cost line:\n" + stdout[-2000:])
-    return float(match.group(1)), float(match.group(2))
 
 
 def run_ccx(directory, stem):
@@ -120,7 +113,7 @@ def measure(name, maker, with_ccx, mesh_change, repeat, scratch, exe):
     for _ in range(repeat):
         shutil.rmtree(results, ignore_errors=True)
         wall, peak, stdout = timed([exe, "solve", deck, "--out", results])
-        solve, write = beamrotor_costs(stdout)
+        solve, write = solve_costs(stdout)
         for key, value in zip(("wall", "peak", "solve", "write"), (wall, peak, solve, write)):
             ours[key].append(value)
         if with_ccx:
@@ -215,11 +208,7 @@ def main():
               "log_log_slope_vs_members": slope(rows)}
     for key, value in report["log_log_slope_vs_members"].items():
         print(f"log-log slope of {key} against members (buildings): {value:.2f}")
-    os.makedirs(os.path.dirname(os.path.abspath(args.json)), exist_ok=True)
-    with open(args.json, "w") as fh:
-        json.dump(report, fh, indent=2)
-        fh.write("\n")
-    print("json:", args.json)
+    write_json(args.json, report)
 
 
 if __name__ == "__main__":

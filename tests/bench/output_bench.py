@@ -34,6 +34,8 @@ import sys
 import tempfile
 import time
 
+from bench_io import solve_costs, write_json
+
 WRITE_TARGET_S = 0.3
 WHOLE_TARGET_S = 0.5   # issue 45: every shipped deck end to end
 POINTS_TARGET = 100.0
@@ -52,14 +54,6 @@ def run(command):
     if done.returncode != 0:
         sys.exit("failed: " + " ".join(command) + "\n" + done.stdout + done.stderr)
     return done.stdout, cpu
-
-
-def solve_costs(stdout):
-    """(solve s, write s) from the summary's cost line."""
-    match = re.search(r"time: [0-9.]+ s \(solve ([0-9.]+) s, write ([0-9.]+) s\)", stdout)
-    if not match:
-        sys.exit("the summary has no cost line:\n" + stdout)
-    return float(match.group(1)), float(match.group(2))
 
 
 def analysis_seconds(out):
@@ -173,11 +167,7 @@ def main():
             print(f"{kind}: {figures['points_per_s']:.0f} points/s")
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
-    os.makedirs(os.path.dirname(os.path.abspath(args.json)), exist_ok=True)
-    with open(args.json, "w") as f:
-        json.dump(report, f, indent=2)
-        f.write("\n")
-    print("json:", args.json)
+    write_json(args.json, report)
 
 
 if __name__ == "__main__":
