@@ -88,7 +88,7 @@ package: configure
 	cmake --build $(BUILD) -j $(JOBS) --target beamrotor_installed
 	cd $(BUILD) && cpack
 
-# Speed figures (never part of `make test`; about 25 minutes on two shared cores), medians of
+# Speed figures (never part of `make test`; about 25-30 minutes on a quiet 2-core machine), medians of
 # BENCH_REPEAT runs, every ratio measured side by side in one run, JSON in out/bench/ and
 # everything gathered in out/bench/summary.json (tests/bench/compare.py, last):
 # - the planar line against SciPy: statics at 10^3 .. 10^6 elements, 10 modes at 10^4 and
