@@ -88,15 +88,26 @@ package: configure
 	cmake --build $(BUILD) -j $(JOBS) --target beamrotor_installed
 	cd $(BUILD) && cpack
 
-# Speed figures (never part of `make test`), side by side with SciPy on the same machine:
-# planar statics at 10^3 .. 10^6 elements and 10 modes at 10^4 and 10^6 (the latter against its
-# own statics, issue 21's 10x target), medians of 3 runs; grid3d at
-# 10^6 dofs (statics and 10 modes); rotor, 200 elements (Campbell, 50 speeds x 12 modes).
-# Warm figures are medians of repeats inside one process; cold ones (tests/bench/cold.py) the
-# median wall time of 3 fresh processes each doing one run (`bench --cold`: the heap is not
-# populated first, as in `solve`), start-up and page faults included; SciPy likewise.
-# JSON, ratios (summary.json) and the scaling chart in out/bench/.
-BENCH_PACKAGES := python3-scipy
+# Speed figures (never part of `make test`; about 25-30 minutes on a quiet 2-core machine), medians of
+# BENCH_REPEAT runs, every ratio measured side by side in one run, JSON in out/bench/ and
+# everything gathered in out/bench/summary.json (tests/bench/compare.py, last):
+# - the planar line against SciPy: statics at 10^3 .. 10^6 elements, 10 modes at 10^4 and
+#   10^6 (the latter against its own statics), warm (repeats inside one process) and cold
+#   (tests/bench/cold.py: fresh processes, start-up and page faults included); grid3d at 10^6
+#   dofs (statics and 10 modes);
+# - rotors: Campbell diagrams of 200 and 800 elements (50 speeds x 12 modes);
+# - 3D frames against CalculiX (tests/bench/frames_ccx.py: buildings of about 10^3 and 10^4
+#   members and a lattice tower, `beamrotor solve` against `ccx`, solve alone, answers
+#   compared, peak memory); load combinations 1, 20 and 200 on a 10^4-member frame
+#   (`bench --kind frame3d`);
+# - every shipped deck end to end, with and without charts, each analysis's solve (the
+#   compressor's unbalance sweep, the Jeffcott rotor's instability onset), and per-point files
+#   (tests/bench/output_bench.py);
+# - design studies: points per second serially, with --threads 2 and under mpirun -n 2
+#   (tests/bench/study_bench.py).
+# The frames of 10^5 elements and 10^5 members are in `make bench-large`.
+BENCH_PACKAGES := python3-scipy calculix-ccx
+BENCH_REPEAT   ?= 3
 PY             := /usr/bin/python3
 COLD           := $(PY) tests/bench/cold.py --repeat 3 --json
 bench: configure
@@ -125,12 +136,38 @@ bench: configure
 	  --json out/bench/planar_modal_1000000.json
 	./$(BUILD)/beamrotor bench --kind grid3d --dofs 1000000 --modes 10 --repeat 1 \
 	  --json out/bench/grid3d_1000000.json
-	./$(BUILD)/beamrotor bench --kind rotor --elements 200 --repeat 3 \
-	  --json out/bench/rotor_200.json
+	for n in 200 800; do \
+	  ./$(BUILD)/beamrotor bench --kind rotor --elements $$n --repeat $(BENCH_REPEAT) \
+	    --json out/bench/rotor_$$n.json || exit 1; \
+	done
 	$(COLD) out/bench/cold_rotor_200.json -- ./$(BUILD)/beamrotor bench --kind rotor \
 	  --elements 200 --repeat 1 --cold
-	$(PY) tests/bench/compare.py out/bench
+	$(PY) tests/bench/frames_ccx.py --exe ./$(BUILD)/beamrotor --repeat $(BENCH_REPEAT) \
+	  --json out/bench/frames_ccx.json
+	for c in 1 20 200; do \
+	  ./$(BUILD)/beamrotor bench --kind frame3d --members 10000 --modes 0 --combinations $$c \
+	    --repeat $(BENCH_REPEAT) --json out/bench/frame3d_combinations_$$c.json || exit 1; \
+	done
 	$(PY) tests/bench/output_bench.py --exe ./$(BUILD)/beamrotor --json out/bench/output.json
+	$(PY) tests/bench/study_bench.py --exe ./$(BUILD)/beamrotor --repeat $(BENCH_REPEAT) \
+	  --json out/bench/study.json
+	$(PY) tests/bench/compare.py out/bench
+
+# The large frames (never part of `make test` or `make bench`; about 10 minutes and 6 GB):
+# the building of 16 x 16 bays and 24 storeys (19,992 members, 99,960 elements, about 6x10^5
+# dofs) against CalculiX once, and the one of 30 x 30 bays and 36 storeys (101,556 members,
+# 5x10^5 elements, 3x10^6 dofs) by beamrotor alone (ccx would need about 25 GB); then the
+# frame3d bench of 10^5 members (solve and write timed apart).
+.PHONY: bench-large
+bench-large: configure
+	$(BUILD_EXE)
+	@$(MAKE) --no-print-directory deps PACKAGES="$(BENCH_PACKAGES)"
+	mkdir -p out/bench
+	$(PY) tests/bench/frames_ccx.py --exe ./$(BUILD)/beamrotor --large \
+	  --only building_16x16x24,building_30x30x36 --json out/bench/frames_ccx_large.json
+	./$(BUILD)/beamrotor bench --kind frame3d --members 100000 --modes 0 --repeat 1 \
+	  --json out/bench/frame3d_100000.json
+	$(PY) tests/bench/compare.py out/bench
 
 # What writing costs beside the solve, per shipped deck (also the end of `make bench`; about a
 # minute): medians of 5 runs of `solve` per deck (solve and write seconds from the summary's

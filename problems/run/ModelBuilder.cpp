@@ -136,28 +136,43 @@ void addFrame(const Deck& deck, Model& model) {
   }
 }
 
-bool acts(const DeckLoad& l, int segment) {
-  return l.segments.empty() ||
-         std::find(l.segments.begin(), l.segments.end(), segment) != l.segments.end();
+/// The span loads (distributed loads and self-weight) of `loads` acting on each segment, in
+/// the order of `loads`: one pass over the loads, not one per beam (a frame with a floor load
+/// on each of its 10^4 beams has 10^4 loads).
+std::vector<std::vector<const DeckLoad*>> spanLoadsBySegment(const Deck& deck,
+                                                             const std::vector<DeckLoad>& loads) {
+  std::vector<std::vector<const DeckLoad*>> out(deck.segments.size());
+  for (const DeckLoad& l : loads) {
+    if (l.kind != DeckLoad::Kind::distributed && l.kind != DeckLoad::Kind::selfWeight) continue;
+    if (l.segments.empty()) {
+      for (auto& acting : out) acting.push_back(&l);
+      continue;
+    }
+    for (int segment : l.segments) {
+      std::vector<const DeckLoad*>& acting = out[std::size_t(segment)];
+      if (acting.empty() || acting.back() != &l) acting.push_back(&l);  // a segment named twice
+    }
+  }
+  return out;
 }
 
-/// The span load `loads` put on `beam` of segment `segment` (N/m, global frame, at its start
-/// and end node): the distributed loads acting there and self-weight, summed.
-std::array<Eigen::Vector3d, 2> spanLoadOn(const Deck& deck, const std::vector<DeckLoad>& loads,
+/// The span load `acting` (one segment's, spanLoadsBySegment) puts on `beam` of segment
+/// `segment` (N/m, global frame, at its start and end node): summed in the deck's order.
+std::array<Eigen::Vector3d, 2> spanLoadOn(const Deck& deck, const std::vector<const DeckLoad*>& acting,
                                           const Model& model, const LineElement& beam,
                                           int segment) {
+  std::array<Eigen::Vector3d, 2> q{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  if (acting.empty()) return q;
   const SegmentAxis axis = segmentAxis(deck, segment);
   std::array<double, 2> span;  // the beam's ends as fractions of its segment's length
   for (int end = 0; end < 2; ++end)
     span[end] =
         (model.nodes()[beam.endNodes()[end]] - axis.start).dot(axis.direction) / axis.length;
-  std::array<Eigen::Vector3d, 2> q{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  for (const DeckLoad& l : loads) {
-    if (!acts(l, segment)) continue;
-    if (l.kind == DeckLoad::Kind::distributed)
-      for (int end = 0; end < 2; ++end) q[end] += distributedLoadAt(l, beam, axis, span, end);
-    if (l.kind == DeckLoad::Kind::selfWeight)
-      for (Eigen::Vector3d& qe : q) qe.y() -= beam.section().rhoA() * l.g;
+  for (const DeckLoad* l : acting) {
+    if (l->kind == DeckLoad::Kind::distributed)
+      for (int end = 0; end < 2; ++end) q[end] += distributedLoadAt(*l, beam, axis, span, end);
+    if (l->kind == DeckLoad::Kind::selfWeight)
+      for (Eigen::Vector3d& qe : q) qe.y() -= beam.section().rhoA() * l->g;
   }
   return q;
 }
@@ -208,6 +223,7 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
   else
     addLine(deck, *model);
   std::vector<Beam*> beams;
+  const auto spanLoads = spanLoadsBySegment(deck, deck.loads);
   for (const BeamInSegment& b : beamsInSegments(deck, *model)) {
     Beam* beam = dynamic_cast<Beam*>(model->elements()[b.element].get());
     if (!beam) throw std::logic_error("a deck's line element is not a beam");
@@ -215,7 +231,8 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
 
     // 2. Distributed loads and self-weight, summed per beam (a beam holds one load varying
     //    linearly from its start to its end).
-    const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, deck.loads, *model, *beam, b.segment);
+    const std::array<Eigen::Vector3d, 2> q =
+        spanLoadOn(deck, spanLoads[std::size_t(b.segment)], *model, *beam, b.segment);
     if (!q[0].isZero() || !q[1].isZero()) beam->setDistributedLoad(q[0], q[1]);
     beam->setAxialPreload(deck.segments[b.segment].axialForce);
   }
@@ -306,9 +323,11 @@ void addAttachments(const Deck& deck, Model* model) {
 
 Loading loadingOf(const Deck& deck, const Model& model, const std::vector<DeckLoad>& loads) {
   std::vector<std::pair<int, ElementSpanLoad>> span;
+  const auto spanLoads = spanLoadsBySegment(deck, loads);
   for (const BeamInSegment& b : beamsInSegments(deck, model)) {
     const LineElement& line = *asLine(model.elements()[b.element]);
-    const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, loads, model, line, b.segment);
+    const std::array<Eigen::Vector3d, 2> q =
+        spanLoadOn(deck, spanLoads[std::size_t(b.segment)], model, line, b.segment);
     if (!q[0].isZero() || !q[1].isZero()) span.emplace_back(b.element, line.spanLoadOf(q[0], q[1]));
   }
   return Loading(pointLoads(deck, model, loads), std::move(span));

@@ -1,13 +1,18 @@
 #!/usr/bin/python3
-"""Side-by-side figures of `make bench`: beamrotor against SciPy on the planar model.
+"""Side-by-side figures of `make bench`: beamrotor against SciPy on the planar model, and the
+gathering of every other figure of out/bench into summary.json.
 
 Reads DIR/planar_static_N.json, DIR/scipy_static_N.json (N = 1e3 .. 1e6),
 DIR/planar_modal_10000.json and DIR/scipy_modal_10000.json, DIR/planar_modal_1000000.json
 (modes against statics in one run); prints the table and ratios,
+and adds, when their files are there: rotor_800.json, frames_ccx*.json (3D frames against
+CalculiX), frame3d_combinations_{1,20,200}.json, frame3d_100000.json,
+output.json (shipped decks end to end) and study.json (points per second);
 checks that both give the same answers, fits the log-log slope of beamrotor's static cost
 against N, and writes DIR/summary.json and the chart DIR/planar_static_scaling.{svg,png}.
 Usage: compare.py DIR
 """
+import glob
 import json
 import math
 import os
@@ -63,6 +68,81 @@ plot '{data}' using 1:2 with linespoints lw 2 title 'beamrotor', \\
      {t0}*(x/{n0}) with lines dt 2 lc rgb 'gray' title 'linear cost'
 """
         subprocess.run(["gnuplot"], input=script, text=True, check=True)
+
+
+def frames(directory):
+    """3D frames: against CalculiX (frames_ccx*.json), load combinations and the 10^5-member
+    frame3d bench."""
+    out = {}
+    for path in sorted(glob.glob(os.path.join(directory, "frames_ccx*.json"))):
+        for frame, r in load(path)["frames"].items():
+            out.setdefault("frames_ccx", {})[frame] = r
+            line = (f"{frame}, {r['members']} members: beamrotor whole run "
+                    f"{r['beamrotor_whole_s']:.2f} s (solve {r['beamrotor_solve_s']:.3f} s, "
+                    f"peak {r['beamrotor_peak_mb']:.0f} MB)")
+            if "ccx_whole_s" in r:
+                line += (f", ccx {r['ccx_whole_s']:.2f} s (peak {r['ccx_peak_mb']:.0f} MB): "
+                         f"{r['ccx_whole_s'] / r['beamrotor_whole_s']:.1f}x; joint displacements "
+                         f"differ by {r['displacement_difference']:.1e}")
+            print(line)
+    combinations = {}
+    for c in (1, 20, 200):
+        path = os.path.join(directory, f"frame3d_combinations_{c}.json")
+        if os.path.exists(path):
+            f = load(path)["frame"]
+            combinations[c] = {k: f[k] for k in ("members", "cases_s", "cases_to_static",
+                                                  "write_s", "whole_s")}
+            print(f"{c} combinations on {f['members']:.0f} members: cases solved in "
+                  f"{f['cases_s']:.3f} s ({f['cases_to_static']:.2f} x one static solve; "
+                  f"target 3), whole run {f['whole_s']:.1f} s")
+    if combinations:
+        out["frame3d_combinations"] = combinations
+    path = os.path.join(directory, "frame3d_100000.json")
+    if os.path.exists(path):
+        g = load(path)
+        out["frame3d_100000"] = {"members": g["frame"]["members"], "free_dofs": g["free_dofs"],
+                                 "solver": g["solver"], "factor_entries": g["factor_entries"],
+                                 "static_s": g["static"]["total_s"],
+                                 "factor_s": g["static"]["factor_s"],
+                                 "whole_s": g["frame"]["whole_s"],
+                                 "peak_rss_mb": g["peak_rss_mb"]}
+        print(f"frame3d, {g['frame']['members']:.0f} members: static {g['static']['total_s']:.2f}"
+              f" s (target 4 s; {g['solver']}), whole run {g['frame']['whole_s']:.1f} s")
+    return out
+
+
+def decks_and_studies(directory):
+    """Shipped decks end to end (output.json) and studies' points per second (study.json)."""
+    out = {}
+    path = os.path.join(directory, "output.json")
+    if os.path.exists(path):
+        o = load(path)
+        decks = o["decks"]
+        out["decks"] = {name: {k: d.get(k) for k in ("whole_s", "whole_no_charts_s", "solve_s",
+                                                      "write_s")}
+                        for name, d in decks.items()}
+        if decks and all("whole_s" in d for d in decks.values()):
+            slowest = max(decks, key=lambda n: decks[n]["whole_s"])
+            print(f"shipped decks end to end: slowest {slowest} {decks[slowest]['whole_s']:.2f} s"
+                  f" ({decks[slowest]['whole_no_charts_s']:.2f} s without charts; target 0.5 s)")
+        rotor = {}
+        for deck, analysis, key in (("compressor_rotor", "response", "unbalance_sweep_s"),
+                                    ("compressor_rotor", "campbell", "campbell_s"),
+                                    ("jeffcott_internal_damping", "campbell",
+                                     "stability_onset_s")):
+            seconds = decks.get(deck, {}).get("analyses_s", {}).get(analysis)
+            if seconds is not None:
+                rotor[key] = {"deck": deck, "analysis": analysis, "solve_s": seconds}
+                print(f"{deck} '{analysis}': {seconds:.3f} s")
+        if rotor:
+            out["rotor_decks"] = rotor
+    path = os.path.join(directory, "study.json")
+    if os.path.exists(path):
+        runs = load(path)["runs"]
+        out["study_points_per_s"] = {name: r["points_per_s_median"] for name, r in runs.items()}
+        print("study points/s: " + ", ".join(f"{name} {r['points_per_s_median']:.0f}"
+                                              for name, r in runs.items()))
+    return out
 
 
 def main():
@@ -156,6 +236,15 @@ def main():
         if summary["rotor"]["cold_s"]:
             print(f"  cold (fresh process: model, statics and Campbell): "
                   f"{summary['rotor']['cold_s']:.2f} s")
+    rotor800 = os.path.join(directory, "rotor_800.json")
+    if os.path.exists(rotor800):
+        r = load(rotor800)
+        summary["rotor_800"] = {"elements": r["elements"], "campbell_s": r["modal"]["total_s"],
+                                "rel_error_planar_twin": r["modal"]["rel_error_planar_twin"]}
+        print(f"rotor, {r['elements']} elements: Campbell in {r['modal']['total_s']:.2f} s "
+              f"(target 1 s)")
+    summary.update(frames(directory))
+    summary.update(decks_and_studies(directory))
     with open(os.path.join(directory, "summary.json"), "w") as fh:
         json.dump(summary, fh, indent=2)
     print(f"figures: {directory}/summary.json, {directory}/planar_static_scaling.svg")

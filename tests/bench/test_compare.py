@@ -88,3 +88,38 @@ def test_modal_ratio_and_frequency_agreement(summary):
     assert m["beamrotor_cold_s"] == COLD["planar_modal_10000"]
     assert m["scipy_cold_s"] == COLD["scipy_modal_10000"]
     assert f"{COLD['scipy_modal_10000'] / COLD['planar_modal_10000']:.1f}x" in summary["text"]
+
+
+def test_frames_decks_and_studies_gathered(tmp_path):
+    """The figures of the frame, deck and study scripts reach summary.json as written, and
+    the rotor workloads are read from the analyses of their decks."""
+    frame = {"members": 1064, "beamrotor_whole_s": 2.0, "beamrotor_solve_s": 0.5,
+             "beamrotor_peak_mb": 86.0, "ccx_whole_s": 5.0, "ccx_peak_mb": 300.0,
+             "whole_run_ratio": 2.5, "displacement_difference": 0.07}
+    alone = {"members": 101556, "beamrotor_whole_s": 600.0, "beamrotor_solve_s": 300.0,
+             "beamrotor_peak_mb": 5600.0}
+    write(tmp_path / "frames_ccx.json", {"frames": {"building_6x6x8": frame}})
+    write(tmp_path / "frames_ccx_large.json", {"frames": {"building_30x30x36": alone}})
+    write(tmp_path / "frame3d_combinations_20.json",
+          {"frame": {"members": 9030.0, "cases_s": 0.8, "cases_to_static": 0.38,
+                     "write_s": 210.0, "whole_s": 216.0}})
+    decks = {"compressor_rotor": {"whole_s": 5.0, "whole_no_charts_s": 2.7, "solve_s": 2.2,
+                                  "write_s": 2.2,
+                                  "analyses_s": {"response": 1.25, "campbell": 0.5}},
+             "jeffcott_internal_damping": {"whole_s": 1.2, "whole_no_charts_s": 0.6,
+                                           "solve_s": 0.1, "write_s": 0.66,
+                                           "analyses_s": {"campbell": 0.0625}}}
+    write(tmp_path / "output.json", {"decks": decks})
+    write(tmp_path / "study.json", {"runs": {"serial": {"points_per_s_median": 800.0},
+                                             "threads_2": {"points_per_s_median": 1200.0}}})
+    run = subprocess.run([sys.executable, str(HERE / "compare.py"), str(tmp_path)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["frames_ccx"] == {"building_6x6x8": frame, "building_30x30x36": alone}
+    assert summary["frame3d_combinations"]["20"]["cases_to_static"] == 0.38
+    assert summary["decks"]["compressor_rotor"]["whole_no_charts_s"] == 2.7
+    assert summary["rotor_decks"]["unbalance_sweep_s"]["solve_s"] == 1.25
+    assert summary["rotor_decks"]["stability_onset_s"]["solve_s"] == 0.0625
+    assert summary["study_points_per_s"] == {"serial": 800.0, "threads_2": 1200.0}
+    assert "2.5x" in run.stdout and "slowest compressor_rotor 5.00 s" in run.stdout

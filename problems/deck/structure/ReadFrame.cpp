@@ -16,6 +16,14 @@ namespace beamrotor::reader {
 
 namespace {
 
+/// Most beam elements a frame deck may ask for (a line keeps kMaxElements): a building of 10^5
+/// members at 5 elements each (512,160 elements, 2.7x10^6 dofs) ran in a peak of 5.6 GB, its
+/// factor 3e8 entries (docs/performance.md). A 3D frame's factor grows faster than its
+/// elements (its fill as about elements^1.5), so the cap stays near that size: a typo cannot
+/// ask for much more than about 7 GB. requireMemory (problems/run) still refuses a run the
+/// machine cannot hold.
+constexpr int kMaxFrameElements = 600000;
+
 /// Fractions this close to a member's end are the joint itself.
 constexpr double kEndTolerance = 1e-12;
 
@@ -131,8 +139,8 @@ double readMembers(Context& c) {
     m.orientation = readOrientation(c, f, axis);
     if (auto release = f.get("release")) m.releases = readReleases(c, *release);
     elements += s.elementEstimate();
-    if (!(elements <= kMaxElements))
-      f.fail("the frame would have more than " + std::to_string(kMaxElements) +
+    if (!(elements <= kMaxFrameElements))
+      f.fail("the frame would have more than " + std::to_string(kMaxFrameElements) +
              " elements; use fewer elements or a larger size");
     c.deck.segments.push_back(std::move(s));
     c.deck.frame->members.push_back(std::move(m));
@@ -240,8 +248,8 @@ void readStations(Context& c, std::vector<std::string>& pointNames, double eleme
     claimName(nf, name, pointNames, "a point or node");
     c.deck.points.push_back({name, 0, f.place()});
     c.deck.frame->stations.push_back({name, m, fraction});
-    if (double(c.deck.frame->stations.size()) + elements > kMaxElements)
-      f.fail("too many points: the frame would have more than " + std::to_string(kMaxElements) +
+    if (double(c.deck.frame->stations.size()) + elements > kMaxFrameElements)
+      f.fail("too many points: the frame would have more than " + std::to_string(kMaxFrameElements) +
              " elements");
   }
 }

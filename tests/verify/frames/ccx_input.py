@@ -12,6 +12,12 @@ def _g(x):
     return f"{float(x):.15g}"
 
 
+def _set_lines(numbers):
+    """A set's node numbers, 16 to a line (ccx reads no more from one line)."""
+    return "\n".join(", ".join(str(n) for n in numbers[k:k + 16])
+                     for k in range(0, len(numbers), 16))
+
+
 def write(model, path, elements):
     numbers = {name: i + 1 for i, name in enumerate(model["nodes"])}
     coords = {numbers[n]: xyz for n, xyz in model["nodes"].items()}
@@ -44,8 +50,8 @@ def write(model, path, elements):
     for load in model["point_loads"]:
         n = numbers[load["at"]]
         loads[n] = [f + p for f, p in zip(loads.get(n, [0, 0, 0]), load["f"])]
-    joints = ", ".join(str(numbers[n]) for n in model["nodes"])
-    supports = ", ".join(str(numbers[n]) for n in model["supports"])
+    joints = _set_lines([numbers[n] for n in model["nodes"]])
+    supports = _set_lines([numbers[n] for n in model["supports"]])
     out = ["** Written by tests/verify/frames/ccx_input.py; the twin of the beamrotor deck beside",
            f"** it. {model['title']}", "*NODE, NSET=NALL"]
     out += [f"{n}, {', '.join(_g(c) for c in coords[n])}" for n in sorted(coords)]

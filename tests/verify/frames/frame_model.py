@@ -62,7 +62,12 @@ def member_axes(start, end):
 
 def load(path):
     with open(path) as fh:
-        model = json.load(fh)
+        return prepare(json.load(fh))
+
+
+def prepare(model):
+    """The model (as read from a model file) with its sections' properties and its members'
+    axes and lengths added."""
     model["props"] = {name: properties(s) for name, s in model["sections"].items()}
     for m in model["members"]:
         m["axes"] = member_axes(model["nodes"][m["from"]], model["nodes"][m["to"]])
