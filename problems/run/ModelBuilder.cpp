@@ -162,6 +162,17 @@ std::array<Eigen::Vector3d, 2> spanLoadOn(const Deck& deck, const std::vector<De
   return q;
 }
 
+/// The strain the temperature loads of `loads` impose on `beam` of segment `segment` (local
+/// frame, laid out as ElementSpanLoad::strain), summed.
+Eigen::Vector3d imposedStrainOn(const std::vector<DeckLoad>& loads, const LineElement& beam,
+                                int segment) {
+  Eigen::Vector3d strain = Eigen::Vector3d::Zero();
+  for (const DeckLoad& l : loads)
+    if (l.kind == DeckLoad::Kind::temperature && acts(l, segment))
+      strain += thermalStrain(beam.section(), l.dT, l.dTy, l.dTz);
+  return strain;
+}
+
 /// The point loads of `loads` at their nodes.
 std::vector<NodalLoad> pointLoads(const Deck& deck, const Model& model,
                                   const std::vector<DeckLoad>& loads) {
@@ -214,9 +225,11 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
     beams.push_back(beam);
 
     // 2. Distributed loads and self-weight, summed per beam (a beam holds one load varying
-    //    linearly from its start to its end).
+    //    linearly from its start to its end), and the strain temperature changes impose.
     const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, deck.loads, *model, *beam, b.segment);
     if (!q[0].isZero() || !q[1].isZero()) beam->setDistributedLoad(q[0], q[1]);
+    const Eigen::Vector3d strain = imposedStrainOn(deck.loads, *beam, b.segment);
+    if (!strain.isZero()) beam->setImposedStrain(strain);
     beam->setAxialPreload(deck.segments[b.segment].axialForce);
   }
 
@@ -280,6 +293,10 @@ void addAttachments(const Deck& deck, Model* model) {
     at(deck, k.place, [&] {
       model->addContact({k.name, model->node(k.point), k.dof, k.lower, k.upper});
     });
+  for (const DeckRigidLink& l : deck.rigidLinks)
+    at(deck, l.place, [&] {
+      model->addRigidTie({l.name, model->node(l.master), model->node(l.slave), l.dofs});
+    });
   for (const DeckMass& m : deck.masses)
     at(deck, m.place, [&] {
       const DofSet dofs = deck.segments.empty() ? inertialDofs(m, deck.dofs) : deck.dofs;
@@ -309,7 +326,9 @@ Loading loadingOf(const Deck& deck, const Model& model, const std::vector<DeckLo
   for (const BeamInSegment& b : beamsInSegments(deck, model)) {
     const LineElement& line = *asLine(model.elements()[b.element]);
     const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, loads, model, line, b.segment);
-    if (!q[0].isZero() || !q[1].isZero()) span.emplace_back(b.element, line.spanLoadOf(q[0], q[1]));
+    ElementSpanLoad load = line.spanLoadOf(q[0], q[1]);
+    load.strain = imposedStrainOn(loads, line, b.segment);
+    if (!load.isZero()) span.emplace_back(b.element, load);
   }
   return Loading(pointLoads(deck, model, loads), std::move(span));
 }
