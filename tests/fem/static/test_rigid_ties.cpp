@@ -136,10 +136,11 @@ TEST_SUITE("rigid ties") {
   TEST_CASE("rigid ties are refused where they cannot act, with the reason") {
     const std::string base =
         "model: {dimension: planar}\n"
-        "materials: [{name: steel, E: 210e9, nu: 0.3}]\n"
+        "materials: [{name: steel, E: 210e9, nu: 0.3, rho: 7850}]\n"
         "sections: [{name: bar, shape: circle, D: 0.1}]\n"
         "nodes: [{name: A, at: [0, 0]}, {name: B, at: [2, 0]}, {name: C, at: [4, 0]}]\n"
-        "members: [{name: ab, from: A, to: B, section: bar}, {name: bc, from: B, to: C, section: bar}]\n"
+        "members: [{name: ab, from: A, to: B, section: bar, elements: 1},\n"
+        "          {name: bc, from: B, to: C, section: bar, elements: 1}]\n"
         "supports: [{name: A, at: A, fix: clamped}]\n";
     CHECK(std::string(test::readingError(base + "rigid_links: [{name: l, master: B, slave: C}]\n"
                                                 "analyses: [{type: modal}]\n",
