@@ -318,8 +318,14 @@ void Beam::setDistributedLoad(const Eigen::Vector3d& qStart, const Eigen::Vector
   setProperties(std::move(p));
 }
 
+void Beam::setImposedStrain(const Eigen::Vector3d& strain) {
+  Properties p = *p_;
+  p.strain = strain;
+  setProperties(std::move(p));
+}
+
 ElementSpanLoad Beam::spanLoadOf(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd) const {
-  return {p_->R * (qStart + qEnd) / 2, p_->R * (qEnd - qStart) / 2};
+  return {p_->R * (qStart + qEnd) / 2, p_->R * (qEnd - qStart) / 2, Eigen::Vector3d::Zero()};
 }
 
 void Beam::setAxialPreload(double N) {
@@ -439,6 +445,18 @@ Vector12 Beam::localLoad(const ElementSpanLoad& q) const {
     const FixedEnd z = fixedEndForces(m.z(), d.z(), phiZ, L);
     f[1] = y.forceStart, f[7] = y.forceEnd, f[5] = y.momentStart, f[11] = y.momentEnd;
     f[2] = z.forceStart, f[8] = z.forceEnd, f[4] = -z.momentStart, f[10] = -z.momentEnd;
+  }
+  // An imposed strain: held at both ends the element stays straight and unmoved (the clamped
+  // solution is u = v = w = 0 for every theory), so its section carries N = -EA e, My = -EIy ky,
+  // Mz = -EIz kz along its whole length, no shear; the forces holding its ends are those
+  // resultants on its end faces, and the equivalent nodal loads their negatives.
+  const Section& sec = *p_->section;
+  const Eigen::Vector3d held(-sec.EA() * q.strain[0], -sec.EIy() * q.strain[1],
+                             -sec.EIz() * q.strain[2]);
+  for (int k = 0; k < 3; ++k) {
+    const int at = k == 0 ? 0 : 3 + k;  // u, ry, rz
+    f[at] += held[k];
+    f[6 + at] -= held[k];
   }
   return f;
 }

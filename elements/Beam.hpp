@@ -61,6 +61,9 @@ class Beam : public LineElement {
   /// Load per length varying linearly from qStart at the start node to qEnd at the end node
   /// (N/m, global frame); replaces any earlier one.
   void setDistributedLoad(const Eigen::Vector3d& qStart, const Eigen::Vector3d& qEnd);
+  /// A strain imposed along the whole beam (a temperature change, thermalStrain), laid out as
+  /// ElementSpanLoad::strain; replaces any earlier one.
+  void setImposedStrain(const Eigen::Vector3d& strain);
 
   ElementDofs dofs() const override { return {nodes_, p_->dofCodes.data(), p_->count}; }
   ElementMatrix stiffness() const override;
@@ -77,7 +80,7 @@ class Beam : public LineElement {
   /// under an axial span load), global frame, releases condensed as in mass().
   ElementMatrix geometricStiffness(const ElementVector& u) const override;
   ElementVector load() const override { return loadOf(spanLoad()); }
-  ElementSpanLoad spanLoad() const override { return {p_->qMean, p_->qHalfRise}; }
+  ElementSpanLoad spanLoad() const override { return {p_->qMean, p_->qHalfRise, p_->strain}; }
   ElementSpanLoad spanLoadOf(const Eigen::Vector3d& qStart,
                              const Eigen::Vector3d& qEnd) const override;
   ElementVector loadOf(const ElementSpanLoad& q) const override;
@@ -112,7 +115,8 @@ class Beam : public LineElement {
   /// Local gyroscopic matrix (skew-symmetric), local dofs as localMass(); zero without
   /// rotary inertia.
   Matrix12 localGyroscopic() const;
-  /// Fixed-end forces of span load q (local dofs, before releases); localLoad() of its own.
+  /// Equivalent nodal loads of span load q (local dofs, before releases), the negated forces
+  /// that hold the element's ends fixed under it; localLoad() of its own.
   Vector12 localLoad(const ElementSpanLoad& q) const;
   Vector12 localLoad() const { return localLoad(spanLoad()); }
   /// Local geometric stiffness for an axial force varying linearly from N0 at the start to N1
@@ -155,6 +159,7 @@ class Beam : public LineElement {
     // q(s) = qMean + qHalfRise (2 s - 1).
     Eigen::Vector3d qMean = Eigen::Vector3d::Zero();
     Eigen::Vector3d qHalfRise = Eigen::Vector3d::Zero();
+    Eigen::Vector3d strain = Eigen::Vector3d::Zero();  // imposed; see ElementSpanLoad::strain
     std::vector<int> released;  // local indices 0..11 of released rotations
     // The dofs kept (elementDofCode), from carried, released and R (numberDofs).
     std::array<std::uint8_t, 12> dofCodes{};

@@ -17,6 +17,11 @@ DofMap::DofMap(const Model& model) {
   slots_.assign(model.nodeCount(), {kAbsent, kAbsent, kAbsent, kAbsent, kAbsent, kAbsent});
   for (const auto& e : model.elements())
     for (const NodeDof& d : e->dofs()) slots_.at(d.node)[dofIndex(d.dof)] = kPresent;
+  // A tie's master moves its slave: it carries every dof its slave does (a member end offset
+  // hangs a member from a joint that no element touches).
+  for (const RigidTie& t : model.rigidTies())
+    for (int k = 0; k < kDofKinds; ++k)
+      if (slots_.at(t.slave)[k] == kPresent) slots_.at(t.master)[k] = kPresent;
   for (const Support& s : model.supports())
     for (const PrescribedDof& p : s.dofs) {
       int& slot = slots_.at(s.node)[dofIndex(p.dof)];

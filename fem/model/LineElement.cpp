@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "fem/model/SignedStress.hpp"
 
@@ -36,6 +38,26 @@ double maxNormalStress(const Section& s, const SectionForces& f) {
     best = std::max(best, v);
   }
   return best;
+}
+
+Eigen::Vector3d thermalStrain(const Section& s, double dT, double dTy, double dTz) {
+  // The section's depth along a direction (a, b): its largest plus its smallest coordinate
+  // there over the fibres, which lie on the convex hull of the outline.
+  const auto depth = [&](double a, double b, const char* axis) {
+    if (s.fibres.empty())
+      throw std::invalid_argument("a temperature gradient across local " + std::string(axis) +
+                                  " needs the depth of section '" + s.name +
+                                  "' (a general section without its depth has none)");
+    double high = -std::numeric_limits<double>::infinity(), low = high;
+    for (const StressFibre& f : s.fibres) {
+      high = std::max(high, fibreSupport(f, a, b));
+      low = std::max(low, fibreSupport(f, -a, -b));
+    }
+    return high + low;
+  };
+  const double alpha = s.material.alpha;
+  return {alpha * dT, dTz == 0 ? 0 : alpha * dTz / depth(0, 1, "z"),
+          dTy == 0 ? 0 : -alpha * dTy / depth(1, 0, "y")};
 }
 
 }  // namespace beamrotor

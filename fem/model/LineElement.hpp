@@ -33,21 +33,37 @@ enum class SpanLoad { applied, none };
 
 /// A load per length on a line element varying linearly along it, in the element frame:
 /// q(s) = mean + halfRise (2 s - 1) (N/m; local x, y, z components), s the fraction of the
-/// length from the start node. Everything an element derives from it is linear in it, so a
-/// factored sum of span loads gives the factored sum of their effects.
+/// length from the start node; and a strain imposed uniformly along it (a temperature change:
+/// ImposedStrain). Everything an element derives from them is linear in them, so a factored
+/// sum of span loads gives the factored sum of their effects.
 struct ElementSpanLoad {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   Eigen::Vector3d halfRise = Eigen::Vector3d::Zero();
-  bool isZero() const { return mean.isZero() && halfRise.isZero(); }
+  /// The imposed strain of the section (a thermal strain; the section's stress follows from
+  /// the total strain less this): the axial strain of the axis (alpha dT), then the curvatures
+  /// about local y and local z (1/m), each the rate of the section's rotation ry, rz along x,
+  /// so the fibre at (y, z) is imposed strain[0] - y strain[2] + z strain[1]. A temperature
+  /// that rises by dTy across the depth hy towards +y gives strain[2] = -alpha dTy / hy, one
+  /// rising by dTz across hz towards +z strain[1] = alpha dTz / hz.
+  Eigen::Vector3d strain = Eigen::Vector3d::Zero();
+  bool isZero() const { return mean.isZero() && halfRise.isZero() && strain.isZero(); }
   ElementSpanLoad& operator+=(const ElementSpanLoad& o) {
     mean += o.mean;
     halfRise += o.halfRise;
+    strain += o.strain;
     return *this;
   }
   friend ElementSpanLoad operator*(double factor, const ElementSpanLoad& q) {
-    return {factor * q.mean, factor * q.halfRise};
+    return {factor * q.mean, factor * q.halfRise, factor * q.strain};
   }
 };
+
+/// The strain a temperature change imposes on a section of its material's alpha (1/K): dT (K)
+/// at the centroid, rising linearly through the depth by dTy from the section's lowest to its
+/// highest fibre along local y, and by dTz likewise along z (the depths are the extents of the
+/// section's fibres). Laid out as ElementSpanLoad::strain. A gradient across a section whose
+/// extent is unknown (no fibres) throws std::invalid_argument.
+Eigen::Vector3d thermalStrain(const Section& s, double dT, double dTy, double dTz);
 
 /// The normal stress over a section as a linear field of the local coordinates:
 /// sigma(y, z) = c + a y + b z with c = N/A, a = -Mz/Iz, b = My/Iy (principal axes; the signs

@@ -40,6 +40,17 @@ struct ContactConstraint {
   double upper = std::numeric_limits<double>::infinity();
 };
 
+/// A rigid tie: the dofs `dofs` of node `slave` follow node `master` as one rigid body, the
+/// translations as u_s = u_m + theta_m x (x_s - x_m) and the rotations as theta_s = theta_m
+/// (each listed component). Rigid links, member end offsets and diaphragms are made of these;
+/// the statics eliminate the slave dofs exactly (fem/assembly/RigidTies.hpp), no spring.
+struct RigidTie {
+  std::string name;
+  int master = -1;
+  int slave = -1;
+  std::vector<Dof> dofs;
+};
+
 /// A concentrated force (N) or moment (N m) at a node, global frame.
 struct NodalLoad {
   int node = -1;
@@ -69,6 +80,7 @@ class Model {
   void addSupport(Support s) { supports_.push_back(std::move(s)); }
   void addLoad(const NodalLoad& l) { loads_.push_back(l); }
   void addContact(ContactConstraint c) { contacts_.push_back(std::move(c)); }
+  void addRigidTie(RigidTie t) { ties_.push_back(std::move(t)); }
   /// Names an element that acts like a support (a spring, a bearing), so that the force it
   /// exerts on the structure is reported under its name. Names are unique among them.
   void nameElement(const std::string& name, int element);
@@ -81,6 +93,7 @@ class Model {
   const std::vector<Support>& supports() const { return supports_; }
   const std::vector<NodalLoad>& loads() const { return loads_; }
   const std::vector<ContactConstraint>& contacts() const { return contacts_; }
+  const std::vector<RigidTie>& rigidTies() const { return ties_; }
   const std::map<std::string, int>& namedNodes() const { return names_; }
   /// The named elements in the order they were named: name and element index.
   const std::vector<std::pair<std::string, int>>& namedElements() const { return namedElements_; }
@@ -97,6 +110,7 @@ class Model {
   std::vector<Support> supports_;
   std::vector<NodalLoad> loads_;
   std::vector<ContactConstraint> contacts_;
+  std::vector<RigidTie> ties_;
   std::map<std::string, int> names_;
   std::map<int, std::string> firstNames_;  ///< each named node's first name (nameOf)
   std::vector<std::pair<std::string, std::vector<int>>> members_;

@@ -13,6 +13,7 @@ struct Material {
   double nu = 0.3;  ///< Poisson's ratio; G = E / (2 (1 + nu)) unless G is given
   double G = 0;
   double rho = 0;
+  double alpha = 0;  ///< coefficient of thermal expansion (1/K); 0 when not given
 
   /// From E, nu (G derived). Throws std::invalid_argument on non-physical values.
   static Material fromEnu(std::string name, double E, double nu, double rho);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fem/assembly/Assembly.hpp"
+#include "fem/assembly/RigidTies.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/assembly/SymmetricBand.hpp"
 #include "fem/model/Results.hpp"
@@ -83,6 +84,12 @@ class LinearStatics {
   SparseMatrix K_;
   MatrixSymmetry symmetry_ = MatrixSymmetry::unknown;  ///< of K_, known from its elements
   Eigen::VectorXd rhs_;  ///< the free equations' loads less K_fc u_c (prescribed values)
+  /// Rigid ties eliminated (RigidTies.hpp): the tied equations and T; K_ and rhs_ are then
+  /// the reduced ones (the sparse path always).
+  std::vector<TiedEquation> tied_;
+  SparseMatrix T_;
+  /// The reduced right-hand side of full-length loads f: its free part less K_fc u_c, times T'.
+  Eigen::VectorXd reducedLoads(Eigen::VectorXd f) const;
   SymbolicReuse* reuse_;
   LinearSolver ownSolver_;
   LinearSolver* solver_ = &ownSolver_;  ///< ownSolver_, or reuse_'s once analysed

@@ -92,6 +92,15 @@ struct DeckContact {
   DeckPlace place;
 };
 
+/// A rigid tie between two points (`rigid_links:`, or one member of a `diaphragms:` entry):
+/// the slave's dofs follow the master as one rigid body (fem RigidTie).
+struct DeckRigidLink {
+  std::string name;
+  std::string master, slave;  ///< point names
+  std::vector<Dof> dofs;      ///< the slave's dofs that follow
+  DeckPlace place;
+};
+
 /// A rigid body lumped at a point (elements/PointInertia); its axis is the line's.
 struct DeckMass {
   std::string name;
@@ -107,9 +116,9 @@ struct DeckHinge {
   DeckPlace place;
 };
 
-/// A point force/moment, a distributed load on segments, or self-weight.
+/// A point force/moment, a distributed load on segments, self-weight, or a temperature change.
 struct DeckLoad {
-  enum class Kind { point, distributed, selfWeight };
+  enum class Kind { point, distributed, selfWeight, temperature };
   Kind kind = Kind::point;
   std::string point;                               ///< point loads
   std::vector<std::pair<Dof, double>> components;  ///< point loads: N on ux.., N m on rx..
@@ -122,6 +131,9 @@ struct DeckLoad {
   /// across that component's direction (a roof load per plan length), not per member length.
   bool perProjectedLength = false;
   double g = 9.81;                                 ///< self-weight: m/s^2, acting along -y
+  /// temperature: the change at the centroid and its rise through the depth towards local +y
+  /// and +z, from the lowest to the highest fibre (K; thermalStrain, LineElement.hpp)
+  double dT = 0, dTy = 0, dTz = 0;
   std::vector<int> segments;  ///< distributed and self-weight: indices; all if empty
   DeckPlace place;
 };
@@ -141,12 +153,15 @@ struct DeckCombination {
   DeckPlace place;
 };
 
-/// A load scaled by a factor (point components, q, or g for self-weight).
+/// A load scaled by a factor (point components, q, g for self-weight, or the temperatures).
 inline DeckLoad scaledLoad(DeckLoad l, double factor) {
   for (auto& [d, value] : l.components) value *= factor;
   l.q *= factor;
   l.qEnd *= factor;
   l.g *= factor;
+  l.dT *= factor;
+  l.dTy *= factor;
+  l.dTz *= factor;
   return l;
 }
 
@@ -226,6 +241,7 @@ struct Deck {
   std::vector<DeckSupport> supports;
   std::vector<DeckSpring> springs;
   std::vector<DeckContact> contacts;
+  std::vector<DeckRigidLink> rigidLinks;  ///< `rigid_links:` and the diaphragms' ties
   std::vector<DeckMass> masses;
   std::vector<DeckHinge> hinges;
   std::vector<DeckLoad> loads;

@@ -80,7 +80,8 @@ const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived",  "model",    "materials", "sections", "segments",
     "points", "supports",   "springs",  "masses",   "hinges",    "loads",    "analyses",
     "checks", "sweep",      "contacts", "bearings", "damping",   "report",   "accuracy",
-    "nodes",  "members",    "load_cases", "combinations", "study",    "output"};
+    "nodes",  "members",    "load_cases", "combinations", "study",    "output",
+    "rigid_links", "diaphragms"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -276,6 +277,7 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   reader::readStudy(c, overrides);
   reader::readReport(c);
   reader::readAccuracy(c);
+  reader::refuseTiedAnalyses(c);
   reader::readOutput(c);
   requireSectionValues(deck);
   if (log) reader::checkBareParameters(c, log->reads());

@@ -44,6 +44,8 @@ struct Context {
 };
 
 /// Materials (E, nu or G, rho) into c.materials.
+/// Analyses other than first-order statics refused in a deck with rigid links or diaphragms.
+void refuseTiedAnalyses(const Context& c);
 void readMaterials(Context& c);
 /// Cross-sections into c.sections.
 void readSections(Context& c);

@@ -136,14 +136,16 @@ void addFrame(const Deck& deck, Model& model) {
   }
 }
 
-/// The span loads (distributed loads and self-weight) of `loads` acting on each segment, in
+/// The span loads (distributed loads, self-weight, temperature) of `loads` acting on each segment, in
 /// the order of `loads`: one pass over the loads, not one per beam (a frame with a floor load
 /// on each of its 10^4 beams has 10^4 loads).
 std::vector<std::vector<const DeckLoad*>> spanLoadsBySegment(const Deck& deck,
                                                              const std::vector<DeckLoad>& loads) {
   std::vector<std::vector<const DeckLoad*>> out(deck.segments.size());
   for (const DeckLoad& l : loads) {
-    if (l.kind != DeckLoad::Kind::distributed && l.kind != DeckLoad::Kind::selfWeight) continue;
+    if (l.kind != DeckLoad::Kind::distributed && l.kind != DeckLoad::Kind::selfWeight &&
+        l.kind != DeckLoad::Kind::temperature)
+      continue;
     if (l.segments.empty()) {
       for (auto& acting : out) acting.push_back(&l);
       continue;
@@ -175,6 +177,16 @@ std::array<Eigen::Vector3d, 2> spanLoadOn(const Deck& deck, const std::vector<co
       for (Eigen::Vector3d& qe : q) qe.y() -= beam.section().rhoA() * l->g;
   }
   return q;
+}
+
+/// The strain the temperature loads among `acting` (one segment's, spanLoadsBySegment) impose
+/// on `beam` (local frame, laid out as ElementSpanLoad::strain), summed.
+Eigen::Vector3d imposedStrainOn(const std::vector<const DeckLoad*>& acting, const LineElement& beam) {
+  Eigen::Vector3d strain = Eigen::Vector3d::Zero();
+  for (const DeckLoad* l : acting)
+    if (l->kind == DeckLoad::Kind::temperature)
+      strain += thermalStrain(beam.section(), l->dT, l->dTy, l->dTz);
+  return strain;
 }
 
 /// The point loads of `loads` at their nodes.
@@ -230,10 +242,12 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
     beams.push_back(beam);
 
     // 2. Distributed loads and self-weight, summed per beam (a beam holds one load varying
-    //    linearly from its start to its end).
-    const std::array<Eigen::Vector3d, 2> q =
-        spanLoadOn(deck, spanLoads[std::size_t(b.segment)], *model, *beam, b.segment);
+    //    linearly from its start to its end), and the strain temperature changes impose.
+    const std::vector<const DeckLoad*>& acting = spanLoads[std::size_t(b.segment)];
+    const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, acting, *model, *beam, b.segment);
     if (!q[0].isZero() || !q[1].isZero()) beam->setDistributedLoad(q[0], q[1]);
+    const Eigen::Vector3d strain = imposedStrainOn(acting, *beam);
+    if (!strain.isZero()) beam->setImposedStrain(strain);
     beam->setAxialPreload(deck.segments[b.segment].axialForce);
   }
 
@@ -297,6 +311,10 @@ void addAttachments(const Deck& deck, Model* model) {
     at(deck, k.place, [&] {
       model->addContact({k.name, model->node(k.point), k.dof, k.lower, k.upper});
     });
+  for (const DeckRigidLink& l : deck.rigidLinks)
+    at(deck, l.place, [&] {
+      model->addRigidTie({l.name, model->node(l.master), model->node(l.slave), l.dofs});
+    });
   for (const DeckMass& m : deck.masses)
     at(deck, m.place, [&] {
       const DofSet dofs = deck.segments.empty() ? inertialDofs(m, deck.dofs) : deck.dofs;
@@ -326,9 +344,11 @@ Loading loadingOf(const Deck& deck, const Model& model, const std::vector<DeckLo
   const auto spanLoads = spanLoadsBySegment(deck, loads);
   for (const BeamInSegment& b : beamsInSegments(deck, model)) {
     const LineElement& line = *asLine(model.elements()[b.element]);
-    const std::array<Eigen::Vector3d, 2> q =
-        spanLoadOn(deck, spanLoads[std::size_t(b.segment)], model, line, b.segment);
-    if (!q[0].isZero() || !q[1].isZero()) span.emplace_back(b.element, line.spanLoadOf(q[0], q[1]));
+    const std::vector<const DeckLoad*>& acting = spanLoads[std::size_t(b.segment)];
+    const std::array<Eigen::Vector3d, 2> q = spanLoadOn(deck, acting, model, line, b.segment);
+    ElementSpanLoad load = line.spanLoadOf(q[0], q[1]);
+    load.strain = imposedStrainOn(acting, line);
+    if (!load.isZero()) span.emplace_back(b.element, load);
   }
   return Loading(pointLoads(deck, model, loads), std::move(span));
 }

@@ -79,10 +79,10 @@ WithUnit withOwnUnit(const NumericRead& r, const std::set<std::string>& hidden) 
     double otherSize;
   };
   const Base bases[] = {{"m", "mm", 1e-3}, {"kg", "g", 1e-3}, {"s", "ms", 1e-3},
-                        {"rad", "deg", std::numbers::pi / 180}};
+                        {"rad", "deg", std::numbers::pi / 180}, {"K", "K", 1}};
   double scale = 1;
   std::string unit;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < Dimension::kBases; ++i) {
     const double e = r.unit.dimension.exponents[i];
     const bool own = !hidden.count(bases[i].name);
     const std::string name = own ? bases[i].name : bases[i].other;

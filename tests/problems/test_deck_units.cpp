@@ -190,6 +190,9 @@ TEST_SUITE("deck units") {
         {"1 rad", 1, dim::angle},
         {"9.81 m/s^2", 9.81, dim::acceleration},
         {"3 m/s", 3, dim::velocity},
+        {"40 K", 40, dim::temperature},
+        {"12e-6 / K", 12e-6, dim::thermalExpansion},
+        {"12e-6 / K * 40 K", 12e-6 * 40, dim::none},
         {"0.3", 0.3, dim::none},
         {"3 mm / m", 0.003, dim::none},
     };

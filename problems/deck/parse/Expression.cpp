@@ -54,25 +54,26 @@ void defineDeckBuiltins(mu::Parser& parser) {
 /// its SI size. `angleArguments`: trigonometric functions read their argument as an angle in
 /// this system (sin(30 deg)) rather than as a plain number of radians (sin(0.5)).
 struct Scaling {
-  std::array<int, 4> exponent;
+  std::array<int, Dimension::kBases> exponent;
   bool angleArguments;
 };
 
-// [0] SI; [1..3] length, mass, time doubled; [4], [5] angle doubled, read both ways; [6], [7]
-// every base scaled at once (the check), angles read both ways.
-constexpr std::array<Scaling, 8> kScalings{{{{0, 0, 0, 0}, false},
-                                            {{1, 0, 0, 0}, false},
-                                            {{0, 1, 0, 0}, false},
-                                            {{0, 0, 1, 0}, false},
-                                            {{0, 0, 0, 1}, false},
-                                            {{0, 0, 0, 1}, true},
-                                            {{3, -5, 7, -2}, false},
-                                            {{3, -5, 7, -2}, true}}};
+// [0] SI; [1..3] length, mass, time doubled; [4], [5] angle doubled, read both ways; [6]
+// temperature doubled; [7], [8] every base scaled at once (the check), angles read both ways.
+constexpr std::array<Scaling, 9> kScalings{{{{0, 0, 0, 0, 0}, false},
+                                            {{1, 0, 0, 0, 0}, false},
+                                            {{0, 1, 0, 0, 0}, false},
+                                            {{0, 0, 1, 0, 0}, false},
+                                            {{0, 0, 0, 1, 0}, false},
+                                            {{0, 0, 0, 1, 0}, true},
+                                            {{0, 0, 0, 0, 1}, false},
+                                            {{3, -5, 7, -2, 4}, false},
+                                            {{3, -5, 7, -2, 4}, true}}};
 
 /// The size in scaled system `s` of a value whose SI size is `si`.
 double scaled(double si, const Dimension& d, const Scaling& s) {
   double e = 0;
-  for (int i = 0; i < 4; ++i) e += d.exponents[i] * s.exponent[i];
+  for (int i = 0; i < Dimension::kBases; ++i) e += d.exponents[i] * s.exponent[i];
   return si * std::exp2(e);
 }
 
@@ -136,10 +137,10 @@ std::optional<double> exponentFrom(double v0, double v) {
 /// The dimension the values in every scaling show, reading angles in functions as plain
 /// numbers (angleArguments false) or as angles; nullopt when they do not fit one dimension.
 std::optional<Dimension> dimensionFrom(const std::vector<double>& v, bool angleArguments) {
-  const int angle = angleArguments ? 5 : 4, check = angleArguments ? 7 : 6;
+  const int angle = angleArguments ? 5 : 4, check = angleArguments ? 8 : 7;
   Dimension d;
-  const int from[4] = {1, 2, 3, angle};
-  for (int i = 0; i < 4; ++i) {
+  const int from[Dimension::kBases] = {1, 2, 3, angle, 6};
+  for (int i = 0; i < Dimension::kBases; ++i) {
     const auto e = exponentFrom(v[0], v[from[i]]);
     if (!e) return std::nullopt;
     d.exponents[i] = *e;

@@ -5,8 +5,8 @@
 //
 // Dimensions are tracked by evaluating each expression again in scaled base units: with the
 // metre made 2 times larger every length-valued constant doubles, so an expression's value
-// scales as 2^e where e is its length exponent; likewise for mass, time and angle. A last
-// evaluation with all four bases scaled at once must agree with the exponents found, else the
+// scales as 2^e where e is its length exponent; likewise for mass, time, angle and temperature. A
+// last evaluation with all five bases scaled at once must agree with the exponents found, else the
 // expression adds, subtracts or compares different dimensions (or passes a quantity with a
 // unit to a function that needs a plain number). Scaling by powers of two is exact in floating
 // point, so a consistent expression gives exact exponents. Trigonometric functions take either

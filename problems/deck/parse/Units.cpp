@@ -41,6 +41,8 @@ const std::vector<NamedDimension>& namedDimensions() {
       {dim::lengthPerAngle, "a length per angle", "m/rad"},
       {Dimension::of(1, 1, -2, -1), "a moment per angle", "N/rad"},
       {Dimension::of(1, 0, -1, -1), "a velocity per angle", "m/(rad s)"},
+      {dim::temperature, "a temperature difference", "K"},
+      {dim::thermalExpansion, "a thermal expansion coefficient", "1/K"},
   };
   return named;
 }
@@ -57,9 +59,9 @@ std::string exponentText(double e) {
 std::string siUnitOf(const Dimension& d) {
   for (const NamedDimension& n : namedDimensions())
     if (n.dimension == d) return n.unit;
-  static const char* const base[] = {"m", "kg", "s", "rad"};
+  static const char* const base[] = {"m", "kg", "s", "rad", "K"};
   std::string out;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < Dimension::kBases; ++i) {
     if (d.exponents[i] == 0) continue;
     if (!out.empty()) out += " ";
     out += base[i] + exponentText(d.exponents[i]);
@@ -90,6 +92,7 @@ const std::vector<Unit>& units() {
       {"rad", 1, dim::angle},      {"deg", pi / 180, dim::angle},
       {"rev", 2 * pi, dim::angle}, {"rpm", 2 * pi / 60, dim::angularSpeed},
       {"Hz", 1, dim::frequency},   {"kHz", 1e3, dim::frequency},
+      {"K", 1, dim::temperature},
   };
   return all;
 }

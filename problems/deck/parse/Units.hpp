@@ -1,6 +1,7 @@
 // Physical dimensions and the units a deck may write after a number (issue 16): `210 GPa`,
-// `6000 mm`, `12 kN/m`, `3000 rpm`. A dimension is a vector of exponents of four base
-// dimensions: length (m), mass (kg), time (s) and plane angle (rad). Angle is kept apart from
+// `6000 mm`, `12 kN/m`, `3000 rpm`, `20 K`. A dimension is a vector of exponents of five base
+// dimensions: length (m), mass (kg), time (s), plane angle (rad) and temperature (K, a
+// temperature change: decks give differences, never absolute temperatures). Angle is kept apart from
 // the dimensionless numbers so that an angular speed (rad/s, rpm) is never taken for a
 // frequency (Hz = 1/s) and a rotational stiffness (N m/rad) never for a moment.
 #pragma once
@@ -14,13 +15,15 @@
 namespace beamrotor {
 
 struct Dimension {
-  /// Exponents of length, mass, time and angle; whole numbers for every named dimension, but
-  /// an intermediate result such as sqrt(A) may have halves.
-  std::array<double, 4> exponents{0, 0, 0, 0};
+  /// Exponents of length, mass, time, angle and temperature; whole numbers for every named
+  /// dimension, but an intermediate result such as sqrt(A) may have halves.
+  std::array<double, 5> exponents{0, 0, 0, 0, 0};
 
-  static constexpr int kLength = 0, kMass = 1, kTime = 2, kAngle = 3;
-  static constexpr Dimension of(double length, double mass, double time, double angle) {
-    return Dimension{{length, mass, time, angle}};
+  static constexpr int kLength = 0, kMass = 1, kTime = 2, kAngle = 3, kTemperature = 4;
+  static constexpr int kBases = 5;
+  static constexpr Dimension of(double length, double mass, double time, double angle,
+                                double temperature = 0) {
+    return Dimension{{length, mass, time, angle, temperature}};
   }
   bool dimensionless() const { return *this == Dimension{}; }
   bool operator==(const Dimension&) const = default;
@@ -52,6 +55,8 @@ inline constexpr Dimension velocity = Dimension::of(1, 0, -1, 0);
 inline constexpr Dimension acceleration = Dimension::of(1, 0, -2, 0);
 inline constexpr Dimension lengthPerAngle = Dimension::of(1, 0, 0, -1);
 inline constexpr Dimension viscosity = Dimension::of(-1, 1, -1, 0);  // dynamic, Pa s
+inline constexpr Dimension temperature = Dimension::of(0, 0, 0, 0, 1);  // a change, K
+inline constexpr Dimension thermalExpansion = Dimension::of(0, 0, 0, 0, -1);  // 1/K
 }  // namespace dim
 
 /// What a numeric field holds, stated where the field is read: its dimension and the unit a

@@ -8,6 +8,7 @@
 #include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/parse/Suggest.hpp"
+#include "problems/deck/structure/StructureKinds.hpp"
 
 namespace beamrotor::reader {
 
@@ -181,6 +182,61 @@ void readContacts(Context& c) {
   }
 }
 
+/// `rigid_links:` (a slave point following a master, all its dofs or those listed) and
+/// `diaphragms:` (points following a master in a plane: its two translations and the rotation
+/// about its normal, as far as the model carries them).
+void readRigidLinks(Context& c) {
+  std::vector<std::string> names;
+  const auto tie = [&](const Field& f, const std::string& name, const Field& master,
+                       const Field& slave, std::vector<Dof> dofs) {
+    DeckRigidLink l{name, c.point(master).name, c.point(slave).name, std::move(dofs), f.place()};
+    if (l.master == l.slave) slave.fail("a point cannot follow itself");
+    for (const DeckRigidLink& other : c.deck.rigidLinks) {
+      if (other.slave == l.slave)
+        slave.fail("point '" + l.slave + "' already follows '" + other.master + "' (" +
+                   other.name + ")");
+      if (other.slave == l.master || other.master == l.slave)
+        slave.fail("a point may lead or follow, not both: tie every point to one master");
+    }
+    for (Dof d : l.dofs)
+      if (const DeckSupport* s = holder(c, c.point(slave), d))
+        slave.fail(std::string(dofName(d)) + " at point '" + l.slave + "' is held by support '" +
+                   s->name + "'; a point that follows its master cannot be held too");
+    c.deck.rigidLinks.push_back(std::move(l));
+  };
+  if (auto links = block(c, "rigid_links"))
+    for (const Field& f : links->items()) {
+      f.allowOnly({"name", "master", "slave", "dofs"}, "a rigid link");
+      const Field name = f.require("name");
+      claimName(name, name.name(), names, "a rigid link or diaphragm");
+      std::vector<Dof> dofs;
+      if (auto list = f.get("dofs"))
+        for (const Field& d : list->itemsOrSingle()) dofs.push_back(c.dof(d));
+      else
+        for (Dof d : kAllDofs)
+          if (c.deck.dofs.contains(d)) dofs.push_back(d);
+      tie(f, name.name(), f.require("master"), f.require("slave"), std::move(dofs));
+    }
+  if (auto diaphragms = block(c, "diaphragms"))
+    for (const Field& f : diaphragms->items()) {
+      f.allowOnly({"name", "master", "points", "plane"}, "a diaphragm");
+      const Field name = f.require("name");
+      claimName(name, name.name(), names, "a rigid link or diaphragm");
+      // The plane's two translations and the rotation about its normal.
+      const std::string plane = f.require("plane").choice({"xy", "xz", "yz"});
+      const std::vector<Dof> inPlane = plane == "xy"   ? std::vector{Dof::ux, Dof::uy, Dof::rz}
+                                       : plane == "xz" ? std::vector{Dof::ux, Dof::uz, Dof::ry}
+                                                       : std::vector{Dof::uy, Dof::uz, Dof::rx};
+      std::vector<Dof> dofs;
+      for (Dof d : inPlane)
+        if (c.deck.dofs.contains(d)) dofs.push_back(d);
+      const Field points = f.require("points");
+      if (!points.isList() || points.items().empty())
+        points.fail("a diaphragm ties a list of points to its master, got " + points.describe());
+      for (const Field& p : points.items()) tie(f, name.name(), f.require("master"), p, dofs);
+    }
+}
+
 void readMasses(Context& c) {
   auto masses = block(c, "masses");
   if (!masses) return;
@@ -337,12 +393,53 @@ void readLoadedPart(Context& c, const Field& f, DeckLoad& l) {
     for (double fraction : {l.from, l.to}) addLoadBoundary(c, i, fraction, f.place());
 }
 
+/// A temperature change on segments or members: `dT` at the centroid and its rise through the
+/// depth `dT_y`, `dT_z` (K), on materials that give their `alpha`.
+void readTemperature(const Context& c, const Field& f, DeckLoad& l) {
+  f.allowOnly({"type", "segment", "member", "dT", "dT_y", "dT_z"}, "a temperature load");
+  l.kind = DeckLoad::Kind::temperature;
+  l.segments = loadedSegments(c, f);
+  const ExpressionEvaluator& ev = c.evaluator;
+  bool any = false;
+  for (const auto& [key, value, bends] :
+       {std::tuple{"dT", &l.dT, Dof::ux}, std::tuple{"dT_y", &l.dTy, Dof::rz},
+        std::tuple{"dT_z", &l.dTz, Dof::ry}}) {
+    auto v = f.get(key);
+    if (!v) continue;
+    if (!c.deck.dofs.contains(bends))
+      v->fail(std::string(key) + (bends == Dof::ux ? " stretches along " : " bends about ") +
+              std::string(dofName(bends)) + ", not a dof of a " +
+              c.deck.dimension + " model");
+    *value = v->number(ev, dim::temperature);
+    any = true;
+  }
+  if (!any) f.fail("a temperature load needs at least one of dT, dT_y, dT_z (K)");
+  for (int i = 0; i < int(c.deck.segments.size()); ++i) {
+    if (!l.segments.empty() && std::find(l.segments.begin(), l.segments.end(), i) == l.segments.end())
+      continue;
+    const Section& s = *c.deck.segments[i].section;
+    const std::string& name = c.deck.segments[i].name;
+    const std::string what = c.deck.frame     ? "member '" + name + "'"
+                             : name.empty() ? "segment " + std::to_string(i)
+                                            : "segment '" + name + "'";
+    if (!(s.material.alpha > 0))
+      f.fail("a temperature load needs the thermal expansion of material '" + s.material.name +
+             "' of " + what + ": give it alpha (1/K, e.g. 12e-6/K for steel)");
+    try {
+      thermalStrain(s, l.dT, l.dTy, l.dTz);
+    } catch (const std::invalid_argument& e) {
+      f.fail(std::string(e.what()) + " (" + what + ")");
+    }
+  }
+}
+
 /// The loads of one list (`loads:` or a load case's `loads:`), appended to out.
 void readLoadList(Context& c, const Field& list, std::vector<DeckLoad>& out) {
   const ExpressionEvaluator& ev = c.evaluator;
   for (const Field& f : list.items()) {
     if (!f.isMap()) f.fail("expected a map describing a load, got " + f.describe());
-    const std::string type = f.require("type").choice({"point", "distributed", "self-weight"});
+    const std::string type =
+        f.require("type").choice({"point", "distributed", "self-weight", "temperature"});
     DeckLoad l;
     l.place = f.place();
     if (type == "point") {
@@ -382,6 +479,8 @@ void readLoadList(Context& c, const Field& list, std::vector<DeckLoad>& out) {
       }
       readDistributedValues(c, f, l);
       readLoadedPart(c, f, l);
+    } else if (type == "temperature") {
+      readTemperature(c, f, l);
     } else {
       f.allowOnly({"type", "segment", "member", "g"}, "a self-weight load");
       l.kind = DeckLoad::Kind::selfWeight;
@@ -465,6 +564,7 @@ void readAttachments(Context& c) {
   readSupports(c);
   readSprings(c);
   readContacts(c);
+  readRigidLinks(c);
   readMasses(c);
   readHinges(c);
   readLoads(c);
@@ -481,6 +581,18 @@ void readAttachments(Context& c) {
         ->fail(
             "a model without segments (beams) needs at least one spring "
             "(springs:) to hold its masses");
+}
+
+void refuseTiedAnalyses(const Context& c) {
+  if (c.deck.rigidLinks.empty()) return;
+  for (const DeckAnalysis& a : c.deck.analyses) {
+    const StaticSpec* s = a.as<StaticSpec>();
+    if (s && !s->secondOrder) continue;
+    throw DeckError(c.deck.path, a.place,
+                    "rigid links, offsets and diaphragms are eliminated in first-order statics "
+                    "only; the " + a.type() + (s ? " (second-order)" : "") + " analysis '" +
+                    a.name + "' would ignore them: remove it or the ties");
+  }
 }
 
 }  // namespace beamrotor::reader

@@ -114,13 +114,44 @@ std::array<std::vector<Dof>, 2> readReleases(const Context& c, const Field& f) {
 
 int memberEnd(Context& c, const Field& f);
 
+/// `offsets: {start: [..], end: [..], axes: global | member}`: rigid arms from the member's
+/// joints to its ends. Each end given becomes a joint of its own (MEMBER@start_offset,
+/// MEMBER@end_offset) that follows its joint in every dof (a rigid link), and the member runs
+/// between the arms' ends; member axes are those of the line between the joints.
+void readOffsets(Context& c, const Field& f, const std::string& member, DeckMember& m,
+                 const Eigen::Vector3d& axis) {
+  f.allowOnly({"start", "end", "axes"}, "a member's offsets");
+  const bool inMemberAxes = f.get("axes") && f.require("axes").choice({"global", "member"}) == "member";
+  const Eigen::Matrix3d R = memberAxes(axis, m.orientation);  // rows: local axes
+  for (int end = 0; end < 2; ++end) {
+    const char* key = end == 0 ? "start" : "end";
+    auto given = f.get(key);
+    if (!given) continue;
+    Eigen::Vector3d r = coordinates(c, *given, "an offset", dim::length);
+    if (inMemberAxes) r = R.transpose() * r;
+    int& joint = end == 0 ? m.from : m.to;
+    auto& joints = c.deck.frame->joints;
+    const DeckJoint& from = joints[joint];
+    DeckJoint arm{member + "@" + key + "_offset", from.x + r, given->place()};
+    for (const DeckJoint& other : joints)
+      if ((other.x - arm.x).norm() <= 1e-12 * std::max(1.0, arm.x.norm()))
+        given->fail("the offset end lies on node '" + other.name + "'");
+    c.deck.rigidLinks.push_back({arm.name, from.name, arm.name, {}, given->place()});
+    for (Dof d : kAllDofs)
+      if (c.deck.dofs.contains(d)) c.deck.rigidLinks.back().dofs.push_back(d);
+    c.deck.points.push_back({arm.name, 0, arm.place});
+    joint = int(joints.size());
+    joints.push_back(std::move(arm));
+  }
+}
+
 double readMembers(Context& c) {
   const Field block = c.root.require("members");
   std::vector<std::string> names;
   double elements = 0;
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "from", "to", "section", "elements", "size", "formulation", "z", "y",
-                 "roll", "release"},
+                 "roll", "release", "offsets"},
                 "a member");
     DeckSegment s;
     s.place = f.place();
@@ -134,9 +165,11 @@ double readMembers(Context& c) {
     if (m.from == m.to) f.require("to").fail("a member joins two different nodes");
     const Eigen::Vector3d axis =
         c.deck.frame->joints[m.to].x - c.deck.frame->joints[m.from].x;
-    s.length = axis.norm();
-    readSegmentMesh(c, f, s);
     m.orientation = readOrientation(c, f, axis);
+    if (auto offsets = f.get("offsets")) readOffsets(c, *offsets, s.name, m, axis);
+    s.length = (c.deck.frame->joints[m.to].x - c.deck.frame->joints[m.from].x).norm();
+    if (!(s.length > 0)) f.require("offsets").fail("the offsets leave the member no length");
+    readSegmentMesh(c, f, s);
     if (auto release = f.get("release")) m.releases = readReleases(c, *release);
     elements += s.elementEstimate();
     if (!(elements <= kMaxFrameElements))

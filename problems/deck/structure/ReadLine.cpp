@@ -210,7 +210,7 @@ void readMaterials(Context& c) {
   if (!block || block->isNull()) return;
   std::vector<std::string> names;
   for (const Field& f : block->items()) {
-    f.allowOnly({"name", "E", "nu", "G", "rho"}, "a material");
+    f.allowOnly({"name", "E", "nu", "G", "rho", "alpha"}, "a material");
     const std::string name = f.require("name").name();
     claimName(f.require("name"), name, names, "a material");
     const ExpressionEvaluator& ev = c.evaluator;
@@ -233,6 +233,7 @@ void readMaterials(Context& c) {
     if (nuField && !(nu > -1 && nu < 0.5))
       nuField->fail("Poisson's ratio must lie in (-1, 0.5), got " + formatNumber(nu));
     Material m{name, E, nu, GField ? G : E / (2 * (1 + nu)), rho};
+    if (auto alpha = f.get("alpha")) m.alpha = alpha->nonNegative(ev, dim::thermalExpansion);
     c.materials.push_back(m);
   }
 }
