@@ -136,9 +136,9 @@ void addFrame(const Deck& deck, Model& model) {
   }
 }
 
-/// The span loads (distributed loads, self-weight, temperature) of `loads` acting on each segment, in
-/// the order of `loads`: one pass over the loads, not one per beam (a frame with a floor load
-/// on each of its 10^4 beams has 10^4 loads).
+/// The span loads (distributed loads, self-weight, temperature changes) of `loads` acting on
+/// each segment, in the order of `loads`: one pass over the loads, not one per beam (a frame
+/// with a floor load on each of its 10^4 beams has 10^4 loads).
 std::vector<std::vector<const DeckLoad*>> spanLoadsBySegment(const Deck& deck,
                                                              const std::vector<DeckLoad>& loads) {
   std::vector<std::vector<const DeckLoad*>> out(deck.segments.size());
