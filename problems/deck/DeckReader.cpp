@@ -24,22 +24,21 @@ namespace reader {
 const DeckPoint& Context::point(const Field& f) const {
   if (f.isMap()) return memberPoint(*this, f);
   const std::string name = f.name();
+  const auto nameOf = [](const DeckPoint& p) -> const std::string& { return p.name; };
+  if (const auto i = pointsByName.find(deck.points, name, nameOf)) return deck.points[*i];
   std::vector<std::string> names;
-  for (const DeckPoint& p : deck.points) {
-    if (p.name == name) return p;
-    names.push_back(p.name);
-  }
+  for (const DeckPoint& p : deck.points) names.push_back(p.name);
   f.fail("no point named '" + name + "'" + didYouMean(name, names) +
          " (points: " + joinNames(names) + ")");
 }
 
 int Context::segment(const Field& f) const {
   const std::string name = f.name();
+  const auto nameOf = [](const DeckSegment& s) -> const std::string& { return s.name; };
+  if (const auto i = segmentsByName.find(deck.segments, name, nameOf)) return *i;
   std::vector<std::string> names;
-  for (int i = 0; i < int(deck.segments.size()); ++i) {
-    if (deck.segments[i].name == name) return i;
-    if (!deck.segments[i].name.empty()) names.push_back(deck.segments[i].name);
-  }
+  for (const DeckSegment& s : deck.segments)
+    if (!s.name.empty()) names.push_back(s.name);
   const std::string what = deck.frame ? "member" : "segment";
   f.fail("no " + what + " named '" + name + "'" + didYouMean(name, names) + " (named " + what +
          "s: " + joinNames(names) + ")");
@@ -67,11 +66,9 @@ Dof Context::rotation(const Field& f) const {
   return d;
 }
 
-void claimName(const Field& f, const std::string& name, std::vector<std::string>& taken,
+void claimName(const Field& f, const std::string& name, TakenNames& taken,
                const std::string& what) {
-  if (std::find(taken.begin(), taken.end(), name) != taken.end())
-    f.fail("there is already " + what + " named '" + name + "'");
-  taken.push_back(name);
+  if (!taken.claim(name)) f.fail("there is already " + what + " named '" + name + "'");
 }
 
 namespace {
@@ -252,7 +249,7 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   Deck deck;
   deck.path = source.path;
   deck.stem = source.stem;
-  reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {}, {}, {}, {}, {}};
+  reader::Context c{Field::root(*source.tree), deck, ExpressionEvaluator(memo), {}, {}, {}, {}, {}, {}, {}, {}};
   // A study's re-readings (with a memo) repeat its first reading: no log, no check below.
   std::optional<NumericReadLog> log;
   if (!memo) log.emplace();

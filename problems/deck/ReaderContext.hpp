@@ -12,6 +12,7 @@
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/parse/NumericReads.hpp"
+#include "problems/deck/NameIndex.hpp"
 #include "problems/deck/study/Overrides.hpp"
 
 namespace beamrotor::reader {
@@ -30,6 +31,9 @@ struct Context {
   /// The fields giving values of such a parameter elsewhere in the deck (a sweep's), with the
   /// parameter's name: read in SI as written, their units checked once its dimension is known.
   std::vector<std::pair<std::string, Field>> valuesOfBare;
+  /// deck.points, deck.segments and a frame's joints by name (so that reading stays linear in
+  /// the model's size).
+  NameIndex pointsByName, segmentsByName, jointsByName;
 
   /// The point a field names; fails with a did-you-mean suggestion.
   const DeckPoint& point(const Field& f) const;
@@ -132,7 +136,7 @@ void readOutput(Context& c);
 BeamTheory formulationOf(const Field& f);
 
 /// Fails at `f` when `name` is already in `taken`; otherwise records it.
-void claimName(const Field& f, const std::string& name, std::vector<std::string>& taken,
+void claimName(const Field& f, const std::string& name, TakenNames& taken,
                const std::string& what);
 
 }  // namespace beamrotor::reader

@@ -172,7 +172,7 @@ void readBearings(Context& c) {
   if (!carriesLateral(c.deck))
     block->fail("bearings act on uy and uz: use model: {dimension: lateral} (or 3d), not " +
                 c.deck.dimension);
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : block->items()) {
     if (!f.isMap()) f.fail("expected a map describing a bearing, got " + f.describe());
     DeckBearing b;

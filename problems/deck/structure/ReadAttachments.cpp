@@ -47,7 +47,7 @@ std::vector<Dof> fixedDofs(const Context& c, const Field& f) {
 void readSupports(Context& c) {
   auto supports = block(c, "supports");
   if (!supports) return;
-  std::vector<std::string> names;
+  TakenNames names;
   // Which support already holds each (position, dof): two supports on one dof conflict.
   std::vector<std::tuple<double, Dof, std::string, std::string>> held;  // + the point's name
   const double tol = 1e-12 * std::max(1.0, c.deck.length());
@@ -96,7 +96,7 @@ void readSupports(Context& c) {
 void readSprings(Context& c) {
   auto springs = block(c, "springs");
   if (!springs) return;
-  std::vector<std::string> names;
+  TakenNames names;
   const std::vector<Field> items = springs->items();
   for (const Field& f : items) {
     f.allowOnly({"name", "at", "to", "dof", "k", "c"}, "a spring");
@@ -156,7 +156,7 @@ const DeckSupport* holder(const Context& c, const DeckPoint& p, Dof d) {
 void readContacts(Context& c) {
   auto contacts = block(c, "contacts");
   if (!contacts) return;
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : contacts->items()) {
     f.allowOnly({"name", "at", "dof", "min", "max"}, "a contact");
     DeckContact k;
@@ -240,7 +240,7 @@ void readRigidLinks(Context& c) {
 void readMasses(Context& c) {
   auto masses = block(c, "masses");
   if (!masses) return;
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : masses->items()) {
     f.allowOnly({"name", "at", "m", "Jp", "Jd", "disk"}, "a mass");
     DeckMass m;
@@ -505,7 +505,7 @@ void readLoads(Context& c) {
 
 /// `load_cases:` (named lists of loads) and `combinations:` (factors on those names).
 void readLoadCases(Context& c) {
-  std::vector<std::string> names;
+  TakenNames names;
   if (auto cases = block(c, "load_cases")) {
     for (const Field& f : cases->items()) {
       if (!f.isMap()) f.fail("expected a map {name:, loads: [...]}, got " + f.describe());

@@ -4,6 +4,9 @@
 // may also name a place on a member inline, `{member: NAME, at: FRACTION}`: those places
 // are collected here, before the attachments are read, so that every one is a point.
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -42,19 +45,60 @@ Eigen::Vector3d coordinates(const Context& c, const Field& f, const std::string&
   return x;
 }
 
+const std::string& jointName(const DeckJoint& j) { return j.name; }
+
 /// The index of the joint a field names.
 int jointIndex(const Context& c, const Field& f) {
   const std::string name = f.name();
   const auto& joints = c.deck.frame->joints;
-  for (std::size_t j = 0; j < joints.size(); ++j)
-    if (joints[j].name == name) return int(j);
+  if (const auto j = c.jointsByName.find(joints, name, jointName)) return *j;
   std::vector<std::string> names;
   for (const DeckJoint& j : joints) names.push_back(j.name);
   f.fail("no node named '" + name + "'" + didYouMean(name, names) + " (nodes: " +
          joinNames(names) + ")");
 }
 
-void readJoints(Context& c, std::vector<std::string>& pointNames) {
+/// Fails at the first node that lies on an earlier one (within 1e-12 of its distance from the
+/// origin, at least 1e-12), naming the first such earlier node. Nodes are binned in cubes of
+/// twice the largest such tolerance, so two nodes that meet share a cube or touch neighbouring
+/// ones: one pass over the nodes (bin indices stay below 5e11, as no node is farther from the
+/// origin than 1e12 tolerances).
+void refuseCoincidentJoints(const std::vector<DeckJoint>& joints, const std::vector<Field>& items) {
+  const auto tolerance = [](const Eigen::Vector3d& x) { return 1e-12 * std::max(1.0, x.norm()); };
+  double reach = 0;
+  for (const DeckJoint& j : joints) reach = std::max(reach, tolerance(j.x));
+  const double side = 2 * reach;
+  using Bin = std::array<std::int64_t, 3>;
+  struct BinHash {
+    std::size_t operator()(const Bin& b) const {
+      std::size_t h = 0;
+      for (std::int64_t v : b) h = h * 1000003u ^ std::hash<std::int64_t>{}(v);
+      return h;
+    }
+  };
+  std::unordered_map<Bin, std::vector<int>, BinHash> bins;
+  for (int j = 0; j < int(joints.size()); ++j) {
+    const Eigen::Vector3d& x = joints[j].x;
+    Bin bin;
+    for (int k = 0; k < 3; ++k) bin[k] = std::int64_t(std::floor(x[k] / side));
+    int first = -1;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto near = bins.find({bin[0] + dx, bin[1] + dy, bin[2] + dz});
+          if (near == bins.end()) continue;
+          for (int other : near->second)
+            if ((joints[other].x - x).norm() <= tolerance(x) && (first < 0 || other < first))
+              first = other;
+        }
+    if (first >= 0)
+      items[j].require("at").fail("node '" + joints[j].name + "' lies on node '" +
+                                  joints[first].name + "'; a member joins two different places");
+    bins[bin].push_back(j);
+  }
+}
+
+void readJoints(Context& c, TakenNames& pointNames) {
   const Field block = c.root.require("nodes");
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "at"}, "a node");
@@ -62,14 +106,11 @@ void readJoints(Context& c, std::vector<std::string>& pointNames) {
     DeckJoint j{nf.name(), coordinates(c, f.require("at"), "a node's coordinates", dim::length),
                 f.place()};
     claimName(nf, j.name, pointNames, "a point or node");
-    for (const DeckJoint& other : c.deck.frame->joints)
-      if ((other.x - j.x).norm() <= 1e-12 * std::max(1.0, j.x.norm()))
-        f.require("at").fail("node '" + j.name + "' lies on node '" + other.name +
-                             "'; a member joins two different places");
     c.deck.points.push_back({j.name, 0, j.place});
     c.deck.frame->joints.push_back(std::move(j));
   }
   if (c.deck.frame->joints.size() < 2) block.fail("a frame needs at least two nodes");
+  refuseCoincidentJoints(c.deck.frame->joints, block.items());
 }
 
 /// `z:`, `y:` (reference vectors) or `roll:` (rad) of a member in a 3d model.
@@ -147,7 +188,7 @@ void readOffsets(Context& c, const Field& f, const std::string& member, DeckMemb
 
 double readMembers(Context& c) {
   const Field block = c.root.require("members");
-  std::vector<std::string> names;
+  TakenNames names;
   double elements = 0;
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "from", "to", "section", "elements", "size", "formulation", "z", "y",
@@ -231,10 +272,12 @@ int memberEnd(Context& c, const Field& f) {
     const std::string text = f.text();
     const std::string host = text.substr(0, text.find('@'));
     const auto& segments = c.deck.segments;
+    const auto hostIndex = c.segmentsByName.find(
+        segments, host, [](const DeckSegment& s) -> const std::string& { return s.name; });
     std::vector<std::string> names;
-    for (const DeckSegment& s : segments) names.push_back(s.name);
-    const auto it = std::find(names.begin(), names.end(), host);
-    if (it == names.end())
+    if (!hostIndex)
+      for (const DeckSegment& s : segments) names.push_back(s.name);
+    if (!hostIndex)
       f.fail("no member named '" + host + "' before this one" + didYouMean(host, names) +
              " (a member may start or end on a member listed before it: " + joinNames(names) +
              ")");
@@ -244,7 +287,7 @@ int memberEnd(Context& c, const Field& f) {
     if (digits.empty() || *end != '\0' || !(fraction >= 0 && fraction <= 1))
       f.fail("expected MEMBER@FRACTION with a fraction of the member's length in [0, 1] (e.g. " +
              host + "@0.5), got '" + text + "'");
-    place = {int(it - names.begin()), fraction};
+    place = {*hostIndex, fraction};
   } else {
     return jointIndex(c, f);
   }
@@ -254,8 +297,7 @@ int memberEnd(Context& c, const Field& f) {
   if (fraction <= kEndTolerance) return host.from;
   if (fraction >= 1 - kEndTolerance) return host.to;
   const std::string name = placeName(c, m, fraction);
-  for (std::size_t j = 0; j < joints.size(); ++j)
-    if (joints[j].name == name) return int(j);
+  if (const auto j = c.jointsByName.find(joints, name, jointName)) return *j;
   const Eigen::Vector3d x = joints[host.from].x + fraction * (joints[host.to].x - joints[host.from].x);
   c.deck.points.push_back({name, 0, f.place()});
   joints.push_back({name, x, f.place(), m, fraction});
@@ -265,13 +307,14 @@ int memberEnd(Context& c, const Field& f) {
 /// Registers the place (a point and, inside the member, a station) unless it exists.
 void addPlace(Context& c, const std::string& name, int member, double fraction,
               const DeckPlace& place) {
-  for (const DeckPoint& p : c.deck.points)
-    if (p.name == name) return;
+  if (c.pointsByName.find(c.deck.points, name,
+                         [](const DeckPoint& p) -> const std::string& { return p.name; }))
+    return;
   c.deck.points.push_back({name, 0, place});
   c.deck.frame->stations.push_back({name, member, fraction});
 }
 
-void readStations(Context& c, std::vector<std::string>& pointNames, double elements) {
+void readStations(Context& c, TakenNames& pointNames, double elements) {
   auto points = c.root.get("points");
   if (!points || points->isNull()) return;
   for (const Field& f : points->items()) {
@@ -322,7 +365,7 @@ void readFrame(Context& c) {
         .fail("a frame is a planar or 3d model (model: {dimension: planar} or 3d); lateral "
               "models are rotors along x (segments:)");
   c.deck.frame.emplace();
-  std::vector<std::string> pointNames;
+  TakenNames pointNames;
   readJoints(c, pointNames);
   const double elements = readMembers(c);
   readStations(c, pointNames, elements);

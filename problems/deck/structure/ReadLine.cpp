@@ -191,7 +191,7 @@ void readPointModel(Context& c) {
     c.root.fail(
         "the deck needs segments (a line of beams) or, for a model without beams, "
         "points carrying masses and springs");
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : points->items()) {
     f.allowOnly({"name", "at"}, "a point");
     const Field nf = f.require("name");
@@ -208,7 +208,7 @@ void readPointModel(Context& c) {
 void readMaterials(Context& c) {
   auto block = c.root.get("materials");
   if (!block || block->isNull()) return;
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : block->items()) {
     f.allowOnly({"name", "E", "nu", "G", "rho", "alpha"}, "a material");
     const std::string name = f.require("name").name();
@@ -242,7 +242,7 @@ void readSections(Context& c) {
   if (!c.root.has("sections") && !c.root.has("segments") && !c.root.has("members"))
     return;  // a model without beams
   auto block = c.root.require("sections");
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : block.items()) {
     if (!f.isMap()) f.fail("expected a map describing a section, got " + f.describe());
     const std::string name = f.require("name").name();
@@ -302,7 +302,7 @@ void readLine(Context& c) {
   const ExpressionEvaluator& ev = c.evaluator;
   // 1. Segments, in order from the start of the line.
   const Field block = c.root.require("segments");
-  std::vector<std::string> names;
+  TakenNames names;
   std::vector<Field> lengths;
   double elements = 0;
   for (const Field& f : block.items()) {
@@ -346,7 +346,7 @@ void readLine(Context& c) {
   const double L = c.deck.length();
   c.deck.points.push_back({"start", 0, block.place()});
   c.deck.points.push_back({"end", L, block.place()});
-  std::vector<std::string> pointNames{"start", "end"};
+  TakenNames pointNames{"start", "end"};
   if (auto points = c.root.get("points"); points && !points->isNull()) {
     for (const Field& f : points->items()) {
       f.allowOnly({"name", "at"}, "a point");

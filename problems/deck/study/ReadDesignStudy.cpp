@@ -37,7 +37,7 @@ struct StudyContext {
   Deck deck;
   reader::Context c;
   StudyContext(const DeckSource& source, const Deck& base)
-      : deck(base), c{Field::root(*source.tree), deck, {}, {}, {}, {}, {}, {}} {
+      : deck(base), c{Field::root(*source.tree), deck, {}, {}, {}, {}, {}, {}, {}, {}, {}} {
     auto define = [&](const std::string& name, double value) {
       Amount a{value, {}, false};
       for (const auto& [named, d] : deck.dimensions)

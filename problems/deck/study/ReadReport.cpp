@@ -10,7 +10,8 @@ namespace beamrotor::reader {
 void readReport(Context& c) {
   auto block = c.root.get("report");
   if (!block || block->isNull()) return;
-  std::vector<std::string> known, taken;
+  std::vector<std::string> known;
+  TakenNames taken;
   for (const auto* list : {&c.deck.parameters, &c.deck.derived})
     for (const auto& [name, value] : *list) known.push_back(name);
   for (const Field& f : block->itemsOrSingle()) {

@@ -111,7 +111,7 @@ void readPaperFigure(const Context& c, const Field& f, DeckCheck& k) {
 void readChecks(Context& c) {
   auto block = c.root.get("checks");
   if (!block || block->isNull()) return;
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : boundedItems(*block, "checks")) {
     f.allowOnly({"name", "quantity", "reference", "tolerance", "when", "analysis", "case",
                  "paper", "reason"},

@@ -138,7 +138,7 @@ void readInitial(const Context& c, const Field& block, DeckTransient& t) {
 }
 
 void readHistories(const Context& c, const Field& block, DeckTransient& t) {
-  std::vector<std::string> names;
+  TakenNames names;
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "at", "dof", "value", "unit"}, "a history");
     DeckHistory h;
@@ -164,7 +164,7 @@ void readHistories(const Context& c, const Field& block, DeckTransient& t) {
           "parameter), got '" +
           h.name + "'");
     if (!h.expression.empty()) {
-      std::vector<std::string> variables = names;
+      std::vector<std::string> variables = names.inOrder();
       variables.push_back("t");
       try {
         c.evaluator.compile(h.expression, variables);  // parses, and names only what exists
