@@ -10,6 +10,7 @@
 
 #include "fem/model/Model.hpp"
 #include "problems/deck/Deck.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/structure/StaticExtremes.hpp"
 
 namespace beamrotor::cli {
@@ -19,6 +20,7 @@ inline constexpr std::size_t kSummaryMembers = 20;
 
 /// Nothing for a model without members (a line deck). Each line led by `indent`.
 void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model,
-                         const StaticExtremes& extremes, const std::string& indent = "  ");
+                         const StaticExtremes& extremes, const std::string& indent = "  ",
+                         const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli
