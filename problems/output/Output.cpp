@@ -42,6 +42,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The caption of a chart of prepared's run (ChartCaption.hpp), in prepared's units.
+std::string captionOf(const PreparedRun& prepared, const std::string& analysis,
+                      const std::string& what = "") {
+  return chartCaption(*prepared.run, analysis, what, "", prepared.units);
+}
+
 /// A frame's charts: the whole structure at once, not a line coordinate through its members.
 /// The deformed shape and moments under the deck's own loads (unless only its load cases load
 /// it), under each combination that governs an extreme (governingCombinations), the envelope
@@ -56,7 +62,7 @@ void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, con
     const StationsByElement byElement(stations, model.elements().size());
     const FrameDrawing frame{&model, &byElement, &x.ranges, x.largestDisplacement.value};
     drawChart(dir,
-              frameChart(chartCaption(run, a.name, what), chart, frame, planar, prepared.units));
+              frameChart(captionOf(prepared, a.name, what), chart, frame, planar, prepared.units));
   };
   const StaticOutcome* statics = resultOf<StaticOutcome>(a);
   if (!statics || statics->ownLoads || p.cases.empty())
@@ -70,13 +76,13 @@ void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, con
   std::vector<std::string> names;
   for (const CaseOutcome& c : cases)
     if (c.combination) names.push_back(c.name);
-  drawChart(dir, frameEnvelopeChart(chartCaption(run, a.name, ", envelope of the combinations"),
+  drawChart(dir, frameEnvelopeChart(captionOf(prepared, a.name, ", envelope of the combinations"),
                                     frameEnvelopeChart(p.stem), model, p.envelopeStations, names,
                                     planar, prepared.units));
   if (model.members().size() > kEnvelopeChartsUpTo) return;
   for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
     const std::string& member = model.members()[m].first;
-    drawChart(dir, memberEnvelopeChart(chartCaption(run, a.name, ", envelope of " + member),
+    drawChart(dir, memberEnvelopeChart(captionOf(prepared, a.name, ", envelope of " + member),
                                        envelopeChart(p.stem, member), p.envelopes[m],
                                        p.envelopes[m].title(), prepared.units));
   }
@@ -104,7 +110,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
     writePvd(dir / casesPvd(p.stem), entries);
   }
   if (charts && !p.stations.empty() && p.members.empty())
-    drawChart(dir, staticDiagrams(chartCaption(run, a.name), diagramsChart(p.stem),
+    drawChart(dir, staticDiagrams(captionOf(prepared, a.name), diagramsChart(p.stem),
                                   {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model),
                                   kAllDiagrams, prepared.units));
   if (charts && !p.members.empty()) drawFrameCharts(prepared, p, dir);
@@ -126,7 +132,7 @@ void writeModalFiles(const PreparedRun& prepared, const PreparedAnalysis& p, con
   writePvd(dir / collectionPvd(p.stem), entries);
   if (!charts || p.shapes->rowCount() == 0) return;
   if (model.members().empty()) {
-    drawChart(dir, modeShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem),
+    drawChart(dir, modeShapesChart(captionOf(prepared, p.outcome->name), shapesChart(p.stem),
                                    model, modal, *p.shapes, shapesCsv(p.stem), prepared.units));
     return;
   }
@@ -143,7 +149,7 @@ void writeModalFiles(const PreparedRun& prepared, const PreparedAnalysis& p, con
     title += modal.modes[m].description;
     titles.push_back(std::move(title));
   }
-  drawChart(dir, frameShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem), model,
+  drawChart(dir, frameShapesChart(captionOf(prepared, p.outcome->name), shapesChart(p.stem), model,
                                   modal.modes, titles, run.dimension == "planar", prepared.units));
 }
 
@@ -160,7 +166,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeStaticFiles(prepared, p, r.secondOrder, dir, charts);
             },
             [&](const BucklingResult&) {
-              writeBucklingFiles(p, model, dir, chartCaption(run, a.name), charts,
+              writeBucklingFiles(p, model, dir, captionOf(prepared, a.name), charts,
                                  run.dimension == "planar", prepared.units);
             },
             [&](const ModalResult& r) { writeModalFiles(prepared, p, model, r, dir, charts); },
@@ -169,17 +175,17 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             },
             [&](const TransientOutcome& r) {
               writeTransientFiles(dir, model, p.stem, r, *p.history,
-                                  charts ? chartCaption(run, a.name) : "");
+                                  charts ? captionOf(prepared, a.name) : "");
             },
             [&](const RotorResult auto& r) {
               writeRotorFiles(
-                  {*p.rotor, p.stem, model, dir, chartCaption(run, a.name), charts, prepared.units},
+                  {*p.rotor, p.stem, model, dir, captionOf(prepared, a.name), charts, prepared.units},
                   r);
             },
             [&](const CrankSliderOutcome& r) {
               for (const CsvTable& table : p.crank) table.write(dir / table.title());
               if (charts)
-                drawCrankCharts(dir, r, p.stem, chartCaption(run, a.name), prepared.units);
+                drawCrankCharts(dir, r, p.stem, captionOf(prepared, a.name), prepared.units);
             }},
         a.result);
   }
@@ -258,18 +264,21 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
                               prepared.front().analyses[k].members.empty();
         std::vector<const CsvTable*> fields;
         std::vector<std::string> files, values;
+        // The swept values in the user's unit of their quantity, when they set it.
+        const OutputUnits::Shown swept = choices.units.valueIn(sweep.unit, {1, ""});
         for (std::size_t i = 0; i < prepared.size() && overlaid; ++i) {
           fields.push_back(&*prepared[i].analyses[k].fields);
           files.push_back(choices.pointFiles ? directories[i] + "/" + fieldsCsv(stem)
                                              : sweepFieldsCsv(stem, i, prepared.size()));
           if (!choices.pointFiles) fields.back()->write(temporary / files.back());
-          values.push_back(labelNumber(sweep.values[i]));
+          values.push_back(labelNumber(sweep.values[i] * swept.factor));
         }
+        if (!values.empty() && !swept.unit.empty()) values.back() += " " + swept.unit;
         if (overlaid)
           drawOverlaidDiagrams(
               temporary,
               chartCaption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
-                      sweep.parameter),
+                           sweep.parameter, choices.units),
               diagramsChart(stem), sweep, fields, files, choices.units);
       }
       std::vector<SweepQuantity> own;

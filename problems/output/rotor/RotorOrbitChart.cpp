@@ -143,7 +143,8 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   if (supports) keyTitles.push_back("support");
   const int keyMargin = keyWidth(keyTitles);  // the key stands right of the panels
   const int width = 620 * columns + keyMargin, height = 150 + 330 * std::max(rows, 1);
-  const std::string caption2 = caption + "\nmodes at " + speedAxes(units).speedText(rpmOf(r.speed)) +
+  const std::string speed = speedAxes(units).speedText(rpmOf(r.speed));
+  const std::string caption2 = caption + "\nmodes at " + speed +
                                ": orbits along the shaft (oblique view, largest orbit 1)";
   const auto captionLines = 1 + std::count(caption2.begin(), caption2.end(), '\n');
   double x0 = 0, x1 = 0;

@@ -82,7 +82,7 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
     const double onset = *onsetRpm * axes.speed.factor;
     body << "  set arrow 1 from first " << number(onset) << ", graph 0 to first " << number(onset)
          << ", graph 1 nohead dashtype 2 linewidth 2 linecolor rgb 'red'\n"
-         << "  set label 1 " << gnuplotText("onset " + axes.speedText(*onsetRpm)) << " at first "
+         << "  set label 1 " << gnuplotText(std::string("onset ").append(axes.speedText(*onsetRpm))) << " at first "
          << number(onset) << ", graph 0.95 offset 0.5,0 left textcolor rgb 'red'\n";
   }
   // 1. The Campbell diagram coloured by log decrement: dark red (most negative) through orange

@@ -46,8 +46,11 @@ std::string markerCommands(const std::vector<ChartMarker>& markers, double facto
 
 /// The x axis along a line: metres, or the user's length unit (the table holds it).
 std::string alongLineLabel(const OutputUnits& units) {
-  return "  set xlabel " + gnuplotText("x along the line [" + units.columnIn("m", {1, "m"}).unit + "]") +
-         "\n";
+  const std::string unit = units.columnIn("m", {1, "m"}).unit;
+  std::string label = "  set xlabel ";  // appended: GCC 12 warns (-Wrestrict) on literal + temporary
+  label += gnuplotText("x along the line [" + unit + "]");
+  label += "\n";
+  return label;
 }
 
 /// `plot` of the curves, each column multiplied by scale; filled to the axis when `filled`

@@ -101,9 +101,11 @@ ChartScript memberEnvelopeChart(const std::string& caption, const std::string& c
     const std::string lo = std::to_string(table.column(panels[p].component + "_min"));
     if (p + 1 == panels.size())
       body << "  set xlabel "
-           << gnuplotText("distance s along the member [" + table.columns()[std::size_t(table.column("s") - 1)].unit + "]")
+           << gnuplotText("distance s along the member [" +
+                          table.columns()[std::size_t(table.column("s") - 1)].unit + "]")
            << "\n";
-    const std::string times = "*" + number(panels[p].shown.factor);
+    std::string times = "*";  // appended: GCC 12 warns (-Wrestrict) on "*" + a temporary
+    times += number(panels[p].shown.factor);
     body << "  unset label\n"
          << extremeLabel(table, panels[p].component, "_max", panels[p].shown)
          << extremeLabel(table, panels[p].component, "_min", panels[p].shown)

@@ -189,12 +189,16 @@ std::string axesSetup(bool planar, const Eigen::Vector3d& lowest, const Eigen::V
   const auto axis = [&](const char* which, const char* name) {
     std::string text = "  set ";
     text += which;
-    text += "label " + gnuplotText(std::string(name) + " [" + length.unit + "]") + "\n";
+    text += "label ";  // piece by piece: GCC 12 warns (-Wrestrict) on "literal" + a temporary
+    text += gnuplotText(std::string(name) + " [" + length.unit + "]");
+    text += "\n";
     return text;
   };
   if (planar) {
     const PlanarRanges r = planarRanges(low, high, size);
-    std::string out = "  set size ratio -1\n" + axis("x", "x") + axis("y", "y");
+    std::string out = "  set size ratio -1\n";
+    out += axis("x", "x");
+    out += axis("y", "y");
     out += "  set xrange [" + number(r.x0) + ":" + number(r.x1) + "]\n";
     out += "  set yrange [" + number(r.y0) + ":" + number(r.y1) + "]\n";
     return out;
@@ -202,7 +206,10 @@ std::string axesSetup(bool planar, const Eigen::Vector3d& lowest, const Eigen::V
   std::string out = "  set view equal xyz\n  set view 64, 28, 0.9\n  set ytics offset 1.5,0\n";
   out += "  set zrange [" + number(low.y() - 0.2 * size) + ":" + number(high.y() + 0.2 * size);
   out += "]\n  set xyplane at " + number(low.y() - 0.2 * size);
-  out += "\n" + axis("x", "x") + axis("y", "z") + axis("z", "y");
+  out += "\n";
+  out += axis("x", "x");
+  out += axis("y", "z");
+  out += axis("z", "y");
   return out;
 }
 
