@@ -87,7 +87,6 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
 /// One panel per column of a transient history table (after its first column, time t in s)
 /// against time, from historyTable written to csvFile.
 ChartScript historyChart(const std::string& caption, const std::string& chartName,
-                         const CsvTable& table, const std::string& csvFile,
-                       const OutputUnits& units = {});
+                         const CsvTable& table, const std::string& csvFile);
 
 }  // namespace beamrotor
