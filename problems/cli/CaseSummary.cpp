@@ -137,9 +137,7 @@ void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
   for (std::size_t m : listed) {
     out << "      " << model.members()[m].first << ":";
     for (ForceComponent f : shown) {
-      const bool isMoment =
-          f == ForceComponent::T || f == ForceComponent::My || f == ForceComponent::Mz;
-      const OutputUnits::Shown& unit = isMoment ? torque : force;
+      const OutputUnits::Shown& unit = isMomentComponent(f) ? torque : force;
       out << "  " << componentName(f) << " " << governed(e.members[m][int(f)].max, cases, unit, false)
           << " / " << governed(e.members[m][int(f)].min, cases, unit, false);
     }

@@ -62,10 +62,9 @@ void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model
     out << indent << "  " << padded(members[m].first, 12);
     for (ForceComponent c : shown) {
       const MemberValue& v = largerEnd(extremes.ranges[m][int(c)]);
-      const bool isMoment = c == ForceComponent::T || c == ForceComponent::My ||
-                            c == ForceComponent::Mz;
       out << padded(std::string(componentName(c)) + " " +
-                        formatValue(v.value * (isMoment ? moment : force).factor) + " @ " +
+                        formatValue(v.value * (isMomentComponent(c) ? moment : force).factor) +
+                        " @ " +
                         formatValue(v.along * length.factor),
                     26);
     }
