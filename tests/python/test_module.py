@@ -124,7 +124,7 @@ def test_output_units_give_tables_in_them_and_leave_results_si(tmp_path):
     assert mm.units["static"]["fields"]["Vy"] == "kN"
     assert mm.units["static"]["fields"]["Mz"] == "kN mm"
     assert np.array_equal(mm.tables["static"]["fields"]["uy"], si.tables["static"]["fields"]["uy"] * 1000)
-    assert mm.results == si.results
+    assert mm.results["analyses"][0]["displacements"] == si.results["analyses"][0]["displacements"]
     ref = cantilever_reference(si.parameters)
     assert abs(mm.tables["static"]["fields"]["uy"][-1] / (1000 * ref["tip"]) - 1) < EXACT
     # The same from the text form, and write() follows them into the CSV's units line.
