@@ -122,6 +122,22 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       "--full-tables", fullTables,
       "a long line's fields table at every station (5 an element), not thinned to "
       "about 4000 stations");
+  std::string units;
+  solveCmd
+      ->add_option("--units", units,
+                   "units of the summary, CSV tables and charts, e.g. length=mm,force=kN,"
+                   "stress=MPa,speed=rpm; over the deck's output: units (results.json stays SI). "
+                   "Quantities: " +
+                       joinNames(outputQuantityNames()))
+      ->check([](const std::string& list) -> std::string {
+        try {
+          parseOutputUnits(list);
+          return "";
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+      })
+      ->type_name("Q=UNIT,...");
   bool pointFiles = false;
   CLI::Option* pointFilesFlag = solveCmd->add_flag(
       "--point-files", pointFiles,
@@ -332,6 +348,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
     return kInputError;
   }
   if (!charts.empty()) solve.output.charts = chartFormatNamed(charts);
+  if (!units.empty()) solve.output.units = parseOutputUnits(units);
   if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
   if (fullTablesFlag->count() > 0) solve.output.fullTables = fullTables;
   try {

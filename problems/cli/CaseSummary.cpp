@@ -34,31 +34,32 @@ std::string caseTitle(const CaseOutcome& c) {
 
 /// One case in full: reactions, point displacements, stresses, members, warnings.
 void printCase(std::ostream& out, const Deck& deck, const RunResult& run, const CaseOutcome& c,
-               const StaticExtremes& x) {
+               const StaticExtremes& x, const OutputUnits& units) {
   out << "    " << caseTitle(c) << ":\n";
-  printReactions(out, c.statics, "      ");
-  printPointDisplacements(out, deck, run, c.statics, "      ");
-  printStressPeaks(out, deck, *run.model, x.peaks, "      ");
-  printMemberExtremes(out, deck, *run.model, x, "      ");
+  printReactions(out, c.statics, "      ", units);
+  printPointDisplacements(out, deck, run, c.statics, "      ", units);
+  printStressPeaks(out, deck, *run.model, x.peaks, "      ", units);
+  printMemberExtremes(out, deck, *run.model, x, "      ", units);
   for (const std::string& w : c.warnings) out << "      warning: " << w << "\n";
 }
 
 /// One case on one line: its largest displacement (a frame) and normal stress.
 void printCaseLine(std::ostream& out, const Model& model, const CaseOutcome& c,
-                   const StaticExtremes& x) {
+                   const StaticExtremes& x, const OutputUnits& units) {
   out << "    " << padded(caseTitle(c), 30);
   if (!model.members().empty())
-    out << "largest displacement " << padded(formatValue(x.largestDisplacement.value) + " m,", 16);
+    out << "largest displacement "
+        << padded(valueText(x.largestDisplacement.value, "m", units) + ",", 16);
   if (const auto top = largestPeak(x.peaks, &ElementPeaks::stress))
-    out << "largest normal stress " << formatValue(top->value * 1e-6) << " MPa";
+    out << "largest normal stress " << valueText(top->value, "Pa", units, {1e-6, "MPa"});
   out << (c.warnings.empty() ? "" : " (warning: see results.json)") << "\n";
 }
 
-/// "value unit [combination]".
+/// "value unit [combination]"; the unit left out when `named` is false (a header names it).
 std::string governed(const Governed& g, const std::vector<CaseOutcome>& cases,
-                     const std::string& unit = "", double scale = 1) {
-  std::string out = formatValue(g.value * scale);
-  if (!unit.empty()) out += " " + unit;
+                     const OutputUnits::Shown& shown, bool named = true) {
+  std::string out = formatValue(g.value * shown.factor);
+  if (named && !shown.unit.empty()) out += " " + shown.unit;
   out += " [";
   out += cases.at(std::size_t(g.by)).name;
   return out + "]";
@@ -68,8 +69,10 @@ std::string governed(const Governed& g, const std::vector<CaseOutcome>& cases,
 /// kSummarySupports).
 void printEnvelopeForces(std::ostream& out, const std::string& title,
                          const std::vector<std::pair<ReactionComponent, GovernedRange>>& forces,
-                         const std::vector<CaseOutcome>& cases) {
-  out << "    " << title << " (N, N m):\n";
+                         const std::vector<CaseOutcome>& cases, const OutputUnits& units) {
+  const OutputUnits::Shown force = units.valueIn("N", {1, "N"});
+  const OutputUnits::Shown moment = units.valueIn("N m", {1, "N m"});
+  out << "    " << title << " (" << force.unit << ", " << moment.unit << "):\n";
   std::string name;
   std::size_t names = 0;
   for (const auto& [r, range] : forces) {
@@ -78,8 +81,9 @@ void printEnvelopeForces(std::ostream& out, const std::string& title,
       out << (name.empty() ? "" : "\n") << "      " << padded(r.support, 12);
       name = r.support;
     }
-    out << padded(std::string(reactionName(r.dof)) + " " + governed(range.max, cases) + " / " +
-                      governed(range.min, cases),
+    const OutputUnits::Shown& shown = isRotation(r.dof) ? moment : force;
+    out << padded(std::string(reactionName(r.dof)) + " " + governed(range.max, cases, shown, false) +
+                      " / " + governed(range.min, cases, shown, false),
                   46);
   }
   if (!name.empty()) out << "\n";
@@ -87,17 +91,21 @@ void printEnvelopeForces(std::ostream& out, const std::string& title,
 
 /// The envelope over the combinations, each value with the combination that governs it.
 void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
-                   const std::vector<CaseOutcome>& cases, const CaseEnvelope& e) {
+                   const std::vector<CaseOutcome>& cases, const CaseEnvelope& e,
+                   const OutputUnits& units) {
   const Model& model = *run.model;
   out << "  envelope over the combinations (largest and smallest, the governing combination in "
          "brackets):\n";
   if (e.largestDisplacement.by >= 0)
-    out << "    largest displacement " << governed(e.largestDisplacement, cases, "m") << "\n";
+    out << "    largest displacement "
+        << governed(e.largestDisplacement, cases, units.valueIn("m", {1, "m"})) << "\n";
   if (e.largestStress.by >= 0)
-    out << "    largest normal stress " << governed(e.largestStress, cases, "MPa", 1e-6) << "\n";
+    out << "    largest normal stress "
+        << governed(e.largestStress, cases, units.valueIn("Pa", {1e-6, "MPa"})) << "\n";
   if (!e.reactions.empty() || e.springs.empty())
-    printEnvelopeForces(out, "reactions", e.reactions, cases);
-  if (!e.springs.empty()) printEnvelopeForces(out, "springs and bearings", e.springs, cases);
+    printEnvelopeForces(out, "reactions", e.reactions, cases, units);
+  if (!e.springs.empty())
+    printEnvelopeForces(out, "springs and bearings", e.springs, cases, units);
   if (e.members.empty()) return;
   // The members of the largest bending moments, as the member lines of a case.
   const std::vector<ForceComponent> shown =
@@ -119,16 +127,20 @@ void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
     listed.resize(kSummaryMembers);
     std::sort(listed.begin(), listed.end());
   }
-  out << "    members (largest / smallest along each; N, N m)";
+  const OutputUnits::Shown force = units.valueIn("N", {1, "N"});
+  const OutputUnits::Shown torque = units.valueIn("N m", {1, "N m"});
+  out << "    members (largest / smallest along each; " << force.unit << ", " << torque.unit << ")";
   if (listed.size() < e.members.size())
     out << ", the " << listed.size() << " of the largest bending moment among "
         << e.members.size();
   out << ":\n";
   for (std::size_t m : listed) {
     out << "      " << model.members()[m].first << ":";
-    for (ForceComponent f : shown)
-      out << "  " << componentName(f) << " " << governed(e.members[m][int(f)].max, cases) << " / "
-          << governed(e.members[m][int(f)].min, cases);
+    for (ForceComponent f : shown) {
+      const OutputUnits::Shown& unit = isMomentComponent(f) ? torque : force;
+      out << "  " << componentName(f) << " " << governed(e.members[m][int(f)].max, cases, unit, false)
+          << " / " << governed(e.members[m][int(f)].min, cases, unit, false);
+    }
     out << "\n";
   }
 }
@@ -136,18 +148,19 @@ void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
 }  // namespace
 
 void printCases(std::ostream& out, const Deck& deck, const RunResult& run,
-                const AnalysisOutcome& a, const AnalysisExtremes& extremes) {
+                const AnalysisOutcome& a, const AnalysisExtremes& extremes,
+                const OutputUnits& units) {
   const std::vector<CaseOutcome>& cases = casesOf(a);
   if (cases.empty()) return;
   out << "  load cases and combinations (" << cases.size() << "):\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
     if (cases.size() <= kSummaryCases)
-      printCase(out, deck, run, cases[i], extremes.cases.at(i));
+      printCase(out, deck, run, cases[i], extremes.cases.at(i), units);
     else
-      printCaseLine(out, *run.model, cases[i], extremes.cases.at(i));
+      printCaseLine(out, *run.model, cases[i], extremes.cases.at(i), units);
   }
   const CaseEnvelope envelope = caseEnvelope(*run.model, cases, extremes.cases);
-  if (!envelope.empty()) printEnvelope(out, deck, run, cases, envelope);
+  if (!envelope.empty()) printEnvelope(out, deck, run, cases, envelope, units);
 }
 
 }  // namespace beamrotor::cli

@@ -8,6 +8,7 @@
 #include <ostream>
 
 #include "problems/deck/Deck.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/structure/StaticExtremes.hpp"
 #include "problems/run/RunResult.hpp"
 
@@ -18,6 +19,7 @@ inline constexpr std::size_t kSummaryCases = 12;
 
 /// Nothing for an analysis without load cases.
 void printCases(std::ostream& out, const Deck& deck, const RunResult& run,
-                const AnalysisOutcome& a, const AnalysisExtremes& extremes);
+                const AnalysisOutcome& a, const AnalysisExtremes& extremes,
+                const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

@@ -109,7 +109,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     std::optional<PreparedRun> prepared;  // the run's extremes, computed once for the summary too
     try {
       if (s.run) {
-        prepared = prepareRun(*s.run, choices.fullTables);
+        prepared = prepareRun(*s.run, choices.fullTables, choices.units);
         writePreparedRun(*prepared, dir, choices, also);
       } else
         writeSweepOutputs(*s.sweep, dir, choices, also);
@@ -124,9 +124,10 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     // 3. The summary.
     printHeader(out, s, options.study);
     if (s.run)
-      printRunResults(out, s.deck, *s.run, prepared ? &prepared->extremes : nullptr);
+      printRunResults(out, s.deck, *s.run, prepared ? &prepared->extremes : nullptr,
+                      choices.units);
     else
-      printSweepResults(out, s.deck, *s.sweep);
+      printSweepResults(out, s.deck, *s.sweep, choices.units);
     printSweepPeaks(out, s, options.study.deckPath);
     const auto [runs, labels] = runsOf(s);
     const int failed = printChecks(out, s.deck, runs, labels);

@@ -20,7 +20,7 @@ struct SolveOptions {
   std::string outDir;  ///< empty: out/<deck stem>
   /// Set: also export the free-free matrices there (empty: <outDir>/matrices).
   std::optional<std::string> exportMatrices;
-  /// `--charts`, `--point-files`: over the deck's `output:` choices.
+  /// `--charts`, `--point-files`, `--units`: over the deck's `output:` choices.
   DeckOutput output;
 };
 

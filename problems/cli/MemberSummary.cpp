@@ -20,7 +20,11 @@ const MemberValue& largerEnd(const ComponentRange& r) {
 }  // namespace
 
 void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model,
-                         const StaticExtremes& extremes, const std::string& indent) {
+                         const StaticExtremes& extremes, const std::string& indent,
+                         const OutputUnits& units) {
+  const OutputUnits::Shown length = units.valueIn("m", {1, "m"});
+  const OutputUnits::Shown force = units.valueIn("N", {1, "N"});
+  const OutputUnits::Shown moment = units.valueIn("N m", {1, "N m"});
   if (model.members().empty()) return;
   // The components a planar frame carries: N, Vy, Mz; a 3d one all six.
   const std::vector<ForceComponent> shown =
@@ -29,9 +33,9 @@ void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model
           : std::vector<ForceComponent>(kForceComponents.begin(), kForceComponents.end());
   const MemberValue& top = extremes.largestDisplacement;
   const Eigen::Vector3d& at = top.x;
-  out << indent << "largest displacement " << formatValue(top.value) << " m at ("
-      << formatValue(at.x()) << ", " << formatValue(at.y()) << ", " << formatValue(at.z())
-      << ") m\n";
+  out << indent << "largest displacement " << valueText(top.value, "m", units) << " at ("
+      << formatValue(at.x() * length.factor) << ", " << formatValue(at.y() * length.factor) << ", "
+      << formatValue(at.z() * length.factor) << ") " << length.unit << "\n";
 
   // Every member, or the kSummaryMembers of the largest bending moment, in the model's order.
   const auto& members = model.members();
@@ -47,7 +51,9 @@ void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model
     listed.resize(kSummaryMembers);
     std::sort(listed.begin(), listed.end());
   }
-  out << indent << "members (largest |value| in member axes, at m from the member's start; N, N m, m)";
+  out << indent << "members (largest |value| in member axes, at " << length.unit
+      << " from the member's start; " << force.unit << ", " << moment.unit << ", " << length.unit
+      << ")";
   if (listed.size() < members.size())
     out << ", the " << listed.size() << " of the largest bending moment among "
         << members.size() << " (all in results.json)";
@@ -56,11 +62,13 @@ void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model
     out << indent << "  " << padded(members[m].first, 12);
     for (ForceComponent c : shown) {
       const MemberValue& v = largerEnd(extremes.ranges[m][int(c)]);
-      out << padded(std::string(componentName(c)) + " " + formatValue(v.value) + " @ " +
-                        formatValue(v.along),
+      out << padded(std::string(componentName(c)) + " " +
+                        formatValue(v.value * (isMomentComponent(c) ? moment : force).factor) +
+                        " @ " +
+                        formatValue(v.along * length.factor),
                     26);
     }
-    out << "deflection " << formatValue(extremes.chordDeflections[m].value) << "\n";
+    out << "deflection " << formatValue(extremes.chordDeflections[m].value * length.factor) << "\n";
   }
 }
 

@@ -16,21 +16,32 @@ namespace {
 
 constexpr double kRpm = 30 / std::numbers::pi;
 
+/// "3000 rpm", or in the user's speed unit.
+std::string rpmText(double rpm, const OutputUnits& units) {
+  return valueText(rpm, "rpm", units);
+}
+
+/// "12.5 Hz", or in the user's frequency unit.
+std::string hzText(double hz, const OutputUnits& units) {
+  return valueText(hz, "Hz", units);
+}
+
 /// The stability half of the API 684 verdict.
-void printOperatingStability(std::ostream& out, const OperatingStability& s) {
+void printOperatingStability(std::ostream& out, const OperatingStability& s,
+                             const OutputUnits& units) {
   out << "      stability: smallest log decrement in the range " << formatValue(s.smallest)
-      << " at " << formatValue(s.speed * kRpm) << " rpm (" << formatValue(s.frequencyHz) << " Hz "
+      << " at " << rpmText(s.speed * kRpm, units) << " (" << hzText(s.frequencyHz, units) << " "
       << whirlName(s.whirl) << " whirl; required " << formatValue(s.required) << ")";
   if (s.onset)
-    out << ", UNSTABLE above " << formatValue(s.onset->rpm) << " rpm ("
-        << formatValue(s.onset->frequencyHz) << " Hz " << whirlName(s.onset->whirl) << " whirl)";
+    out << ", UNSTABLE above " << rpmText(s.onset->rpm, units) << " ("
+        << hzText(s.onset->frequencyHz, units) << " " << whirlName(s.onset->whirl) << " whirl)";
   else if (s.smallest < 0)
     out << ", unstable from the sweep's first speed";
   out << ": " << (s.pass ? "pass" : "FAIL") << "\n";
 }
 
 /// The API 684 verdict as a whole, PASS or FAIL, with what fails it.
-void printApi684Verdict(std::ostream& out, const UnbalanceOutcome& r) {
+void printApi684Verdict(std::ostream& out, const UnbalanceOutcome& r, const OutputUnits& units) {
   if (r.api684Pass()) {
     out << "      API 684: PASS (every peak's separation margin";
     if (r.stability)
@@ -45,8 +56,7 @@ void printApi684Verdict(std::ostream& out, const UnbalanceOutcome& r) {
       if (!p.pass) {
         std::string reason = r.responsePoints[k];
         reason += ": peak at ";
-        reason += formatValue(p.speed * kRpm);
-        reason += " rpm";
+        reason += rpmText(p.speed * kRpm, units);
         reasons.push_back(reason);
       }
   if (r.stability && !r.stability->pass) {
@@ -54,8 +64,8 @@ void printApi684Verdict(std::ostream& out, const UnbalanceOutcome& r) {
     std::string reason;
     if (s.onset && s.onset->speed <= r.operating->maximum) {
       reason += "unstable above ";
-      reason += formatValue(s.onset->rpm);
-      reason += " rpm, ";
+      reason += rpmText(s.onset->rpm, units);
+      reason += ", ";
     }
     reason += "log decrement ";
     reason += formatValue(s.smallest);
@@ -81,48 +91,51 @@ std::string modeShapeText(const FormeShaftMode& m) {
 
 }  // namespace
 
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r) {
-  out << "rotor analysis '" << a.name << "' at " << formatValue(r.speed * kRpm) << " rpm ("
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r,
+                const OutputUnits& units) {
+  out << "rotor analysis '" << a.name << "' at " << rpmText(r.speed * kRpm, units) << " ("
       << r.modes.size() << " damped modes)\n";
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const RotorMode& m = r.modes[i];
-    out << "    mode " << i + 1 << "  " << formatValue(m.dampedFrequencyHz) << " Hz  damping "
+    out << "    mode " << i + 1 << "  " << hzText(m.dampedFrequencyHz, units) << "  damping "
         << formatValue(m.dampingRatio) << "  log decrement "
         << (std::isfinite(m.logDecrement) ? formatValue(m.logDecrement) : std::string("inf"))
         << "  " << whirlName(m.whirl) << "\n";
   }
 }
 
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutcome& r) {
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutcome& r,
+                const OutputUnits& units) {
   const CampbellResult& c = r.campbell;
   out << "campbell analysis '" << a.name << "' (" << c.lines.size() << " lines, " << c.speeds.size()
-      << " speeds " << formatValue(c.speeds.front() * kRpm) << " to "
-      << formatValue(c.speeds.back() * kRpm) << " rpm)\n";
+      << " speeds " << rpmText(c.speeds.front() * kRpm, units) << " to "
+      << rpmText(c.speeds.back() * kRpm, units) << ")\n";
   if (r.criticalSpeeds.empty())
     out << "    no critical speed (" << formatValue(r.order) << "x) in this range\n";
   // Numbered as the check quantity `critical_speed N` reads them.
   for (std::size_t i = 0; i < r.criticalSpeeds.size(); ++i) {
     const CriticalSpeed& k = r.criticalSpeeds[i];
-    out << "    critical speed " << i + 1 << ": " << formatValue(k.rpm) << " rpm ("
-        << formatValue(k.frequencyHz) << " Hz, line " << k.line + 1 << ", "
+    out << "    critical speed " << i + 1 << ": " << rpmText(k.rpm, units) << " ("
+        << hzText(k.frequencyHz, units) << ", line " << k.line + 1 << ", "
         << whirlName(k.whirl) << " whirl)\n";
   }
   for (const CriticalSpeed& k : r.furtherCriticalSpeeds)
     out << "    " << formatValue(k.order) << "x speed meets line " << k.line + 1 << " at "
-        << formatValue(k.rpm) << " rpm (" << formatValue(k.frequencyHz) << " Hz, "
+        << rpmText(k.rpm, units) << " (" << hzText(k.frequencyHz, units) << ", "
         << whirlName(k.whirl) << " whirl)\n";
   // The least damped line: its smallest log decrement over the sweep.
   if (const auto least = leastDamped(c))
     out << "    smallest log decrement " << formatValue(least->logDecrement) << " (line "
-        << least->line + 1 << " at " << formatValue(c.speeds[least->speed] * kRpm) << " rpm)\n";
+        << least->line + 1 << " at " << rpmText(c.speeds[least->speed] * kRpm, units) << ")\n";
   if (r.onset)
-    out << "    UNSTABLE above " << formatValue(r.onset->rpm) << " rpm (onset of instability: "
-        << formatValue(r.onset->frequencyHz) << " Hz " << whirlName(r.onset->whirl) << " whirl)\n";
+    out << "    UNSTABLE above " << rpmText(r.onset->rpm, units) << " (onset of instability: "
+        << hzText(r.onset->frequencyHz, units) << " " << whirlName(r.onset->whirl) << " whirl)\n";
   else
     out << "    stable over the sweep (no log decrement falls through zero)\n";
 }
 
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutcome& r) {
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutcome& r,
+                const OutputUnits& units) {
   const UnbalanceResult& u = r.unbalance;
   out << "unbalance analysis '" << a.name << "' (" << u.speeds.size() << " speeds)\n";
   for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
@@ -130,16 +143,16 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutc
     for (std::size_t s = 0; s < u.speeds.size(); ++s)
       if (u.orbits[k][s].major() > u.orbits[k][peak].major()) peak = s;
     out << "    " << r.responsePoints[k] << ": largest orbit "
-        << formatValue(u.orbits[k][peak].major()) << " m at " << formatValue(u.speeds[peak] * kRpm)
-        << " rpm\n";
+        << valueText(u.orbits[k][peak].major(), "m", units) << " at " << rpmText(u.speeds[peak] * kRpm, units)
+        << "\n";
   }
   if (!r.operating) return;
-  out << "    API 684, operating range " << formatValue(r.operating->minimum * kRpm) << " to "
-      << formatValue(r.operating->maximum * kRpm) << " rpm:\n";
+  out << "    API 684, operating range " << rpmText(r.operating->minimum * kRpm, units) << " to "
+      << rpmText(r.operating->maximum * kRpm, units) << ":\n";
   for (std::size_t k = 0; k < r.peaks.size(); ++k)
     for (const ResponsePeak& p : r.peaks[k]) {
-      out << "      " << r.responsePoints[k] << ": peak " << formatValue(p.amplitude) << " m at "
-          << formatValue(p.speed * kRpm) << " rpm, ";
+      out << "      " << r.responsePoints[k] << ": peak " << valueText(p.amplitude, "m", units) << " at "
+          << rpmText(p.speed * kRpm, units) << ", ";
       if (p.method == AmplificationMethod::none) {
         out << "no half-power points (the orbit does not fall to peak / sqrt(2) on both sides: "
                "a neighbouring peak or the sweep's end): AF unknown, FAIL\n";
@@ -153,11 +166,12 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutc
           << " % (required " << formatValue(p.requiredMargin) << " %): "
           << (p.pass ? "pass" : "FAIL") << "\n";
     }
-  if (r.stability) printOperatingStability(out, *r.stability);
-  printApi684Verdict(out, r);
+  if (r.stability) printOperatingStability(out, *r.stability, units);
+  printApi684Verdict(out, r, units);
 }
 
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r) {
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r,
+                const OutputUnits& units) {
   out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
       << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
       << " kg m^2 (mode amplitudes scaled to z^2 + rho^2 phi^2 = 1 m^2; bearing loads scale"
@@ -165,36 +179,39 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutc
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const FormeShaftMode& m = r.modes[i];
     out << "    two-dof mode " << i + 1 << " (the paper's " << paperModeName(int(i)) << ")  "
-        << formatValue(m.k / (2 * std::numbers::pi)) << " Hz (k = " << formatValue(m.k)
+        << hzText(m.k / (2 * std::numbers::pi), units) << " (k = " << formatValue(m.k)
         << " rad/s)  " << modeShapeText(m) << "  F_" << r.points[0] << " = " << formatValue(m.FA)
         << " N, F_" << r.points[1] << " = " << formatValue(m.FB)
         << " N per metre of modal amplitude\n";
   }
 }
 
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const FrequencyResponseOutcome& r) {
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const FrequencyResponseOutcome& r,
+                const OutputUnits& units) {
   const FrequencyResponseResult& f = r.response;
   std::size_t peak = 0;
   for (std::size_t i = 0; i < f.receptance.size(); ++i)
     if (std::abs(f.receptance[i]) > std::abs(f.receptance[peak])) peak = i;
-  out << "frequency-response analysis '" << a.name << "' at " << formatValue(f.speed * kRpm)
-      << " rpm: " << r.output << " / " << r.input << ", " << f.frequencies.size()
+  out << "frequency-response analysis '" << a.name << "' at " << rpmText(f.speed * kRpm, units)
+      << ": " << r.output << " / " << r.input << ", " << f.frequencies.size()
       << " frequencies\n";
   if (!f.receptance.empty())
     out << "    largest receptance " << formatValue(std::abs(f.receptance[peak])) << " at "
-        << formatValue(f.frequencies[peak] / (2 * std::numbers::pi)) << " Hz\n";
+        << hzText(f.frequencies[peak] / (2 * std::numbers::pi), units) << "\n";
 }
 
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r) {
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r,
+                const OutputUnits& units) {
   const CriticalSpeedMap& m = r.map;
   out << "critical-speed-map analysis '" << a.name << "' (" << m.stiffness.size()
       << " bearing stiffnesses " << formatValue(m.stiffness.front()) << " to "
-      << formatValue(m.stiffness.back()) << " N/m, gyroscopic moments neglected, "
+      << valueText(m.stiffness.back(), "N", units) << "/m, gyroscopic moments neglected, "
       << formatValue(r.time) << " s)\n";
   const auto list = [&](const char* what, const std::vector<double>& speeds) {
     out << "    " << what;
-    for (double s : speeds) out << " " << formatValue(s * kRpm);
-    out << " rpm\n";
+    const OutputUnits::Shown speed = units.valueIn("rpm", {1, "rpm"});
+    for (double s : speeds) out << " " << formatValue(s * kRpm * speed.factor);
+    out << " " << speed.unit << "\n";
   };
   list("pinned bearings:", m.pinned);
   list("free-free rotor:", m.freeFree);
@@ -204,26 +221,28 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeed
       out << "    bearing " << b.name << " " << what << " meets the map at";
       if (crossings->empty()) out << " no critical speed in range";
       for (const MapCrossing& c : *crossings)
-        out << " " << formatValue(c.speed * kRpm) << " rpm (critical speed " << c.line + 1
+        out << " " << rpmText(c.speed * kRpm, units) << " (critical speed " << c.line + 1
             << ")";
       out << "\n";
     }
 }
 
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r) {
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r,
+                const OutputUnits& units) {
   const GravityLoads& g = r.loads;
   out << "bearing-loads analysis '" << a.name << "' (" << (r.rigidBearings ? "pinned" : "elastic")
-      << " bearings, weight " << formatValue(g.weight.norm()) << " N)\n";
+      << " bearings, weight " << valueText(g.weight.norm(), "N", units) << ")\n";
   for (std::size_t i = 0; i < g.bearings.size(); ++i) {
     const BearingForce& b = g.bearings[i];
-    out << "    bearing " << r.bearingNames.at(i) << " at x = " << formatValue(b.x)
-        << " m carries " << formatValue(std::hypot(b.fy, b.fz)) << " N (fy " << formatValue(b.fy)
-        << ", fz " << formatValue(b.fz) << " N on the shaft)\n";
+    out << "    bearing " << r.bearingNames.at(i) << " at x = " << valueText(b.x, "m", units)
+        << " carries " << valueText(std::hypot(b.fy, b.fz), "N", units) << " (fy "
+        << valueText(b.fy, "N", units)
+        << ", fz " << valueText(b.fz, "N", units) << " on the shaft)\n";
   }
   const int worst = g.largestSag();
   if (worst >= 0)
-    out << "    largest sag " << formatValue(std::hypot(g.uy[worst], g.uz[worst])) << " m at x = "
-        << formatValue(g.x[worst]) << " m\n";
+    out << "    largest sag " << valueText(std::hypot(g.uy[worst], g.uz[worst]), "m", units) << " at x = "
+        << valueText(g.x[worst], "m", units) << "\n";
 }
 
 }  // namespace beamrotor::cli

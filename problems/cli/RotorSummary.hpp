@@ -3,6 +3,7 @@
 
 #include <ostream>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
@@ -13,12 +14,19 @@ namespace beamrotor::cli {
 /// mass, centre of mass, inertia and the two-dof frequencies; frequency-response: the largest
 /// receptance; critical-speed-map: its limits and the bearings' crossings; bearing-loads:
 /// each bearing's load and the largest sag.
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r);
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutcome& r);
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutcome& r);
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r);
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const FrequencyResponseOutcome& r);
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r);
-void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r,
+                const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutcome& r,
+                const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutcome& r,
+                const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r,
+                const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const FrequencyResponseOutcome& r,
+                const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r,
+                const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r,
+                const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

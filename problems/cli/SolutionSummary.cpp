@@ -28,8 +28,9 @@ namespace {
 /// Forces by name under `title`, each line led by `indent`; the first kSummarySupports names.
 void printForces(std::ostream& out, const std::string& title,
                  const std::vector<SupportReactions>& supports, const std::string& what,
-                 const std::string& indent) {
-  out << indent << title << " (force on the structure; N, N m)";
+                 const std::string& indent, const OutputUnits& units) {
+  out << indent << title << " (force on the structure; " << units.valueIn("N", {1, "N"}).unit
+      << ", " << units.valueIn("N m", {1, "N m"}).unit << ")";
   if (supports.size() > kSummarySupports)
     out << ", the first " << kSummarySupports << " of " << supports.size() << " " << what
         << " (all in results.json)";
@@ -38,8 +39,8 @@ void printForces(std::ostream& out, const std::string& title,
   for (std::size_t i = 0; i < supports.size() && i < kSummarySupports; ++i) {
     out << indent << "  " << padded(supports[i].support, 12);
     for (const auto& [dof, value] : supports[i].components)
-      out << padded(std::string(reactionName(dof)) + " " + formatValue(value) + " " +
-                        std::string(reactionUnit(dof)),
+      out << padded(std::string(reactionName(dof)) + " " +
+                        valueText(value, std::string(reactionUnit(dof)), units),
                     22);
     out << "\n";
   }
@@ -47,19 +48,24 @@ void printForces(std::ostream& out, const std::string& title,
 
 }  // namespace
 
-void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent) {
+void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent,
+                    const OutputUnits& units) {
   // A model held by springs or bearings alone has no reactions to list.
   if (!r.reactions.empty() || r.elementForces.empty())
-    printForces(out, "reactions", reactionsBySupport(r), "supports", indent);
+    printForces(out, "reactions", reactionsBySupport(r), "supports", indent, units);
   if (!r.elementForces.empty())
     printForces(out, "springs and bearings", forcesByName(r.elementForces), "springs and bearings",
-                indent);
+                indent, units);
 }
 
 void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResult& run,
-                             const StaticResult& r, const std::string& indent) {
+                             const StaticResult& r, const std::string& indent,
+                             const OutputUnits& units) {
   const std::vector<const DeckPoint*> points = reportedPoints(deck);
-  out << indent << "displacements at points (m, rad):\n";
+  const OutputUnits::Shown length = units.valueIn("m", {1, "m"});
+  const OutputUnits::Shown angle = units.valueIn("rad", {1, "rad"});
+  const auto rotation = [&](double radians) { return valueText(radians, "rad", units); };
+  out << indent << "displacements at points (" << length.unit << ", " << angle.unit << "):\n";
   std::map<int, std::vector<MemberEndRotation>> ends;
   if (deck.frame && !r.hinges.empty())
     ends = memberEndRotations({*run.model, r.displacement}, r.hinges);
@@ -69,11 +75,12 @@ void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResul
     if (deck.frame) {
       // A frame's points are places in space, not stations along one line.
       const Eigen::Vector3d& x = run.model->nodes()[node];
-      std::string at = "at (" + formatValue(x.x()) + ", " + formatValue(x.y());
-      if (deck.dimension == "3d") at += ", " + formatValue(x.z());
-      out << padded(at + ") m", 24);
+      std::string at = "at (" + formatValue(x.x() * length.factor) + ", " +
+                       formatValue(x.y() * length.factor);
+      if (deck.dimension == "3d") at += ", " + formatValue(x.z() * length.factor);
+      out << padded(at + ") " + length.unit, 24);
     } else {
-      out << padded("x = " + formatValue(p->at) + " m", 16);
+      out << padded("x = " + valueText(p->at, "m", units), 16);
     }
     const auto hinge = std::find_if(r.hinges.begin(), r.hinges.end(),
                                     [&](const SideRotations& h) { return h.node == node; });
@@ -83,22 +90,20 @@ void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResul
       if (!deck.dofs.contains(d)) continue;
       const std::string name(dofName(d));
       if (!isRotation(d) || hinge == r.hinges.end()) {
-        out << padded(
-            name + " " + formatValue(r.displacement(node, dofIndex(d))) + " " + motionUnit(d), 22);
+        out << padded(name + " " + valueText(r.displacement(node, dofIndex(d)), motionUnit(d), units),
+                      22);
         continue;
       }
       if (memberEnds != ends.end()) {
         for (const MemberEndRotation& e : memberEnds->second)
-          out << padded(name + " " + e.label + " " + formatValue(e.rotation[dofIndex(d) - 3]) +
-                            " rad",
-                        26);
+          out << padded(name + " " + e.label + " " + rotation(e.rotation[dofIndex(d) - 3]), 26);
         continue;
       }
       // A hinge: the beam end on each side turns on its own.
       for (const auto& [side, value] :
            {std::pair{" left ", &hinge->left}, std::pair{" right ", &hinge->right}})
         if (*value)
-          out << padded(name + side + formatValue((**value)[dofIndex(d) - 3]) + " rad", 26);
+          out << padded(name + side + rotation((**value)[dofIndex(d) - 3]), 26);
     }
     out << "\n";
   }

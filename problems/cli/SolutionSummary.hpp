@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "problems/deck/Deck.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
@@ -21,14 +22,18 @@ std::vector<const DeckPoint*> reportedPoints(const Deck& deck);
 /// Unit of a displacement component: "m" or "rad".
 const char* motionUnit(Dof d);
 
+/// Numbers in the user's `units` where they set the quantity (OutputUnits.hpp).
+///
 /// Reactions by support, then the forces of the springs and bearings by name, each line led by
 /// `indent`; the first kSummarySupports of each when there are more (the rest in
 /// results.json).
-void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent);
+void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent,
+                    const OutputUnits& units = {});
 
 /// Displacements at the deck's reported points, each line led by `indent` (at a hinge, each
 /// side's own rotation).
 void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResult& run,
-                             const StaticResult& r, const std::string& indent);
+                             const StaticResult& r, const std::string& indent,
+                             const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

@@ -45,15 +45,16 @@ std::pair<Peak, Peak> peaksOf(const Model& model, const std::vector<ElementPeaks
 
 /// "  largest normal stress 12.3 MPa at x = 0.575 m (rod)" without the line's end.
 void printPeak(std::ostream& out, const char* what, const Deck& deck, const Model& model,
-               const Peak& p, const std::string& indent = "  ") {
+               const Peak& p, const std::string& indent, const OutputUnits& units) {
   const LineElement& line = *asLine(model.elements()[p.peak.place.element]);
-  out << indent << "largest " << what << " " << formatValue(p.peak.value * 1e-6) << " MPa at ";
+  out << indent << "largest " << what << " " << valueText(p.peak.value, "Pa", units, {1e-6, "MPa"})
+      << " at ";
   if (const auto member = memberLocation(model, p.peak.place.element, p.peak.place.s)) {
-    out << formatValue(member->second) << " m along member "
+    out << valueText(member->second, "m", units) << " along member "
         << model.members()[member->first].first << " (" << line.section().name << ")";
     return;
   }
-  out << "x = " << formatValue(p.peak.place.x) << " m ("
+  out << "x = " << valueText(p.peak.place.x, "m", units) << " ("
       << segmentAt(deck, p.peak.place.x, line.section().name) << ")";
 }
 
@@ -66,16 +67,18 @@ const StaticResult* firstStatic(const RunResult& r) {
 }  // namespace
 
 void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
-                      const std::vector<ElementPeaks>& peaks, const std::string& indent) {
+                      const std::vector<ElementPeaks>& peaks, const std::string& indent,
+                      const OutputUnits& units) {
   const auto [normal, shear] = peaksOf(model, peaks, 0);
   if (!normal.found) return;  // no beams
-  printPeak(out, "normal stress", deck, model, normal, indent);
+  printPeak(out, "normal stress", deck, model, normal, indent, units);
   out << "\n";
-  printPeak(out, "shear stress ", deck, model, shear, indent);
+  printPeak(out, "shear stress ", deck, model, shear, indent, units);
   out << "\n";
 }
 
-void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep) {
+void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep,
+                           const OutputUnits& units) {
   Peak normal, shear;
   for (std::size_t k = 0; k < sweep.runs.size(); ++k)
     if (const StaticResult* s = firstStatic(sweep.runs[k])) {
@@ -87,7 +90,7 @@ void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResul
   for (const auto& [what, peak] :
        {std::pair{"normal stress", &normal}, std::pair{"shear stress ", &shear}}) {
     if (!peak->found) continue;
-    printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak);
+    printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak, "  ", units);
     out << " at " << sweep.parameter << " = " << formatValue(sweep.values[peak->run]) << "\n";
   }
 }

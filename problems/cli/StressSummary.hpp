@@ -9,6 +9,7 @@
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 #include "problems/deck/Deck.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
@@ -16,9 +17,11 @@ namespace beamrotor::cli {
 /// "  largest normal stress 49.9 MPa at x = 0.575 m (rod)" and the shear stress line, from a
 /// solution's element peaks (elementPeaks), each line led by `indent`.
 void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
-                      const std::vector<ElementPeaks>& peaks, const std::string& indent = "  ");
+                      const std::vector<ElementPeaks>& peaks, const std::string& indent = "  ",
+                      const OutputUnits& units = {});
 
 /// The same over every run of a sweep (first static analysis of each), with "at eta = 0.4".
-void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep);
+void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep,
+                           const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

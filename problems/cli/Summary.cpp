@@ -52,7 +52,8 @@ SystemSize sizeOf(const RunResult& run) {
 }
 
 void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
-                 const AnalysisOutcome& a, const AnalysisExtremes& extremes) {
+                 const AnalysisOutcome& a, const AnalysisExtremes& extremes,
+                 const OutputUnits& units) {
   const StaticResult& r = *staticsOf(a);
   char conditioning[64];
   std::snprintf(conditioning, sizeof conditioning, "rcond %.1e, round-off <= %.1e", r.rcond,
@@ -62,21 +63,21 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
     // The solution of the empty `loads:` is all zeros: only the cases say anything.
     out << "  (its `loads:` is empty: the structure is loaded by its load cases alone)\n";
   } else {
-    printReactions(out, r, "  ");
-    printPointDisplacements(out, deck, run, r, "  ");
+    printReactions(out, r, "  ", units);
+    printPointDisplacements(out, deck, run, r, "  ", units);
     if (!r.contacts.empty()) {
       out << "  contacts (after " << r.activeSetIterations << " active-set solves):\n";
       for (const ContactState& k : r.contacts)
         out << "    " << padded(k.name, 12)
             << (k.active ? "closed, " + std::string(isRotation(k.dof) ? "moment " : "force ") +
-                               formatValue(k.force) + " " + (isRotation(k.dof) ? "N m" : "N")
-                         : "open, gap " + formatValue(k.gap) + " " + motionUnit(k.dof))
+                               valueText(k.force, isRotation(k.dof) ? "N m" : "N", units)
+                         : "open, gap " + valueText(k.gap, motionUnit(k.dof), units))
             << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
     }
-    printStressPeaks(out, deck, *run.model, extremes.own->peaks);
-    printMemberExtremes(out, deck, *run.model, *extremes.own);
+    printStressPeaks(out, deck, *run.model, extremes.own->peaks, "  ", units);
+    printMemberExtremes(out, deck, *run.model, *extremes.own, "  ", units);
   }
-  printCases(out, deck, run, a, extremes);
+  printCases(out, deck, run, a, extremes, units);
 }
 
 /// "reported: wstar = 0.00215712, theta_p = 0.00167015" (the deck's `report:`).
@@ -106,11 +107,12 @@ void printCatalogSections(std::ostream& out, const std::vector<DeckCatalogSectio
 }
 
 /// A modal or torsion analysis' frequencies and what each mode does.
-void printModes(std::ostream& out, const AnalysisOutcome& a, const ModalResult& m) {
+void printModes(std::ostream& out, const AnalysisOutcome& a, const ModalResult& m,
+                const OutputUnits& units) {
   out << a.type << " analysis '" << a.name << "' (" << m.modes.size() << " modes)\n";
   for (std::size_t i = 0; i < m.modes.size(); ++i)
     out << "    mode " << padded(std::to_string(i + 1), 4)
-        << padded(formatValue(m.modes[i].frequencyHz) + " Hz", 16) << m.modes[i].description
+        << padded(valueText(m.modes[i].frequencyHz, "Hz", units), 16) << m.modes[i].description
         << "\n";
 }
 
@@ -138,8 +140,19 @@ std::string formatValue(double v) {
   return buf;
 }
 
+std::string valueText(double value, const std::string& unit, const OutputUnits& units,
+                      const OutputUnits::Shown& own) {
+  const OutputUnits::Shown shown = units.valueIn(unit, own);
+  return shown.unit.empty() ? formatValue(value * shown.factor)
+                            : formatValue(value * shown.factor) + " " + shown.unit;
+}
+
+std::string valueText(double value, const std::string& unit, const OutputUnits& units) {
+  return valueText(value, unit, units, {1, unit});
+}
+
 void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
-                     const std::vector<AnalysisExtremes>* extremes) {
+                     const std::vector<AnalysisExtremes>* extremes, const OutputUnits& units) {
   const std::vector<AnalysisExtremes> computed =
       extremes ? std::vector<AnalysisExtremes>() : runExtremes(run);
   const std::vector<AnalysisExtremes>& x = extremes ? *extremes : computed;
@@ -157,27 +170,28 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
     const AnalysisOutcome& a = run.analyses[i];
     std::visit(
         Overloaded{
-            [&](const StaticOutcome&) { printStatic(out, deck, run, a, x.at(i)); },
+            [&](const StaticOutcome&) { printStatic(out, deck, run, a, x.at(i), units); },
             [&](const SecondOrderResult&) {
-              printStatic(out, deck, run, a, x.at(i));
+              printStatic(out, deck, run, a, x.at(i), units);
               printSecondOrder(out, a);
             },
             [&](const BucklingResult&) { printBuckling(out, a); },
-            [&](const ModalResult& r) { printModes(out, a, r); },
+            [&](const ModalResult& r) { printModes(out, a, r, units); },
             [&](const TorsionOutcome& r) {
-              printModes(out, a, r.modes);
+              printModes(out, a, r.modes, units);
               if (r.free)
                 out << "    (no support holds the twist: mode 1 is the train turning as one)\n";
             },
             [&](const TransientOutcome&) { printTransient(out, a); },
-            [&](const RotorResult auto& r) { printRotor(out, a, r); },
+            [&](const RotorResult auto& r) { printRotor(out, a, r, units); },
             [&](const CrankSliderOutcome&) { printCrankSlider(out, a); }},
         a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }
 }
 
-void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& sweep) {
+void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& sweep,
+                       const OutputUnits& units) {
   if (sweep.runs.empty()) return;
   const RunResult& first = sweep.runs.front();
   const SystemSize size = sizeOf(first);
@@ -207,10 +221,14 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
       for (const auto& [dof, value] : support.components)
         headers.push_back(support.support + " " + std::string(reactionName(dof)));
   int frequencies = 0;
+  const OutputUnits::Shown hz = units.valueIn("Hz", {1, "Hz"});
   if (const ModalResult* m = modalOf(first)) {
     frequencies = std::min<int>(kFrequencies, int(m->modes.size()));
-    for (int i = 0; i < frequencies; ++i) headers.push_back("f" + std::to_string(i + 1) + " Hz");
+    for (int i = 0; i < frequencies; ++i)
+      headers.push_back("f" + std::to_string(i + 1) + " " + hz.unit);
   }
+  const OutputUnits::Shown force = units.valueIn("N", {1, "N"});
+  const OutputUnits::Shown moment = units.valueIn("N m", {1, "N m"});
   if (headers.size() == 1) return printTransientSweep(out, sweep);  // nothing static or modal
   out << "  ";
   for (const std::string& h : headers) out << padded(h, kColumn);
@@ -222,16 +240,16 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
     if (const StaticResult* s = staticOf(run))
       for (const SupportReactions& support : reactionsBySupport(*s))
         for (const auto& [dof, value] : support.components)
-          out << padded(formatValue(value), kColumn);
+          out << padded(formatValue(value * (isRotation(dof) ? moment : force).factor), kColumn);
     if (const ModalResult* m = modalOf(run))
       for (int i = 0; i < frequencies && i < int(m->modes.size()); ++i)
-        out << padded(formatValue(m->modes[i].frequencyHz), kColumn);
+        out << padded(formatValue(m->modes[i].frequencyHz * hz.factor), kColumn);
     out << "\n";
   }
-  out << "  (reactions in N and N m on the structure)\n";
+  out << "  (reactions in " << force.unit << " and " << moment.unit << " on the structure)\n";
   printTransientSweep(out, sweep);
 
-  printSweepStressPeaks(out, deck, sweep);
+  printSweepStressPeaks(out, deck, sweep, units);
 }
 
 int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,

@@ -41,6 +41,7 @@ OutputChoices chooseOutput(const DeckOutput& deck, const DeckOutput& commandLine
     if (source->charts) chosen.charts = *source->charts;
     if (source->pointFiles) chosen.pointFiles = *source->pointFiles;
     if (source->fullTables) chosen.fullTables = *source->fullTables;
+    chosen.units = chosen.units.overlaid(source->units);
   }
   return chosen;
 }

@@ -1,12 +1,14 @@
 // What a results directory holds besides results.json and the tables: charts in which format,
 // and a sweep's results per value. A deck's `output:` block chooses, the command line
-// (`--charts`, `--point-files`) overrides it.
+// (`--charts`, `--point-files`, `--units`) overrides it.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "problems/deck/OutputUnits.hpp"
 
 namespace beamrotor {
 
@@ -27,6 +29,8 @@ struct OutputChoices {
   /// A long line's fields table at every station (5 an element), not thinned to what a chart
   /// and a reader need (ThinnedStations.hpp).
   bool fullTables = false;
+  /// The units of the summary, tables and charts; none set: each writer's own.
+  OutputUnits units = {};
 };
 
 /// The choices a deck's `output:` block makes; each unset one leaves the default.
@@ -34,6 +38,7 @@ struct DeckOutput {
   std::optional<ChartFormat> charts;
   std::optional<bool> pointFiles;
   std::optional<bool> fullTables;
+  OutputUnits units = {};  ///< the command line's set over the deck's, quantity by quantity
 };
 
 /// The deck's choices over the defaults, then the command line's over them.

@@ -8,7 +8,8 @@
 namespace beamrotor {
 
 std::string chartCaption(const RunResult& run, const std::string& analysis,
-                         const std::string& what, const std::string& left) {
+                         const std::string& what, const std::string& left,
+                         const OutputUnits& units) {
   constexpr std::size_t kLine = 90;  // characters across a 900-pixel chart at its title font
   std::string text = run.deckName.empty() ? "" : run.deckName + ": ";
   text += analysis;
@@ -27,11 +28,13 @@ std::string chartCaption(const RunResult& run, const std::string& analysis,
     const double* value = valueOf(name);
     if (!value || name == left || std::count(shown.begin(), shown.end(), name) > 0) continue;
     shown.push_back(name);
+    OutputUnits::Shown shown{1, ""};
+    for (const auto& [named, unit] : run.units)
+      if (named == name && !unit.empty()) shown = units.valueIn(unit, {1, unit});
     std::string item = name;
     item += " = ";
-    item += labelNumber(*value);
-    for (const auto& [named, unit] : run.units)
-      if (named == name && !unit.empty()) item += " " + unit;
+    item += labelNumber(*value * shown.factor);
+    if (!shown.unit.empty()) item += " " + shown.unit;
     if (!line.empty() && line.size() + 2 + item.size() > kLine) {
       text += "\n" + line;
       line.clear();

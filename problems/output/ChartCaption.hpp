@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
@@ -13,7 +14,9 @@ namespace beamrotor {
 /// one ("eta = 0.2 m, F = 1.25e+04 N"). `what` follows the analysis' name; the parameter `left`
 /// (a sweep's, which `what` names) is not listed. Lines of parameters are kept to a chart's
 /// width.
+/// Values in the user's `units` where they set the parameter's quantity.
 std::string chartCaption(const RunResult& run, const std::string& analysis,
-                         const std::string& what = "", const std::string& left = "");
+                         const std::string& what = "", const std::string& left = "",
+                         const OutputUnits& units = {});
 
 }  // namespace beamrotor

@@ -22,6 +22,7 @@
 #include "problems/output/structure/EnvelopeCharts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
+#include "problems/output/files/TableUnits.hpp"
 #include "problems/output/structure/FrameCharts.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/structure/LineSampling.hpp"
@@ -41,6 +42,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The caption of a chart of prepared's run (ChartCaption.hpp), in prepared's units.
+std::string captionOf(const PreparedRun& prepared, const std::string& analysis,
+                      const std::string& what = "") {
+  return chartCaption(*prepared.run, analysis, what, "", prepared.units);
+}
+
 /// A frame's charts: the whole structure at once, not a line coordinate through its members.
 /// The deformed shape and moments under the deck's own loads (unless only its load cases load
 /// it), under each combination that governs an extreme (governingCombinations), the envelope
@@ -54,7 +61,8 @@ void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, con
                         const std::string& what, const std::string& chart) {
     const StationsByElement byElement(stations, model.elements().size());
     const FrameDrawing frame{&model, &byElement, &x.ranges, x.largestDisplacement.value};
-    drawChart(dir, frameChart(chartCaption(run, a.name, what), chart, frame, planar));
+    drawChart(dir,
+              frameChart(captionOf(prepared, a.name, what), chart, frame, planar, prepared.units));
   };
   const StaticOutcome* statics = resultOf<StaticOutcome>(a);
   if (!statics || statics->ownLoads || p.cases.empty())
@@ -68,15 +76,15 @@ void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, con
   std::vector<std::string> names;
   for (const CaseOutcome& c : cases)
     if (c.combination) names.push_back(c.name);
-  drawChart(dir, frameEnvelopeChart(chartCaption(run, a.name, ", envelope of the combinations"),
+  drawChart(dir, frameEnvelopeChart(captionOf(prepared, a.name, ", envelope of the combinations"),
                                     frameEnvelopeChart(p.stem), model, p.envelopeStations, names,
-                                    planar));
+                                    planar, prepared.units));
   if (model.members().size() > kEnvelopeChartsUpTo) return;
   for (std::size_t m = 0; m < p.envelopes.size(); ++m) {
     const std::string& member = model.members()[m].first;
-    drawChart(dir, memberEnvelopeChart(chartCaption(run, a.name, ", envelope of " + member),
+    drawChart(dir, memberEnvelopeChart(captionOf(prepared, a.name, ", envelope of " + member),
                                        envelopeChart(p.stem, member), p.envelopes[m],
-                                       p.envelopes[m].title()));
+                                       p.envelopes[m].title(), prepared.units));
   }
 }
 
@@ -102,14 +110,16 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
     writePvd(dir / casesPvd(p.stem), entries);
   }
   if (charts && !p.stations.empty() && p.members.empty())
-    drawChart(dir, staticDiagrams(chartCaption(run, a.name), diagramsChart(p.stem),
-                                  {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model)));
+    drawChart(dir, staticDiagrams(captionOf(prepared, a.name), diagramsChart(p.stem),
+                                  {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model),
+                                  kAllDiagrams, prepared.units));
   if (charts && !p.members.empty()) drawFrameCharts(prepared, p, dir);
 }
 
 /// A modal analysis' files: its frequencies, shapes, one VTK file per mode and the chart.
-void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const Model& model,
+void writeModalFiles(const PreparedRun& prepared, const PreparedAnalysis& p, const Model& model,
                      const ModalResult& modal, const fs::path& dir, bool charts) {
+  const RunResult& run = *prepared.run;
   p.modes->write(dir / modesCsv(p.stem));
   p.shapes->write(dir / shapesCsv(p.stem));
   std::vector<PvdEntry> entries;
@@ -122,23 +132,25 @@ void writeModalFiles(const RunResult& run, const PreparedAnalysis& p, const Mode
   writePvd(dir / collectionPvd(p.stem), entries);
   if (!charts || p.shapes->rowCount() == 0) return;
   if (model.members().empty()) {
-    drawChart(dir, modeShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem),
-                                   model, modal, *p.shapes, shapesCsv(p.stem)));
+    drawChart(dir, modeShapesChart(captionOf(prepared, p.outcome->name), shapesChart(p.stem),
+                                   model, modal, *p.shapes, shapesCsv(p.stem), prepared.units));
     return;
   }
   std::vector<std::string> titles;
   for (std::size_t m = 0; m < modal.modes.size(); ++m) {
+    const OutputUnits::Shown hz = prepared.units.valueIn("Hz", {1, "Hz"});
     char frequency[32];
-    std::snprintf(frequency, sizeof frequency, "%.4g", modal.modes[m].frequencyHz);
+    std::snprintf(frequency, sizeof frequency, "%.4g ", modal.modes[m].frequencyHz * hz.factor);
     std::string title = "mode " + std::to_string(m + 1);
     title += ": ";
     title += frequency;
-    title += " Hz, ";
+    title += hz.unit;
+    title += ", ";
     title += modal.modes[m].description;
     titles.push_back(std::move(title));
   }
-  drawChart(dir, frameShapesChart(chartCaption(run, p.outcome->name), shapesChart(p.stem), model,
-                                  modal.modes, titles, run.dimension == "planar"));
+  drawChart(dir, frameShapesChart(captionOf(prepared, p.outcome->name), shapesChart(p.stem), model,
+                                  modal.modes, titles, run.dimension == "planar", prepared.units));
 }
 
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
@@ -154,23 +166,26 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeStaticFiles(prepared, p, r.secondOrder, dir, charts);
             },
             [&](const BucklingResult&) {
-              writeBucklingFiles(p, model, dir, chartCaption(run, a.name), charts,
-                                 run.dimension == "planar");
+              writeBucklingFiles(p, model, dir, captionOf(prepared, a.name), charts,
+                                 run.dimension == "planar", prepared.units);
             },
-            [&](const ModalResult& r) { writeModalFiles(run, p, model, r, dir, charts); },
+            [&](const ModalResult& r) { writeModalFiles(prepared, p, model, r, dir, charts); },
             [&](const TorsionOutcome& r) {
-              writeModalFiles(run, p, *r.model, r.modes, dir, charts);
+              writeModalFiles(prepared, p, *r.model, r.modes, dir, charts);
             },
             [&](const TransientOutcome& r) {
               writeTransientFiles(dir, model, p.stem, r, *p.history,
-                                  charts ? chartCaption(run, a.name) : "");
+                                  charts ? captionOf(prepared, a.name) : "");
             },
             [&](const RotorResult auto& r) {
-              writeRotorFiles({*p.rotor, p.stem, model, dir, chartCaption(run, a.name), charts}, r);
+              writeRotorFiles(
+                  {*p.rotor, p.stem, model, dir, captionOf(prepared, a.name), charts, prepared.units},
+                  r);
             },
             [&](const CrankSliderOutcome& r) {
               for (const CsvTable& table : p.crank) table.write(dir / table.title());
-              if (charts) drawCrankCharts(dir, r, p.stem, chartCaption(run, a.name));
+              if (charts)
+                drawCrankCharts(dir, r, p.stem, captionOf(prepared, a.name), prepared.units);
             }},
         a.result);
   }
@@ -180,7 +195,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 void writeRunOutputs(const RunResult& run, const fs::path& dir, const OutputChoices& choices,
                      const AlsoWrite& also) {
-  writePreparedRun(prepareRun(run, choices.fullTables), dir, choices, also);
+  writePreparedRun(prepareRun(run, choices.fullTables, choices.units), dir, choices, also);
 }
 
 void writePreparedRun(const PreparedRun& prepared, const fs::path& dir,
@@ -208,14 +223,15 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
   std::vector<Json> docs;
   std::vector<std::string> directories;  // empty names without point files
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    if (tables) prepared.push_back(prepareRun(sweep.runs[i], choices.fullTables));
+    if (tables)
+      prepared.push_back(prepareRun(sweep.runs[i], choices.fullTables, choices.units));
     docs.push_back(tables ? prepared.back().doc : prepareRunDocument(sweep.runs[i]));
     directories.push_back(choices.pointFiles ? sweepValueDirectory(i, sweep.runs.size()) : "");
   }
   const Json sweepDoc = sweepJson(sweep, docs, directories);
   requireFiniteNumbers(sweepDoc, kSweepJson);
   const std::vector<SweepQuantity> quantities = sweepQuantities(docs);
-  const CsvTable table = sweepTable(kSweepCsv, sweep, docs, quantities);
+  const CsvTable table = inUnits(sweepTable(kSweepCsv, sweep, docs, quantities), choices.units);
 
   // 2. Per value its own results when asked for (no charts: they would dominate the time of a
   // long sweep), then the sweep's JSON, CSV, a .pvd series per static analysis over the
@@ -248,19 +264,22 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
                               prepared.front().analyses[k].members.empty();
         std::vector<const CsvTable*> fields;
         std::vector<std::string> files, values;
+        // The swept values in the user's unit of their quantity, when they set it.
+        const OutputUnits::Shown swept = choices.units.valueIn(sweep.unit, {1, ""});
         for (std::size_t i = 0; i < prepared.size() && overlaid; ++i) {
           fields.push_back(&*prepared[i].analyses[k].fields);
           files.push_back(choices.pointFiles ? directories[i] + "/" + fieldsCsv(stem)
                                              : sweepFieldsCsv(stem, i, prepared.size()));
           if (!choices.pointFiles) fields.back()->write(temporary / files.back());
-          values.push_back(labelNumber(sweep.values[i]));
+          values.push_back(labelNumber(sweep.values[i] * swept.factor));
         }
+        if (!values.empty() && !swept.unit.empty()) values.back() += " " + swept.unit;
         if (overlaid)
           drawOverlaidDiagrams(
               temporary,
               chartCaption(first, a.name, " at " + sweep.parameter + " = " + joinNames(values),
-                      sweep.parameter),
-              diagramsChart(stem), sweep, fields, files);
+                           sweep.parameter, choices.units),
+              diagramsChart(stem), sweep, fields, files, choices.units);
       }
       std::vector<SweepQuantity> own;
       for (const SweepQuantity& q : quantities)
@@ -268,7 +287,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
       if (!own.empty())
         drawChart(temporary, sweepChart(first.deckName + ": " + a.name + " over " + sweep.parameter,
                                         sweepChart(stem), sweep.parameter, sweep.unit, own, table,
-                                        kSweepCsv));
+                                        kSweepCsv, choices.units));
     }
     charts.draw();
     if (also) also(temporary);

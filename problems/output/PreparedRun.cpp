@@ -8,6 +8,7 @@
 #include "problems/output/rotor/RotorFileNames.hpp"
 #include "problems/output/rotor/RotorOrbitChart.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
+#include "problems/output/files/TableUnits.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 #include "problems/output/structure/StabilityOutput.hpp"
 #include "problems/output/structure/Tables.hpp"
@@ -35,12 +36,30 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
 
 namespace {
 
+/// The dimension of a load case's value: a reaction or a spring's force (fx .. mz), a point's
+/// displacement (ux .. rz) or a member's resultant extreme ("Mz max").
+Dimension caseValueDimension(const std::string& quantity, const std::string& component) {
+  const char first = component.empty() ? ' ' : component.front();
+  if (quantity == "displacement") return first == 'r' ? dim::angle : dim::length;
+  if (quantity == "member") {
+    if (component.rfind("deflection", 0) == 0) return dim::length;
+    return first == 'T' || first == 'M' ? dim::moment : dim::force;
+  }
+  return first == 'm' ? dim::moment : dim::force;
+}
+
 /// The load cases and combinations of a static analysis's results.json entry as one table:
 /// reactions, spring and bearing forces, point displacements and member resultant extremes,
-/// one value per row.
-CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
+/// one value per row with its unit (`units`, SI where none is set).
+CsvTable loadCasesTable(const Json& analysis, const std::string& file, const OutputUnits& units) {
   CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
-                    {"component", ""}, {"value", ""}});
+                    {"component", ""}, {"value", ""}, {"unit", ""}});
+  const auto addRow = [&](const std::string& name, long long combination,
+                          const std::string& quantity, const std::string& at,
+                          const std::string& component, double si) {
+    const OutputUnits::Shown shown = units.ofSI(caseValueDimension(quantity, component));
+    t.addRow({name, combination, quantity, at, component, si * shown.factor, shown.unit});
+  };
   for (const Json& c : analysis.at("cases")) {
     const std::string name = c.at("name").get<std::string>();
     const long long combination = c.at("combination").get<bool>() ? 1 : 0;
@@ -50,16 +69,16 @@ CsvTable loadCasesTable(const Json& analysis, const std::string& file) {
       if (c.contains(key))
         for (const auto& where : c.at(key).items())
           for (const auto& component : where.value().items())
-            t.addRow({name, combination, std::string(quantity), where.key(), component.key(),
-                      component.value().get<double>()});
+            addRow(name, combination, quantity, where.key(), component.key(),
+                   component.value().get<double>());
     if (!c.contains("members")) continue;
     for (const auto& member : c.at("members").items())
       for (const auto& component : member.value().items()) {
         const Json& v = component.value();
         if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
         for (const char* extreme : {"max", "min"})
-          t.addRow({name, combination, std::string("member"), member.key(),
-                    component.key() + " " + extreme, v.at(extreme).at("value").get<double>()});
+          addRow(name, combination, "member", member.key(), component.key() + " " + extreme,
+                 v.at(extreme).at("value").get<double>());
       }
   }
   return t;
@@ -123,6 +142,20 @@ Json checkedDocument(const RunResult& run, const std::vector<AnalysisExtremes>& 
   return doc;
 }
 
+/// Every table of p in `units` (inUnits).
+void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
+  for (std::optional<CsvTable>* t : {&p.fields, &p.springs, &p.modes, &p.shapes, &p.history})
+    if (*t) *t = inUnits(**t, units);
+  if (p.rotor)
+    for (std::optional<CsvTable>* t :
+         {&p.rotor->modes, &p.rotor->orbits, &p.rotor->campbell, &p.rotor->critical,
+          &p.rotor->unbalance, &p.rotor->api684, &p.rotor->frf, &p.rotor->bearings, &p.rotor->map,
+          &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag})
+      if (*t) *t = inUnits(**t, units);
+  for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank})
+    for (CsvTable& t : *list) t = inUnits(t, units);
+}
+
 }  // namespace
 
 Json prepareRunDocument(const RunResult& run) {
@@ -130,13 +163,13 @@ Json prepareRunDocument(const RunResult& run) {
   return checkedDocument(run, runExtremes(run));
 }
 
-PreparedRun prepareRun(const RunResult& run, bool fullTables) {
+PreparedRun prepareRun(const RunResult& run, bool fullTables, const OutputUnits& units) {
   // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
   requireWritable(run);
   const Model& model = *run.model;
 
   // 2. The extremes of every static solution, then the samples along the line and every table.
-  PreparedRun prepared{&run, runExtremes(run), {}, {}};
+  PreparedRun prepared{&run, runExtremes(run), {}, {}, units};
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
     PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {}, {},
@@ -177,7 +210,9 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables) {
     if (!casesOf(*p.outcome).empty())
       for (const Json& entry : prepared.doc.at("analyses"))
         if (entry.at("name") == p.outcome->name && entry.contains("cases"))
-          p.caseTable = loadCasesTable(entry, casesCsv(p.stem));
+          p.caseTable = loadCasesTable(entry, casesCsv(p.stem), units);
+  // 5. Every table in the user's units; results.json stays SI.
+  for (PreparedAnalysis& p : prepared.analyses) showInUnits(p, units);
   return prepared;
 }
 

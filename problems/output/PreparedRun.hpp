@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fem/assembly/MemberEnvelope.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/structure/LineSampling.hpp"
@@ -60,12 +61,15 @@ struct PreparedRun {
   std::vector<AnalysisExtremes> extremes;  ///< per analysis, computed once (runExtremes)
   std::vector<PreparedAnalysis> analyses;
   Json doc;  ///< results.json
+  OutputUnits units;  ///< the units the tables are in (and the charts show)
 };
 
-/// Prepares run: a long line's fields table thinned (thinnedStations) unless `fullTables`.
+/// Prepares run: a long line's fields table thinned (thinnedStations) unless `fullTables`,
+/// every table in `units` (inUnits; the document stays SI).
 /// Throws std::runtime_error naming the first non-finite number, or analyses whose files would
 /// overwrite each other's.
-PreparedRun prepareRun(const RunResult& run, bool fullTables = false);
+PreparedRun prepareRun(const RunResult& run, bool fullTables = false,
+                       const OutputUnits& units = {});
 
 /// Only the results.json document of run, checked as prepareRun checks it, without its tables
 /// (a long sweep's values, whose tables are not written).

@@ -128,7 +128,9 @@ DeckOutput outputFrom(const std::optional<std::string>& charts, std::optional<bo
 class PythonRun {
  public:
   PythonRun(RunResult run, DeckOutput output) : run_(std::move(run)), output_(output) {
-    const PreparedRun prepared = prepareRun(run_);
+    // Tables in the output units chosen (the deck's, or solve(units=...)'s over them); the
+    // results stay SI.
+    const PreparedRun prepared = prepareRun(run_, false, output_.units);
     results_ = toPython(prepared.doc);
     for (const PreparedAnalysis& a : prepared.analyses) {
       py::dict tables, units;
@@ -244,8 +246,25 @@ std::vector<std::string> overridesFrom(const py::dict& values) {
   return sets;
 }
 
+/// solve()'s `units`: {"length": "mm"} or "length=mm,force=kN"; a bad one is a ValueError.
+OutputUnits unitsFrom(const py::object& units) {
+  try {
+    if (units.is_none()) return {};
+    if (py::isinstance<py::str>(units)) return parseOutputUnits(units.cast<std::string>());
+    if (!py::isinstance<py::dict>(units))
+      throw py::type_error("units: a dict {quantity: unit} or a str 'length=mm,force=kN'");
+    OutputUnits out;
+    for (const auto& [quantity, unit] : units.cast<py::dict>())
+      out.set(py::str(quantity), py::str(unit));
+    return out;
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("units: ") + e.what());
+  }
+}
+
 py::object solve(const std::filesystem::path& deck, const py::dict& set, const std::string& sweep,
-                 const std::string& formulation, bool noSweep) {
+                 const std::string& formulation, bool noSweep, const py::object& units) {
+  const OutputUnits chosen = unitsFrom(units);
   StudyRequest request;
   request.deckPath = deck.string();
   request.sets = overridesFrom(set);
@@ -257,8 +276,10 @@ py::object solve(const std::filesystem::path& deck, const py::dict& set, const s
     py::gil_scoped_release free;
     study = solveStudy(request);
   }
-  if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep), study.deck.output));
-  return py::cast(PythonRun(std::move(*study.run), study.deck.output));
+  DeckOutput output = study.deck.output;
+  output.units = output.units.overlaid(chosen);
+  if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep), output));
+  return py::cast(PythonRun(std::move(*study.run), output));
 }
 
 // 4. Design studies ------------------------------------------------------------------------
@@ -363,7 +384,7 @@ py::object study(const std::filesystem::path& deck, const std::vector<std::strin
     py::dict at = set;
     for (const auto& [name, value] : outcome.summary["worst_point"]["parameters"].items())
       at[py::str(name)] = value.get<double>();
-    result.worst = solve(deck, at, "", "", true);
+    result.worst = solve(deck, at, "", "", true, py::none());
   }
   return py::cast(std::move(result));
 }
@@ -474,9 +495,13 @@ PYBIND11_MODULE(beamrotor, m) {
 
   m.def("solve", &beamrotor::solve, py::arg("deck"), py::kw_only(), py::arg("set") = py::dict(),
         py::arg("sweep") = "", py::arg("formulation") = "", py::arg("sweep_off") = false,
+        py::arg("units") = py::none(),
         "Reads a deck, applies `set` ({name: number or expression}) and solves it. Returns a "
         "Run, or a Sweep when the deck (or `sweep`, e.g. 'eta=0:0.4:4') sweeps a parameter; "
-        "`sweep_off` solves the parameters' own values. Raises DeckError or SolveError.");
+        "`sweep_off` solves the parameters' own values. `units` ({'length': 'mm'} or "
+        "'length=mm,force=kN') sets the units of run.tables and of write() over the deck's "
+        "output: units (run.units names them; run.results stays SI). Raises DeckError or "
+        "SolveError.");
   py::class_<PythonStudy>(m, "Study", "A design study: its table, summary and worst point.")
       .def_readonly("table", &PythonStudy::table,
                     "study.csv's columns: NumPy arrays (text columns as lists of str)")

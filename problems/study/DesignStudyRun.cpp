@@ -236,7 +236,8 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
           Json& entry = outcome.summary["worst_point"];
           try {
             outcome.worstWritten = unlessStopping(temporary / "worst", [&] {
-              writeRunOutputs(PointSolver(plan).solveFully(worst->second), temporary / "worst");
+              writeRunOutputs(PointSolver(plan).solveFully(worst->second), temporary / "worst",
+                              chooseOutput(plan.output, {}));
             });
             if (outcome.worstWritten)
               entry["directory"] = "worst";

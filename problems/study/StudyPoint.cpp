@@ -72,6 +72,7 @@ StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText
   plan.deckText = deckText;
   plan.overrides = std::move(overrides);
   plan.formulation = formulation;
+  plan.output = deck.output;
   for (const StudyParameter& p : spec.parameters) plan.parameterNames.push_back(p.name);
   for (const StudyOutput& o : spec.outputs) addOnce(plan.analyses, o.analysis);
   for (const DeckCheck& k : deck.checks) {

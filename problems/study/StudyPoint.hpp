@@ -35,6 +35,9 @@ struct StudyPlan {
   /// met from their byte code (ExpressionMemo, one per solver) instead of parsing them again;
   /// false: every point reads the deck in full (the reference the lean path must equal).
   bool lean = true;
+  /// The deck's `output:` choices: the worst point's directory is written with them (its
+  /// charts and output units); study.csv stays SI.
+  DeckOutput output;
 };
 
 /// Where one point's time went (s, wall time of the thread that solved it). Not part of the

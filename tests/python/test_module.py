@@ -115,6 +115,35 @@ def test_checks_and_written_results_agree(tmp_path):
     assert written["analyses"][0]["reactions"] == run.results["analyses"][0]["reactions"]
 
 
+def test_output_units_give_tables_in_them_and_leave_results_si(tmp_path):
+    """units= sets run.tables' units (run.units names them); results stay SI. A length in mm
+    is the SI value times 1000, an exact factor: bit for bit."""
+    si = beamrotor.solve(PROBLEMS / "cantilever.yaml")
+    mm = beamrotor.solve(PROBLEMS / "cantilever.yaml", units={"length": "mm", "force": "kN"})
+    assert mm.units["static"]["fields"]["uy"] == "mm"
+    assert mm.units["static"]["fields"]["Vy"] == "kN"
+    assert mm.units["static"]["fields"]["Mz"] == "kN mm"
+    assert np.array_equal(mm.tables["static"]["fields"]["uy"], si.tables["static"]["fields"]["uy"] * 1000)
+    assert mm.results["analyses"][0]["displacements"] == si.results["analyses"][0]["displacements"]
+    ref = cantilever_reference(si.parameters)
+    assert abs(mm.tables["static"]["fields"]["uy"][-1] / (1000 * ref["tip"]) - 1) < EXACT
+    # The same from the text form, and write() follows them into the CSV's units line.
+    text = beamrotor.solve(PROBLEMS / "cantilever.yaml", units="length=mm,force=kN")
+    assert np.array_equal(text.tables["static"]["fields"]["uy"], mm.tables["static"]["fields"]["uy"])
+    text.write(tmp_path / "out", charts="none")
+    lines = (tmp_path / "out" / "static_fields.csv").read_text().splitlines()
+    assert lines[1].startswith("# units: mm,mm,mm,mm,rad,rad,rad,kN")
+    # Speeds in Hz: a Campbell table's speed_rpm column is the rpm over 60.
+    rotor = beamrotor.solve(PROBLEMS / "forme_shaft_rotor.yaml", sweep_off=True)
+    hz = beamrotor.solve(PROBLEMS / "forme_shaft_rotor.yaml", sweep_off=True, units={"speed": "Hz"})
+    name = [a for a in rotor.results["analyses"] if a["type"] == "campbell"][0]["name"]
+    assert hz.units[name]["campbell"]["speed_rpm"] == "Hz"
+    assert np.allclose(hz.tables[name]["campbell"]["speed_rpm"],
+                       rotor.tables[name]["campbell"]["speed_rpm"] / 60, rtol=1e-15, atol=0)
+    with pytest.raises(ValueError, match="is a force"):
+        beamrotor.solve(PROBLEMS / "cantilever.yaml", units={"length": "kN"})
+
+
 def test_rotor_campbell_tables():
     run = beamrotor.solve(PROBLEMS / "forme_shaft_rotor.yaml", sweep_off=True)
     campbell = [a for a in run.results["analyses"] if a["type"] == "campbell"][0]

@@ -109,16 +109,27 @@ std::string crankPlot(const CsvTable& table, const std::string& file,
   return s.str() + "\n";
 }
 
+/// A panel's axis: its quantity and unit, e.g. "slider position x [mm]".
+std::string axisLabel(const std::string& quantity, const OutputUnits::Shown& unit) {
+  return quantity + " [" + unit.unit + "]";
+}
+
 std::string panelsBody(const CsvTable& table, const std::string& file, const std::string& caption,
                        int width, int height,
-                       const std::vector<std::pair<std::string, std::vector<CrankCurve>>>& panels) {
+                       const std::vector<std::pair<std::string, std::vector<CrankCurve>>>& panels,
+                       const OutputUnits& units) {
+  // One turn of the crank, in degrees or the user's angle unit (the table's phi holds it).
+  const double degree = units.valueIn("deg", {1, "deg"}).factor;
   std::ostringstream body;
   body << "  set encoding utf8\n"
        << panelLayout(int(panels.size()), 1, caption, width, height, 230) << "  set grid\n"
        << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
-       << "  set key outside right top\n  set xrange [0:360]\n  set xtics 0, 45, 360\n";
+       << "  set key outside right top\n  set xrange [0:" << number(360 * degree)
+       << "]\n  set xtics 0, " << number(45 * degree) << ", " << number(360 * degree) << "\n";
   for (std::size_t p = 0; p < panels.size(); ++p) {
-    if (p + 1 == panels.size()) body << "  set xlabel 'crank angle φ [deg]'\n";
+    if (p + 1 == panels.size())
+      body << "  set xlabel "
+           << gnuplotText(axisLabel("crank angle φ", units.columnIn("deg", {1, "deg"}))) << "\n";
     body << "  set ylabel " << gnuplotText(panels[p].first) << "\n"
          << crankPlot(table, file, panels[p].second);
   }
@@ -188,32 +199,42 @@ Json crankJson(const AnalysisOutcome& a, const std::string& stem) {
 }
 
 void drawCrankCharts(const std::filesystem::path& dir, const CrankSliderOutcome& c,
-                     const std::string& stem, const std::string& caption) {
+                     const std::string& stem, const std::string& caption,
+                     const OutputUnits& units) {
   const CsvTable motion = motionTable(c, stem);
   const std::string file = motionCsv(stem);
   const int width = 1030;
+  const OutputUnits::Shown x = units.columnIn("m", {1e3, "mm"});
+  const OutputUnits::Shown v = units.columnIn("m/s", {1, "m/s"});
+  const OutputUnits::Shown a = units.columnIn("m/s^2", {1, "m/s²"});
+  const OutputUnits::Shown force = units.columnIn("N", {1, "N"});
   drawChart(dir, {stem + "_kinematics",
                   "Slider position, velocity and acceleration against the crank angle", width, 1100,
                   panelsBody(motion, file, caption, width, 1100,
-                             {{"slider position x [mm]",
-                               {{"x", "exact", 1e3, false}, {"x_approx", "two-term", 1e3, true}}},
-                              {"slider velocity v [m/s]",
-                               {{"v", "exact", 1, false}, {"v_approx", "two-term", 1, true}}},
-                              {"slider acceleration a [m/s²]",
-                               {{"a", "exact", 1, false}, {"a_approx", "two-term", 1, true}}}})});
+                             {{axisLabel("slider position x", x),
+                               {{"x", "exact", x.factor, false},
+                                {"x_approx", "two-term", x.factor, true}}},
+                              {axisLabel("slider velocity v", v),
+                               {{"v", "exact", v.factor, false},
+                                {"v_approx", "two-term", v.factor, true}}},
+                              {axisLabel("slider acceleration a", a),
+                               {{"a", "exact", a.factor, false},
+                                {"a_approx", "two-term", a.factor, true}}}},
+                             units)});
   if (!c.reduced) return;
   const std::string cranks = std::to_string(c.input.phases.size()) + " cranks";
   drawChart(dir, {stem + "_inertia_harmonics",
                   "First and second harmonics of the reciprocating inertia force", width, 800,
                   panelsBody(motion, file, caption, width, 800,
-                             {{"one crank [N]",
-                               {{"F1_term", "1st harmonic", 1, false},
-                                {"F2_term", "2nd harmonic", 1, false},
-                                {"inertia_force", "exact force", 1, false}}},
-                              {"sum over the " + cranks + " [N]",
-                               {{"cranks_F1_term", "1st harmonics", 1, false},
-                                {"cranks_F2_term", "2nd harmonics", 1, false},
-                                {"cranks_force", "exact sum", 1, false}}}})});
+                             {{axisLabel("one crank", force),
+                               {{"F1_term", "1st harmonic", force.factor, false},
+                                {"F2_term", "2nd harmonic", force.factor, false},
+                                {"inertia_force", "exact force", force.factor, false}}},
+                              {axisLabel("sum over the " + cranks, force),
+                               {{"cranks_F1_term", "1st harmonics", force.factor, false},
+                                {"cranks_F2_term", "2nd harmonics", force.factor, false},
+                                {"cranks_force", "exact sum", force.factor, false}}}},
+                             units)});
 }
 
 }  // namespace beamrotor

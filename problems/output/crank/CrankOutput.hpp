@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/run/RunResult.hpp"
@@ -21,8 +22,10 @@ std::vector<CsvTable> crankTables(const CrankSliderOutcome& c, const std::string
 /// The analysis' entry in results.json (a.crank set).
 Json crankJson(const AnalysisOutcome& a, const std::string& stem);
 
-/// The two charts, <stem>_kinematics and <stem>_inertia_harmonics, drawn from the motion table.
+/// The two charts, <stem>_kinematics and <stem>_inertia_harmonics, drawn from the motion table
+/// as written in `units` (inUnits).
 void drawCrankCharts(const std::filesystem::path& dir, const CrankSliderOutcome& c,
-                     const std::string& stem, const std::string& caption);
+                     const std::string& stem, const std::string& caption,
+                     const OutputUnits& units = {});
 
 }  // namespace beamrotor

@@ -12,7 +12,12 @@ namespace beamrotor {
 ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::string& chartName,
                                     const CriticalSpeedMap& result, const MapChartData& mapData,
                                     const MapChartData& bearingData, const MapChartData& crossingData,
-                                    const std::vector<std::string>& bearingNames) {
+                                    const std::vector<std::string>& bearingNames,
+                                    const OutputUnits& units) {
+  // The speeds as the tables hold them: rpm, or the user's speed unit.
+  const OutputUnits::Shown speedUnit = units.valueIn("rpm", {1, "rpm"});
+  const OutputUnits::Shown stiffness = units.columnIn("N/m", {1, "N/m"});
+  const auto shownRpm = [&](double radPerSecond) { return rpmOf(radPerSecond) * speedUnit.factor; };
   const CsvTable& map = mapData.table;
   const CsvTable& bearings = bearingData.table;
   const std::string& mapFile = mapData.file;
@@ -24,8 +29,8 @@ ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::strin
   for (double v : map.numbers("stiffness")) k.include(v);
   for (int j = 1; j <= count; ++j)
     for (double v : map.numbers(mapColumn(j))) rpm.include(v);
-  for (double v : result.pinned) rpm.include(rpmOf(v));
-  for (double v : result.freeFree) rpm.include(rpmOf(v));
+  for (double v : result.pinned) rpm.include(shownRpm(v));
+  for (double v : result.freeFree) rpm.include(shownRpm(v));
 
   std::vector<std::string> titles{"pinned bearings", "free-free rotor"};
   for (int j = 1; j <= count; ++j) titles.push_back("critical speed " + std::to_string(j));
@@ -38,12 +43,14 @@ ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::strin
   body << "  set encoding utf8\n  set title " << captionText(caption) << " font ',13'\n"
        << "  set grid xtics ytics mxtics mytics linecolor rgb 'gray80', linecolor rgb 'gray92'\n"
        << "  set key outside right top\n" << logAxis("x", k) << logAxis("y", rpm)
-       << "  set xlabel 'bearing stiffness k [N/m] (isotropic, at every bearing)'\n"
-       << "  set ylabel 'undamped critical speed [rpm]'\n  plot ";
+       << "  set xlabel "
+       << gnuplotText("bearing stiffness k [" + stiffness.unit + "] (isotropic, at every bearing)")
+       << "\n  set ylabel " << gnuplotText("undamped critical speed [" + speedUnit.unit + "]")
+       << "\n  plot ";
   const auto asymptote = [&](const std::vector<double>& speeds, const std::string& title,
                              const char* style) {
     for (std::size_t j = 0; j < speeds.size(); ++j)
-      body << number(rpmOf(speeds[j])) << " with lines " << style << " "
+      body << number(shownRpm(speeds[j])) << " with lines " << style << " "
            << (j == 0 ? "title " + gnuplotText(title) : std::string("notitle")) << ", \\\n       ";
   };
   asymptote(result.pinned, "pinned bearings", "dashtype 2 linewidth 1.5 linecolor rgb 'gray30'");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fem/rotor/CriticalSpeedMap.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 
@@ -23,6 +24,7 @@ struct MapChartData {
 ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::string& chartName,
                                     const CriticalSpeedMap& result, const MapChartData& map,
                                     const MapChartData& bearings, const MapChartData& crossings,
-                                    const std::vector<std::string>& bearingNames);
+                                    const std::vector<std::string>& bearingNames,
+                                    const OutputUnits& units = {});
 
 }  // namespace beamrotor

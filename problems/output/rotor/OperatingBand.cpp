@@ -61,14 +61,16 @@ OperatingBand bandOfPeaks(const OperatingRange& range,
   return band;
 }
 
-BandCommands operatingBandCommands(const std::optional<OperatingBand>& band, int firstObject) {
+BandCommands operatingBandCommands(const std::optional<OperatingBand>& band, double speedFactor,
+                                   int firstObject) {
   BandCommands out;
   if (!band) return out;
-  const double low = band->minRpm * (1 - band->marginBelow / 100);
-  const double high = band->maxRpm * (1 + band->marginAbove / 100);
-  if (band->marginBelow > 0) out.setup += rectangle(firstObject + 1, low, band->minRpm, kMarginFill);
-  if (band->marginAbove > 0) out.setup += rectangle(firstObject + 2, band->maxRpm, high, kMarginFill);
-  out.setup += rectangle(firstObject, band->minRpm, band->maxRpm, kRangeFill);
+  const double from = band->minRpm * speedFactor, to = band->maxRpm * speedFactor;
+  const double low = from * (1 - band->marginBelow / 100);
+  const double high = to * (1 + band->marginAbove / 100);
+  if (band->marginBelow > 0) out.setup += rectangle(firstObject + 1, low, from, kMarginFill);
+  if (band->marginAbove > 0) out.setup += rectangle(firstObject + 2, to, high, kMarginFill);
+  out.setup += rectangle(firstObject, from, to, kRangeFill);
   const auto entry = [&](const char* fill, const std::string& title) {
     out.keyEntries += std::string(", \\\n       NaN with boxes fillstyle solid 1.0 noborder ") +
                       "fillcolor rgb '" + fill + "' title " + gnuplotText(title);

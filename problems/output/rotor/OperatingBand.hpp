@@ -29,15 +29,15 @@ OperatingBand bandOfCriticalSpeeds(const OperatingRange& range,
 OperatingBand bandOfPeaks(const OperatingRange& range,
                           const std::vector<std::vector<ResponsePeak>>& peaks);
 
-/// gnuplot commands shading the band on a chart whose x axis is speed in rpm (behind the
-/// data), with its key entries returned as plot clauses (", NaN with boxes ..."); objects are
-/// numbered from `firstObject`.
+/// gnuplot commands shading the band on a chart whose x axis is speed in rpm times
+/// `speedFactor` (another speed unit: SpeedAxes.hpp) behind the data, with its key entries
+/// returned as plot clauses (", NaN with boxes ..."); objects are numbered from `firstObject`.
 struct BandCommands {
   std::string setup;                ///< before the plot command
   std::string keyEntries;           ///< appended to the plot command
   std::vector<std::string> titles;  ///< the key's titles (to size the key)
 };
 BandCommands operatingBandCommands(const std::optional<OperatingBand>& band,
-                                   int firstObject = 50);
+                                   double speedFactor = 1, int firstObject = 50);
 
 }  // namespace beamrotor

@@ -10,7 +10,11 @@ namespace beamrotor {
 
 ChartScript journalBearingsDiagram(const std::string& caption, const std::string& chartName,
                                    const CsvTable& table, const std::string& csvFile,
-                                   const std::vector<std::string>& bearingNames) {
+                                   const std::vector<std::string>& bearingNames,
+                                   const OutputUnits& units) {
+  const OutputUnits::Shown speed = units.columnIn("rpm", {1, "rpm"});
+  const OutputUnits::Shown stiffness = units.columnIn("N/m", {1e-6, "MN/m"});
+  const OutputUnits::Shown damping = units.columnIn("N s/m", {1e-3, "kN s/m"});
   const int x = table.column("speed_rpm"), index = table.column("bearing_index");
   std::vector<std::string> titles;
   for (const std::string& n : bearingNames)
@@ -39,9 +43,11 @@ ChartScript journalBearingsDiagram(const std::string& caption, const std::string
        << "  set key outside right top\n"
        << "  set ylabel 'eccentricity ratio e/c'\n  set yrange [0:1]\n"
        << curves({"eccentricity"}, 1) << "  set yrange [*:*]\n"
-       << "  set ylabel 'stiffness [MN/m]'\n" << curves({"kxx", "kxy", "kyx", "kyy"}, 1e-6)
-       << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'damping [kN s/m]'\n"
-       << curves({"cxx", "cxy", "cyx", "cyy"}, 1e-3) << "  unset multiplot\n";
+       << "  set ylabel " << gnuplotText("stiffness [" + stiffness.unit + "]") << "\n"
+       << curves({"kxx", "kxy", "kyx", "kyy"}, stiffness.factor)
+       << "  set xlabel " << gnuplotText("spin speed [" + speed.unit + "]") << "\n"
+       << "  set ylabel " << gnuplotText("damping [" + damping.unit + "]") << "\n"
+       << curves({"cxx", "cxy", "cyx", "cyy"}, damping.factor) << "  unset multiplot\n";
   return {chartName, "Plain journal bearings: eccentricity and coefficients against speed", width,
           height, body.str()};
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 
@@ -15,6 +16,7 @@ namespace beamrotor {
 /// per coefficient, one dash pattern per bearing.
 ChartScript journalBearingsDiagram(const std::string& caption, const std::string& chartName,
                                    const CsvTable& table, const std::string& csvFile,
-                                   const std::vector<std::string>& bearingNames);
+                                   const std::vector<std::string>& bearingNames,
+                                   const OutputUnits& units = {});
 
 }  // namespace beamrotor

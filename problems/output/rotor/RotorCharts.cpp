@@ -11,6 +11,7 @@
 #include "problems/output/files/LabelPlacement.hpp"
 #include "problems/output/rotor/OperatingBand.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
+#include "problems/output/rotor/SpeedAxes.hpp"
 
 namespace beamrotor {
 
@@ -25,14 +26,16 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
                             const CsvTable& campbell, const std::string& csvFile,
                             const CsvTable& critical, const std::string& criticalFile,
                             const std::vector<double>& orders,
-                            const std::optional<OperatingBand>& band) {
-  const auto rpm = campbell.numbers("speed_rpm");
+                            const std::optional<OperatingBand>& band, const OutputUnits& units) {
+  const SpeedAxes axes = speedAxes(units);
+  const auto rpm = campbell.numbers("speed_rpm");  // in axes.speed's unit
   const int x = campbell.column("speed_rpm");
   const int lines = campbellLineCount(campbell);
   // The frequency axis is fixed here (0 to the highest line or speed line, 5 % headroom) so
   // that data map to known pixels and the critical speeds' labels can be kept apart.
   const double highestOrder = *std::max_element(orders.begin(), orders.end());
-  double top = highestOrder * std::max(std::abs(rpm.front()), std::abs(rpm.back())) / 60;
+  double top =
+      highestOrder * std::max(std::abs(rpm.front()), std::abs(rpm.back())) * axes.oncePerTurn();
   bool planar = false;
   for (int l = 1; l <= lines; ++l) {
     for (double f : campbell.numbers(campbellColumn(l, "frequency")))
@@ -49,7 +52,7 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
   if (orders.size() > 1) titles.push_back("further orders' crossings");
   for (double order : orders) titles.push_back(number(order) + "x speed");
   for (const auto& [slot, title] : senses) titles.push_back(title);
-  const BandCommands shading = operatingBandCommands(band);
+  const BandCommands shading = operatingBandCommands(band, axes.speed.factor);
   titles.insert(titles.end(), shading.titles.begin(), shading.titles.end());
   const int width = 1000, height = 640;
   const int captionLines = 1 + int(std::count(caption.begin(), caption.end(), '\n'));
@@ -70,7 +73,8 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
        << number(1 - plot.top / height) << "\n  set bmargin at screen "
        << number(1 - plot.bottom / height) << "\n"
        << "  set grid\n  set key outside right top\n"
-       << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'whirl frequency [Hz]'\n"
+       << "  set xlabel " << gnuplotText("spin speed [" + axes.speed.unit + "]")
+       << "\n  set ylabel " << gnuplotText("whirl frequency [" + axes.frequency.unit + "]") << "\n"
        << "  set xrange [" << number(x0) << ":" << number(x0 + span) << "]\n"
        << "  set yrange [0:" << number(top) << "]\n"
        << "  whirl(w) = w > 0 ? " << colourValue(kForward) << " : w < 0 ? "
@@ -86,8 +90,7 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
     return std::string(w > 0 ? "forward" : w < 0 ? "backward" : "planar");
   };
   for (std::size_t k = 0; k < speeds.size(); ++k) {
-    char rpmText[48];
-    std::snprintf(rpmText, sizeof rpmText, "%.0f rpm ", speeds[k]);
+    const std::string rpmText = axes.speedText(speeds[k] / axes.speed.factor) + " ";
     std::string text = rpmText;
     text += whirlText(whirls[k]);
     // A double mode (the two planes of an isotropic rotor) crosses twice at one point: one
@@ -127,8 +130,8 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
          << ", \\\n       ";
   // The excitation lines: the first order (the critical speeds') darkest, further ones lighter.
   for (std::size_t k = 0; k < orders.size(); ++k)
-    body << (k > 0 ? ", \\\n       " : "") << "x * " << number(orders[k])
-         << " / 60 with lines dashtype " << (k == 0 ? 2 : 3 + int(k % 3)) << " linecolor rgb '"
+    body << (k > 0 ? ", \\\n       " : "") << "x * " << number(orders[k] * axes.oncePerTurn())
+         << " with lines dashtype " << (k == 0 ? 2 : 3 + int(k % 3)) << " linecolor rgb '"
          << (k == 0 ? "gray30" : "gray45") << "' linewidth " << (k == 0 ? 1 : 1.5) << " title "
          << gnuplotText(number(orders[k]) + "x speed");
   // The critical speeds (the first order's crossings) filled, the further orders' open.
@@ -152,26 +155,30 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
                                    const CsvTable& response, const std::string& csvFile,
                                    const std::vector<std::string>& points,
                                    const std::optional<OperatingBand>& band,
-                                   std::optional<double> unstableFromRpm) {
+                                   std::optional<double> unstableFromRpm,
+                                   const OutputUnits& units) {
+  const SpeedAxes axes = speedAxes(units);
+  const OutputUnits::Shown amplitude = units.columnIn("m", {1e6, "µm"});
+  const OutputUnits::Shown phase = units.columnIn("deg", {1, "deg"});
   const int x = response.column("speed_rpm");
   // The amplitude axis in whole decades of the positive amplitudes (um), at most
   // kAmplitudeDecades below the largest: the response at rest is no reader's question.
   PositiveRange amplitudes;
   for (const std::string& p : points)
-    for (double a : response.numbers(p + "_amplitude")) amplitudes.include(a * 1e6);
+    for (double a : response.numbers(p + "_amplitude")) amplitudes.include(a * amplitude.factor);
   amplitudes.low = std::max(amplitudes.low, amplitudes.high * std::pow(10.0, -kAmplitudeDecades));
   // A marker every few rows (about 15 along the curve) and each curve thinner than the last.
   const std::size_t every = std::max<std::size_t>(1, response.rowCount() / 15);
   const auto width_ = [](std::size_t k) { return number(std::max(1.0, 3.5 - 1.0 * double(k))); };
-  BandCommands shading = operatingBandCommands(band);
+  BandCommands shading = operatingBandCommands(band, axes.speed.factor);
   if (unstableFromRpm) {
     // Beyond the onset no steady response exists: shaded in red and named in the key.
     std::string name = "unstable above ";
-    name += labelNumber(*unstableFromRpm);
-    name += " rpm";
+    name += labelNumber(*unstableFromRpm * axes.speed.factor);
+    name += " " + axes.speed.unit;
     const std::string fill = " fillstyle transparent solid 0.15 noborder fillcolor rgb '#c0392b'";
     shading.setup += "  set object 90 rectangle from first ";
-    shading.setup += number(*unstableFromRpm);
+    shading.setup += number(*unstableFromRpm * axes.speed.factor);
     shading.setup += ", graph 0 to graph 1, graph 1 back" + fill + "\n";
     shading.keyEntries += ", \\\n       NaN with boxes" + fill + " title " + gnuplotText(name);
     shading.titles.push_back(name);
@@ -201,11 +208,13 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
   body << "  set encoding utf8\n"
        << panelLayout(2, 1, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n" << logAxis("y", amplitudes)
-       << "  set ylabel 'orbit semi-major axis [µm]'\n"
-       << panel("amplitude", 1e6, true) << "  unset logscale y\n  set format y '%g'\n"
+       << "  set ylabel " << gnuplotText("orbit semi-major axis [" + amplitude.unit + "]") << "\n"
+       << panel("amplitude", amplitude.factor, true) << "  unset logscale y\n  set format y '%g'\n"
        << "  set ytics autofreq\n  set mytics default\n"
-       << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'phase of u_y, lag negative [deg]'\n"
-       << "  set yrange [*:*]\n  set ytics 90\n"
+       << "  set xlabel " << gnuplotText("spin speed [" + axes.speed.unit + "]") << "\n"
+       << "  set ylabel " << gnuplotText("phase of u_y, lag negative [" + phase.unit + "]") << "\n"
+       << "  set yrange [*:*]\n  set ytics " << number(90 * units.valueIn("deg", {1, "deg"}).factor)
+       << "\n"
        << panel("uy_phase", 1, false) << "  unset multiplot\n";
   return {chartName, "Unbalance response: amplitude and phase against spin speed", width, height,
           body.str()};
@@ -213,7 +222,10 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
 
 ChartScript frequencyResponseDiagram(const std::string& caption, const std::string& chartName,
                                      const CsvTable& response, const std::string& csvFile,
-                                     const std::string& what) {
+                                     const std::string& what, const OutputUnits& units) {
+  const OutputUnits::Shown hz = units.columnIn("Hz", {1, "Hz"});
+  const OutputUnits::Shown receptance = units.columnIn("m/N", {1, "m/N"});
+  const OutputUnits::Shown phase = units.columnIn("deg", {1, "deg"});
   const int x = response.column("frequency");
   PositiveRange magnitudes;
   for (double m : response.numbers("magnitude")) magnitudes.include(m);
@@ -229,11 +241,13 @@ ChartScript frequencyResponseDiagram(const std::string& caption, const std::stri
   body << "  set encoding utf8\n"
        << panelLayout(2, 1, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n" << logAxis("y", magnitudes)
-       << "  set ylabel 'receptance magnitude [m/N]'\n"
+       << "  set ylabel " << gnuplotText("receptance magnitude [" + receptance.unit + "]") << "\n"
        << curve("($" + std::to_string(m) + " > 0 ? $" + std::to_string(m) + " : NaN)")
        << "  unset logscale y\n  set format y '%g'\n  set ytics autofreq\n  set mytics default\n"
-       << "  set xlabel 'excitation frequency [Hz]'\n  set ylabel 'phase, lag negative [deg]'\n"
-       << "  set yrange [*:*]\n  set ytics 90\n" << curve(std::to_string(p))
+       << "  set xlabel " << gnuplotText("excitation frequency [" + hz.unit + "]") << "\n"
+       << "  set ylabel " << gnuplotText("phase, lag negative [" + phase.unit + "]") << "\n"
+       << "  set yrange [*:*]\n  set ytics " << number(90 * units.valueIn("deg", {1, "deg"}).factor)
+       << "\n" << curve(std::to_string(p))
        << "  unset multiplot\n";
   return {chartName, "Frequency response: receptance magnitude and phase against frequency",
           width, height, body.str()};

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <optional>
+
+#include "problems/deck/OutputUnits.hpp"
 #include <string>
 #include <vector>
 
@@ -12,6 +14,9 @@
 
 namespace beamrotor {
 
+/// Each chart's axes are in the units named below, or in `units` where the user set them (the
+/// tables then hold them; OutputUnits.hpp).
+///
 /// Whirl frequency (Hz) of each line against speed (rpm) from a campbellTable in csvFile,
 /// coloured by whirl (forward, backward, planar), an order x speed line dashed per order (the
 /// first, that of the critical speeds, darkest), and the crossings
@@ -21,7 +26,8 @@ ChartScript campbellDiagram(const std::string& caption, const std::string& chart
                             const CsvTable& campbell, const std::string& csvFile,
                             const CsvTable& critical, const std::string& criticalFile,
                             const std::vector<double>& orders,
-                            const std::optional<OperatingBand>& band = std::nullopt);
+                            const std::optional<OperatingBand>& band = std::nullopt,
+                            const OutputUnits& units = {});
 
 /// Two panels against speed (rpm) from an unbalanceTable in csvFile: the orbit semi-major
 /// axis (um, log scale) and the phase of uy (deg, unwrapped: continuous through the criticals,
@@ -35,7 +41,8 @@ ChartScript unbalanceResponseChart(const std::string& caption, const std::string
                                    const CsvTable& response, const std::string& csvFile,
                                    const std::vector<std::string>& points,
                                    const std::optional<OperatingBand>& band = std::nullopt,
-                                   std::optional<double> unstableFromRpm = std::nullopt);
+                                   std::optional<double> unstableFromRpm = std::nullopt,
+                                   const OutputUnits& units = {});
 /// Decades of amplitude the unbalance chart shows below its largest.
 inline constexpr double kAmplitudeDecades = 4;
 
@@ -44,6 +51,6 @@ inline constexpr double kAmplitudeDecades = 4;
 /// it ("B uy / A uy").
 ChartScript frequencyResponseDiagram(const std::string& caption, const std::string& chartName,
                                      const CsvTable& response, const std::string& csvFile,
-                                     const std::string& what);
+                                     const std::string& what, const OutputUnits& units = {});
 
 }  // namespace beamrotor

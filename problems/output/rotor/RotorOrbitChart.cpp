@@ -15,6 +15,7 @@
 #include "fem/model/LineElement.hpp"
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
+#include "problems/output/rotor/SpeedAxes.hpp"
 
 namespace beamrotor {
 
@@ -119,7 +120,11 @@ CsvTable modeOrbitsTable(const std::string& title, const RotorModesResult& r, co
 
 ChartScript modeOrbitsChart(const std::string& caption, const std::string& chartName,
                             const RotorModesResult& r, const Model& model,
-                            const CsvTable& orbits, const std::string& csvFile) {
+                            const CsvTable& orbits, const std::string& csvFile,
+                            const OutputUnits& units) {
+  // Places along the shaft in the table's length unit (the model's metres times `along`).
+  const OutputUnits::Shown lengthUnit = units.valueIn("m", {1, "m"});
+  const double along = lengthUnit.factor;
   const int count = int(r.modes.size());
   const int columns = count > 1 ? 2 : 1, rows = (count + columns - 1) / columns;
   // What the model has decides the key's entries: disks (point inertias with a polar moment;
@@ -138,11 +143,13 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   if (supports) keyTitles.push_back("support");
   const int keyMargin = keyWidth(keyTitles);  // the key stands right of the panels
   const int width = 620 * columns + keyMargin, height = 150 + 330 * std::max(rows, 1);
-  const std::string caption2 = caption + "\nmodes at " + number(rpmOf(r.speed)) +
-                               " rpm: orbits along the shaft (oblique view, largest orbit 1)";
+  const std::string speed = speedAxes(units).speedText(rpmOf(r.speed));
+  const std::string caption2 = caption + "\nmodes at " + speed +
+                               ": orbits along the shaft (oblique view, largest orbit 1)";
   const auto captionLines = 1 + std::count(caption2.begin(), caption2.end(), '\n');
   double x0 = 0, x1 = 0;
-  for (const auto& p : model.nodes()) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
+  for (const auto& p : model.nodes())
+    x0 = std::min(x0, along * p.x()), x1 = std::max(x1, along * p.x());
   const double length = std::max(x1 - x0, 1e-9), pad = 0.05 * length;
   // The oblique view: a point (x, uy, uz) of an orbit is drawn at (x + depth uz, uy + rise uz),
   // so each circular orbit shows as a narrow tilted ellipse standing at its station, as on a
@@ -172,7 +179,7 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   for (const auto& e : model.elements()) {
     const auto dofs = e->dofs();
     if (dofs.empty()) continue;
-    const double x = model.nodes()[dofs[0].node].x();
+    const double x = along * model.nodes()[dofs[0].node].x();
     if (const PointInertia* d = diskOf(*e)) {
       const double half = 0.35 + 0.5 * std::sqrt(d->Jp() / d->m()) / widest;
       body << "  set arrow " << tag++ << " from " << number(x) << "," << number(-half) << " to "
@@ -187,7 +194,7 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
   const std::vector<bool> onShaft = nodesOnShaft(model);
   for (const Support& s : model.supports())
     if (onShaft[std::size_t(s.node)])  // not a pedestal's housing, held in its tilts only
-      body << "  set label " << tag++ << " '' at " << number(model.nodes()[s.node].x()) << ","
+      body << "  set label " << tag++ << " '' at " << number(along * model.nodes()[s.node].x()) << ","
          << number(bottom) << " point pointtype 5 pointsize 1.8 linecolor rgb 'black' front\n";
   // 2. One panel per mode: the orbits as short vectors (an arrow head on the first step of each
   //    orbit shows its sense), coloured by sense, and the deflected line at angle 0.
@@ -227,7 +234,8 @@ ChartScript modeOrbitsChart(const std::string& caption, const std::string& chart
          << " font ',11'\n";
     if (m == 2) body << "  unset key\n";
     // x labelled under the last row only: a label above a title would crowd the next panel's
-    if ((m - 1) / columns == rows - 1) body << "  set xlabel 'x along the shaft [m]'\n";
+    if ((m - 1) / columns == rows - 1)
+      body << "  set xlabel " << gnuplotText("x along the shaft [" + lengthUnit.unit + "]") << "\n";
     const std::string all = rowsOf(m, false), start = rowsOf(m, true);
     body << "  plot " << file << " skip 1" << all << " using " << viewX(m, "") << ":" << viewY
          << ":" << stepX << ":" << stepY << ":(whirl(" << col(cW)

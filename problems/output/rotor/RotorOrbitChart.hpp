@@ -9,6 +9,7 @@
 
 #include "fem/model/Model.hpp"
 #include "fem/rotor/RotorResults.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 
@@ -23,9 +24,11 @@ CsvTable modeOrbitsTable(const std::string& title, const RotorModesResult& r, co
 
 /// The panels of the modes of `r` from a modeOrbitsTable in csvFile; disks (point inertias with
 /// a polar moment: bars sized by their radius of gyration) and bearings (triangles) and
-/// supports (squares, both under the shaft at the panel's foot) taken from the model.
+/// supports (squares, both under the shaft at the panel's foot) taken from the model; x along
+/// the shaft and the speed in the user's `units` where set (the table's x then holds them).
 ChartScript modeOrbitsChart(const std::string& caption, const std::string& chartName,
                             const RotorModesResult& r, const Model& model,
-                            const CsvTable& orbits, const std::string& csvFile);
+                            const CsvTable& orbits, const std::string& csvFile,
+                            const OutputUnits& units = {});
 
 }  // namespace beamrotor

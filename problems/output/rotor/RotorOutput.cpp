@@ -1,6 +1,8 @@
 // Files of the rotor analyses (see RotorOutput.hpp).
 #include "problems/output/rotor/RotorOutput.hpp"
 
+#include "problems/output/files/TableUnits.hpp"
+
 #include <algorithm>
 #include <optional>
 #include <string>
@@ -11,6 +13,7 @@
 #include "problems/output/rotor/CriticalSpeedMapChart.hpp"
 #include "problems/output/rotor/CriticalSpeedMapTables.hpp"
 #include "problems/output/files/FileNames.hpp"
+#include "problems/output/files/TableUnits.hpp"
 #include "problems/output/rotor/RotorBearingChart.hpp"
 #include "problems/output/rotor/RotorCharts.hpp"
 #include "problems/output/rotor/RotorFileNames.hpp"
@@ -114,11 +117,12 @@ void writeRotorFiles(const RotorFiles& f, const RotorModesResult& r) {
   }
   writePvd(f.dir / collectionPvd(stem), entries);
   const CsvTable orbits =
-      f.tables.orbits ? *f.tables.orbits : modeOrbitsTable(orbitsCsv(stem), r, f.model);
+      f.tables.orbits ? *f.tables.orbits
+                      : inUnits(modeOrbitsTable(orbitsCsv(stem), r, f.model), f.units);
   orbits.write(f.dir / orbitsCsv(stem));
   if (f.charts && !r.modes.empty())
     drawChart(f.dir, modeOrbitsChart(fitted(f.caption), orbitsChart(stem), r, f.model, orbits,
-                                     orbitsCsv(stem)));
+                                     orbitsCsv(stem), f.units));
 }
 
 void writeRotorFiles(const RotorFiles& f, const CampbellOutcome& r) {
@@ -135,16 +139,18 @@ void writeRotorFiles(const RotorFiles& f, const CampbellOutcome& r) {
   if (p.campbell->rowCount() > 0) {
     drawChart(f.dir,
               campbellDiagram(caption, campbellChart(stem), *p.campbell, campbellCsv(stem),
-                              *p.critical, criticalSpeedsCsv(stem), campbellOrders(r), band));
+                              *p.critical, criticalSpeedsCsv(stem), campbellOrders(r), band,
+                              f.units));
     drawChart(f.dir,
               stabilityDiagram(caption, stabilityChart(stem), *p.campbell, campbellCsv(stem),
-                               r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt, band));
+                               r.onset ? std::optional<double>(r.onset->rpm) : std::nullopt, band,
+                               f.units));
   }
   if (p.bearings && p.bearings->rowCount() > 0) {
     std::vector<std::string> names;
     for (const JournalBearingCurve& j : r.journals) names.push_back(j.name);
     drawChart(f.dir, journalBearingsDiagram(caption, journalBearingsChart(stem), *p.bearings,
-                                            journalBearingsCsv(stem), names));
+                                            journalBearingsCsv(stem), names, f.units));
   }
 }
 
@@ -162,7 +168,8 @@ void writeRotorFiles(const RotorFiles& f, const UnbalanceOutcome& r) {
                          unbalanceCsv(stem), r.responsePoints, band,
                          r.stability && r.stability->onset
                              ? std::optional<double>(r.stability->onset->rpm)
-                             : std::nullopt));
+                             : std::nullopt,
+                         f.units));
 }
 
 void writeRotorFiles(const RotorFiles&, const RigidBodyOutcome&) {}  // results.json holds it
@@ -173,7 +180,7 @@ void writeRotorFiles(const RotorFiles& f, const FrequencyResponseOutcome& r) {
   if (f.charts && f.tables.frf->rowCount() > 0)
     drawChart(f.dir, frequencyResponseDiagram(fitted(f.caption), frequencyResponseChart(stem),
                                               *f.tables.frf, frequencyResponseCsv(stem),
-                                              r.output + " / " + r.input));
+                                              r.output + " / " + r.input, f.units));
 }
 
 void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r) {
@@ -186,16 +193,18 @@ void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r) {
     p.mapBearings->write(f.dir / mapBearingsCsv(stem));
     p.mapCrossings->write(f.dir / mapCrossingsCsv(stem));
   }
+  const OutputUnits::Shown k = f.units.valueIn("N/m", {1, "N/m"});
   const std::string what =
-      "undamped, gyroscopics neglected: k = " + stiffnessText(r.map.stiffness.front()) + " to " +
-      stiffnessText(r.map.stiffness.back()) + " N/m at all bearings, " +
+      "undamped, gyroscopics neglected: k = " + stiffnessText(r.map.stiffness.front() * k.factor) +
+      " to " + stiffnessText(r.map.stiffness.back() * k.factor) + " " + k.unit +
+      " at all bearings, " +
       std::to_string(r.map.stiffness.size()) + " points";
   if (f.charts && p.map->rowCount() > 0)
     drawChart(f.dir,
               criticalSpeedMapDiagram(fitted(f.caption) + "\n" + what, criticalSpeedMapChart(stem),
                                       r.map, {*p.map, criticalSpeedMapCsv(stem)},
                                       {*p.mapBearings, mapBearingsCsv(stem)},
-                                      {*p.mapCrossings, mapCrossingsCsv(stem)}, names));
+                                      {*p.mapCrossings, mapCrossingsCsv(stem)}, names, f.units));
 }
 
 void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome&) {

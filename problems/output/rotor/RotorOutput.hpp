@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/run/RunResult.hpp"
 
@@ -47,6 +48,7 @@ struct RotorFiles {
   const std::filesystem::path& dir;
   std::string caption;  ///< of its charts (shortened where too long to fit above one)
   bool charts = true;   ///< whether to draw them
+  OutputUnits units = {};  ///< the units the tables are in and the charts show (OutputUnits.hpp)
 };
 
 /// Writes the tables into f.dir, with the mode VTK files and orbits (rotor) and, when

@@ -9,6 +9,7 @@
 
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
+#include "problems/output/rotor/SpeedAxes.hpp"
 
 namespace beamrotor {
 
@@ -39,7 +40,8 @@ std::string stabilityPalette(double least, double most) {
 ChartScript stabilityDiagram(const std::string& caption, const std::string& chartName,
                              const CsvTable& campbell, const std::string& csvFile,
                              std::optional<double> onsetRpm,
-                             const std::optional<OperatingBand>& band) {
+                             const std::optional<OperatingBand>& band, const OutputUnits& units) {
+  const SpeedAxes axes = speedAxes(units);
   const int x = campbell.column("speed_rpm");
   const int lines = campbellLineCount(campbell);
   // The colour scale spans the finite decrements themselves, so that lines of different
@@ -59,7 +61,7 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
 
   std::vector<std::string> titles;
   for (int l = 1; l <= lines; ++l) titles.push_back("line " + std::to_string(l));
-  const BandCommands shading = operatingBandCommands(band);
+  const BandCommands shading = operatingBandCommands(band, axes.speed.factor);
   std::vector<std::string> keyTitles = titles;
   keyTitles.push_back("stability limit");
   const int keyMargin = std::max(keyWidth(keyTitles), 110);
@@ -76,19 +78,20 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
   body << "  set encoding utf8\n"
        << panelLayout(2, 1, caption, width, height, keyMargin) << "  set grid\n"
        << "  set key outside right top\n";
-  if (onsetRpm)
-    body << "  set arrow 1 from first " << number(*onsetRpm) << ", graph 0 to first "
-         << number(*onsetRpm) << ", graph 1 nohead dashtype 2 linewidth 2 linecolor rgb 'red'\n"
-         << "  set label 1 " << gnuplotText("onset " + std::to_string(int(std::lround(*onsetRpm))) +
-                                            " rpm")
-         << " at first " << number(*onsetRpm) << ", graph 0.95 offset 0.5,0 left textcolor rgb "
-         << "'red'\n";
+  if (onsetRpm) {
+    const double onset = *onsetRpm * axes.speed.factor;
+    body << "  set arrow 1 from first " << number(onset) << ", graph 0 to first " << number(onset)
+         << ", graph 1 nohead dashtype 2 linewidth 2 linecolor rgb 'red'\n"
+         << "  set label 1 " << gnuplotText(std::string("onset ").append(axes.speedText(*onsetRpm))) << " at first "
+         << number(onset) << ", graph 0.95 offset 0.5,0 left textcolor rgb 'red'\n";
+  }
   // 1. The Campbell diagram coloured by log decrement: dark red (most negative) through orange
   //    (zero) to green (the best damped).
   body << "  set cbrange [" << number(least) << ":" << number(most) << "]\n"
        << "  set palette defined (" << stabilityPalette(least, most) << ")\n"
        << "  set cblabel 'log decrement'\n"
-       << "  set ylabel 'whirl frequency [Hz]'\n  set yrange [0:*]\n" << shading.setup
+       << "  set ylabel " << gnuplotText("whirl frequency [" + axes.frequency.unit + "]")
+       << "\n  set yrange [0:*]\n" << shading.setup
        << "  plot ";
   for (int l = 1; l <= lines; ++l)
     body << (l > 1 ? ", \\\n       " : "") << gnuplotFile(csvFile) << " skip 1 using " << x << ":"
@@ -96,7 +99,8 @@ ChartScript stabilityDiagram(const std::string& caption, const std::string& char
          << clipped(l)
          << " with lines linewidth 3 palette notitle";
   // The band's key is on the Campbell diagram: here it would meet the colour box's labels.
-  body << "\n  unset colorbox\n  set xlabel 'spin speed [rpm]'\n  set ylabel 'log decrement'\n"
+  body << "\n  unset colorbox\n  set xlabel " << gnuplotText("spin speed [" + axes.speed.unit + "]")
+       << "\n  set ylabel 'log decrement'\n"
        << "  set yrange [" << number(low) << ":" << number(high) << "]\n  plot ";
   // 2. The decrements, one colour per line, and the stability boundary.
   for (int l = 1; l <= lines; ++l)

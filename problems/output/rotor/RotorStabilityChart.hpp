@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 #include "problems/output/rotor/OperatingBand.hpp"
@@ -15,10 +16,12 @@ namespace beamrotor {
 /// Two panels against speed (rpm) from a campbellTable in csvFile: each line's whirl frequency
 /// (Hz) coloured by its log decrement (red below zero: growing; green well damped), and each
 /// line's log decrement with the zero line (each line its own colour and dash); onsetRpm,
-/// when given, drawn as a vertical line; the operating band shaded when given.
+/// when given, drawn as a vertical line; the operating band shaded when given. Speed and
+/// frequency in the user's `units` where set (SpeedAxes.hpp).
 ChartScript stabilityDiagram(const std::string& caption, const std::string& chartName,
                              const CsvTable& campbell, const std::string& csvFile,
                              std::optional<double> onsetRpm,
-                             const std::optional<OperatingBand>& band = std::nullopt);
+                             const std::optional<OperatingBand>& band = std::nullopt,
+                             const OutputUnits& units = {});
 
 }  // namespace beamrotor

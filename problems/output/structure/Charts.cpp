@@ -33,14 +33,24 @@ bool anyNonZero(const CsvTable& table, const std::string& column) {
 }
 
 /// Dashed vertical lines at the markers in every panel; names above the first panel only.
-std::string markerCommands(const std::vector<ChartMarker>& markers) {
+/// Their places (m) are multiplied by `factor`, into the x axis' unit.
+std::string markerCommands(const std::vector<ChartMarker>& markers, double factor) {
   std::ostringstream s;
   for (const ChartMarker& m : markers)
-    s << "  set arrow from first " << number(m.x) << ", graph 0 to first " << number(m.x)
-      << ", graph 1 nohead dashtype 2 linecolor rgb 'gray50'\n"
-      << "  set label " << gnuplotText(m.name) << " at first " << number(m.x)
+    s << "  set arrow from first " << number(m.x * factor) << ", graph 0 to first "
+      << number(m.x * factor) << ", graph 1 nohead dashtype 2 linecolor rgb 'gray50'\n"
+      << "  set label " << gnuplotText(m.name) << " at first " << number(m.x * factor)
       << ", graph 1 offset 0,0.7 center textcolor rgb '#303030'\n";
   return s.str();
+}
+
+/// The x axis along a line: metres, or the user's length unit (the table holds it).
+std::string alongLineLabel(const OutputUnits& units) {
+  const std::string unit = units.columnIn("m", {1, "m"}).unit;
+  std::string label = "  set xlabel ";  // appended: GCC 12 warns (-Wrestrict) on literal + temporary
+  label += gnuplotText("x along the line [" + unit + "]");
+  label += "\n";
+  return label;
 }
 
 /// `plot` of the curves, each column multiplied by scale; filled to the axis when `filled`
@@ -65,10 +75,12 @@ std::string plotCommand(const std::vector<Curve>& curves, double scale, bool fil
   return s.str();
 }
 
-std::string frequencyText(double hz) {
+/// "12.35 Hz", or in the user's frequency unit.
+std::string frequencyText(double hz, const OutputUnits& units) {
+  const OutputUnits::Shown shown = units.valueIn("Hz", {1, "Hz"});
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g Hz", hz);
-  return buffer;
+  std::snprintf(buffer, sizeof buffer, "%.4g ", hz * shown.factor);
+  return buffer + shown.unit;
 }
 
 }  // namespace
@@ -111,7 +123,7 @@ std::vector<ChartMarker> commonPointMarkers(const std::vector<const Model*>& mod
 ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
                            const std::vector<FieldSeries>& series,
                            const std::vector<ChartMarker>& markers,
-                           const std::vector<Diagram>& shown) {
+                           const std::vector<Diagram>& shown, const OutputUnits& units) {
   // A quantity drawn in a panel: its main column and, in 3D, the other plane's, shown only
   // when it is not zero everywhere in every series.
   struct Drawn {
@@ -119,21 +131,26 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
     std::string title;  ///< gnuplot enhanced-text literal
   };
   struct Panel {
-    std::string ylabel;
+    std::string quantity;
     Drawn main;
     std::optional<Drawn> other;
-    double scale;
+    OutputUnits::Shown shown;  ///< from the fields table's unit
     bool filled;
   };
+  // Units chosen for reading (mm, mrad, kN m, MPa, kN), or the user's (the table holds them).
+  const auto in = [&](const char* unit, double factor, const char* name) {
+    return units.columnIn(unit, {factor, name});
+  };
   const std::vector<Panel> every{
-      {"deflection [mm]", {"uy", "'u_y'"}, Drawn{"uz", "'u_z'"}, 1e3, false},
-      {"rotation [mrad]", {"rz", "'θ_z'"}, Drawn{"ry", "'θ_y'"}, 1e3, false},
-      {"bending moment [kN m]", {"Mz", "'M_z'"}, Drawn{"My", "'M_y'"}, 1e-3, true},
+      {"deflection", {"uy", "'u_y'"}, Drawn{"uz", "'u_z'"}, in("m", 1e3, "mm"), false},
+      {"rotation", {"rz", "'θ_z'"}, Drawn{"ry", "'θ_y'"}, in("rad", 1e3, "mrad"), false},
+      {"bending moment", {"Mz", "'M_z'"}, Drawn{"My", "'M_y'"}, in("N m", 1e-3, "kN m"), true},
       // Signed, as the fibres carry them: tension above the axis, compression below.
-      {"normal stress [MPa]", {"stress_top", "'σ top fibre'"}, Drawn{"stress_bottom", "'σ bottom fibre'"},
-       1e-6, true},
-      {"shear stress [MPa]", {"shear_y", "'τ of V_y'"}, Drawn{"shear_z", "'τ of V_z'"}, 1e-6, true},
-      {"shear force [kN]", {"Vy", "'V_y'"}, Drawn{"Vz", "'V_z'"}, 1e-3, true},
+      {"normal stress", {"stress_top", "'σ top fibre'"}, Drawn{"stress_bottom", "'σ bottom fibre'"},
+       in("Pa", 1e-6, "MPa"), true},
+      {"shear stress", {"shear_y", "'τ of V_y'"}, Drawn{"shear_z", "'τ of V_z'"},
+       in("Pa", 1e-6, "MPa"), true},
+      {"shear force", {"Vy", "'V_y'"}, Drawn{"Vz", "'V_z'"}, in("N", 1e-3, "kN"), true},
   };
   std::vector<Panel> panels;
   for (Diagram d : shown) panels.push_back(every.at(std::size_t(d)));
@@ -175,12 +192,13 @@ ChartScript staticDiagrams(const std::string& caption, const std::string& chartN
        << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
        << "  set key outside right top\n"
        << "  set xrange [*:*] noextend\n"
-       << markerCommands(markers);
+       << markerCommands(markers, units.valueIn("m", {1, "m"}).factor);
   for (std::size_t p = 0; p < panels.size(); ++p) {
     if (p == 1) body << "  unset label\n";  // point names once, above the top panel
-    if (p + 1 == panels.size()) body << "  set xlabel 'x along the line [m]'\n";
-    body << "  set ylabel " << gnuplotText(panels[p].ylabel) << "\n"
-         << plotCommand(curvesOf(panels[p]), panels[p].scale, panels[p].filled);
+    if (p + 1 == panels.size()) body << alongLineLabel(units);
+    body << "  set ylabel "
+         << gnuplotText(panels[p].quantity + " [" + panels[p].shown.unit + "]") << "\n"
+         << plotCommand(curvesOf(panels[p]), panels[p].shown.factor, panels[p].filled);
   }
   body << "  unset multiplot\n";
   return {chartName,
@@ -203,7 +221,7 @@ std::string_view diagramName(Diagram d) {
 ChartScript labelledShapesChart(const std::string& caption, const std::string& chartName,
                                 const Model& model, const std::vector<Mode>& modes,
                                 const std::vector<std::string>& labels, const CsvTable& shapes,
-                                const std::string& csvFile) {
+                                const std::string& csvFile, const OutputUnits& units) {
   // Each mode is drawn by its dominant translation, a torsion mode by its rotation; the axis
   // names the dof when all agree.
   const int shown = std::min<int>(int(labels.size()), int(modes.size()));
@@ -223,10 +241,11 @@ ChartScript labelledShapesChart(const std::string& caption, const std::string& c
        << "  set grid\n  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
        << "  set key below\n  set xrange [*:*] noextend\n"
        << "  set offsets 0, 0, graph 0.08, graph 0.02\n"
-       << "  set xlabel 'x along the line [m]'\n"
+       << alongLineLabel(units)
        << "  set ylabel " << gnuplotText("mode shape " + drawn + scale)
        << "\n"
-       << markerCommands(namedPointMarkers(model)) << "  plot ";
+       << markerCommands(namedPointMarkers(model), units.valueIn("m", {1, "m"}).factor)
+       << "  plot ";
   for (int m = 0; m < shown; ++m) {
     const std::string title = "mode " + std::to_string(m + 1) + ": " + labels[m] +
                               (same ? "" : " (" + std::string(dofName(along[m])) + " drawn)");
@@ -242,18 +261,20 @@ ChartScript labelledShapesChart(const std::string& caption, const std::string& c
 
 ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
                             const Model& model, const ModalResult& modal, const CsvTable& shapes,
-                            const std::string& csvFile, int count) {
+                            const std::string& csvFile, const OutputUnits& units, int count) {
   std::vector<std::string> labels;
   for (int m = 0; m < std::min<int>(count, int(modal.modes.size())); ++m)
-    labels.push_back(frequencyText(modal.modes[m].frequencyHz) + ", " +
+    labels.push_back(frequencyText(modal.modes[m].frequencyHz, units) + ", " +
                      modal.modes[m].description);
-  return labelledShapesChart(caption, chartName, model, modal.modes, labels, shapes, csvFile);
+  return labelledShapesChart(caption, chartName, model, modal.modes, labels, shapes, csvFile,
+                             units);
 }
 
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
                        const std::string& parameter, const std::string& unit,
                        const std::vector<SweepQuantity>& quantities,
-                       const CsvTable& table, const std::string& csvFile) {
+                       const CsvTable& table, const std::string& csvFile,
+                       const OutputUnits& units) {
   // Frequencies share one panel; every reaction, the stress and each transient maximum get
   // their own, except
   // reactions that stay zero over the whole sweep (an unloaded direction: nothing to see).
@@ -306,7 +327,7 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
        << "  set key outside right top\n"
        << "  set xlabel "
        << gnuplotText(unit.empty() ? parameter + " (deck parameter, SI units)"
-                                   : parameter + " [" + unit + "]")
+                                   : parameter + " [" + units.columnIn(unit, {1, unit}).unit + "]")
        << "\n";
   // Values spread over decades (a stiffness from 1e4 to 1e6) read better on a log axis.
   const auto values = table.numbers(parameter);
@@ -316,11 +337,15 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
   else
     body << "  set format x '%g'\n";  // 4e+07, not the wider 4x10^7, under narrow panels
   for (const auto& panel : panels) {
-    // Forces in kN (N m in kN m), stresses in MPa, anything else as it is.
+    // Forces in kN (N m in kN m), stresses in MPa, anything else as it is; or in the user's
+    // units, which the table holds.
     const std::string unit = panel.front()->column.unit;
     const bool force = unit == "N" || unit == "N m";
-    const double scale = unit == "Pa" ? 1e-6 : force ? 1e-3 : 1.0;
-    const std::string shown = unit == "Pa" ? "MPa" : force ? "k" + unit : unit.empty() ? "-" : unit;
+    const OutputUnits::Shown own{unit == "Pa" ? 1e-6 : force ? 1e-3 : 1.0,
+                                 unit == "Pa" ? "MPa" : force ? "k" + unit : unit};
+    const OutputUnits::Shown axis = units.columnIn(unit, own);
+    const double scale = axis.factor;
+    const std::string shown = axis.unit.empty() ? "-" : axis.unit;
     const SweepGroup group = panel.front()->group;
     const std::string label = panel.size() == 1                       ? panel.front()->label
                               : group == SweepGroup::criticalSpeed   ? "critical speed"
@@ -354,7 +379,8 @@ ChartScript historyChart(const std::string& caption, const std::string& chartNam
        << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
        << "  set xrange [*:*] noextend\n";
   for (std::size_t c = 1; c < columns.size(); ++c) {
-    if (c + 1 == columns.size()) body << "  set xlabel 'time t [s]'\n";
+    if (c + 1 == columns.size())
+      body << "  set xlabel " << gnuplotText("time t [" + columns[0].unit + "]") << "\n";
     const std::string unit = " [" + (columns[c].unit.empty() ? "-" : columns[c].unit) + "]";
     body << "  set ylabel " << gnuplotText(columns[c].name + unit) << "\n"
          << plotCommand({{csvFile, table.column(columns[0].name), table.column(columns[c].name),

@@ -10,6 +10,7 @@
 
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 #include "problems/output/SweepTable.hpp"
@@ -46,7 +47,8 @@ struct FieldSeries {
   std::string title;  ///< e.g. "eta = 0.2"
 };
 
-/// Stacked diagrams along the line (those in `shown`): deflection uy (mm), rotation rz (mrad),
+/// Stacked diagrams along the line (those in `shown`), in the user's `units` where set (the
+/// tables hold them), else: deflection uy (mm), rotation rz (mrad),
 /// bending moment Mz (kN m), shear force Vy (kN), normal stress at the top and bottom fibre and shear stress of Vy,
 /// signed (MPa); uz, ry, My, Vz and the shear of Vz are added when they are not zero everywhere
 /// (3D models). Several series (the values of a short
@@ -54,20 +56,22 @@ struct FieldSeries {
 ChartScript staticDiagrams(const std::string& caption, const std::string& chartName,
                            const std::vector<FieldSeries>& series,
                            const std::vector<ChartMarker>& markers,
-                           const std::vector<Diagram>& shown = kAllDiagrams);
+                           const std::vector<Diagram>& shown = kAllDiagrams,
+                           const OutputUnits& units = {});
 
 /// Mode shapes from a modeShapesTable written to csvFile, each drawn by its dominant
 /// translation (largest value 1) and keyed "mode N: label N"; at most labels.size() of them.
 ChartScript labelledShapesChart(const std::string& caption, const std::string& chartName,
                                 const Model& model, const std::vector<Mode>& modes,
                                 const std::vector<std::string>& labels, const CsvTable& shapes,
-                                const std::string& csvFile);
+                                const std::string& csvFile, const OutputUnits& units = {});
 
 /// The first `count` mode shapes (each its dominant translation, largest value 1) from a
 /// modeShapesTable written to csvFile.
 ChartScript modeShapesChart(const std::string& caption, const std::string& chartName,
                             const Model& model, const ModalResult& modal, const CsvTable& shapes,
-                            const std::string& csvFile, int count = 4);
+                            const std::string& csvFile, const OutputUnits& units = {},
+                            int count = 4);
 
 /// One panel per reaction component and the largest normal and shear stress of a static
 /// analysis, per maximum of a transient one, or the frequencies of a modal one, against the
@@ -77,7 +81,8 @@ ChartScript modeShapesChart(const std::string& caption, const std::string& chart
 ChartScript sweepChart(const std::string& caption, const std::string& chartName,
                        const std::string& parameter, const std::string& unit,
                        const std::vector<SweepQuantity>& quantities,
-                       const CsvTable& table, const std::string& csvFile);
+                       const CsvTable& table, const std::string& csvFile,
+                       const OutputUnits& units = {});
 
 /// One panel per column of a transient history table (after its first column, time t in s)
 /// against time, from historyTable written to csvFile.

@@ -22,17 +22,19 @@ double largestOf(const CsvTable& table, const std::string& component) {
 
 /// One resultant's panel: its columns and how it is labelled.
 struct EnvelopePanel {
-  std::string component;  ///< "N", ..., "Mz"
-  std::string label;      ///< y axis, with its unit
-  std::string unit;       ///< "kN" or "kN m"
+  std::string component;     ///< "N", ..., "Mz"
+  std::string label;         ///< y axis, with its unit
+  OutputUnits::Shown shown;  ///< kN or kN m from the table's N or N m; or the user's (factor 1)
 };
 
 /// The panels worth drawing: resultants that are not zero (to round-off of the largest
 /// resultant of the same kind) somewhere along the member.
-std::vector<EnvelopePanel> panelsOf(const CsvTable& table) {
+std::vector<EnvelopePanel> panelsOf(const CsvTable& table, const OutputUnits& units) {
   const std::vector<std::pair<std::string, std::string>> all{
-      {"N", "axial force N [kN]"},  {"Vy", "shear force Vy [kN]"}, {"Vz", "shear force Vz [kN]"},
-      {"T", "torque T [kN m]"},     {"My", "moment My [kN m]"},    {"Mz", "moment Mz [kN m]"}};
+      {"N", "axial force N"}, {"Vy", "shear force Vy"}, {"Vz", "shear force Vz"},
+      {"T", "torque T"},      {"My", "moment My"},      {"Mz", "moment Mz"}};
+  const OutputUnits::Shown force = units.columnIn("N", {1e-3, "kN"});
+  const OutputUnits::Shown moment = units.columnIn("N m", {1e-3, "kN m"});
   const auto largest = [&](const std::string& c) { return largestOf(table, c); };
   const double forces = std::max({largest("N"), largest("Vy"), largest("Vz")});
   const double moments = std::max({largest("T"), largest("My"), largest("Mz")});
@@ -41,17 +43,19 @@ std::vector<EnvelopePanel> panelsOf(const CsvTable& table) {
     const bool isForce = component == "N" || component[0] == 'V';
     const double scale = isForce ? forces : moments;
     constexpr double kRoundOff = 1e-10;  // relative: what a zero resultant shows after solving
+    const OutputUnits::Shown& shown = isForce ? force : moment;
     if (largest(component) > kRoundOff * scale)
-      out.push_back({component, label, isForce ? "kN" : "kN m"});
+      out.push_back({component, label + " [" + shown.unit + "]", shown});
   }
   return out;
 }
 
 /// A label at the largest (side "_max") or smallest ("_min") value of the envelope, naming the
-/// combination that gives it and the value in kN or kN m (`unit`), 0 where it is round-off of
-/// the resultant's largest value along the member.
+/// combination that gives it and the value in the panel's unit (`shown`), 0 where it is
+/// round-off of the resultant's largest value along the member.
 std::string extremeLabel(const CsvTable& table, const std::string& component,
-                         const std::string& side, const std::string& unit) {
+                         const std::string& side, const OutputUnits::Shown& shown) {
+  const double factor = shown.factor;
   const std::vector<double> values = table.numbers(component + side);
   const std::vector<double> s = table.numbers("s");
   const auto it = side == "_max" ? std::max_element(values.begin(), values.end())
@@ -61,10 +65,10 @@ std::string extremeLabel(const CsvTable& table, const std::string& component,
   const std::string name = std::get<std::string>(governing);
   // Written towards the middle of the member, so that a label at an end stays inside the plot.
   const bool rightHalf = s[row] > 0.5 * (s.front() + s.back());
-  const std::string value = labelNumber(*it / 1e3, largestOf(table, component) / 1e3);
+  const std::string value = labelNumber(*it * factor, largestOf(table, component) * factor);
   std::ostringstream label;
-  label << "  set label " << gnuplotText(name + ": " + value + " " + unit) << " at first "
-        << number(s[row]) << ", first " << number(*it / 1e3) << (rightHalf ? " right" : " left")
+  label << "  set label " << gnuplotText(name + ": " + value + " " + shown.unit) << " at first "
+        << number(s[row]) << ", first " << number(*it * factor) << (rightHalf ? " right" : " left")
         << " point pointtype 7 offset " << (rightHalf ? "-0.8," : "0.8,")
         << (side == "_max" ? "0.8" : "-0.8") << " front\n";
   return label.str();
@@ -77,8 +81,9 @@ std::string envelopeChart(const std::string& stem, const std::string& member) {
 }
 
 ChartScript memberEnvelopeChart(const std::string& caption, const std::string& chartName,
-                                const CsvTable& table, const std::string& csvFile) {
-  const std::vector<EnvelopePanel> panels = panelsOf(table);
+                                const CsvTable& table, const std::string& csvFile,
+                                const OutputUnits& units) {
+  const std::vector<EnvelopePanel> panels = panelsOf(table, units);
   const int rows = std::max<int>(1, int(panels.size()));
   const int width = 1000, height = 140 + 250 * rows;
   std::ostringstream body;
@@ -94,18 +99,24 @@ ChartScript memberEnvelopeChart(const std::string& caption, const std::string& c
   for (std::size_t p = 0; p < panels.size(); ++p) {
     const std::string hi = std::to_string(table.column(panels[p].component + "_max"));
     const std::string lo = std::to_string(table.column(panels[p].component + "_min"));
-    if (p + 1 == panels.size()) body << "  set xlabel 'distance s along the member [m]'\n";
+    if (p + 1 == panels.size())
+      body << "  set xlabel "
+           << gnuplotText("distance s along the member [" +
+                          table.columns()[std::size_t(table.column("s") - 1)].unit + "]")
+           << "\n";
+    std::string times = "*";  // appended: GCC 12 warns (-Wrestrict) on "*" + a temporary
+    times += number(panels[p].shown.factor);
     body << "  unset label\n"
-         << extremeLabel(table, panels[p].component, "_max", panels[p].unit)
-         << extremeLabel(table, panels[p].component, "_min", panels[p].unit)
+         << extremeLabel(table, panels[p].component, "_max", panels[p].shown)
+         << extremeLabel(table, panels[p].component, "_min", panels[p].shown)
          << "  set ylabel " << gnuplotText(panels[p].label) << "\n"
-         << "  plot " << file << " skip 1 using " << x << ":($" << lo << "/1e3):($" << hi
-         << "/1e3) with filledcurves fillstyle transparent solid 0.15 noborder " << colour(0)
+         << "  plot " << file << " skip 1 using " << x << ":($" << lo << times << "):($" << hi
+         << times << ") with filledcurves fillstyle transparent solid 0.15 noborder " << colour(0)
          << " notitle, \\\n"
-         << "       " << file << " skip 1 using " << x << ":($" << hi << "/1e3) with lines linewidth 2 "
-         << colour(0) << " title 'largest', \\\n"
-         << "       " << file << " skip 1 using " << x << ":($" << lo << "/1e3) with lines linewidth 2 "
-         << colour(1) << " title 'smallest'\n";
+         << "       " << file << " skip 1 using " << x << ":($" << hi << times
+         << ") with lines linewidth 2 " << colour(0) << " title 'largest', \\\n"
+         << "       " << file << " skip 1 using " << x << ":($" << lo << times
+         << ") with lines linewidth 2 " << colour(1) << " title 'smallest'\n";
   }
   body << "  unset multiplot\n";
   return {chartName, "Envelope of a member's resultants over the load combinations", width,

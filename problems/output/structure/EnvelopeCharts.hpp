@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 
@@ -19,8 +20,10 @@ std::string envelopeChart(const std::string& stem, const std::string& member);
 
 /// The envelope of memberEnvelopeTable `table`, written to csvFile: panels for the resultants
 /// that are not zero along the whole member (N, Vy, Mz in a planar frame), in kN and kN m
-/// against the distance s (m) from the member's start.
+/// against the distance s (m) from the member's start; or in the user's `units` where set
+/// (the table then holds them).
 ChartScript memberEnvelopeChart(const std::string& caption, const std::string& chartName,
-                                const CsvTable& table, const std::string& csvFile);
+                                const CsvTable& table, const std::string& csvFile,
+                                const OutputUnits& units = {});
 
 }  // namespace beamrotor

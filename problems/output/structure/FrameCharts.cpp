@@ -69,12 +69,14 @@ const MemberValue& largerEnd(const ComponentRange& r) {
 /// Writes the coordinates of a place in the drawn axes' order, separated by spaces.
 class Coordinates {
  public:
-  explicit Coordinates(bool planar) : drawn_(planar ? std::vector<int>{0, 1} : std::vector<int>{0, 2, 1}) {}
+  /// `perMetre`: the axes' length unit in metres' stead (1000 for mm).
+  Coordinates(bool planar, double perMetre)
+      : drawn_(planar ? std::vector<int>{0, 1} : std::vector<int>{0, 2, 1}), perMetre_(perMetre) {}
   std::string text(const Eigen::Vector3d& x, const char* separator = ",") const {
     std::string out;
     for (std::size_t i = 0; i < drawn_.size(); ++i) {
       if (i) out += separator;
-      out += number(x[drawn_[i]]);
+      out += number(x[drawn_[i]] * perMetre_);
     }
     return out;
   }
@@ -92,7 +94,13 @@ class Coordinates {
 
  private:
   std::vector<int> drawn_;  ///< planar: x, y; 3d: x, z, y (global y, up, is the vertical)
+  double perMetre_ = 1;
 };
+
+/// The frame charts' length axes: metres, or the user's length unit.
+OutputUnits::Shown axisLength(const OutputUnits& units) {
+  return units.valueIn("m", {1, "m"});
+}
 
 /// A gnuplot datablock: blocks of lines separated by two blank lines (separate curves).
 class Datablock {
@@ -174,11 +182,23 @@ PanelGrid panelGrid(int panels, bool planar, const PlanarRanges& r) {
 /// global y (up) vertical. The vertical range holds the magnified shape and the diagrams (a
 /// flat frame would otherwise get a sliver of an axis crowded with ticks); the view shrunk a
 /// little and the z ticks moved off the corner they share with the x axis' last tick.
-std::string axesSetup(bool planar, const Eigen::Vector3d& low, const Eigen::Vector3d& high,
-                      double size) {
+std::string axesSetup(bool planar, const Eigen::Vector3d& lowest, const Eigen::Vector3d& highest,
+                      double extent, const OutputUnits::Shown& length) {
+  const Eigen::Vector3d low = lowest * length.factor, high = highest * length.factor;
+  const double size = extent * length.factor;
+  const auto axis = [&](const char* which, const char* name) {
+    std::string text = "  set ";
+    text += which;
+    text += "label ";  // piece by piece: GCC 12 warns (-Wrestrict) on "literal" + a temporary
+    text += gnuplotText(std::string(name) + " [" + length.unit + "]");
+    text += "\n";
+    return text;
+  };
   if (planar) {
     const PlanarRanges r = planarRanges(low, high, size);
-    std::string out = "  set size ratio -1\n  set xlabel 'x [m]'\n  set ylabel 'y [m]'\n";
+    std::string out = "  set size ratio -1\n";
+    out += axis("x", "x");
+    out += axis("y", "y");
     out += "  set xrange [" + number(r.x0) + ":" + number(r.x1) + "]\n";
     out += "  set yrange [" + number(r.y0) + ":" + number(r.y1) + "]\n";
     return out;
@@ -186,7 +206,10 @@ std::string axesSetup(bool planar, const Eigen::Vector3d& low, const Eigen::Vect
   std::string out = "  set view equal xyz\n  set view 64, 28, 0.9\n  set ytics offset 1.5,0\n";
   out += "  set zrange [" + number(low.y() - 0.2 * size) + ":" + number(high.y() + 0.2 * size);
   out += "]\n  set xyplane at " + number(low.y() - 0.2 * size);
-  out += "\n  set xlabel 'x [m]'\n  set ylabel 'z [m]'\n  set zlabel 'y [m]'\n";
+  out += "\n";
+  out += axis("x", "x");
+  out += axis("y", "z");
+  out += axis("z", "y");
   return out;
 }
 
@@ -230,12 +253,15 @@ struct MomentLabel {
 }  // namespace
 
 ChartScript frameChart(const std::string& caption, const std::string& chartName,
-                       const FrameDrawing& frame, bool planar) {
+                       const FrameDrawing& frame, bool planar, const OutputUnits& units) {
   const Model& model = *frame.model;
   const StationsByElement& stations = *frame.stations;
   const auto& ranges = *frame.ranges;
   const auto& members = model.members();
-  const Coordinates coordinates(planar);
+  const OutputUnits::Shown length = axisLength(units);
+  const Coordinates coordinates(planar, length.factor);
+  const OutputUnits::Shown displacement = units.valueIn("m", {1e3, "mm"});
+  const OutputUnits::Shown moment = units.valueIn("N m", {1e-3, "kN m"});
 
   // 1. Scales: the frame's size against the largest displacement and moment.
   const auto [low, high, size] = extentOf(model);
@@ -334,15 +360,15 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
        // A 3d view's z axis and its label stand out right of its panel: room for them.
        << panelLayout(grid.rows, grid.columns, caption, width, height, planar ? 30 : 80) << "  unset key\n"
        << "  set grid\n";
-  body << axesSetup(planar, low, high, size);
+  body << axesSetup(planar, low, high, size, length);
   const std::string undeformedStyle = " with lines linewidth 1.5 dashtype 2 linecolor rgb 'gray55'";
   const std::string first = coordinates.columns(), second = coordinates.columns(1 + int(coordinates.count()));
 
   // 4. Panel 1: deformed over undeformed, joints labelled when they are few enough to read.
   char largest[32];
-  std::snprintf(largest, sizeof largest, "%.3g", largestU * 1e3);
+  std::snprintf(largest, sizeof largest, "%.3g ", largestU * displacement.factor);
   body << "  set title " << gnuplotText("deformed shape, displacements × " + number(magnify) +
-                                        " (largest " + largest + " mm)")
+                                        " (largest " + largest + displacement.unit + ")")
        << "\n";
   if (model.namedNodes().size() <= kJointLabels)
     for (const auto& [name, node] : model.namedNodes())
@@ -368,7 +394,7 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   }
   for (const MomentLabel& l : labels) {
     char value[32];
-    std::snprintf(value, sizeof value, "%.3g", l.value * 1e-3);
+    std::snprintf(value, sizeof value, "%.3g", l.value * moment.factor);
     // A peak in the right third of the frame is labelled leftwards, into the chart: equal
     // peaks (a symmetric frame's) may land on a member's right end, at the canvas' edge.
     const bool rightmost = l.tip.x() > low.x() + (high.x() - low.x()) * 2 / 3;
@@ -380,7 +406,7 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
          << textColour(l.colourIndex) << "\n";
   }
   std::string title = planar ? "bending moment M_z" : "bending moments M_z (red), M_y (green)";
-  title += " [kN m], drawn on the tension side";
+  title += " [" + moment.unit + "], drawn on the tension side";
   title += drawnShare(drawnMembers, members.size());
   body << "  set title " << captionText(title) << "\n" << plotOf(planar, clauses)
        << "  unset multiplot\n";
@@ -391,9 +417,12 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
 ChartScript frameEnvelopeChart(const std::string& caption, const std::string& chartName,
                                const Model& model,
                                const std::vector<std::vector<EnvelopeStation>>& envelope,
-                               const std::vector<std::string>& names, bool planar) {
+                               const std::vector<std::string>& names, bool planar,
+                               const OutputUnits& units) {
   const auto& members = model.members();
-  const Coordinates coordinates(planar);
+  const OutputUnits::Shown length = axisLength(units);
+  const Coordinates coordinates(planar, length.factor);
+  const OutputUnits::Shown moment = units.valueIn("N m", {1e-3, "kN m"});
   const auto [low, high, size] = extentOf(model);
   const std::vector<ForceComponent> moments =
       planar ? std::vector<ForceComponent>{ForceComponent::Mz}
@@ -478,7 +507,7 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
   body << "  set encoding utf8\n"
        // A 3d view's z axis and its label stand out right of its panel: room for them.
        << panelLayout(grid.rows, grid.columns, caption, width, height, planar ? 30 : 80) << "  unset key\n"
-       << "  set grid\n" << axesSetup(planar, low, high, size);
+       << "  set grid\n" << axesSetup(planar, low, high, size, length);
   const std::string first = coordinates.columns(),
                     second = coordinates.columns(1 + int(coordinates.count()));
   for (std::size_t c = 0; c < moments.size(); ++c) {
@@ -488,7 +517,7 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
       const Extreme& x = extremes[c][e];
       if (x.by < 0 || !(std::abs(x.value) > 1e-9 * largestM)) continue;
       char value[32];
-      std::snprintf(value, sizeof value, "%.3g", x.value * 1e-3);
+      std::snprintf(value, sizeof value, "%.3g", x.value * moment.factor);
       std::string text = value;
       text += " (";
       text += names.at(std::size_t(x.by));
@@ -499,7 +528,7 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
     }
     std::string title = "envelope of ";
     title += name == "Mz" ? "M_z" : "M_y";
-    title += " over the combinations [kN m]: largest (red), smallest (blue)";
+    title += " over the combinations [" + moment.unit + "]: largest (red), smallest (blue)";
     title += drawnShare(drawnMembers, members.size());
     body << "  set title " << captionText(title) << "\n";
     std::vector<std::string> clauses{outline.name() + " using " + first +
@@ -521,9 +550,11 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
 
 ChartScript frameShapesChart(const std::string& caption, const std::string& chartName,
                              const Model& model, const std::vector<Mode>& modes,
-                             const std::vector<std::string>& titles, bool planar) {
+                             const std::vector<std::string>& titles, bool planar,
+                             const OutputUnits& units) {
   constexpr double kShapeShare = 0.12;  // of the frame's size: the largest translation drawn
-  const Coordinates coordinates(planar);
+  const OutputUnits::Shown length = axisLength(units);
+  const Coordinates coordinates(planar, length.factor);
   const Extent extent = extentOf(model);
   const std::size_t panels = std::min({modes.size(), titles.size(), kShapePanels});
 
@@ -576,14 +607,15 @@ ChartScript frameShapesChart(const std::string& caption, const std::string& char
        << panelLayout(std::max(rows, 1), std::max(columns, 1), caption, width, height,
                       planar ? 30 : 80)
        << "  unset key\n  set grid\n"
-       << axesSetup(planar, extent.low, extent.high, extent.size);
+       << axesSetup(planar, extent.low, extent.high, extent.size, length);
   if (!planar) {
     // Every panel at the same scale and place (gnuplot's x and y are global x and z), the view
     // a little smaller than the static chart's so that a panel's lower neighbour keeps clear.
-    const double pad = 0.2 * extent.size;
-    body << "  set view 64, 28, 0.8\n  set xrange [" << number(extent.low.x() - pad) << ":"
-         << number(extent.high.x() + pad) << "]\n  set yrange [" << number(extent.low.z() - pad)
-         << ":" << number(extent.high.z() + pad) << "]\n";
+    const double pad = 0.2 * extent.size, f = length.factor;
+    body << "  set view 64, 28, 0.8\n  set xrange [" << number(f * (extent.low.x() - pad)) << ":"
+         << number(f * (extent.high.x() + pad)) << "]\n  set yrange ["
+         << number(f * (extent.low.z() - pad)) << ":" << number(f * (extent.high.z() + pad))
+         << "]\n";
   }
   const std::string first = coordinates.columns(),
                     second = coordinates.columns(1 + int(coordinates.count()));

@@ -41,10 +41,13 @@ struct FrameDrawing {
   double largestDisplacement = 0;
 };
 
+/// Every frame chart draws its axes in metres and labels moments in kN m and displacements in
+/// mm, or in the user's `units` where set (OutputUnits.hpp).
+///
 /// Two panels: the deformed shape and the moment diagram (Mz in a planar frame; Mz and My in
 /// a 3d one, each along the local axis that shows its tension side).
 ChartScript frameChart(const std::string& caption, const std::string& chartName,
-                       const FrameDrawing& frame, bool planar);
+                       const FrameDrawing& frame, bool planar, const OutputUnits& units = {});
 
 /// The envelope of the bending moments over the load combinations drawn on the frame: one
 /// panel per moment (Mz in a planar frame; Mz and My in a 3d one), on each member the largest
@@ -56,7 +59,8 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
 ChartScript frameEnvelopeChart(const std::string& caption, const std::string& chartName,
                                const Model& model,
                                const std::vector<std::vector<EnvelopeStation>>& envelope,
-                               const std::vector<std::string>& names, bool planar);
+                               const std::vector<std::string>& names, bool planar,
+                               const OutputUnits& units = {});
 
 /// Mode or buckling shapes of a frame (each scaled to a largest nodal translation of 1,
 /// displayModeShape): one panel per shape, at most kShapePanels, the deformed frame (each
@@ -68,6 +72,7 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
 inline constexpr std::size_t kShapePanels = 6;
 ChartScript frameShapesChart(const std::string& caption, const std::string& chartName,
                              const Model& model, const std::vector<Mode>& modes,
-                             const std::vector<std::string>& titles, bool planar);
+                             const std::vector<std::string>& titles, bool planar,
+                             const OutputUnits& units = {});
 
 }  // namespace beamrotor

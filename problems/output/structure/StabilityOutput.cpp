@@ -90,7 +90,7 @@ Json secondOrderJson(const SecondOrderResult& r) {
 
 void writeBucklingFiles(const PreparedAnalysis& p, const Model& model,
                         const std::filesystem::path& dir, const std::string& caption, bool charts,
-                        bool planar) {
+                        bool planar, const OutputUnits& units) {
   const BucklingResult& r = *resultOf<BucklingResult>(*p.outcome);
   p.modes->write(dir / bucklingFactorsCsv(p.stem));
   p.shapes->write(dir / shapesCsv(p.stem));
@@ -112,12 +112,12 @@ void writeBucklingFiles(const PreparedAnalysis& p, const Model& model,
                                                    shapes.modes[i].description);
   if (!model.members().empty()) {
     drawChart(dir, frameShapesChart(caption, shapesChart(p.stem), model, shapes.modes, labels,
-                                    planar));
+                                    planar, units));
     return;
   }
   labels.resize(std::min<std::size_t>(4, labels.size()));
   drawChart(dir, labelledShapesChart(caption, shapesChart(p.stem), model, shapes.modes, labels,
-                                     *p.shapes, shapesCsv(p.stem)));
+                                     *p.shapes, shapesCsv(p.stem), units));
 }
 
 }  // namespace beamrotor

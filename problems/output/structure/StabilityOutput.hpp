@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/PreparedRun.hpp"
@@ -34,9 +35,10 @@ Json secondOrderJson(const SecondOrderResult& r);
 
 /// Writes a buckling analysis' files into dir (charts when asked); p.modes holds its
 /// bucklingFactorsTable, p.shapes the modeShapesTable of bucklingShapes.
-/// A frame's chart is frameShapesChart (`planar`: a planar frame's).
+/// A frame's chart is frameShapesChart (`planar`: a planar frame's); `units` are those the
+/// tables are in.
 void writeBucklingFiles(const PreparedAnalysis& p, const Model& model,
                         const std::filesystem::path& dir, const std::string& caption, bool charts,
-                        bool planar);
+                        bool planar, const OutputUnits& units = {});
 
 }  // namespace beamrotor

@@ -1,5 +1,6 @@
 // Fixtures for the writer tests: a solved cantilever as a RunResult (the deck runner's
-// contract, filled by hand), a scratch directory, and readers for what the writers wrote.
+// contract, filled by hand), a scratch directory, readers for what the writers wrote, and a
+// stand-in for gnuplot that records its starts (RecordedCharts).
 #pragma once
 
 #include <cstdlib>
@@ -149,5 +150,49 @@ inline NumericCsv readNumericCsv(const std::filesystem::path& file) {
   }
   return csv;
 }
+
+/// A stand-in for gnuplot: records each start (its arguments, one line) in `record`, and for
+/// each script ./NAME.gp draws a complete NAME.png, except for a script named `failing`, where
+/// it stops with gnuplot's exit status 1 and its kind of message, as gnuplot does.
+inline std::filesystem::path recordingGnuplot(const std::filesystem::path& dir, const std::filesystem::path& record,
+                          const std::string& failing = "") {
+  const std::filesystem::path file = dir / "gnuplot";
+  std::ofstream(file) << "#!/bin/sh\n"
+                      << "echo \"$*\" >> '" << record.string() << "'\n"
+                      << "for script in \"$@\"; do\n"
+                      << "  name=${script#./}; name=${name%.gp}\n"
+                      << "  if [ \"$name\" = '" << failing << "' ]; then\n"
+                      << "    echo \"$script line 3: undefined function: foo\" >&2; exit 1\n"
+                      << "  fi\n"
+                      << "  printf 'x\\000\\000\\000\\000IEND\\256B`\\202' > \"$name.png\"\n"
+                      << "done\n";
+  std::filesystem::permissions(file, std::filesystem::perms::owner_all);
+  return file;
+}
+
+inline std::filesystem::path gnuplotToolsDir(const ScratchDir& scratch) {
+  const std::filesystem::path dir = scratch / "tools";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// A charts directory in a scratch directory, drawn by recordingGnuplot (its starts recorded
+/// in `record`; a script named `failing` fails) for as long as this lives.
+struct RecordedCharts {
+  explicit RecordedCharts(const std::string& failing = "")
+      : dir(makeDir(scratch / "charts")),
+        record(scratch / "record.txt"),
+        gnuplot("BEAMROTOR_GNUPLOT",
+                recordingGnuplot(gnuplotToolsDir(scratch), record, failing).c_str()) {}
+
+  static std::filesystem::path makeDir(const std::filesystem::path& dir) {
+    std::filesystem::create_directories(dir);
+    return dir;
+  }
+
+  ScratchDir scratch;
+  const std::filesystem::path dir, record;
+  const ScopedEnvironment gnuplot;
+};
 
 }  // namespace beamrotor::test

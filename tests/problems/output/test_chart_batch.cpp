@@ -22,25 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// A stand-in for gnuplot: records each start (its arguments, one line) in `record`, and for
-/// each script ./NAME.gp draws a complete NAME.png, except for a script named `failing`, where
-/// it stops with gnuplot's exit status 1 and its kind of message, as gnuplot does.
-fs::path recordingGnuplot(const fs::path& dir, const fs::path& record,
-                          const std::string& failing = "") {
-  const fs::path file = dir / "gnuplot";
-  std::ofstream(file) << "#!/bin/sh\n"
-                      << "echo \"$*\" >> '" << record.string() << "'\n"
-                      << "for script in \"$@\"; do\n"
-                      << "  name=${script#./}; name=${name%.gp}\n"
-                      << "  if [ \"$name\" = '" << failing << "' ]; then\n"
-                      << "    echo \"$script line 3: undefined function: foo\" >&2; exit 1\n"
-                      << "  fi\n"
-                      << "  printf 'x\\000\\000\\000\\000IEND\\256B`\\202' > \"$name.png\"\n"
-                      << "done\n";
-  fs::permissions(file, fs::perms::owner_all);
-  return file;
-}
-
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
   std::istringstream in(text);
@@ -49,30 +30,6 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 ChartScript chart(const std::string& name) { return {name, "batch test", 100, 100, "plot x\n"}; }
-
-fs::path tools(const ScratchDir& scratch) {
-  const fs::path dir = scratch / "tools";
-  fs::create_directories(dir);
-  return dir;
-}
-
-/// A charts directory in a scratch directory, drawn by recordingGnuplot (its starts recorded
-/// in `record`; a script named `failing` fails) for as long as this lives.
-struct RecordedCharts {
-  explicit RecordedCharts(const std::string& failing = "")
-      : dir(makeDir(scratch / "charts")),
-        record(scratch / "record.txt"),
-        gnuplot("BEAMROTOR_GNUPLOT", recordingGnuplot(tools(scratch), record, failing).c_str()) {}
-
-  static fs::path makeDir(const fs::path& dir) {
-    fs::create_directories(dir);
-    return dir;
-  }
-
-  ScratchDir scratch;
-  const fs::path dir, record;
-  const ScopedEnvironment gnuplot;
-};
 
 }  // namespace
 

@@ -1,0 +1,272 @@
+// Output units (issue 43): `output: units:` and `--units` set the units of the summary, the
+// CSV tables and the charts; results.json stays SI. The references are the SI results of the
+// same run (a unit conversion is a multiplication by an exact factor: 1000 is exact in binary
+// floating point, so a length in mm is the SI value times 1000 to the last bit) and the closed
+// forms of the cantilever.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "problems/deck/OutputUnits.hpp"
+#include "problems/deck/parse/UnitText.hpp"
+#include "problems/output/Output.hpp"
+#include "problems/output/PreparedRun.hpp"
+#include "problems/output/files/TableUnits.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+#include "tests/problems/output/OutputFixtures.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+OutputUnits unitsOf(const std::string& list) { return parseOutputUnits(list); }
+
+/// The message set() throws for quantity = unit.
+std::string setError(const std::string& quantity, const std::string& unit) {
+  OutputUnits units;
+  try {
+    units.set(quantity, unit);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The column `name` of a prepared run's analysis `a`, table `file`.
+const CsvTable& tableOf(const PreparedRun& p, std::size_t a, const std::string& file) {
+  for (const auto& [name, table] : p.analyses.at(a).tables())
+    if (name == file) return *table;
+  throw std::out_of_range("no table " + file);
+}
+
+std::string unitOf(const CsvTable& t, const std::string& column) {
+  return t.columns().at(std::size_t(t.column(column) - 1)).unit;
+}
+
+/// Rows of a CSV file beamrotor wrote, the units line kept apart.
+struct WrittenCsv {
+  std::vector<std::vector<std::string>> rows;  ///< header first
+  std::string unitsLine;
+};
+
+WrittenCsv writtenCsv(const fs::path& file) {
+  WrittenCsv out;
+  std::istringstream in(fileContents(file));
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("# units:", 0) == 0) {
+      out.unitsLine = line;
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::istringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    out.rows.push_back(cells);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_SUITE("output units") {
+  TEST_CASE("a unit text is the deck's units multiplied and divided") {
+    const auto kNm = unitSize("kN m");
+    REQUIRE(kNm);
+    CHECK(kNm->si == 1000);
+    CHECK(kNm->dimension == dim::moment);
+    CHECK(unitSize("N s/m")->dimension == dim::damping);
+    CHECK(unitSize("m/s^2")->dimension == dim::acceleration);
+    CHECK(unitSize("m/(rad s)")->dimension == Dimension::of(1, 0, -1, -1));
+    CHECK(unitSize("1/s")->dimension == dim::frequency);
+    CHECK(unitSize("rpm")->si == doctest::Approx(2 * std::numbers::pi / 60).epsilon(1e-15));
+    CHECK_FALSE(unitSize("furlong"));
+    CHECK_FALSE(unitSize("%"));
+    CHECK_FALSE(unitSize("m/s/s"));  // two readings: refused
+  }
+
+  TEST_CASE("each quantity in a unit of its dimension; compounds follow their parts") {
+    const OutputUnits mm = unitsOf("length=mm");
+    CHECK(mm.of("m").factor == 1000);
+    CHECK(mm.of("m").unit == "mm");
+    CHECK(mm.of("N").factor == 1);  // force not set: as it is
+    CHECK(mm.of("N").unit == "N");
+    CHECK(mm.of("").unit.empty());
+
+    const OutputUnits kN = unitsOf("force = kN");
+    CHECK(kN.of("N m").unit == "kN m");
+    CHECK(kN.of("N m").factor == doctest::Approx(1e-3).epsilon(1e-15));
+    CHECK(kN.of("N/m").unit == "kN/m");
+    CHECK(kN.of("N s/m").unit == "kN s/m");
+    CHECK(kN.of("m/N").unit == "m/kN");
+    CHECK(kN.of("m/N").factor == doctest::Approx(1e3).epsilon(1e-15));
+
+    // A moment follows force length unless set itself.
+    CHECK(unitsOf("force=kN,length=mm").of("N m").unit == "kN mm");
+    CHECK(unitsOf("force=kN,length=mm").of("N m").factor == doctest::Approx(1).epsilon(1e-15));
+    const OutputUnits kept = unitsOf("force=kN,length=mm,moment=kN m");
+    CHECK(kept.of("N m").unit == "kN m");
+    CHECK(kept.of("N m").factor == doctest::Approx(1e-3).epsilon(1e-15));
+
+    // A speed in Hz is turns per second; a frequency in rpm cycles per minute.
+    const OutputUnits hz = unitsOf("speed=Hz");
+    CHECK(hz.of("rpm").factor == doctest::Approx(1.0 / 60).epsilon(1e-15));
+    CHECK(hz.of("rad/s").factor == doctest::Approx(1 / (2 * std::numbers::pi)).epsilon(1e-15));
+    CHECK(hz.of("Hz").factor == 1);  // a frequency column is no speed
+    CHECK(unitsOf("frequency=rpm").of("Hz").factor == doctest::Approx(60).epsilon(1e-15));
+    CHECK(unitsOf("angle=deg").of("rad").factor ==
+          doctest::Approx(180 / std::numbers::pi).epsilon(1e-15));
+
+    // A writer's own choice stays where the user set nothing.
+    CHECK(mm.valueIn("Pa", {1e-6, "MPa"}).unit == "MPa");
+    CHECK(mm.columnIn("m", {1e3, "mm"}).factor == 1);  // the table already holds mm
+    CHECK(OutputUnits().columnIn("m", {1e3, "mm"}).factor == 1e3);
+    CHECK(unitsOf("length=m").valueIn("m", {1e3, "mm"}).unit == "m");  // set to m: shown in m
+
+    // The command line's units over the deck's, quantity by quantity.
+    const OutputUnits both = unitsOf("length=mm,force=kN").overlaid(unitsOf("length=cm"));
+    CHECK(both.of("m").unit == "cm");
+    CHECK(both.of("N").unit == "kN");
+  }
+
+  TEST_CASE("a unit of the wrong dimension, an unknown unit or quantity: what is wrong") {
+    CHECK(setError("length", "kN") ==
+          "'kN' is a force (N), not a length (m); length takes m, km, cm, mm, um, in, ft");
+    CHECK(setError("length", "furlong") ==
+          "'furlong' is no unit; length takes m, km, cm, mm, um, in, ft");
+    CHECK(setError("speed", "m/s") ==
+          "'m/s' is a velocity (m/s), not an angular speed (rad/s); speed takes rpm, rad/s, Hz");
+    CHECK(setError("lenght", "mm").find("did you mean 'length'") != std::string::npos);
+    CHECK(setError("moment", "kN") ==
+          "'kN' is a force (N), not a moment (N m); moment takes a moment (N m) written as a "
+          "product of units, e.g. 'N m'");
+    CHECK_THROWS_WITH_AS(parseOutputUnits("length"),
+                         "'length' is no QUANTITY=UNIT (e.g. length=mm,force=kN)",
+                         std::invalid_argument);
+  }
+
+  TEST_CASE("a cantilever's tables in mm and kN: the SI values times the exact factors") {
+    const Cantilever c;
+    const RunResult run = cantileverRun(c);
+    const PreparedRun si = prepareRun(run);
+    const PreparedRun shown = prepareRun(run, false, unitsOf("length=mm,force=kN"));
+    const CsvTable& a = tableOf(si, 0, "tip_fields.csv");
+    const CsvTable& b = tableOf(shown, 0, "tip_fields.csv");
+    CHECK(unitOf(b, "x") == "mm");
+    CHECK(unitOf(b, "uy") == "mm");
+    CHECK(unitOf(b, "rz") == "rad");  // angle not set
+    CHECK(unitOf(b, "Vy") == "kN");
+    CHECK(unitOf(b, "Mz") == "kN mm");
+    CHECK(unitOf(b, "stress_top") == "Pa");  // stress not set
+    const auto uySI = a.numbers("uy"), uyMm = b.numbers("uy");
+    const auto mzSI = a.numbers("Mz"), mzShown = b.numbers("Mz");
+    REQUIRE(uySI.size() == uyMm.size());
+    for (std::size_t i = 0; i < uySI.size(); ++i) {
+      CHECK(uyMm[i] == uySI[i] * 1000);  // 1000 exactly: bit for bit
+      // N m -> kN mm: a factor of 1 reached through 1e-3 * 1e3 in floating point.
+      CHECK(mzShown[i] == doctest::Approx(mzSI[i]).epsilon(1e-15));
+    }
+    // The tip against P L^3 / (3 EI): Hermite elements are exact at the nodes (round-off).
+    CHECK(uyMm.back() == doctest::Approx(1000 * c.deflection(c.L)).epsilon(1e-9));
+    CHECK(uyMm.back() == doctest::Approx(-1000 * c.P * std::pow(c.L, 3) / (3 * c.EI())).epsilon(1e-9));
+    // results.json stays SI: the same document either way.
+    CHECK(shown.doc.dump() == si.doc.dump());
+  }
+
+  TEST_CASE("written: the units line names the user's units; the charts draw in them") {
+    const RecordedCharts recorded;
+    const RunResult run = cantileverRun(Cantilever{});
+    OutputChoices choices;
+    choices.units = unitsOf("length=mm,force=kN,moment=kN m,stress=kPa");
+    const fs::path dir = recorded.dir / "units";
+    writeRunOutputs(run, dir, choices);
+    const WrittenCsv fields = writtenCsv(dir / "tip_fields.csv");
+    REQUIRE(fields.rows.size() > 2);
+    const std::size_t uy = csvColumn(fields.rows[0], "uy");
+    CHECK(fields.unitsLine.rfind("# units: mm,mm,mm,mm,rad,rad,rad,kN,kN,kN,kN m,kN m,kN m,kPa", 0) ==
+          0);
+    const Cantilever c;
+    CHECK(std::stod(fields.rows.back()[uy]) ==
+          doctest::Approx(1000 * c.deflection(c.L)).epsilon(1e-9));
+
+    // The diagrams: axes in the user's units, the table's numbers drawn as they are (x 1).
+    const std::string script = readText(dir / "tip_diagrams.gp");
+    CHECK(script.find("set ylabel 'deflection [mm]'") != std::string::npos);
+    CHECK(script.find("set ylabel 'bending moment [kN m]'") != std::string::npos);
+    CHECK(script.find("set ylabel 'normal stress [kPa]'") != std::string::npos);
+    CHECK(script.find("set ylabel 'shear force [kN]'") != std::string::npos);
+    CHECK(script.find("set ylabel 'rotation [mrad]'") != std::string::npos);  // angle not set
+    CHECK(script.find("set xlabel 'x along the line [mm]'") != std::string::npos);
+    const std::string uyColumn = std::to_string(uy + 1);
+    CHECK(script.find(":($" + uyColumn + "*1)") != std::string::npos);
+
+    // Without output units the chart keeps its own reading units over the SI table.
+    const fs::path plain = recorded.dir / "plain";
+    writeRunOutputs(run, plain, OutputChoices{});
+    const std::string own = readText(plain / "tip_diagrams.gp");
+    CHECK(own.find("set ylabel 'deflection [mm]'") != std::string::npos);
+    CHECK(own.find(":($" + uyColumn + "*1000)") != std::string::npos);
+    CHECK(own.find("set xlabel 'x along the line [m]'") != std::string::npos);
+    CHECK(writtenCsv(plain / "tip_fields.csv").unitsLine.rfind("# units: m,m,m,m,rad", 0) == 0);
+  }
+
+  TEST_CASE("a deck's output units: read, and refused naming file, line and field") {
+    const std::string deck = fileContents(problemsDir() / "cantilever.yaml");
+    const int lines = int(std::count(deck.begin(), deck.end(), '\n'));
+    const DeckError wrong =
+        readingError(deck + "output:\n  units:\n    force: kN\n    length: kN\n", "units.yaml");
+    CHECK(wrong.place().field == "output.units.length");
+    CHECK(wrong.place().line == lines + 4);
+    CHECK(wrong.message() ==
+          "'kN' is a force (N), not a length (m); length takes m, km, cm, mm, um, in, ft");
+    const DeckError unknown = readingError(deck + "output:\n  units: {lenght: mm}\n", "units.yaml");
+    CHECK(std::string(unknown.what()).find("did you mean 'length'") != std::string::npos);
+    CHECK(unknown.place().line == lines + 2);
+  }
+}
+
+TEST_SUITE("output units (command line)") {
+  TEST_CASE("--units: summary, tables and results.json of the cantilever deck") {
+    const fs::path dir = scratchDir("units-cantilever");
+    const ProcessResult p =
+        runBeamrotor({"solve", "problems/cantilever.yaml", "--out", (dir / "out").string(),
+                      "--charts", "none", "--units", "length=mm,force=kN,moment=kN m"});
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    // P = 1 kN at L = 1.2 m: the root carries fy 1 kN and mz 1.2 kN m (exact to round-off,
+    // printed to six digits).
+    CHECK(p.out.find("reactions (force on the structure; kN, kN m)") != std::string::npos);
+    CHECK(p.out.find("fy 1 kN") != std::string::npos);
+    CHECK(p.out.find("mz 1.2 kN m") != std::string::npos);
+    CHECK(p.out.find("displacements at points (mm, rad)") != std::string::npos);
+    CHECK(p.out.find("x = 1200 mm") != std::string::npos);
+    const nlohmann::json results = readJson(dir / "out" / "results.json");
+    const double tipSI = results["analyses"][0]["displacements"]["tip"]["uy"].get<double>();
+    // E = 210 GPa, D = 50 mm: P L^3 / (3 E I) = 8.94025 mm (the deck's own check, 1e-9).
+    const double I = std::numbers::pi * std::pow(0.05, 4) / 64;
+    CHECK(tipSI == doctest::Approx(-1000.0 * std::pow(1.2, 3) / (3 * 210e9 * I)).epsilon(1e-9));
+    std::ostringstream tip;
+    tip << "uy " << std::setprecision(6) << tipSI * 1000 << " mm";
+    CHECK(p.out.find(tip.str()) != std::string::npos);
+    std::string stem;
+    for (const auto& e : fs::directory_iterator(dir / "out"))
+      if (e.path().filename().string().ends_with("_fields.csv")) stem = e.path().filename().string();
+    REQUIRE_FALSE(stem.empty());
+    const WrittenCsv fields = writtenCsv(dir / "out" / stem);
+    CHECK(std::stod(fields.rows.back()[csvColumn(fields.rows[0], "uy")]) == tipSI * 1000);
+    CHECK(fields.unitsLine.find("kN m") != std::string::npos);
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("--units refused: a unit of the wrong dimension exits 2 naming the option") {
+    const ProcessResult p =
+        runBeamrotor({"solve", "problems/cantilever.yaml", "--units", "length=kN"});
+    CHECK(p.exitCode == 2);
+    CHECK(p.err.find("--units") != std::string::npos);
+    CHECK(p.err.find("'kN' is a force (N), not a length (m)") != std::string::npos);
+  }
+}
