@@ -80,7 +80,7 @@ const std::vector<std::string> kTopKeys{
     "title",  "parameters", "derived",  "model",    "materials", "sections", "segments",
     "points", "supports",   "springs",  "masses",   "hinges",    "loads",    "analyses",
     "checks", "sweep",      "contacts", "bearings", "damping",   "report",   "accuracy",
-    "nodes",  "members",    "load_cases", "combinations", "study",    "output"};
+    "nodes",  "members",    "load_cases", "combinations", "study",    "output",   "train"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -273,6 +273,7 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   reader::readLine(c);
   reader::readAttachments(c);
   reader::readRotorModel(c);
+  reader::readTrain(c);
   reader::readStudy(c, overrides);
   reader::readReport(c);
   reader::readAccuracy(c);
