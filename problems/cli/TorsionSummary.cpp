@@ -28,6 +28,13 @@ void printTrain(std::ostream& out, const TorsionOutcome& t) {
       out << "      order " << trainFigure("%g", c.order) << " x mode " << c.mode << " ("
           << trainFigure("%.5g", c.frequencyHz) << " Hz) at " << trainFigure("%.6g", c.speed * kSummaryRpm) << " rpm\n";
   }
+  if (!t.excitation.empty()) {
+    out << "    harmonic torques:";
+    for (const HarmonicTorque& h : t.excitation)
+      out << " " << h.at.name() << " order " << trainFigure("%g", h.order) << " "
+          << trainFigure("%.5g", h.amplitude) << " N m;";
+    out << "\n";
+  }
   if (t.atSpeed) {
     out << "    steady response at " << trainFigure("%.6g", t.atSpeed->speed * kSummaryRpm)
         << " rpm (peak over a revolution):\n";

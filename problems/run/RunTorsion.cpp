@@ -184,12 +184,13 @@ TorsionOutcome runTrain(const Deck& deck, const TorsionSpec& spec) {
       for (std::size_t m = 0; m < out.modes.modes.size(); ++m) {
         const double f = out.modes.modes[m].frequencyHz;
         const double speed = 2 * std::numbers::pi * f / order;
-        if (f > 0 && speed >= out.speedFrom && speed <= out.speedTo)
+        if (!rigidRotation(out.modes, m) && speed >= out.speedFrom && speed <= out.speedTo)
           out.crossings.push_back({order, int(m) + 1, f, speed});
       }
     std::sort(out.crossings.begin(), out.crossings.end(),
               [](const TorsionCrossing& a, const TorsionCrossing& b) { return a.speed < b.speed; });
   }
+  out.excitation = spec.torques;
   if (spec.torques.empty()) return out;
   const HarmonicResponse harmonic(*model);
   if (spec.speed > 0)

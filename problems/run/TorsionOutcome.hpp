@@ -12,6 +12,7 @@
 
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
+#include "problems/deck/torsion/TorsionKind.hpp"
 
 namespace beamrotor {
 
@@ -51,6 +52,7 @@ struct TorsionOutcome {
   std::vector<double> orders;       ///< of the interference diagram
   double speedFrom = 0, speedTo = 0;  ///< its range (rad/s); equal when none
   std::vector<TorsionCrossing> crossings;  ///< in the range, by speed
+  std::vector<HarmonicTorque> excitation;  ///< the harmonic torques, as given or from a crank
   std::optional<TorsionResponse> atSpeed;  ///< at the operating speed
   std::vector<TorsionResponse> sweep;      ///< over the speed range
 };
@@ -60,6 +62,10 @@ struct TorsionOutcome {
 /// order over two revolutions (so half orders repeat), refined by golden-section search.
 double peakOfHarmonics(const std::vector<std::complex<double>>& amplitudes,
                        const std::vector<double>& orders);
+
+/// Whether mode m (0-based) is the free train turning as one: an eigenvalue that is
+/// round-off (below 1e-10 of the largest found) rather than an elastic mode.
+bool rigidRotation(const ModalResult& modes, std::size_t m);
 
 /// What a check quantity `torsion torque|twist NAME` reads: the trace at the operating speed.
 double measureTorsion(const std::string& property, const std::string& target,

@@ -65,12 +65,12 @@ void readCrankTorques(const reader::Context& c, const Field& f, TorsionSpec& spe
   const crank::TorqueSeries series =
       crank::crankTorqueSeries(m.geometry, loads, m.phases, m.speed, orders);
   // The cranks' need is a load on the train: it acts against the rotation (phase + pi).
-  // Harmonics that vanish to the series' accuracy (the orders a multi-crank drive balances)
-  // are left out.
+  // Harmonics within the series' accuracy of zero (the orders a multi-crank drive balances,
+  // ~1e-8 of the mean) are left out.
   double largest = 0;
   for (const auto& h : series.harmonics) largest = std::max(largest, h.amplitude);
   for (const auto& h : series.harmonics)
-    if (h.amplitude > 1e-9 * largest)
+    if (h.amplitude > 1e-5 * largest)
       spec.torques.push_back({at, double(h.order), h.amplitude, h.phase + std::numbers::pi,
                               af.name()});
 }
@@ -78,12 +78,14 @@ void readCrankTorques(const reader::Context& c, const Field& f, TorsionSpec& spe
 void readTrainExcitation(const reader::Context& c, const Field& f, TorsionSpec& spec) {
   const ExpressionEvaluator& ev = c.evaluator;
   if (auto r = f.get("reference")) spec.reference = shaftNamed(c, *r);
-  if (auto s = f.get("speed")) spec.speed = s->positive(ev, kRpmField);
+  // kRpmField reads a value in rpm; the spec holds rad/s.
+  const double radPerS = kRpmField.bareSize;
+  if (auto s = f.get("speed")) spec.speed = s->positive(ev, kRpmField) * radPerS;
   if (auto s = f.get("speeds")) {
     s->allowOnly({"from", "to", "steps"}, "a speed range");
     TorsionSpeeds range;
-    range.from = s->require("from").nonNegative(ev, kRpmField);
-    range.to = s->require("to").positive(ev, kRpmField);
+    range.from = s->require("from").nonNegative(ev, kRpmField) * radPerS;
+    range.to = s->require("to").positive(ev, kRpmField) * radPerS;
     if (!(range.to > range.from)) s->require("to").fail("'to' must exceed 'from'");
     if (auto n = s->get("steps")) range.steps = n->integer(ev, 1, kMaxTorsionSpeeds);
     spec.speeds = range;

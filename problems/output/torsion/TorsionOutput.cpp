@@ -31,7 +31,7 @@ std::string orderColumn(double order) {
 std::vector<int> elasticModes(const TorsionOutcome& t) {
   std::vector<int> modes;
   for (std::size_t m = 0; m < t.modes.modes.size(); ++m)
-    if (t.modes.modes[m].frequencyHz > 0) modes.push_back(int(m) + 1);
+    if (!rigidRotation(t.modes, m)) modes.push_back(int(m) + 1);
   return modes;
 }
 
@@ -129,6 +129,16 @@ Json torsionTrainJson(const TorsionOutcome& t, const std::string& stem) {
                            {"to_rpm", t.speedTo * kTrainRpm},
                            {"crossings", crossings}};
   }
+  if (!t.excitation.empty()) {
+    Json torques = Json::array();
+    for (const HarmonicTorque& h : t.excitation) {
+      Json entry{{"at", h.at.name()}, {"order", h.order}, {"amplitude_n_m", h.amplitude},
+                 {"phase_deg", h.phase * kTrainDegree}};
+      if (!h.source.empty()) entry["from_crank_slider"] = h.source;
+      torques.push_back(entry);
+    }
+    out["excitation"] = torques;
+  }
   if (t.atSpeed) out["response"] = responseJson(*t.atSpeed);
   Json files = Json::object();
   for (const CsvTable& table : torsionTables(t, stem))
@@ -157,24 +167,29 @@ void drawTorsionCharts(const std::filesystem::path& dir, const TorsionOutcome& t
     titles.push_back(title);
     ++curve;
   };
-  for (int m : elasticModes(t))
-    line("mode_" + std::to_string(m),
-         "mode " + std::to_string(m) + ": " + labelNumber(t.modes.modes[m - 1].frequencyHz) + " Hz",
-         false);
+  // Up to the highest order's frequency at the top speed, or the first elastic mode: the modes
+  // far above every order cannot be crossed and would flatten the region that matters.
+  double top = 0;
+  for (double o : t.orders) top = std::max(top, o * t.speedTo / (2 * std::numbers::pi));
+  const std::vector<int> modes = elasticModes(t);
+  if (!modes.empty()) top = std::max(top, t.modes.modes[modes.front() - 1].frequencyHz);
+  top *= 1.2;
+  for (int m : modes)
+    if (const double f = t.modes.modes[m - 1].frequencyHz; f <= top)
+      line("mode_" + std::to_string(m),
+           "mode " + std::to_string(m) + ": " + labelNumber(f) + " Hz", false);
   for (double o : t.orders) line(orderColumn(o), "order " + labelNumber(o), true);
   std::ostringstream body;
-  double top = 0;
-  for (int m : elasticModes(t)) top = std::max(top, t.modes.modes[m - 1].frequencyHz);
   const int width = 900 + keyWidth(titles);
   body << "  set encoding utf8\n  set title " << captionText(caption) << "\n  set grid\n"
        << "  set key outside right top\n"
        << "  set xlabel " << gnuplotText("speed of " + t.reference + " [rpm]") << "\n"
        << "  set ylabel 'frequency [Hz]'\n"
        << "  set xrange [" << number(t.speedFrom * kTrainRpm) << ":" << number(t.speedTo * kTrainRpm) << "]\n"
-       << "  set yrange [0:" << number(1.15 * std::max(top, 1e-300)) << "]\n";
+       << "  set yrange [0:" << number(std::max(top, 1e-300)) << "]\n";
   for (const TorsionCrossing& c : t.crossings)
     body << "  set object circle at " << number(c.speed * kTrainRpm) << "," << number(c.frequencyHz)
-         << " size screen 0.007 fillstyle solid linecolor rgb 'black' front\n";
+         << " size screen 0.006 fillcolor rgb 'black' fillstyle solid front\n";
   body << plot.str() << "\n";
   drawChart(dir, {stem + "_interference",
                   "Interference diagram: natural frequencies and excitation orders against speed",
