@@ -4,7 +4,6 @@
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/ReaderContext.hpp"
-#include "problems/deck/crank/CrankKind.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/deck/torsion/TorsionKind.hpp"
 #include "problems/scenes/CrankTorque.hpp"
