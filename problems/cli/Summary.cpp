@@ -16,6 +16,7 @@
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/cli/StabilitySummary.hpp"
 #include "problems/cli/StressSummary.hpp"
+#include "problems/cli/TorsionSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
 #include "problems/output/structure/Reactions.hpp"
 #include "problems/run/Overloaded.hpp"
@@ -181,6 +182,7 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
               printModes(out, a, r.modes, units);
               if (r.free)
                 out << "    (no support holds the twist: mode 1 is the train turning as one)\n";
+              if (!r.shafts.empty()) printTrain(out, r);
             },
             [&](const TransientOutcome&) { printTransient(out, a); },
             [&](const RotorResult auto& r) { printRotor(out, a, r, units); },

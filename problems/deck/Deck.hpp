@@ -14,6 +14,7 @@
 #include "elements/Beam.hpp"
 #include "fem/model/Dof.hpp"
 #include "fem/model/Section.hpp"
+#include "meshes/TrainBuilder.hpp"
 #include "problems/deck/AnalysisKinds.hpp"
 #include "problems/deck/catalog/SectionCatalog.hpp"
 #include "problems/deck/study/DeckAccuracy.hpp"
@@ -248,6 +249,7 @@ struct Deck {
   std::vector<DeckLoadCase> loadCases;        ///< `load_cases:`, deck order
   std::vector<DeckCombination> combinations;  ///< `combinations:`, deck order
   DeckRotorModel rotor;  ///< bearings and proportional damping
+  TrainSpec train;       ///< `train:` shafts, disks, couplings and gears in torsion (or none)
   std::vector<DeckAnalysis> analyses;
   std::vector<DeckCheck> checks;
   std::optional<DeckSweep> sweep;

@@ -78,7 +78,7 @@ const std::vector<std::string> kTopKeys{
     "points", "supports",   "springs",  "masses",   "hinges",    "loads",    "analyses",
     "checks", "sweep",      "contacts", "bearings", "damping",   "report",   "accuracy",
     "nodes",  "members",    "load_cases", "combinations", "study",    "output",
-    "rigid_links", "diaphragms"};
+    "rigid_links", "diaphragms", "train"};
 
 /// 2a. Parameters: named numbers in deck order, each an expression of the earlier ones, any
 /// of them replaced by a command-line override.
@@ -271,6 +271,7 @@ Deck readDeckWith(const DeckSource& source, const std::vector<ParameterOverride>
   reader::readLine(c);
   reader::readAttachments(c);
   reader::readRotorModel(c);
+  reader::readTrain(c);
   reader::readStudy(c, overrides);
   reader::readReport(c);
   reader::readAccuracy(c);

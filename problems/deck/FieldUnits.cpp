@@ -48,6 +48,8 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
     }
     case K::crankSlider:
       return crankReferenceUnit(q);
+    case K::torsion:
+      return {q.property == "torque" ? dim::moment : dim::angle};
     default:
       return {};  // buckling_factor, log_decrement; histories: their unit is free text
   }

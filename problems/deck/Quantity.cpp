@@ -8,6 +8,7 @@
 #include "problems/deck/crank/CrankQuantity.hpp"
 #include "problems/deck/parse/PlainText.hpp"
 #include "problems/deck/rotor/RotorQuantity.hpp"
+#include "problems/deck/torsion/TorsionQuantity.hpp"
 
 namespace beamrotor {
 
@@ -21,7 +22,7 @@ constexpr const char* kGrammar =
     "'instability_onset', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
-    "'crank PROPERTY at PHI deg', "
+    "'crank PROPERTY at PHI deg', 'torsion torque NAME', 'torsion twist STATION', "
     "'history NAME max|min|maxabs' or 'history NAME at TIME'";
 
 /// ux..rz, or the force/moment names fx fy fz mx my mz for the same dofs.
@@ -123,6 +124,7 @@ Quantity parseQuantity(const std::string& text) {
   }
   if (parseRotorQuantity(words, q)) return q;
   if (parseCrankQuantity(words, q)) return q;
+  if (parseTorsionQuantity(words, q)) return q;
   if ((head == "stress" || head == "shear" || head == "moment") && words.size() == 2 &&
       words[1] == "max") {
     q.kind = head == "stress"  ? Quantity::Kind::maxStress

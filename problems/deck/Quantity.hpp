@@ -57,6 +57,7 @@ struct Quantity {
     unbalanceAmplitude,
     rigidBody,  // rotor analyses
     crankSlider,  // crank-slider analyses (CrankQuantity.hpp)
+    torsion,      // torsion analyses of a train (TorsionQuantity.hpp)
     historyMax,
     historyMin,
     historyMaxAbs,
@@ -72,7 +73,7 @@ struct Quantity {
   Side side = Side::node;
   int mode = 1;  ///< frequency, buckling_factor, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
-  std::string property;  ///< rigid_body: which property; memberForce: N, Vy, Vz, T, My, Mz;
+  std::string property;  ///< rigid_body: which property; torsion: torque or twist; memberForce: N, Vy, Vz, T, My, Mz;
                          ///< sectionProperty: one of kSectionProperties
   std::string extreme;   ///< memberForce: max, min or maxabs
   double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own

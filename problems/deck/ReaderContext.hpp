@@ -73,6 +73,10 @@ void addMemberStation(Context& c, int member, double fraction, const DeckPlace& 
 void readAttachments(Context& c);
 /// A mass given as a disk's geometry {D, bore, width, rho}: its m, Jp, Jd into `mass`.
 void readDisk(const Context& c, const Field& disk, DeckMass& mass);
+/// A drive train in torsion (`train:`) into c.deck.train (ReadTrain.cpp).
+void readTrain(Context& c);
+/// The train station a field names ("SHAFT.STATION"); fails with a did-you-mean suggestion.
+TrainStation trainStation(const Context& c, const Field& f);
 /// Bearings and proportional damping (ReadRotor.cpp).
 void readRotorModel(Context& c);
 /// Fails at a modal analysis when a bearing is cross-coupled at rest (non-symmetric K).
@@ -104,6 +108,10 @@ void readTwoDofBody(const Context& c, const Field& f, DeckRotorAnalysis& r);
 /// Fails at `f` when a crank quantity asks for what analysis `a` was not given (masses, a
 /// plunger, a lambda outside its table).
 void resolveCrankQuantity(const Quantity& q, const Field& f, const DeckAnalysis& a);
+/// Fails at `f` unless a torsion quantity names a joint, shaft or station of the train and
+/// analysis `a` has harmonic torques at an operating speed (ReadTorsion.cpp).
+void resolveTorsionQuantity(const Context& c, const Quantity& q, const Field& f,
+                            const DeckAnalysis& a);
 /// Fails at `f` unless `reaction NAME DOF` names a support that holds DOF, or a spring, bearing
 /// or contact that acts along it (each exerts a force on the structure, reported by its name).
 void requireReactionTarget(const Deck& deck, const Quantity& q, const Field& f);

@@ -14,6 +14,7 @@
 #include "problems/output/structure/AdequateJson.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/torsion/TorsionOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/FileWriting.hpp"
@@ -448,6 +449,7 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
             [&](const TorsionOutcome& r) {
               Json entry = modalJson(kindsCarried(*r.model, DofMap(*r.model)), a, r.modes);
               entry["free"] = r.free;
+              if (!r.shafts.empty()) entry["train"] = torsionTrainJson(r, fileStem(a.name));
               return entry;
             },
             [&](const TransientOutcome&) { return transientJson(a); },

@@ -17,6 +17,7 @@
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/structure/Charts.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/torsion/TorsionOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/structure/EnvelopeCharts.hpp"
@@ -172,6 +173,8 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             [&](const ModalResult& r) { writeModalFiles(prepared, p, model, r, dir, charts); },
             [&](const TorsionOutcome& r) {
               writeModalFiles(prepared, p, *r.model, r.modes, dir, charts);
+              for (const CsvTable& table : p.torsion) table.write(dir / table.title());
+              if (charts) drawTorsionCharts(dir, r, p.stem, captionOf(prepared, a.name));
             },
             [&](const TransientOutcome& r) {
               writeTransientFiles(dir, model, p.stem, r, *p.history,

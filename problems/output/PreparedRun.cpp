@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/torsion/TorsionOutput.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/rotor/RotorFileNames.hpp"
 #include "problems/output/rotor/RotorOrbitChart.hpp"
@@ -29,7 +30,7 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
           &rotor->api684, &rotor->frf, &rotor->bearings, &rotor->map, &rotor->mapBearings,
           &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag})
       if (*t) all.emplace_back((*t)->title(), &**t);
-  for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank})
+  for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank, &torsion})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
   return all;
 }
@@ -173,7 +174,7 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables, const OutputUnits&
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
     PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {}, {},
-                       {}, {}, {}, {}, {}, {}, {}, {}};
+                       {}, {}, {}, {}, {}, {}, {}, {}, {}};
     std::visit(
         Overloaded{
             [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p, fullTables); },
@@ -187,6 +188,7 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables, const OutputUnits&
             [&](const TorsionOutcome& r) {
               p.modes = modesTable(modesCsv(p.stem), r.modes);
               p.shapes = modeShapesTable(shapesCsv(p.stem), *r.model, r.modes);
+              p.torsion = torsionTables(r, p.stem);
             },
             [&](const BucklingResult& r) {
               p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), r);

@@ -51,6 +51,7 @@ struct PreparedAnalysis {
   std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
   std::optional<CsvTable> caseTable;    ///< statics with load cases: <stem>_cases.csv
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
+  std::vector<CsvTable> torsion;  ///< a train: interference, crossings, torques, response
 
   /// Every table this analysis has, each with its CSV file name, in writing order.
   std::vector<std::pair<std::string, const CsvTable*>> tables() const;

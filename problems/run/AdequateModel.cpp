@@ -37,6 +37,11 @@ Deck atLevel(const Deck& deck, int level) {
     s.elements = 1 << level;
     s.size = 0;
   }
+  for (TrainShaft& shaft : d.train.shafts)
+    for (Segment& s : shaft.segments) {
+      s.elements = 1 << level;
+      s.targetSize = 0;
+    }
   return d;
 }
 

@@ -26,6 +26,11 @@ void useMethod(const ConvergeMethod& method, Deck& deck) {
     s.options.theory = method.theory;
     s.options.mass = method.mass;
   }
+  for (TrainShaft& shaft : deck.train.shafts)
+    for (Segment& s : shaft.segments) {
+      s.options.theory = method.theory;
+      s.options.mass = method.mass;
+    }
 }
 
 void refineMesh(Deck& deck, int level) {
@@ -36,6 +41,13 @@ void refineMesh(Deck& deck, int level) {
     else
       s.size /= factor;
   }
+  for (TrainShaft& shaft : deck.train.shafts)
+    for (Segment& s : shaft.segments) {
+      if (s.elements > 0)
+        s.elements *= factor;
+      else
+        s.targetSize /= factor;
+    }
 }
 
 void refineTimeStep(Deck& deck, int level) {

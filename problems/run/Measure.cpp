@@ -91,6 +91,9 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
   if (q.kind == Quantity::Kind::sectionProperty) return measureSection(q, model, {});
   if (isRotorResult(outcome)) return measureRotor(q, outcome);
   if (const auto* crank = resultOf<CrankSliderOutcome>(outcome)) return measureCrank(q, *crank);
+  if (const auto* torsion = resultOf<TorsionOutcome>(outcome);
+      torsion && q.kind == Quantity::Kind::torsion)
+    return measureTorsion(q.property, q.target, *torsion);
   if (q.kind == Quantity::Kind::frequency) {
     const ModalResult* modal = modesOf(outcome, model).modes;
     if (!modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");

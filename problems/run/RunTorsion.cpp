@@ -1,7 +1,12 @@
 #include "problems/run/RunTorsion.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
 
+#include "fem/assembly/Assembly.hpp"
+#include "fem/modal/HarmonicResponse.hpp"
 #include "fem/modal/Modal.hpp"
 #include "problems/run/ModelBuilder.hpp"
 
@@ -55,9 +60,154 @@ double freeTrainShift(const Deck& train) {
   return -1 / (flexibility * inertia);
 }
 
+/// The train's analogue of freeTrainShift: every shaft's, coupling's and mesh's flexibility
+/// in series over the whole polar inertia (ratios aside: a scale, not a value).
+double freeTrainShift(const TrainSpec& train) {
+  double flexibility = 0, inertia = 0;
+  for (const TrainShaft& shaft : train.shafts)
+    for (const Segment& s : shaft.segments) {
+      flexibility += s.length / s.section->GJ();
+      inertia += s.section->material.rho * s.section->Ip() * s.length;
+    }
+  for (const TrainJoint& j : train.couplings) flexibility += 1 / j.stiffness;
+  for (const TrainJoint& j : train.gears) flexibility += 1 / j.stiffness;
+  for (const TrainDisk& d : train.disks) inertia += d.Jp;
+  return -1 / (flexibility * inertia);
+}
+
+int shaftOf(const TrainSpec& train, const std::string& name) {
+  for (std::size_t i = 0; i < train.shafts.size(); ++i)
+    if (train.shafts[i].name == name) return int(i);
+  throw std::logic_error("no shaft " + name);
+}
+
+/// The complex torque an element carries at w under the complex twist u: (K + i w C) u_e,
+/// its first entry for a gear mesh (on the pinion's side), its last otherwise (the twist of
+/// its second node over its first times the stiffness).
+std::complex<double> trainElementTorque(const Element& e, const DofMap& dofs, const ComplexVector& u,
+                                   double w, bool gear) {
+  const ElementVector re = gather(e, dofs, u.real()), im = gather(e, dofs, u.imag());
+  const ElementMatrix K = e.stiffness(), C = e.damping();
+  const Eigen::Index i = gear ? 0 : re.size() - 1;
+  std::complex<double> t(K.row(i).dot(re), K.row(i).dot(im));
+  if (C.size() > 0) t += std::complex<double>(0, w) * std::complex<double>(C.row(i).dot(re), C.row(i).dot(im));
+  return t;
+}
+
+/// The train's steady response at the reference speed `speed` (rad/s).
+TorsionResponse trainResponse(const Deck& deck, const TorsionSpec& spec, const TrainMesh& mesh,
+                        const HarmonicResponse& harmonic, const std::vector<double>& ratios,
+                        double speed) {
+  const TrainSpec& train = deck.train;
+  const Model& model = harmonic.model();
+  const DofMap& dofs = harmonic.dofs();
+  TorsionResponse out;
+  out.speed = speed;
+  // The torques' frequencies as orders of the reference shaft, equal ones together.
+  std::vector<ComplexVector> loads;
+  for (const HarmonicTorque& h : spec.torques) {
+    const double order = h.order * ratios[shaftOf(train, h.at.shaft)];
+    auto same = std::find_if(out.orders.begin(), out.orders.end(),
+                             [&](double o) { return std::abs(o - order) <= 1e-12 * order; });
+    if (same == out.orders.end()) {
+      out.orders.push_back(order);
+      loads.push_back(ComplexVector::Zero(dofs.size()));
+      same = out.orders.end() - 1;
+    }
+    const int eq = dofs.equation(model.node(h.at.name()), Dof::rx);
+    loads[same - out.orders.begin()](eq) += std::polar(h.amplitude, h.phase);
+  }
+  std::vector<ComplexVector> twist;
+  for (std::size_t j = 0; j < out.orders.size(); ++j)
+    twist.push_back(harmonic.solve(out.orders[j] * speed, loads[j]));
+  const auto trace = [&](const std::string& name, auto&& amplitudeOf) {
+    ResponseTrace r{name, {}, 0};
+    for (std::size_t j = 0; j < out.orders.size(); ++j)
+      r.amplitudes.push_back(amplitudeOf(twist[j], out.orders[j] * speed));
+    r.peak = peakOfHarmonics(r.amplitudes, out.orders);
+    return r;
+  };
+  const auto jointTrace = [&](const TrainJoint& j, int element, bool gear) {
+    return trace(j.name, [&](const ComplexVector& u, double w) {
+      return trainElementTorque(*model.elements()[element], dofs, u, w, gear);
+    });
+  };
+  for (std::size_t i = 0; i < train.couplings.size(); ++i)
+    out.torques.push_back(jointTrace(train.couplings[i], mesh.couplings[i], false));
+  for (std::size_t i = 0; i < train.gears.size(); ++i)
+    out.torques.push_back(jointTrace(train.gears[i], mesh.gears[i], true));
+  for (std::size_t s = 0; s < train.shafts.size(); ++s) {
+    ResponseTrace largest{train.shafts[s].name, {}, -1};
+    for (const Beam* beam : mesh.shafts[s].beams) {
+      ResponseTrace r = trace(train.shafts[s].name, [&](const ComplexVector& u, double w) {
+        return trainElementTorque(*beam, dofs, u, w, false);
+      });
+      if (r.peak > largest.peak) largest = std::move(r);
+    }
+    out.torques.push_back(std::move(largest));
+  }
+  for (const TrainShaft& shaft : train.shafts) {
+    std::vector<std::string> stations{"start", "end"};
+    for (const NamedPoint& p : shaft.stations) stations.push_back(p.name);
+    for (const std::string& station : stations) {
+      const int eq = dofs.equation(model.node(shaft.name + "." + station), Dof::rx);
+      out.twists.push_back(trace(shaft.name + "." + station,
+                                 [&](const ComplexVector& u, double) { return u(eq); }));
+    }
+  }
+  return out;
+}
+
+TorsionOutcome runTrain(const Deck& deck, const TorsionSpec& spec) {
+  const TrainSpec& train = deck.train;
+  TorsionOutcome out;
+  auto model = std::make_shared<Model>();
+  const TrainMesh mesh = buildTrain(*model, train);
+  out.model = model;
+  out.free = true;  // a train has no support in twist
+  ModalOptions options;
+  options.modes = spec.modes;
+  options.shift = spec.shiftGiven ? spec.shift : freeTrainShift(train);
+  out.modes = solveModes(*model, options);
+  // Speeds over the reference shaft's.
+  const std::vector<double> toFirst = shaftSpeedRatios(train);
+  for (std::size_t i = 0; i < train.shafts.size(); ++i) {
+    out.shafts.push_back(train.shafts[i].name);
+    out.speedRatios.push_back(toFirst[i] / toFirst[spec.reference]);
+  }
+  out.reference = train.shafts[spec.reference].name;
+  out.orders = spec.orders;
+  if (spec.speeds) {
+    out.speedFrom = spec.speeds->from;
+    out.speedTo = spec.speeds->to;
+    for (double order : spec.orders)
+      for (std::size_t m = 0; m < out.modes.modes.size(); ++m) {
+        const double f = out.modes.modes[m].frequencyHz;
+        const double speed = 2 * std::numbers::pi * f / order;
+        if (!rigidRotation(out.modes, m) && speed >= out.speedFrom && speed <= out.speedTo)
+          out.crossings.push_back({order, int(m) + 1, f, speed});
+      }
+    std::sort(out.crossings.begin(), out.crossings.end(),
+              [](const TorsionCrossing& a, const TorsionCrossing& b) { return a.speed < b.speed; });
+  }
+  out.excitation = spec.torques;
+  if (spec.torques.empty()) return out;
+  const HarmonicResponse harmonic(*model);
+  if (spec.speed > 0)
+    out.atSpeed = trainResponse(deck, spec, mesh, harmonic, out.speedRatios, spec.speed);
+  if (spec.speeds)
+    for (int i = 0; i <= spec.speeds->steps; ++i) {
+      const double speed =
+          spec.speeds->from + (spec.speeds->to - spec.speeds->from) * i / spec.speeds->steps;
+      if (speed > 0) out.sweep.push_back(trainResponse(deck, spec, mesh, harmonic, out.speedRatios, speed));
+    }
+  return out;
+}
+
 }  // namespace
 
 TorsionOutcome runTorsion(const Deck& deck, const TorsionSpec& spec) {
+  if (!deck.train.shafts.empty()) return runTrain(deck, spec);
   const Deck train = torsionDeck(deck);
   TorsionOutcome out;
   out.free = !heldInTwist(train);

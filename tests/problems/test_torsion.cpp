@@ -11,10 +11,13 @@
 #include "problems/run/RunResult.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
+#include "tests/problems/TorsionSupport.hpp"
 
 using namespace beamrotor;
 using beamrotor::test::kPi;
 using beamrotor::test::relError;
+using beamrotor::test::holzerResidual;
+using beamrotor::test::torsionOf;
 
 namespace {
 
@@ -44,29 +47,6 @@ std::string diskTrain(const std::vector<double>& J, const std::vector<double>& x
   if (clamped)
     deck += "supports:\n  - {name: root, at: start, fix: clamped}\n";
   return deck + "analyses:\n" + analyses;
-}
-
-const TorsionOutcome& torsionOf(const RunResult& run, const std::string& name) {
-  for (const AnalysisOutcome& a : run.analyses)
-    if (a.name == name) {
-      const auto* t = resultOf<TorsionOutcome>(a);
-      REQUIRE(t != nullptr);
-      return *t;
-    }
-  FAIL("no analysis " << name);
-  throw;
-}
-
-/// Holzer's residual torque at omega for disks J on shafts of stiffness k (k[i] between disk i
-/// and i + 1), free at both ends: unit twist at disk 0, the torque carried along the chain;
-/// the residual (the torque past the last disk) vanishes at a natural frequency.
-double holzerResidual(const std::vector<double>& J, const std::vector<double>& k, double omega) {
-  double twist = 1, torque = 0;
-  for (std::size_t i = 0; i < J.size(); ++i) {
-    torque += J[i] * omega * omega * twist;
-    if (i < k.size()) twist -= torque / k[i];
-  }
-  return torque;
 }
 
 }  // namespace

@@ -177,6 +177,38 @@ def test_torsion_of_two_disks(tmp_path):
     assert frequencies[1] == pytest.approx(f, rel=1e-11)
 
 
+def test_torsion_train_tables(tmp_path):
+    # Two disks (J1 1, J2 0.5 kg m^2) on a light shaft (k_a = G pi D^4 / 32 / L) and a damped
+    # coupling (kc, c) in series, a torque T cos(2 phi) on J1 at 1800 rpm: the torque in the
+    # coupling is |T k J2 / (w^2 J1 J2 - k (J1 + J2))|, k = k_a z / (k_a + z), z = kc + i w c.
+    J1, J2, D, L, kc, c, T = 1.0, 0.5, 0.04, 0.5, 2e4, 15.0, 100.0
+    deck = tmp_path / "train.yaml"
+    deck.write_text(
+        "materials:\n  - {name: light, E: 208 GPa, G: 80 GPa, rho: 1e-6}\n"
+        "sections:\n  - {name: s, shape: circle, D: 40 mm, material: light}\n"
+        "train:\n  shafts:\n"
+        "    - {name: a, segments: [{length: 0.5, section: s, elements: 4}],\n"
+        "       disks: [{name: d1, at: 0, Jp: 1}]}\n"
+        "    - {name: b, segments: [{length: 0.1, section: s, elements: 1}],\n"
+        "       disks: [{name: d2, at: 0, Jp: 0.5}]}\n"
+        "  couplings:\n    - {name: flex, from: a.end, to: b.d2, stiffness: 2e4, damping: 15}\n"
+        "analyses:\n  - {type: torsion, name: twist, modes: 3, speed: 1800 rpm, orders: [2],\n"
+        "     speeds: {from: 100 rpm, to: 3000 rpm, steps: 20},\n"
+        "     torques: [{at: a.d1, order: 2, amplitude: 100 N m}]}\n")
+    run = beamrotor.solve(deck)
+    w = 2 * 1800 * 2 * math.pi / 60
+    ka = 80e9 * math.pi * D**4 / 32 / L
+    z = complex(kc, w * c)
+    k = ka * z / (ka + z)
+    closed = abs(T * k * J2 / (w * w * J1 * J2 - k * (J1 + J2)))
+    train = run.results["analyses"][0]["train"]
+    assert train["response"]["torques_n_m"]["flex"]["peak"] == pytest.approx(closed, rel=1e-9)
+    response = run.tables["twist"]["response"]
+    assert response["speed_rpm"].size == 21 and np.all(response["flex"] > 0)
+    crossings = run.tables["twist"]["crossings"]
+    assert crossings["speed_rpm"].size == 1
+
+
 def test_spring_force_of_a_propped_cantilever(tmp_path):
     # A cantilever (EI, L) propped at its tip by a spring of k = 3 EI / L^3, the tip stiffness:
     # the spring takes half the tip load P (compatibility), exact with Hermite elements but for

@@ -203,7 +203,7 @@ void readSweep(Context& c, const std::vector<ParameterOverride>& overrides) {
 }  // namespace
 
 void requireMass(const Context& c, const Field& f, const std::string& type) {
-  if (!c.deck.masses.empty()) return;
+  if (!c.deck.masses.empty() || !c.deck.train.shafts.empty()) return;
   for (const DeckSegment& s : c.deck.segments)
     if (s.section->material.rho > 0) return;
   f.fail("a " + type + " analysis needs mass: give the materials a density rho or add masses");
@@ -309,6 +309,7 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
            "' computes " + std::to_string(modes) + " modes (set its modes:)");
   resolveRotorQuantity(c, q, f, *analysis);
   resolveCrankQuantity(q, f, *analysis);
+  resolveTorsionQuantity(c, q, f, *analysis);
   return analysis->name;
 }
 

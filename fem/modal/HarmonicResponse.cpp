@@ -1,0 +1,35 @@
+#include "fem/modal/HarmonicResponse.hpp"
+
+#include <Eigen/SparseLU>
+#include <sstream>
+
+#include "fem/solvers/Errors.hpp"
+
+namespace beamrotor {
+
+HarmonicResponse::HarmonicResponse(const Model& model) : model_(model), dofs_(model) {
+  SparseAssembler assembler(model, dofs_);
+  K_ = assembler.assemble(MatrixKind::stiffness);
+  M_ = assembler.assemble(MatrixKind::mass);
+  C_ = assembler.assemble(MatrixKind::damping);
+}
+
+ComplexVector HarmonicResponse::solve(double w, const ComplexVector& f) const {
+  using Complex = std::complex<double>;
+  const Eigen::SparseMatrix<Complex> Z = K_.cast<Complex>() - Complex(w * w) * M_.cast<Complex>() +
+                                         Complex(0, w) * C_.cast<Complex>();
+  Eigen::SparseLU<Eigen::SparseMatrix<Complex>> lu;
+  lu.compute(Z);
+  const int n = dofs_.freeCount();
+  ComplexVector x = ComplexVector::Zero(dofs_.size());
+  if (lu.info() == Eigen::Success) x.head(n) = lu.solve(f.head(n));
+  if (lu.info() != Eigen::Success || !x.allFinite()) {
+    std::ostringstream why;
+    why << "the dynamic stiffness K - w^2 M + i w C is singular at w = " << w
+        << " rad/s: an undamped natural frequency lies there";
+    throw SingularSystem(why.str());
+  }
+  return x;
+}
+
+}  // namespace beamrotor
