@@ -11,7 +11,7 @@ namespace beamrotor {
 
 namespace {
 
-constexpr double kPiFilm = std::numbers::pi;
+constexpr double kPiArc = std::numbers::pi;
 
 using FilmMatrix = Eigen::SparseMatrix<double>;
 using FilmVector = Eigen::VectorXd;
@@ -184,7 +184,7 @@ FilmVector maskedToPressurised(const FilmVector& v, const std::vector<char>& act
 FilmSolution solveArcFilm(const FilmArc& arc, double lengthOverDiameter, const ReynoldsGrid& grid,
                           const JournalMotion& motion, bool withCoefficients,
                           std::vector<char>* cavity) {
-  if (!(arc.span > 0 && arc.span <= 2 * kPiFilm) || !(lengthOverDiameter > 0) ||
+  if (!(arc.span > 0 && arc.span <= 2 * kPiArc) || !(lengthOverDiameter > 0) ||
       grid.circumferential < 4 || grid.axial < 1)
     throw std::invalid_argument(
         "solveArcFilm: needs 0 < span <= 2 pi, L/D > 0 and a grid of at least 4 x 1");

@@ -65,6 +65,16 @@ class PadFilm {
     }
     auto sOf = [&](double t) { return low + t * (high - low); };
     auto moment = [&](double t) { return solve(rho, sOf(t), false).force[1]; };
+    // Near the last root first (the Newton steps move the journal little): a bracket of
+    // +-0.02 around it, when the moment changes sign there.
+    if (lastRoot_) {
+      const double t = (*lastRoot_ - low) / (high - low);
+      const double a1 = std::max(t - 0.02, 1e-4), b1 = std::min(t + 0.02, 1 - 1e-4);
+      if (a1 < b1) {
+        const double ma = moment(a1), mb = moment(b1);
+        if (ma > 0 && mb < 0) return lastRoot_ = sOf(speedRoot(moment, a1, ma, b1, mb, 1e-13).speed);
+      }
+    }
     // Step away from the closing trailing edge (through s = 0) until the moment changes sign.
     std::vector<double> steps{1 - 1e-4, 1 - 1e-3, 0.99, 0.97};
     for (double t = 0.95; t > 0.01; t -= 0.025) steps.push_back(t);
@@ -73,7 +83,7 @@ class PadFilm {
     double tHigh = steps[0], mHigh = moment(tHigh);
     for (std::size_t k = 1; k < steps.size() && mHigh < 0; ++k) {
       const double t = steps[k], m = moment(t);
-      if (m > 0) return sOf(speedRoot(moment, t, m, tHigh, mHigh, 1e-13).speed);
+      if (m > 0) return lastRoot_ = sOf(speedRoot(moment, t, m, tHigh, mHigh, 1e-13).speed);
       tHigh = t;
       mHigh = m;
     }
@@ -87,6 +97,7 @@ class PadFilm {
   double arc_, offset_, preload_, ld_;
   ReynoldsGrid grid_;
   std::vector<char> cavity_;  ///< the last film's pressurised nodes, the next one's first guess
+  std::optional<double> lastRoot_;  ///< the last tilt found
 };
 
 using Complex2 = Eigen::Matrix2cd;

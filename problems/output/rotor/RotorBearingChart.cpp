@@ -42,7 +42,7 @@ ChartScript journalBearingsDiagram(const std::string& caption, const std::string
        << "  set ylabel 'stiffness [MN/m]'\n" << curves({"kxx", "kxy", "kyx", "kyy"}, 1e-6)
        << "  set xlabel 'spin speed [rpm]'\n  set ylabel 'damping [kN s/m]'\n"
        << curves({"cxx", "cxy", "cyx", "cyy"}, 1e-3) << "  unset multiplot\n";
-  return {chartName, "Plain journal bearings: eccentricity and coefficients against speed", width,
+  return {chartName, "Journal bearings: eccentricity and coefficients against speed", width,
           height, body.str()};
 }
 
