@@ -21,14 +21,11 @@ using namespace beamrotor::test;
 
 TEST_SUITE("slow") {
   TEST_CASE("tilting-pad deck: the shipped compressor on four pads") {
-    const Study s = solveStudyText(fileContents(problemsDir() / "compressor_rotor_tilting_pads.yaml"),
-                                   shippedDeckRequest("compressor_rotor_tilting_pads.yaml"));
+    const Study s = solveShippedDeck("compressor_rotor_tilting_pads.yaml");
     CHECK(checkAllPass(s) == 1);
     const CampbellOutcome& c = *resultOf<CampbellOutcome>(s.run->analyses.at(2));
     REQUIRE(c.journals.size() == 2);
-    const double D = 0.09, L = 1.3, rho = 7850, Dd = 0.38, wd = 0.07;
-    const double mass = rho * std::numbers::pi * D * D / 4 * L +
-                        2 * rho * std::numbers::pi * (Dd * Dd - D * D) / 4 * wd;
+    const double mass = compressorRotorMass();
     TiltingPads pads;
     pads.count = 4;
     pads.arc = 80 * std::numbers::pi / 180;
