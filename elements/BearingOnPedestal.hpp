@@ -25,6 +25,7 @@ class BearingOnPedestal : public SpeedDependentElement {
   ElementMatrix stiffnessAt(double speed) const override;
   ElementMatrix dampingAt(double speed) const override;
   std::string kind() const override { return "bearing-on-pedestal"; }
+  int housing() const { return housing_; }  ///< the housing's node
 
  private:
   Bearing film_;  ///< the coefficients, as a grounded bearing at the journal would have them

@@ -132,6 +132,16 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutco
         << hzText(r.onset->frequencyHz, units) << " " << whirlName(r.onset->whirl) << " whirl)\n";
   else
     out << "    stable over the sweep (no log decrement falls through zero)\n";
+  // Each journal or tilting-pad bearing at the sweep's ends (its whole table in the CSV).
+  for (const JournalBearingCurve& j : r.journals)
+    for (std::size_t s : {std::size_t(0), j.speeds.size() - 1}) {
+      const BearingCoefficients& k = j.coefficients[s];
+      out << "    bearing " << j.name << " (" << j.type << ") at " << formatValue(j.speeds[s] * kRpm)
+          << " rpm: eccentricity " << formatValue(j.eccentricity[s]) << ", kxx "
+          << formatValue(k.kyy) << ", kyy " << formatValue(k.kzz) << ", kxy "
+          << formatValue(k.kyz) << ", kyx " << formatValue(k.kzy) << " N/m, cxx "
+          << formatValue(k.cyy) << ", cyy " << formatValue(k.czz) << " N s/m\n";
+    }
 }
 
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutcome& r,

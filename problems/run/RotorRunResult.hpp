@@ -31,12 +31,14 @@ struct RigidBodyOutcome {
   std::array<FormeShaftMode, 2> modes;
 };
 
-/// A plain journal bearing's operating points over its table speeds: what the model uses.
+/// A plain journal or tilting-pad bearing's operating points over its table speeds: what the
+/// model uses.
 struct JournalBearingCurve {
   std::string name;
+  std::string type;  ///< the deck's type: plain-journal or tilting-pad
   PlainJournal journal;
   std::vector<double> speeds;                     ///< rad/s
-  std::vector<double> eccentricity;               ///< eccentricity ratio e / c
+  std::vector<double> eccentricity;               ///< eccentricity ratio e / c (bearing's c)
   std::vector<double> attitude;                   ///< attitude angle (rad)
   std::vector<double> sommerfeld;                 ///< mu Omega D L^3 / (8 W c^2)
   std::vector<BearingCoefficients> coefficients;  ///< global axes
@@ -69,7 +71,7 @@ struct CampbellOutcome {
   /// The lowest speed where a mode's log decrement falls through zero, refined on the speed;
   /// none when every mode stays stable over the sweep
   std::optional<InstabilityOnset> onset;
-  std::vector<JournalBearingCurve> journals;  ///< the deck's plain journal bearings
+  std::vector<JournalBearingCurve> journals;  ///< the deck's loaded journal and tilting-pad bearings
   /// The operating range of the deck's first unbalance analysis giving one (drawn on the
   /// charts); none without such an analysis
   std::optional<OperatingRange> operating;
@@ -79,7 +81,9 @@ struct CampbellOutcome {
 /// API 684 reading of it.
 struct UnbalanceOutcome {
   UnbalanceResult unbalance;
-  std::vector<std::string> responsePoints;  ///< names of unbalance.nodes
+  /// names of unbalance.nodes: the deck's response points, then the housing of each bearing on
+  /// a pedestal as "<bearing>_pedestal" (its peaks empty: API 684 reads the shaft)
+  std::vector<std::string> responsePoints;
   /// The operating range its API 684 reading measures margins from; none without one (and
   /// then no peaks and no stability either)
   std::optional<OperatingRange> operating;

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "elements/Bearing.hpp"
+#include "elements/BearingOnPedestal.hpp"
 #include "elements/Spring.hpp"
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
@@ -29,7 +30,8 @@ std::vector<JournalBearingCurve> journalCurves(const Deck& deck) {
   std::vector<JournalBearingCurve> out;
   for (const DeckBearing& b : deck.rotor.bearings) {
     if (!b.journal || b.journal->load == 0) continue;  // a centred journal: no eccentricity
-    JournalBearingCurve curve{b.name, *b.journal, b.speeds, {}, {}, {}, b.table};
+    JournalBearingCurve curve{b.name, b.tiltingPads ? "tilting-pad" : "plain-journal",
+                              *b.journal, b.speeds, {}, {}, {}, b.table};
     for (std::size_t i = 0; i < b.speeds.size(); ++i) {
       curve.eccentricity.push_back(b.journalPoints.at(i).eccentricity);
       curve.attitude.push_back(b.journalPoints.at(i).attitude);
@@ -129,13 +131,30 @@ UnbalanceOutcome runUnbalance(const Deck& deck, const RotorFamily& s, const Mode
   std::vector<int> nodes;
   for (const std::string& p : r.response) nodes.push_back(model.node(p));
   UnbalanceOutcome out;
-  out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
   out.responsePoints = r.response;
+  // The housings of bearings on pedestals answer after the response points, as
+  // "<bearing>_pedestal" (ModelBuilder adds them in the deck's order).
+  std::vector<std::string> pedestalBearings;
+  for (const DeckBearing& b : deck.rotor.bearings)
+    if (b.pedestal) pedestalBearings.push_back(b.name);
+  std::size_t housings = 0;
+  for (const auto& e : model.elements())
+    if (const auto* p = dynamic_cast<const BearingOnPedestal*>(e.get())) {
+      nodes.push_back(p->housing());
+      out.responsePoints.push_back(pedestalBearings.at(housings++) + "_pedestal");
+    }
+  out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
   out.operating = r.operating;
   if (!r.operating) return out;  // no API 684 reading without an operating range
   out.stability = operatingStability(model, optionsOf(deck, s), *r.operating, r.speeds.front(),
                                      r.minLogDecrement);
-  for (const auto& orbits : out.unbalance.orbits) {
+  for (std::size_t k = 0; k < out.unbalance.orbits.size(); ++k) {
+    // API 684 reads the shaft's response points; a housing's peaks are not part of it.
+    if (k >= r.response.size()) {
+      out.peaks.emplace_back();
+      continue;
+    }
+    const auto& orbits = out.unbalance.orbits[k];
     std::vector<double> amplitudes;
     for (const Orbit& o : orbits) amplitudes.push_back(o.major());
     out.peaks.push_back(

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -143,6 +144,16 @@ StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string
   r.sets = std::move(sets);
   r.noSweep = true;
   return r;
+}
+
+Study solveShippedDeck(const std::string& name) {
+  return solveStudyText(fileContents(problemsDir() / name), shippedDeckRequest(name));
+}
+
+double compressorRotorMass() {
+  const double D = 0.09, L = 1.3, rho = 7850, Dd = 0.38, wd = 0.07;
+  return rho * std::numbers::pi * D * D / 4 * L +
+         2 * rho * std::numbers::pi * (Dd * Dd - D * D) / 4 * wd;
 }
 
 DeckError readingError(const std::string& text, const std::string& path) {

@@ -85,6 +85,13 @@ SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string&
 /// switched off.
 StudyRequest shippedDeckRequest(const std::string& name, std::vector<std::string> sets = {});
 
+/// The shipped deck problems/<name> solved as shippedDeckRequest(name) asks.
+Study solveShippedDeck(const std::string& name);
+
+/// The rotor mass of the shipped compressor decks (compressor_rotor*.yaml): a 90 mm steel shaft
+/// 1.3 m long and two impellers 380 mm by 70 mm on it, a closed form of their geometry (kg).
+double compressorRotorMass();
+
 /// Deck text written in a test, read and solved as if it were the file `path` (which names
 /// it in messages).
 Study solveDeckText(const std::string& text, const std::string& path);

@@ -126,16 +126,12 @@ TEST_SUITE("rotor decks") {
   }
 
   TEST_CASE("finite journal bearing deck: the shipped compressor on L/D 1.2 bearings") {
-    const Study s =
-        solveStudyText(fileContents(problemsDir() / "compressor_rotor_long_bearings.yaml"),
-                       shippedDeckRequest("compressor_rotor_long_bearings.yaml"));
+    const Study s = solveShippedDeck("compressor_rotor_long_bearings.yaml");
     CHECK(checkAllPass(s) == 1);
     const CampbellOutcome& c = *resultOf<CampbellOutcome>(s.run->analyses.at(2));
     REQUIRE(c.journals.size() == 2);
     // The weight share: the rotor is symmetric about its middle, each bearing carries half.
-    const double D = 0.09, L = 1.3, rho = 7850, Dd = 0.38, wd = 0.07;
-    const double mass = rho * std::numbers::pi * D * D / 4 * L +
-                        2 * rho * std::numbers::pi * (Dd * Dd - D * D) / 4 * wd;
+    const double mass = compressorRotorMass();
     for (const JournalBearingCurve& j : c.journals) {
       // Gravity's share from the beam model's reactions: the symmetric rotor's half, to the
       // static solve's round-off.

@@ -11,6 +11,7 @@
 #include "elements/Bearing.hpp"
 #include "elements/FiniteJournalBearing.hpp"
 #include "elements/PlainJournalBearing.hpp"
+#include "elements/TiltingPadBearing.hpp"
 #include "fem/rotor/Api684.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "problems/deck/parse/DeckError.hpp"
@@ -38,7 +39,10 @@ struct DeckBearing {
   std::optional<PlainJournal> journal;
   enum class JournalModel { shortBearing, finite };
   JournalModel journalModel = JournalModel::shortBearing;
-  ReynoldsGrid journalGrid;  ///< the finite film's grid (model: finite)
+  ReynoldsGrid journalGrid;  ///< the finite film's grid (model: finite; one pad's, tilting pads)
+  /// A tilting-pad bearing (type: tilting-pad): its pads; `journal` then holds its journal, oil,
+  /// load and bearing clearance, and `table` the synchronously condensed coefficients.
+  std::optional<TiltingPads> tiltingPads;
   /// The journal's operating point at each of `speeds` (what `table` was filled from).
   std::vector<JournalOperatingPoint> journalPoints;
   /// A plain journal with `load: gravity`: its load is the rotor's weight share on pinned

@@ -6,6 +6,7 @@
 
 #include "elements/ConcentricJournal.hpp"
 #include "elements/PlainJournalBearing.hpp"
+#include "elements/TiltingPadBearing.hpp"
 #include "problems/deck/parse/Field.hpp"
 
 namespace beamrotor {
@@ -27,7 +28,19 @@ void fillLoadedJournalPoints(DeckBearing& b) {
         " (thinner than 1 % of c: the journal touches the bearing); raise from_rpm, mu or L, or "
         "check load and c");
   };
-  if (b.journalModel == DeckBearing::JournalModel::shortBearing) {
+  if (b.tiltingPads) {
+    // The pads' equilibrium and synchronous coefficients once per table speed.
+    for (double w : b.speeds) {
+      try {
+        const TiltingPadPoint p = tiltingPadPoint(j, *b.tiltingPads, w, b.journalGrid);
+        b.journalPoints.push_back({p.eccentricity, p.attitude, p.synchronous});
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("at " + formatNumber(w * 30 / std::numbers::pi) +
+                                    " rpm: " + e.what() + "; raise from_rpm, mu or L, or check "
+                                    "load and c");
+      }
+    }
+  } else if (b.journalModel == DeckBearing::JournalModel::shortBearing) {
     const double slowest = eccentricityRatio(j, b.speeds.front());
     if (slowest > 1 - kThinnestFilm) throw touches(formatNumber(slowest));
     for (double w : b.speeds) {

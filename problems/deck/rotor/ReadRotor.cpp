@@ -68,17 +68,56 @@ ReynoldsGrid readJournalGrid(const Context& c, const Field* f, double lengthOver
   return grid;
 }
 
-/// A plain journal bearing: geometry, oil and load, and the speeds of its coefficient table.
-/// The short-bearing theory (elements/PlainJournalBearing.hpp) or the finite film
-/// (elements/FiniteJournalBearing.hpp, `model: finite`) gives the coefficients there.
+/// A tilting-pad bearing's pads (elements/TiltingPadBearing.hpp): pads, arc, offset, preload
+/// and orientation; its film grid counts cells over one pad (24 by default).
+TiltingPads readTiltingPads(const Context& c, const Field& f) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  TiltingPads pads;
+  pads.count = f.require("pads").integer(ev, 2, 12);
+  const Field arc = f.require("arc");
+  pads.arc = arc.positive(ev, dim::angle);
+  if (!(pads.count * pads.arc < 2 * std::numbers::pi))
+    arc.fail(std::to_string(pads.count) + " pads of " +
+             formatNumber(pads.arc * 180 / std::numbers::pi) +
+             " deg do not fit around the journal (pads x arc < 360 deg)");
+  if (auto o = f.get("offset")) {
+    pads.pivotOffset = o->number(ev, dim::none);
+    if (!(pads.pivotOffset >= 0.3 && pads.pivotOffset <= 0.8))
+      o->fail("the pivot offset is the pivot's place on the arc from the leading edge, 0.3 to "
+              "0.8 (0.5: centred; typical 0.5 to 0.6)");
+  }
+  if (auto m = f.get("preload")) {
+    pads.preload = m->number(ev, dim::none);
+    if (!(pads.preload > 0 && pads.preload < 0.9))
+      m->fail("the preload m = 1 - c / c_pad lies between 0 and 0.9 (typical 0.2 to 0.5; a pad "
+              "without preload carries nothing when the journal is centred)");
+  } else {
+    f.require("preload");
+  }
+  pads.loadOnPad = f.require("orientation").choice({"load-on-pad", "load-between-pads"}) ==
+                   "load-on-pad";
+  return pads;
+}
+
+/// A plain journal or tilting-pad bearing: geometry, oil and load, and the speeds of its
+/// coefficient table. The short-bearing theory (elements/PlainJournalBearing.hpp) or the finite
+/// film (elements/FiniteJournalBearing.hpp, `model: finite`) gives a plain journal's
+/// coefficients there, the pads' films (elements/TiltingPadBearing.hpp) a tilting-pad bearing's.
 void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckBearing& b) {
-  if (type.text() != "plain-journal")
+  if (type.text() != "plain-journal" && type.text() != "tilting-pad")
     type.fail("unknown bearing type '" + type.text() + "'" +
-              didYouMean(type.text(), {"plain-journal"}) +
-              " (a bearing is plain-journal, or has coefficients or a table)");
-  f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
-               "from_rpm", "to_rpm", "steps", "model", "grid"},
-              "a plain-journal bearing");
+              didYouMean(type.text(), {"plain-journal", "tilting-pad"}) +
+              " (a bearing is plain-journal, tilting-pad, or has coefficients or a table)");
+  const bool tilting = type.text() == "tilting-pad";
+  if (tilting)
+    f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
+                 "from_rpm", "to_rpm", "steps", "grid", "pads", "arc", "offset", "preload",
+                 "orientation"},
+                "a tilting-pad bearing");
+  else
+    f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
+                 "from_rpm", "to_rpm", "steps", "model", "grid"},
+                "a plain-journal bearing");
   const ExpressionEvaluator& ev = c.evaluator;
   PlainJournal j;
   j.diameter = f.require("D").positive(ev, dim::length);
@@ -100,10 +139,12 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
       length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " + formatNumber(ld) +
                   "); use model: finite");
   }
+  if (tilting) b.tiltingPads = readTiltingPads(c, f);
   auto grid = f.get("grid");
-  if (grid && b.journalModel != Model::finite)
+  if (grid && b.journalModel != Model::finite && !tilting)
     grid->fail("a film grid belongs to model: finite (the short theory has closed forms)");
   b.journalGrid = readJournalGrid(c, grid ? &*grid : nullptr, ld);
+  if (tilting && !(grid && grid->has("circumferential"))) b.journalGrid.circumferential = 24;
   const Field clearance = f.require("c");
   j.clearance = clearance.positive(ev, dim::length);
   if (!(j.clearance < 0.01 * j.diameter))
@@ -115,6 +156,8 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
   // load: 0 is an unloaded journal (a vertical rotor's): it runs centred
   // (elements/ConcentricJournal.hpp).
   if (!b.loadFromGravity) j.load = load.nonNegative(ev, dim::force);
+  if (tilting && !b.loadFromGravity && !(j.load > 0))
+    load.fail("a tilting-pad bearing is solved for a load: give it (N) or load: gravity");
   if (b.loadFromGravity && f.has("load_angle"))
     f.require("load_angle")
         .fail("load: gravity takes the rotor's weight along -y; give the load as a number (N) "

@@ -48,7 +48,7 @@ ChartScript journalBearingsDiagram(const std::string& caption, const std::string
        << "  set xlabel " << gnuplotText("spin speed [" + speed.unit + "]") << "\n"
        << "  set ylabel " << gnuplotText("damping [" + damping.unit + "]") << "\n"
        << curves({"cxx", "cxy", "cyx", "cyy"}, damping.factor) << "  unset multiplot\n";
-  return {chartName, "Plain journal bearings: eccentricity and coefficients against speed", width,
+  return {chartName, "Journal bearings: eccentricity and coefficients against speed", width,
           height, body.str()};
 }
 

@@ -103,8 +103,34 @@ Json campbellJson(const std::string& stem, const CampbellOutcome& r) {
              {"frequency_hz", r.onset->frequencyHz},
              {"whirl", std::string(whirlName(r.onset->whirl))},
              {"evaluations", r.onset->evaluations}};
+  // The journal and tilting-pad bearings' operating points, as <stem>_bearings.csv has them.
+  Json bearings = Json::object();
+  for (const JournalBearingCurve& j : r.journals) {
+    Json rpm = Json::array(), eps = Json::array(), attitude = Json::array();
+    Json k = Json::object(), cc = Json::object();
+    for (const char* name : {"kxx", "kxy", "kyx", "kyy"}) k[name] = Json::array();
+    for (const char* name : {"cxx", "cxy", "cyx", "cyy"}) cc[name] = Json::array();
+    for (std::size_t s = 0; s < j.speeds.size(); ++s) {
+      rpm.push_back(rpmOf(j.speeds[s]));
+      eps.push_back(j.eccentricity[s]);
+      attitude.push_back(j.attitude[s] * 180 / std::numbers::pi);
+      const BearingCoefficients& b = j.coefficients[s];
+      k["kxx"].push_back(b.kyy);
+      k["kxy"].push_back(b.kyz);
+      k["kyx"].push_back(b.kzy);
+      k["kyy"].push_back(b.kzz);
+      cc["cxx"].push_back(b.cyy);
+      cc["cxy"].push_back(b.cyz);
+      cc["cyx"].push_back(b.czy);
+      cc["cyy"].push_back(b.czz);
+    }
+    bearings[j.name] = {{"type", j.type},          {"speeds_rpm", rpm},
+                        {"eccentricity", eps},     {"attitude_angle_deg", attitude},
+                        {"stiffness_n_per_m", k}, {"damping_n_s_per_m", cc}};
+  }
   return {{"order", r.order},
           {"speeds_rpm", speeds},
+          {"bearings", bearings},
           {"instability_onset", onset},
           {"smallest_log_decrement", smallest},
           {"lines", lines},

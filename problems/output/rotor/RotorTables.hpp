@@ -20,7 +20,7 @@ double rpmOf(double speed);
 /// eigenvalue: the damping ratio's sign tells a decaying mode from a growing one).
 CsvCell logDecrementCell(double delta);
 
-/// Plain journal bearings: one row per bearing and table speed: bearing (name), bearing_index
+/// Plain journal and tilting-pad bearings: one row per bearing and table speed: bearing (name), bearing_index
 /// (1, 2, ...), speed (rad/s), speed_rpm, eccentricity (e/c), attitude_angle (deg),
 /// sommerfeld (mu Omega D L^3 / (8 W c^2)), kxx kxy kyx kyy (N/m), cxx cxy cyx cyy (N s/m) in
 /// the bearing's axes as the deck writes them (x_b = global y).

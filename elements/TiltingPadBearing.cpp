@@ -1,0 +1,255 @@
+#include "elements/TiltingPadBearing.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <functional>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "fem/rotor/SpeedRoot.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+constexpr double kPiPads = std::numbers::pi;
+/// Films thinner than 1 % of the clearance are beyond any real surface finish (as for the
+/// plain journal, FiniteJournalBearing.hpp).
+constexpr double kThinnestPadFilm = 0.01;
+
+/// One pad's film in its own axes: arc, preload, and what it does at (rho, s).
+class PadFilm {
+ public:
+  PadFilm(const TiltingPads& pads, double lengthOverDiameter, const ReynoldsGrid& grid)
+      : arc_(pads.arc), offset_(pads.pivotOffset), preload_(pads.preload),
+        ld_(lengthOverDiameter), grid_(grid) {}
+
+  FilmArc shape(double rho, double s) const {
+    return {-offset_ * arc_, arc_, -(preload_ + rho), -s};
+  }
+  FilmSolution solve(double rho, double s, bool withCoefficients) {
+    return solveArcFilm(shape(rho, s), ld_, grid_, {}, withCoefficients, &cavity_);
+  }
+  /// The thinnest film (/ c_p) over the pad's nodes.
+  double thinnest(double rho, double s) const {
+    const FilmArc a = shape(rho, s);
+    double h = 1e300;
+    for (int i = 0; i <= grid_.circumferential; ++i) {
+      const double t = a.start + a.span * i / grid_.circumferential;
+      h = std::min(h, 1 + a.a * std::cos(t) + a.b * std::sin(t));
+    }
+    return h;
+  }
+
+  /// The pad's tilt at rho: s where the film's force passes through the pivot, or none for a
+  /// pad the journal has left (m + rho <= 0: its film no longer narrows towards the pivot and
+  /// carries nothing at any tilt that keeps the force on the pivot). The film stays positive for
+  /// s inside (low, high) (it closes at the trailing edge at `high`); near `high` the pressure
+  /// gathers at the trailing edge (f . t < 0); at s = 0 with m + rho > 0 the film is thinnest at
+  /// the pivot and the pressure lies ahead of it (f . t > 0): the root lies between.
+  std::optional<double> equilibriumTilt(double rho) {
+    const double a = preload_ + rho;
+    if (!(1 - a > 0)) throw std::invalid_argument("the journal reaches a pad's pivot");
+    double low = -1e300, high = 1e300;
+    for (int i = 0; i <= grid_.circumferential; ++i) {
+      const double phi = arc_ * (double(i) / grid_.circumferential - offset_);
+      if (std::abs(phi) < 1e-14) continue;
+      const double bound = (1 - a * std::cos(phi)) / std::sin(phi);
+      if (phi > 0) high = std::min(high, bound);
+      else low = std::max(low, bound);
+    }
+    auto sOf = [&](double t) { return low + t * (high - low); };
+    auto moment = [&](double t) { return solve(rho, sOf(t), false).force[1]; };
+    // Near the last root first (the Newton steps move the journal little): a bracket of
+    // +-0.02 around it, when the moment changes sign there.
+    if (lastRoot_) {
+      const double t = (*lastRoot_ - low) / (high - low);
+      const double a1 = std::max(t - 0.02, 1e-4), b1 = std::min(t + 0.02, 1 - 1e-4);
+      if (a1 < b1) {
+        const double ma = moment(a1), mb = moment(b1);
+        if (ma > 0 && mb < 0) return lastRoot_ = sOf(speedRoot(moment, a1, ma, b1, mb, 1e-13).speed);
+      }
+    }
+    // Step away from the closing trailing edge (through s = 0) until the moment changes sign.
+    std::vector<double> steps{1 - 1e-4, 1 - 1e-3, 0.99, 0.97};
+    for (double t = 0.95; t > 0.01; t -= 0.025) steps.push_back(t);
+    if (const double t0 = -low / (high - low); t0 > 0 && t0 < 1) steps.push_back(t0);
+    std::sort(steps.begin(), steps.end(), std::greater<>());
+    double tHigh = steps[0], mHigh = moment(tHigh);
+    for (std::size_t k = 1; k < steps.size() && mHigh < 0; ++k) {
+      const double t = steps[k], m = moment(t);
+      if (m > 0) return lastRoot_ = sOf(speedRoot(moment, t, m, tHigh, mHigh, 1e-13).speed);
+      tHigh = t;
+      mHigh = m;
+    }
+    if (a <= 0) return std::nullopt;
+    throw std::invalid_argument(
+        "a pad's film cannot turn its force through the pivot (pivot offset " +
+        std::to_string(offset_) + ")");
+  }
+
+ private:
+  double arc_, offset_, preload_, ld_;
+  ReynoldsGrid grid_;
+  std::vector<char> cavity_;  ///< the last film's pressurised nodes, the next one's first guess
+  std::optional<double> lastRoot_;  ///< the last tilt found
+};
+
+using Complex2 = Eigen::Matrix2cd;
+
+/// Z_k' = Z - Z t t^T Z / (t^T Z t) in pad axes (t = (0, 1)), rotated to the bearing's axes.
+Complex2 condensedPad(const PadFilmState& p, double whirlRatio) {
+  Complex2 z;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      z(i, j) = std::complex<double>(p.stiffness[i][j], whirlRatio * p.damping[i][j]);
+  if (z(1, 1) == 0.0) return Complex2::Zero();  // an unloaded pad
+  Complex2 reduced = z - z.col(1) * z.row(1) / z(1, 1);
+  Eigen::Matrix2d q;  // columns e_k, t_k in the bearing's axes
+  q << std::cos(p.pivot), -std::sin(p.pivot), std::sin(p.pivot), std::cos(p.pivot);
+  return q.cast<std::complex<double>>() * reduced * q.transpose().cast<std::complex<double>>();
+}
+
+Complex2 condensedBearing(const TiltingPadPoint& point, double whirlRatio) {
+  Complex2 z = Complex2::Zero();
+  for (const PadFilmState& p : point.pads) z += condensedPad(p, whirlRatio);
+  return z;
+}
+
+void checkGeometry(const PlainJournal& j, const TiltingPads& pads, double speed) {
+  if (pads.count < 1 || !(pads.arc > 0) || !(pads.count * pads.arc < 2 * kPiPads))
+    throw std::invalid_argument("the pads need a positive arc and must fit around the journal");
+  if (!(pads.pivotOffset > 0 && pads.pivotOffset < 1))
+    throw std::invalid_argument("a pivot lies on its pad: 0 < offset < 1");
+  if (!(pads.preload >= 0 && pads.preload < 1))
+    throw std::invalid_argument("the preload lies in 0 <= m < 1");
+  if (!(speed > 0) || !(j.load > 0) || !(j.diameter > 0) || !(j.length > 0) ||
+      !(j.clearance > 0) || !(j.viscosity > 0))
+    throw std::invalid_argument("a tilting-pad bearing needs a positive speed, load and geometry");
+}
+
+}  // namespace
+
+PadEquilibrium padEquilibrium(const TiltingPads& pads, double lengthOverDiameter,
+                              const ReynoldsGrid& grid, double rho) {
+  PadFilm film(pads, lengthOverDiameter, grid);
+  PadEquilibrium out;
+  const std::optional<double> s = film.equilibriumTilt(rho);
+  if (!s) return out;
+  out.loaded = true;
+  out.s = *s;
+  out.film = film.solve(rho, *s, true);
+  return out;
+}
+
+TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, double speed,
+                                const ReynoldsGrid& grid) {
+  checkGeometry(j, pads, speed);
+  const double R = j.diameter / 2, cp = j.clearance / (1 - pads.preload);
+  const double forceScale = j.viscosity * speed * R * R * R * j.length / (cp * cp);
+  const double load = j.load / forceScale;  // Wbar, carried along +x_b
+  std::vector<double> pivots;
+  for (int k = 0; k < pads.count; ++k)
+    pivots.push_back(kPiPads + (pads.loadOnPad ? 0 : kPiPads / pads.count) +
+                     2 * kPiPads * k / pads.count);
+  std::vector<PadFilm> films(pivots.size(), PadFilm(pads, j.length / j.diameter, grid));
+  std::vector<std::optional<double>> tilts(pivots.size());  // s of each pad at the current u
+  auto unit = [](double angle) { return Eigen::Vector2d(std::cos(angle), std::sin(angle)); };
+  // The pads' force on the journal at u and its Jacobian (minus the static stiffness).
+  struct Balance {
+    Eigen::Vector2d force = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
+  };
+  auto balance = [&](const Eigen::Vector2d& u) {
+    Balance b;
+    for (std::size_t k = 0; k < pivots.size(); ++k) {
+      const Eigen::Vector2d e = unit(pivots[k]);
+      const double rho = u.dot(e);
+      tilts[k] = films[k].equilibriumTilt(rho);
+      if (!tilts[k]) continue;  // a pad the journal has left carries nothing
+      const FilmSolution f = films[k].solve(rho, *tilts[k], true);
+      const double kr = f.stiffness[0][0] - f.stiffness[0][1] * f.stiffness[1][0] / f.stiffness[1][1];
+      b.force += f.force[0] * e;
+      b.stiffness += kr * e * e.transpose();
+    }
+    return b;
+  };
+  // Newton from the centre; a step that would close a film at a pivot is shortened.
+  const double thinnest = kThinnestPadFilm * (1 - pads.preload);
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  Balance b = balance(u);
+  for (int iteration = 0;; ++iteration) {
+    const Eigen::Vector2d residual = b.force - Eigen::Vector2d(load, 0);
+    if (residual.norm() <= 1e-11 * load) break;
+    if (iteration == 100)
+      throw std::invalid_argument("the tilting pads found no equilibrium in 100 Newton steps");
+    Eigen::Vector2d step = b.stiffness.fullPivLu().solve(residual);
+    double scale = 1;
+    for (double pivot : pivots) {
+      const double room = 1 - pads.preload - thinnest - u.dot(unit(pivot));
+      const double advance = step.dot(unit(pivot));
+      if (advance > 0.5 * room) scale = std::min(scale, 0.5 * room / advance);
+    }
+    if (scale < 1e-6)
+      throw std::invalid_argument(
+          "the load needs a film thinner than 1 % of the clearance at a pivot (the journal "
+          "touches a pad)");
+    u += scale * step;
+    b = balance(u);
+  }
+  TiltingPadPoint out;
+  out.speed = speed;
+  out.eccentricity = u.norm() * cp / j.clearance;
+  out.attitude = u.norm() > 0 ? std::remainder(std::atan2(u.y(), u.x()) - kPiPads, 2 * kPiPads) : 0;
+  out.stiffnessScale = forceScale / cp;
+  out.dampingScale = forceScale / (cp * speed);
+  for (std::size_t k = 0; k < pivots.size(); ++k) {
+    const Eigen::Vector2d e = unit(pivots[k]), t = unit(pivots[k] + kPiPads / 2);
+    const double rho = u.dot(e);
+    PadFilmState p;
+    p.pivot = pivots[k];
+    if (!tilts[k]) {  // unloaded: no force, no coefficients, the film as wide as it gets
+      p.minimumFilm = (1 - pads.preload - rho) * cp / j.clearance;
+      out.pads.push_back(p);
+      continue;
+    }
+    const FilmSolution f = films[k].solve(rho, *tilts[k], true);
+    p.force = f.force[0] * forceScale;
+    p.tilt = (u.dot(t) - *tilts[k]) * cp / R;
+    p.minimumFilm = films[k].thinnest(rho, *tilts[k]) * cp / j.clearance;
+    if (p.minimumFilm < kThinnestPadFilm)
+      throw std::invalid_argument("the load needs a film thinner than 1 % of the clearance on a "
+                                  "pad (the journal touches it)");
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) {
+        p.stiffness[r][c] = f.stiffness[r][c];
+        p.damping[r][c] = f.damping[r][c];
+      }
+    out.pads.push_back(p);
+  }
+  out.synchronous = tiltingPadCoefficients(out, 1);
+  return out;
+}
+
+BearingCoefficients tiltingPadCoefficients(const TiltingPadPoint& point, double whirlRatio) {
+  if (!(whirlRatio > 0))
+    throw std::invalid_argument("tiltingPadCoefficients: the whirl ratio must be positive");
+  const Complex2 z = condensedBearing(point, whirlRatio);
+  const double ks = point.stiffnessScale, cs = point.dampingScale / whirlRatio;
+  return {ks * z(0, 0).real(), ks * z(0, 1).real(), ks * z(1, 0).real(), ks * z(1, 1).real(),
+          cs * z(0, 0).imag(), cs * z(0, 1).imag(), cs * z(1, 0).imag(), cs * z(1, 1).imag()};
+}
+
+BearingCoefficients tiltingPadStaticStiffness(const TiltingPadPoint& point) {
+  const Complex2 z = condensedBearing(point, 0);
+  const double ks = point.stiffnessScale;
+  return {ks * z(0, 0).real(), ks * z(0, 1).real(), ks * z(1, 0).real(), ks * z(1, 1).real(),
+          0, 0, 0, 0};
+}
+
+}  // namespace beamrotor

@@ -1,0 +1,96 @@
+// Tilting-pad journal bearings through a deck (type: tilting-pad): the reader's units, pads and
+// load reach elements/TiltingPadBearing, and its operating points reach the Campbell outcome
+// the outputs write.
+//  - the shipped deck (problems/compressor_rotor_tilting_pads.yaml): each bearing's operating
+//    point against a direct solve at its weight share (the rotor's mass over two, a closed form
+//    of the deck's geometry), every mode stable over the range;
+//  - bad pads named at their field.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "elements/TiltingPadBearing.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/Helpers.hpp"
+#include "tests/fem/rotor/RotorTestSupport.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+TEST_SUITE("slow") {
+  TEST_CASE("tilting-pad deck: the shipped compressor on four pads") {
+    const Study s = solveShippedDeck("compressor_rotor_tilting_pads.yaml");
+    CHECK(checkAllPass(s) == 1);
+    const CampbellOutcome& c = *resultOf<CampbellOutcome>(s.run->analyses.at(2));
+    REQUIRE(c.journals.size() == 2);
+    const double mass = compressorRotorMass();
+    TiltingPads pads;
+    pads.count = 4;
+    pads.arc = 80 * std::numbers::pi / 180;
+    pads.pivotOffset = 0.5;
+    pads.preload = 0.3;
+    pads.loadOnPad = false;
+    for (const JournalBearingCurve& j : c.journals) {
+      // The symmetric rotor's half, to the static solve's round-off.
+      CHECK(j.journal.load == doctest::Approx(mass * 9.81 / 2).epsilon(1e-9));
+      for (std::size_t i : {std::size_t(0), j.speeds.size() / 2, j.speeds.size() - 1}) {
+        const TiltingPadPoint direct = tiltingPadPoint(j.journal, pads, j.speeds[i], {24, 8});
+        CHECK(j.eccentricity[i] == doctest::Approx(direct.eccentricity).epsilon(1e-12));
+        CHECK(j.coefficients[i].kyy == doctest::Approx(direct.synchronous.kyy).epsilon(1e-12));
+        CHECK(j.coefficients[i].czz == doctest::Approx(direct.synchronous.czz).epsilon(1e-12));
+        // Four pads with the load between two: isotropic (tests/elements/...).
+        CHECK(j.coefficients[i].kzz == doctest::Approx(j.coefficients[i].kyy).epsilon(1e-8));
+      }
+    }
+    // No cross-coupling to drive a forward whirl: every mode decays over the whole range.
+    CHECK_FALSE(c.onset.has_value());
+  }
+}
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("tilting-pad deck: bad pads are named") {
+    auto deckWith = [](const std::string& bearing) {
+      return std::string(R"(
+title: a tilting-pad bearing
+model: {dimension: lateral}
+materials: [{name: steel, E: 2.1e11, nu: 0.3, rho: 7850}]
+sections: [{name: shaft, shape: circle, D: 100 mm}]
+segments: [{name: shaft, length: 0.2, section: shaft, elements: 2}]
+bearings:
+  - {name: A, at: start, type: tilting-pad, D: 100 mm, L: 50 mm, c: 100 um, mu: 0.02 Pa s,
+     from_rpm: 3000, to_rpm: 6000, steps: 1, )") +
+             bearing + "}\n  - {name: B, at: end, kxx: 1e8, kyy: 1e8}\n";
+    };
+    // The field's line; a missing key is named at the bearing's entry (line 8).
+    auto messageOf = [&](const std::string& bearing, int line = 9) {
+      const DeckError e = readingError(deckWith(bearing), "pads.yaml");
+      CHECK(e.place().line == line);
+      return e.message();
+    };
+    const std::string good = "load: 5000 N, arc: 80 deg, preload: 0.3, ";
+    CHECK(messageOf(good + "pads: 5, orientation: load-on-pad")
+              .find("5 pads of 80 deg do not fit around the journal") != std::string::npos);
+    CHECK(messageOf(good + "pads: 4, orientation: on-pad").find("load-on-pad") !=
+          std::string::npos);
+    CHECK(messageOf(good + "pads: 4, orientation: load-on-pad, offset: 0.9")
+              .find("the pivot offset") != std::string::npos);
+    CHECK(messageOf("load: 5000 N, arc: 80 deg, pads: 4, orientation: load-on-pad", 8)
+              .find("preload") != std::string::npos);
+    CHECK(messageOf(good + "pads: 4, orientation: load-on-pad, model: finite")
+              .find("unknown key") != std::string::npos);
+    CHECK(messageOf("load: 0, arc: 80 deg, preload: 0.3, pads: 4, orientation: load-on-pad")
+              .find("solved for a load") != std::string::npos);
+    // A load the pads carry only on a film thinner than 1 % of c.
+    CHECK(messageOf("load: 1e8 N, arc: 80 deg, preload: 0.3, pads: 4, orientation: load-on-pad")
+              .find("1 % of the clearance") != std::string::npos);
+    // A good one reads and runs.
+    const Study s = solveDeckText(deckWith("load: 5000 N, arc: 60 deg, preload: 0.3, pads: 5, "
+                                           "orientation: load-on-pad, offset: 0.6") +
+                                      "analyses: [{type: campbell, name: c, modes: 2, "
+                                      "from_rpm: 3000, to_rpm: 6000, steps: 1}]\n",
+                                  "pads.yaml");
+    REQUIRE(s.run);
+  }
+}
