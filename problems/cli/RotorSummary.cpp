@@ -9,6 +9,7 @@
 
 #include "fem/rotor/RotorStability.hpp"
 #include "problems/cli/Summary.hpp"
+#include "problems/output/rotor/LevelOneOutput.hpp"
 
 namespace beamrotor::cli {
 
@@ -224,6 +225,23 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsO
   if (worst >= 0)
     out << "    largest sag " << formatValue(std::hypot(g.uy[worst], g.uz[worst])) << " m at x = "
         << formatValue(g.x[worst]) << " m\n";
+}
+
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutcome& o) {
+  const LevelOneResult& r = o.screening;
+  out << "level1-stability analysis '" << a.name << "' at " << formatValue(r.speed * kRpm)
+      << " rpm, cross-coupling at " << o.station << " (" << formatValue(o.time) << " s)\n"
+      << "    Qa " << formatValue(r.anticipated) << " N/m from " << o.stages
+      << " stage(s) (API 617); least log decrement " << formatValue(r.baseLogDecrement)
+      << " without, " << formatValue(r.logDecrementAtQa) << " at Qa ("
+      << formatValue(r.frequencyHzAtQa) << " Hz)\n";
+  if (r.found)
+    out << "    Q0 " << formatValue(r.zeroDecrement) << " N/m (" << whirlName(r.whirlAtQ0)
+        << " whirl at " << formatValue(r.frequencyHzAtQ0) << " Hz), Q0/Qa "
+        << formatValue(r.ratio) << "\n";
+  else
+    out << "    Q0 not found: no cross-coupling up to 2^40 Qa destabilises the rotor\n";
+  out << "    API 684 Level I: " << levelOneVerdict(r) << "\n";
 }
 
 }  // namespace beamrotor::cli

@@ -20,5 +20,6 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutc
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const FrequencyResponseOutcome& r);
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r);
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r);
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutcome& r);
 
 }  // namespace beamrotor::cli

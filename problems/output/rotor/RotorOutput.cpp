@@ -2,6 +2,7 @@
 #include "problems/output/rotor/RotorOutput.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +11,8 @@
 #include "problems/output/rotor/BearingLoadTables.hpp"
 #include "problems/output/rotor/CriticalSpeedMapChart.hpp"
 #include "problems/output/rotor/CriticalSpeedMapTables.hpp"
+#include "problems/output/rotor/LevelOneOutput.hpp"
+#include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/rotor/RotorBearingChart.hpp"
 #include "problems/output/rotor/RotorCharts.hpp"
@@ -99,6 +102,12 @@ PreparedRotor prepareRotor(const BearingLoadsOutcome& r, const std::string& stem
   PreparedRotor p;
   p.bearingLoads = bearingLoadsTable(bearingLoadsCsv(stem), r.loads, r.bearingNames);
   p.sag = sagTable(sagCsv(stem), r.loads);
+  return p;
+}
+
+PreparedRotor prepareRotor(const LevelOneOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.levelOne = levelOneTable(levelOneCsv(stem), r.screening);
   return p;
 }
 
@@ -201,6 +210,16 @@ void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r) {
 void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome&) {
   f.tables.bearingLoads->write(f.dir / bearingLoadsCsv(f.stem));
   f.tables.sag->write(f.dir / sagCsv(f.stem));
+}
+
+void writeRotorFiles(const RotorFiles& f, const LevelOneOutcome& r) {
+  f.tables.levelOne->write(f.dir / levelOneCsv(f.stem));
+  const LevelOneResult& s = r.screening;
+  const std::string what = "at " + labelNumber(s.speed * 30 / std::numbers::pi) +
+                           " rpm, cross-coupling at " + r.station + ": " + levelOneVerdict(s);
+  if (f.charts && f.tables.levelOne->rowCount() > 0)
+    drawChart(f.dir, levelOneDiagram(fitted(f.caption) + "\n" + what, levelOneChart(f.stem), s,
+                                     levelOneCsv(f.stem)));
 }
 
 }  // namespace beamrotor
