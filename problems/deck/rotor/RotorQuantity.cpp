@@ -50,25 +50,15 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
       throw std::invalid_argument("speed '" + words[3] + "' must be a number of rpm >= 0");
     return true;
   }
-  if (head == "rigid_body") {
-    const auto& names = rigidBodyPropertyNames();
+  if (head == "rigid_body" || head == "level1") {
+    const bool rigid = head == "rigid_body";
+    const auto& names = rigid ? rigidBodyPropertyNames() : levelOnePropertyNames();
     if (words.size() != 2 || std::find(names.begin(), names.end(), words[1]) == names.end()) {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      throw std::invalid_argument("expected 'rigid_body PROPERTY', PROPERTY one of " + list);
+      throw std::invalid_argument("expected '" + head + " PROPERTY', PROPERTY one of " + list);
     }
-    q.kind = Kind::rigidBody;
-    q.property = words[1];
-    return true;
-  }
-  if (head == "level1") {
-    const auto& names = levelOnePropertyNames();
-    if (words.size() != 2 || std::find(names.begin(), names.end(), words[1]) == names.end()) {
-      std::string list;
-      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      throw std::invalid_argument("expected 'level1 PROPERTY', PROPERTY one of " + list);
-    }
-    q.kind = Kind::levelOne;
+    q.kind = rigid ? Kind::rigidBody : Kind::levelOne;
     q.property = words[1];
     return true;
   }
