@@ -4,6 +4,8 @@
 #include <optional>
 #include <utility>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "fem/assembly/ReducedSystem.hpp"
 #include "fem/model/Model.hpp"
@@ -129,7 +131,22 @@ SparseMatrix RotorSystem::stiffness(double speed) const {
   SparseMatrix K = atSpeed(K0_, speed, true);
   if (proportional_.internal != 0 && speed != 0)
     K += (speed * proportional_.internal) * circulatory_;
+  if (crossCoupling_.size() > 0) K += crossCoupling_;
   return K;
+}
+
+void RotorSystem::setCrossCoupling(int node, double q) {
+  if (node < 0 || node >= model_.nodeCount())
+    throw std::invalid_argument("cross-coupling at node " + std::to_string(node) +
+                                ": no such node");
+  const int y = dofs_.equation(node, Dof::uy), z = dofs_.equation(node, Dof::uz);
+  if (y < 0 || z < 0 || !dofs_.isFree(y) || !dofs_.isFree(z))
+    throw std::invalid_argument("cross-coupling at node " + std::to_string(node) +
+                                ": its uy and uz must both be free");
+  // Both entries stay in the pattern whatever q (0 included), so that every Q shares it.
+  std::vector<Eigen::Triplet<double>> t{{y, z, q}, {z, y, -q}};
+  crossCoupling_ = SparseMatrix(size(), size());
+  crossCoupling_.setFromTriplets(t.begin(), t.end());
 }
 
 SparseMatrix RotorSystem::damping(double speed) const {

@@ -50,6 +50,12 @@ class RotorSystem {
   /// Stiffness at spin speed Omega (rad/s); non-symmetric with cross-coupled bearings or
   /// internal damping (its circulatory part).
   SparseMatrix stiffness(double speed) const;
+  /// Adds cross-coupled stiffness Q (N/m) at `node`'s lateral dofs: K(uy, uz) += Q and
+  /// K(uz, uy) -= Q, the force (-Q uz, Q uy) that pushes a forward whirl along its orbit (an
+  /// aerodynamic or seal cross-coupling, API 684's added k_xy = Q, k_yx = -Q). Replaces the
+  /// coupling set before; a later stiffness() includes it at every speed. Throws
+  /// std::invalid_argument when uy or uz of `node` is not a free dof.
+  void setCrossCoupling(int node, double q);
   /// Viscous damping at spin speed Omega (rad/s), proportional damping included.
   SparseMatrix damping(double speed) const;
   /// Sizes for the results (factorEntries from the caller's factorisation).
@@ -75,6 +81,7 @@ class RotorSystem {
   ProportionalDamping proportional_;
   SparseMatrix M_, G_, K0_, C0_;
   SparseMatrix shaft_, circulatory_;  ///< K_s and K_s R when beta_i != 0
+  SparseMatrix crossCoupling_;        ///< setCrossCoupling's entries; empty without
   std::vector<SpeedTerm> terms_;
 };
 

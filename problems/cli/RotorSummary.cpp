@@ -9,6 +9,7 @@
 
 #include "fem/rotor/RotorStability.hpp"
 #include "problems/cli/Summary.hpp"
+#include "problems/output/rotor/LevelOneOutput.hpp"
 
 namespace beamrotor::cli {
 
@@ -253,6 +254,24 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsO
   if (worst >= 0)
     out << "    largest sag " << valueText(std::hypot(g.uy[worst], g.uz[worst]), "m", units) << " at x = "
         << valueText(g.x[worst], "m", units) << "\n";
+}
+
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutcome& o,
+                const OutputUnits& units) {
+  const LevelOneResult& r = o.screening;
+  out << "level1-stability analysis '" << a.name << "' at " << rpmText(r.speed * kRpm, units)
+      << ", cross-coupling at " << o.station << " (" << formatValue(o.time) << " s)\n"
+      << "    Qa " << valueText(r.anticipated, "N/m", units) << " from " << o.stages
+      << " stage(s) (API 617); least log decrement " << formatValue(r.baseLogDecrement)
+      << " without, " << formatValue(r.logDecrementAtQa) << " at Qa ("
+      << hzText(r.frequencyHzAtQa, units) << ")\n";
+  if (r.found)
+    out << "    Q0 " << valueText(r.zeroDecrement, "N/m", units) << " (" << whirlName(r.whirlAtQ0)
+        << " whirl at " << hzText(r.frequencyHzAtQ0, units) << "), Q0/Qa "
+        << formatValue(r.ratio) << "\n";
+  else
+    out << "    Q0 not found: no cross-coupling up to 2^40 Qa destabilises the rotor\n";
+  out << "    API 684 Level I: " << levelOneVerdict(r) << "\n";
 }
 
 }  // namespace beamrotor::cli

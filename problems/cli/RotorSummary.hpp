@@ -28,5 +28,7 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeed
                 const OutputUnits& units = {});
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsOutcome& r,
                 const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutcome& r,
+                const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

@@ -45,6 +45,7 @@ SystemSize sizeOf(const RunResult& run) {
                    [](const RigidBodyOutcome&) -> Size { return std::nullopt; },
                    [](const CriticalSpeedMapOutcome&) -> Size { return std::nullopt; },
                    [](const BearingLoadsOutcome&) -> Size { return std::nullopt; },
+                   [](const LevelOneOutcome&) -> Size { return std::nullopt; },
                    [](const CrankSliderOutcome&) -> Size { return std::nullopt; }},
         a.result);
     if (size) return *size;

@@ -231,6 +231,7 @@ SolveCost costOf(const AnalysisOutcome& a) {
                  [](const FrequencyResponseOutcome&) -> SolveCost { return {}; },
                  [](const CriticalSpeedMapOutcome&) -> SolveCost { return {}; },
                  [](const BearingLoadsOutcome&) -> SolveCost { return {}; },
+                 [](const LevelOneOutcome&) -> SolveCost { return {}; },
                  // A mechanism has no mesh to refine (studiable): nothing of it is timed.
                  [](const CrankSliderOutcome&) -> SolveCost { return {}; }},
       a.result);

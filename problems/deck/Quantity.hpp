@@ -56,6 +56,7 @@ struct Quantity {
     instabilityOnset,
     unbalanceAmplitude,
     rigidBody,  // rotor analyses
+    levelOne,   // level1-stability: `level1 PROPERTY`
     crankSlider,  // crank-slider analyses (CrankQuantity.hpp)
     torsion,      // torsion analyses of a train (TorsionQuantity.hpp)
     historyMax,
@@ -73,7 +74,8 @@ struct Quantity {
   Side side = Side::node;
   int mode = 1;  ///< frequency, buckling_factor, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
-  std::string property;  ///< rigid_body: which property; torsion: torque or twist; memberForce: N, Vy, Vz, T, My, Mz;
+  std::string property;  ///< rigid_body, level1: which property; torsion: torque or twist;
+                         ///< memberForce: N, Vy, Vz, T, My, Mz;
                          ///< sectionProperty: one of kSectionProperties
   std::string extreme;   ///< memberForce: max, min or maxabs
   double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own

@@ -28,7 +28,7 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
     for (const std::optional<CsvTable>* t :
          {&rotor->modes, &rotor->orbits, &rotor->campbell, &rotor->critical, &rotor->unbalance,
           &rotor->api684, &rotor->frf, &rotor->bearings, &rotor->map, &rotor->mapBearings,
-          &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag})
+          &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag, &rotor->levelOne})
       if (*t) all.emplace_back((*t)->title(), &**t);
   for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank, &torsion})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);

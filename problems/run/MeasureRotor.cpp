@@ -86,6 +86,17 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
       if (!r) throw std::invalid_argument(name + " is not a rigid-body analysis");
       return rigidBodyProperty(*r, q.property);
     }
+    case Quantity::Kind::levelOne: {
+      const auto* r = resultOf<LevelOneOutcome>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not a level1-stability analysis");
+      const LevelOneResult& s = r->screening;
+      if (q.property == "qa") return s.anticipated;
+      if (q.property == "log_decrement_at_qa") return s.logDecrementAtQa;
+      if (!s.found)
+        throw std::invalid_argument(name + " finds no Q0: no cross-coupling up to 2^40 Qa "
+                                    "destabilises the rotor");
+      return q.property == "q0" ? s.zeroDecrement : s.ratio;
+    }
     default:
       throw std::invalid_argument("'" + q.text + "' is not a result of " + name);
   }

@@ -12,6 +12,7 @@
 #include "fem/rotor/Api684.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/GravityLoads.hpp"
+#include "fem/rotor/LevelOneStability.hpp"
 #include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorResults.hpp"
 #include "fem/rotor/RotorStability.hpp"
@@ -123,6 +124,14 @@ struct BearingLoadsOutcome {
   double time = 0;                        ///< wall time (s)
 };
 
+/// level1-stability: API 684's Level I screening at one speed.
+struct LevelOneOutcome {
+  LevelOneResult screening;
+  std::string station;  ///< the point the cross-coupling was added at
+  int stages = 0;       ///< how many stages make up Qa
+  double time = 0;      ///< wall time (s)
+};
+
 /// The result of any rotor analysis: the writers take each through one overload set
 /// (rotorJson, prepareRotor, printRotor, ...), so one visitor lambda covers the family, and a
 /// kind missing from a set does not compile.
@@ -130,6 +139,6 @@ template <class R>
 concept RotorResult = std::same_as<R, RotorModesResult> || std::same_as<R, CampbellOutcome> ||
     std::same_as<R, UnbalanceOutcome> || std::same_as<R, RigidBodyOutcome> ||
     std::same_as<R, FrequencyResponseOutcome> || std::same_as<R, CriticalSpeedMapOutcome> ||
-    std::same_as<R, BearingLoadsOutcome>;
+    std::same_as<R, BearingLoadsOutcome> || std::same_as<R, LevelOneOutcome>;
 
 }  // namespace beamrotor

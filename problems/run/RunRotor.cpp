@@ -4,7 +4,11 @@
 // frequency response, the critical-speed map and the bearing loads.
 #include "problems/run/RunRotor.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -192,6 +196,42 @@ BearingLoadsOutcome runBearingLoads(const Deck& deck, const RotorFamily& s, cons
   return out;
 }
 
+/// The node nearest the middle of the deck's outermost bearings (of the whole shaft with
+/// fewer than two bearings): API 684's default station of the added cross-coupling.
+int midSpanNode(const Deck& deck, const Model& model) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    const double x = model.nodes()[model.node(b.point)].x();
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  if (!(hi > lo))
+    for (const Eigen::Vector3d& p : model.nodes()) {
+      lo = std::min(lo, p.x());
+      hi = std::max(hi, p.x());
+    }
+  const double middle = (lo + hi) / 2;
+  int best = 0;
+  for (int n = 1; n < model.nodeCount(); ++n)
+    if (std::abs(model.nodes()[n].x() - middle) < std::abs(model.nodes()[best].x() - middle))
+      best = n;
+  return best;
+}
+
+LevelOneOutcome runLevelOne(const Deck& deck, const RotorFamily& s, const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  LevelOneOutcome out;
+  Stopwatch clock;
+  const int node = r.station.empty() ? midSpanNode(deck, model) : model.node(r.station);
+  out.station = r.station.empty() ? model.nameOf(node) : r.station;
+  if (out.station.empty()) out.station = "node " + std::to_string(node);
+  out.stages = int(r.stages.size());
+  const double qa = anticipatedCrossCoupling(r.stages, r.speed);
+  out.screening = levelOneStability(model, optionsOf(deck, s), node, r.speed, qa);
+  out.time = clock.lap();
+  return out;
+}
+
 FrequencyResponseOutcome runFrequencyResponse(const Deck& deck, const RotorFamily& s,
                                               const Model& model) {
   const DeckRotorAnalysis& r = s.rotor;
@@ -247,6 +287,7 @@ AnalysisResult solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const
                  [&](const FrequencyResponseSpec& s) { return run(runFrequencyResponse, s); },
                  [&](const CriticalSpeedMapSpec& s) { return run(runCriticalSpeedMap, s); },
                  [&](const BearingLoadsSpec& s) { return run(runBearingLoads, s); },
+                 [&](const LevelOneSpec& s) { return run(runLevelOne, s); },
                  [](const NotRotorRow auto&) -> AnalysisResult {
                    throw std::logic_error("solveRotorAnalysis: not a rotor analysis");
                  }},

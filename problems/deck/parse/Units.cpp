@@ -29,6 +29,7 @@ const std::vector<NamedDimension>& namedDimensions() {
       {dim::moment, "a moment", "N m"},
       {dim::pressure, "a pressure or stress", "Pa"},
       {dim::density, "a density", "kg/m^3"},
+      {dim::power, "a power", "W"},
       {dim::inertia, "a mass moment of inertia", "kg m^2"},
       {dim::massLength, "a mass times a length (an unbalance)", "kg m"},
       {dim::rotationalStiffness, "a rotational stiffness", "N m/rad"},
@@ -93,6 +94,8 @@ const std::vector<Unit>& units() {
       {"rev", 2 * pi, dim::angle}, {"rpm", 2 * pi / 60, dim::angularSpeed},
       {"Hz", 1, dim::frequency},   {"kHz", 1e3, dim::frequency},
       {"K", 1, dim::temperature},
+      {"W", 1, dim::power},        {"kW", 1e3, dim::power},
+      {"MW", 1e6, dim::power},
   };
   return all;
 }

@@ -54,6 +54,7 @@ inline constexpr Dimension angularSpeed = Dimension::of(0, 0, -1, 1);
 inline constexpr Dimension velocity = Dimension::of(1, 0, -1, 0);
 inline constexpr Dimension acceleration = Dimension::of(1, 0, -2, 0);
 inline constexpr Dimension lengthPerAngle = Dimension::of(1, 0, 0, -1);
+inline constexpr Dimension power = Dimension::of(2, 1, -3, 0);  // W
 inline constexpr Dimension viscosity = Dimension::of(-1, 1, -1, 0);  // dynamic, Pa s
 inline constexpr Dimension temperature = Dimension::of(0, 0, 0, 0, 1);  // a change, K
 inline constexpr Dimension thermalExpansion = Dimension::of(0, 0, 0, 0, -1);  // 1/K

@@ -13,6 +13,7 @@
 #include "elements/PlainJournalBearing.hpp"
 #include "elements/TiltingPadBearing.hpp"
 #include "fem/rotor/Api684.hpp"
+#include "fem/rotor/LevelOneStability.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "problems/deck/parse/DeckError.hpp"
 
@@ -107,6 +108,10 @@ struct DeckRotorAnalysis {
   /// bearing-loads: the acceleration of gravity (m/s^2, global; default 9.81 along -y)
   std::array<double, 3> gravity{0, -9.81, 0};
   bool rigidBearings = true;  ///< bearing-loads: bearings pinned, or their stiffness at `speed`
+  /// level1-stability: the compressor's stages (API 617's Qa), at `speed`
+  std::vector<CompressorStage> stages;
+  /// level1-stability: the point the cross-coupling is added at; empty: mid-span
+  std::string station;
 };
 
 }  // namespace beamrotor

@@ -392,6 +392,27 @@ void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   }
 }
 
+/// level1-stability `stages:` a list of API 617 stages, each with its rated power, impeller
+/// diameter, restrictive tip width and discharge / suction densities.
+std::vector<CompressorStage> readStages(const Context& c, const Field& f) {
+  const std::vector<Field> items = f.items();
+  if (items.empty()) f.fail("expected a list of one or more stages");
+  std::vector<CompressorStage> out;
+  const ExpressionEvaluator& ev = c.evaluator;
+  for (const Field& item : items) {
+    item.allowOnly({"power", "diameter", "tip_width", "discharge_density", "suction_density"},
+                   "an API 617 stage");
+    CompressorStage s;
+    s.power = item.require("power").nonNegative(ev, dim::power);
+    s.diameter = item.require("diameter").positive(ev, dim::length);
+    s.tipWidth = item.require("tip_width").positive(ev, dim::length);
+    s.dischargeDensity = item.require("discharge_density").positive(ev, dim::density);
+    s.suctionDensity = item.require("suction_density").positive(ev, dim::density);
+    out.push_back(s);
+  }
+  return out;
+}
+
 /// campbell `order:` a positive number, or a list of distinct ones: the first gives the critical
 /// speeds (checks, API margins), the others are drawn as further excitation lines with their
 /// crossings (e.g. [1, 0.5, 2] for oil whirl and twice-per-revolution excitation).
@@ -528,6 +549,19 @@ void CampbellSpec::read(const reader::Context& c, const Field& f) {
 void CriticalSpeedMapSpec::read(const reader::Context& c, const Field& f) {
   reader::requireLateral(c, f, deckType);
   reader::readCriticalSpeedMap(c, f, rotor);
+  reader::readModeSearch(c, f, *this);
+}
+
+void LevelOneSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  f.allowOnly({"type", "name", "speed_rpm", "station", "stages", "modes", "shift"},
+              "a level1-stability analysis");
+  rotor.speed = f.require("speed_rpm").positive(c.evaluator, kRpmField) * reader::kRadPerRpm;
+  if (auto s = f.get("station")) rotor.station = c.point(*s).name;
+  rotor.stages = reader::readStages(c, f.require("stages"));
+  double power = 0;
+  for (const CompressorStage& s : rotor.stages) power += s.power;
+  if (!(power > 0)) f.require("stages").fail("the stages' power must add up to more than 0");
   reader::readModeSearch(c, f, *this);
 }
 

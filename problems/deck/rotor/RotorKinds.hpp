@@ -67,4 +67,12 @@ struct BearingLoadsSpec : RotorFamily {
   void read(const reader::Context& c, const Field& f);
 };
 
+/// API 684 Level I stability screening at one speed (fem/rotor/LevelOneStability.hpp).
+struct LevelOneSpec : RotorFamily {
+  static constexpr std::string_view deckType = "level1-stability";
+  static constexpr std::array answers{Quantity::Kind::levelOne};
+  static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
+};
+
 }  // namespace beamrotor

@@ -15,6 +15,11 @@ const std::vector<std::string>& rigidBodyPropertyNames() {
   return names;
 }
 
+const std::vector<std::string>& levelOnePropertyNames() {
+  static const std::vector<std::string> names{"qa", "q0", "q0_over_qa", "log_decrement_at_qa"};
+  return names;
+}
+
 bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
   const std::string& head = words[0];
   using Kind = Quantity::Kind;
@@ -45,14 +50,15 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
       throw std::invalid_argument("speed '" + words[3] + "' must be a number of rpm >= 0");
     return true;
   }
-  if (head == "rigid_body") {
-    const auto& names = rigidBodyPropertyNames();
+  if (head == "rigid_body" || head == "level1") {
+    const bool rigid = head == "rigid_body";
+    const auto& names = rigid ? rigidBodyPropertyNames() : levelOnePropertyNames();
     if (words.size() != 2 || std::find(names.begin(), names.end(), words[1]) == names.end()) {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      throw std::invalid_argument("expected 'rigid_body PROPERTY', PROPERTY one of " + list);
+      throw std::invalid_argument("expected '" + head + " PROPERTY', PROPERTY one of " + list);
     }
-    q.kind = Kind::rigidBody;
+    q.kind = rigid ? Kind::rigidBody : Kind::levelOne;
     q.property = words[1];
     return true;
   }

@@ -7,6 +7,7 @@
 
 #include "fem/rotor/RotorStability.hpp"
 #include "problems/output/files/FileNames.hpp"
+#include "problems/output/rotor/LevelOneOutput.hpp"
 #include "problems/output/rotor/RotorFileNames.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
 #include "problems/output/rotor/UnwrappedPhase.hpp"
@@ -299,6 +300,32 @@ Json bearingLoadsJson(const std::string& stem, const BearingLoadsOutcome& r) {
           {"files", {{"bearing_loads_csv", bearingLoadsCsv(stem)}, {"sag_csv", sagCsv(stem)}}}};
 }
 
+Json levelOneJson(const std::string& stem, const LevelOneOutcome& o) {
+  const LevelOneResult& r = o.screening;
+  Json curve = Json::array();
+  for (const CrossCouplingSample& s : r.curve)
+    curve.push_back({{"q", s.crossCoupling}, {"log_decrement", finiteOrNull(s.logDecrement)}});
+  return {{"speed_rpm", r.speed * 30 / std::numbers::pi},
+          {"station", o.station},
+          {"stages", o.stages},
+          {"qa", r.anticipated},
+          {"q0", r.found ? Json(r.zeroDecrement) : Json(nullptr)},
+          {"q0_found", r.found},
+          {"q0_over_qa", finiteOrNull(r.ratio)},
+          {"log_decrement_without", finiteOrNull(r.baseLogDecrement)},
+          {"log_decrement_at_qa", finiteOrNull(r.logDecrementAtQa)},
+          {"frequency_hz_at_qa", r.frequencyHzAtQa},
+          {"frequency_hz_at_q0", r.frequencyHzAtQ0},
+          {"whirl_at_q0", std::string(whirlName(r.whirlAtQ0))},
+          {"evaluations", r.evaluations},
+          {"map_decides", r.mapDecides},
+          {"pass", r.pass},
+          {"verdict", levelOneVerdict(r)},
+          {"curve", curve},
+          {"time_s", o.time},
+          {"files", {{"level1_csv", levelOneCsv(stem)}}}};
+}
+
 Json rigidBodyJson(const RigidBodyOutcome& r) {
   const FormeShaftRigid& s = r.rigid;
   Json modes = Json::array();
@@ -364,6 +391,9 @@ Json rotorJson(const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r) {
 }
 Json rotorJson(const AnalysisOutcome& a, const BearingLoadsOutcome& r) {
   return entry(a, bearingLoadsJson(fileStem(a.name), r));
+}
+Json rotorJson(const AnalysisOutcome& a, const LevelOneOutcome& r) {
+  return entry(a, levelOneJson(fileStem(a.name), r));
 }
 
 }  // namespace beamrotor

@@ -35,5 +35,6 @@ Json rotorJson(const AnalysisOutcome& a, const RigidBodyOutcome& r);
 Json rotorJson(const AnalysisOutcome& a, const FrequencyResponseOutcome& r);
 Json rotorJson(const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r);
 Json rotorJson(const AnalysisOutcome& a, const BearingLoadsOutcome& r);
+Json rotorJson(const AnalysisOutcome& a, const LevelOneOutcome& r);
 
 }  // namespace beamrotor

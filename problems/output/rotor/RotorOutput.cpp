@@ -4,6 +4,7 @@
 #include "problems/output/files/TableUnits.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "problems/output/rotor/BearingLoadTables.hpp"
 #include "problems/output/rotor/CriticalSpeedMapChart.hpp"
 #include "problems/output/rotor/CriticalSpeedMapTables.hpp"
+#include "problems/output/rotor/LevelOneOutput.hpp"
+#include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/TableUnits.hpp"
 #include "problems/output/rotor/RotorBearingChart.hpp"
@@ -102,6 +105,12 @@ PreparedRotor prepareRotor(const BearingLoadsOutcome& r, const std::string& stem
   PreparedRotor p;
   p.bearingLoads = bearingLoadsTable(bearingLoadsCsv(stem), r.loads, r.bearingNames);
   p.sag = sagTable(sagCsv(stem), r.loads);
+  return p;
+}
+
+PreparedRotor prepareRotor(const LevelOneOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.levelOne = levelOneTable(levelOneCsv(stem), r.screening);
   return p;
 }
 
@@ -210,6 +219,16 @@ void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r) {
 void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome&) {
   f.tables.bearingLoads->write(f.dir / bearingLoadsCsv(f.stem));
   f.tables.sag->write(f.dir / sagCsv(f.stem));
+}
+
+void writeRotorFiles(const RotorFiles& f, const LevelOneOutcome& r) {
+  f.tables.levelOne->write(f.dir / levelOneCsv(f.stem));
+  const LevelOneResult& s = r.screening;
+  const std::string what = "at " + labelNumber(s.speed * 30 / std::numbers::pi) +
+                           " rpm, cross-coupling at " + r.station + ": " + levelOneVerdict(s);
+  if (f.charts && f.tables.levelOne->rowCount() > 0)
+    drawChart(f.dir, levelOneDiagram(fitted(f.caption) + "\n" + what, levelOneChart(f.stem), s,
+                                     levelOneCsv(f.stem)));
 }
 
 }  // namespace beamrotor

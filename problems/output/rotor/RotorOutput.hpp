@@ -26,6 +26,7 @@ struct PreparedRotor {
   std::optional<CsvTable> mapCrossings;  ///< critical-speed-map: <stem>_map_crossings.csv
   std::optional<CsvTable> bearingLoads;  ///< bearing-loads: <stem>_bearing_loads.csv
   std::optional<CsvTable> sag;           ///< bearing-loads: <stem>_sag.csv
+  std::optional<CsvTable> levelOne;      ///< level1-stability: <stem>_level1.csv
   /// rotor: <stem>_orbits.csv (modeOrbitsTable; it needs the model, so prepareRun adds it).
   std::optional<CsvTable> orbits;
 };
@@ -39,6 +40,7 @@ PreparedRotor prepareRotor(const RigidBodyOutcome& r, const std::string& stem);
 PreparedRotor prepareRotor(const FrequencyResponseOutcome& r, const std::string& stem);
 PreparedRotor prepareRotor(const CriticalSpeedMapOutcome& r, const std::string& stem);
 PreparedRotor prepareRotor(const BearingLoadsOutcome& r, const std::string& stem);
+PreparedRotor prepareRotor(const LevelOneOutcome& r, const std::string& stem);
 
 /// Where and how one rotor analysis writes its files.
 struct RotorFiles {
@@ -61,5 +63,6 @@ void writeRotorFiles(const RotorFiles& f, const RigidBodyOutcome& r);
 void writeRotorFiles(const RotorFiles& f, const FrequencyResponseOutcome& r);
 void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r);
 void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome& r);
+void writeRotorFiles(const RotorFiles& f, const LevelOneOutcome& r);
 
 }  // namespace beamrotor

@@ -1,0 +1,131 @@
+#include "fem/rotor/LevelOneStability.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "fem/rotor/RotorStability.hpp"
+#include "fem/rotor/RotorSystem.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+/// Doublings of Q_hi from Qa before giving up on a bracket: 2^40 Qa is far beyond any
+/// cross-coupling a machine meets.
+constexpr int kDoublings = 40;
+
+/// The least damped of a set of modes: its neutral log decrement, frequency and whirl.
+struct Worst {
+  double growth = -std::numeric_limits<double>::infinity();
+  double logDecrement = std::numeric_limits<double>::infinity();
+  double frequencyHz = 0;
+  Whirl whirl = Whirl::planar;
+};
+
+Worst worstOf(const std::vector<RotorMode>& modes) {
+  Worst w;
+  for (const RotorMode& m : modes) {
+    const double delta = neutralLogDecrement(m);
+    if (std::isnan(delta) || delta >= w.logDecrement) continue;
+    w = {growthRate(m), delta, m.dampedFrequencyHz, m.whirl};
+  }
+  return w;
+}
+
+void requirePositive(double value, const std::string& what) {
+  if (!(value > 0) || !std::isfinite(value))
+    throw std::invalid_argument("API 617 Qa: " + what + " must be > 0 (got " +
+                                std::to_string(value) + ")");
+}
+
+}  // namespace
+
+double anticipatedCrossCoupling(const std::vector<CompressorStage>& stages, double speed) {
+  requirePositive(speed, "the speed");
+  double sum = 0;
+  for (const CompressorStage& s : stages) {
+    if (!(s.power >= 0)) throw std::invalid_argument("API 617 Qa: a stage's power must be >= 0");
+    requirePositive(s.diameter, "a stage's impeller diameter");
+    requirePositive(s.tipWidth, "a stage's tip width");
+    requirePositive(s.dischargeDensity, "a stage's discharge density");
+    requirePositive(s.suctionDensity, "a stage's suction density");
+    const double torque = s.power / speed;  // N m: C P_r / N in API's units
+    sum += kCentrifugalStageFactor * torque / (s.diameter * s.tipWidth) *
+           (s.dischargeDensity / s.suctionDensity);
+  }
+  return sum;
+}
+
+LevelOneResult levelOneStability(const Model& model, const RotorOptions& options, int node,
+                                 double speed, double anticipated, double tolerance,
+                                 int samples) {
+  if (!(anticipated > 0) || !std::isfinite(anticipated))
+    throw std::invalid_argument("API 684 Level I: Qa must be > 0");
+  RotorSystem system(model, options.damping);
+  QuadraticEigenSolver solver;
+  LevelOneResult out;
+  out.speed = speed;
+  out.node = node;
+  out.anticipated = anticipated;
+  const auto at = [&](double q) {
+    system.setCrossCoupling(node, q);
+    return worstOf(solveRotorModes(system, speed, options, solver, false).modes);
+  };
+
+  // 1. Without added cross-coupling, and with Qa.
+  const Worst base = at(0);
+  out.baseLogDecrement = base.logDecrement;
+  const Worst withQa = at(anticipated);
+  out.logDecrementAtQa = withQa.logDecrement;
+  out.frequencyHzAtQa = withQa.frequencyHz;
+
+  // 2. Q0: a bracket [lo, hi] with the growth rate <= 0 at lo and > 0 at hi, then its root.
+  if (base.growth >= 0) {  // no margin at all: Q0 = 0
+    out.found = true;
+    out.frequencyHzAtQ0 = base.frequencyHz;
+    out.whirlAtQ0 = base.whirl;
+  } else {
+    double lo = 0, hi = anticipated;
+    Worst fLo = base, fHi = withQa;
+    out.evaluations = 2;
+    for (int i = 0; i < kDoublings && !(fHi.growth > 0); ++i) {
+      lo = hi;
+      fLo = fHi;
+      hi *= 2;
+      fHi = at(hi);
+      ++out.evaluations;
+    }
+    if (fHi.growth > 0) {
+      Worst last;
+      const SpeedRoot root = speedRoot(
+          [&](double q) {
+            last = at(q);
+            return last.growth;
+          },
+          lo, fLo.growth, hi, fHi.growth, tolerance);
+      if (root.evaluations == 0) last = at(root.speed);
+      out.evaluations += std::max(root.evaluations, 1);
+      out.found = true;
+      out.zeroDecrement = root.speed;
+      out.frequencyHzAtQ0 = last.frequencyHz;
+      out.whirlAtQ0 = last.whirl;
+    }
+  }
+  out.ratio = out.found ? out.zeroDecrement / anticipated
+                        : std::numeric_limits<double>::infinity();
+  out.mapDecides = out.ratio >= kLevelOneMinimumRatio && out.ratio < kLevelOneRegionRatio;
+  out.pass = out.logDecrementAtQa >= kLevelOneLogDecrement && out.ratio >= kLevelOneMinimumRatio;
+
+  // 3. The curve for the chart.
+  const double top = 1.5 * std::max(out.found ? out.zeroDecrement : 0.0, anticipated);
+  for (int i = 0; i <= samples; ++i) {
+    const double q = top * i / std::max(samples, 1);
+    out.curve.push_back({q, at(q).logDecrement});
+  }
+  return out;
+}
+
+}  // namespace beamrotor
