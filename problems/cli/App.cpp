@@ -122,6 +122,11 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       "--full-tables", fullTables,
       "a long line's fields table at every station (5 an element), not thinned to "
       "about 4000 stations");
+  bool allCases = false;
+  CLI::Option* allCasesFlag = solveCmd->add_flag(
+      "--all-cases", allCases,
+      "statics with load combinations: a VTK file for every load case and combination, not "
+      "only for the combinations that govern an extreme");
   bool pointFiles = false;
   CLI::Option* pointFilesFlag = solveCmd->add_flag(
       "--point-files", pointFiles,
@@ -334,6 +339,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   if (!charts.empty()) solve.output.charts = chartFormatNamed(charts);
   if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
   if (fullTablesFlag->count() > 0) solve.output.fullTables = fullTables;
+  if (allCasesFlag->count() > 0) solve.output.allCases = allCases;
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);

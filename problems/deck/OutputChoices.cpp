@@ -41,6 +41,7 @@ OutputChoices chooseOutput(const DeckOutput& deck, const DeckOutput& commandLine
     if (source->charts) chosen.charts = *source->charts;
     if (source->pointFiles) chosen.pointFiles = *source->pointFiles;
     if (source->fullTables) chosen.fullTables = *source->fullTables;
+    if (source->allCases) chosen.allCases = *source->allCases;
   }
   return chosen;
 }

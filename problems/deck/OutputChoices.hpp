@@ -1,6 +1,7 @@
 // What a results directory holds besides results.json and the tables: charts in which format,
-// and a sweep's results per value. A deck's `output:` block chooses, the command line
-// (`--charts`, `--point-files`) overrides it.
+// a sweep's results per value, which load cases get their own files. A deck's `output:` block
+// chooses, the command line (`--charts`, `--point-files`, `--full-tables`, `--all-cases`)
+// overrides it.
 #pragma once
 
 #include <optional>
@@ -27,6 +28,9 @@ struct OutputChoices {
   /// A long line's fields table at every station (5 an element), not thinned to what a chart
   /// and a reader need (ThinnedStations.hpp).
   bool fullTables = false;
+  /// Statics with combinations: every load case's and combination's own VTK file, not only
+  /// those of the combinations that govern (writtenCases, CaseEnvelope.hpp).
+  bool allCases = false;
 };
 
 /// The choices a deck's `output:` block makes; each unset one leaves the default.
@@ -34,6 +38,7 @@ struct DeckOutput {
   std::optional<ChartFormat> charts;
   std::optional<bool> pointFiles;
   std::optional<bool> fullTables;
+  std::optional<bool> allCases;
 };
 
 /// The deck's choices over the defaults, then the command line's over them.

@@ -43,11 +43,14 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
   return table;
 }
 
-CsvTable springForcesTable(const std::string& title, const Model& model,
-                           const StaticResult& statics) {
-  CsvTable table(title, {{"spring", ""}, {"at", ""}, {"component", ""}, {"force", "N"},
+namespace {
+
+/// One row per component of `forces`, the first column named `whose`.
+CsvTable forceComponentsTable(const std::string& title, const Model& model,
+                              const std::vector<ReactionComponent>& forces, const char* whose) {
+  CsvTable table(title, {{whose, ""}, {"at", ""}, {"component", ""}, {"force", "N"},
                          {"moment", "N m"}});
-  for (const ReactionComponent& f : statics.elementForces) {
+  for (const ReactionComponent& f : forces) {
     std::string at = model.nameOf(f.node);
     if (at.empty()) at = "node " + std::to_string(f.node);
     std::vector<CsvCell> row{f.support, at, std::string(reactionName(f.dof))};
@@ -58,6 +61,17 @@ CsvTable springForcesTable(const std::string& title, const Model& model,
     table.addRow(std::move(row));
   }
   return table;
+}
+
+}  // namespace
+
+CsvTable springForcesTable(const std::string& title, const Model& model,
+                           const StaticResult& statics) {
+  return forceComponentsTable(title, model, statics.elementForces, "spring");
+}
+
+CsvTable reactionsTable(const std::string& title, const Model& model, const StaticResult& statics) {
+  return forceComponentsTable(title, model, statics.reactions, "support");
 }
 
 CsvTable modesTable(const std::string& title, const ModalResult& modal) {
