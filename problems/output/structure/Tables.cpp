@@ -45,19 +45,25 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
 
 namespace {
 
-/// One row per component of `forces`, the first column named `whose`.
+/// One row per component of `forces`, the first column named `whose`; the force (N) or moment
+/// (N m) column left out when no component is of its kind and not `bothColumns` (a column
+/// with no number at all reads as text in NumPy's genfromtxt).
 CsvTable forceComponentsTable(const std::string& title, const Model& model,
-                              const std::vector<ReactionComponent>& forces, const char* whose) {
-  CsvTable table(title, {{whose, ""}, {"at", ""}, {"component", ""}, {"force", "N"},
-                         {"moment", "N m"}});
+                              const std::vector<ReactionComponent>& forces, const char* whose,
+                              bool bothColumns) {
+  bool anyForce = bothColumns, anyMoment = bothColumns;
+  for (const ReactionComponent& f : forces) (isRotation(f.dof) ? anyMoment : anyForce) = true;
+  std::vector<CsvColumn> columns{{whose, ""}, {"at", ""}, {"component", ""}};
+  if (anyForce) columns.push_back({"force", "N"});
+  if (anyMoment) columns.push_back({"moment", "N m"});
+  CsvTable table(title, columns);
   for (const ReactionComponent& f : forces) {
     std::string at = model.nameOf(f.node);
     if (at.empty()) at = "node " + std::to_string(f.node);
     std::vector<CsvCell> row{f.support, at, std::string(reactionName(f.dof))};
-    if (isRotation(f.dof))
-      row.insert(row.end(), {std::monostate{}, f.value});
-    else
-      row.insert(row.end(), {f.value, std::monostate{}});
+    const bool moment = isRotation(f.dof);
+    if (anyForce) row.push_back(moment ? CsvCell{std::monostate{}} : CsvCell{f.value});
+    if (anyMoment) row.push_back(moment ? CsvCell{f.value} : CsvCell{std::monostate{}});
     table.addRow(std::move(row));
   }
   return table;
@@ -67,11 +73,11 @@ CsvTable forceComponentsTable(const std::string& title, const Model& model,
 
 CsvTable springForcesTable(const std::string& title, const Model& model,
                            const StaticResult& statics) {
-  return forceComponentsTable(title, model, statics.elementForces, "spring");
+  return forceComponentsTable(title, model, statics.elementForces, "spring", true);
 }
 
 CsvTable reactionsTable(const std::string& title, const Model& model, const StaticResult& statics) {
-  return forceComponentsTable(title, model, statics.reactions, "support");
+  return forceComponentsTable(title, model, statics.reactions, "support", false);
 }
 
 CsvTable modesTable(const std::string& title, const ModalResult& modal) {
