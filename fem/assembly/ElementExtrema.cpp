@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "fem/assembly/Polynomial.hpp"
 #include "fem/assembly/Recovery.hpp"
@@ -12,10 +13,72 @@ namespace beamrotor {
 
 namespace {
 
-/// Appends the zeros of p in [0, 1] and those of its derivatives. Between consecutive zeros
-/// of p' the polynomial is monotone, so each sign change there holds exactly one zero, found
-/// by bisection to the last bit; a zero of even multiplicity is a zero of p' and so already
-/// among them.
+/// Appends the zeros in [0, 1] of c0 + c1 s + c2 s^2 (c2 != 0) and its vertex there, in closed
+/// form: q = -(c1 + sign(c1) sqrt(c1^2 - 4 c0 c2)) / 2 gives the zeros q / c2 and c0 / q without
+/// the cancellation of the textbook formula (Press et al., Numerical Recipes, 3rd ed., 5.6). The
+/// vertex -c1 / (2 c2) is the zero of the derivative: a double zero, or a near-double one that
+/// round-off pushed to a slightly negative discriminant, lies there.
+void quadraticZeros(double c0, double c1, double c2, std::vector<double>& out) {
+  const auto keep = [&](double s) {
+    if (s >= 0 && s <= 1) out.push_back(s);
+  };
+  keep(-c1 / (2 * c2));
+  const double discriminant = c1 * c1 - 4 * c0 * c2;
+  if (!(discriminant > 0)) return;  // also NaN
+  const double q = -0.5 * (c1 + std::copysign(std::sqrt(discriminant), c1));
+  keep(q / c2);
+  if (q != 0) keep(c0 / q);
+}
+
+/// p and its derivative at s (Horner, both at once), and the bound on the round-off of the
+/// value, 2 n eps sum |c_k| s^k for degree n (Higham, Accuracy and Stability of Numerical
+/// Algorithms, 2nd ed., 5.1).
+struct HornerValue {
+  double value = 0, slope = 0, roundOff = 0;
+};
+HornerValue valueAndSlope(const Polynomial& p, double s) {
+  HornerValue h;
+  double size = 0;
+  for (auto c = p.rbegin(); c != p.rend(); ++c) {
+    h.slope = h.slope * s + h.value;
+    h.value = h.value * s + *c;
+    size = size * std::abs(s) + std::abs(*c);
+  }
+  h.roundOff = 2 * double(p.size()) * std::numeric_limits<double>::epsilon() * size;
+  return h;
+}
+
+/// The zero of p in [lo, hi], where p is monotone and changes sign (p(lo) < 0 when rising):
+/// Newton's method kept inside the shrinking bracket, a bisection whenever its step would
+/// leave it or would not halve the step before last (Press et al., Numerical Recipes, rtsafe),
+/// so it never converges slower than bisection. Ends where the value is within its own
+/// round-off of zero (no place nearer is known in double precision), when the step is below
+/// round-off of s, or when the bracket holds no double between its ends: a few steps where
+/// bisection took about 53.
+double zeroInBracket(const Polynomial& p, double lo, double hi, bool rising) {
+  double s = 0.5 * (lo + hi), stepBeforeLast = hi - lo, step = stepBeforeLast;
+  for (int i = 0; i < 200; ++i) {
+    const HornerValue h = valueAndSlope(p, s);
+    if (std::abs(h.value) <= h.roundOff) return s;
+    if (std::isnan(h.value)) break;
+    ((h.value < 0) == rising ? lo : hi) = s;
+    double next = s - h.value / h.slope;
+    if (!(next > lo && next < hi) || std::abs(next - s) > 0.5 * std::abs(stepBeforeLast))
+      next = 0.5 * (lo + hi);  // out of the bracket, not converging fast, or a zero slope
+    if (next <= lo || next >= hi) break;  // lo and hi adjacent doubles
+    stepBeforeLast = step;
+    step = next - s;
+    const bool settled = std::abs(step) <= 4 * std::numeric_limits<double>::epsilon() * s;
+    s = next;
+    if (settled) break;
+  }
+  return s;
+}
+
+/// Appends the zeros of p in [0, 1] and those of its derivatives. Degrees 1 and 2 in closed
+/// form; above, between consecutive zeros of p' (found the same way, down to the closed forms)
+/// the polynomial is monotone, so each sign change there holds exactly one zero, found by
+/// zeroInBracket; a zero of even multiplicity is a zero of p' and so already among them.
 void collectZeros(Polynomial p, std::vector<double>& out) {
   while (!p.empty() && p.back() == 0) p.pop_back();
   if (p.size() < 2) return;  // a constant: no isolated zero
@@ -24,23 +87,20 @@ void collectZeros(Polynomial p, std::vector<double>& out) {
     if (s >= 0 && s <= 1) out.push_back(s);
     return;
   }
+  if (p.size() == 3) return quadraticZeros(p[0], p[1], p[2], out);
   std::vector<double> knots{0, 1};
   collectZeros(derivativeOf(p), knots);
   std::sort(knots.begin(), knots.end());
   out.insert(out.end(), knots.begin() + 1, knots.end() - 1);
+  double atLo = valueAt(p, knots[0]);
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
-    double lo = knots[k], hi = knots[k + 1];
-    const double atLo = valueAt(p, lo), atHi = valueAt(p, hi);
+    const double lo = knots[k], hi = knots[k + 1];
+    const double atHi = valueAt(p, hi);
     if (atLo == 0) out.push_back(lo);
     if (atHi == 0) out.push_back(hi);
-    if (!(atLo < 0 && atHi > 0) && !(atLo > 0 && atHi < 0)) continue;  // also NaN
-    const bool rising = atLo < 0;
-    for (int i = 0; i < 200 && lo < hi; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid <= lo || mid >= hi) break;  // adjacent doubles
-      ((valueAt(p, mid) < 0) == rising ? lo : hi) = mid;
-    }
-    out.push_back(0.5 * (lo + hi));
+    if ((atLo < 0 && atHi > 0) || (atLo > 0 && atHi < 0))  // not NaN
+      out.push_back(zeroInBracket(p, lo, hi, atLo < 0));
+    atLo = atHi;
   }
 }
 

@@ -1,9 +1,10 @@
 // The envelope of a member's stress resultants over several static solutions of one structure
 // (the combinations of load cases): at each place along the member, the largest and smallest
 // value of N, Vy, Vz, T, My, Mz over the solutions and which solution gives it. The places are
-// evenly spaced stations plus every place inside an element where one solution's resultant
-// has a stationary point: the envelope of polynomials peaks only where one of them does (or
-// at an element end), so the largest and smallest envelope values are exact, not sampled.
+// evenly spaced stations plus, on each element, the places of each resultant's largest and
+// smallest value over all the solutions (found from each solution's polynomial: at an end or
+// where its derivative vanishes), so the envelope's largest and smallest value on every
+// element are exact, not sampled, at a cost linear in the solutions.
 #pragma once
 
 #include <array>
@@ -27,8 +28,9 @@ struct EnvelopeStation {
 };
 
 /// The envelope along member `elements` (line elements from its start to its end) over
-/// `solutions` (at least one, all of one structure: LoadedSolution, Recovery.hpp), at intervalsPerElement + 1 even places per element (ends
-/// included) and every interior stationary point of a solution's resultant, in order.
+/// `solutions` (at least one, all of one structure: LoadedSolution, Recovery.hpp), at
+/// intervalsPerElement + 1 even places per element (ends included) and, on each element, the
+/// places of each resultant's largest and smallest value over the solutions, in order.
 std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& solutions,
                                             const std::vector<int>& elements,
                                             int intervalsPerElement);

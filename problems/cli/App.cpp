@@ -138,6 +138,11 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
         }
       })
       ->type_name("Q=UNIT,...");
+  bool allCases = false;
+  CLI::Option* allCasesFlag = solveCmd->add_flag(
+      "--all-cases", allCases,
+      "statics with load combinations: a VTK file for every load case and combination, not "
+      "only for the combinations that govern an extreme");
   bool pointFiles = false;
   CLI::Option* pointFilesFlag = solveCmd->add_flag(
       "--point-files", pointFiles,
@@ -351,6 +356,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   if (!units.empty()) solve.output.units = parseOutputUnits(units);
   if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
   if (fullTablesFlag->count() > 0) solve.output.fullTables = fullTables;
+  if (allCasesFlag->count() > 0) solve.output.allCases = allCases;
   try {
     if (solveCmd->parsed()) return solveCommand(solve, out, err);
     if (benchCmd->parsed()) return benchCommand(bench, benchJsonPath, out, err);

@@ -109,7 +109,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     std::optional<PreparedRun> prepared;  // the run's extremes, computed once for the summary too
     try {
       if (s.run) {
-        prepared = prepareRun(*s.run, choices.fullTables, choices.units);
+        prepared = prepareRun(*s.run, choices);
         writePreparedRun(*prepared, dir, choices, also);
       } else
         writeSweepOutputs(*s.sweep, dir, choices, also);

@@ -42,6 +42,7 @@ OutputChoices chooseOutput(const DeckOutput& deck, const DeckOutput& commandLine
     if (source->pointFiles) chosen.pointFiles = *source->pointFiles;
     if (source->fullTables) chosen.fullTables = *source->fullTables;
     chosen.units = chosen.units.overlaid(source->units);
+    if (source->allCases) chosen.allCases = *source->allCases;
   }
   return chosen;
 }

@@ -1,6 +1,8 @@
 // What a results directory holds besides results.json and the tables: charts in which format,
-// and a sweep's results per value. A deck's `output:` block chooses, the command line
-// (`--charts`, `--point-files`, `--units`) overrides it.
+// What a results directory holds besides results.json and the tables: charts in which format,
+// a sweep's results per value, which load cases get their own files, and the units shown. A
+// deck's `output:` block chooses, the command line (`--charts`, `--point-files`,
+// `--full-tables`, `--all-cases`, `--units`) overrides it.
 #pragma once
 
 #include <optional>
@@ -31,6 +33,9 @@ struct OutputChoices {
   bool fullTables = false;
   /// The units of the summary, tables and charts; none set: each writer's own.
   OutputUnits units = {};
+  /// Statics with combinations: every load case's and combination's own VTK file, not only
+  /// those of the combinations that govern (writtenCases, CaseEnvelope.hpp).
+  bool allCases = false;
 };
 
 /// The choices a deck's `output:` block makes; each unset one leaves the default.
@@ -39,6 +44,7 @@ struct DeckOutput {
   std::optional<bool> pointFiles;
   std::optional<bool> fullTables;
   OutputUnits units = {};  ///< the command line's set over the deck's, quantity by quantity
+  std::optional<bool> allCases;
 };
 
 /// The deck's choices over the defaults, then the command line's over them.

@@ -7,7 +7,7 @@ namespace beamrotor::reader {
 void readOutput(Context& c) {
   auto block = c.root.get("output");
   if (!block || block->isNull()) return;
-  block->allowOnly({"charts", "point_files", "full_tables", "units"}, "output");
+  block->allowOnly({"charts", "point_files", "full_tables", "units", "all_cases"}, "output");
   if (auto charts = block->get("charts"))
     c.deck.output.charts = chartFormatNamed(charts->choice(chartFormatNames()));
   if (auto pointFiles = block->get("point_files")) c.deck.output.pointFiles = pointFiles->boolean();
@@ -20,6 +20,7 @@ void readOutput(Context& c) {
         unit.fail(e.what());
       }
   }
+  if (auto allCases = block->get("all_cases")) c.deck.output.allCases = allCases->boolean();
 }
 
 }  // namespace beamrotor::reader

@@ -232,7 +232,6 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
     for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
       cases.push_back(
           caseJson(model, dofs, carried, casesOf(a)[i], extremes.cases.at(i), stem, detail));
-      cases.back()["vtu"] = caseVtu(stem, int(cases.size()));
     }
     out["cases"] = std::move(cases);
     out["files"]["cases_csv"] = casesCsv(stem);

@@ -70,9 +70,8 @@ void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, con
     draw(p.stations, *p.extremes->own, "", frameShapeChart(p.stem));
   if (p.envelopeStations.empty()) return;
   const std::vector<CaseOutcome>& cases = casesOf(a);
-  const CaseEnvelope envelope = caseEnvelope(model, cases, p.extremes->cases);
-  for (int k : governingCombinations(envelope, planar))
-    draw(p.cases.at(k).stations, p.extremes->cases.at(k), ", combination " + cases[k].name,
+  for (int k : governingCombinations(*p.envelope, planar))
+    draw(p.caseAt(k)->stations, p.extremes->cases.at(k), ", combination " + cases[k].name,
          caseFrameChart(p.stem, k + 1));
   std::vector<std::string> names;
   for (const CaseOutcome& c : cases)
@@ -98,15 +97,17 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   p.fields->write(dir / fieldsCsv(p.stem));
   if (p.caseTable) p.caseTable->write(dir / casesCsv(p.stem));
   if (p.springs) p.springs->write(dir / springsCsv(p.stem));
+  if (p.reactions) p.reactions->write(dir / reactionsCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
     for (const CsvTable& table : *list) table.write(dir / table.title());
-  writeStaticVtu(dir / staticVtu(p.stem), {model, statics.displacement}, p.stations,
+  writeStaticVtu(dir / staticVtu(p.stem), {model, statics.displacement}, statics, p.stations,
                  p.extremes->own->peaks);
   if (!p.cases.empty()) {
     std::vector<PvdEntry> entries;
     for (const PreparedCase& c : p.cases) {
-      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.stations, c.extremes->peaks);
-      entries.push_back({double(entries.size() + 1), c.vtu});
+      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.outcome->statics, c.stations,
+                     c.extremes->peaks);
+      entries.push_back({double(c.index + 1), c.vtu});  // the case's number as its time step
     }
     writePvd(dir / casesPvd(p.stem), entries);
   }
@@ -198,7 +199,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
 
 void writeRunOutputs(const RunResult& run, const fs::path& dir, const OutputChoices& choices,
                      const AlsoWrite& also) {
-  writePreparedRun(prepareRun(run, choices.fullTables, choices.units), dir, choices, also);
+  writePreparedRun(prepareRun(run, choices), dir, choices, also);
 }
 
 void writePreparedRun(const PreparedRun& prepared, const fs::path& dir,
@@ -226,8 +227,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
   std::vector<Json> docs;
   std::vector<std::string> directories;  // empty names without point files
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    if (tables)
-      prepared.push_back(prepareRun(sweep.runs[i], choices.fullTables, choices.units));
+    if (tables) prepared.push_back(prepareRun(sweep.runs[i], choices));
     docs.push_back(tables ? prepared.back().doc : prepareRunDocument(sweep.runs[i]));
     directories.push_back(choices.pointFiles ? sweepValueDirectory(i, sweep.runs.size()) : "");
   }

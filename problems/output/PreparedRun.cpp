@@ -21,7 +21,8 @@ namespace beamrotor {
 
 std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() const {
   std::vector<std::pair<std::string, const CsvTable*>> all;
-  for (const std::optional<CsvTable>* t : {&fields, &springs, &modes, &shapes, &history})
+  for (const std::optional<CsvTable>* t :
+       {&fields, &reactions, &springs, &modes, &shapes, &history})
     if (*t) all.emplace_back((*t)->title(), &**t);
   if (caseTable) all.emplace_back(caseTable->title(), &*caseTable);
   if (rotor)
@@ -33,6 +34,12 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
   for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank, &torsion})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
   return all;
+}
+
+const PreparedCase* PreparedAnalysis::caseAt(int index) const {
+  for (const PreparedCase& c : cases)
+    if (c.index == index) return &c;
+  return nullptr;
 }
 
 namespace {
@@ -85,13 +92,16 @@ CsvTable loadCasesTable(const Json& analysis, const std::string& file, const Out
   return t;
 }
 
-/// Each case's VTK samples and, for a frame with combinations, the envelope along every member.
-void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis& p) {
-  for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
-    const CaseOutcome& c = casesOf(a)[i];
-    p.cases.push_back({&c, caseVtu(p.stem, int(i) + 1), sampleStatics(c.on(model)),
+/// The envelope over the combinations, the samples of the cases written (writtenCases) and,
+/// for a frame with combinations, the envelope along every member.
+void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis& p, bool planar,
+                  bool allCases) {
+  const std::vector<CaseOutcome>& cases = casesOf(a);
+  if (cases.empty()) return;
+  p.envelope = caseEnvelope(model, cases, p.extremes->cases);
+  for (int i : writtenCases(*p.envelope, cases.size(), planar, allCases))
+    p.cases.push_back({&cases[i], i, caseVtu(p.stem, i + 1), sampleStatics(cases[i].on(model)),
                        &p.extremes->cases.at(i)});
-  }
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
   for (const CaseOutcome& c : casesOf(a))
@@ -114,10 +124,12 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
 
 /// A static analysis sampled along the line, its fields and member tables, and its cases.
 void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticResult& statics,
-                   PreparedAnalysis& p, bool fullTables) {
+                   PreparedAnalysis& p, const OutputChoices& choices, bool planar) {
   p.stations = sampleStatics({model, statics.displacement});
   p.fields = staticFieldsTable(fieldsCsv(p.stem),
-                               fullTables ? p.stations : thinnedStations(p.stations));
+                               choices.fullTables ? p.stations : thinnedStations(p.stations));
+  if (!statics.reactions.empty())
+    p.reactions = reactionsTable(reactionsCsv(p.stem), model, statics);
   if (!statics.elementForces.empty())
     p.springs = springForcesTable(springsCsv(p.stem), model, statics);
   const StationsByElement byElement(p.stations, model.elements().size());
@@ -126,7 +138,7 @@ void prepareStatic(const Model& model, const AnalysisOutcome& a, const StaticRes
   else
     for (const auto& [name, elements] : model.members())
       p.members.push_back(memberTable(memberCsv(p.stem, name), model, elements, byElement));
-  prepareCases(model, a, p);
+  prepareCases(model, a, p, planar, choices.allCases);
 }
 
 /// Refuses non-finite numbers and analyses that would overwrite each other's files.
@@ -164,22 +176,28 @@ Json prepareRunDocument(const RunResult& run) {
   return checkedDocument(run, runExtremes(run));
 }
 
-PreparedRun prepareRun(const RunResult& run, bool fullTables, const OutputUnits& units) {
+PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
+  const OutputUnits& units = choices.units;
   // 1. Refuse non-finite numbers and analyses that would overwrite each other's files.
   requireWritable(run);
   const Model& model = *run.model;
+  const bool planar = run.dimension == "planar";
 
   // 2. The extremes of every static solution, then the samples along the line and every table.
   PreparedRun prepared{&run, runExtremes(run), {}, {}, units};
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
-    PreparedAnalysis p{&a, fileStem(a.name), {}, &prepared.extremes[i], {}, {}, {}, {},
-                       {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    PreparedAnalysis p;
+    p.outcome = &a;
+    p.stem = fileStem(a.name);
+    p.extremes = &prepared.extremes[i];
     std::visit(
         Overloaded{
-            [&](const StaticOutcome& r) { prepareStatic(model, a, r.statics, p, fullTables); },
+            [&](const StaticOutcome& r) {
+              prepareStatic(model, a, r.statics, p, choices, planar);
+            },
             [&](const SecondOrderResult& r) {
-              prepareStatic(model, a, r.secondOrder, p, fullTables);
+              prepareStatic(model, a, r.secondOrder, p, choices, planar);
             },
             [&](const ModalResult& r) {
               p.modes = modesTable(modesCsv(p.stem), r);
@@ -207,12 +225,15 @@ PreparedRun prepareRun(const RunResult& run, bool fullTables, const OutputUnits&
 
   // 3. results.json.
   prepared.doc = checkedDocument(run, prepared.extremes);
-  // 4. The load cases' table, read from the document's entries.
+  // 4. The VTK files of the cases written, and the load cases' table, read from the
+  //    document's entries.
   for (PreparedAnalysis& p : prepared.analyses)
     if (!casesOf(*p.outcome).empty())
-      for (const Json& entry : prepared.doc.at("analyses"))
-        if (entry.at("name") == p.outcome->name && entry.contains("cases"))
+      for (Json& entry : prepared.doc.at("analyses"))
+        if (entry.at("name") == p.outcome->name && entry.contains("cases")) {
+          for (const PreparedCase& c : p.cases) entry.at("cases").at(c.index)["vtu"] = c.vtu;
           p.caseTable = loadCasesTable(entry, casesCsv(p.stem), units);
+        }
   // 5. Every table in the user's units; results.json stays SI.
   for (PreparedAnalysis& p : prepared.analyses) showInUnits(p, units);
   return prepared;

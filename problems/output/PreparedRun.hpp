@@ -11,8 +11,10 @@
 
 #include "fem/assembly/MemberEnvelope.hpp"
 #include "problems/deck/OutputUnits.hpp"
+#include "problems/deck/OutputChoices.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/structure/LineSampling.hpp"
 #include "problems/output/structure/StaticExtremes.hpp"
 #include "problems/output/rotor/RotorOutput.hpp"
@@ -23,7 +25,8 @@ namespace beamrotor {
 /// A load case or combination of a static analysis, sampled for its VTK file.
 struct PreparedCase {
   const CaseOutcome* outcome = nullptr;
-  std::string vtu;                      ///< <stem>_case_NN.vtu
+  int index = -1;                       ///< into the analysis' cases (casesOf)
+  std::string vtu;                      ///< <stem>_case_NN.vtu, NN = index + 1
   std::vector<StaticStation> stations;
   const StaticExtremes* extremes = nullptr;  ///< its extremes (PreparedRun::extremes)
 };
@@ -37,6 +40,7 @@ struct PreparedAnalysis {
   const AnalysisExtremes* extremes = nullptr;
   std::optional<CsvTable> fields;       ///< statics: <stem>_fields.csv
   std::optional<CsvTable> springs;      ///< statics with springs or bearings: <stem>_springs.csv
+  std::optional<CsvTable> reactions;    ///< statics with supports: <stem>_reactions.csv
   std::optional<CsvTable> modes;   ///< modal: <stem>_modes.csv; buckling: <stem>_factors.csv
   std::optional<CsvTable> shapes;  ///< modal, buckling: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
@@ -48,13 +52,18 @@ struct PreparedAnalysis {
   /// <stem>_envelopes.csv (oneMembersTable); the envelope along each member they hold.
   std::vector<CsvTable> envelopes;
   std::vector<std::vector<EnvelopeStation>> envelopeStations;
-  std::vector<PreparedCase> cases;      ///< statics with load cases: each case's VTK samples
+  /// Statics with combinations: the envelope over them (caseEnvelope).
+  std::optional<CaseEnvelope> envelope;
+  /// Statics with load cases: the VTK samples of the cases written (writtenCases), in order.
+  std::vector<PreparedCase> cases;
   std::optional<CsvTable> caseTable;    ///< statics with load cases: <stem>_cases.csv
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
   std::vector<CsvTable> torsion;  ///< a train: interference, crossings, torques, response
 
   /// Every table this analysis has, each with its CSV file name, in writing order.
   std::vector<std::pair<std::string, const CsvTable*>> tables() const;
+  /// The prepared case of index `index` into the analysis' cases; nullptr when not written.
+  const PreparedCase* caseAt(int index) const;
 };
 
 struct PreparedRun {
@@ -65,12 +74,13 @@ struct PreparedRun {
   OutputUnits units;  ///< the units the tables are in (and the charts show)
 };
 
-/// Prepares run: a long line's fields table thinned (thinnedStations) unless `fullTables`,
-/// every table in `units` (inUnits; the document stays SI).
-/// Throws std::runtime_error naming the first non-finite number, or analyses whose files would
+/// Prepares run: a long line's fields table thinned (thinnedStations) unless
+/// `choices.fullTables`; with combinations only the governing ones sampled for their VTK files
+/// unless `choices.allCases` (writtenCases); every table in `choices.units` (inUnits; the
+/// document stays SI). results.json's `cases[i].vtu` names the files written. Throws
+/// std::runtime_error naming the first non-finite number, or analyses whose files would
 /// overwrite each other's.
-PreparedRun prepareRun(const RunResult& run, bool fullTables = false,
-                       const OutputUnits& units = {});
+PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices = {});
 
 /// Only the results.json document of run, checked as prepareRun checks it, without its tables
 /// (a long sweep's values, whose tables are not written).

@@ -130,7 +130,9 @@ class PythonRun {
   PythonRun(RunResult run, DeckOutput output) : run_(std::move(run)), output_(output) {
     // Tables in the output units chosen (the deck's, or solve(units=...)'s over them); the
     // results stay SI.
-    const PreparedRun prepared = prepareRun(run_, false, output_.units);
+    OutputChoices tablesIn;
+    tablesIn.units = output_.units;
+    const PreparedRun prepared = prepareRun(run_, tablesIn);
     results_ = toPython(prepared.doc);
     for (const PreparedAnalysis& a : prepared.analyses) {
       py::dict tables, units;

@@ -4,6 +4,7 @@
 // resultant making the quantity non-finite so that its check fails.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -162,6 +163,65 @@ TEST_SUITE("exact extrema") {
       CHECK(p.stress.s > 0);
       CHECK(p.stress.s < 1);
     }
+  }
+
+  TEST_CASE("the moment's peak in 3d from the closed forms and the bracketed Newton steps") {
+    // My and Mz quadratic with their peaks apart (uniform loads in both planes and different
+    // end moments): |M|^2 is quartic, its derivative a cubic whose bracket comes from the
+    // closed-form zeros of its derivative. Reference: a dense sampling refined about its best
+    // sample twice, 2e4 places each over a window 4e-4 and then 4e-8 wide: the last spacing
+    // is 2e-12, below which the peak's curvature changes |M| by 1e-23 of it (round-off).
+    const Material steel = Material::fromEnu("steel", 210e9, 0.3, 7850);
+    const Section section = Section::tube("tube", steel, 0.1, 0.006);
+    Model model;
+    test::uniformBeam(model, 1.0, std::make_shared<Section>(section), 1, DofSet::frame3d());
+    const LineElement& line = *asLine(model.elements().front());
+    SectionForceSeries forces;
+    // My = -3e3 + 1.7e4 s - 1.2e4 s^2 (peak at s = 0.708), Mz = 2e3 + 9e3 s - 1.1e4 s^2
+    // (peak at s = 0.409).
+    forces.c[0] = {0, 0, 0, 0, -3e3, 2e3};
+    forces.c[1] = {0, 0, 0, 0, 1.7e4, 9e3};
+    forces.c[2] = {0, 0, 0, 0, -1.2e4, -1.1e4};
+    const auto moment = [&](double s) {
+      const SectionForces f = forces.at(s);
+      return std::hypot(f.My, f.Mz);
+    };
+    double best = 0, bestAt = 0;
+    double from = 0, width = 1;
+    for (int round = 0; round < 3; ++round) {
+      for (int k = 0; k <= 20000; ++k) {
+        const double s = std::clamp(from + width * k / 20000.0, 0.0, 1.0);
+        if (moment(s) > best) best = moment(s), bestAt = s;
+      }
+      width = round == 0 ? 4e-4 : 4e-8;
+      from = bestAt - width / 2;
+    }
+    const ElementPeaks p = elementPeaks(line, forces);
+    CHECK(p.moment.s > 0.4);
+    CHECK(p.moment.s < 0.71);
+    // Both sides carry round-off of a few ulps of |M| (hypot, Horner; an ulp of 4530 is 2e-16
+    // of it): measured 2 ulps apart.
+    CHECK(std::abs(p.moment.value - best) <= 1e-15 * best);
+    // A flat peak fixes its place only to about the square root of round-off.
+    CHECK(std::abs(p.moment.s - bestAt) < 1e-7);
+  }
+
+  TEST_CASE("zeros in closed form and by bracketed Newton steps, to the last bits") {
+    // Quadratic 1e-3 (s - 0.2)(s - 0.9) and cubic (s - 0.1)(s - 0.45)(s - 0.8): each zero to
+    // round-off, where bisection would also reach it but in about 53 halvings. The cubic's
+    // Newton steps stop once the value is within its Horner round-off bound, 8 eps sum |c_k|
+    // s^k: over the slope at each zero (0.245, 0.1225, 0.245) at most 7e-16, 8.9e-15 and
+    // 1.3e-14 in its place.
+    const auto nearest = [](const std::vector<double>& zeros, double x) {
+      double d = 1;
+      for (double z : zeros) d = std::min(d, std::abs(z - x));
+      return d;
+    };
+    const std::vector<double> z2 = zerosInUnitInterval({1.8e-4, -1.1e-3, 1e-3});
+    for (double x : {0.2, 0.9}) CHECK(nearest(z2, x) <= 4e-16);
+    CHECK(nearest(z2, 0.55) <= 4e-16);  // the vertex, the derivative's zero
+    const std::vector<double> z3 = zerosInUnitInterval({-0.036, 0.485, -1.35, 1});
+    for (double x : {0.1, 0.45, 0.8}) CHECK(nearest(z3, x) <= 1.5e-14);
   }
 
   TEST_CASE("zeros in [0, 1]: simple and double zeros, to round-off") {

@@ -302,7 +302,10 @@ TEST_SUITE("load cases") {
   TEST_CASE("each case's VTK file carries the analysis' own arrays") {
     const Study s = test::solveDeckText(portalDeck(kPortalCases), "portal_cases.yaml");
     const fs::path dir = test::scratchDir("portal_case_vtk") / "out";
-    writeRunOutputs(*s.run, dir);
+    OutputChoices choices;
+    choices.allCases = true;  // every case's file, not only the governing combinations'
+    choices.charts = ChartFormat::none;
+    writeRunOutputs(*s.run, dir, choices);
     const auto arrays = [](const fs::path& file) {
       vtkNew<vtkXMLUnstructuredGridReader> reader;
       reader->SetFileName(file.string().c_str());

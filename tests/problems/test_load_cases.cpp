@@ -7,7 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
@@ -30,6 +34,7 @@
 #include "problems/deck/parse/DeckSource.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/output/Output.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
@@ -299,7 +304,7 @@ TEST_SUITE("load cases") {
     REQUIRE(combinations.size() == 3);
     const std::vector<int>& span1 = run.model->members().front().second;
     // Only the element ends as even places: the sagging peaks lie inside elements, so the
-    // envelope reaches them only through the stationary points it adds.
+    // envelope reaches them only through the places of the largest values it adds.
     const std::vector<EnvelopeStation> env = memberEnvelope(combinations, span1, 1);
     double sagging = -1e300, hogging = 1e300;
     std::string saggingBy, hoggingBy;
@@ -349,15 +354,55 @@ TEST_SUITE("load cases") {
     const std::string csv = solved.text(a["files"]["cases_csv"].get<std::string>());
     CHECK(csv.rfind("case,combination,quantity,at,component,value", 0) == 0);
     CHECK(csv.find("ULS_both,1,member,span1,Mz min,") != std::string::npos);
-    // Every case and combination has a VTK file whose displacements are the case's own, and
-    // a ParaView collection steps through them.
+    // By default only the combinations that govern get a VTK file (FORMAT.md): those that
+    // results.json's envelope names for the largest displacement, the largest stress and the
+    // largest and smallest Mz of any member.
+    std::set<std::string> governing{a["envelope"]["max_displacement"]["case"].get<std::string>(),
+                                    a["envelope"]["max_stress"]["case"].get<std::string>()};
+    for (const char* extreme : {"max", "min"}) {
+      std::string by;
+      double top = 0;
+      for (const auto& member : a["envelope"]["members"].items()) {
+        const double v = member.value()["Mz"][extreme]["value"].get<double>();
+        if (by.empty() || (std::string(extreme) == "max" ? v > top : v < top))
+          top = v, by = member.value()["Mz"][extreme]["case"].get<std::string>();
+      }
+      governing.insert(by);
+    }
+    CHECK(governing == std::set<std::string>{"ULS_both", "ULS_span1"});
+    std::set<std::string> written;
+    for (const auto& c : a["cases"])
+      if (c.contains("vtu")) {
+        written.insert(c["name"].get<std::string>());
+        CHECK(std::filesystem::exists(solved.dir / c["vtu"].get<std::string>()));
+      }
+    CHECK(written == governing);
+    for (int k = 1; k <= 6; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "static_case_%02d.vtu", k);
+      const bool governs = governing.count(a["cases"][k - 1]["name"].get<std::string>()) > 0;
+      CHECK(std::filesystem::exists(solved.dir / name) == governs);
+    }
+    const std::string pvd = solved.text(a["files"]["cases_pvd"].get<std::string>());
+    CHECK(pvd.find("case_04.vtu") != std::string::npos);  // ULS_both, the fourth case
+    CHECK(pvd.find("case_01.vtu") == std::string::npos);
+    // On request every case and combination has a VTK file whose displacements are the
+    // case's own, and the ParaView collection steps through them.
     const Study study = solveStudy(test::shippedDeckRequest("continuous_beam.yaml"));
     const RunResult& run = onlyRun(study);
     const auto& cases = casesOf(run.analyses.front());
-    REQUIRE(a["cases"].size() == cases.size());
+    const std::filesystem::path all = solved.dir.parent_path() / "all_cases";
+    OutputChoices choices;
+    choices.allCases = true;
+    choices.charts = ChartFormat::none;
+    writeRunOutputs(run, all, choices);
+    std::ifstream allJson(all / "results.json");
+    const nlohmann::json allDoc = nlohmann::json::parse(allJson);
+    const auto& allCases = allDoc["analyses"][0]["cases"];
+    REQUIRE(allCases.size() == cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
       vtkNew<vtkXMLUnstructuredGridReader> reader;
-      reader->SetFileName((solved.dir / a["cases"][i]["vtu"].get<std::string>()).string().c_str());
+      reader->SetFileName((all / allCases[i]["vtu"].get<std::string>()).string().c_str());
       reader->Update();
       vtkDataArray* u = reader->GetOutput()->GetPointData()->GetArray("displacement");
       REQUIRE(u != nullptr);
@@ -365,8 +410,10 @@ TEST_SUITE("load cases") {
       for (vtkIdType n = 0; n < u->GetNumberOfTuples(); ++n)
         CHECK(u->GetComponent(n, 1) == cases[i].statics.displacement(n, 1));
     }
-    CHECK(solved.text(a["files"]["cases_pvd"].get<std::string>()).find("case_06.vtu") !=
-          std::string::npos);
+    std::ifstream allPvd(all / "static_cases.pvd");
+    const std::string pvdAll((std::istreambuf_iterator<char>(allPvd)), {});
+    for (const char* file : {"case_01.vtu", "case_06.vtu"})
+      CHECK(pvdAll.find(file) != std::string::npos);
     // The envelope along each member: its extremes are the results.json envelope's, exactly.
     for (const char* member : {"span1", "span2"}) {
       const std::string env = solved.text(a["files"]["envelope_csv"][member].get<std::string>());

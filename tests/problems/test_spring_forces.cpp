@@ -12,6 +12,12 @@
 #include <sstream>
 #include <string>
 
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
 #include "problems/deck/parse/DeckError.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/run/Study.hpp"
@@ -254,6 +260,32 @@ TEST_SUITE("spring forces") {
     CHECK(rows[1][test::csvColumn(header, "component")] == "fy");
     CHECK(std::stod(rows[1][test::csvColumn(header, "force")]) ==
           doctest::Approx(kP / 2).epsilon(kExact));
+    // The support takes the other half: the reactions CSV in the same columns, and both as
+    // VTK point data whose sums balance the load (equilibrium), each half at one node.
+    const auto reactions = test::csvCells(dir / "out" / "static_reactions.csv");
+    REQUIRE(reactions.size() >= 2);
+    double fy = 0;
+    for (std::size_t i = 1; i < reactions.size(); ++i)
+      if (reactions[i][test::csvColumn(reactions.front(), "component")] == "fy")
+        fy += std::stod(reactions[i][test::csvColumn(reactions.front(), "force")]);
+    CHECK(fy == doctest::Approx(kP / 2).epsilon(kExact));
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((dir / "out" / "static.vtu").string().c_str());
+    reader->Update();
+    for (const char* array : {"reaction_force", "spring_force"}) {
+      CAPTURE(array);
+      vtkDataArray* f = reader->GetOutput()->GetPointData()->GetArray(array);
+      REQUIRE(f != nullptr);
+      double sum = 0;
+      int loaded = 0;
+      for (vtkIdType n = 0; n < f->GetNumberOfTuples(); ++n) {
+        sum += f->GetComponent(n, 1);
+        loaded += f->GetComponent(n, 1) != 0;
+      }
+      CHECK(sum == doctest::Approx(kP / 2).epsilon(kExact));
+      CHECK(loaded == 1);
+    }
+    CHECK(reader->GetOutput()->GetPointData()->GetArray("reaction_moment") != nullptr);
     std::filesystem::remove_all(dir);
   }
 

@@ -30,6 +30,10 @@ inline std::string fieldsCsv(const std::string& stem) {
 inline std::string springsCsv(const std::string& stem) {
   return stem + "_springs.csv";
 }
+/// Statics with supports: one row per reaction component.
+inline std::string reactionsCsv(const std::string& stem) {
+  return stem + "_reactions.csv";
+}
 /// Statics with load cases: one row per case or combination and reported value.
 inline std::string casesCsv(const std::string& stem) {
   return stem + "_cases.csv";

@@ -74,4 +74,12 @@ std::vector<int> governingCombinations(const CaseEnvelope& envelope, bool planar
   return out;
 }
 
+std::vector<int> writtenCases(const CaseEnvelope& envelope, std::size_t cases, bool planar,
+                              bool all) {
+  if (!all && !envelope.empty()) return governingCombinations(envelope, planar);
+  std::vector<int> every(cases);
+  for (std::size_t k = 0; k < cases; ++k) every[k] = int(k);
+  return every;
+}
+
 }  // namespace beamrotor

@@ -51,4 +51,11 @@ CaseEnvelope caseEnvelope(const Model& model, const std::vector<CaseOutcome>& ca
 /// combinations draw (FORMAT.md).
 std::vector<int> governingCombinations(const CaseEnvelope& envelope, bool planar);
 
+/// The cases (indices into the analysis' `cases` of count `cases`, in order) that get their
+/// own VTK file and samples: every case when `all` (output: all_cases) or when there are no
+/// combinations (nothing governs), else the governing combinations alone. The envelope, the
+/// summary and results.json cover every case either way.
+std::vector<int> writtenCases(const CaseEnvelope& envelope, std::size_t cases, bool planar,
+                              bool all);
+
 }  // namespace beamrotor

@@ -43,21 +43,41 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
   return table;
 }
 
-CsvTable springForcesTable(const std::string& title, const Model& model,
-                           const StaticResult& statics) {
-  CsvTable table(title, {{"spring", ""}, {"at", ""}, {"component", ""}, {"force", "N"},
-                         {"moment", "N m"}});
-  for (const ReactionComponent& f : statics.elementForces) {
+namespace {
+
+/// One row per component of `forces`, the first column named `whose`; the force (N) or moment
+/// (N m) column left out when no component is of its kind and not `bothColumns` (a column
+/// with no number at all reads as text in NumPy's genfromtxt).
+CsvTable forceComponentsTable(const std::string& title, const Model& model,
+                              const std::vector<ReactionComponent>& forces, const char* whose,
+                              bool bothColumns) {
+  bool anyForce = bothColumns, anyMoment = bothColumns;
+  for (const ReactionComponent& f : forces) (isRotation(f.dof) ? anyMoment : anyForce) = true;
+  std::vector<CsvColumn> columns{{whose, ""}, {"at", ""}, {"component", ""}};
+  if (anyForce) columns.push_back({"force", "N"});
+  if (anyMoment) columns.push_back({"moment", "N m"});
+  CsvTable table(title, columns);
+  for (const ReactionComponent& f : forces) {
     std::string at = model.nameOf(f.node);
     if (at.empty()) at = "node " + std::to_string(f.node);
     std::vector<CsvCell> row{f.support, at, std::string(reactionName(f.dof))};
-    if (isRotation(f.dof))
-      row.insert(row.end(), {std::monostate{}, f.value});
-    else
-      row.insert(row.end(), {f.value, std::monostate{}});
+    const bool moment = isRotation(f.dof);
+    if (anyForce) row.push_back(moment ? CsvCell{std::monostate{}} : CsvCell{f.value});
+    if (anyMoment) row.push_back(moment ? CsvCell{f.value} : CsvCell{std::monostate{}});
     table.addRow(std::move(row));
   }
   return table;
+}
+
+}  // namespace
+
+CsvTable springForcesTable(const std::string& title, const Model& model,
+                           const StaticResult& statics) {
+  return forceComponentsTable(title, model, statics.elementForces, "spring", true);
+}
+
+CsvTable reactionsTable(const std::string& title, const Model& model, const StaticResult& statics) {
+  return forceComponentsTable(title, model, statics.reactions, "support", false);
 }
 
 CsvTable modesTable(const std::string& title, const ModalResult& modal) {

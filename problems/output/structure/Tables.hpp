@@ -21,6 +21,10 @@ CsvTable staticFieldsTable(const std::string& title, const std::vector<StaticSta
 CsvTable springForcesTable(const std::string& title, const Model& model,
                            const StaticResult& statics);
 
+/// The support reactions (StaticResult::reactions) in the same columns, led by `support`;
+/// `force` or `moment` left out when no support holds a component of its kind.
+CsvTable reactionsTable(const std::string& title, const Model& model, const StaticResult& statics);
+
 /// One row per mode: mode (1-based), frequency (Hz), description, effective masses (kg) and
 /// their ratios to the total mass along ux uy uz (0 where the total is 0), energy shares.
 CsvTable modesTable(const std::string& title, const ModalResult& modal);

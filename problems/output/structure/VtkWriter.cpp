@@ -131,13 +131,38 @@ void writeVtu(vtkUnstructuredGrid* grid, const std::filesystem::path& file) {
   writeFile(file, [&](std::ostream& out) { out << text; });
 }
 
+namespace {
+
+/// Forces at nodes (reactions, or springs' forces) summed per node and component as two
+/// 3-component point arrays, `<what>_force` (fx fy fz) and `<what>_moment` (mx my mz).
+void addNodalForces(vtkUnstructuredGrid& grid, const std::vector<ReactionComponent>& forces,
+                    const std::string& what) {
+  const vtkIdType points = grid.GetNumberOfPoints();
+  auto force = doubleArray((what + "_force").c_str(), 3, points);
+  auto moment = doubleArray((what + "_moment").c_str(), 3, points);
+  force->Fill(0);
+  moment->Fill(0);
+  for (const ReactionComponent& f : forces) {
+    if (f.node < 0 || f.node >= points) continue;
+    const int k = int(f.dof);
+    vtkDoubleArray& a = k < 3 ? *force : *moment;
+    a.SetComponent(f.node, k % 3, a.GetComponent(f.node, k % 3) + f.value);
+  }
+  grid.GetPointData()->AddArray(force);
+  grid.GetPointData()->AddArray(moment);
+}
+
+}  // namespace
+
 void writeStaticVtu(const std::filesystem::path& file, const LoadedSolution& solution,
-                    const std::vector<StaticStation>& stations,
+                    const StaticResult& statics, const std::vector<StaticStation>& stations,
                     const std::vector<ElementPeaks>& peaks) {
   const Model& model = *solution.model;
   auto grid = lineGrid(model);
   grid->GetPointData()->AddArray(pointVectors("displacement", *solution.displacement, 0));
   grid->GetPointData()->AddArray(pointVectors("rotation", *solution.displacement, 3));
+  addNodalForces(*grid, statics.reactions, "reaction");
+  addNodalForces(*grid, statics.elementForces, "spring");
 
   // Section forces at mid-length: recovery with two intervals puts station 1 of 3 there.
   const std::vector<BeamStation> mid = recoverBeamFields(solution, 2);

@@ -22,9 +22,13 @@ namespace beamrotor {
 /// normal and transverse shear stress on the element, its `peaks`), the element's own end
 /// rotations `rotation_start`, `rotation_end` (rx ry rz, rad; at a hinge they differ from the
 /// node's; read from the end `stations`) and section properties `A` (m^2), `Iy`, `Iz` (m^4), `E`
-/// (Pa). Throws std::runtime_error when VTK cannot write the file.
+/// (Pa). Point data also `reaction_force` (N) and `reaction_moment` (N m), the supports'
+/// reactions at their nodes, and `spring_force`, `spring_moment`, the forces springs and
+/// bearings exert at their `at` nodes (`statics`' reactions and elementForces; zero elsewhere;
+/// ParaView's Glyph draws them as arrows). Throws std::runtime_error when VTK cannot write the
+/// file.
 void writeStaticVtu(const std::filesystem::path& file, const LoadedSolution& solution,
-                    const std::vector<StaticStation>& stations,
+                    const StaticResult& statics, const std::vector<StaticStation>& stations,
                     const std::vector<ElementPeaks>& peaks);
 
 /// One mode on the mesh: point data `mode_shape` (translations scaled by displayModeShape,

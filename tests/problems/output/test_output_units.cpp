@@ -154,7 +154,9 @@ TEST_SUITE("output units") {
     const Cantilever c;
     const RunResult run = cantileverRun(c);
     const PreparedRun si = prepareRun(run);
-    const PreparedRun shown = prepareRun(run, false, unitsOf("length=mm,force=kN"));
+    OutputChoices inMmAndKn;
+    inMmAndKn.units = unitsOf("length=mm,force=kN");
+    const PreparedRun shown = prepareRun(run, inMmAndKn);
     const CsvTable& a = tableOf(si, 0, "tip_fields.csv");
     const CsvTable& b = tableOf(shown, 0, "tip_fields.csv");
     CHECK(unitOf(b, "x") == "mm");
