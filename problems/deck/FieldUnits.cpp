@@ -46,6 +46,8 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
         return {dim::lengthPerAngle};
       return {dim::force};  // FA1, FB1, FA2, FB2
     }
+    case K::levelOne:  // qa and q0 are cross-coupled stiffnesses; their ratio and decrement none
+      return {q.property == "qa" || q.property == "q0" ? dim::stiffness : dim::none};
     case K::crankSlider:
       return crankReferenceUnit(q);
     case K::torsion:

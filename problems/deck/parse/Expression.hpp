@@ -111,7 +111,7 @@ class ExpressionEvaluator {
 /// point) share: each expression they met, keyed by its text and the number of names defined
 /// before it, compiled once into byte code that reads every name as a variable, with the
 /// dimension its first evaluation found. A later evaluator then evaluates the byte code once
-/// (in SI) instead of parsing the text in eight systems of units. Its value is bit for bit the
+/// (in SI) instead of parsing the text in nine systems of units. Its value is bit for bit the
 /// one the full evaluation gives: there every name is a constant and muparser folds the whole
 /// expression as it parses, operation by operation in evaluation order; the memo's byte code,
 /// its optimiser off (which would reorder products of variables and constants), performs the
