@@ -169,6 +169,7 @@ TorsionOutcome runTrain(const Deck& deck, const TorsionSpec& spec) {
   options.modes = spec.modes;
   options.shift = spec.shiftGiven ? spec.shift : freeTrainShift(train);
   out.modes = solveModes(*model, options);
+  zeroRigidRotations(out.modes);
   // Speeds over the reference shaft's.
   const std::vector<double> toFirst = shaftSpeedRatios(train);
   for (std::size_t i = 0; i < train.shafts.size(); ++i) {
@@ -216,6 +217,7 @@ TorsionOutcome runTorsion(const Deck& deck, const TorsionSpec& spec) {
   options.modes = spec.modes;
   options.shift = spec.shiftGiven ? spec.shift : out.free ? freeTrainShift(train) : 0;
   out.modes = solveModes(*out.model, options);
+  zeroRigidRotations(out.modes);
   return out;
 }
 

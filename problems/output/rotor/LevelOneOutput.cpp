@@ -19,7 +19,7 @@ ChartScript levelOneDiagram(const std::string& caption, const std::string& chart
   // Cross-coupling drawn in MN/m: the curve's values are N/m.
   body << "  set encoding utf8\n"
        << panelLayout(1, 1, caption, width, height) << "  set grid\n"
-       << "  set key outside below\n"
+       << "  set key inside top right box opaque\n  set autoscale xfix\n"
        << "  set xlabel 'added cross-coupling Q [MN/m]'\n"
        << "  set ylabel 'least log decrement'\n"
        << "  set arrow 1 from first " << number(r.anticipated / 1e6)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iterator>
 #include <optional>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,14 +34,39 @@ bool anyNonZero(const CsvTable& table, const std::string& column) {
 }
 
 /// Dashed vertical lines at the markers in every panel; names above the first panel only.
-/// Their places (m) are multiplied by `factor`, into the x axis' unit.
+/// Their places (m) are multiplied by `factor`, into the x axis' unit. A name that would print
+/// over the one before it (points close together, or shafts laid end to end) is left out, its
+/// line kept; the names at the ends of the line are set inside the plot's width.
 std::string markerCommands(const std::vector<ChartMarker>& markers, double factor) {
   std::ostringstream s;
   for (const ChartMarker& m : markers)
     s << "  set arrow from first " << number(m.x * factor) << ", graph 0 to first "
-      << number(m.x * factor) << ", graph 1 nohead dashtype 2 linecolor rgb 'gray50'\n"
-      << "  set label " << gnuplotText(m.name) << " at first " << number(m.x * factor)
-      << ", graph 1 offset 0,0.7 center textcolor rgb '#303030'\n";
+      << number(m.x * factor) << ", graph 1 nohead dashtype 2 linecolor rgb 'gray50'\n";
+  if (markers.empty()) return s.str();
+  std::vector<ChartMarker> inOrder = markers;
+  std::stable_sort(inOrder.begin(), inOrder.end(),
+                   [](const ChartMarker& a, const ChartMarker& b) { return a.x < b.x; });
+  const double lo = inOrder.front().x, hi = inOrder.back().x;
+  // A chart's plot is about 110 characters of the label font wide (900 pixels; narrower
+  // panels hold names spread as far apart).
+  const double character = (hi > lo ? hi - lo : 1.0) / 110;
+  double lastRight = -std::numeric_limits<double>::infinity();
+  for (const ChartMarker& m : inOrder) {
+    const double width = double(m.name.size()) * character;
+    double left = m.x - width / 2;
+    const char* justify = "center";
+    if (m.x - lo < width / 2) {
+      left = m.x;
+      justify = "left";
+    } else if (hi - m.x < width / 2) {
+      left = m.x - width;
+      justify = "right";
+    }
+    if (left < lastRight + character) continue;  // it would print over the name before it
+    lastRight = left + width;
+    s << "  set label " << gnuplotText(m.name) << " at first " << number(m.x * factor)
+      << ", graph 1 offset 0,0.7 " << justify << " textcolor rgb '#303030'\n";
+  }
   return s.str();
 }
 
