@@ -186,7 +186,7 @@ void readContacts(Context& c) {
 /// `diaphragms:` (points following a master in a plane: its two translations and the rotation
 /// about its normal, as far as the model carries them).
 void readRigidLinks(Context& c) {
-  std::vector<std::string> names;
+  TakenNames names;
   const auto tie = [&](const Field& f, const std::string& name, const Field& master,
                        const Field& slave, std::vector<Dof> dofs) {
     DeckRigidLink l{name, c.point(master).name, c.point(slave).name, std::move(dofs), f.place()};
