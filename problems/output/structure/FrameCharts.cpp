@@ -214,9 +214,9 @@ std::string axesSetup(bool planar, const Eigen::Vector3d& lowest, const Eigen::V
     out += "  set yrange [" + number(r.y0) + ":" + number(r.y1) + "]\n";
     return out;
   }
-  // The box a cube: gnuplot scales `view equal xyz` to the larger horizontal range, so a box
-  // taller than wide (a lone column, a tower) would stand out of its panel; a cube's
-  // projection fits the panel at the view's scale (viewLayout).
+  // The box no taller than wide, square in plan: gnuplot scales `view equal xyz` to the
+  // larger horizontal range, so a box taller than wide (a lone column, a tower) would stand
+  // out of its panel; a cube's projection fits the panel at the view's scale (viewLayout).
   const double bottom = low.y() - 0.2 * size, top = high.y() + 0.2 * size;
   const double half = std::max({0.5 * (high.x() - low.x()) + 0.2 * size,
                                 0.5 * (high.z() - low.z()) + 0.2 * size, 0.5 * (top - bottom)});
