@@ -17,6 +17,7 @@
 #include "fem/model/StandardSections.hpp"
 #include "problems/deck/catalog/SectionCatalog.hpp"
 #include "problems/deck/parse/DeckError.hpp"
+#include "problems/deck/parse/Units.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
@@ -248,6 +249,14 @@ const RoundRow kRoundRows[] = {
 };
 
 constexpr double kInch = 0.0254;
+constexpr double kIn2 = kInch * kInch, kIn3 = kIn2 * kInch, kIn4 = kIn2 * kIn2;
+
+// AISC's names for the catalogue's properties (its x-x is the catalogue's y-y).
+double usA(const CatalogProperties& p) { return p.A; }
+double usIx(const CatalogProperties& p) { return p.Iy; }
+double usIy(const CatalogProperties& p) { return p.Iz; }
+double usZx(const CatalogProperties& p) { return p.Wply; }
+double usJ(const CatalogProperties& p) { return p.It; }
 
 /// How far a property can move when each printed dimension of the row moves by half a unit of
 /// its last printed digit (to first order, the sum of the moves one at a time): the printed
@@ -440,6 +449,8 @@ supports:
     CHECK(w.designation == "W14X90");
     CHECK(w.dim("kdes") == 1.31);
     CHECK(w.metres("d") == doctest::Approx(14.0 * 0.0254).epsilon(1e-15));  // read in inches
+    CHECK(w.unit == findUnit("in")->si);  // the deck's inch
+    CHECK(entry("IPE300").unit == findUnit("mm")->si);
     CHECK(entry("HSS6.625X0.280").dim("t_des") == 0.26);
     const CatalogEntry& ipe = entry("IPE 300");
     CHECK(ipe.dim("h") == 300);
@@ -590,19 +601,13 @@ supports:
     // (99 lb/ft at 490 lb/ft^3 is 29.1 in^2). Allowed beyond the spread for A: 0.1 %.
     constexpr double kWAreaGap = 1e-3;
     std::vector<Worst> worst;
-    const auto A = [](const CatalogProperties& p) { return p.A; };
-    const auto Ix = [](const CatalogProperties& p) { return p.Iy; };
-    const auto Iy = [](const CatalogProperties& p) { return p.Iz; };
-    const auto Zx = [](const CatalogProperties& p) { return p.Wply; };
-    const auto J = [](const CatalogProperties& p) { return p.It; };
-    const double in2 = kInch * kInch, in3 = in2 * kInch, in4 = in2 * in2;
     for (const UsRow& r : kWRows) {
       const CatalogEntry& e = entry(r.designation);
-      compareUs(e, "A", A, r.A, in2, thirdFigure, kWAreaGap, worst);
-      compareUs(e, "Ix", Ix, r.Ix, in4, thirdFigure, 0, worst);
-      compareUs(e, "Iy", Iy, r.Iy, in4, thirdFigure, 0, worst);
-      compareUs(e, "Zx", Zx, r.Zx, in3, thirdFigure, 0, worst);
-      compareUs(e, "J", J, r.J, in4, thirdFigure, kWTorsionGap, worst);
+      compareUs(e, "A", usA, r.A, kIn2, thirdFigure, kWAreaGap, worst);
+      compareUs(e, "Ix", usIx, r.Ix, kIn4, thirdFigure, 0, worst);
+      compareUs(e, "Iy", usIy, r.Iy, kIn4, thirdFigure, 0, worst);
+      compareUs(e, "Zx", usZx, r.Zx, kIn3, thirdFigure, 0, worst);
+      compareUs(e, "J", usJ, r.J, kIn4, thirdFigure, kWTorsionGap, worst);
     }
     report("W", worst);
   }
@@ -615,28 +620,22 @@ supports:
     // kHssTorsionGap.
     constexpr double kHssTorsionGap = 0.015;  // measured: up to 1.07 % (HSS8X4X1/2)
     std::vector<Worst> worst;
-    const auto A = [](const CatalogProperties& p) { return p.A; };
-    const auto Ix = [](const CatalogProperties& p) { return p.Iy; };
-    const auto Iy = [](const CatalogProperties& p) { return p.Iz; };
-    const auto Zx = [](const CatalogProperties& p) { return p.Wply; };
-    const auto J = [](const CatalogProperties& p) { return p.It; };
-    const double in2 = kInch * kInch, in3 = in2 * kInch, in4 = in2 * in2;
     for (const UsRow& r : kHssRows) {
       const CatalogEntry& e = entry(r.designation);
-      compareUs(e, "A", A, r.A, in2, wallOnly, 0, worst);
-      compareUs(e, "Ix", Ix, r.Ix, in4, wallOnly, 0, worst);
-      compareUs(e, "Iy", Iy, r.Iy, in4, wallOnly, 0, worst);
-      compareUs(e, "Zx", Zx, r.Zx, in3, wallOnly, 0, worst);
-      compareUs(e, "J", J, r.J, in4, wallOnly, kHssTorsionGap, worst);
+      compareUs(e, "A", usA, r.A, kIn2, wallOnly, 0, worst);
+      compareUs(e, "Ix", usIx, r.Ix, kIn4, wallOnly, 0, worst);
+      compareUs(e, "Iy", usIy, r.Iy, kIn4, wallOnly, 0, worst);
+      compareUs(e, "Zx", usZx, r.Zx, kIn3, wallOnly, 0, worst);
+      compareUs(e, "J", usJ, r.J, kIn4, wallOnly, kHssTorsionGap, worst);
     }
     report("HSS", worst);
     std::vector<Worst> round;
     for (const RoundRow& r : kRoundRows) {
       const CatalogEntry& e = entry(r.designation);
-      compareUs(e, "A", A, r.A, in2, wallOnly, 0, round);
-      compareUs(e, "I", Ix, r.I, in4, wallOnly, 0, round);
-      compareUs(e, "Z", Zx, r.Z, in3, wallOnly, 0, round);
-      compareUs(e, "J", J, r.J, in4, wallOnly, 0, round);
+      compareUs(e, "A", usA, r.A, kIn2, wallOnly, 0, round);
+      compareUs(e, "I", usIx, r.I, kIn4, wallOnly, 0, round);
+      compareUs(e, "Z", usZx, r.Z, kIn3, wallOnly, 0, round);
+      compareUs(e, "J", usJ, r.J, kIn4, wallOnly, 0, round);
     }
     report("HSS round", round);
   }

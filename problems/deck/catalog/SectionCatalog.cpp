@@ -10,7 +10,6 @@
 #include "fem/model/BendingModuli.hpp"
 #include "fem/model/StandardSections.hpp"
 #include "problems/deck/catalog/CatalogTables.hpp"
-#include "problems/deck/parse/Units.hpp"
 
 namespace beamrotor {
 
@@ -31,6 +30,17 @@ std::vector<std::string> splitCommas(const std::string& line) {
   return cells;
 }
 
+/// A table's length unit in metres. The sizes are the deck's units table's
+/// (problems/deck/parse/Units.cpp, which the catalogue may not include; the tests compare).
+double tableUnit(const CatalogTable& table, const std::string& name) {
+  if (name == "mm") return 1e-3;
+  if (name == "cm") return 1e-2;
+  if (name == "m") return 1;
+  if (name == "in") return 0.0254;
+  throw std::logic_error("catalogue table " + std::string(table.family) + ": unit '" + name +
+                         "' is not a length unit of the catalogue");
+}
+
 /// The rows of one table: comment lines start with '#', the first other line names the
 /// columns, the first column is the designation and the numeric columns are dimensions.
 void readTable(const CatalogTable& table, std::vector<CatalogEntry>& out) {
@@ -40,11 +50,7 @@ void readTable(const CatalogTable& table, std::vector<CatalogEntry>& out) {
   const std::string unitLine = "# unit: ";
   for (std::string line; std::getline(in, line);) {
     if (line.rfind(unitLine, 0) == 0) {
-      const std::optional<Unit> u = findUnit(line.substr(unitLine.size()));
-      if (!u || u->dimension != dim::length)
-        throw std::logic_error("catalogue table " + std::string(table.family) + ": '" + line +
-                               "' names no length unit");
-      unit = u->si;
+      unit = tableUnit(table, line.substr(unitLine.size()));
     }
     if (line.empty() || line.front() == '#') continue;
     const std::vector<std::string> cells = splitCommas(line);
