@@ -15,14 +15,12 @@ namespace beamrotor {
 
 namespace {
 
-constexpr double mm = 1e-3;
-
 CatalogShape shapeOf(std::string_view family) {
   if (family == "UPN") return CatalogShape::channel;
   if (family == "L") return CatalogShape::angle;
-  if (family == "CHS") return CatalogShape::circularHollow;
-  if (family == "RHS" || family == "SHS") return CatalogShape::rectangularHollow;
-  return CatalogShape::iSection;  // IPE, HEA, HEB, HEM
+  if (family == "CHS" || family == "HSS_round") return CatalogShape::circularHollow;
+  if (family == "RHS" || family == "SHS" || family == "HSS") return CatalogShape::rectangularHollow;
+  return CatalogShape::iSection;  // IPE, HEA, HEB, HEM, W
 }
 
 std::vector<std::string> splitCommas(const std::string& line) {
@@ -32,12 +30,28 @@ std::vector<std::string> splitCommas(const std::string& line) {
   return cells;
 }
 
+/// A table's length unit in metres. The sizes are the deck's units table's
+/// (problems/deck/parse/Units.cpp, which the catalogue may not include; the tests compare).
+double tableUnit(const CatalogTable& table, const std::string& name) {
+  if (name == "mm") return 1e-3;
+  if (name == "cm") return 1e-2;
+  if (name == "m") return 1;
+  if (name == "in") return 0.0254;
+  throw std::logic_error("catalogue table " + std::string(table.family) + ": unit '" + name +
+                         "' is not a length unit of the catalogue");
+}
+
 /// The rows of one table: comment lines start with '#', the first other line names the
 /// columns, the first column is the designation and the numeric columns are dimensions.
 void readTable(const CatalogTable& table, std::vector<CatalogEntry>& out) {
   std::stringstream in{std::string(table.csv)};
   std::vector<std::string> header;
+  double unit = 1e-3;  // mm, unless a comment line names the table's unit
+  const std::string unitLine = "# unit: ";
   for (std::string line; std::getline(in, line);) {
+    if (line.rfind(unitLine, 0) == 0) {
+      unit = tableUnit(table, line.substr(unitLine.size()));
+    }
     if (line.empty() || line.front() == '#') continue;
     const std::vector<std::string> cells = splitCommas(line);
     if (header.empty()) {
@@ -52,6 +66,7 @@ void readTable(const CatalogTable& table, std::vector<CatalogEntry>& out) {
     e.designation = cells[0];
     e.family = std::string(table.family);
     e.shape = shapeOf(table.family);
+    e.unit = unit;
     for (std::size_t i = 1; i < cells.size(); ++i) {
       if (header[i] == "standard") continue;  // a note, not a dimension
       e.dims[header[i]] = std::stod(cells[i]);
@@ -101,17 +116,54 @@ const CatalogEntry* findCatalogEntry(std::string_view designation) {
 
 namespace {
 
+/// An I-section's dimensions in metres: h, b, tw, tf and the root radius r. The US W table
+/// prints d, bf and kdes, the flange's outer face to the web toe of the fillet (r = kdes - tf).
+struct IDims {
+  double h, b, tw, tf, r;
+};
+IDims iDims(const CatalogEntry& e) {
+  if (e.dims.contains("kdes"))
+    return {e.metres("d"), e.metres("bf"), e.metres("tw"), e.metres("tf"),
+            e.metres("kdes") - e.metres("tf")};
+  return {e.metres("h"), e.metres("b"), e.metres("tw"), e.metres("tf"), e.metres("r")};
+}
+
+/// A rectangular hollow section's dimensions in metres: h, b, t and the corner radii. The US
+/// HSS table prints H, B and the design wall t_des; AISC calculates with corner radii 2 t_des
+/// outside and t_des inside (Steel Construction Manual, Part 1, on HSS properties).
+struct HollowDims {
+  double h, b, t, rOut, rIn;
+};
+HollowDims hollowDims(const CatalogEntry& e) {
+  if (e.dims.contains("t_des")) {
+    const double t = e.metres("t_des");
+    return {e.metres("H"), e.metres("B"), t, 2 * t, t};
+  }
+  return {e.metres("h"), e.metres("b"), e.metres("t"), e.metres("r_out"), e.metres("r_in")};
+}
+
+/// A circular hollow section's outside diameter and wall in metres (US HSS: OD and t_des).
+std::pair<double, double> tubeDims(const CatalogEntry& e) {
+  if (e.dims.contains("t_des")) return {e.metres("OD"), e.metres("t_des")};
+  return {e.metres("D"), e.metres("t")};
+}
+
 /// The row's outline in the drawing axes of StandardSections (y along the depth h).
 std::vector<OutlineLoop> outlineOf(const CatalogEntry& e) {
-  const auto d = [&](const char* k) { return e.dim(k) * mm; };
+  const auto d = [&](const char* k) { return e.metres(k); };
   switch (e.shape) {
-    case CatalogShape::iSection: return iSectionOutline(d("h"), d("b"), d("tw"), d("tf"), d("r"));
+    case CatalogShape::iSection: {
+      const IDims i = iDims(e);
+      return iSectionOutline(i.h, i.b, i.tw, i.tf, i.r);
+    }
     case CatalogShape::channel:
       return channelOutline(d("h"), d("b"), d("tw"), d("tf"), d("r"), d("r_toe"),
                             e.dim("taper"));
     case CatalogShape::angle: return angleOutline(d("h"), d("b"), d("t"), d("r"), d("r_toe"));
-    case CatalogShape::rectangularHollow:
-      return hollowRectangleOutline(d("h"), d("b"), d("t"), d("r_out"), d("r_in"));
+    case CatalogShape::rectangularHollow: {
+      const HollowDims r = hollowDims(e);
+      return hollowRectangleOutline(r.h, r.b, r.t, r.rOut, r.rIn);
+    }
     case CatalogShape::circularHollow: break;
   }
   throw std::logic_error("a circular hollow section has no straight-sided outline");
@@ -120,19 +172,25 @@ std::vector<OutlineLoop> outlineOf(const CatalogEntry& e) {
 }  // namespace
 
 Section catalogSection(const CatalogEntry& e, std::string name, const Material& m) {
-  const auto d = [&](const char* k) { return e.dim(k) * mm; };
+  const auto d = [&](const char* k) { return e.metres(k); };
   switch (e.shape) {
-    case CatalogShape::iSection:
-      return iSection(std::move(name), m, d("h"), d("b"), d("tw"), d("tf"), d("r"));
+    case CatalogShape::iSection: {
+      const IDims i = iDims(e);
+      return iSection(std::move(name), m, i.h, i.b, i.tw, i.tf, i.r);
+    }
     case CatalogShape::channel:
       return channelSection(std::move(name), m, d("h"), d("b"), d("tw"), d("tf"), d("r"),
                             d("r_toe"), e.dim("taper"));
     case CatalogShape::angle:
       return angleSection(std::move(name), m, d("h"), d("b"), d("t"), d("r"), d("r_toe"));
-    case CatalogShape::circularHollow: return Section::tube(std::move(name), m, d("D"), d("t"));
-    case CatalogShape::rectangularHollow:
-      return hollowRectangleSection(std::move(name), m, d("h"), d("b"), d("t"), d("r_out"),
-                                    d("r_in"));
+    case CatalogShape::circularHollow: {
+      const auto [D, t] = tubeDims(e);
+      return Section::tube(std::move(name), m, D, t);
+    }
+    case CatalogShape::rectangularHollow: {
+      const HollowDims r = hollowDims(e);
+      return hollowRectangleSection(std::move(name), m, r.h, r.b, r.t, r.rOut, r.rIn);
+    }
   }
   throw std::logic_error("unknown catalogue shape");
 }
@@ -144,7 +202,8 @@ CatalogProperties catalogProperties(const CatalogEntry& e) {
   const Section s = catalogSection(e, e.designation, Material::fromEnu("steel", 210e9, 0.3, 0));
   p.It = s.J;
   if (e.shape == CatalogShape::circularHollow) {
-    const double D = e.dim("D") * mm, t = e.dim("t") * mm, Di = D - 2 * t;
+    const auto [D, t] = tubeDims(e);
+    const double Di = D - 2 * t;
     p.A = s.A;
     p.Iy = p.Iz = s.Iz;
     p.Wely = p.Welz = s.Iz / (D / 2);

@@ -1,5 +1,6 @@
 // The section catalogue: rolled and hollow steel shapes by designation (IPE300, HEB200,
-// UPN160, L100x100x10, CHS168.3x8, RHS200x100x8, SHS100x100x5-CF), their dimensions read from
+// UPN160, L100x100x10, CHS168.3x8, RHS200x100x8, SHS100x100x5-CF; the US W14X90,
+// HSS8X8X1/2, HSS6.625X0.280), their dimensions read from
 // the compiled-in tables (CatalogTables.hpp, sources cited in each table), and from those
 // dimensions the section the model uses and the properties the steel tables print.
 //
@@ -21,14 +22,16 @@ namespace beamrotor {
 
 enum class CatalogShape { iSection, channel, angle, circularHollow, rectangularHollow };
 
-/// One row of a table: its designation, family and dimensions (mm, as printed; a channel's
-/// taper a slope).
+/// One row of a table: its designation, family and dimensions (as printed, in the table's
+/// unit: mm unless its comment lines say `# unit: in`; a channel's taper a slope).
 struct CatalogEntry {
   std::string designation;  ///< e.g. "IPE300"
   std::string family;       ///< the table, e.g. "IPE"
   CatalogShape shape = CatalogShape::iSection;
   std::map<std::string, double> dims;
-  double dim(const std::string& key) const;  ///< throws std::logic_error when absent
+  double unit = 1e-3;  ///< the table's length unit in metres
+  double dim(const std::string& key) const;  ///< as printed; throws std::logic_error when absent
+  double metres(const std::string& key) const { return dim(key) * unit; }
 };
 
 /// Every row of every table, table by table in file order.

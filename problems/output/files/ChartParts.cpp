@@ -116,4 +116,9 @@ std::string panelLayout(int rows, int columns, const std::string& caption, int w
          "  set format y '%g'\n";
 }
 
+std::string viewLayout(int rows, int columns, const std::string& caption) {
+  return "  set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns) +
+         " title " + captionText(caption) + " font ',13'\n  set format y '%g'\n";
+}
+
 }  // namespace beamrotor

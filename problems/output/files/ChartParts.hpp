@@ -60,4 +60,10 @@ int textWidth(const std::string& text);
 std::string panelLayout(int rows, int columns, const std::string& caption, int width, int height,
                         int rightMargin = 30);
 
+/// `set multiplot` for a grid of 3d views under a caption, with gnuplot's own margins: screen
+/// margins (panelLayout's) make gnuplot fit the view's unit box to them whatever `set view`'s
+/// scale, and the projected box of a 3d view is about 1.5 times that box, so it would spill
+/// off its panel; with its own margins the view's box spans 8/7 of the panel at scale 1.
+std::string viewLayout(int rows, int columns, const std::string& caption);
+
 }  // namespace beamrotor

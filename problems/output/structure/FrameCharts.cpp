@@ -20,6 +20,10 @@ namespace {
 /// on the chart: visible, yet the frame stays recognisable.
 constexpr double kDeformedShare = 0.08;
 constexpr double kDiagramShare = 0.15;
+// The scale of a 3d view (`set view`'s third number): at 1 the cubic box of axesSetup, its
+// tick labels and axis labels fill a panel of viewLayout (checked by eye on a lone column, a
+// tower and a frame, and by the projection in tests/problems/output/test_frame_chart_view.cpp).
+constexpr double kViewScale = 1.0;
 
 /// A round factor for the caption: 1, 2 or 5 times a power of ten, at most `scale`.
 double roundFactor(double scale) {
@@ -178,6 +182,13 @@ PanelGrid panelGrid(int panels, bool planar, const PlanarRanges& r) {
   return {panels, 1, 1000, std::clamp(int(120 + panels * (plot * r.aspect() + 100)), 400, 1000)};
 }
 
+/// The panels' layout: a planar frame's with margins in pixels, a 3d frame's views with
+/// gnuplot's own (see viewLayout).
+std::string frameLayout(bool planar, int rows, int columns, const std::string& caption, int width,
+                        int height) {
+  return planar ? panelLayout(rows, columns, caption, width, height) : viewLayout(rows, columns, caption);
+}
+
 /// Equal scales on every axis: a planar frame in its plane, a 3d frame in a 3d view with
 /// global y (up) vertical. The vertical range holds the magnified shape and the diagrams (a
 /// flat frame would otherwise get a sliver of an axis crowded with ticks); the view shrunk a
@@ -203,9 +214,19 @@ std::string axesSetup(bool planar, const Eigen::Vector3d& lowest, const Eigen::V
     out += "  set yrange [" + number(r.y0) + ":" + number(r.y1) + "]\n";
     return out;
   }
-  std::string out = "  set view equal xyz\n  set view 64, 28, 0.9\n  set ytics offset 1.5,0\n";
-  out += "  set zrange [" + number(low.y() - 0.2 * size) + ":" + number(high.y() + 0.2 * size);
-  out += "]\n  set xyplane at " + number(low.y() - 0.2 * size);
+  // The box no taller than wide, square in plan: gnuplot scales `view equal xyz` to the
+  // larger horizontal range, so a box taller than wide (a lone column, a tower) would stand
+  // out of its panel; a cube's projection fits the panel at the view's scale (viewLayout).
+  const double bottom = low.y() - 0.2 * size, top = high.y() + 0.2 * size;
+  const double half = std::max({0.5 * (high.x() - low.x()) + 0.2 * size,
+                                0.5 * (high.z() - low.z()) + 0.2 * size, 0.5 * (top - bottom)});
+  const double midX = 0.5 * (low.x() + high.x()), midZ = 0.5 * (low.z() + high.z());
+  std::string out = "  set view equal xyz\n  set view 64, 28, " + number(kViewScale) +
+                    "\n  set ytics offset 1.5,0\n";
+  out += "  set xrange [" + number(midX - half) + ":" + number(midX + half) + "]\n";
+  out += "  set yrange [" + number(midZ - half) + ":" + number(midZ + half) + "]\n";
+  out += "  set zrange [" + number(bottom) + ":" + number(top);
+  out += "]\n  set xyplane at " + number(bottom);
   out += "\n";
   out += axis("x", "x");
   out += axis("y", "z");
@@ -357,8 +378,7 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
     data += diagrams[c].finished() + hatches[c].finished();
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       // A 3d view's z axis and its label stand out right of its panel: room for them.
-       << panelLayout(grid.rows, grid.columns, caption, width, height, planar ? 30 : 80) << "  unset key\n"
+       << frameLayout(planar, grid.rows, grid.columns, caption, width, height) << "  unset key\n"
        << "  set grid\n";
   body << axesSetup(planar, low, high, size, length);
   const std::string undeformedStyle = " with lines linewidth 1.5 dashtype 2 linecolor rgb 'gray55'";
@@ -505,8 +525,7 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
   const int width = grid.width, height = grid.height;
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       // A 3d view's z axis and its label stand out right of its panel: room for them.
-       << panelLayout(grid.rows, grid.columns, caption, width, height, planar ? 30 : 80) << "  unset key\n"
+       << frameLayout(planar, grid.rows, grid.columns, caption, width, height) << "  unset key\n"
        << "  set grid\n" << axesSetup(planar, low, high, size, length);
   const std::string first = coordinates.columns(),
                     second = coordinates.columns(1 + int(coordinates.count()));
@@ -604,19 +623,9 @@ ChartScript frameShapesChart(const std::string& caption, const std::string& char
   const int height = 80 + rows * (planar ? 420 : 460);
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << panelLayout(std::max(rows, 1), std::max(columns, 1), caption, width, height,
-                      planar ? 30 : 80)
+       << frameLayout(planar, std::max(rows, 1), std::max(columns, 1), caption, width, height)
        << "  unset key\n  set grid\n"
        << axesSetup(planar, extent.low, extent.high, extent.size, length);
-  if (!planar) {
-    // Every panel at the same scale and place (gnuplot's x and y are global x and z), the view
-    // a little smaller than the static chart's so that a panel's lower neighbour keeps clear.
-    const double pad = 0.2 * extent.size, f = length.factor;
-    body << "  set view 64, 28, 0.8\n  set xrange [" << number(f * (extent.low.x() - pad)) << ":"
-         << number(f * (extent.high.x() + pad)) << "]\n  set yrange ["
-         << number(f * (extent.low.z() - pad)) << ":" << number(f * (extent.high.z() + pad))
-         << "]\n";
-  }
   const std::string first = coordinates.columns(),
                     second = coordinates.columns(1 + int(coordinates.count()));
   for (std::size_t m = 0; m < panels; ++m) {
