@@ -186,7 +186,7 @@ void readContacts(Context& c) {
 /// `diaphragms:` (points following a master in a plane: its two translations and the rotation
 /// about its normal, as far as the model carries them).
 void readRigidLinks(Context& c) {
-  std::vector<std::string> names;
+  TakenNames names;
   const auto tie = [&](const Field& f, const std::string& name, const Field& master,
                        const Field& slave, std::vector<Dof> dofs) {
     DeckRigidLink l{name, c.point(master).name, c.point(slave).name, std::move(dofs), f.place()};
@@ -550,6 +550,10 @@ void readLoadCases(Context& c) {
   if (!c.deck.contacts.empty())
     block(c, "load_cases")->fail("load cases are superposed, and contacts are not linear: "
                                  "remove contacts: or the load cases");
+  if (c.deck.frame && c.deck.frame->hasOneWayMembers())
+    block(c, "load_cases")
+        ->fail("load cases are superposed, and tension-only or compression-only members "
+               "(acts:) are not linear: remove acts: or the load cases");
   for (const DeckSupport& s : c.deck.supports)
     for (const auto& [d, value] : s.dofs)
       if (value != 0)

@@ -27,7 +27,7 @@ void readShaft(const Context& c, const Field& f, TrainShaft& shaft, std::vector<
     length += s.length;
   }
   if (shaft.segments.empty()) segments.fail("a shaft needs at least one segment");
-  std::vector<std::string> names{"start", "end"};
+  TakenNames names{"start", "end"};
   const auto station = [&](const Field& sf, const std::string& what) {
     const Field nf = sf.require("name");
     claimName(nf, nf.name(), names, "a station of shaft '" + shaft.name + "'");
@@ -76,7 +76,8 @@ void readTrain(Context& c) {
   if (!block || block->isNull()) return;
   block->allowOnly({"shafts", "couplings", "gears"}, "a train");
   TrainSpec& train = c.deck.train;
-  std::vector<std::string> shaftNames, disks, joints;
+  TakenNames shaftNames, joints;
+  std::vector<std::string> disks;
   for (const Field& f : block->require("shafts").items()) {
     TrainShaft shaft;
     const Field nf = f.require("name");
