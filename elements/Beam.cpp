@@ -306,6 +306,12 @@ void Beam::release(int end, Dof rotation) {
   setProperties(std::move(p));
 }
 
+void Beam::setSlack(bool slack) {
+  Properties p = *p_;
+  p.slack = slack;
+  setProperties(std::move(p));
+}
+
 void Beam::setDistributedLoad(const Eigen::Vector3d& q) {
   setDistributedLoad(q, q);
 }
@@ -417,6 +423,7 @@ Matrix12 Beam::localGeometricStiffness(double N0, double N1) const {
 }
 
 ElementMatrix Beam::geometricStiffness(const ElementVector& u) const {
+  if (p_->slack) return ElementMatrix::Zero(p_->count, p_->count);
   const SectionForceSeries f = sectionForceSeries(u);
   Matrix12 KG = localGeometricStiffness(f.at(0).N + p_->axialPreload, f.at(1).N + p_->axialPreload);
   if (!p_->released.empty()) {
@@ -501,6 +508,7 @@ ElementMatrix Beam::toCarried(const Matrix12& global) const {
 }
 
 ElementMatrix Beam::stiffness() const {
+  if (p_->slack) return ElementMatrix::Zero(p_->count, p_->count);
   Matrix12 K = localStiffness();
   condense(K, nullptr, nullptr);
   return toCarried(toGlobal(K, p_->R));
@@ -568,7 +576,7 @@ ElementMatrix Beam::gyroscopic() const {
 }
 
 ElementVector Beam::loadOf(const ElementSpanLoad& q) const {
-  if (q.isZero()) return {};
+  if (q.isZero() || p_->slack) return {};
   Vector12 f = localLoad(q);
   if (!p_->released.empty()) {
     Matrix12 K = localStiffness();
@@ -654,6 +662,7 @@ std::array<double, kDofKinds> Beam::displacementAt(const ElementVector& u, doubl
 
 SectionForceSeries Beam::sectionForceSeries(const ElementVector& u,
                                             const ElementSpanLoad& q) const {
+  if (p_->slack) return {};
   // Forces the nodes exert on the element (local frame): K l - f with the released rotations
   // recovered, which vanishes on their rows; then equilibrium of the part [0, x = s L].
   // With q(s) = qa + (qb - qa) s: the load on [0, x] is qa L s + (qb - qa) L s^2 / 2 and its

@@ -56,6 +56,11 @@ class Beam : public LineElement {
   /// Hinge: the moment about local rotation axis `rotation` (rx, ry or rz) vanishes at end
   /// 0 (start) or 1 (end). The released rotation is condensed out of the element.
   void release(int end, Dof rotation);
+  /// A slack member (a tension-only rod that shortened, a compression-only strut that
+  /// lifted off, fem/static/OneWayMembers): stiffness, loads and resultants all zero; its
+  /// mass and geometry stay.
+  void setSlack(bool slack);
+  bool slack() const { return p_->slack; }
   /// Uniform load per length (N/m), global frame; replaces any earlier one.
   void setDistributedLoad(const Eigen::Vector3d& q);
   /// Load per length varying linearly from qStart at the start node to qEnd at the end node
@@ -161,6 +166,7 @@ class Beam : public LineElement {
     Eigen::Vector3d qHalfRise = Eigen::Vector3d::Zero();
     Eigen::Vector3d strain = Eigen::Vector3d::Zero();  // imposed; see ElementSpanLoad::strain
     std::vector<int> released;  // local indices 0..11 of released rotations
+    bool slack = false;         // see setSlack
     // The dofs kept (elementDofCode), from carried, released and R (numberDofs).
     std::array<std::uint8_t, 12> dofCodes{};
     std::uint8_t count = 0;

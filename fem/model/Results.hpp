@@ -52,6 +52,14 @@ struct ContactState {
   double force = 0;     ///< force or moment the stop exerts (N or N m; 0 when open)
 };
 
+/// The settled state of one tension-only or compression-only member (fem/static/OneWayMembers).
+struct OneWayMemberState {
+  std::string name;
+  bool slack = false;     ///< out of action: a tension-only member shortened, or the reverse
+  double force = 0;       ///< axial force N (tension positive); 0 when slack
+  double elongation = 0;  ///< change of its end nodes' distance (m)
+};
+
 /// The rotations on the two sides of a node: the rotation vector (global frame, rad) of the
 /// line-element end there, `left` of the element ending at the node, `right` of the one
 /// starting there (empty where there is none). At a hinge they differ, and the node itself may
@@ -65,6 +73,7 @@ struct StaticResult {
   NodalField displacement;                   ///< m and rad
   std::vector<ReactionComponent> reactions;  ///< every constrained dof, in support order
   std::vector<ContactState> contacts;        ///< settled contact states, in model order
+  std::vector<OneWayMemberState> oneWayMembers;  ///< tension- or compression-only members
   /// The force each named element (Model::namedElements: springs, bearings) exerts on the
   /// structure at its first node, per dof it acts on there: as a support's reaction.
   std::vector<ReactionComponent> elementForces;

@@ -76,6 +76,16 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                          : "open, gap " + valueText(k.gap, motionUnit(k.dof), units))
             << "  (" << dofName(k.dof) << " = " << formatValue(k.value) << ")\n";
     }
+    if (!r.oneWayMembers.empty()) {
+      out << "  tension-only / compression-only members:\n";
+      for (const OneWayMemberState& m : r.oneWayMembers)
+        out << "    " << padded(m.name, 12)
+            << (m.slack ? "slack, ends " +
+                              std::string(m.elongation > 0 ? "apart by " : "closer by ") +
+                              valueText(std::abs(m.elongation), "m", units)
+                        : "in action, N = " + valueText(m.force, "N", units))
+            << "\n";
+    }
     printStressPeaks(out, deck, *run.model, extremes.own->peaks, "  ", units);
     printMemberExtremes(out, deck, *run.model, *extremes.own, "  ", units);
   }

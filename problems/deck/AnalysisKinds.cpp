@@ -109,6 +109,12 @@ void readAnalysisKind(const Context& c, const Field& f, DeckAnalysis& a) {
         if constexpr (std::decay_t<decltype(row)>::needsMass) requireMass(c, f, a.type());
       },
       a.kind);
+  // Which members are slack depends on the loads: only a plain static solve finds them.
+  const StaticSpec* statics = std::get_if<StaticSpec>(&a.kind);
+  if (c.deck.frame && c.deck.frame->hasOneWayMembers() && (!statics || statics->secondOrder))
+    f.fail("a deck with tension-only or compression-only members (acts:) solves linear static "
+           "analyses only: which members are slack depends on the loads, found by the "
+           "statics' active set; remove acts: or this analysis");
 }
 
 bool isMechanismAnalysis(const Field& analysis) {

@@ -100,6 +100,15 @@ Json contactsJson(const std::vector<ContactState>& contacts) {
   return out;
 }
 
+/// Tension-only and compression-only members by name: whether each is slack, its axial force
+/// and the change of its length.
+Json oneWayMembersJson(const std::vector<OneWayMemberState>& members) {
+  Json out = Json::object();
+  for (const OneWayMemberState& m : members)
+    out[m.name] = {{"slack", m.slack}, {"force", m.force}, {"elongation", m.elongation}};
+  return out;
+}
+
 /// A largest stress: value (Pa), place along the line, element and its section.
 Json peakJson(const Model& model, const std::optional<LinePeak>& top) {
   if (!top) return nullptr;  // no line elements: the key is dropped by the caller
@@ -220,6 +229,7 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
     out["contacts"] = contactsJson(r.contacts);
     out["active_set_iterations"] = r.activeSetIterations;
   }
+  if (!r.oneWayMembers.empty()) out["one_way_members"] = oneWayMembersJson(r.oneWayMembers);
   out["rcond"] = r.rcond;
   out["round_off"] = r.roundOff;
   out["solver"] = r.solver;

@@ -6,7 +6,8 @@
 //   analyses [ static: {type, name, reactions {support: {fx ... mz}}, displacements
 //              {point: {ux ... rz, at a hinge rz_left, rz_right ...}}, max_stress and max_shear
 //              {value, x, element, section}, [contacts {name: {dof, active, value, bound, gap,
-//              force}}, active_set_iterations], rcond (of the diagonally scaled K),
+//              force}}, active_set_iterations], [one_way_members {name: {slack, force,
+//              elongation}}], rcond (of the diagonally scaled K),
 //              round_off (measured bound of the solution's relative error), time_s, files}
 //            | modal:  {type, name, frequencies_hz [...], total_mass_kg {ux ..}, modes [{mode,
 //              frequency_hz, description, effective_mass_kg {ux ..}, effective_mass_ratio

@@ -24,6 +24,7 @@
 #include "problems/run/JournalGravityLoads.hpp"
 #include "problems/run/ModelBuilder.hpp"
 #include "problems/run/RunCrankSlider.hpp"
+#include "problems/run/OneWayStatics.hpp"
 #include "problems/run/OverRefinementWarning.hpp"
 #include "problems/run/Overloaded.hpp"
 #include "problems/run/RunRotor.hpp"
@@ -95,8 +96,10 @@ StaticOutcome solveWithCases(const Deck& deck, const Model& model, const StaticO
   return statics;
 }
 
+/// Solves analysis a of deck on model; `oneWay`, when the deck has one-way members, is the
+/// settled static solution of that model (the reader admits only linear statics then).
 AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& model,
-                      RunCache* cache) {
+                      RunCache* cache, const OneWaySolution* oneWay) {
   AnalysisOutcome out;
   out.type = a.type();
   out.name = a.name;
@@ -109,7 +112,8 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
               if (cache) options.reuse = &cache->statics;
               // Load cases share the factorisation of the deck's own loads (no contacts then:
               // the reader refuses cases with contacts).
-              StaticOutcome statics = deck.loadCases.empty()
+              StaticOutcome statics = oneWay ? StaticOutcome{oneWay->result, {}}
+                                      : deck.loadCases.empty()
                                           ? StaticOutcome{solveStatic(model, options), {}}
                                           : solveWithCases(deck, model, options);
               // With load cases and an empty `loads:` (cases refuse prescribed support values)
@@ -221,14 +225,15 @@ RunResult runDeck(const Deck& deck, RunCache* cache) {
     run.units.emplace_back(name, siUnitOf(dimension));
   run.dimension = deck.dimension;
 
-  // 1. The model.
-  std::shared_ptr<const Model> model = buildModel(deck);
+  // 1. The model, with its slack members out of action when it has one-way members.
+  const std::optional<OneWaySolution> oneWay = solveOneWayMembers(deck);
+  std::shared_ptr<const Model> model = oneWay ? oneWay->model : buildModel(deck);
   run.model = model;
   run.modelSeconds = clock.lap();
 
   // 2. The analyses, in deck order.
   for (const DeckAnalysis& a : deck.analyses)
-    run.analyses.push_back(solve(deck, a, *model, cache));
+    run.analyses.push_back(solve(deck, a, *model, cache, oneWay ? &*oneWay : nullptr));
   run.analysesSeconds = clock.lap();
 
   // 3. The checks that apply to these parameter values.

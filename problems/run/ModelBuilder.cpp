@@ -220,7 +220,7 @@ void addPointNodes(const Deck& deck, Model& model) {
 
 }  // namespace
 
-std::shared_ptr<Model> buildModel(const Deck& deck) {
+std::shared_ptr<Model> buildModel(const Deck& deck, const std::vector<bool>& slackMembers) {
   if (needsJournalLoads(deck)) return buildModel(withJournalLoads(deck));
   auto model = std::make_shared<Model>();
   if (deck.segments.empty()) {
@@ -249,6 +249,8 @@ std::shared_ptr<Model> buildModel(const Deck& deck) {
     const Eigen::Vector3d strain = imposedStrainOn(acting, *beam);
     if (!strain.isZero()) beam->setImposedStrain(strain);
     beam->setAxialPreload(deck.segments[b.segment].axialForce);
+    if (std::size_t(b.segment) < slackMembers.size() && slackMembers[std::size_t(b.segment)])
+      beam->setSlack(true);
   }
 
   // 3. Hinges: release the rotations of every beam end at the point; a rotation released on

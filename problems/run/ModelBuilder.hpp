@@ -12,8 +12,9 @@
 
 namespace beamrotor {
 
-/// Builds the model a deck describes. Throws DeckError.
-std::shared_ptr<Model> buildModel(const Deck& deck);
+/// Builds the model a deck describes, the frame members flagged in `slackMembers` (one flag
+/// per member, or none) slack (Beam::setSlack). Throws DeckError.
+std::shared_ptr<Model> buildModel(const Deck& deck, const std::vector<bool>& slackMembers = {});
 
 /// `loads` (a load case's, in the syntax of `loads:`) on the model buildModel(deck) built: its
 /// point loads at their nodes and each beam's span load, exactly as buildModel puts the deck's

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/static/OneWayMembers.hpp"
 #include "meshes/FrameBuilder.hpp"
 #include "problems/deck/parse/DeckError.hpp"
 
@@ -30,6 +31,9 @@ struct DeckMember {
   int from = -1, to = -1;  ///< indices into DeckFrame::joints
   MemberOrientation orientation;
   std::array<std::vector<Dof>, 2> releases;  ///< local rotations released at start, end
+  /// Tension-only or compression-only (`acts:`): slack members are found by the statics'
+  /// active set (fem/static/OneWayMembers).
+  MemberAction acts = MemberAction::both;
   DeckPlace place;
 };
 
@@ -37,6 +41,12 @@ struct DeckFrame {
   std::vector<DeckJoint> joints;
   std::vector<DeckMember> members;
   std::vector<MemberStation> stations;  ///< named places along members (points: and at: maps)
+  /// Whether some member acts one way only.
+  bool hasOneWayMembers() const {
+    for (const DeckMember& m : members)
+      if (m.acts != MemberAction::both) return true;
+    return false;
+  }
 };
 
 }  // namespace beamrotor

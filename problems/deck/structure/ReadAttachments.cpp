@@ -550,6 +550,10 @@ void readLoadCases(Context& c) {
   if (!c.deck.contacts.empty())
     block(c, "load_cases")->fail("load cases are superposed, and contacts are not linear: "
                                  "remove contacts: or the load cases");
+  if (c.deck.frame && c.deck.frame->hasOneWayMembers())
+    block(c, "load_cases")
+        ->fail("load cases are superposed, and tension-only or compression-only members "
+               "(acts:) are not linear: remove acts: or the load cases");
   for (const DeckSupport& s : c.deck.supports)
     for (const auto& [d, value] : s.dofs)
       if (value != 0)

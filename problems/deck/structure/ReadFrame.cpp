@@ -192,7 +192,7 @@ double readMembers(Context& c) {
   double elements = 0;
   for (const Field& f : block.items()) {
     f.allowOnly({"name", "from", "to", "section", "elements", "size", "formulation", "z", "y",
-                 "roll", "release", "offsets"},
+                 "roll", "release", "offsets", "acts"},
                 "a member");
     DeckSegment s;
     s.place = f.place();
@@ -212,6 +212,15 @@ double readMembers(Context& c) {
     if (!(s.length > 0)) f.require("offsets").fail("the offsets leave the member no length");
     readSegmentMesh(c, f, s);
     if (auto release = f.get("release")) m.releases = readReleases(c, *release);
+    if (auto acts = f.get("acts")) {
+      const std::string way = acts->choice({"both", "tension-only", "compression-only"});
+      m.acts = way == "tension-only"       ? MemberAction::tensionOnly
+               : way == "compression-only" ? MemberAction::compressionOnly
+                                           : MemberAction::both;
+      if (m.acts != MemberAction::both && s.elementEstimate() != 1)
+        acts->fail("a " + way + " member is one element (a rod between its end nodes, which "
+                   "goes slack as a whole): give it elements: 1");
+    }
     elements += s.elementEstimate();
     if (!(elements <= kMaxFrameElements))
       f.fail("the frame would have more than " + std::to_string(kMaxFrameElements) +
