@@ -35,7 +35,13 @@ void useMethod(const ConvergeMethod& method, Deck& deck) {
 
 void refineMesh(Deck& deck, int level) {
   const int factor = 1 << level;
-  for (DeckSegment& s : deck.segments) {
+  for (std::size_t i = 0; i < deck.segments.size(); ++i) {
+    DeckSegment& s = deck.segments[i];
+    // A tension- or compression-only member is one element, exact without span loads (which
+    // it refuses): it goes slack as a whole.
+    if (deck.frame && i < deck.frame->members.size() &&
+        deck.frame->members[i].acts != MemberAction::both)
+      continue;
     if (s.elements > 0)
       s.elements *= factor;
     else
