@@ -21,11 +21,25 @@ namespace beamrotor {
 
 namespace reader {
 
+std::optional<int> Context::pointNamed(const std::string& name) const {
+  return pointsByName.find(deck.points, name,
+                           [](const DeckPoint& p) -> const std::string& { return p.name; });
+}
+
+std::optional<int> Context::segmentNamed(const std::string& name) const {
+  return segmentsByName.find(deck.segments, name,
+                             [](const DeckSegment& s) -> const std::string& { return s.name; });
+}
+
+std::optional<int> Context::jointNamed(const std::string& name) const {
+  return jointsByName.find(deck.frame->joints, name,
+                           [](const DeckJoint& j) -> const std::string& { return j.name; });
+}
+
 const DeckPoint& Context::point(const Field& f) const {
   if (f.isMap()) return memberPoint(*this, f);
   const std::string name = f.name();
-  const auto nameOf = [](const DeckPoint& p) -> const std::string& { return p.name; };
-  if (const auto i = pointsByName.find(deck.points, name, nameOf)) return deck.points[*i];
+  if (const auto i = pointNamed(name)) return deck.points[*i];
   std::vector<std::string> names;
   for (const DeckPoint& p : deck.points) names.push_back(p.name);
   f.fail("no point named '" + name + "'" + didYouMean(name, names) +
@@ -34,8 +48,7 @@ const DeckPoint& Context::point(const Field& f) const {
 
 int Context::segment(const Field& f) const {
   const std::string name = f.name();
-  const auto nameOf = [](const DeckSegment& s) -> const std::string& { return s.name; };
-  if (const auto i = segmentsByName.find(deck.segments, name, nameOf)) return *i;
+  if (const auto i = segmentNamed(name)) return *i;
   std::vector<std::string> names;
   for (const DeckSegment& s : deck.segments)
     if (!s.name.empty()) names.push_back(s.name);

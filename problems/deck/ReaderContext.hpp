@@ -32,9 +32,13 @@ struct Context {
   /// parameter's name: read in SI as written, their units checked once its dimension is known.
   std::vector<std::pair<std::string, Field>> valuesOfBare;
   /// deck.points, deck.segments and a frame's joints by name (so that reading stays linear in
-  /// the model's size).
+  /// the model's size): read through pointNamed, segmentNamed and jointNamed.
   NameIndex pointsByName, segmentsByName, jointsByName;
 
+  /// The index in deck.points, deck.segments or the frame's joints of the one named `name`.
+  std::optional<int> pointNamed(const std::string& name) const;
+  std::optional<int> segmentNamed(const std::string& name) const;
+  std::optional<int> jointNamed(const std::string& name) const;
   /// The point a field names; fails with a did-you-mean suggestion.
   const DeckPoint& point(const Field& f) const;
   /// The index of the segment a field names.

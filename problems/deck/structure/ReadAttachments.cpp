@@ -1,6 +1,7 @@
 // Deck reader, part 2: what is attached to the line at its points and along its segments:
 // supports, springs, masses, hinges and loads.
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -140,12 +141,10 @@ void readSprings(Context& c) {
 const DeckSupport* holder(const Context& c, const DeckPoint& p, Dof d) {
   const double tol = 1e-12 * std::max(1.0, c.deck.length());
   for (const DeckSupport& s : c.deck.supports) {
-    const auto at = std::find_if(c.deck.points.begin(), c.deck.points.end(),
-                                 [&](const DeckPoint& q) { return q.name == s.point; });
+    const std::optional<int> at = c.pointNamed(s.point);
     const bool samePlace =
-        s.point == p.name ||
-        (!c.deck.segments.empty() && !c.deck.frame && at != c.deck.points.end() &&
-         std::abs(at->at - p.at) <= tol);
+        s.point == p.name || (!c.deck.segments.empty() && !c.deck.frame && at &&
+                              std::abs(c.deck.points[std::size_t(*at)].at - p.at) <= tol);
     if (!samePlace) continue;
     for (const auto& [dof, value] : s.dofs)
       if (dof == d) return &s;

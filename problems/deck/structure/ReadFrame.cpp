@@ -45,13 +45,11 @@ Eigen::Vector3d coordinates(const Context& c, const Field& f, const std::string&
   return x;
 }
 
-const std::string& jointName(const DeckJoint& j) { return j.name; }
-
 /// The index of the joint a field names.
 int jointIndex(const Context& c, const Field& f) {
   const std::string name = f.name();
   const auto& joints = c.deck.frame->joints;
-  if (const auto j = c.jointsByName.find(joints, name, jointName)) return *j;
+  if (const auto j = c.jointNamed(name)) return *j;
   std::vector<std::string> names;
   for (const DeckJoint& j : joints) names.push_back(j.name);
   f.fail("no node named '" + name + "'" + didYouMean(name, names) + " (nodes: " +
@@ -281,8 +279,7 @@ int memberEnd(Context& c, const Field& f) {
     const std::string text = f.text();
     const std::string host = text.substr(0, text.find('@'));
     const auto& segments = c.deck.segments;
-    const auto hostIndex = c.segmentsByName.find(
-        segments, host, [](const DeckSegment& s) -> const std::string& { return s.name; });
+    const auto hostIndex = c.segmentNamed(host);
     std::vector<std::string> names;
     if (!hostIndex)
       for (const DeckSegment& s : segments) names.push_back(s.name);
@@ -306,7 +303,7 @@ int memberEnd(Context& c, const Field& f) {
   if (fraction <= kEndTolerance) return host.from;
   if (fraction >= 1 - kEndTolerance) return host.to;
   const std::string name = placeName(c, m, fraction);
-  if (const auto j = c.jointsByName.find(joints, name, jointName)) return *j;
+  if (const auto j = c.jointNamed(name)) return *j;
   const Eigen::Vector3d x = joints[host.from].x + fraction * (joints[host.to].x - joints[host.from].x);
   c.deck.points.push_back({name, 0, f.place()});
   joints.push_back({name, x, f.place(), m, fraction});
@@ -316,9 +313,7 @@ int memberEnd(Context& c, const Field& f) {
 /// Registers the place (a point and, inside the member, a station) unless it exists.
 void addPlace(Context& c, const std::string& name, int member, double fraction,
               const DeckPlace& place) {
-  if (c.pointsByName.find(c.deck.points, name,
-                         [](const DeckPoint& p) -> const std::string& { return p.name; }))
-    return;
+  if (c.pointNamed(name)) return;
   c.deck.points.push_back({name, 0, place});
   c.deck.frame->stations.push_back({name, member, fraction});
 }
