@@ -50,7 +50,6 @@ class TakenNames {
     inOrder_.push_back(name);
     return true;
   }
-  bool contains(const std::string& name) const { return set_.contains(name); }
   const std::vector<std::string>& inOrder() const { return inOrder_; }
 
  private:
