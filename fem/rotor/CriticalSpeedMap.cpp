@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "fem/model/RotorElement.hpp"
 #include "fem/rotor/BearingSupports.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -149,6 +151,38 @@ std::vector<MapCrossing> mapCrossings(const CriticalSpeedMap& map,
   std::sort(out.begin(), out.end(),
             [](const MapCrossing& x, const MapCrossing& y) { return x.speed < y.speed; });
   return out;
+}
+
+double rigidSupportCriticalSpeed(const Model& model, double speed) {
+  const RotorSystem system(model);
+  const DofMap& dofs = system.dofs();
+  // The pinned equations: the free uy, uz of each bearing that is stiff at this speed.
+  std::vector<int> pinned;
+  bool bearings = false;
+  for (const auto& e : model.elements()) {
+    const auto* b = dynamic_cast<const SpeedDependentElement*>(e.get());
+    if (!b || b->kind() != "bearing") continue;
+    bearings = true;
+    const auto d = b->dofs();
+    const ElementMatrix k = b->stiffnessAt(speed);
+    for (int r = 0; r < int(d.size()); ++r)
+      if (const int eq = dofs.equation(d[r]); k(r, r) != 0 && eq >= 0 && dofs.isFree(eq))
+        pinned.push_back(eq);
+  }
+  std::sort(pinned.begin(), pinned.end());
+  pinned.erase(std::unique(pinned.begin(), pinned.end()), pinned.end());
+  // Without the bearings' own stiffness (the pinned ones hold their nodes; the others have none
+  // on the diagonal, and a cross-coupled term would make K unsymmetric).
+  const SparseMatrix shaft = bearings ? bearingSupports(system).shaft : system.stiffness(0);
+  const std::vector<int> plane = planeNumbering(system, pinned);
+  try {
+    return criticalSpeeds(restricted(shaft, plane), restricted(system.mass(), plane), 1, 0,
+                          0, 0)
+        .front();
+  } catch (const SolveError&) {
+    throw std::invalid_argument(
+        "the critical speed on rigid supports: the bearings and supports do not hold the rotor");
+  }
 }
 
 }  // namespace beamrotor

@@ -37,7 +37,7 @@ Worst worstOf(const std::vector<RotorMode>& modes) {
 
 void requirePositive(double value, const std::string& what) {
   if (!(value > 0) || !std::isfinite(value))
-    throw std::invalid_argument("API 617 Qa: " + what + " must be > 0 (got " +
+    throw std::invalid_argument("API 617: " + what + " must be > 0 (got " +
                                 std::to_string(value) + ")");
 }
 
@@ -59,8 +59,40 @@ double anticipatedCrossCoupling(const std::vector<CompressorStage>& stages, doub
   return sum;
 }
 
+double criticalSpeedRatioBoundary(double averageDensity) {
+  // API 617 7th ed. fig. 2-7 (ROSS's digitisation): flat at 2.5, then falling linearly to 2.0
+  // at 60 kg/m^3; denser gas lies in region B at any ratio.
+  constexpr double kFlatUpTo = 16.53, kDenseFrom = 60;
+  if (averageDensity <= kFlatUpTo) return 2.5;
+  if (averageDensity <= kDenseFrom) return 2.69 - 0.0115 * averageDensity;
+  return 0;
+}
+
+CriticalSpeedRatioPoint criticalSpeedRatioPoint(double maximumContinuousSpeed,
+                                                double rigidCriticalSpeed,
+                                                double averageDensity) {
+  requirePositive(maximumContinuousSpeed, "the maximum continuous speed");
+  requirePositive(rigidCriticalSpeed, "the critical speed on rigid supports");
+  if (!(averageDensity >= 0) || !std::isfinite(averageDensity))
+    throw std::invalid_argument("API 617 CSR map: the average gas density must be >= 0");
+  CriticalSpeedRatioPoint p;
+  p.maximumContinuousSpeed = maximumContinuousSpeed;
+  p.rigidCriticalSpeed = rigidCriticalSpeed;
+  p.averageDensity = averageDensity;
+  p.ratio = maximumContinuousSpeed / rigidCriticalSpeed;
+  p.boundary = criticalSpeedRatioBoundary(averageDensity);
+  p.regionB = p.ratio > p.boundary;
+  return p;
+}
+
+double averageGasDensity(const std::vector<CompressorStage>& stages) {
+  if (stages.empty()) throw std::invalid_argument("API 617 CSR map: no stages");
+  return 0.5 * (stages.front().suctionDensity + stages.back().dischargeDensity);
+}
+
 LevelOneResult levelOneStability(const Model& model, const RotorOptions& options, int node,
-                                 double speed, double anticipated, double tolerance,
+                                 double speed, double anticipated,
+                                 const CriticalSpeedRatioPoint& map, double tolerance,
                                  int samples) {
   if (!(anticipated > 0) || !std::isfinite(anticipated))
     throw std::invalid_argument("API 684 Level I: Qa must be > 0");
@@ -117,7 +149,9 @@ LevelOneResult levelOneStability(const Model& model, const RotorOptions& options
   out.ratio = out.found ? out.zeroDecrement / anticipated
                         : std::numeric_limits<double>::infinity();
   out.mapDecides = out.ratio >= kLevelOneMinimumRatio && out.ratio < kLevelOneRegionRatio;
-  out.pass = out.logDecrementAtQa >= kLevelOneLogDecrement && out.ratio >= kLevelOneMinimumRatio;
+  out.map = map;
+  out.pass = out.logDecrementAtQa >= kLevelOneLogDecrement &&
+             out.ratio >= kLevelOneMinimumRatio && !(out.mapDecides && map.regionB);
 
   // 3. The curve for the chart.
   const double top = 1.5 * std::max(out.found ? out.zeroDecrement : 0.0, anticipated);

@@ -25,8 +25,14 @@
 // explains them; paragraph numbers differ between editions): a Level II
 // analysis is required when the log decrement with Qa added is below 0.1, or Q0 / Qa < 2; with
 // 2 <= Q0 / Qa < 10 it is also required if the machine lies in region B of API's map of the
-// critical speed ratio against the average gas density, which is not evaluated here (the
-// result flags that case). Level I passes when neither of the first two holds.
+// critical speed ratio against the average gas density (below). Level I passes otherwise.
+//
+// The map (API 617 7th ed. fig. 2-7; its boundary as digitised in ROSS, ross/report.py): the
+// critical speed ratio CSR = maximum continuous speed / first critical speed on rigid supports
+// against the average gas density rho (kg/m^3). Region B, above the boundary
+//   CSR_B = 2.5                    for rho <= 16.53,
+//   CSR_B = 2.69 - 0.0115 rho      for 16.53 < rho <= 60   (2.0 at 60),
+// and every machine with rho > 60 kg/m^3 (3.75 lbm/ft^3); region A below.
 #pragma once
 
 #include <optional>
@@ -57,6 +63,17 @@ inline constexpr double kLevelOneMinimumRatio = 2, kLevelOneRegionRatio = 10;
 /// speed, diameter, width or density that is not > 0, or a power < 0.
 double anticipatedCrossCoupling(const std::vector<CompressorStage>& stages, double speed);
 
+/// Where the machine lies on API 617's map of the critical speed ratio against the average gas
+/// density.
+struct CriticalSpeedRatioPoint {
+  double maximumContinuousSpeed = 0;  ///< rad/s
+  double rigidCriticalSpeed = 0;      ///< rad/s, first critical speed on rigid supports
+  double averageDensity = 0;          ///< kg/m^3
+  double ratio = 0;                   ///< CSR = maximumContinuousSpeed / rigidCriticalSpeed
+  double boundary = 0;                ///< CSR_B at averageDensity (0 above 60 kg/m^3)
+  bool regionB = false;               ///< ratio > boundary
+};
+
 /// Where the least log decrement against added cross-coupling was sampled (for a chart).
 struct CrossCouplingSample {
   double crossCoupling = 0;  ///< N/m
@@ -78,19 +95,35 @@ struct LevelOneResult {
   Whirl whirlAtQ0 = Whirl::planar;
   int evaluations = 0;             ///< eigen-solutions spent on Q0
   double ratio = 0;                ///< Q0 / Qa (infinite when not found)
-  /// 2 <= Q0/Qa < 10: API's CSR/density map would decide, and is not evaluated here
+  /// 2 <= Q0/Qa < 10: API's CSR/density map decides (region B fails)
   bool mapDecides = false;
-  bool pass = false;               ///< log decrement at Qa >= 0.1 and Q0 / Qa >= 2
+  /// log decrement at Qa >= 0.1, Q0 / Qa >= 2 and, where the map decides, region A
+  bool pass = false;
   std::vector<CrossCouplingSample> curve;  ///< ascending Q from 0, for the chart
+  CriticalSpeedRatioPoint map;  ///< the machine on API 617's CSR map
 };
 
+/// API 617's boundary CSR_B between regions A and B at average gas density rho (kg/m^3, >= 0):
+/// 0 above 60 kg/m^3, where the whole map is region B.
+double criticalSpeedRatioBoundary(double averageDensity);
+
+/// The machine's point on the map. Throws std::invalid_argument unless both speeds are > 0
+/// and the density >= 0.
+CriticalSpeedRatioPoint criticalSpeedRatioPoint(double maximumContinuousSpeed,
+                                                double rigidCriticalSpeed, double averageDensity);
+
+/// API's average gas density of a compressor: the mean of the first stage's suction and the
+/// last stage's discharge density (kg/m^3). Throws std::invalid_argument for no stages.
+double averageGasDensity(const std::vector<CompressorStage>& stages);
+
 /// The screening of `model` at spin speed Omega (rad/s) with the modes `options` asks for,
-/// cross-coupling added at `node`, Qa = `anticipated` > 0 (N/m); Q0 to the relative
-/// `tolerance`; `samples` + 1 equal steps of Q over [0, max(1.5 Q0, 1.5 Qa)] for the curve.
-/// Throws SolveError when an eigen-solution fails, std::invalid_argument for Qa <= 0 or a
-/// node without free uy, uz.
+/// cross-coupling added at `node`, Qa = `anticipated` > 0 (N/m), the machine's point `map` on
+/// API's CSR map; Q0 to the relative `tolerance`; `samples` + 1 equal steps of Q over
+/// [0, max(1.5 Q0, 1.5 Qa)] for the curve. Throws SolveError when an eigen-solution fails,
+/// std::invalid_argument for Qa <= 0 or a node without free uy, uz.
 LevelOneResult levelOneStability(const Model& model, const RotorOptions& options, int node,
                                  double speed, double anticipated,
+                                 const CriticalSpeedRatioPoint& map,
                                  double tolerance = kSpeedTolerance, int samples = 40);
 
 }  // namespace beamrotor

@@ -271,6 +271,11 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutco
         << formatValue(r.ratio) << "\n";
   else
     out << "    Q0 not found: no cross-coupling up to 2^40 Qa destabilises the rotor\n";
+  out << "    CSR " << formatValue(r.map.ratio) << " (MCOS "
+      << rpmText(r.map.maximumContinuousSpeed * kRpm, units) << " / rigid-support critical "
+      << rpmText(r.map.rigidCriticalSpeed * kRpm, units) << ") at average gas density "
+      << formatValue(r.map.averageDensity) << " kg/m^3: region " << (r.map.regionB ? "B" : "A")
+      << " of API 617's map (boundary CSR " << formatValue(r.map.boundary) << ")\n";
   out << "    API 684 Level I: " << levelOneVerdict(r) << "\n";
 }
 

@@ -92,6 +92,8 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
       const LevelOneResult& s = r->screening;
       if (q.property == "qa") return s.anticipated;
       if (q.property == "log_decrement_at_qa") return s.logDecrementAtQa;
+      if (q.property == "critical_speed_ratio") return s.map.ratio;
+      if (q.property == "rigid_critical_speed") return s.map.rigidCriticalSpeed * kRpm;
       if (!s.found)
         throw std::invalid_argument(name + " finds no Q0: no cross-coupling up to 2^40 Qa "
                                     "destabilises the rotor");

@@ -15,6 +15,7 @@
 #include "elements/Bearing.hpp"
 #include "elements/BearingOnPedestal.hpp"
 #include "elements/Spring.hpp"
+#include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
 #include "fem/rotor/RotorFrequencyResponse.hpp"
@@ -227,7 +228,10 @@ LevelOneOutcome runLevelOne(const Deck& deck, const RotorFamily& s, const Model&
   if (out.station.empty()) out.station = "node " + std::to_string(node);
   out.stages = int(r.stages.size());
   const double qa = anticipatedCrossCoupling(r.stages, r.speed);
-  out.screening = levelOneStability(model, optionsOf(deck, s), node, r.speed, qa);
+  const CriticalSpeedRatioPoint map = criticalSpeedRatioPoint(
+      r.maximumContinuousSpeed, rigidSupportCriticalSpeed(model, r.speed),
+      r.averageGasDensity.value_or(averageGasDensity(r.stages)));
+  out.screening = levelOneStability(model, optionsOf(deck, s), node, r.speed, qa, map);
   out.time = clock.lap();
   return out;
 }

@@ -112,6 +112,11 @@ struct DeckRotorAnalysis {
   std::vector<CompressorStage> stages;
   /// level1-stability: the point the cross-coupling is added at; empty: mid-span
   std::string station;
+  /// level1-stability: the maximum continuous speed (rad/s) of API's critical speed ratio;
+  /// 0: `speed`
+  double maximumContinuousSpeed = 0;
+  /// level1-stability: API's average gas density (kg/m^3); unset: from the stages
+  std::optional<double> averageGasDensity;
 };
 
 }  // namespace beamrotor

@@ -554,9 +554,15 @@ void CriticalSpeedMapSpec::read(const reader::Context& c, const Field& f) {
 
 void LevelOneSpec::read(const reader::Context& c, const Field& f) {
   reader::requireLateral(c, f, deckType);
-  f.allowOnly({"type", "name", "speed_rpm", "station", "stages", "modes", "shift"},
+  f.allowOnly({"type", "name", "speed_rpm", "max_continuous_rpm", "average_gas_density",
+               "station", "stages", "modes", "shift"},
               "a level1-stability analysis");
   rotor.speed = f.require("speed_rpm").positive(c.evaluator, kRpmField) * reader::kRadPerRpm;
+  rotor.maximumContinuousSpeed = rotor.speed;
+  if (auto m = f.get("max_continuous_rpm"))
+    rotor.maximumContinuousSpeed = m->positive(c.evaluator, kRpmField) * reader::kRadPerRpm;
+  if (auto d = f.get("average_gas_density"))
+    rotor.averageGasDensity = d->nonNegative(c.evaluator, dim::density);
   if (auto s = f.get("station")) rotor.station = c.point(*s).name;
   rotor.stages = reader::readStages(c, f.require("stages"));
   double power = 0;

@@ -16,7 +16,8 @@ const std::vector<std::string>& rigidBodyPropertyNames() {
 }
 
 const std::vector<std::string>& levelOnePropertyNames() {
-  static const std::vector<std::string> names{"qa", "q0", "q0_over_qa", "log_decrement_at_qa"};
+  static const std::vector<std::string> names{"qa", "q0", "q0_over_qa", "log_decrement_at_qa",
+                                                "critical_speed_ratio", "rigid_critical_speed"};
   return names;
 }
 

@@ -1,5 +1,6 @@
 #include "problems/output/rotor/LevelOneOutput.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "problems/output/files/ChartParts.hpp"
@@ -42,13 +43,52 @@ ChartScript levelOneDiagram(const std::string& caption, const std::string& chart
           height, body.str()};
 }
 
+ChartScript criticalSpeedRatioDiagram(const std::string& caption, const std::string& chartName,
+                                      const CriticalSpeedRatioPoint& p) {
+  const int width = 900, height = 600;
+  // The boundary (fem/rotor/LevelOneStability.hpp): 2.5 up to 16.53 kg/m^3, 2.0 at 60, and
+  // every denser machine in region B (the line drops to 0 there); region B shaded.
+  const double right = std::max(80.0, 1.25 * p.averageDensity);
+  const double top = std::max(4.0, 1.2 * p.ratio);
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(1, 1, caption, width, height) << "  set grid\n"
+       << "  set key inside top right box opaque\n"
+       << "  set xrange [0:" << number(right) << "]\n  set yrange [0:" << number(top) << "]\n"
+       << "  set xlabel 'average gas density [kg/m^3]'\n"
+       << "  set ylabel 'critical speed ratio (MCOS / rigid-support critical)'\n"
+       << "  set label 1 'region A' at graph 0.08, graph 0.2 textcolor rgb '#606060'\n"
+       << "  set label 2 'region B' at graph 0.08, graph 0.9 textcolor rgb '#606060'\n"
+       << "  set object 1 polygon from 0,2.5 to 16.53,2.5 to 60,2 to 60,0 to " << number(right)
+       << ",0 to " << number(right) << "," << number(top) << " to 0," << number(top)
+       << " to 0,2.5 fillcolor rgb '#fbe3e0' fillstyle solid 1.0 noborder behind\n"
+       << "  set arrow 1 from 0,2.5 to 16.53,2.5 nohead linewidth 2 lc rgb '#404040'\n"
+       << "  set arrow 2 from 16.53,2.5 to 60,2 nohead linewidth 2 lc rgb '#404040'\n"
+       << "  set arrow 3 from 60,2 to 60,0 nohead linewidth 2 lc rgb '#404040'\n"
+       << "  plot NaN with lines linewidth 2 lc rgb '#404040' title "
+       << gnuplotText("API 617: boundary of region B (shaded)") << ", \\\n"
+       << "       '+' using (" << number(p.averageDensity) << "):(" << number(p.ratio)
+       << ") every ::0::0 with points pointtype 7 pointsize 2 " << colour(p.regionB ? 1 : 2)
+       << " title "
+       << gnuplotText("this machine: CSR " + labelNumber(p.ratio) +
+                      (p.regionB ? ", region B" : ", region A"))
+       << "\n  unset multiplot\n";
+  return {chartName, "API 617 Level I: critical speed ratio against average gas density", width,
+          height, body.str()};
+}
+
 std::string levelOneVerdict(const LevelOneResult& r) {
-  if (r.pass) return r.mapDecides ? "pass (2 <= Q0/Qa < 10: check API's CSR/density map)" : "pass";
+  if (r.pass)
+    return r.mapDecides ? "pass (2 <= Q0/Qa < 10, region A of API's CSR map)" : "pass";
   std::string why = "Level II required:";
   if (r.logDecrementAtQa < kLevelOneLogDecrement) why += " log decrement at Qa below 0.1";
   if (r.ratio < kLevelOneMinimumRatio) {
     if (r.logDecrementAtQa < kLevelOneLogDecrement) why += ",";
     why += " Q0/Qa below 2";
+  }
+  if (r.mapDecides && r.map.regionB) {
+    if (why.back() != ':') why += ",";
+    why += " 2 <= Q0/Qa < 10 in region B of API's CSR map";
   }
   return why;
 }

@@ -229,6 +229,9 @@ void writeRotorFiles(const RotorFiles& f, const LevelOneOutcome& r) {
   if (f.charts && f.tables.levelOne->rowCount() > 0)
     drawChart(f.dir, levelOneDiagram(fitted(f.caption) + "\n" + what, levelOneChart(f.stem), s,
                                      levelOneCsv(f.stem)));
+  if (f.charts)
+    drawChart(f.dir, criticalSpeedRatioDiagram(fitted(f.caption) + "\n" + what,
+                                               criticalSpeedRatioChart(f.stem), s.map));
 }
 
 }  // namespace beamrotor

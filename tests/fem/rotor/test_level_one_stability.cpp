@@ -18,6 +18,7 @@
 #include <numbers>
 #include <vector>
 
+#include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/LevelOneStability.hpp"
 #include "fem/rotor/RotorStability.hpp"
 #include "tests/fem/rotor/RotorTestSupport.hpp"
@@ -46,6 +47,11 @@ struct DampedJeffcott {
   }
 };
 
+/// A point on API's map far inside region A (CSR 1 at no density): the map never decides.
+CriticalSpeedRatioPoint regionA() {
+  return criticalSpeedRatioPoint(1, 1, 0);
+}
+
 }  // namespace
 
 TEST_CASE("level one: Q0 of a Jeffcott rotor with damping at the disk is c omega_n") {
@@ -53,7 +59,7 @@ TEST_CASE("level one: Q0 of a Jeffcott rotor with damping at the disk is c omega
   Model model;
   const int disk = j.build(model);
   const double qa = j.q0() / 3;  // a ratio Q0 / Qa of 3: passes the ratio, the map decides
-  const LevelOneResult r = levelOneStability(model, rotorOptions(2), disk, 1000, qa);
+  const LevelOneResult r = levelOneStability(model, rotorOptions(2), disk, 1000, qa, regionA());
   REQUIRE(r.found);
   // The root is narrowed to a bracket of 1e-10 relative (kSpeedTolerance); the eigenvalues'
   // round-off on this model (massless-shaft modes far out, RotorModes.cpp) is ~1e-12, so 1e-9
@@ -79,7 +85,7 @@ TEST_CASE("level one: the log decrement at Q0 is zero, read through a cross-coup
   const DampedJeffcott j;
   Model probe;
   const int disk = j.build(probe);
-  const LevelOneResult r = levelOneStability(probe, rotorOptions(2), disk, 1000, j.q0() / 3);
+  const LevelOneResult r = levelOneStability(probe, rotorOptions(2), disk, 1000, j.q0() / 3, regionA());
   Model model;
   j.build(model);
   BearingCoefficients coupling;
@@ -119,8 +125,71 @@ TEST_CASE("level one: a rotor without damping has Q0 = 0 and fails") {
   j.c = 0;
   Model model;
   const int disk = j.build(model);
-  const LevelOneResult r = levelOneStability(model, rotorOptions(2), disk, 1000, 1e4);
+  const LevelOneResult r = levelOneStability(model, rotorOptions(2), disk, 1000, 1e4, regionA());
   CHECK(r.found);
   CHECK(r.zeroDecrement == 0);
   CHECK_FALSE(r.pass);
+}
+
+TEST_CASE("level one: API 617's CSR map boundary at hand-computed densities") {
+  // Flat at 2.5 up to 16.53 kg/m^3, then 2.69 - 0.0115 rho down to 2.0 at 60 kg/m^3, and
+  // region B at any ratio above 60 kg/m^3 (boundary 0). Round-off of two operations; the
+  // digitised line meets the flat part to its printed digits (2.4999 at 16.53 kg/m^3).
+  CHECK(criticalSpeedRatioBoundary(0) == 2.5);
+  CHECK(criticalSpeedRatioBoundary(16.53) == 2.5);
+  CHECK(criticalSpeedRatioBoundary(16.53 + 1e-9) == doctest::Approx(2.5).epsilon(1e-4));
+  CHECK(criticalSpeedRatioBoundary(38) == doctest::Approx(2.69 - 0.437).epsilon(1e-15));
+  CHECK(criticalSpeedRatioBoundary(60) == doctest::Approx(2.0).epsilon(1e-15));
+  CHECK(criticalSpeedRatioBoundary(60.01) == 0);
+  const CriticalSpeedRatioPoint a = criticalSpeedRatioPoint(2.4, 1, 10);
+  CHECK(a.ratio == 2.4);
+  CHECK_FALSE(a.regionB);
+  CHECK(criticalSpeedRatioPoint(2.4, 1, 30).regionB);   // boundary 2.345 at 30 kg/m^3
+  CHECK(criticalSpeedRatioPoint(1.1, 1, 70).regionB);   // dense gas: region B
+  CHECK_THROWS_AS(criticalSpeedRatioPoint(0, 1, 10), std::invalid_argument);
+  CHECK_THROWS_AS(criticalSpeedRatioPoint(1, 1, -1), std::invalid_argument);
+  // API's average density: the first stage's suction and the last stage's discharge.
+  CompressorStage first, last;
+  first.suctionDensity = 12;
+  first.dischargeDensity = 18;
+  last.suctionDensity = 18;
+  last.dischargeDensity = 30;
+  CHECK(averageGasDensity({first, last}) == 21);
+}
+
+TEST_CASE("level one: the rigid-support critical speed of a Jeffcott rotor is sqrt(48 E I / m L^3)") {
+  // On pinned ends with a damper (no stiffness) at the disk: the damper is not a support. The
+  // Hermite beam is exact for a point mass at a node on a (nearly) massless shaft: the shaft's
+  // mass (7850e-12 kg/m^3) moves the frequency by ~1e-13 relative.
+  const DampedJeffcott j;
+  Model pinned;
+  j.build(pinned);
+  CHECK(rigidSupportCriticalSpeed(pinned, 1000) == doctest::Approx(j.omegaN()).epsilon(1e-11));
+  // The same rotor held by stiff bearings at its ends: they are pinned, whatever their
+  // stiffness, and the damper at the disk is still left out.
+  Model onBearings;
+  auto sec = std::make_shared<Section>(
+      Section::circle("shaft", Material::fromEnu("light", j.E, 0.3, 7850e-12), j.D));
+  LineSpec spec;
+  spec.dofs = DofSet::lateral();
+  spec.segments.push_back({j.L, sec, 8, 0, {}});
+  spec.points = {{"left", 0}, {"disk", j.L / 2}, {"right", j.L}};
+  buildLine(onBearings, spec);
+  onBearings.add<PointInertia>(onBearings.node("disk"), DofSet::lateral(), j.m);
+  for (const char* end : {"left", "right"})
+    onBearings.add<Bearing>(onBearings.node(end), BearingCoefficients::isotropic(3e7, 2e3));
+  onBearings.add<Bearing>(onBearings.node("disk"), BearingCoefficients::isotropic(0, j.c));
+  CHECK(rigidSupportCriticalSpeed(onBearings, 1000) ==
+        doctest::Approx(j.omegaN()).epsilon(1e-11));
+  // The Level I verdict: Q0 / Qa = 3 lets the map decide; region B fails, region A passes.
+  const int disk = onBearings.node("disk");
+  const double qa = j.q0() / 3;
+  const LevelOneResult inB = levelOneStability(onBearings, rotorOptions(2), disk, 1000, qa,
+                                               criticalSpeedRatioPoint(3, 1, 10));
+  const LevelOneResult inA = levelOneStability(onBearings, rotorOptions(2), disk, 1000, qa,
+                                               criticalSpeedRatioPoint(2, 1, 10));
+  REQUIRE(inA.mapDecides);
+  REQUIRE(inA.logDecrementAtQa >= 0.1);
+  CHECK(inA.pass);
+  CHECK_FALSE(inB.pass);
 }
