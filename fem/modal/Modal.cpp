@@ -1,5 +1,6 @@
 #include "fem/modal/Modal.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -13,6 +14,39 @@
 namespace beamrotor {
 
 namespace {
+
+/// Below this fraction of the nearest elastic eigenvalue (or of |shift| when none was
+/// computed), an eigenvalue among the null space's count nearest zero is its round-off.
+constexpr double kRigidBodyRatio = 1e-6;
+
+/// With a shift, K may be singular: the structure moves freely (a free body, a free drive
+/// train, a mechanism the shift lets through). The dimension of K's null space, r, comes from
+/// the rank-revealing QR of its diagonally scaled form (findMechanism, as the support check
+/// uses), so it is judged on the scaled system, never against a threshold in the units. The r
+/// computed eigenvalues nearest zero are those motions: each is set to exactly 0 (its computed
+/// value is round-off of the shifted factorisation) when it is far below the next one.
+void markRigidBodyModes(const Model& model, const DofMap& dofs, const SparseMatrix& K,
+                        double shift, std::vector<Mode>& modes) {
+  if (shift == 0 || modes.empty()) return;  // K was factorised: it has no null space
+  const int nullity = findMechanism(model, dofs, K).count;
+  if (nullity == 0) return;
+  std::vector<int> order(modes.size());
+  for (int i = 0; i < int(order.size()); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::abs(modes[a].eigenvalue) < std::abs(modes[b].eigenvalue);
+  });
+  const int rigid = std::min<int>(nullity, int(order.size()));
+  const double scale = rigid < int(order.size())
+                           ? std::abs(modes[order[rigid]].eigenvalue)
+                           : std::abs(shift);
+  for (int i = 0; i < rigid; ++i) {
+    Mode& mode = modes[order[i]];
+    if (std::abs(mode.eigenvalue) > kRigidBodyRatio * scale) continue;
+    mode.eigenvalue = 0;
+    mode.frequencyHz = 0;
+    mode.rigidBody = true;
+  }
+}
 
 /// The kind (dofIndex) of each free dof.
 std::vector<int> kindOfEachEquation(const DofMap& dofs) {
@@ -113,6 +147,7 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
     mode.description = describeMode(mode.energyShare);
     result.modes.push_back(std::move(mode));
   }
+  markRigidBodyModes(model, dofs, K, options.shift, result.modes);
   // A frame's modes are named by the rigid motion their effective mass follows (sway,
   // torsion), which the energy shares by global dof kind do not tell for members across x.
   if (!model.members().empty()) {

@@ -92,8 +92,10 @@ struct StaticResult {
 
 /// One vibration mode.
 struct Mode {
-  double eigenvalue = 0;   ///< omega^2 (rad^2/s^2)
+  double eigenvalue = 0;   ///< omega^2 (rad^2/s^2); exactly 0 for rigid-body modes
   double frequencyHz = 0;  ///< sqrt(eigenvalue) / (2 pi); 0 for rigid-body modes
+  /// A zero-energy motion of the structure (a rigid-body mode or a mechanism): K's null space.
+  bool rigidBody = false;
   NodalField shape;        ///< mass-normalised (phi^T M phi = 1)
   /// Effective modal mass (kg) for rigid translation along ux, uy, uz.
   std::array<double, 3> effectiveMass{};

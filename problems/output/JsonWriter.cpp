@@ -282,6 +282,7 @@ Json modalJson(const std::array<bool, kDofKinds>& carried, const AnalysisOutcome
     modes.push_back(
         {{"mode", m + 1},
          {"frequency_hz", mode.frequencyHz},
+         {"rigid_body", mode.rigidBody},
          {"description", mode.description},
          {"effective_mass_kg", perTranslation([&](int k) { return mode.effectiveMass[k]; })},
          // A direction in which nothing moves (all its dofs held) has no mass: ratio 0.

@@ -169,7 +169,6 @@ TorsionOutcome runTrain(const Deck& deck, const TorsionSpec& spec) {
   options.modes = spec.modes;
   options.shift = spec.shiftGiven ? spec.shift : freeTrainShift(train);
   out.modes = solveModes(*model, options);
-  zeroRigidRotations(out.modes);
   // Speeds over the reference shaft's.
   const std::vector<double> toFirst = shaftSpeedRatios(train);
   for (std::size_t i = 0; i < train.shafts.size(); ++i) {
@@ -185,7 +184,7 @@ TorsionOutcome runTrain(const Deck& deck, const TorsionSpec& spec) {
       for (std::size_t m = 0; m < out.modes.modes.size(); ++m) {
         const double f = out.modes.modes[m].frequencyHz;
         const double speed = 2 * std::numbers::pi * f / order;
-        if (!rigidRotation(out.modes, m) && speed >= out.speedFrom && speed <= out.speedTo)
+        if (!out.modes.modes[m].rigidBody && speed >= out.speedFrom && speed <= out.speedTo)
           out.crossings.push_back({order, int(m) + 1, f, speed});
       }
     std::sort(out.crossings.begin(), out.crossings.end(),
@@ -217,7 +216,6 @@ TorsionOutcome runTorsion(const Deck& deck, const TorsionSpec& spec) {
   options.modes = spec.modes;
   options.shift = spec.shiftGiven ? spec.shift : out.free ? freeTrainShift(train) : 0;
   out.modes = solveModes(*out.model, options);
-  zeroRigidRotations(out.modes);
   return out;
 }
 

@@ -39,17 +39,6 @@ double peakOfHarmonics(const std::vector<std::complex<double>>& amplitudes,
   return std::max(best, value((a + b) / 2));
 }
 
-bool rigidRotation(const ModalResult& modes, std::size_t m) {
-  double largest = 0;
-  for (const Mode& mode : modes.modes) largest = std::max(largest, mode.eigenvalue);
-  return modes.modes.at(m).eigenvalue <= 1e-10 * largest;
-}
-
-void zeroRigidRotations(ModalResult& modes) {
-  for (std::size_t m = 0; m < modes.modes.size(); ++m)
-    if (rigidRotation(modes, m)) modes.modes[m].frequencyHz = 0;
-}
-
 double measureTorsion(const std::string& property, const std::string& target,
                       const TorsionOutcome& t) {
   if (!t.atSpeed) throw std::runtime_error("no response at an operating speed");

@@ -63,14 +63,6 @@ struct TorsionOutcome {
 double peakOfHarmonics(const std::vector<std::complex<double>>& amplitudes,
                        const std::vector<double>& orders);
 
-/// Whether mode m (0-based) is the free train turning as one: an eigenvalue that is
-/// round-off (below 1e-10 of the largest found) rather than an elastic mode.
-bool rigidRotation(const ModalResult& modes, std::size_t m);
-
-/// Sets the frequency of every such mode to 0, as ModalResult promises for rigid-body modes
-/// (its eigenvalue, round-off, is kept).
-void zeroRigidRotations(ModalResult& modes);
-
 /// What a check quantity `torsion torque|twist NAME` reads: the trace at the operating speed.
 double measureTorsion(const std::string& property, const std::string& target,
                       const TorsionOutcome& t);

@@ -31,7 +31,7 @@ std::string orderColumn(double order) {
 std::vector<int> elasticModes(const TorsionOutcome& t) {
   std::vector<int> modes;
   for (std::size_t m = 0; m < t.modes.modes.size(); ++m)
-    if (!rigidRotation(t.modes, m)) modes.push_back(int(m) + 1);
+    if (!t.modes.modes[m].rigidBody) modes.push_back(int(m) + 1);
   return modes;
 }
 

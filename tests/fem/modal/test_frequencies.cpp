@@ -58,13 +58,27 @@ TEST_SUITE("frequencies") {
     SUBCASE("shift 0 fails with a clear error naming the free dofs") {
       CHECK_THROWS_AS(solveModes(m, {4, 0}), UnsupportedStructure);
     }
+    SUBCASE("a shift above the rigid-body modes finds only elastic ones") {
+      // The two modes nearest (2 pi 200 Hz)^2 are the elastic ones at 82 and 225 Hz; the
+      // null space's count does not mark them rigid.
+      const ModalResult r = solveModes(m, {2, std::pow(2 * kPi * 200, 2)});
+      REQUIRE(r.modes.size() == 2);
+      for (const Mode& mode : r.modes) {
+        CHECK_FALSE(mode.rigidBody);
+        CHECK(mode.frequencyHz > 50);
+      }
+    }
     SUBCASE("a negative shift works") {
       const ModalResult r = solveModes(m, {4, -10.0});
       REQUIRE(r.modes.size() == 4);
-      // Rigid-body eigenvalues are zero up to round-off of the shifted factorisation:
-      // |lambda| << the first elastic one.
-      CHECK(std::abs(r.modes[0].eigenvalue) < 1e-8 * r.modes[2].eigenvalue);
-      CHECK(std::abs(r.modes[1].eigenvalue) < 1e-8 * r.modes[2].eigenvalue);
+      // K's null space has dimension 2 (translation and rotation in the plane): the two
+      // eigenvalues nearest zero are those motions, reported as exactly 0.
+      CHECK(r.modes[0].eigenvalue == 0);
+      CHECK(r.modes[1].eigenvalue == 0);
+      CHECK(r.modes[0].frequencyHz == 0);
+      CHECK(r.modes[0].rigidBody);
+      CHECK(r.modes[1].rigidBody);
+      CHECK_FALSE(r.modes[2].rigidBody);
       CHECK(relError(r.modes[2].frequencyHz, eulerBernoulliHz(4.730041, 1.5, *s)) < 2e-6);
       CHECK(relError(r.modes[3].frequencyHz, eulerBernoulliHz(7.853205, 1.5, *s)) < 2e-6);
     }
