@@ -12,42 +12,10 @@ namespace beamrotor {
 
 namespace {
 
-/// Values at s = 0, 1/5, .., 1 determine a polynomial of degree <= 5 exactly.
-constexpr int kDisplacementSamples = 6;
-
-/// The three translations along a line element as polynomials in s (static, span load
-/// applied): interpolated through six places, exact for degree <= 5 (cubic shape functions
-/// plus a linear span load's quintic).
-std::array<Polynomial, 3> translationSeries(const LoadedSolution& solution, int element) {
-  using Square = Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples>;
-  // The Vandermonde matrix of the places, decomposed once for every element.
-  static const Eigen::FullPivLU<Square> vandermonde = [] {
-    Square V;
-    for (int i = 0; i < kDisplacementSamples; ++i)
-      for (int k = 0; k < kDisplacementSamples; ++k)
-        V(i, k) = std::pow(double(i) / (kDisplacementSamples - 1), k);
-    return V.fullPivLu();
-  }();
-  const LineElement& line = *asLine(solution.model->elements().at(element));
-  const ElementVector u = elementValues(line, *solution.displacement);
-  const ElementSpanLoad q = solution.spanOn(element, line);
-  Eigen::Matrix<double, kDisplacementSamples, 3> values;
-  for (int i = 0; i < kDisplacementSamples; ++i) {
-    const auto d = line.displacementAt(u, double(i) / (kDisplacementSamples - 1), q);
-    for (int c = 0; c < 3; ++c) values(i, c) = d[c];
-  }
-  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients = vandermonde.solve(values);
-  std::array<Polynomial, 3> out;
-  for (int c = 0; c < 3; ++c)
-    out[c] = Polynomial(coefficients.col(c).data(),
-                        coefficients.col(c).data() + kDisplacementSamples);
-  return out;
-}
-
 /// The largest of sqrt(P(s)) over [0, 1] for a polynomial P >= 0: at an end or where P' = 0.
 std::pair<double, double> largestRoot(const Polynomial& P) {
-  std::vector<double> places{0, 1};
-  for (double s : zerosInUnitInterval(derivativeOf(P))) places.push_back(s);
+  ZeroPlaces places{0, 1};
+  appendZeros(derivativeOf(P), places);
   std::pair<double, double> best{0, -std::numeric_limits<double>::infinity()};
   for (double s : places) {
     const double v = std::sqrt(std::max(0.0, valueAt(P, s)));
@@ -129,8 +97,8 @@ std::array<ComponentRange, 6> memberForceRanges(const LoadedSolution& solution,
       const ForceComponent component = kForceComponents[c];
       const Polynomial p = componentPolynomial(series, component);
       // A polynomial's extremes: the ends and the zeros of its derivative.
-      std::vector<double> places{0, 1};
-      for (double s : zerosInUnitInterval(derivativeOf(p))) places.push_back(s);
+      ZeroPlaces places{0, 1};
+      appendZeros(derivativeOf(p), places);
       for (double s : places) {
         const double v = valueAt(p, s);
         const MemberValue here = memberValue(model, e, s, start + s * line.length(), v);
@@ -155,8 +123,8 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
   const double length = chord.norm();
   const Eigen::Vector3d axis = chord / length;
   const auto endTranslation = [&](int element, double s) {
-    const auto d = solution.displacementAt(element, s);
-    return Eigen::Vector3d(d[0], d[1], d[2]);
+    const std::array<Polynomial, 3> u = solution.translationSeries(element);
+    return Eigen::Vector3d(valueAt(u[0], s), valueAt(u[1], s), valueAt(u[2], s));
   };
   const Eigen::Vector3d u0 = endTranslation(elements.front(), 0);
   const Eigen::Vector3d u1 = endTranslation(elements.back(), 1);
@@ -168,7 +136,7 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
     // Member fraction t = t0 + s dt along this element; chord displacement linear in t.
     const double t0 = (model.nodes()[line.endNodes()[0]] - x0).dot(axis) / length;
     const double dt = line.length() / length;
-    const std::array<Polynomial, 3> u = translationSeries(solution, e);
+    const std::array<Polynomial, 3> u = solution.translationSeries(e);
     std::array<Polynomial, 3> deviation;
     for (int c = 0; c < 3; ++c) {
       const Polynomial chordPart{u0[c] + t0 * (u1[c] - u0[c]), dt * (u1[c] - u0[c])};
@@ -201,7 +169,7 @@ MemberValue largestDisplacement(const LoadedSolution& solution) {
   for (int e = 0; e < int(model.elements().size()); ++e) {
     const LineElement* line = asLine(model.elements()[e]);
     if (!line) continue;
-    const std::array<Polynomial, 3> u = translationSeries(solution, e);
+    const std::array<Polynomial, 3> u = solution.translationSeries(e);
     Polynomial squared;
     for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(u[c], u[c]));
     const auto [s, value] = largestRoot(squared);
