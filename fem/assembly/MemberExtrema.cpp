@@ -1,5 +1,6 @@
 #include "fem/assembly/MemberExtrema.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -11,6 +12,26 @@
 namespace beamrotor {
 
 namespace {
+
+/// An upper bound of |p(s)| over 0 <= s <= 1: the largest |coefficient| of p in the Bernstein
+/// basis of its degree, b_i = sum_{k <= i} C(i, k) / C(n, k) a_k (on [0, 1] p is a convex
+/// combination of them; Farouki and Rajan, Computer Aided Geometric Design 5, 1988). Close to
+/// the true largest for the low degrees here; NaN when a coefficient is.
+double boundOnUnitInterval(const Polynomial& p) {
+  if (p.empty()) return 0;
+  const std::size_t n = p.size() - 1;
+  double bound = 0;
+  for (std::size_t i = 0; i <= n; ++i) {
+    double b = 0, ratio = 1;  // C(i, k) / C(n, k), from k = 0
+    for (std::size_t k = 0; k <= i; ++k) {
+      b += ratio * p[k];
+      if (k < i) ratio *= double(i - k) / double(n - k);
+    }
+    if (b != b) return b;  // NaN
+    bound = std::max(bound, b < 0 ? -b : b);
+  }
+  return bound;
+}
 
 /// The largest of sqrt(P(s)) over [0, 1] for a polynomial P >= 0: at an end or where P' = 0.
 std::pair<double, double> largestRoot(const Polynomial& P) {
@@ -129,7 +150,16 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
   const Eigen::Vector3d u0 = endTranslation(elements.front(), 0);
   const Eigen::Vector3d u1 = endTranslation(elements.back(), 1);
 
-  MemberValue best{elements.front(), 0, 0, -std::numeric_limits<double>::infinity()};
+  // Each element's squared distance from the chord as a polynomial, with an upper bound of
+  // the distance (from its deviation's Bernstein bounds) and its value at the middle.
+  struct Piece {
+    int element;
+    double start, length;
+    Polynomial squared;
+    double bound;
+  };
+  std::vector<Piece> pieces;
+  double seed = -std::numeric_limits<double>::infinity();
   double start = 0;
   for (int e : elements) {
     const LineElement& line = lineElement(model, e);
@@ -138,20 +168,31 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
     const double dt = line.length() / length;
     const std::array<Polynomial, 3> u = solution.translationSeries(e);
     std::array<Polynomial, 3> deviation;
+    double boundSquared = 0;
     for (int c = 0; c < 3; ++c) {
       const Polynomial chordPart{u0[c] + t0 * (u1[c] - u0[c]), dt * (u1[c] - u0[c])};
       deviation[c] = combination(1, u[c], -1, chordPart);
+      boundSquared += std::pow(boundOnUnitInterval(deviation[c]), 2);
     }
     // Across the chord: remove the part along its original direction.
     Polynomial along;
     for (int c = 0; c < 3; ++c) along = combination(1, along, axis[c], deviation[c]);
     Polynomial squared = combination(-1, productOf(along, along), 0, {});
     for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(deviation[c], deviation[c]));
-    const auto [s, value] = largestRoot(squared);
-    if (std::isnan(value) || value > best.value)
-      best = memberValue(model, e, s, start + s * line.length(), value);
-    if (std::isnan(value)) return best;
+    seed = std::max(seed, std::sqrt(std::max(0.0, valueAt(squared, 0.5))));
+    pieces.push_back({e, start, line.length(), squared, std::sqrt(boundSquared)});
     start += line.length();
+  }
+  // The exact largest on every element that can hold the member's largest: an element whose
+  // bound is below a value reached elsewhere (with a margin far above the bound's round-off)
+  // cannot, and is skipped; the others, in order, keep the first of equal values.
+  MemberValue best{elements.front(), 0, 0, -std::numeric_limits<double>::infinity()};
+  for (const Piece& piece : pieces) {
+    if (piece.bound * (1 + 1e-9) < seed) continue;
+    const auto [s, value] = largestRoot(piece.squared);
+    if (std::isnan(value) || value > best.value)
+      best = memberValue(model, piece.element, s, piece.start + s * piece.length, value);
+    if (std::isnan(value)) return best;
   }
   return best;
 }
@@ -170,6 +211,11 @@ MemberValue largestDisplacement(const LoadedSolution& solution) {
     const LineElement* line = asLine(model.elements()[e]);
     if (!line) continue;
     const std::array<Polynomial, 3> u = solution.translationSeries(e);
+    // An element whose translations' Bernstein bounds stay below the largest so far (with a
+    // margin far above their round-off) cannot hold a larger one: skipped.
+    double boundSquared = 0;
+    for (int c = 0; c < 3; ++c) boundSquared += std::pow(boundOnUnitInterval(u[c]), 2);
+    if (std::sqrt(boundSquared) * (1 + 1e-9) < best.value) continue;
     Polynomial squared;
     for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(u[c], u[c]));
     const auto [s, value] = largestRoot(squared);
