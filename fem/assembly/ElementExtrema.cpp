@@ -18,7 +18,8 @@ namespace {
 /// the cancellation of the textbook formula (Press et al., Numerical Recipes, 3rd ed., 5.6). The
 /// vertex -c1 / (2 c2) is the zero of the derivative: a double zero, or a near-double one that
 /// round-off pushed to a slightly negative discriminant, lies there.
-void quadraticZeros(double c0, double c1, double c2, std::vector<double>& out) {
+template <class Places>
+void quadraticZeros(double c0, double c1, double c2, Places& out) {
   const auto keep = [&](double s) {
     if (s >= 0 && s <= 1) out.push_back(s);
   };
@@ -78,8 +79,11 @@ double zeroInBracket(const Polynomial& p, double lo, double hi, bool rising) {
 /// Appends the zeros of p in [0, 1] and those of its derivatives. Degrees 1 and 2 in closed
 /// form; above, between consecutive zeros of p' (found the same way, down to the closed forms)
 /// the polynomial is monotone, so each sign change there holds exactly one zero, found by
-/// zeroInBracket; a zero of even multiplicity is a zero of p' and so already among them.
-void collectZeros(Polynomial p, std::vector<double>& out) {
+/// zeroInBracket; a zero of even multiplicity is a zero of p' and so already among them. The
+/// knots are kept once each, so a degree-n polynomial appends at most about n^2 places
+/// (ZeroPlaces holds those of degree 10).
+template <class Places>
+void collectZeros(Polynomial p, Places& out) {
   while (!p.empty() && p.back() == 0) p.pop_back();
   if (p.size() < 2) return;  // a constant: no isolated zero
   if (p.size() == 2) {
@@ -88,15 +92,16 @@ void collectZeros(Polynomial p, std::vector<double>& out) {
     return;
   }
   if (p.size() == 3) return quadraticZeros(p[0], p[1], p[2], out);
-  std::vector<double> knots{0, 1};
+  ZeroPlaces knots{0, 1};
   collectZeros(derivativeOf(p), knots);
   std::sort(knots.begin(), knots.end());
-  out.insert(out.end(), knots.begin() + 1, knots.end() - 1);
+  knots.resize(std::size_t(std::unique(knots.begin(), knots.end()) - knots.begin()));
+  for (std::size_t k = 1; k + 1 < knots.size(); ++k) out.push_back(knots[k]);
   double atLo = valueAt(p, knots[0]);
+  if (atLo == 0) out.push_back(knots[0]);
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
     const double lo = knots[k], hi = knots[k + 1];
     const double atHi = valueAt(p, hi);
-    if (atLo == 0) out.push_back(lo);
     if (atHi == 0) out.push_back(hi);
     if ((atLo < 0 && atHi > 0) || (atLo > 0 && atHi < 0))  // not NaN
       out.push_back(zeroInBracket(p, lo, hi, atLo < 0));
@@ -105,8 +110,8 @@ void collectZeros(Polynomial p, std::vector<double>& out) {
 }
 
 /// The largest of value(s) over the candidate places; NaN as soon as one value is NaN.
-template <class Value>
-BeamPeak largestAt(int element, const std::vector<double>& places, Value value) {
+template <class Places, class Value>
+BeamPeak largestAt(int element, const Places& places, Value value) {
   BeamPeak best{element, 0, -std::numeric_limits<double>::infinity()};
   for (double s : places) {
     const double v = value(s);
@@ -120,8 +125,16 @@ BeamPeak largestAt(int element, const std::vector<double>& places, Value value) 
 
 std::vector<double> zerosInUnitInterval(const std::vector<double>& c) {
   std::vector<double> out;
-  collectZeros(c, out);
+  collectZeros(Polynomial(c.begin(), c.end()), out);
   return out;
+}
+
+void appendZeros(const Polynomial& p, ZeroPlaces& out) {
+  collectZeros(p, out);
+}
+
+void appendZeros(const Polynomial& p, std::vector<double>& out) {
+  collectZeros(p, out);
 }
 
 ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& forces) {
@@ -138,12 +151,12 @@ ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& 
   // 1. Bending moment |M| = sqrt(P), P = My^2 + Mz^2: at an end or where P' = 0.
   const Polynomial P = combination(1, productOf(My, My), 1, productOf(Mz, Mz));
   const Polynomial dP = derivativeOf(P);
-  std::vector<double> momentAt{0, 1};
+  ZeroPlaces momentAt{0, 1};
   collectZeros(dP, momentAt);
 
   // 2. Shear stress k |V| / A, |V|^2 = Vy^2 + Vz^2 (a polynomial): at an end or where its
   //    derivative vanishes.
-  std::vector<double> shearAt{0, 1};
+  ZeroPlaces shearAt{0, 1};
   collectZeros(derivativeOf(combination(1, productOf(Vy, Vy), 1, productOf(Vz, Vz))), shearAt);
 
   // 3. Normal stress (maxNormalStress): the largest over the fibres of |sigma|, sigma = c + a y
@@ -161,7 +174,7 @@ ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& 
   const auto linearAt = [&](double y, double z) {
     return combination(1, c, 1, combination(y, a, z, b));
   };
-  std::vector<double> stressAt = momentAt;
+  std::vector<double> stressAt(momentAt.begin(), momentAt.end());
   collectZeros(N, stressAt);
   const Polynomial gradient = combination(1, productOf(a, a), 1, productOf(b, b));
   const Polynomial dGradient = derivativeOf(gradient);

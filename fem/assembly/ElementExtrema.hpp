@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "fem/assembly/Polynomial.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
@@ -41,9 +42,17 @@ std::vector<ElementPeaks> elementPeaks(const LoadedSolution& solution);
 std::optional<BeamPeak> largestPeak(const std::vector<ElementPeaks>& peaks,
                                     BeamPeak ElementPeaks::*kind);
 
-/// The real zeros in [0, 1] of the polynomial c[0] + c[1] s + ... (any degree), together with
-/// the zeros of its derivatives there (so even-multiplicity zeros are among them): every place
-/// where it can change sign or touch zero. Exposed for the tests.
+/// Places in [0, 1] held in place: the ends and the zeros of a polynomial of degree <= 10 and
+/// of its derivatives (appendZeros) fit.
+using ZeroPlaces = InPlaceDoubles<128>;
+
+/// Appends the real zeros in [0, 1] of p, together with the zeros of its derivatives there (so
+/// even-multiplicity zeros are among them): every place where it can change sign or touch zero.
+void appendZeros(const Polynomial& p, ZeroPlaces& out);
+void appendZeros(const Polynomial& p, std::vector<double>& out);
+
+/// appendZeros of the polynomial c[0] + c[1] s + ... (degree <= 10) into a new list. Exposed
+/// for the tests.
 std::vector<double> zerosInUnitInterval(const std::vector<double>& c);
 
 }  // namespace beamrotor

@@ -1,10 +1,14 @@
 // The envelope of a member's stress resultants over several static solutions of one structure
 // (the combinations of load cases): at each place along the member, the largest and smallest
-// value of N, Vy, Vz, T, My, Mz over the solutions and which solution gives it. The places are
-// evenly spaced stations plus, on each element, the places of each resultant's largest and
-// smallest value over all the solutions (found from each solution's polynomial: at an end or
-// where its derivative vanishes), so the envelope's largest and smallest value on every
-// element are exact, not sampled, at a cost linear in the solutions.
+// value of N, Vy, Vz, T, My, Mz over the solutions and which solution gives it. On each element
+// a resultant's envelope (the upper one of its largest values, the lower one of its smallest)
+// is piecewise one solution's polynomial; the places are evenly spaced stations plus, for
+// each resultant and side, every place where the solution on top changes and every stationary
+// point of the one on top, so every local extreme of the envelope on every element is exact,
+// not sampled (a second peak as well as the largest), and between two places the envelope is
+// one polynomial. Solutions whose largest value on an element stays below the smallest value
+// of another there are never on top and are not followed, so the cost stays about linear in
+// the solutions.
 #pragma once
 
 #include <array>
@@ -30,7 +34,8 @@ struct EnvelopeStation {
 /// The envelope along member `elements` (line elements from its start to its end) over
 /// `solutions` (at least one, all of one structure: LoadedSolution, Recovery.hpp), at
 /// intervalsPerElement + 1 even places per element (ends included) and, on each element, the
-/// places of each resultant's largest and smallest value over the solutions, in order.
+/// places where each resultant's upper or lower envelope changes solution or is stationary,
+/// in order.
 std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& solutions,
                                             const std::vector<int>& elements,
                                             int intervalsPerElement);

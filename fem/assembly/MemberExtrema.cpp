@@ -1,5 +1,6 @@
 #include "fem/assembly/MemberExtrema.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,42 +13,30 @@ namespace beamrotor {
 
 namespace {
 
-/// Values at s = 0, 1/5, .., 1 determine a polynomial of degree <= 5 exactly.
-constexpr int kDisplacementSamples = 6;
-
-/// The three translations along a line element as polynomials in s (static, span load
-/// applied): interpolated through six places, exact for degree <= 5 (cubic shape functions
-/// plus a linear span load's quintic).
-std::array<Polynomial, 3> translationSeries(const LoadedSolution& solution, int element) {
-  using Square = Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples>;
-  // The Vandermonde matrix of the places, decomposed once for every element.
-  static const Eigen::FullPivLU<Square> vandermonde = [] {
-    Square V;
-    for (int i = 0; i < kDisplacementSamples; ++i)
-      for (int k = 0; k < kDisplacementSamples; ++k)
-        V(i, k) = std::pow(double(i) / (kDisplacementSamples - 1), k);
-    return V.fullPivLu();
-  }();
-  const LineElement& line = *asLine(solution.model->elements().at(element));
-  const ElementVector u = elementValues(line, *solution.displacement);
-  const ElementSpanLoad q = solution.spanOn(element, line);
-  Eigen::Matrix<double, kDisplacementSamples, 3> values;
-  for (int i = 0; i < kDisplacementSamples; ++i) {
-    const auto d = line.displacementAt(u, double(i) / (kDisplacementSamples - 1), q);
-    for (int c = 0; c < 3; ++c) values(i, c) = d[c];
+/// An upper bound of |p(s)| over 0 <= s <= 1: the largest |coefficient| of p in the Bernstein
+/// basis of its degree, b_i = sum_{k <= i} C(i, k) / C(n, k) a_k (on [0, 1] p is a convex
+/// combination of them; Farouki and Rajan, Computer Aided Geometric Design 5, 1988). Close to
+/// the true largest for the low degrees here; NaN when a coefficient is.
+double boundOnUnitInterval(const Polynomial& p) {
+  if (p.empty()) return 0;
+  const std::size_t n = p.size() - 1;
+  double bound = 0;
+  for (std::size_t i = 0; i <= n; ++i) {
+    double b = 0, ratio = 1;  // C(i, k) / C(n, k), from k = 0
+    for (std::size_t k = 0; k <= i; ++k) {
+      b += ratio * p[k];
+      if (k < i) ratio *= double(i - k) / double(n - k);
+    }
+    if (b != b) return b;  // NaN
+    bound = std::max(bound, b < 0 ? -b : b);
   }
-  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients = vandermonde.solve(values);
-  std::array<Polynomial, 3> out;
-  for (int c = 0; c < 3; ++c)
-    out[c] = Polynomial(coefficients.col(c).data(),
-                        coefficients.col(c).data() + kDisplacementSamples);
-  return out;
+  return bound;
 }
 
 /// The largest of sqrt(P(s)) over [0, 1] for a polynomial P >= 0: at an end or where P' = 0.
 std::pair<double, double> largestRoot(const Polynomial& P) {
-  std::vector<double> places{0, 1};
-  for (double s : zerosInUnitInterval(derivativeOf(P))) places.push_back(s);
+  ZeroPlaces places{0, 1};
+  appendZeros(derivativeOf(P), places);
   std::pair<double, double> best{0, -std::numeric_limits<double>::infinity()};
   for (double s : places) {
     const double v = std::sqrt(std::max(0.0, valueAt(P, s)));
@@ -129,8 +118,8 @@ std::array<ComponentRange, 6> memberForceRanges(const LoadedSolution& solution,
       const ForceComponent component = kForceComponents[c];
       const Polynomial p = componentPolynomial(series, component);
       // A polynomial's extremes: the ends and the zeros of its derivative.
-      std::vector<double> places{0, 1};
-      for (double s : zerosInUnitInterval(derivativeOf(p))) places.push_back(s);
+      ZeroPlaces places{0, 1};
+      appendZeros(derivativeOf(p), places);
       for (double s : places) {
         const double v = valueAt(p, s);
         const MemberValue here = memberValue(model, e, s, start + s * line.length(), v);
@@ -155,35 +144,55 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
   const double length = chord.norm();
   const Eigen::Vector3d axis = chord / length;
   const auto endTranslation = [&](int element, double s) {
-    const auto d = solution.displacementAt(element, s);
-    return Eigen::Vector3d(d[0], d[1], d[2]);
+    const std::array<Polynomial, 3> u = solution.translationSeries(element);
+    return Eigen::Vector3d(valueAt(u[0], s), valueAt(u[1], s), valueAt(u[2], s));
   };
   const Eigen::Vector3d u0 = endTranslation(elements.front(), 0);
   const Eigen::Vector3d u1 = endTranslation(elements.back(), 1);
 
-  MemberValue best{elements.front(), 0, 0, -std::numeric_limits<double>::infinity()};
+  // Each element's squared distance from the chord as a polynomial, with an upper bound of
+  // the distance (from its deviation's Bernstein bounds) and its value at the middle.
+  struct Piece {
+    int element;
+    double start, length;
+    Polynomial squared;
+    double bound;
+  };
+  std::vector<Piece> pieces;
+  double seed = -std::numeric_limits<double>::infinity();
   double start = 0;
   for (int e : elements) {
     const LineElement& line = lineElement(model, e);
     // Member fraction t = t0 + s dt along this element; chord displacement linear in t.
     const double t0 = (model.nodes()[line.endNodes()[0]] - x0).dot(axis) / length;
     const double dt = line.length() / length;
-    const std::array<Polynomial, 3> u = translationSeries(solution, e);
+    const std::array<Polynomial, 3> u = solution.translationSeries(e);
     std::array<Polynomial, 3> deviation;
+    double boundSquared = 0;
     for (int c = 0; c < 3; ++c) {
       const Polynomial chordPart{u0[c] + t0 * (u1[c] - u0[c]), dt * (u1[c] - u0[c])};
       deviation[c] = combination(1, u[c], -1, chordPart);
+      boundSquared += std::pow(boundOnUnitInterval(deviation[c]), 2);
     }
     // Across the chord: remove the part along its original direction.
     Polynomial along;
     for (int c = 0; c < 3; ++c) along = combination(1, along, axis[c], deviation[c]);
     Polynomial squared = combination(-1, productOf(along, along), 0, {});
     for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(deviation[c], deviation[c]));
-    const auto [s, value] = largestRoot(squared);
-    if (std::isnan(value) || value > best.value)
-      best = memberValue(model, e, s, start + s * line.length(), value);
-    if (std::isnan(value)) return best;
+    seed = std::max(seed, std::sqrt(std::max(0.0, valueAt(squared, 0.5))));
+    pieces.push_back({e, start, line.length(), squared, std::sqrt(boundSquared)});
     start += line.length();
+  }
+  // The exact largest on every element that can hold the member's largest: an element whose
+  // bound is below a value reached elsewhere (with a margin far above the bound's round-off)
+  // cannot, and is skipped; the others, in order, keep the first of equal values.
+  MemberValue best{elements.front(), 0, 0, -std::numeric_limits<double>::infinity()};
+  for (const Piece& piece : pieces) {
+    if (piece.bound * (1 + 1e-9) < seed) continue;
+    const auto [s, value] = largestRoot(piece.squared);
+    if (std::isnan(value) || value > best.value)
+      best = memberValue(model, piece.element, s, piece.start + s * piece.length, value);
+    if (std::isnan(value)) return best;
   }
   return best;
 }
@@ -201,7 +210,12 @@ MemberValue largestDisplacement(const LoadedSolution& solution) {
   for (int e = 0; e < int(model.elements().size()); ++e) {
     const LineElement* line = asLine(model.elements()[e]);
     if (!line) continue;
-    const std::array<Polynomial, 3> u = translationSeries(solution, e);
+    const std::array<Polynomial, 3> u = solution.translationSeries(e);
+    // An element whose translations' Bernstein bounds stay below the largest so far (with a
+    // margin far above their round-off) cannot hold a larger one: skipped.
+    double boundSquared = 0;
+    for (int c = 0; c < 3; ++c) boundSquared += std::pow(boundOnUnitInterval(u[c]), 2);
+    if (std::sqrt(boundSquared) * (1 + 1e-9) < best.value) continue;
     Polynomial squared;
     for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(u[c], u[c]));
     const auto [s, value] = largestRoot(squared);

@@ -1,14 +1,67 @@
 // Polynomials in one variable by their coefficients, lowest degree first: the little algebra
-// the exact extrema along elements (ElementExtrema, MemberExtrema) need.
+// the exact extrema along elements (ElementExtrema, MemberExtrema, MemberEnvelope) need. Held
+// in place, not on the heap: the extrema run this algebra for every element of every load
+// combination, where a vector's allocation cost more than the arithmetic.
 #pragma once
 
 #include <algorithm>
-#include <vector>
+#include <array>
+#include <cstddef>
+#include <initializer_list>
+#include <iterator>
+#include <stdexcept>
 
 namespace beamrotor {
 
-/// A polynomial in s by its coefficients, lowest degree first.
-using Polynomial = std::vector<double>;
+/// Up to N doubles in place, with the part of std::vector's interface the algebra uses. More
+/// than N is a programming error (std::length_error), never a silent truncation.
+template <std::size_t N>
+class InPlaceDoubles {
+ public:
+  InPlaceDoubles() = default;
+  InPlaceDoubles(std::initializer_list<double> values) : InPlaceDoubles(values.begin(), values.end()) {}
+  template <class Iterator>
+  InPlaceDoubles(Iterator first, Iterator last) {
+    for (; first != last; ++first) push_back(*first);
+  }
+  /// `count` copies of `value`.
+  InPlaceDoubles(std::size_t count, double value) {
+    for (std::size_t k = 0; k < count; ++k) push_back(value);
+  }
+
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  double& operator[](std::size_t k) { return values_[k]; }
+  double operator[](std::size_t k) const { return values_[k]; }
+  double back() const { return values_[size_ - 1]; }
+  void push_back(double v) {
+    if (size_ == N) throw std::length_error("a polynomial past its fixed degree");
+    values_[size_++] = v;
+  }
+  void pop_back() { --size_; }
+  void clear() { size_ = 0; }
+  /// Keeps the first n values, or appends zeros up to n.
+  void resize(std::size_t n) {
+    while (size_ > n) pop_back();
+    while (size_ < n) push_back(0);
+  }
+
+  double* begin() { return values_.data(); }
+  double* end() { return values_.data() + size_; }
+  const double* begin() const { return values_.data(); }
+  const double* end() const { return values_.data() + size_; }
+  std::reverse_iterator<const double*> rbegin() const { return std::reverse_iterator(end()); }
+  std::reverse_iterator<const double*> rend() const { return std::reverse_iterator(begin()); }
+
+ private:
+  std::array<double, N> values_{};
+  std::size_t size_ = 0;
+};
+
+/// A polynomial in s by its coefficients, lowest degree first, of degree at most 10: the
+/// square of a quintic (an element's translations, cubic shape functions plus a linear span
+/// load's quintic) or of a cubic times a sextic (the normal stress's arc condition).
+using Polynomial = InPlaceDoubles<11>;
 
 inline double valueAt(const Polynomial& p, double s) {
   double v = 0;

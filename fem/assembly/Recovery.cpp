@@ -1,6 +1,7 @@
 #include "fem/assembly/Recovery.hpp"
 
 #include "fem/assembly/ParallelParts.hpp"
+#include "fem/assembly/SolutionPolynomials.hpp"
 #include "fem/model/ShearStress.hpp"
 
 namespace beamrotor {
@@ -18,8 +19,13 @@ std::array<double, kDofKinds> displacementAlong(const LineElement& element, cons
 }
 
 SectionForceSeries LoadedSolution::forceSeries(int element) const {
+  if (polynomials) return polynomials->forces(element);
   const LineElement& line = *asLine(model->elements().at(element));
   return line.sectionForceSeries(elementValues(line, *displacement), spanOn(element, line));
+}
+
+std::array<Polynomial, 3> LoadedSolution::translationSeries(int element) const {
+  return polynomials ? polynomials->translations(element) : recoveredTranslations(*this, element);
 }
 
 std::array<double, kDofKinds> LoadedSolution::displacementAt(int element, double s) const {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "fem/assembly/Polynomial.hpp"
 #include "fem/model/LineElement.hpp"
 #include "fem/model/Loading.hpp"
 #include "fem/model/Model.hpp"
@@ -13,23 +14,31 @@
 
 namespace beamrotor {
 
-/// One static solution as recovery reads it: the model, its nodal field, and the loading it
-/// was solved under when that is not the model's own (a load case on the same structure,
-/// Loading.hpp; null: the loads the model's elements carry). Converts from a model and a
-/// field, the usual case.
+class SolutionPolynomials;
+
+/// One static solution as recovery reads it: the model, its nodal field, the loading it was
+/// solved under when that is not the model's own (a load case on the same structure,
+/// Loading.hpp; null: the loads the model's elements carry), and, when computed once for it,
+/// its polynomials along the line elements (SolutionPolynomials.hpp; null: recovered from the
+/// field element by element on each call). Converts from a model and a field, the usual case.
 struct LoadedSolution {
   const Model* model = nullptr;
   const NodalField* displacement = nullptr;
   const Loading* loading = nullptr;
+  const SolutionPolynomials* polynomials = nullptr;
 
-  LoadedSolution(const Model& m, const NodalField& u, const Loading* l = nullptr)
-      : model(&m), displacement(&u), loading(l) {}
+  LoadedSolution(const Model& m, const NodalField& u, const Loading* l = nullptr,
+                 const SolutionPolynomials* p = nullptr)
+      : model(&m), displacement(&u), loading(l), polynomials(p) {}
   /// The span load line element `element` carries in this solution.
   ElementSpanLoad spanOn(int element, const LineElement& line) const {
     return loading ? loading->spanOn(element) : line.spanLoad();
   }
   /// Line element `element`'s resultants along it (its span load included).
   SectionForceSeries forceSeries(int element) const;
+  /// Line element `element`'s translations ux, uy, uz along it as polynomials in s (its span
+  /// load's share included; exact, degree <= 5).
+  std::array<Polynomial, 3> translationSeries(int element) const;
   /// Line element `element`'s displacements at fraction s (its span load's share included).
   std::array<double, kDofKinds> displacementAt(int element, double s) const;
 };

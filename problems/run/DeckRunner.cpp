@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "fem/assembly/Recovery.hpp"
+#include "fem/assembly/SolutionPolynomials.hpp"
 #include "fem/modal/Modal.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/stability/Buckling.hpp"
@@ -39,12 +40,14 @@ namespace {
 
 /// A combination's solution: the factored sum of its cases' displacements and reactions
 /// (every case has the same supports, so their reactions line up), the hinge rotations
-/// recovered under its loading, the factored sum of the cases'.
+/// recovered under its loading, the factored sum of the cases', and its polynomials along the
+/// elements, the factored sum of the cases'.
 CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
                           std::span<const CaseOutcome> cases) {
   Stopwatch clock;
-  CaseOutcome out{k.name, true, k.factors, nullptr, {}, {}};
+  CaseOutcome out{k.name, true, k.factors, nullptr, {}, {}, nullptr};
   std::vector<std::pair<std::shared_ptr<const Loading>, double>> parts;
+  std::vector<std::pair<std::shared_ptr<const SolutionPolynomials>, double>> polynomials;
   StaticResult& r = out.statics;
   const StaticResult& first = cases.front().statics;
   r.displacement = NodalField::Zero(first.displacement.rows(), first.displacement.cols());
@@ -56,6 +59,7 @@ CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
     for (const CaseOutcome& c : cases)
       if (c.name == name) {
         parts.emplace_back(c.loading, factor);
+        polynomials.emplace_back(c.polynomials, factor);
         r.displacement += factor * c.statics.displacement;
         for (std::size_t i = 0; i < r.reactions.size(); ++i)
           r.reactions[i].value += factor * c.statics.reactions[i].value;
@@ -64,6 +68,7 @@ CaseOutcome combinationOf(const DeckCombination& k, const Model& model,
         r.roundOff = std::max(r.roundOff, c.statics.roundOff);
       }
   out.loading = std::make_shared<const Loading>(Loading::combination(parts));
+  out.polynomials = std::make_shared<const SolutionPolynomials>(std::move(polynomials));
   r.hinges = hingeRotations(out.on(model));
   r.activeSetIterations = 1;
   r.rcond = first.rcond;
@@ -83,12 +88,21 @@ StaticOutcome solveWithCases(const Deck& deck, const Model& model, const StaticO
   std::vector<const Loading*> loadings{nullptr};  // the model's own loads first
   for (const DeckLoadCase& lc : deck.loadCases) {
     out.push_back({lc.name, false, {},
-                   std::make_shared<const Loading>(loadingOf(deck, model, lc.loads)), {}, {}});
+                   std::make_shared<const Loading>(loadingOf(deck, model, lc.loads)), {}, {},
+                   nullptr});
     loadings.push_back(out.back().loading.get());
   }
   std::vector<StaticResult> results = solveLoadings(model, loadings, options);
   statics.statics = std::move(results.front());
   for (std::size_t i = 1; i < results.size(); ++i) out[i - 1].statics = std::move(results[i]);
+  // With combinations, each case's polynomials along the elements, recovered once: each
+  // combination's are then their factored sum.
+  if (!deck.combinations.empty())
+    for (CaseOutcome& c : out) {
+      Stopwatch clock;
+      c.polynomials = std::make_shared<const SolutionPolynomials>(c.on(model));
+      c.statics.time.total += clock.lap();
+    }
   const std::span<const CaseOutcome> cases(out.data(), out.size());
   for (const DeckCombination& k : deck.combinations) out.push_back(combinationOf(k, model, cases));
   for (CaseOutcome& c : out)

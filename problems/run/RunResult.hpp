@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fem/assembly/Recovery.hpp"
+#include "fem/assembly/SolutionPolynomials.hpp"
 #include "fem/model/Loading.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
@@ -54,9 +55,12 @@ struct CaseOutcome {
   std::shared_ptr<const Loading> loading;
   StaticResult statics;
   std::vector<std::string> warnings;  ///< not errors, e.g. displacements past the model's size
+  /// Its polynomials along the line elements when the analysis has combinations: a load
+  /// case's recovered once, a combination's the factored sum of its cases' (null otherwise).
+  std::shared_ptr<const SolutionPolynomials> polynomials;
   /// The solution as recovery reads it, on `model` (the run's model).
   LoadedSolution on(const Model& model) const {
-    return {model, statics.displacement, loading.get()};
+    return {model, statics.displacement, loading.get(), polynomials.get()};
   }
 };
 

@@ -1,0 +1,92 @@
+#include "fem/assembly/SolutionPolynomials.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace beamrotor {
+
+namespace {
+
+/// Values at s = 0, 1/5, .., 1 determine a polynomial of degree <= 5 exactly.
+constexpr int kDisplacementSamples = 6;
+
+/// x += f y, resultant by resultant.
+void addScaled(SectionForces& x, double f, const SectionForces& y) {
+  x.N += f * y.N;
+  x.Vy += f * y.Vy;
+  x.Vz += f * y.Vz;
+  x.T += f * y.T;
+  x.My += f * y.My;
+  x.Mz += f * y.Mz;
+}
+
+}  // namespace
+
+std::array<Polynomial, 3> recoveredTranslations(const LoadedSolution& solution, int element) {
+  using Square = Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples>;
+  // The Vandermonde matrix of the places, decomposed once for every element.
+  static const Eigen::FullPivLU<Square> vandermonde = [] {
+    Square V;
+    for (int i = 0; i < kDisplacementSamples; ++i)
+      for (int k = 0; k < kDisplacementSamples; ++k)
+        V(i, k) = std::pow(double(i) / (kDisplacementSamples - 1), k);
+    return V.fullPivLu();
+  }();
+  const LineElement& line = *asLine(solution.model->elements().at(element));
+  const ElementVector u = elementValues(line, *solution.displacement);
+  const ElementSpanLoad q = solution.spanOn(element, line);
+  Eigen::Matrix<double, kDisplacementSamples, 3> values;
+  for (int i = 0; i < kDisplacementSamples; ++i) {
+    const auto d = line.displacementAt(u, double(i) / (kDisplacementSamples - 1), q);
+    for (int c = 0; c < 3; ++c) values(i, c) = d[c];
+  }
+  const Eigen::Matrix<double, kDisplacementSamples, 3> coefficients = vandermonde.solve(values);
+  std::array<Polynomial, 3> out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = Polynomial(coefficients.col(c).data(), coefficients.col(c).data() + kDisplacementSamples);
+  return out;
+}
+
+SolutionPolynomials::SolutionPolynomials(const LoadedSolution& solution) {
+  if (solution.polynomials)
+    throw std::invalid_argument("recovering polynomials from a solution that carries them");
+  const auto& elements = solution.model->elements();
+  own_.resize(elements.size());
+  for (int e = 0; e < int(elements.size()); ++e) {
+    if (!asLine(elements[e])) continue;
+    own_[e].forces = solution.forceSeries(e);
+    const std::array<Polynomial, 3> u = recoveredTranslations(solution, e);
+    for (std::size_t c = 0; c < 3; ++c) std::copy(u[c].begin(), u[c].end(), own_[e].translations[c].begin());
+  }
+}
+
+SolutionPolynomials::SolutionPolynomials(
+    std::vector<std::pair<std::shared_ptr<const SolutionPolynomials>, double>> parts)
+    : parts_(std::move(parts)) {
+  for (const auto& [part, factor] : parts_)
+    if (!part) throw std::invalid_argument("a combination's part has no polynomials");
+}
+
+ElementPolynomials SolutionPolynomials::of(int element) const {
+  if (parts_.empty()) return own_.at(element);
+  ElementPolynomials sum;
+  for (const auto& [part, factor] : parts_) {
+    const ElementPolynomials p = part->of(element);
+    for (std::size_t k = 0; k < sum.forces.c.size(); ++k)
+      addScaled(sum.forces.c[k], factor, p.forces.c[k]);
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t k = 0; k < 6; ++k) sum.translations[c][k] += factor * p.translations[c][k];
+  }
+  return sum;
+}
+
+std::array<Polynomial, 3> SolutionPolynomials::translations(int element) const {
+  const ElementPolynomials p = of(element);
+  std::array<Polynomial, 3> out;
+  for (int c = 0; c < 3; ++c) out[c] = Polynomial(p.translations[c].begin(), p.translations[c].end());
+  return out;
+}
+
+}  // namespace beamrotor

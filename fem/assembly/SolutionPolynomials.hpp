@@ -1,0 +1,54 @@
+// One static solution along every line element as polynomials in the element fraction s: the
+// six resultants (at most cubic) and the three translations (at most quintic). Recovered once
+// from a solution's nodal field and span loads, or, for a combination of load cases, the
+// factored sum of its cases' polynomials: the model is linear, so a combination's polynomials
+// on an element are its cases' coefficient vectors weighted by the factors, a few multiply-adds
+// without the element recovery (local frames, shape functions, span loads) that every
+// combination repeated before. The extrema along elements and members read them through
+// LoadedSolution (Recovery.hpp) when a solution carries them.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "fem/assembly/Polynomial.hpp"
+#include "fem/assembly/Recovery.hpp"
+#include "fem/model/LineElement.hpp"
+
+namespace beamrotor {
+
+/// The coefficients of one line element's polynomials, lowest degree first.
+struct ElementPolynomials {
+  SectionForceSeries forces;                           ///< N, Vy, Vz, T, My, Mz, cubic
+  std::array<std::array<double, 6>, 3> translations{};  ///< ux, uy, uz (m, global), quintic
+};
+
+class SolutionPolynomials {
+ public:
+  /// Each line element's polynomials recovered from `solution` (other elements: zero).
+  explicit SolutionPolynomials(const LoadedSolution& solution);
+  /// The factored sum of other solutions' polynomials, all of one model (a load combination;
+  /// the parts are shared, not copied).
+  explicit SolutionPolynomials(
+      std::vector<std::pair<std::shared_ptr<const SolutionPolynomials>, double>> parts);
+
+  /// Line element `element`'s polynomials (index into Model::elements()).
+  ElementPolynomials of(int element) const;
+  /// Its resultants, as LineElement::sectionForceSeries gives them.
+  SectionForceSeries forces(int element) const { return of(element).forces; }
+  /// Its translations ux, uy, uz as polynomials in s.
+  std::array<Polynomial, 3> translations(int element) const;
+
+ private:
+  std::vector<ElementPolynomials> own_;  ///< recovered: by element index
+  std::vector<std::pair<std::shared_ptr<const SolutionPolynomials>, double>> parts_;
+};
+
+/// The translations ux, uy, uz along line element `element` of `solution` (static, its span
+/// load applied) recovered from the element: interpolated through six places, exact for degree
+/// <= 5 (cubic shape functions plus a linear span load's quintic).
+std::array<Polynomial, 3> recoveredTranslations(const LoadedSolution& solution, int element);
+
+}  // namespace beamrotor

@@ -1,0 +1,272 @@
+// A load combination's polynomials along the elements, the factored sum of its cases' (fem/
+// assembly/SolutionPolynomials.hpp), against two independent references: the polynomials
+// recovered element by element from the combination's own nodal field and loading (the path
+// every combination took before), and a deck carrying the combination's factored loads solved
+// on its own. And the envelope over the combinations along a member, exact at every local
+// extreme (a second peak inside an element as well as the largest) and one polynomial between
+// its places, against a dense sampling of every combination.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/MemberEnvelope.hpp"
+#include "fem/assembly/MemberExtrema.hpp"
+#include "fem/assembly/Recovery.hpp"
+#include "fem/assembly/SolutionPolynomials.hpp"
+#include "problems/run/Study.hpp"
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+
+// Named, not anonymous: the test sources are compiled in unity batches.
+namespace combination_polynomials {
+
+/// A 3d portal (tube columns, a rectangular beam) with an out-of-plane cantilever, under
+/// self-weight and a trapezoidal load (dead), a point load and a uniform load across a column
+/// (wind) and a temperature gradient (heat), or, with `loads`, those loads alone.
+std::string frameDeck(const std::string& loads) {
+  return "model: {dimension: 3d}\n"
+         "materials: [{name: steel, E: 210e9, nu: 0.3, rho: 7850, alpha: 12e-6}]\n"
+         "sections:\n"
+         "  - {name: column, shape: tube, D: 0.3, t: 0.012}\n"
+         "  - {name: beam, shape: rectangle, b: 0.2, h: 0.4}\n"
+         "nodes: [{name: A, at: [0, 0, 0]}, {name: B, at: [0, 3.5, 0]}, {name: C, at: [4, 3.5, 0]},\n"
+         "        {name: D, at: [4, 0, 0]}, {name: E, at: [4, 3.5, 2.5]}]\n"
+         "members:\n"
+         "  - {name: left, from: A, to: B, section: column, elements: 3}\n"
+         "  - {name: beam, from: B, to: C, section: beam, elements: 4}\n"
+         "  - {name: right, from: D, to: C, section: column, elements: 3}\n"
+         "  - {name: arm, from: C, to: E, section: beam, elements: 2}\n"
+         "supports: [{name: A, at: A, fix: clamped}, {name: D, at: D, fix: clamped}]\n" +
+         loads + "analyses: [{type: static}]\n";
+}
+
+const std::string kDead = "{type: self-weight, g: 9.81}, "
+                          "{type: distributed, member: beam, qy: [-10e3, -25e3]}";
+const std::string kWind = "{type: point, at: B, fx: 8e3}, "
+                          "{type: distributed, member: left, qz: 3e3}";
+const std::string kHeat = "{type: temperature, member: beam, dT: 20, dT_y: 15}";
+
+const std::string kCases = "loads: []\n"
+                           "load_cases:\n"
+                           "  - {name: dead, loads: [" + kDead + "]}\n"
+                           "  - {name: wind, loads: [" + kWind + "]}\n"
+                           "  - {name: heat, loads: [" + kHeat + "]}\n"
+                           "combinations:\n"
+                           "  - {name: ULS, factors: {dead: 1.35, wind: 1.5, heat: 0.6}}\n"
+                           "  - {name: suction, factors: {dead: 1, wind: -1.5}}\n"
+                           "  - {name: cold, factors: {dead: 1, heat: -1.2}}\n";
+
+/// The largest |value| of `values`.
+double largestOf(const std::vector<double>& values) {
+  double m = 0;
+  for (double v : values) m = std::max(m, std::abs(v));
+  return m;
+}
+
+/// Every extreme a combination reports (element peaks, member ranges, chord deflections, the
+/// largest displacement), in one order, each with its kind (what it measures), for comparing
+/// two ways of computing them.
+struct Extreme {
+  int kind;
+  double value;
+};
+std::vector<Extreme> extremesOf(const LoadedSolution& solution) {
+  std::vector<Extreme> out;
+  for (const ElementPeaks& p : elementPeaks(solution))
+    out.insert(out.end(), {{0, p.stress.value}, {1, p.shear.value}, {2, p.moment.value}});
+  for (const auto& [name, elements] : solution.model->members()) {
+    const auto ranges = memberForceRanges(solution, elements);
+    for (int c = 0; c < 6; ++c) out.insert(out.end(), {{3 + c, ranges[c].max.value}, {3 + c, ranges[c].min.value}});
+    out.push_back({9, largestChordDeflection(solution, elements).value});
+  }
+  out.push_back({10, largestDisplacement(solution).value});
+  return out;
+}
+
+/// Checks that a and b (the same extremes two ways) agree to 1e-12 of the largest value of
+/// each kind: an extreme much smaller than others of its kind (a resultant a member barely
+/// carries) holds the round-off of their size, from the cancellation that leaves it small
+/// (measured up to 1.1e-13 of it here: the element recovery in local frames against the sum).
+void checkSameExtremes(const std::vector<Extreme>& a, const std::vector<Extreme>& b) {
+  REQUIRE(a.size() == b.size());
+  std::vector<double> scale(11, 0.0);
+  for (const Extreme& x : b) scale[x.kind] = std::max(scale[x.kind], std::abs(x.value));
+  double largest = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CAPTURE(a[i].kind);
+    REQUIRE(a[i].kind == b[i].kind);
+    CHECK(std::abs(a[i].value - b[i].value) <= 1e-12 * scale[b[i].kind]);
+    largest = std::max(largest, std::abs(a[i].value - b[i].value) / scale[b[i].kind]);
+  }
+  MESSAGE("extremes agree to " << largest << " of the largest of their kind");
+}
+
+const CaseOutcome& combinationNamed(const RunResult& run, const std::string& name) {
+  for (const CaseOutcome& c : casesOf(run.analyses.front()))
+    if (c.name == name) return c;
+  FAIL("no combination " << name);
+  throw;
+}
+
+// A simply supported beam of one element under two triangular loads: rising to the right
+// (moment (q L x / 6)(1 - x^2 / L^2), largest at x = L / sqrt(3)) and falling (its mirror).
+// Combination R (rising) and F (0.98 falling) each have one peak; the envelope of the largest
+// moments has two inside the one element, F's at 0.4226 L and R's, the larger, at 0.5774 L,
+// with the change from F to R between them; `both` (uniform 0.4 q) is never on top.
+const std::string kTwoPeaks =
+    "model: {dimension: planar}\n"
+    "materials: [{name: steel, E: 210e9, nu: 0.3}]\n"
+    "sections: [{name: beam, shape: general, A: 53.8e-4, I: 8356e-8, J: 1e-6, depth: 0.3, "
+    "width: 0.15}]\n"
+    "nodes: [{name: A, at: [0, 0]}, {name: B, at: [6, 0]}]\n"
+    "members: [{name: beam, from: A, to: B, section: beam, elements: 1}]\n"
+    "supports: [{name: A, at: A, fix: pinned}, {name: B, at: B, fix: [uy]}]\n"
+    "loads: []\n"
+    "load_cases:\n"
+    "  - {name: rising, loads: [{type: distributed, member: beam, qy: [0, -30e3]}]}\n"
+    "  - {name: falling, loads: [{type: distributed, member: beam, qy: [-30e3, 0]}]}\n"
+    "combinations:\n"
+    "  - {name: R, factors: {rising: 1}}\n"
+    "  - {name: F, factors: {falling: 0.98}}\n"
+    "  - {name: both, factors: {rising: 0.4, falling: 0.4}}\n"
+    "analyses: [{type: static}]\n";
+
+}  // namespace combination_polynomials
+
+using namespace combination_polynomials;
+
+TEST_SUITE("load cases") {
+  TEST_CASE("a combination's polynomials: its cases' factored sum, as recovered and as solved") {
+    const Study s = test::solveDeckText(frameDeck(kCases), "frame_cases.yaml");
+    const RunResult& run = *s.run;
+    const Model& model = *run.model;
+    for (const CaseOutcome& c : casesOf(run.analyses.front())) {
+      CAPTURE(c.name);
+      REQUIRE(c.polynomials);
+      const LoadedSolution superposed = c.on(model);
+      const LoadedSolution recovered{model, c.statics.displacement, c.loading.get()};
+      // Coefficient by coefficient: the sum of the cases' recovered polynomials against the
+      // combination's own, both from fields that agree to round-off (the combination's field
+      // is the factored sum of the cases'): a few ulps of the largest coefficient, 1e-12
+      // leaves room for the cancellation inside the element recovery (measured below 1e-14).
+      std::vector<double> a, b;
+      for (int e = 0; e < int(model.elements().size()); ++e) {
+        if (!asLine(model.elements()[e])) continue;
+        const SectionForceSeries fa = superposed.forceSeries(e), fb = recovered.forceSeries(e);
+        for (std::size_t k = 0; k < 4; ++k)
+          for (ForceComponent f : kForceComponents) {
+            a.push_back(componentOf(fa.c[k], f));
+            b.push_back(componentOf(fb.c[k], f));
+          }
+      }
+      const double forceScale = largestOf(b);
+      REQUIRE(forceScale > 0);
+      for (std::size_t i = 0; i < a.size(); ++i) CHECK(std::abs(a[i] - b[i]) <= 1e-12 * forceScale);
+      a.clear(), b.clear();
+      for (int e = 0; e < int(model.elements().size()); ++e) {
+        if (!asLine(model.elements()[e])) continue;
+        const auto ua = superposed.translationSeries(e), ub = recovered.translationSeries(e);
+        for (int k = 0; k < 3; ++k) {
+          a.insert(a.end(), ua[k].begin(), ua[k].end());
+          b.insert(b.end(), ub[k].begin(), ub[k].end());
+        }
+      }
+      const double displacementScale = largestOf(b);
+      REQUIRE(displacementScale > 0);
+      for (std::size_t i = 0; i < a.size(); ++i)
+        CHECK(std::abs(a[i] - b[i]) <= 1e-12 * displacementScale);
+      // Every extreme (found from those coefficients; a peak's place may move by the square
+      // root of round-off where it is flat, its value by round-off only).
+      checkSameExtremes(extremesOf(superposed), extremesOf(recovered));
+    }
+    // The ULS combination against its factored loads solved as a deck of their own (one
+    // factorisation each; the solutions' round-off, about 1e-15 of the displacements here,
+    // bounds the difference). Its loads: dead x 1.35, wind x 1.5, heat x 0.6.
+    const std::string uls =
+        "loads: [{type: self-weight, g: 13.2435}, "
+        "{type: distributed, member: beam, qy: [-13.5e3, -33.75e3]}, "
+        "{type: point, at: B, fx: 12e3}, {type: distributed, member: left, qz: 4.5e3}, "
+        "{type: temperature, member: beam, dT: 12, dT_y: 9}]\n";
+    const Study direct = test::solveDeckText(frameDeck(uls), "frame_uls.yaml");
+    const Model& directModel = *direct.run->model;
+    const LoadedSolution alone{directModel, staticsOf(direct.run->analyses.front())->displacement};
+    checkSameExtremes(extremesOf(combinationNamed(run, "ULS").on(model)), extremesOf(alone));
+  }
+
+  TEST_CASE("the envelope along an element: every local extreme exact, one polynomial between") {
+    const Study s = test::solveDeckText(kTwoPeaks, "two_peaks.yaml");
+    const RunResult& run = *s.run;
+    const Model& model = *run.model;
+    std::vector<LoadedSolution> combinations;
+    for (const CaseOutcome& c : casesOf(run.analyses.front()))
+      if (c.combination) combinations.push_back(c.on(model));
+    REQUIRE(combinations.size() == 3);
+    const std::vector<int>& elements = model.members().front().second;
+    REQUIRE(elements.size() == 1);
+    // Only the element's ends as even places: everything inside comes from the envelope.
+    const std::vector<EnvelopeStation> env = memberEnvelope(combinations, elements, 1);
+    const auto mz = [&](std::size_t k, double s) {
+      return combinations[k].forceSeries(elements.front()).at(s).Mz;
+    };
+    const double q = 30e3, L = 6, scale = q * L * L;
+    // Round-off of the moments: a few ulps of q L^2; 1e-13 of it.
+    const double roundOff = 1e-13 * scale;
+    // 1. Both peaks are stations, at their closed-form places and values.
+    const double xi = 1 / std::sqrt(3.0), peak = q * L * L * xi * (1 - xi * xi) / 6;
+    const auto stationNear = [&](double s) -> const EnvelopeStation* {
+      for (const EnvelopeStation& st : env)
+        if (std::abs(st.s - s) < 1e-9) return &st;
+      return nullptr;
+    };
+    const EnvelopeStation* right = stationNear(xi);
+    const EnvelopeStation* left = stationNear(1 - xi);
+    REQUIRE(right);
+    REQUIRE(left);
+    // The sagging side: the largest values if the moments of a downward load are positive in
+    // the element's sign convention, the smallest otherwise; R governs the right peak, F the
+    // left one.
+    const double sagging = right->max[5] > -right->min[5] ? 1 : -1;
+    const auto side = [&](const EnvelopeStation* st) {
+      return sagging > 0 ? std::pair{st->max[5], st->maxBy[5]} : std::pair{-st->min[5], st->minBy[5]};
+    };
+    CHECK(std::abs(side(right).first - peak) <= roundOff);
+    CHECK(side(right).second == 0);
+    CHECK(std::abs(side(left).first - 0.98 * peak) <= roundOff);
+    CHECK(side(left).second == 1);
+    // 2. Between consecutive stations the envelope is one combination's polynomial (the one on
+    //    top at the middle), so nothing between them is larger or smaller than it, and neither
+    //    envelope has a local extreme there: dense sampling, 2000 places per piece.
+    for (std::size_t i = 0; i + 1 < env.size(); ++i) {
+      const double a = env[i].s, b = env[i + 1].s, mid = 0.5 * (a + b);
+      for (double sign : {1.0, -1.0}) {
+        std::size_t top = 0;
+        for (std::size_t k = 1; k < combinations.size(); ++k)
+          if (sign * mz(k, mid) > sign * mz(top, mid)) top = k;
+        for (int j = 0; j <= 2000; ++j) {
+          const double t = a + (b - a) * j / 2000;
+          double best = mz(0, t);
+          for (std::size_t k = 1; k < combinations.size(); ++k)
+            best = sign > 0 ? std::max(best, mz(k, t)) : std::min(best, mz(k, t));
+          CHECK(std::abs(best - mz(top, t)) <= roundOff);
+        }
+      }
+    }
+    // 3. At every station, the envelope's values and names are those of the combinations
+    //    evaluated there.
+    for (const EnvelopeStation& st : env) {
+      double hi = -1e300, lo = 1e300;
+      for (std::size_t k = 0; k < combinations.size(); ++k)
+        hi = std::max(hi, mz(k, st.s)), lo = std::min(lo, mz(k, st.s));
+      CHECK(std::abs(st.max[5] - hi) <= roundOff);
+      CHECK(std::abs(st.min[5] - lo) <= roundOff);
+      CHECK(std::abs(mz(std::size_t(st.maxBy[5]), st.s) - hi) <= roundOff);
+      CHECK(std::abs(mz(std::size_t(st.minBy[5]), st.s) - lo) <= roundOff);
+    }
+  }
+}
