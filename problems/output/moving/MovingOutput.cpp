@@ -119,11 +119,24 @@ void drawMovingCharts(const std::filesystem::path& dir, const MovingLoadOutcome&
       data << number(x.s) << "," << number(valueAt(m.quantities[i].line.pieces[x.piece], x.t))
            << "\n";
     data << "EOD\n";
+    // The wheels where the largest and smallest effects put them, on the line.
+    for (const auto& [block, extreme] :
+         {std::pair{"max", m.quantities[i].envelope.max}, {"min", m.quantities[i].envelope.min}}) {
+      data << "$" << block << i << " << EOD\n";
+      for (const TrainLoad& w : m.train) {
+        const double s = extreme.lead - w.offset;
+        if (s >= 0 && s <= m.length)
+          data << number(s) << "," << number(m.quantities[i].line.at(s)) << "\n";
+      }
+      data << "EOD\n";
+    }
   }
   body << "  set encoding utf8\n"
-       << panelLayout(panels, 1, caption, width, height, 30) << "  set grid\n"
+       << panelLayout(panels, 1, caption, width, height,
+                      30 + keyWidth({"per unit load", "wheels at max", "wheels at min"}))
+       << "  set grid\n"
        << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
-       << "  set key top right opaque box\n  set xrange [0:" << number(m.length) << "]\n";
+       << "  set key outside right top\n  set xrange [0:" << number(m.length) << "]\n";
   for (std::size_t i = 0; i < m.quantities.size(); ++i) {
     const MovingQuantity& q = m.quantities[i];
     if (i + 1 == m.quantities.size())
@@ -137,7 +150,11 @@ void drawMovingCharts(const std::filesystem::path& dir, const MovingLoadOutcome&
                                           labelNumber(q.envelope.min.lead) + " m)")
          << "\n";
     body << "  plot $line" << i << " using 1:2 with lines linewidth 2 " << colour(0)
-         << " title " << gnuplotText("per unit load along the direction") << "\n";
+         << " title " << gnuplotText("per unit load") << ", \\\n       $max" << i
+         << " using 1:2 with points pointtype 7 pointsize 1.5 " << colour(1) << " title "
+         << gnuplotText("wheels at max") << ", \\\n       $min" << i
+         << " using 1:2 with points pointtype 6 pointsize 1.8 " << colour(2) << " title "
+         << gnuplotText("wheels at min") << "\n";
   }
   body << "  unset multiplot\n";
   drawChart(dir, {stem + "_influence", "Influence lines of a moving load and their envelopes",
