@@ -46,10 +46,10 @@ analyses:
     wheels: [{force: 1 N}]
     quantities: [reaction B uy, resultant Mz at B, resultant Mz at m1]
 checks:
-  - {name: RB, quantity: moving max reaction B uy, reference: 1, tolerance: 1e-9}
-  - {name: MB, quantity: moving min resultant Mz at B, reference: -L / (6 * sqrt(3)),
+  - {name: RB, quantity: moving max reaction B uy, reference: 1 N, tolerance: 1e-9}
+  - {name: MB, quantity: moving min resultant Mz at B, reference: -(1 N) * L / (6 * sqrt(3)),
      tolerance: 1e-9}
-  - {name: Mmid, quantity: moving max resultant Mz at m1, reference: 0.203125 * L,
+  - {name: Mmid, quantity: moving max resultant Mz at m1, reference: 0.203125 * (1 N) * L,
      tolerance: 1e-9}
 )";
 

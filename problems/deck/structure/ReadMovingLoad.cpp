@@ -64,6 +64,30 @@ void MovingLoadSpec::read(const reader::Context& c, const Field& f) {
     for (const DeckSegment& s : deck.segments) pathLength += s.length;
   }
 
+  // The lines are exact on Euler-Bernoulli beams whose ends keep their rotations (a hinge on a
+  // frame's path that only the mesh reveals is refused when the analysis runs).
+  for (const DeckSegment& s : deck.segments) {
+    const bool onPath = path.empty() || std::find(path.begin(), path.end(), s.name) != path.end();
+    if (!onPath) continue;
+    if (s.options.theory != BeamTheory::eulerBernoulli)
+      f.fail("a moving load's influence lines are exact on Euler-Bernoulli beams; " +
+             (s.name.empty() ? std::string("a segment") : "'" + s.name + "'") +
+             " on its path has another formulation (set formulation: euler-bernoulli)");
+  }
+  if (deck.frame)
+    for (std::size_t m = 0; m < deck.frame->members.size(); ++m) {
+      const DeckMember& member = deck.frame->members[m];
+      const std::string& name = deck.segments[m].name;
+      if (std::find(path.begin(), path.end(), name) != path.end() &&
+          (!member.releases[0].empty() || !member.releases[1].empty()))
+        f.fail("member '" + name + "' on the path releases an end: a moving load's path holds "
+               "no hinges (its elements' nodal loads would not be the beam's own)");
+    }
+  if (!deck.frame && !deck.hinges.empty())
+    f.fail("the line has a hinge (at '" + deck.hinges.front().point +
+           "'): a moving load's path holds no hinges (its elements' nodal loads would not be "
+           "the beam's own)");
+
   if (auto d = f.get("direction")) {
     const std::vector<Field> items = d->items();
     if (items.size() != 3) d->fail("a direction is three numbers [x, y, z]");
