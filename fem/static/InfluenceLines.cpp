@@ -96,10 +96,14 @@ Polynomial clampedShare(const LineElement& line, const Eigen::Vector3d& directio
 
 }  // namespace
 
-double InfluenceLine::at(double s) const {
+std::size_t InfluenceLine::pieceAt(double s) const {
   const auto next = std::upper_bound(breaks.begin(), breaks.end(), s);
-  std::size_t p = next == breaks.begin() ? 0 : std::size_t(next - breaks.begin()) - 1;
-  p = std::min(p, pieces.size() - 1);
+  const std::size_t p = next == breaks.begin() ? 0 : std::size_t(next - breaks.begin()) - 1;
+  return std::min(p, pieces.size() - 1);
+}
+
+double InfluenceLine::at(double s) const {
+  const std::size_t p = pieceAt(s);
   const double width = breaks[p + 1] - breaks[p];
   return valueAt(pieces[p], (s - breaks[p]) / width);
 }

@@ -47,7 +47,9 @@ struct InfluenceQuantity {
 struct InfluenceLine {
   std::vector<double> breaks;      ///< from 0 to the path's length, ascending
   std::vector<Polynomial> pieces;  ///< one fewer than breaks
-  /// The value at s (0 <= s <= length): the piece holding s, the later one at a break.
+  /// The piece holding s (0 <= s <= length), the later one at a break.
+  std::size_t pieceAt(double s) const;
+  /// The value at s, read in pieceAt(s).
   double at(double s) const;
   double length() const { return breaks.back(); }
 };

@@ -7,17 +7,6 @@
 
 namespace beamrotor {
 
-namespace {
-
-/// The piece of `line` that holds s, read from inside it (the later one at a break).
-std::size_t pieceHolding(const InfluenceLine& line, double s) {
-  const auto next = std::upper_bound(line.breaks.begin(), line.breaks.end(), s);
-  const std::size_t p = next == line.breaks.begin() ? 0 : std::size_t(next - line.breaks.begin()) - 1;
-  return std::min(p, line.pieces.size() - 1);
-}
-
-}  // namespace
-
 double trainEffect(const InfluenceLine& line, const std::vector<TrainLoad>& train, double lead) {
   double sum = 0;
   for (const TrainLoad& load : train) {
@@ -52,7 +41,7 @@ TrainEnvelope trainEnvelope(const InfluenceLine& line, const std::vector<TrainLo
     for (const TrainLoad& load : train) {
       const double s = middle - load.offset;
       if (s < 0 || s > line.length()) continue;
-      const std::size_t p = pieceHolding(line, s);
+      const std::size_t p = line.pieceAt(s);
       const double piece = line.breaks[p + 1] - line.breaks[p];
       effect = combination(1, effect, load.force,
                            composedWithLine(line.pieces[p],

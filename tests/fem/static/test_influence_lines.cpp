@@ -141,6 +141,19 @@ TEST_SUITE("influence lines") {
     CHECK(std::abs(sag * worst.value - rule) < kInfluenceExact * rule);
     CHECK(worst.lead == doctest::Approx(4.5 + a).epsilon(1e-9));  // the second wheel at 4.5 m
 
+    // A second method: the effect sampled at 12001 positions of the train never passes the
+    // exact extremes (beyond round-off), and comes within the sampling's reach of them (the
+    // effect's slope is at most 2 P per metre, the samples 1 mm apart).
+    double sampledMax = -1e300, sampledMin = 1e300;
+    for (int i = 0; i <= 12000; ++i) {
+      const double effect = trainEffect(line45, {{1, 0}, {1, a}}, (L + a) * i / 12000.0);
+      sampledMax = std::max(sampledMax, effect);
+      sampledMin = std::min(sampledMin, effect);
+    }
+    CHECK(sampledMax <= both.max.value + kInfluenceExact);
+    CHECK(sampledMin >= both.min.value - kInfluenceExact);
+    CHECK(std::max(both.max.value - sampledMax, sampledMin - both.min.value) < 2e-3);
+
     // One wheel: the envelope is the influence line's own extremes, 4.5 * 5.5 / 10 at 4.5 m.
     const TrainEnvelope one = trainEnvelope(line45, {{1, 0}});
     const TrainExtreme peak = sag > 0 ? one.max : one.min;
