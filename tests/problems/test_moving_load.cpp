@@ -57,8 +57,8 @@ checks:
 
 TEST_SUITE("moving load") {
   TEST_CASE("a two-span frame crossed backwards: envelopes of one wheel against Mueller-Breslau") {
-    const Study study = solveDeckText(moving_load::kTwoSpans, "two_spans.yaml");
-    CHECK(checkAllPass(study) == 3);
+    const Study study = test::solveDeckText(moving_load::kTwoSpans, "two_spans.yaml");
+    CHECK(test::checkAllPass(study) == 3);
     for (const Check& c : study.run->checks)
       MESSAGE(c.name << ": " << c.computed << " against " << c.reference << " (relative error "
                      << c.relError() << ")");
@@ -69,7 +69,7 @@ TEST_SUITE("moving load") {
   }
 
   TEST_CASE("the shipped crane girder writes its tables, chart and results.json") {
-    const SolvedDeck solved = solveShippedDeckToScratch("crane_girder.yaml", "moving_crane");
+    const test::SolvedDeck solved = test::solveShippedDeckToScratch("crane_girder.yaml", "moving_crane");
     const nlohmann::json doc = solved.json("results.json");
     const nlohmann::json& a = doc.at("analyses").at(0);
     CHECK(a.at("type") == "moving-load");
@@ -100,7 +100,7 @@ TEST_SUITE("moving load") {
       const auto at = text.find(lineStart);
       REQUIRE(at != std::string::npos);
       const int line = int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1;
-      const DeckError e = readingError(text, "two_spans.yaml");
+      const DeckError e = test::readingError(text, "two_spans.yaml");
       const std::string message = e.what();
       CAPTURE(message);
       CHECK(message.find("two_spans.yaml") != std::string::npos);

@@ -4,6 +4,7 @@
 // against the textbook position rule.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "fem/assembly/Recovery.hpp"
