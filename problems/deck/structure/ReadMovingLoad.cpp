@@ -56,6 +56,11 @@ void MovingLoadSpec::read(const reader::Context& c, const Field& f) {
   if (!deck.contacts.empty())
     f.fail("influence lines superpose unit loads: a deck with contacts is not linear; remove them");
   if (deck.segments.empty()) f.fail("a moving load needs beams to move along");
+  for (const DeckSupport& s : deck.supports)
+    for (const auto& [d, value] : s.dofs)
+      if (value != 0)
+        f.fail("influence lines are of a unit load alone: support '" + s.name +
+               "' prescribes a nonzero value, which every unit load would repeat");
   if (deck.frame) {
     pathLength = readFramePath(c, f.require("path"), path);
   } else {
