@@ -53,6 +53,39 @@ checks:
      tolerance: 1e-9}
 )";
 
+// The same two spans as a 3d frame, the wheel pushing along [0, -1, -1]: by superposition its
+// parts along -y and -z each carry 1/sqrt 2 of the closed forms, in the two bending planes.
+const std::string kObliqueThreeD = R"(parameters: {L: 6 m}
+model: {dimension: 3d}
+materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]
+sections: [{name: s, shape: general, A: 53.8 cm^2, Iy: 8356 cm^4, Iz: 604 cm^4, J: 20 cm^4, depth: 300 mm, width: 150 mm}]
+nodes:
+  - {name: A, at: [0, 0, 0]}
+  - {name: B, at: [L, 0, 0]}
+  - {name: C, at: [2 * L, 0, 0]}
+members:
+  - {name: span1, from: A, to: B, section: s, elements: 4}
+  - {name: span2, from: B, to: C, section: s, elements: 4}
+points: [{name: m1, member: span1, at: 0.5}]
+supports:
+  - {name: A, at: A, fix: [ux, uy, uz, rx]}
+  - {name: B, at: B, fix: [uy, uz]}
+  - {name: C, at: C, fix: [uy, uz]}
+analyses:
+  - type: moving-load
+    name: wheel
+    path: [span2, span1]
+    direction: [0, -1, -1]
+    wheels: [{force: 1 N}]
+    quantities: [reaction B uy, reaction B uz, resultant My at B, resultant Mz at B, resultant My at m1]
+checks:
+  - {name: RBy, quantity: moving max reaction B uy, reference: (1 N) / sqrt(2), tolerance: 1e-9}
+  - {name: RBz, quantity: moving max reaction B uz, reference: (1 N) / sqrt(2), tolerance: 1e-9}
+  - {name: MBy, quantity: moving max resultant My at B, reference: (1 N) * L / (6 * sqrt(6)), tolerance: 1e-9}
+  - {name: MBz, quantity: moving min resultant Mz at B, reference: -(1 N) * L / (6 * sqrt(6)), tolerance: 1e-9}
+  - {name: Mmid, quantity: moving min resultant My at m1, reference: -0.203125 * (1 N) * L / sqrt(2), tolerance: 1e-9}
+)";
+
 }  // namespace moving_load
 
 TEST_SUITE("moving load") {
@@ -66,6 +99,11 @@ TEST_SUITE("moving load") {
     const auto& m = std::get<MovingLoadOutcome>(study.run->analyses.front().result);
     CHECK(m.length == doctest::Approx(12));
     CHECK(m.quantity("resultant Mz at m1").envelope.max.lead == doctest::Approx(9).epsilon(1e-9));
+  }
+
+  TEST_CASE("a 3d frame under an oblique wheel: both bending planes against Mueller-Breslau") {
+    const Study study = test::solveDeckText(moving_load::kObliqueThreeD, "oblique.yaml");
+    CHECK(test::checkAllPass(study) == 5);
   }
 
   TEST_CASE("the shipped crane girder writes its tables, chart and results.json") {
