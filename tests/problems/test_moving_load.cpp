@@ -86,6 +86,29 @@ checks:
   - {name: Mmid, quantity: moving min resultant My at m1, reference: -0.203125 * (1 N) * L / sqrt(2), tolerance: 1e-9}
 )";
 
+// A cantilever clamped at its end, the wheel pushing along [1, -1, 0] (parts 1/sqrt 2 across
+// and towards the wall): the resultants at the wall are read at the end of the last element,
+// so a load inside it adds the clamped share at that end. Statics: Mz = -(L - x) / sqrt 2
+// (hogging), Vy = 1 / sqrt 2 and N = -1 / sqrt 2 wherever the load stands.
+const std::string kCantilever = R"(parameters: {L: 3 m}
+model: {dimension: planar}
+materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]
+sections: [{name: s, shape: general, A: 53.8 cm^2, I: 8356 cm^4, depth: 300 mm, width: 150 mm}]
+segments: [{length: L, section: s, elements: 3}]
+supports: [{name: wall, at: end, fix: clamped}]
+analyses:
+  - type: moving-load
+    direction: [1, -1, 0]
+    wheels: [{force: 1 N}]
+    quantities: [resultant Mz at end, resultant Vy at end, resultant N at end]
+checks:
+  - {name: M, quantity: moving min resultant Mz at end, reference: -(1 N) * L / sqrt(2), tolerance: 1e-9}
+  - {name: V max, quantity: moving max resultant Vy at end, reference: (1 N) / sqrt(2), tolerance: 1e-9}
+  - {name: V min, quantity: moving min resultant Vy at end, reference: (1 N) / sqrt(2), tolerance: 1e-9}
+  - {name: N max, quantity: moving max resultant N at end, reference: -(1 N) / sqrt(2), tolerance: 1e-9}
+  - {name: N min, quantity: moving min resultant N at end, reference: -(1 N) / sqrt(2), tolerance: 1e-9}
+)";
+
 }  // namespace moving_load
 
 TEST_SUITE("moving load") {
@@ -103,6 +126,11 @@ TEST_SUITE("moving load") {
 
   TEST_CASE("a 3d frame under an oblique wheel: both bending planes against Mueller-Breslau") {
     const Study study = test::solveDeckText(moving_load::kObliqueThreeD, "oblique.yaml");
+    CHECK(test::checkAllPass(study) == 5);
+  }
+
+  TEST_CASE("a cantilever's resultants at its wall: the clamped share at an element's end") {
+    const Study study = test::solveDeckText(moving_load::kCantilever, "cantilever.yaml");
     CHECK(test::checkAllPass(study) == 5);
   }
 
