@@ -58,7 +58,7 @@ const std::map<std::string, std::map<std::string, int>> kInnerRank{
     {"problems/deck", {{"parse", 0}, {"catalog", 0}, {"structure", 1}, {"rotor", 2},
                        {"transient", 2}, {"crank", 2}, {"torsion", 2}, {"study", 2}}},
     {"problems/output", {{"files", 0}, {"structure", 1}, {"rotor", 2}, {"transient", 2},
-                         {"crank", 2}, {"torsion", 2}}}};
+                         {"crank", 2}, {"torsion", 2}, {"moving", 2}}}};
 // clang-format on
 
 std::optional<Layer> layerOf(const std::string& relative) {

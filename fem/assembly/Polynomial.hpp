@@ -91,4 +91,12 @@ inline Polynomial combination(double x, const Polynomial& a, double y, const Pol
   return r;
 }
 
+/// p(alpha + beta s): the polynomial in s of p read along a linear change of its variable.
+inline Polynomial composedWithLine(const Polynomial& p, double alpha, double beta) {
+  Polynomial r;
+  for (auto c = p.rbegin(); c != p.rend(); ++c)
+    r = combination(1, productOf(r, {alpha, beta}), *c, {1.0});
+  return r;
+}
+
 }  // namespace beamrotor

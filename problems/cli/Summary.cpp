@@ -12,6 +12,7 @@
 #include "problems/cli/CaseSummary.hpp"
 #include "problems/cli/SolutionSummary.hpp"
 #include "problems/cli/CrankSummary.hpp"
+#include "problems/cli/MovingSummary.hpp"
 #include "problems/cli/MemberSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/cli/StabilitySummary.hpp"
@@ -46,7 +47,8 @@ SystemSize sizeOf(const RunResult& run) {
                    [](const CriticalSpeedMapOutcome&) -> Size { return std::nullopt; },
                    [](const BearingLoadsOutcome&) -> Size { return std::nullopt; },
                    [](const LevelOneOutcome&) -> Size { return std::nullopt; },
-                   [](const CrankSliderOutcome&) -> Size { return std::nullopt; }},
+                   [](const CrankSliderOutcome&) -> Size { return std::nullopt; },
+                   [](const MovingLoadOutcome&) -> Size { return std::nullopt; }},
         a.result);
     if (size) return *size;
   }
@@ -197,7 +199,8 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
             },
             [&](const TransientOutcome&) { printTransient(out, a); },
             [&](const RotorResult auto& r) { printRotor(out, a, r, units); },
-            [&](const CrankSliderOutcome&) { printCrankSlider(out, a); }},
+            [&](const CrankSliderOutcome&) { printCrankSlider(out, a); },
+            [&](const MovingLoadOutcome& r) { printMovingLoad(out, a, r); }},
         a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }

@@ -233,7 +233,9 @@ SolveCost costOf(const AnalysisOutcome& a) {
                  [](const BearingLoadsOutcome&) -> SolveCost { return {}; },
                  [](const LevelOneOutcome&) -> SolveCost { return {}; },
                  // A mechanism has no mesh to refine (studiable): nothing of it is timed.
-                 [](const CrankSliderOutcome&) -> SolveCost { return {}; }},
+                 [](const CrankSliderOutcome&) -> SolveCost { return {}; },
+                 // Its solves are many right-hand sides of one factorisation, not timed apart.
+                 [](const MovingLoadOutcome&) -> SolveCost { return {}; }},
       a.result);
 }
 

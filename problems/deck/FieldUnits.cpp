@@ -25,6 +25,10 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
     case K::maxDisplacement:
     case K::memberDeflection:
       return {dim::length};
+    case K::movingMax:
+    case K::movingMin:  // the envelope has its quantity's unit
+      return referenceUnit(*q.inner);
+    case K::resultantAt:
     case K::memberForce:  // N, Vy, Vz are forces; T, My, Mz moments
       return {q.property == "N" || q.property.starts_with('V') ? dim::force : dim::moment};
     case K::sectionProperty:  // A an area, I and It second moments, W moduli (m^3)

@@ -23,7 +23,8 @@ constexpr const char* kGrammar =
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'level1 PROPERTY', 'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
     "'crank PROPERTY at PHI deg', 'torsion torque NAME', 'torsion twist STATION', "
-    "'history NAME max|min|maxabs' or 'history NAME at TIME'";
+    "'history NAME max|min|maxabs', 'history NAME at TIME', 'resultant N|Vy|Vz|T|My|Mz at POINT' "
+    "or 'moving max|min QUANTITY'";
 
 /// ux..rz, or the force/moment names fx fy fz mx my mz for the same dofs.
 Dof parseComponent(const std::string& word) {
@@ -99,6 +100,29 @@ Quantity parseQuantity(const std::string& text) {
     q.kind = Quantity::Kind::memberForce;
     q.property = words[2];
     q.extreme = words[3];
+    return q;
+  }
+  if (head == "resultant" && words.size() == 4 && words[2] == "at") {
+    const std::vector<std::string> components{"N", "Vy", "Vz", "T", "My", "Mz"};
+    if (std::find(components.begin(), components.end(), words[1]) == components.end())
+      throw std::invalid_argument("'" + words[1] + "' is not a resultant (N Vy Vz T My Mz)");
+    q.kind = Quantity::Kind::resultantAt;
+    q.property = words[1];
+    q.target = words[3];
+    return q;
+  }
+  if (head == "moving" && words.size() >= 3) {
+    if (words[1] != "max" && words[1] != "min")
+      throw std::invalid_argument("'" + words[1] + "' is not an extreme of a moving load (max or min)");
+    q.kind = words[1] == "max" ? Quantity::Kind::movingMax : Quantity::Kind::movingMin;
+    std::string rest = words[2];
+    for (std::size_t w = 3; w < words.size(); ++w) rest += " " + words[w];
+    auto inner = std::make_shared<Quantity>(parseQuantity(rest));
+    if (inner->kind != Quantity::Kind::reaction && inner->kind != Quantity::Kind::resultantAt &&
+        !(inner->kind == Quantity::Kind::displacement && inner->side == Quantity::Side::node))
+      throw std::invalid_argument("a moving load's envelope is of a reaction, a displacement or a "
+                                  "resultant at a point, not '" + rest + "'");
+    q.inner = std::move(inner);
     return q;
   }
   if (head == "section" && words.size() == 3) {

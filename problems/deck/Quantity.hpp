@@ -17,6 +17,11 @@
 //                             analysis of the beams (MeasureSection.hpp)
 //   history NAME at TIME      a transient history at TIME (s; an expression without spaces),
 //                             interpolated linearly between samples
+//   resultant COMP at POINT   a resultant (N Vy Vz T My Mz, local axes) at a named point: at
+//                             the start of the beam that starts there, else at the end of the
+//                             one that ends there
+//   moving max|min QUANTITY   the largest or smallest value of a reaction, displacement or
+//                             resultant while a moving-load analysis' train crosses its path
 // those of the rotor analyses (RotorQuantity.cpp):
 //   frequency N               in a rotor analysis: damped whirl frequency of mode N (Hz)
 //   log_decrement N           logarithmic decrement of mode N of a rotor analysis
@@ -30,6 +35,7 @@
 //   crank PROPERTY at PHI deg    the motion or a load of the first crank at crank angle PHI
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -62,7 +68,10 @@ struct Quantity {
     historyMax,
     historyMin,
     historyMaxAbs,
-    historyAt  // transient analyses
+    historyAt,  // transient analyses
+    resultantAt,
+    movingMax,
+    movingMin  // moving-load analyses: the envelope of `inner`
   };
   Kind kind = Kind::reaction;
   std::string target;    ///< support (reaction), point (displacement) or history name
@@ -81,6 +90,9 @@ struct Quantity {
   double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own
   std::optional<double> crankAngle;  ///< crankSlider `... at PHI deg`: the crank angle (rad)
   std::string text;      ///< as written, for reports
+  /// movingMax, movingMin: the quantity whose envelope it is (a reaction, displacement or
+  /// resultant at a point).
+  std::shared_ptr<const Quantity> inner;
   // Which analyses give it: the rows of problems/deck/AnalysisKinds.hpp say.
 };
 

@@ -14,6 +14,7 @@
 #include "problems/output/structure/AdequateJson.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/moving/MovingOutput.hpp"
 #include "problems/output/torsion/TorsionOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/FileNames.hpp"
@@ -464,6 +465,7 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
             },
             [&](const TransientOutcome&) { return transientJson(a); },
             [&](const RotorResult auto& r) { return rotorJson(a, r); },
+            [&](const MovingLoadOutcome&) { return movingJson(a, fileStem(a.name)); },
             [&](const CrankSliderOutcome&) { return crankJson(a, fileStem(a.name)); }},
         a.result));
     if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;

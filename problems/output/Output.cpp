@@ -17,6 +17,7 @@
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/structure/Charts.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/moving/MovingOutput.hpp"
 #include "problems/output/torsion/TorsionOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
@@ -185,6 +186,10 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeRotorFiles(
                   {*p.rotor, p.stem, model, dir, captionOf(prepared, a.name), charts, prepared.units},
                   r);
+            },
+            [&](const MovingLoadOutcome& r) {
+              for (const CsvTable& table : p.moving) table.write(dir / table.title());
+              if (charts) drawMovingCharts(dir, r, p.stem, captionOf(prepared, a.name));
             },
             [&](const CrankSliderOutcome& r) {
               for (const CsvTable& table : p.crank) table.write(dir / table.title());

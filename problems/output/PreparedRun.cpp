@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "problems/output/crank/CrankOutput.hpp"
+#include "problems/output/moving/MovingOutput.hpp"
 #include "problems/output/torsion/TorsionOutput.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/rotor/RotorFileNames.hpp"
@@ -31,7 +32,7 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
           &rotor->api684, &rotor->frf, &rotor->bearings, &rotor->map, &rotor->mapBearings,
           &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag, &rotor->levelOne})
       if (*t) all.emplace_back((*t)->title(), &**t);
-  for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank, &torsion})
+  for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank, &torsion, &moving})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
   return all;
 }
@@ -218,7 +219,8 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
               p.rotor->orbits = modeOrbitsTable(orbitsCsv(p.stem), r, model);
             },
             [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
-            [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); }},
+            [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); },
+            [&](const MovingLoadOutcome& r) { p.moving = movingTables(r, p.stem); }},
         a.result);
     prepared.analyses.push_back(std::move(p));
   }

@@ -59,6 +59,7 @@ struct PreparedAnalysis {
   std::optional<CsvTable> caseTable;    ///< statics with load cases: <stem>_cases.csv
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
   std::vector<CsvTable> torsion;  ///< a train: interference, crossings, torques, response
+  std::vector<CsvTable> moving;   ///< a moving load: influence lines, envelopes
 
   /// Every table this analysis has, each with its CSV file name, in writing order.
   std::vector<std::pair<std::string, const CsvTable*>> tables() const;

@@ -25,6 +25,7 @@
 #include "problems/run/JournalGravityLoads.hpp"
 #include "problems/run/ModelBuilder.hpp"
 #include "problems/run/RunCrankSlider.hpp"
+#include "problems/run/RunMovingLoad.hpp"
 #include "problems/run/OneWayStatics.hpp"
 #include "problems/run/OverRefinementWarning.hpp"
 #include "problems/run/Overloaded.hpp"
@@ -165,6 +166,9 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
             },
             [&](const CrankSliderSpec& spec) -> AnalysisResult {
               return runCrankSlider(spec.mechanism);
+            },
+            [&](const MovingLoadSpec& spec) -> AnalysisResult {
+              return runMovingLoad(spec, model);
             },
             [&](const TorsionSpec& spec) -> AnalysisResult {
               TorsionOutcome torsion = runTorsion(deck, spec);

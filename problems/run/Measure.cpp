@@ -13,6 +13,7 @@
 #include "problems/run/MeasureRotor.hpp"
 #include "problems/run/MeasureSection.hpp"
 #include "problems/run/RunCrankSlider.hpp"
+#include "problems/run/RunMovingLoad.hpp"
 #include "problems/run/TransientOutcome.hpp"
 
 namespace beamrotor {
@@ -94,6 +95,13 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
   if (const auto* torsion = resultOf<TorsionOutcome>(outcome);
       torsion && q.kind == Quantity::Kind::torsion)
     return measureTorsion(q.property, q.target, *torsion);
+  if (q.inner) {
+    const auto* moving = resultOf<MovingLoadOutcome>(outcome);
+    if (!moving)
+      throw std::invalid_argument("analysis '" + outcome.name + "' is not a moving-load analysis");
+    const TrainEnvelope& e = moving->quantity(q.inner->text).envelope;
+    return q.kind == Quantity::Kind::movingMax ? e.max.value : e.min.value;
+  }
   if (q.kind == Quantity::Kind::frequency) {
     const ModalResult* modal = modesOf(outcome, model).modes;
     if (!modal) throw std::invalid_argument("analysis '" + outcome.name + "' is not modal");
@@ -134,6 +142,13 @@ double measureStatic(const Quantity& q, const StaticResult& r, const LoadedSolut
     case Quantity::Kind::memberForce:
     case Quantity::Kind::memberDeflection:
       return measureMember(q, solution);
+    case Quantity::Kind::resultantAt: {
+      const ResultantPlace place = resultantPlace(*solution.model, q.target);
+      for (ForceComponent c : kForceComponents)
+        if (q.property == componentName(c))
+          return componentOf(solution.forceSeries(place.element).at(place.end), c);
+      throw std::invalid_argument("'" + q.property + "' is not a resultant");
+    }
     default: {
       // The exact element peaks (the same numbers results.json and the summary report); a
       // value that is not finite anywhere makes the quantity NaN, and its check fail.

@@ -20,6 +20,7 @@
 #include "problems/deck/Deck.hpp"
 #include "problems/run/AdequateChoice.hpp"
 #include "problems/run/CrankSliderOutcome.hpp"
+#include "problems/run/MovingLoadOutcome.hpp"
 #include "problems/run/RotorRunResult.hpp"
 #include "problems/run/TorsionOutcome.hpp"
 #include "problems/run/TransientOutcome.hpp"
@@ -75,13 +76,13 @@ struct StaticOutcome {
 
 /// What one analysis produced: one value type per kind of result. A static analysis with
 /// `second_order: true` gives both of its states (SecondOrderResult), a modal one (prestressed
-/// or not) its modes, each rotor analysis its kind's type (RotorResult, RotorRunResult.hpp)
-/// and a torsion analysis the modes of its own model.
+/// or not) its modes, each rotor analysis its kind's type (RotorResult, RotorRunResult.hpp),
+/// a torsion analysis the modes of its own model and a moving load its influence lines.
 using AnalysisResult =
     std::variant<StaticOutcome, SecondOrderResult, ModalResult, BucklingResult, TransientOutcome,
                  RotorModesResult, CampbellOutcome, UnbalanceOutcome, RigidBodyOutcome,
                  FrequencyResponseOutcome, CriticalSpeedMapOutcome, BearingLoadsOutcome,
-                 CrankSliderOutcome, TorsionOutcome, LevelOneOutcome>;
+                 CrankSliderOutcome, TorsionOutcome, LevelOneOutcome, MovingLoadOutcome>;
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {

@@ -51,7 +51,7 @@ TEST_SUITE("analysis kinds") {
   TEST_CASE("every analysis type FORMAT.md lists has exactly one row, and every row is listed") {
     const std::vector<std::string> listed = formatTypeList();
     const std::vector<std::string> rows = analysisTypeNames();
-    CHECK(listed.size() == 14);
+    CHECK(listed.size() == 15);
     for (const std::string& name : listed) {
       CAPTURE(name);
       CHECK(std::count(rows.begin(), rows.end(), name) == 1);
@@ -111,7 +111,10 @@ TEST_SUITE("analysis kinds") {
         {"history tip max", "transient"},
         {"history tip min", "transient"},
         {"history tip maxabs", "transient"},
-        {"history tip at 0.1", "transient"}};
+        {"history tip at 0.1", "transient"},
+        {"resultant Mz at mid", "static"},
+        {"moving max reaction left uy", "moving-load"},
+        {"moving min resultant Vy at mid", "moving-load"}};
     for (const auto& [text, type] : defaults) {
       CAPTURE(text);
       const Quantity q = parseQuantity(text);

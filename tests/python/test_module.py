@@ -417,3 +417,23 @@ def test_study_gives_the_command_lines_table_to_the_bit(tmp_path):
     written = json.loads((tmp_path / "cli" / "worst" / "results.json").read_text())
     assert worst.results["analyses"][0]["reactions"] == written["analyses"][0]["reactions"]
     assert study.directory is None
+
+
+def test_moving_load_tables_and_envelope():
+    # problems/crane_girder.yaml: two wheels P at spacing a on a simply supported span L. The
+    # largest moment by the position rule, P (L/2 - a/4)^2 * 2 / L, under the wheel at
+    # x = L/2 - a/4; the influence line of the moment there peaks at x (L - x) / L per newton.
+    # Both exact (cubics per element, extremes in closed form): round-off only.
+    run = beamrotor.solve(PROBLEMS / "crane_girder.yaml")
+    p = run.parameters
+    x = p["L"] / 2 - p["a"] / 4
+    rule = p["P"] * x**2 * 2 / p["L"]
+    envelopes = run.tables["trolley"]["envelopes"]
+    assert abs(envelopes["max"][0] / rule - 1) < EXACT
+    assert abs(envelopes["first_wheel_at_max"][0] - (x + p["a"])) < EXACT * p["L"]
+    line = run.tables["trolley"]["influence"]
+    peak = np.max(line["resultant_Mz_at_under"])
+    assert abs(peak / (x * (p["L"] - x) / p["L"]) - 1) < EXACT
+    moving = run.results["analyses"][0]
+    assert moving["type"] == "moving-load"
+    assert abs(moving["quantities"][0]["max"]["value"] / rule - 1) < EXACT

@@ -1,10 +1,16 @@
 // The rows of the table of analysis kinds (problems/deck/AnalysisKinds.hpp) that solve the
 // beams and frames as they are: statics (second_order: true included), modes (prestressed:
-// true included) and buckling. Each row states its deck type, its reader, the check
+// true included), buckling and a train of loads moving along a path (influence lines and
+// their envelopes). Each row states its deck type, its reader, the check
 // quantities it answers and holds the settings its entry gives.
 #pragma once
 
+#include <array>
+#include <string>
+#include <vector>
+
 #include "problems/deck/AnalysisRow.hpp"
+#include "problems/deck/parse/DeckError.hpp"
 
 namespace beamrotor {
 
@@ -13,7 +19,8 @@ struct StaticSpec {
   static constexpr std::array answers{
       Quantity::Kind::reaction,    Quantity::Kind::displacement,    Quantity::Kind::maxStress,
       Quantity::Kind::maxShear,    Quantity::Kind::maxMoment,       Quantity::Kind::maxDisplacement,
-      Quantity::Kind::memberForce, Quantity::Kind::memberDeflection, Quantity::Kind::sectionProperty};
+      Quantity::Kind::memberForce, Quantity::Kind::memberDeflection, Quantity::Kind::sectionProperty,
+      Quantity::Kind::resultantAt};
   static constexpr bool needsMass = false;
   void read(const reader::Context& c, const Field& f);
   bool secondOrder = false;  ///< equilibrium in the deformed state (fem/stability)
@@ -40,6 +47,28 @@ struct BucklingSpec {
   void read(const reader::Context& c, const Field& f);
   int modes = 4;
   bool reversed = false;  ///< also the negative load factors (the load reversed)
+};
+
+/// `type: moving-load`: a train of point loads (wheels) crossing a path of members (a frame)
+/// or the whole line; the influence line of each quantity named under `quantities:` and its
+/// envelope under the train, with the train's position that governs (ReadMovingLoad.cpp).
+struct MovingLoadSpec {
+  static constexpr std::string_view deckType = "moving-load";
+  static constexpr std::array answers{Quantity::Kind::movingMax, Quantity::Kind::movingMin,
+                                      Quantity::Kind::sectionProperty};
+  static constexpr bool needsMass = false;
+  void read(const reader::Context& c, const Field& f);
+  struct Wheel {
+    double force = 0;   ///< N, along `direction`
+    double offset = 0;  ///< m behind the first wheel
+  };
+  /// A frame's members in the order the train crosses them; empty for a line (the whole line).
+  std::vector<std::string> path;
+  std::array<double, 3> direction{0, -1, 0};  ///< of the wheels' forces, global (normalised)
+  std::vector<Wheel> wheels;
+  std::vector<Quantity> quantities;  ///< reactions, displacements, resultants at points
+  double pathLength = 0;             ///< m
+  DeckPlace place;
 };
 
 }  // namespace beamrotor

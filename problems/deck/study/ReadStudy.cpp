@@ -284,6 +284,20 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
              c.carriedNames() + ")");
     resolveSide(deck, q, f);
   }
+  if (q.kind == Quantity::Kind::resultantAt) {
+    std::vector<std::string> names;
+    for (const DeckPoint& p : deck.points) names.push_back(p.name);
+    if (deck.frame)
+      for (const DeckJoint& j : deck.frame->joints) names.push_back(j.name);
+    requireNamed(f, q.target, names, "point");
+  }
+  if (const auto* moving = analysis->as<MovingLoadSpec>(); moving && q.inner) {
+    std::vector<std::string> texts;
+    for (const Quantity& listed : moving->quantities) texts.push_back(listed.text);
+    if (std::find(texts.begin(), texts.end(), q.inner->text) == texts.end())
+      f.fail("moving-load analysis '" + analysis->name + "' gives the envelopes of " +
+             joinNames(texts) + ", not of '" + q.inner->text + "': add it to its quantities:");
+  }
   if (q.kind == Quantity::Kind::memberForce || q.kind == Quantity::Kind::memberDeflection) {
     if (!deck.frame)
       f.fail("member quantities need a frame (nodes: and members:); this deck is a line");

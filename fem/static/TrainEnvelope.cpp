@@ -1,0 +1,64 @@
+#include "fem/static/TrainEnvelope.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "fem/assembly/ElementExtrema.hpp"
+
+namespace beamrotor {
+
+double trainEffect(const InfluenceLine& line, const std::vector<TrainLoad>& train, double lead) {
+  double sum = 0;
+  for (const TrainLoad& load : train) {
+    const double s = lead - load.offset;
+    if (s >= 0 && s <= line.length()) sum += load.force * line.at(s);
+  }
+  return sum;
+}
+
+TrainEnvelope trainEnvelope(const InfluenceLine& line, const std::vector<TrainLoad>& train) {
+  double longest = 0;
+  for (const TrainLoad& load : train) longest = std::max(longest, load.offset);
+  const double end = line.length() + longest;
+  std::vector<double> knots;
+  for (const TrainLoad& load : train)
+    for (double b : line.breaks)
+      if (b + load.offset >= 0 && b + load.offset <= end) knots.push_back(b + load.offset);
+  knots.push_back(0);
+  knots.push_back(end);
+  std::sort(knots.begin(), knots.end());
+  knots.erase(std::unique(knots.begin(), knots.end()), knots.end());
+
+  TrainEnvelope out;
+  out.max.value = -std::numeric_limits<double>::infinity();
+  out.min.value = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    const double x0 = knots[k], x1 = knots[k + 1], width = x1 - x0;
+    if (!(width > 0)) continue;
+    const double middle = 0.5 * (x0 + x1);
+    // The effect on [x0, x1] as a polynomial in u = (x - x0) / width.
+    Polynomial effect;
+    for (const TrainLoad& load : train) {
+      const double s = middle - load.offset;
+      if (s < 0 || s > line.length()) continue;
+      const std::size_t p = line.pieceAt(s);
+      const double piece = line.breaks[p + 1] - line.breaks[p];
+      effect = combination(1, effect, load.force,
+                           composedWithLine(line.pieces[p],
+                                            (x0 - load.offset - line.breaks[p]) / piece,
+                                            width / piece));
+    }
+    std::vector<double> places = zerosInUnitInterval(derivativeOf(effect));
+    places.push_back(0);
+    places.push_back(1);
+    for (double u : places) {
+      const double value = effect.empty() ? 0 : valueAt(effect, u);
+      const double lead = x0 + u * width;
+      if (value > out.max.value) out.max = {value, lead};
+      if (value < out.min.value) out.min = {value, lead};
+    }
+  }
+  return out;
+}
+
+}  // namespace beamrotor

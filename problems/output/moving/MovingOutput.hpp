@@ -1,0 +1,27 @@
+// The files of a moving-load analysis: its results.json entry (each quantity's influence line
+// as exact cubic pieces and its envelope with the governing positions), <stem>_influence.csv
+// (the lines sampled along the path, both limits where one jumps), <stem>_envelopes.csv and
+// the chart <stem>_influence (one panel per quantity, the governing positions marked).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "problems/output/JsonWriter.hpp"
+#include "problems/output/files/CsvTable.hpp"
+#include "problems/run/RunResult.hpp"
+
+namespace beamrotor {
+
+/// <stem>_influence.csv and <stem>_envelopes.csv.
+std::vector<CsvTable> movingTables(const MovingLoadOutcome& m, const std::string& stem);
+
+/// The analysis' entry in results.json.
+Json movingJson(const AnalysisOutcome& a, const std::string& stem);
+
+/// The chart <stem>_influence.
+void drawMovingCharts(const std::filesystem::path& dir, const MovingLoadOutcome& m,
+                      const std::string& stem, const std::string& caption);
+
+}  // namespace beamrotor

@@ -1,0 +1,32 @@
+// A moving-load analysis, solved: each quantity's influence line along the path (exact
+// piecewise cubics) and its envelope under the train, with the train's governing positions.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "fem/static/InfluenceLines.hpp"
+#include "fem/static/TrainEnvelope.hpp"
+
+namespace beamrotor {
+
+/// One quantity of a moving-load analysis.
+struct MovingQuantity {
+  std::string text;   ///< as the deck names it, e.g. "reaction B uy"
+  std::string unit;   ///< its SI unit per unit load ("N" per N: "1"; "m" per N: "m/N") for tables
+  std::string valueUnit;  ///< the unit of its values under the train: "N", "N m", "m" or "rad"
+  InfluenceLine line;     ///< for a unit load along the direction (value per N)
+  TrainEnvelope envelope;
+};
+
+struct MovingLoadOutcome {
+  std::array<double, 3> direction{0, -1, 0};
+  std::vector<TrainLoad> train;
+  double length = 0;  ///< of the path (m)
+  std::vector<MovingQuantity> quantities;
+  /// The envelope of quantity `text`; throws std::invalid_argument when it is not one of them.
+  const MovingQuantity& quantity(const std::string& text) const;
+};
+
+}  // namespace beamrotor
