@@ -27,7 +27,7 @@ namespace beamrotor {
 using AnalysisSpec = std::variant<StaticSpec, ModalSpec, BucklingSpec, TransientSpec, RotorSpec,
                                   CampbellSpec, UnbalanceSpec, RigidBodySpec, FrequencyResponseSpec,
                                   CrankSliderSpec, CriticalSpeedMapSpec, BearingLoadsSpec,
-                                  TorsionSpec, LevelOneSpec>;
+                                  TorsionSpec, LevelOneSpec, RunUpSpec>;
 
 /// Every row's deck type, in row order.
 std::vector<std::string> analysisTypeNames();

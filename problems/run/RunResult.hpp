@@ -77,7 +77,7 @@ using AnalysisResult =
     std::variant<StaticOutcome, SecondOrderResult, ModalResult, BucklingResult, TransientOutcome,
                  RotorModesResult, CampbellOutcome, UnbalanceOutcome, RigidBodyOutcome,
                  FrequencyResponseOutcome, CriticalSpeedMapOutcome, BearingLoadsOutcome,
-                 CrankSliderOutcome, TorsionOutcome, LevelOneOutcome>;
+                 CrankSliderOutcome, TorsionOutcome, LevelOneOutcome, RunUpOutcome>;
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
