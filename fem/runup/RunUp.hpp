@@ -9,9 +9,9 @@
 // G theta Omega' with the G the gyroscopic matrix is built from (PointInertia.cpp, Beam.cpp).
 // Lalanne and Ferraris (Rotordynamics Prediction in Engineering, 1998, ch. 2) reach a
 // one-entry matrix instead, from Euler angles whose spin angle differs from the body-axis
-// angle by a second-order term; the two differ by a symmetric part. Prescribing the body-axis
-// spin, as here, makes Omega' G (skew) do no work, so that in the undamped case the work of
-// the unbalance (and gravity) is the change of kinetic plus strain energy.
+// angle by a second-order term; the two differ by a symmetric part. Omega G q' does no work
+// (G skew); Omega' G q does, Omega' q'^T G q: the drive's share as the lateral angular
+// momentum grows with the spin (zero without polar inertia, as on a Jeffcott rotor).
 // An unbalance m e at phase p (fem/rotor/RotorUnbalance.hpp) pushes with
 //   m e (Omega^2 cos(phi + p) + Omega' sin(phi + p), Omega^2 sin(phi + p) - Omega' cos(phi + p)),
 // minus its mass times the acceleration of the heavy spot on its circle of radius e; a couple
@@ -64,8 +64,8 @@ struct RunUpHistory {
 };
 
 /// The energy account at the sample times (J). With Newmark's average acceleration rule and
-/// speed-independent K, kinetic + strain + dissipated - work - (kinetic + strain at t = 0)
-/// vanishes to round-off; with HHT the shortfall is the energy the scheme damps.
+/// speed-independent K, kinetic + strain + dissipated + gyroscopic - work - (kinetic + strain
+/// at t = 0) vanishes to round-off; with HHT the shortfall is the energy the scheme damps.
 struct RunUpEnergy {
   std::vector<double> kinetic;     ///< 1/2 v' M v
   std::vector<double> strain;      ///< 1/2 u' K(Omega) u (the symmetric part)
@@ -73,8 +73,8 @@ struct RunUpEnergy {
   /// Work of the unbalance forces and gravity so far (trapezoidal in the displacement
   /// increments, as the average acceleration rule's own balance)
   std::vector<double> work;
-  /// Work done against Omega G q' + Omega' G q so far: zero in the continuous system (G skew),
-  /// the rule's discretisation error of it
+  /// Work done against Omega G q' + Omega' G q so far: the first part is zero in the
+  /// continuous system (G skew), the second is the drive's, -integral of Omega' q'^T G q
   std::vector<double> gyroscopic;
   double balance(std::size_t i) const {
     return kinetic[i] + strain[i] + dissipated[i] + gyroscopic[i] - work[i] -

@@ -71,7 +71,7 @@ TEST_SUITE("rotor decks") {
         {"    from_rpm: 500\n    to_rpm: 500\n    duration: 1 s\n    dt: 1 ms\n", 12, "to_rpm"},
         {"    speed_table: [[0, 0], [1 s, 100], [1 s, 200]]\n    dt: 1 ms\n", 11, "ascend"},
         {"    speed_table: [[0, 0], [1 s, 100]]\n    dt: 1 ms\n    alpha: -0.1\n", 13, "hht"},
-        {"    speed_table: [[0, 0], [1 s, 100]]\n    dt: 1 ns\n", 12, "steps"},
+        {"    speed_table: [[0, 0], [100 s, 100]]\n    dt: 1e-6 s\n", 12, "steps"},
         {"    from_rpm: 0\n    to_rpm: 100\n    duration: 1 s\n    dt: 1 ms\n    start: hot\n",
          15, "steady"},
     };

@@ -357,6 +357,7 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
            {{"kinetic", e.kinetic.empty() ? 0.0 : e.kinetic[last]},
             {"strain", e.strain.empty() ? 0.0 : e.strain[last]},
             {"dissipated", e.dissipated.empty() ? 0.0 : e.dissipated[last]},
+            {"gyroscopic", e.gyroscopic.empty() ? 0.0 : e.gyroscopic[last]},
             {"work", e.work.empty() ? 0.0 : e.work[last]},
             {"balance", e.kinetic.empty() ? 0.0 : e.balance(last)}}},
           {"time_s", r.time.total},

@@ -34,7 +34,7 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
       {"time", "s"}, {"speed", "rad/s"}, {"speed_rpm", "rpm"}, {"angle", "rad"}};
   for (const std::string& p : r.responsePoints)
     for (const char* what : {"_uy", "_uz"}) columns.push_back({p + what, "m"});
-  for (const char* what : {"kinetic", "strain", "dissipated", "work", "energy_balance"})
+  for (const char* what : {"kinetic", "strain", "dissipated", "gyroscopic", "work", "energy_balance"})
     columns.push_back({what, "J"});
   CsvTable table(title, columns);
   const RunUpResult& u = r.runUp;
@@ -43,7 +43,8 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
     for (const RunUpHistory& h : u.histories) row.insert(row.end(), {h.uy[i], h.uz[i]});
     const RunUpEnergy& e = u.energy;
     row.insert(row.end(),
-               {e.kinetic[i], e.strain[i], e.dissipated[i], e.work[i], e.balance(i)});
+               {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i], e.work[i],
+                e.balance(i)});
     table.addRow(std::move(row));
   }
   return table;

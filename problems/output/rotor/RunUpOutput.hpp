@@ -31,7 +31,8 @@ inline std::string runUpOrbitChart(const std::string& stem) {
 CsvTable runUpTable(const std::string& title, const RunUpOutcome& r);
 
 /// One row per sample: time (s), speed (rad/s), speed_rpm, angle (rad), <p>_uy, <p>_uz (m) per
-/// point, then the energy account (J): kinetic, strain, dissipated, work, energy_balance.
+/// point, then the energy account (J, RunUpEnergy): kinetic, strain, dissipated, gyroscopic,
+/// work, energy_balance.
 CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r);
 
 /// Amplitude against speed from a runUpTable in csvFile, one curve per point, its peak named

@@ -106,23 +106,24 @@ Peak runUpPeak(const RunUpResult& r) {
   return peakOf(radius, r.speed);
 }
 
-/// A steel shaft (1 m, D 50 mm, 8 elements) on two damped isotropic bearings, a gyroscopic disk
-/// at mid-span: its first forward critical speed near 330 rad/s.
+/// A steel shaft (1 m, D 50 mm, 10 elements) on two damped isotropic bearings (2e6 N/m), a
+/// gyroscopic disk (20 kg, Jp 0.2, Jd 0.1 kg m^2) at `diskAt`: with the disk at mid-span and
+/// 2e4 N s/m its first forward critical speed is near 328 rad/s.
 struct ShaftRotor {
   Model model;
   int disk = -1;
-  ShaftRotor() {
+  explicit ShaftRotor(double bearingDamping = 2e4, double diskAt = 0.5) {
     auto sec = std::make_shared<Section>(
         Section::circle("shaft", Material::fromEnu("steel", 2.1e11, 0.3, 7850), 0.05));
     LineSpec spec;
     spec.dofs = DofSet::lateral();
-    spec.segments.push_back({1.0, sec, 8, 0, {}});
-    spec.points = {{"A", 0}, {"disk", 0.5}, {"B", 1.0}};
+    spec.segments.push_back({1.0, sec, 10, 0, {}});
+    spec.points = {{"A", 0}, {"disk", diskAt}, {"B", 1.0}};
     buildLine(model, spec);
     disk = model.node("disk");
     model.add<PointInertia>(disk, DofSet::lateral(), 20.0, 0.2, 0.1);
     for (const char* end : {"A", "B"})
-      model.add<Bearing>(model.node(end), BearingCoefficients::isotropic(5e6, 2e3));
+      model.add<Bearing>(model.node(end), BearingCoefficients::isotropic(2e6, bearingDamping));
   }
 };
 
@@ -222,11 +223,48 @@ TEST_SUITE("run-up") {
       MESSAGE("rate " << rate << " rad/s^2: largest difference " << worst / top
                       << " of the steady peak " << top << " m over " << rev.speed.size()
                       << " revolutions");
-      // The lag of the response behind the quasi-steady one is proportional to the rate: halving
-      // it halves the error (measured ratios 0.5x).
-      CHECK(worst < 0.75 * previous);
-      previous = worst / top * top;
+      // The lag of the response behind the quasi-steady one is proportional to the rate
+      // (Omega' / omega^2 = 2e-3 .. 5e-4, well below 2 zeta^2 ~ 0.02): halving it halves the
+      // error (measured 6.9 %, 3.3 %, 1.6 % of the peak; ratios 0.48).
+      CHECK(worst < 0.6 * previous);
+      previous = worst;
+      if (rate == 50) CHECK(worst < 0.02 * top);
     }
-    CHECK(previous < 0.05 * 1e300);
+  }
+
+  TEST_CASE("an undamped gyroscopic rotor's energy balance, the drive's share converging") {
+    const ShaftRotor rotor(0, 0.3);  // off the middle: the disk tilts as it whirls
+    Unbalance u;
+    u.node = rotor.disk;
+    u.me = 2e-4;
+    const SpeedProfile p = SpeedProfile::ramp(200, 450, 0.5);  // through the first critical
+    std::vector<double> driven;  // the work done through Omega' G q by the end
+    for (double dt : {2e-4, 1e-4, 5e-5}) {
+      CAPTURE(dt);
+      RunUpOptions o;
+      o.timeStep = dt;
+      o.unbalance = {u};
+      o.nodes = {rotor.disk};
+      o.sampleEvery = 10;
+      const RunUpEnergy e = solveRunUp(rotor.model, p, o).energy;
+      double largest = 0, balance = 0;
+      for (std::size_t i = 0; i < e.kinetic.size(); ++i) {
+        largest = std::max(largest, e.kinetic[i] + e.strain[i]);
+        balance = std::max(balance, std::abs(e.balance(i)));
+      }
+      driven.push_back(-e.gyroscopic.back());
+      MESSAGE("dt " << dt << ": energy " << largest << " J, balance " << balance
+                    << " J, work of the drive through the tilting disk " << driven.back()
+                    << " J, of the unbalance " << e.work.back() << " J");
+      // The rule's balance with the gyroscopic and angular-acceleration moments' work in it
+      // holds to round-off (the stiffness is constant).
+      CHECK(balance < 1e-9 * largest);
+    }
+    // Omega G q' does no work (G skew); Omega' G q does: Omega' q'^T G q, the drive's share as
+    // the disk's lateral angular momentum grows with the spin. Its trapezoidal sum converges
+    // at second order: successive differences fall by 4 (3 allows for round-off).
+    const double d1 = std::abs(driven[0] - driven[1]), d2 = std::abs(driven[1] - driven[2]);
+    MESSAGE("successive differences " << d1 << ", " << d2);
+    CHECK(d2 < d1 / 3);
   }
 }
