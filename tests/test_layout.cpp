@@ -46,7 +46,8 @@ const std::map<std::string, int> kTopRank{
 // clang-format off
 const std::map<std::string, std::map<std::string, int>> kRoomRank{
     {"fem", {{"timing", 0}, {"model", 1}, {"assembly", 2}, {"solvers", 3},
-             {"static", 4}, {"modal", 4}, {"rotor", 4}, {"transient", 4}, {"stability", 5}}},
+             {"static", 4}, {"modal", 4}, {"rotor", 4}, {"transient", 4}, {"stability", 5},
+             {"runup", 5}}},
     {"problems", {{"scenes", 0}, {"deck", 1}, {"run", 2}, {"output", 3},
                   {"converge", 4}, {"verify", 4}, {"bench", 4}, {"study", 4},
                   {"cli", 5}, {"python", 5}}}};

@@ -8,21 +8,14 @@
 
 namespace beamrotor {
 
-UnbalanceResult solveUnbalance(const Model& model, const std::vector<Unbalance>& unbalance,
-                               const std::vector<double>& speeds, const std::vector<int>& nodes,
-                               ProportionalDamping damping) {
+Eigen::VectorXcd unbalanceForces(const RotorSystem& system,
+                                 const std::vector<Unbalance>& unbalance) {
   using Complex = std::complex<double>;
-  Stopwatch clock, total;
-  UnbalanceResult result;
-  result.speeds = speeds;
-  result.nodes = nodes;
-  result.orbits.assign(nodes.size(), {});
-
-  // 1. Matrices, and the unit force pattern: F = Omega^2 f with f_y = m e e^{i phase},
-  //    f_z = -i m e e^{i phase} (Re(-i e^{i(Omega t + phase)}) = sin(Omega t + phase)); a
-  //    couple f_rz = U_c e^{i phase}, f_ry = i U_c e^{i phase} (Re(i e^{i(...)}) = -sin).
-  const RotorSystem system(model, damping);
+  // f_y = m e e^{i phase}, f_z = -i m e e^{i phase} (Re(-i e^{i(Omega t + phase)}) =
+  // sin(Omega t + phase)); a couple f_rz = U_c e^{i phase}, f_ry = i U_c e^{i phase}
+  // (Re(i e^{i(...)}) = -sin).
   const DofMap& dofs = system.dofs();
+  const Model& model = system.model();
   Eigen::VectorXcd f = Eigen::VectorXcd::Zero(system.size());
   for (const Unbalance& u : unbalance) {
     const int y = dofs.equation(u.node, Dof::uy), z = dofs.equation(u.node, Dof::uz);
@@ -41,6 +34,23 @@ UnbalanceResult solveUnbalance(const Model& model, const std::vector<Unbalance>&
     f[rz] += couple;
     f[ry] += Complex(0, 1) * couple;
   }
+  return f;
+}
+
+UnbalanceResult solveUnbalance(const Model& model, const std::vector<Unbalance>& unbalance,
+                               const std::vector<double>& speeds, const std::vector<int>& nodes,
+                               ProportionalDamping damping) {
+  using Complex = std::complex<double>;
+  Stopwatch clock, total;
+  UnbalanceResult result;
+  result.speeds = speeds;
+  result.nodes = nodes;
+  result.orbits.assign(nodes.size(), {});
+
+  // 1. Matrices, and the unit force pattern.
+  const RotorSystem system(model, damping);
+  const DofMap& dofs = system.dofs();
+  const Eigen::VectorXcd f = unbalanceForces(system, unbalance);
   const ComplexSparseMatrix M = system.mass().cast<Complex>();
   const ComplexSparseMatrix G = system.gyroscopic().cast<Complex>();
   result.time.assembly = clock.lap();

@@ -25,6 +25,12 @@ struct Unbalance {
   double moment = 0;  ///< kg m^2, the couple unbalance U_c
 };
 
+/// The forces of the unbalances per unit Omega^2 as complex amplitudes on the free dofs: the
+/// force at spin angle phi is Re(f e^{i phi}) Omega^2 (and, with an angular acceleration,
+/// + Re(-i f e^{i phi}) Omega'). Throws std::invalid_argument as solveUnbalance.
+Eigen::VectorXcd unbalanceForces(const RotorSystem& system,
+                                 const std::vector<Unbalance>& unbalance);
+
 /// Orbits of `nodes` at every speed (rad/s). One symbolic factorisation for the sweep.
 /// Throws std::invalid_argument for an unbalance at a node without free uy and uz (and ry, rz
 /// for a couple), and

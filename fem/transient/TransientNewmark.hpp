@@ -17,6 +17,21 @@
 
 namespace beamrotor {
 
+/// The constants of the rule and its predictor and corrector, shared by every implicit
+/// stepper: NewmarkStepper below (matrices fixed for the run) and the run-up's
+/// (fem/runup/RunUp.cpp, matrices changing with the spin speed).
+struct NewmarkRule {
+  /// dt in s; alpha in [-1/3, 0] (throws std::invalid_argument otherwise).
+  NewmarkRule(double dt, double alpha);
+  double dt, alpha, gamma, beta;
+
+  /// u~ and v~ from the state at t_n.
+  void predict(const TransientState& s, Eigen::VectorXd& u, Eigen::VectorXd& v) const;
+  /// The state at t_n+1 from the predictors and the new acceleration a.
+  void correct(TransientState& s, const Eigen::VectorXd& uPredicted,
+               const Eigen::VectorXd& vPredicted, const Eigen::VectorXd& a) const;
+};
+
 class NewmarkStepper {
  public:
   /// dt in s; alpha in [-1/3, 0] (throws std::invalid_argument otherwise). Factorises S; throws
@@ -28,14 +43,14 @@ class NewmarkStepper {
   /// Advances s (consistent: M a + C v + K u = f at s.t) by one step dt.
   void step(TransientState& s);
 
-  double gamma() const { return gamma_; }
-  double beta() const { return beta_; }
+  double gamma() const { return rule_.gamma; }
+  double beta() const { return rule_.beta; }
   /// Fill of S's LU factors.
   double factorEntries() const { return lu_.factorEntries(); }
 
  private:
   const TransientSystem& system_;
-  double dt_, alpha_, gamma_, beta_;
+  NewmarkRule rule_;
   SparseMatrix S_;  // the effective matrix; UMFPACK's solve refers back to it, keep it alive
   SparseLU lu_;
   Eigen::VectorXd uPredicted_, vPredicted_, rhs_, f_;

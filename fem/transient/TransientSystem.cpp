@@ -153,13 +153,16 @@ Eigen::VectorXd TransientSystem::initialAcceleration(const TransientState& s) co
   force(s.t, r);
   r -= K_ * s.u;
   if (damped_) r -= C_ * s.v;
+  return accelerationOf(M_, std::move(r), "transient analysis");
+}
 
+Eigen::VectorXd accelerationOf(const SparseMatrix& M, Eigen::VectorXd r, const char* analysis) {
   // Massless dofs: a unit diagonal and a zero right-hand side pin their acceleration at 0
   // without touching the others (their rows and columns of M are empty).
-  Eigen::VectorXd colSum = Eigen::VectorXd::Zero(M_.cols());
-  for (int k = 0; k < M_.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(M_, k); it; ++it) colSum[k] += std::abs(it.value());
-  SparseMatrix A = M_;
+  Eigen::VectorXd colSum = Eigen::VectorXd::Zero(M.cols());
+  for (int k = 0; k < M.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(M, k); it; ++it) colSum[k] += std::abs(it.value());
+  SparseMatrix A = M;
   for (int eq = 0; eq < A.cols(); ++eq)
     if (colSum[eq] == 0) {
       A.coeffRef(eq, eq) = 1;
@@ -169,7 +172,7 @@ Eigen::VectorXd TransientSystem::initialAcceleration(const TransientState& s) co
   lu.compute(A);
   if (!lu.healthy(kSingularRcond)) {
     std::ostringstream msg;
-    msg << "transient analysis: the mass matrix is singular (UMFPACK rcond = " << lu.rcond()
+    msg << analysis << ": the mass matrix is singular (UMFPACK rcond = " << lu.rcond()
         << ") in a way that massless dofs do not explain, so the initial acceleration is "
            "undefined";
     throw SolveError(msg.str());

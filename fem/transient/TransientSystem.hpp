@@ -20,6 +20,11 @@ struct TransientState {
   Eigen::VectorXd u, v, a;
 };
 
+/// a = M^-1 r, with a = 0 at massless dofs (empty rows and columns of M): see
+/// TransientSystem::initialAcceleration. Throws SolveError naming `analysis` when M is singular
+/// otherwise.
+Eigen::VectorXd accelerationOf(const SparseMatrix& M, Eigen::VectorXd r, const char* analysis);
+
 class TransientSystem {
  public:
   /// Numbers the dofs, assembles K, M, C and the load patterns. Throws std::invalid_argument

@@ -279,4 +279,36 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutco
   out << "    API 684 Level I: " << levelOneVerdict(r) << "\n";
 }
 
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome& o,
+                const OutputUnits& units) {
+  const RunUpResult& r = o.runUp;
+  const double from = r.speed.empty() ? 0 : r.speed.front(), to = r.speed.empty() ? 0 : r.speed.back();
+  out << "run-up analysis '" << a.name << "': " << (to >= from ? "run-up" : "coast-down")
+      << " from " << rpmText(from * kRpm, units) << " to " << rpmText(to * kRpm, units)
+      << " in " << formatValue(r.times.empty() ? 0 : r.times.back()) << " s, " << r.steps
+      << " steps of " << formatValue(r.timeStep) << " s ("
+      << (o.alpha == 0 ? std::string("newmark") : "hht alpha " + formatValue(o.alpha)) << ", "
+      << formatValue(r.time.total) << " s)\n";
+  for (std::size_t k = 0; k < o.responsePoints.size(); ++k) {
+    const RunUpHistory& h = r.histories[k];
+    out << "    " << o.responsePoints[k] << ": ";
+    if (h.revolutions.amplitude.empty()) {
+      out << "no revolution completed\n";
+      continue;
+    }
+    out << "peak amplitude " << valueText(h.peakAmplitude, "m", units) << " at "
+        << rpmText(h.speedAtPeak * kRpm, units) << " (t = " << formatValue(h.timeAtPeak)
+        << " s)\n";
+  }
+  const RunUpEnergy& e = r.energy;
+  if (!e.kinetic.empty()) {
+    const std::size_t last = e.kinetic.size() - 1;
+    out << "    energy at the end: kinetic " << valueText(e.kinetic[last], "J", units)
+        << ", strain " << valueText(e.strain[last], "J", units) << ", dissipated "
+        << valueText(e.dissipated[last], "J", units) << ", work of unbalance and gravity "
+        << valueText(e.work[last], "J", units) << " (balance "
+        << valueText(e.balance(last), "J", units) << ")\n";
+  }
+}
+
 }  // namespace beamrotor::cli

@@ -30,5 +30,7 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const BearingLoadsO
                 const OutputUnits& units = {});
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutcome& r,
                 const OutputUnits& units = {});
+void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome& r,
+                const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

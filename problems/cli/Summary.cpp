@@ -38,6 +38,7 @@ SystemSize sizeOf(const RunResult& run) {
                    [](const RotorModesResult& r) -> Size { return r.size; },
                    [](const CampbellOutcome& r) -> Size { return r.campbell.size; },
                    [](const UnbalanceOutcome& r) -> Size { return r.unbalance.size; },
+                   [](const RunUpOutcome& r) -> Size { return r.runUp.size; },
                    [](const FrequencyResponseOutcome& r) -> Size { return r.response.size; },
                    // These keep no system size of the deck's model (a torsion analysis
                    // solves its own, in twist alone): the model line takes it from the

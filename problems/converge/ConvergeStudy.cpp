@@ -225,6 +225,7 @@ SolveCost costOf(const AnalysisOutcome& a) {
                  [](const UnbalanceOutcome& r) -> SolveCost {
                    return {r.unbalance.time, r.unbalance.size};
                  },
+                 [](const RunUpOutcome& r) -> SolveCost { return {r.runUp.time, r.runUp.size}; },
                  // Never studied (a rigid body is not studiable, the others answer no
                  // quantity): nothing of them is timed.
                  [](const RigidBodyOutcome&) -> SolveCost { return {}; },

@@ -40,6 +40,9 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
       return kRpmField;
     case K::unbalanceAmplitude:
       return {dim::length};
+    case K::runUp:  // the peak amplitude (m), or the speed it occurs at (rpm)
+      if (q.property == "peak") return {dim::length};
+      return kRpmField;
     case K::rigidBody: {
       const std::string& p = q.property;
       if (p == "mass") return {dim::mass};

@@ -21,7 +21,8 @@ constexpr const char* kGrammar =
     "'member NAME deflection max', 'section NAME PROPERTY', 'buckling_factor N', 'log_decrement N', 'critical_speed N', "
     "'instability_onset', "
     "'unbalance_amplitude POINT at RPM', "
-    "'rigid_body PROPERTY', 'level1 PROPERTY', 'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
+    "'rigid_body PROPERTY', 'level1 PROPERTY', 'runup peak|speed_at_peak POINT', "
+    "'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
     "'crank PROPERTY at PHI deg', 'torsion torque NAME', 'torsion twist STATION', "
     "'history NAME max|min|maxabs', 'history NAME at TIME', 'resultant N|Vy|Vz|T|My|Mz at POINT' "
     "or 'moving max|min QUANTITY'";

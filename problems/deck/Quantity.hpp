@@ -28,6 +28,8 @@
 //   critical_speed N          N-th critical speed of a campbell analysis (rpm), ascending
 //   instability_onset         onset of instability of a campbell analysis (rpm)
 //   unbalance_amplitude POINT at RPM   orbit semi-major axis of POINT at RPM (m)
+//   runup peak POINT          largest per-revolution amplitude of POINT in a run-up (m)
+//   runup speed_at_peak POINT the speed of the revolution where it occurs (rpm)
 //   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
 //                             (N, per unit modal amplitude) of a rigid-body analysis
 // and those of the crank-slider analysis (CrankQuantity.hpp):
@@ -63,6 +65,7 @@ struct Quantity {
     unbalanceAmplitude,
     rigidBody,  // rotor analyses
     levelOne,   // level1-stability: `level1 PROPERTY`
+    runUp,      // run-up: `runup peak|speed_at_peak POINT`
     crankSlider,  // crank-slider analyses (CrankQuantity.hpp)
     torsion,      // torsion analyses of a train (TorsionQuantity.hpp)
     historyMax,

@@ -30,7 +30,8 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
     for (const std::optional<CsvTable>* t :
          {&rotor->modes, &rotor->orbits, &rotor->campbell, &rotor->critical, &rotor->unbalance,
           &rotor->api684, &rotor->frf, &rotor->bearings, &rotor->map, &rotor->mapBearings,
-          &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag, &rotor->levelOne})
+          &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag, &rotor->levelOne,
+          &rotor->runUp, &rotor->runUpHistory})
       if (*t) all.emplace_back((*t)->title(), &**t);
   for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank, &torsion, &moving})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
@@ -164,7 +165,8 @@ void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
     for (std::optional<CsvTable>* t :
          {&p.rotor->modes, &p.rotor->orbits, &p.rotor->campbell, &p.rotor->critical,
           &p.rotor->unbalance, &p.rotor->api684, &p.rotor->frf, &p.rotor->bearings, &p.rotor->map,
-          &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag})
+          &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag,
+          &p.rotor->runUp, &p.rotor->runUpHistory})
       if (*t) *t = inUnits(**t, units);
   for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank})
     for (CsvTable& t : *list) t = inUnits(t, units);

@@ -99,6 +99,19 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
                                     "destabilises the rotor");
       return q.property == "q0" ? s.zeroDecrement : s.ratio;
     }
+    case Quantity::Kind::runUp: {
+      const auto* r = resultOf<RunUpOutcome>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not a run-up analysis");
+      for (std::size_t k = 0; k < r->responsePoints.size(); ++k) {
+        if (r->responsePoints[k] != q.target) continue;
+        const RunUpHistory& h = r->runUp.histories[k];
+        if (h.revolutions.amplitude.empty())
+          throw std::invalid_argument(name + " completes no revolution: no amplitude of '" +
+                                      q.target + "'");
+        return q.property == "peak" ? h.peakAmplitude : h.speedAtPeak * kRpm;
+      }
+      throw std::invalid_argument(name + " has no response of '" + q.target + "'");
+    }
     default:
       throw std::invalid_argument("'" + q.text + "' is not a result of " + name);
   }

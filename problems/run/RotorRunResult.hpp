@@ -16,6 +16,7 @@
 #include "fem/rotor/RotorFrequencyResponse.hpp"
 #include "fem/rotor/RotorResults.hpp"
 #include "fem/rotor/RotorStability.hpp"
+#include "fem/runup/RunUp.hpp"
 #include "problems/scenes/FormeShaft.hpp"
 
 namespace beamrotor {
@@ -132,6 +133,14 @@ struct LevelOneOutcome {
   double time = 0;      ///< wall time (s)
 };
 
+/// run-up: the rotor driven through its speeds in time.
+struct RunUpOutcome {
+  RunUpResult runUp;
+  std::vector<std::string> responsePoints;  ///< names of runUp.histories' nodes, in order
+  bool steadyStart = false;                 ///< started on the steady orbit (else at rest)
+  double alpha = 0;                         ///< HHT's alpha (0: average acceleration)
+};
+
 /// The result of any rotor analysis: the writers take each through one overload set
 /// (rotorJson, prepareRotor, printRotor, ...), so one visitor lambda covers the family, and a
 /// kind missing from a set does not compile.
@@ -139,6 +148,7 @@ template <class R>
 concept RotorResult = std::same_as<R, RotorModesResult> || std::same_as<R, CampbellOutcome> ||
     std::same_as<R, UnbalanceOutcome> || std::same_as<R, RigidBodyOutcome> ||
     std::same_as<R, FrequencyResponseOutcome> || std::same_as<R, CriticalSpeedMapOutcome> ||
-    std::same_as<R, BearingLoadsOutcome> || std::same_as<R, LevelOneOutcome>;
+    std::same_as<R, BearingLoadsOutcome> || std::same_as<R, LevelOneOutcome> ||
+    std::same_as<R, RunUpOutcome>;
 
 }  // namespace beamrotor

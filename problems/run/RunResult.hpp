@@ -82,7 +82,8 @@ using AnalysisResult =
     std::variant<StaticOutcome, SecondOrderResult, ModalResult, BucklingResult, TransientOutcome,
                  RotorModesResult, CampbellOutcome, UnbalanceOutcome, RigidBodyOutcome,
                  FrequencyResponseOutcome, CriticalSpeedMapOutcome, BearingLoadsOutcome,
-                 CrankSliderOutcome, TorsionOutcome, LevelOneOutcome, MovingLoadOutcome>;
+                 CrankSliderOutcome, TorsionOutcome, LevelOneOutcome, MovingLoadOutcome,
+                 RunUpOutcome>;
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {

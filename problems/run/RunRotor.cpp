@@ -128,11 +128,17 @@ CampbellOutcome runCampbell(const Deck& deck, const RotorFamily& s, const Model&
   return out;
 }
 
-UnbalanceOutcome runUnbalance(const Deck& deck, const RotorFamily& s, const Model& model) {
-  const DeckRotorAnalysis& r = s.rotor;
+/// The analysis's unbalances on the model's nodes.
+std::vector<Unbalance> unbalanceOf(const DeckRotorAnalysis& r, const Model& model) {
   std::vector<Unbalance> unbalance;
   for (const DeckUnbalance& u : r.unbalance)
     unbalance.push_back({model.node(u.point), u.me, u.phase, u.moment});
+  return unbalance;
+}
+
+UnbalanceOutcome runUnbalance(const Deck& deck, const RotorFamily& s, const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  const std::vector<Unbalance> unbalance = unbalanceOf(r, model);
   std::vector<int> nodes;
   for (const std::string& p : r.response) nodes.push_back(model.node(p));
   UnbalanceOutcome out;
@@ -180,6 +186,26 @@ CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily&
     b.kxxCrossings = mapCrossings(out.map, b.speeds, b.kxx);
     b.kyyCrossings = mapCrossings(out.map, b.speeds, b.kyy);
   }
+  return out;
+}
+
+RunUpOutcome runRunUp(const Deck& deck, const RotorFamily& s, const Model& model) {
+  const DeckRotorAnalysis& r = s.rotor;
+  const DeckRunUp& d = r.runUp;
+  RunUpOptions o;
+  o.timeStep = d.dt;
+  o.hhtAlpha = d.alpha;
+  o.start = d.steadyStart ? RunUpStart::steady : RunUpStart::rest;
+  o.unbalance = unbalanceOf(r, model);
+  o.gravity = Eigen::Vector3d(d.gravity[0], d.gravity[1], d.gravity[2]);
+  o.damping = deck.rotor.damping;
+  for (const std::string& p : r.response) o.nodes.push_back(model.node(p));
+  o.sampleEvery = d.sampleEvery;
+  RunUpOutcome out;
+  out.runUp = solveRunUp(model, SpeedProfile::table(d.times, d.speeds), o);
+  out.responsePoints = r.response;
+  out.steadyStart = d.steadyStart;
+  out.alpha = d.alpha;
   return out;
 }
 
@@ -292,6 +318,7 @@ AnalysisResult solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const
                  [&](const CriticalSpeedMapSpec& s) { return run(runCriticalSpeedMap, s); },
                  [&](const BearingLoadsSpec& s) { return run(runBearingLoads, s); },
                  [&](const LevelOneSpec& s) { return run(runLevelOne, s); },
+                 [&](const RunUpSpec& s) { return run(runRunUp, s); },
                  [](const NotRotorRow auto&) -> AnalysisResult {
                    throw std::logic_error("solveRotorAnalysis: not a rotor analysis");
                  }},

@@ -84,6 +84,17 @@ struct DeckTwoDofBody {
   double C1 = 0, C2 = 0;        ///< spring stiffnesses at A and B (N/m)
 };
 
+/// run-up: the spin speed against time and the time grid (fem/runup/RunUp.hpp).
+struct DeckRunUp {
+  std::vector<double> times;   ///< s, from 0, strictly ascending (a ramp: 0 and its duration)
+  std::vector<double> speeds;  ///< rad/s at those times
+  double dt = 0;               ///< s
+  double alpha = 0;            ///< HHT's alpha, in [-1/3, 0]; 0: the average acceleration rule
+  bool steadyStart = false;    ///< start on the steady unbalance orbit (else at rest)
+  std::array<double, 3> gravity{0, 0, 0};  ///< m/s^2, global; zero without `gravity:`
+  int sampleEvery = 1;                     ///< histories kept every n steps
+};
+
 struct DeckRotorAnalysis {
   double speed = 0;                        ///< rotor: spin speed (rad/s)
   std::vector<double> speeds;              ///< campbell, unbalance: ascending (rad/s)
@@ -117,6 +128,8 @@ struct DeckRotorAnalysis {
   double maximumContinuousSpeed = 0;
   /// level1-stability: API's average gas density (kg/m^3); unset: from the stages
   std::optional<double> averageGasDensity;
+  DeckRunUp runUp;  ///< run-up
+
 };
 
 }  // namespace beamrotor

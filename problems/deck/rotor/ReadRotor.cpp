@@ -18,6 +18,9 @@ namespace beamrotor::reader {
 namespace {
 
 constexpr double kRadPerRpm = std::numbers::pi / 30;
+/// Bounds that keep a typo (dt: 1e-12) from running for days or filling the disk.
+constexpr double kMaxRunUpSteps = 1e7;
+constexpr double kMaxRunUpSamples = 1e6;
 
 /// Stiffness and damping keys in the bearing's own axes (x_b, y_b) = global (y, z), see
 /// elements/Bearing.hpp.
@@ -373,18 +376,85 @@ void readCriticalSpeedMap(const Context& c, const Field& f, DeckRotorAnalysis& r
 
 /// bearing-loads: g (m/s^2, default 9.81), direction (-y, y, -z, z; default -y), bearings
 /// (rigid or elastic) and, for elastic bearings, speed_rpm (their coefficients' speed).
+/// `g` (m/s^2, default 9.81) and `direction` (-y, y, -z or z; default -y) of the map f: the
+/// acceleration of gravity, global.
+std::array<double, 3> readGravity(const Context& c, const Field& f) {
+  double g = 9.81;
+  if (auto v = f.get("g")) g = v->positive(c.evaluator, dim::acceleration);
+  std::string direction = "-y";
+  if (auto d = f.get("direction")) direction = d->choice({"-y", "y", "-z", "z"});
+  const double sign = direction[0] == '-' ? -1 : 1;
+  return {0, direction.back() == 'y' ? sign * g : 0, direction.back() == 'z' ? sign * g : 0};
+}
+
+/// run-up: the speed against time (a ramp from_rpm -> to_rpm over duration, or speed_table
+/// rows [t, rpm]), the time grid and scheme, the start, gravity, unbalance and response.
+void readRunUp(const Context& c, const Field& f, DeckRotorAnalysis& r) {
+  f.allowOnly({"type", "name", "from_rpm", "to_rpm", "duration", "speed_table", "dt", "scheme",
+               "alpha", "start", "gravity", "sample_every", "unbalance", "response"},
+              "a run-up analysis");
+  const ExpressionEvaluator& ev = c.evaluator;
+  DeckRunUp& u = r.runUp;
+  if (auto table = f.get("speed_table")) {
+    for (const char* key : {"from_rpm", "to_rpm", "duration"})
+      if (auto other = f.get(key))
+        other->fail("give either speed_table: or from_rpm, to_rpm and duration, not both");
+    for (const Field& row : table->items()) {
+      const std::vector<Field> pair = row.isList() ? row.items() : std::vector<Field>{};
+      if (pair.size() != 2) row.fail("expected a row [t, rpm], got " + row.describe());
+      const double t = pair[0].nonNegative(ev, dim::time);
+      if (u.times.empty() && t != 0) pair[0].fail("the table starts at t = 0");
+      if (!u.times.empty() && !(t > u.times.back()))
+        pair[0].fail("times must ascend strictly (the previous is " + formatNumber(u.times.back()) +
+                     ")");
+      u.times.push_back(t);
+      u.speeds.push_back(pair[1].nonNegative(ev, kRpmField) * kRadPerRpm);
+    }
+    if (u.times.size() < 2) table->fail("a speed table needs at least two rows [t, rpm]");
+  } else {
+    const double from = f.require("from_rpm").nonNegative(ev, kRpmField) * kRadPerRpm;
+    const Field to = f.require("to_rpm");
+    const double top = to.nonNegative(ev, kRpmField) * kRadPerRpm;
+    if (top == from)
+      to.fail("to_rpm equals from_rpm: a run-up (to_rpm > from_rpm) or coast-down (to_rpm < "
+              "from_rpm) changes the speed");
+    u.times = {0, f.require("duration").positive(ev, dim::time)};
+    u.speeds = {from, top};
+  }
+  const Field dt = f.require("dt");
+  u.dt = dt.positive(ev, dim::time);
+  const double steps = std::round(u.times.back() / u.dt);
+  if (!(u.times.back() / u.dt <= kMaxRunUpSteps))
+    dt.fail("the run asks for " + formatNumber(steps) + " steps; at most " +
+            formatNumber(kMaxRunUpSteps) + " (use a larger dt)");
+  if (!(steps >= 1)) dt.fail("dt exceeds the run's duration " + formatNumber(u.times.back()) + " s");
+  if (auto s = f.get("scheme"); s && s->choice({"newmark", "hht"}) == "hht") u.alpha = -0.05;
+  if (auto a = f.get("alpha")) {
+    if (u.alpha == 0) a->fail("alpha is the HHT parameter; set scheme: hht");
+    u.alpha = a->number(ev, dim::none);
+    if (!(u.alpha >= -1.0 / 3 && u.alpha <= 0))
+      a->fail("HHT alpha must lie in [-1/3, 0], got " + formatNumber(u.alpha));
+  }
+  if (auto s = f.get("start")) u.steadyStart = s->choice({"rest", "steady"}) == "steady";
+  if (auto g = f.get("gravity")) {
+    if (!g->isMap()) g->fail("expected {g: 9.81, direction: -y}, got " + g->describe());
+    g->allowOnly({"g", "direction"}, "gravity");
+    u.gravity = readGravity(c, *g);
+  }
+  if (auto n = f.get("sample_every")) u.sampleEvery = n->integer(ev, 1, int(kMaxRunUpSteps));
+  if (steps / u.sampleEvery > kMaxRunUpSamples)
+    dt.fail("the run would record " + formatNumber(std::round(steps / u.sampleEvery)) +
+            " samples; at most " + formatNumber(kMaxRunUpSamples) + " (set sample_every)");
+  readUnbalance(c, f, r);
+}
+
 void readBearingLoads(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   f.allowOnly({"type", "name", "g", "direction", "bearings", "speed_rpm"},
               "a bearing-loads analysis");
   if (c.deck.rotor.bearings.empty())
     f.fail("a bearing-loads analysis reports the loads of the deck's bearings: add bearings");
   refusePedestals(c, f, "a bearing-loads analysis pins the bearings");
-  double g = 9.81;
-  if (auto v = f.get("g")) g = v->positive(c.evaluator, dim::acceleration);
-  std::string direction = "-y";
-  if (auto d = f.get("direction")) direction = d->choice({"-y", "y", "-z", "z"});
-  const double sign = direction[0] == '-' ? -1 : 1;
-  r.gravity = {0, direction.back() == 'y' ? sign * g : 0, direction.back() == 'z' ? sign * g : 0};
+  r.gravity = readGravity(c, f);
   if (auto b = f.get("bearings")) r.rigidBearings = b->choice({"rigid", "elastic"}) == "rigid";
   if (auto s = f.get("speed_rpm")) {
     if (r.rigidBearings) s->fail("speed_rpm sets the elastic bearings' coefficients: add bearings: elastic");
@@ -497,12 +567,13 @@ void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
   if (q.kind == Quantity::Kind::logDecrement && q.mode > settings->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + a.name +
            "' computes " + std::to_string(settings->modes) + " modes (set its modes:)");
-  if (q.kind != Quantity::Kind::unbalanceAmplitude) return;
+  if (q.kind != Quantity::Kind::unbalanceAmplitude && q.kind != Quantity::Kind::runUp) return;
   const DeckRotorAnalysis& r = settings->rotor;
   const auto& points = r.response;
   if (std::find(points.begin(), points.end(), q.target) == points.end())
     f.fail("analysis '" + a.name + "' reports no response at '" + q.target + "'" +
            didYouMean(q.target, points) + " (response: " + joinNames(points) + ")");
+  if (q.kind == Quantity::Kind::runUp) return;
   const double w = q.rpm * kRadPerRpm;
   if (w < r.speeds.front() * (1 - 1e-12) || w > r.speeds.back() * (1 + 1e-12))
     f.fail("speed " + formatNumber(q.rpm) + " rpm lies outside analysis '" + a.name + "' (" +
@@ -569,6 +640,11 @@ void LevelOneSpec::read(const reader::Context& c, const Field& f) {
   for (const CompressorStage& s : rotor.stages) power += s.power;
   if (!(power > 0)) f.require("stages").fail("the stages' power must add up to more than 0");
   reader::readModeSearch(c, f, *this);
+}
+
+void RunUpSpec::read(const reader::Context& c, const Field& f) {
+  reader::requireLateral(c, f, deckType);
+  reader::readRunUp(c, f, rotor);
 }
 
 void BearingLoadsSpec::read(const reader::Context& c, const Field& f) {

@@ -75,4 +75,12 @@ struct LevelOneSpec : RotorFamily {
   void read(const reader::Context& c, const Field& f);
 };
 
+/// Run-up or coast-down through the critical speeds, stepped in time (fem/runup/RunUp.hpp).
+struct RunUpSpec : RotorFamily {
+  static constexpr std::string_view deckType = "run-up";
+  static constexpr std::array answers{Quantity::Kind::runUp};
+  static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
+};
+
 }  // namespace beamrotor

@@ -51,6 +51,14 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
       throw std::invalid_argument("speed '" + words[3] + "' must be a number of rpm >= 0");
     return true;
   }
+  if (head == "runup") {
+    if (words.size() != 3 || (words[1] != "peak" && words[1] != "speed_at_peak"))
+      throw std::invalid_argument("expected 'runup peak POINT' or 'runup speed_at_peak POINT'");
+    q.kind = Kind::runUp;
+    q.property = words[1];
+    q.target = words[2];
+    return true;
+  }
   if (head == "rigid_body" || head == "level1") {
     const bool rigid = head == "rigid_body";
     const auto& names = rigid ? rigidBodyPropertyNames() : levelOnePropertyNames();

@@ -8,6 +8,7 @@
 #include "fem/rotor/RotorStability.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/rotor/LevelOneOutput.hpp"
+#include "problems/output/rotor/RunUpOutput.hpp"
 #include "problems/output/rotor/RotorFileNames.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
 #include "problems/output/rotor/UnwrappedPhase.hpp"
@@ -333,6 +334,44 @@ Json levelOneJson(const std::string& stem, const LevelOneOutcome& o) {
           {"files", {{"level1_csv", levelOneCsv(stem)}}}};
 }
 
+Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
+  const RunUpResult& r = o.runUp;
+  Json points = Json::array();
+  for (std::size_t k = 0; k < o.responsePoints.size(); ++k) {
+    const RunUpHistory& h = r.histories[k];
+    const bool any = !h.revolutions.amplitude.empty();
+    points.push_back({{"point", o.responsePoints[k]},
+                      {"peak_amplitude", any ? Json(h.peakAmplitude) : Json(nullptr)},
+                      {"speed_at_peak_rpm", any ? Json(h.speedAtPeak * 30 / std::numbers::pi)
+                                                : Json(nullptr)},
+                      {"time_at_peak", any ? Json(h.timeAtPeak) : Json(nullptr)}});
+  }
+  const RunUpEnergy& e = r.energy;
+  const std::size_t last = e.kinetic.empty() ? 0 : e.kinetic.size() - 1;
+  const double rpm = 30 / std::numbers::pi;
+  return {{"start_rpm", r.speed.empty() ? 0.0 : r.speed.front() * rpm},
+          {"end_rpm", r.speed.empty() ? 0.0 : r.speed.back() * rpm},
+          {"duration_s", r.times.empty() ? 0.0 : r.times.back()},
+          {"dt", r.timeStep},
+          {"steps", r.steps},
+          {"scheme", o.alpha == 0 ? "newmark" : "hht"},
+          {"alpha", o.alpha},
+          {"start", o.steadyStart ? "steady" : "rest"},
+          {"revolutions", r.histories.empty() ? 0 : r.histories[0].revolutions.speed.size()},
+          {"factorizations", r.factorizations},
+          {"points", points},
+          {"energy",
+           {{"kinetic", e.kinetic.empty() ? 0.0 : e.kinetic[last]},
+            {"strain", e.strain.empty() ? 0.0 : e.strain[last]},
+            {"dissipated", e.dissipated.empty() ? 0.0 : e.dissipated[last]},
+            {"gyroscopic", e.gyroscopic.empty() ? 0.0 : e.gyroscopic[last]},
+            {"work", e.work.empty() ? 0.0 : e.work[last]},
+            {"balance", e.kinetic.empty() ? 0.0 : e.balance(last)}}},
+          {"time_s", r.time.total},
+          {"files",
+           {{"runup_csv", runUpCsv(stem)}, {"runup_history_csv", runUpHistoryCsv(stem)}}}};
+}
+
 Json rigidBodyJson(const RigidBodyOutcome& r) {
   const FormeShaftRigid& s = r.rigid;
   Json modes = Json::array();
@@ -401,6 +440,10 @@ Json rotorJson(const AnalysisOutcome& a, const BearingLoadsOutcome& r) {
 }
 Json rotorJson(const AnalysisOutcome& a, const LevelOneOutcome& r) {
   return entry(a, levelOneJson(fileStem(a.name), r));
+}
+
+Json rotorJson(const AnalysisOutcome& a, const RunUpOutcome& r) {
+  return entry(a, runUpJson(fileStem(a.name), r));
 }
 
 }  // namespace beamrotor

@@ -36,5 +36,6 @@ Json rotorJson(const AnalysisOutcome& a, const FrequencyResponseOutcome& r);
 Json rotorJson(const AnalysisOutcome& a, const CriticalSpeedMapOutcome& r);
 Json rotorJson(const AnalysisOutcome& a, const BearingLoadsOutcome& r);
 Json rotorJson(const AnalysisOutcome& a, const LevelOneOutcome& r);
+Json rotorJson(const AnalysisOutcome& a, const RunUpOutcome& r);
 
 }  // namespace beamrotor

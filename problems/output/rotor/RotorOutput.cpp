@@ -24,6 +24,7 @@
 #include "problems/output/rotor/RotorStabilityChart.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
 #include "problems/output/rotor/RotorVtk.hpp"
+#include "problems/output/rotor/RunUpOutput.hpp"
 #include "problems/output/structure/VtkWriter.hpp"
 
 namespace beamrotor {
@@ -111,6 +112,13 @@ PreparedRotor prepareRotor(const BearingLoadsOutcome& r, const std::string& stem
 PreparedRotor prepareRotor(const LevelOneOutcome& r, const std::string& stem) {
   PreparedRotor p;
   p.levelOne = levelOneTable(levelOneCsv(stem), r.screening);
+  return p;
+}
+
+PreparedRotor prepareRotor(const RunUpOutcome& r, const std::string& stem) {
+  PreparedRotor p;
+  p.runUp = runUpTable(runUpCsv(stem), r);
+  p.runUpHistory = runUpHistoryTable(runUpHistoryCsv(stem), r);
   return p;
 }
 
@@ -232,6 +240,19 @@ void writeRotorFiles(const RotorFiles& f, const LevelOneOutcome& r) {
   if (f.charts)
     drawChart(f.dir, criticalSpeedRatioDiagram(fitted(f.caption) + "\n" + what,
                                                criticalSpeedRatioChart(f.stem), s.map));
+}
+
+void writeRotorFiles(const RotorFiles& f, const RunUpOutcome& r) {
+  const std::string& stem = f.stem;
+  f.tables.runUp->write(f.dir / runUpCsv(stem));
+  f.tables.runUpHistory->write(f.dir / runUpHistoryCsv(stem));
+  if (!f.charts || r.responsePoints.empty()) return;
+  if (f.tables.runUp->rowCount() > 0)
+    drawChart(f.dir, runUpAmplitudeChart(fitted(f.caption), runUpChart(stem), *f.tables.runUp,
+                                         runUpCsv(stem), r, f.units));
+  if (f.tables.runUpHistory->rowCount() > 1)
+    drawChart(f.dir, runUpOrbitsChart(fitted(f.caption), runUpOrbitChart(stem),
+                                      *f.tables.runUpHistory, runUpHistoryCsv(stem), r, f.units));
 }
 
 }  // namespace beamrotor

@@ -27,6 +27,8 @@ struct PreparedRotor {
   std::optional<CsvTable> bearingLoads;  ///< bearing-loads: <stem>_bearing_loads.csv
   std::optional<CsvTable> sag;           ///< bearing-loads: <stem>_sag.csv
   std::optional<CsvTable> levelOne;      ///< level1-stability: <stem>_level1.csv
+  std::optional<CsvTable> runUp;         ///< run-up: <stem>_runup.csv
+  std::optional<CsvTable> runUpHistory;  ///< run-up: <stem>_runup_history.csv
   /// rotor: <stem>_orbits.csv (modeOrbitsTable; it needs the model, so prepareRun adds it).
   std::optional<CsvTable> orbits;
 };
@@ -41,6 +43,7 @@ PreparedRotor prepareRotor(const FrequencyResponseOutcome& r, const std::string&
 PreparedRotor prepareRotor(const CriticalSpeedMapOutcome& r, const std::string& stem);
 PreparedRotor prepareRotor(const BearingLoadsOutcome& r, const std::string& stem);
 PreparedRotor prepareRotor(const LevelOneOutcome& r, const std::string& stem);
+PreparedRotor prepareRotor(const RunUpOutcome& r, const std::string& stem);
 
 /// Where and how one rotor analysis writes its files.
 struct RotorFiles {
@@ -64,5 +67,6 @@ void writeRotorFiles(const RotorFiles& f, const FrequencyResponseOutcome& r);
 void writeRotorFiles(const RotorFiles& f, const CriticalSpeedMapOutcome& r);
 void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome& r);
 void writeRotorFiles(const RotorFiles& f, const LevelOneOutcome& r);
+void writeRotorFiles(const RotorFiles& f, const RunUpOutcome& r);
 
 }  // namespace beamrotor

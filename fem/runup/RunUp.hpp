@@ -1,0 +1,104 @@
+// Run-up and coast-down: a rotor driven through its critical speeds at a prescribed speed
+// Omega(t), stepped in time (Newmark's average acceleration rule or HHT, the rules of
+// fem/transient/TransientNewmark.hpp) on
+//   M q'' + (C(Omega) + Omega G) q' + (K(Omega) + Omega' G) q = f_unb(phi, Omega, Omega') + M g,
+// the matrices of fem/rotor/RotorSystem.hpp at the instantaneous speed (bearings' coefficients,
+// proportional and internal damping). The angular-acceleration term Omega' G: a body spinning
+// at Omega about its tilted axis a + theta x a carries the lateral angular momentum
+// Jp Omega theta x a, whose rate Jp Omega theta' x a + Jp Omega' theta x a is G theta' Omega +
+// G theta Omega' with the G the gyroscopic matrix is built from (PointInertia.cpp, Beam.cpp).
+// Lalanne and Ferraris (Rotordynamics Prediction in Engineering, 1998, ch. 2) reach a
+// one-entry matrix instead, from Euler angles whose spin angle differs from the body-axis
+// angle by a second-order term; the two differ by a symmetric part. Omega G q' does no work
+// (G skew); Omega' G q does, Omega' q'^T G q: the drive's share as the lateral angular
+// momentum grows with the spin (zero without polar inertia, as on a Jeffcott rotor).
+// An unbalance m e at phase p (fem/rotor/RotorUnbalance.hpp) pushes with
+//   m e (Omega^2 cos(phi + p) + Omega' sin(phi + p), Omega^2 sin(phi + p) - Omega' cos(phi + p)),
+// minus its mass times the acceleration of the heavy spot on its circle of radius e; a couple
+// U_c the moments of its two opposite heavy spots.
+// The effective matrix changes with the speed: it is factorised each step on one symbolic
+// analysis (a step at an unchanged speed keeps its factor).
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
+#include "fem/rotor/RotorSystem.hpp"
+#include "fem/rotor/RotorUnbalance.hpp"
+#include "fem/runup/RevolutionAmplitude.hpp"
+#include "fem/runup/SpeedProfile.hpp"
+
+namespace beamrotor {
+
+/// How the run starts at t = 0.
+enum class RunUpStart {
+  /// At rest on the static deflection under gravity (K(Omega_0) q = M g), then the unbalance
+  /// builds up from there.
+  rest,
+  /// On the steady synchronous unbalance orbit at the start speed plus the static deflection:
+  /// what a coast-down from a running machine starts from (no start-up transient).
+  steady,
+};
+
+struct RunUpOptions {
+  double timeStep = 0;   ///< s, constant
+  double hhtAlpha = 0;   ///< in [-1/3, 0]; 0: Newmark's average acceleration rule
+  RunUpStart start = RunUpStart::rest;
+  std::vector<Unbalance> unbalance;
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< m/s^2, global
+  ProportionalDamping damping;
+  std::vector<int> nodes;  ///< nodes whose uy, uz are recorded (histories and amplitudes)
+  int sampleEvery = 1;     ///< histories kept every n steps (and the last); amplitudes use all
+};
+
+/// One recorded node's motion (m, global y and z) at RunUpResult::times.
+struct RunUpHistory {
+  int node = -1;
+  std::vector<double> uy, uz;
+  RevolutionAmplitudes revolutions;  ///< from every step, not only the samples
+  /// The largest per-revolution amplitude and the revolution's mean speed (rad/s) and end time.
+  double peakAmplitude = 0, speedAtPeak = 0, timeAtPeak = 0;
+};
+
+/// The energy account at the sample times (J). With Newmark's average acceleration rule and
+/// speed-independent K, kinetic + strain + dissipated + gyroscopic - work - (kinetic + strain
+/// at t = 0) vanishes to round-off; with HHT the shortfall is the energy the scheme damps.
+struct RunUpEnergy {
+  std::vector<double> kinetic;     ///< 1/2 v' M v
+  std::vector<double> strain;      ///< 1/2 u' K(Omega) u (the symmetric part)
+  std::vector<double> dissipated;  ///< work done against C(Omega) so far
+  /// Work of the unbalance forces and gravity so far (trapezoidal in the displacement
+  /// increments, as the average acceleration rule's own balance)
+  std::vector<double> work;
+  /// Work done against Omega G q' + Omega' G q so far: the first part is zero in the
+  /// continuous system (G skew), the second is the drive's, -integral of Omega' q'^T G q
+  std::vector<double> gyroscopic;
+  double balance(std::size_t i) const {
+    return kinetic[i] + strain[i] + dissipated[i] + gyroscopic[i] - work[i] -
+           (kinetic[0] + strain[0]);
+  }
+};
+
+struct RunUpResult {
+  std::vector<double> times;   ///< sample times (s), t = 0 included
+  std::vector<double> speed;   ///< Omega at the samples (rad/s)
+  std::vector<double> angle;   ///< phi at the samples (rad)
+  std::vector<RunUpHistory> histories;  ///< one per requested node, in request order
+  RunUpEnergy energy;
+  double timeStep = 0;  ///< s
+  int steps = 0;
+  int factorizations = 0;  ///< numeric factorisations of the effective matrix
+  SystemSize size;
+  SolveTimings time;
+};
+
+/// Runs the rotor through `profile`. Throws std::invalid_argument for bad options (a
+/// non-positive step, alpha outside [-1/3, 0], an unbalance or recorded node without free uy
+/// and uz) and SolveError for a singular effective matrix.
+RunUpResult solveRunUp(const Model& model, const SpeedProfile& profile,
+                       const RunUpOptions& options);
+
+}  // namespace beamrotor

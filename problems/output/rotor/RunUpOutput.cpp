@@ -1,0 +1,115 @@
+#include "problems/output/rotor/RunUpOutput.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "problems/output/files/ChartParts.hpp"
+#include "problems/output/rotor/RotorTables.hpp"
+#include "problems/output/rotor/SpeedAxes.hpp"
+
+namespace beamrotor {
+
+CsvTable runUpTable(const std::string& title, const RunUpOutcome& r) {
+  std::vector<CsvColumn> columns{{"time", "s"}, {"speed", "rad/s"}, {"speed_rpm", "rpm"}};
+  for (const std::string& p : r.responsePoints)
+    for (const char* what : {"_amplitude", "_uy_half_range", "_uz_half_range"})
+      columns.push_back({p + what, "m"});
+  CsvTable table(title, columns);
+  const auto& histories = r.runUp.histories;
+  const std::size_t rows = histories.empty() ? 0 : histories[0].revolutions.speed.size();
+  for (std::size_t i = 0; i < rows; ++i) {
+    const RevolutionAmplitudes& first = histories[0].revolutions;
+    std::vector<CsvCell> row{first.time[i], first.speed[i], rpmOf(first.speed[i])};
+    for (const RunUpHistory& h : histories) {
+      const RevolutionAmplitudes& a = h.revolutions;
+      row.insert(row.end(), {a.amplitude[i], a.halfRangeY[i], a.halfRangeZ[i]});
+    }
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
+CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
+  std::vector<CsvColumn> columns{
+      {"time", "s"}, {"speed", "rad/s"}, {"speed_rpm", "rpm"}, {"angle", "rad"}};
+  for (const std::string& p : r.responsePoints)
+    for (const char* what : {"_uy", "_uz"}) columns.push_back({p + what, "m"});
+  for (const char* what : {"kinetic", "strain", "dissipated", "gyroscopic", "work", "energy_balance"})
+    columns.push_back({what, "J"});
+  CsvTable table(title, columns);
+  const RunUpResult& u = r.runUp;
+  for (std::size_t i = 0; i < u.times.size(); ++i) {
+    std::vector<CsvCell> row{u.times[i], u.speed[i], rpmOf(u.speed[i]), u.angle[i]};
+    for (const RunUpHistory& h : u.histories) row.insert(row.end(), {h.uy[i], h.uz[i]});
+    const RunUpEnergy& e = u.energy;
+    row.insert(row.end(),
+               {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i], e.work[i],
+                e.balance(i)});
+    table.addRow(std::move(row));
+  }
+  return table;
+}
+
+ChartScript runUpAmplitudeChart(const std::string& caption, const std::string& chartName,
+                                const CsvTable& table, const std::string& csvFile,
+                                const RunUpOutcome& r, const OutputUnits& units) {
+  const SpeedAxes axes = speedAxes(units);
+  const OutputUnits::Shown amplitude = units.columnIn("m", {1e6, "µm"});
+  std::vector<std::string> titles;
+  for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
+    const RunUpHistory& h = r.runUp.histories[k];
+    titles.push_back(r.responsePoints[k] + ": peak " +
+                     labelNumber(h.peakAmplitude * amplitude.factor) + " " + amplitude.unit +
+                     " at " + labelNumber(rpmOf(h.speedAtPeak) * axes.speed.factor) + " " +
+                     axes.speed.unit);
+  }
+  const int keyMargin = keyWidth(titles);
+  const int width = 770 + keyMargin, height = 560;
+  const int x = table.column("speed_rpm");
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n"
+       << "  set xlabel " << gnuplotText("spin speed [" + axes.speed.unit + "]") << "\n"
+       << "  set ylabel "
+       << gnuplotText("amplitude per revolution [" + amplitude.unit + "]") << "\n"
+       << "  set autoscale xfix\n  set yrange [0:*]\n  plot ";
+  for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
+    const int y = table.column(r.responsePoints[k] + "_amplitude");
+    if (k) body << ", \\\n       ";
+    body << gnuplotFile(csvFile) << " skip 1 using " << x << ":($" << y << "*"
+         << number(amplitude.factor) << ") with lines linewidth "
+         << number(std::max(1.0, 2.5 - 0.5 * double(k))) << " " << lineStyle(k) << " title "
+         << gnuplotText(titles[k]);
+  }
+  body << "\n  unset multiplot\n";
+  return {chartName, "run-up: amplitude per revolution against spin speed", width, height,
+          body.str()};
+}
+
+ChartScript runUpOrbitsChart(const std::string& caption, const std::string& chartName,
+                             const CsvTable& history, const std::string& csvFile,
+                             const RunUpOutcome& r, const OutputUnits& units) {
+  const OutputUnits::Shown length = units.columnIn("m", {1e6, "µm"});
+  const std::vector<std::string>& titles = r.responsePoints;
+  const int keyMargin = keyWidth(titles);
+  const int width = 700 + keyMargin, height = 700;
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n  set size ratio -1\n"
+       << "  set xlabel " << gnuplotText("uy [" + length.unit + "]") << "\n"
+       << "  set ylabel " << gnuplotText("uz [" + length.unit + "]") << "\n  plot ";
+  for (std::size_t k = 0; k < titles.size(); ++k) {
+    const int y = history.column(titles[k] + "_uy"), z = history.column(titles[k] + "_uz");
+    if (k) body << ", \\\n       ";
+    body << gnuplotFile(csvFile) << " skip 1 using ($" << y << "*" << number(length.factor)
+         << "):($" << z << "*" << number(length.factor) << ") with lines linewidth 0.8 "
+         << colour(k) << " title " << gnuplotText(titles[k]);
+  }
+  body << "\n  unset multiplot\n";
+  return {chartName, "run-up: orbits of the response points over the run", width, height,
+          body.str()};
+}
+
+}  // namespace beamrotor

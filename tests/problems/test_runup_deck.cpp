@@ -1,0 +1,86 @@
+// The run-up analysis through the deck path, on the shipped Jeffcott deck
+// (problems/jeffcott_runup.yaml): the peak of the passage against the Runge-Kutta figure of its
+// header reaches the summary, results.json, the CSV tables and the checks; bad input is refused
+// naming the field.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "tests/problems/DeckTestSupport.hpp"
+
+using namespace beamrotor;
+
+namespace {
+
+/// A run-up entry on a small rotor with `extra` lines appended to it.
+std::string deckWith(const std::string& extra) {
+  return R"(model: {dimension: lateral}
+materials: [{name: steel, E: 210e9, nu: 0.3, rho: 7850}]
+sections: [{name: rod, shape: circle, D: 0.03}]
+segments: [{length: 0.7, section: rod, elements: 4}]
+points: [{name: mid, at: 0.35}]
+supports: [{name: a, at: start, fix: [uy, uz]}, {name: b, at: end, fix: [uy, uz]}]
+analyses:
+  - type: run-up
+    unbalance: [{at: mid, me: 1e-4}]
+    response: [mid]
+)" + extra;
+}
+
+}  // namespace
+
+TEST_SUITE("rotor decks") {
+  TEST_CASE("run-up deck: the passage's peak in every output, against Runge-Kutta") {
+    const test::SolvedDeck solved =
+        test::solveShippedDeckToScratch("jeffcott_runup.yaml", "runup-deck");
+    const nlohmann::json results = solved.json("results.json");
+    nlohmann::json runUp;
+    for (const auto& a : results["analyses"])
+      if (a["type"] == "run-up") runUp = a;
+    REQUIRE(runUp.is_object());
+    const nlohmann::json& disk = runUp["points"][0];
+    CHECK(disk["point"] == "disk");
+    // The header's RK4 figures (20000 steps; 0.6956 mm in the revolution of mean speed
+    // 2638.7 rpm); the average acceleration rule's period error is 5e-5 at this step.
+    CHECK(disk["peak_amplitude"].get<double>() == doctest::Approx(0.6956e-3).epsilon(2e-3));
+    CHECK(disk["speed_at_peak_rpm"].get<double>() == doctest::Approx(2638.7).epsilon(1e-3));
+    CHECK(runUp["steps"] == 8604);
+    for (const auto& check : results["checks"]) CHECK(check["pass"] == true);
+    CHECK(solved.process.out.find("disk: peak amplitude") != std::string::npos);
+    const auto rows = test::csvCells(solved.dir / "runup_runup.csv");
+    REQUIRE(rows.size() > 30);  // header and one row per revolution (34 completed)
+    const int amplitude = test::csvColumn(rows[0], "disk_amplitude");
+    double largest = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i)
+      largest = std::max(largest, std::stod(rows[i][amplitude]));
+    CHECK(largest == doctest::Approx(disk["peak_amplitude"].get<double>()).epsilon(1e-6));
+    const auto history = test::csvCells(solved.dir / "runup_runup_history.csv");
+    CHECK(history.size() == 8604 / 2 + 2);  // header, t = 0 and every second step
+    std::filesystem::remove_all(solved.dir.parent_path());
+  }
+
+  TEST_CASE("run-up: bad input is refused naming the field and its line") {
+    struct Bad {
+      std::string lines;
+      int line;
+      std::string says;
+    };
+    const std::vector<Bad> cases{
+        {"    from_rpm: 0\n    to_rpm: 1000\n    duration: 1 s\n    dt: 1 m\n", 14, "dt"},
+        {"    from_rpm: 500\n    to_rpm: 500\n    duration: 1 s\n    dt: 1 ms\n", 12, "to_rpm"},
+        {"    speed_table: [[0, 0], [1 s, 100], [1 s, 200]]\n    dt: 1 ms\n", 11, "ascend"},
+        {"    speed_table: [[0, 0], [1 s, 100]]\n    dt: 1 ms\n    alpha: -0.1\n", 13, "hht"},
+        {"    speed_table: [[0, 0], [100 s, 100]]\n    dt: 1e-6 s\n", 12, "steps"},
+        {"    from_rpm: 0\n    to_rpm: 100\n    duration: 1 s\n    dt: 1 ms\n    start: hot\n",
+         15, "steady"},
+    };
+    for (const Bad& b : cases) {
+      CAPTURE(b.lines);
+      const DeckError e = test::readingError(deckWith(b.lines), "runup.yaml");
+      CAPTURE(e.message());
+      CHECK(e.place().line == b.line);
+      CHECK(e.message().find(b.says) != std::string::npos);
+    }
+  }
+}
