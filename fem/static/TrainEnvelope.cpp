@@ -48,7 +48,8 @@ TrainEnvelope trainEnvelope(const InfluenceLine& line, const std::vector<TrainLo
                                             (x0 - load.offset - line.breaks[p]) / piece,
                                             width / piece));
     }
-    std::vector<double> places = zerosInUnitInterval(derivativeOf(effect));
+    std::vector<double> places;
+    appendZeros(derivativeOf(effect), places);
     places.push_back(0);
     places.push_back(1);
     for (double u : places) {
