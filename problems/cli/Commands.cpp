@@ -34,7 +34,9 @@ Study solveWithProgress(const StudyRequest& request, std::ostream& err) {
 }
 
 /// The runs of a study with a label each ("eta = 0.4" in a sweep, empty otherwise).
-std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(const Study& s) {
+/// The runs of s, and for a sweep each run's label ("L = 1200 mm": the value in `units`).
+std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(
+    const Study& s, const OutputUnits& units) {
   std::vector<const RunResult*> runs;
   std::vector<std::string> labels;
   if (s.run) {
@@ -43,7 +45,8 @@ std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(const 
   } else {
     for (std::size_t i = 0; i < s.sweep->runs.size(); ++i) {
       runs.push_back(&s.sweep->runs[i]);
-      labels.push_back(s.sweep->parameter + " = " + formatValue(s.sweep->values[i]));
+      labels.push_back(s.sweep->parameter + " = " +
+                       valueText(s.sweep->values[i], s.sweep->unit, units));
     }
   }
   return {runs, labels};
@@ -129,8 +132,8 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     else
       printSweepResults(out, s.deck, *s.sweep, choices.units);
     printSweepPeaks(out, s, options.study.deckPath);
-    const auto [runs, labels] = runsOf(s);
-    const int failed = printChecks(out, s.deck, runs, labels);
+    const auto [runs, labels] = runsOf(s, choices.units);
+    const int failed = printChecks(out, s.deck, runs, labels, choices.units);
     char times[96];
     std::snprintf(times, sizeof times, "time: %.3f s (solve %.3f s, write %.3f s)\n",
                   solveSeconds + writeSeconds, solveSeconds, writeSeconds);
@@ -148,12 +151,14 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
   });
 }
 
-int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err) {
+int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err,
+                 const OutputUnits& units) {
   return guarded(err, [&] {
     const Study s = solveWithProgress(request, err);
     printHeader(out, s, request);
-    const auto [runs, labels] = runsOf(s);
-    const int failed = printChecks(out, s.deck, runs, labels);
+    const OutputUnits shown = s.deck.output.units.overlaid(units);
+    const auto [runs, labels] = runsOf(s, shown);
+    const int failed = printChecks(out, s.deck, runs, labels, shown);
     return int(failed > 0 ? kChecksFailed : kOk);
   });
 }

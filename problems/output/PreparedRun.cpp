@@ -165,7 +165,7 @@ void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
           &p.rotor->unbalance, &p.rotor->api684, &p.rotor->frf, &p.rotor->bearings, &p.rotor->map,
           &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag})
       if (*t) *t = inUnits(**t, units);
-  for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank})
+  for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank, &p.torsion})
     for (CsvTable& t : *list) t = inUnits(t, units);
 }
 
@@ -206,7 +206,7 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
             [&](const TorsionOutcome& r) {
               p.modes = modesTable(modesCsv(p.stem), r.modes);
               p.shapes = modeShapesTable(shapesCsv(p.stem), *r.model, r.modes);
-              p.torsion = torsionTables(r, p.stem);
+              p.torsion = torsionTables(r, p.stem, choices.units);
             },
             [&](const BucklingResult& r) {
               p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), r);
