@@ -63,7 +63,8 @@ void exportStudyMatrices(const Study& s, const std::filesystem::path& dir) {
     exportMatrices(*s.sweep->runs[k].model, dir / ("run-" + std::to_string(k + 1)));
 }
 
-void printHeader(std::ostream& out, const Study& s, const StudyRequest& request) {
+void printHeader(std::ostream& out, const Study& s, const StudyRequest& request,
+                 const OutputUnits& units) {
   out << "beamrotor " << BEAMROTOR_VERSION << ": " << s.deck.path;
   if (!s.deck.title.empty()) out << " (" << s.deck.title << ")";
   out << "\n";
@@ -72,9 +73,16 @@ void printHeader(std::ostream& out, const Study& s, const StudyRequest& request)
   const char* separator = " ";
   for (const auto& [name, value] : s.deck.parameters) {
     const bool swept = s.sweep && s.sweep->parameter == name;
-    out << separator << name << " = " << (swept ? "swept" : formatValue(value));
-    for (const auto& [named, dimension] : s.deck.dimensions)  // in SI, with its unit
-      if (named == name) out << (swept ? " (" : " ") << siUnitOf(dimension) << (swept ? ")" : "");
+    // In SI with its unit, or in the user's unit of its quantity; a bare one as written.
+    std::string unit;
+    for (const auto& [named, dimension] : s.deck.dimensions)
+      if (named == name) unit = siUnitOf(dimension);
+    const OutputUnits::Shown shown = units.valueIn(unit, {1, unit});
+    out << separator << name << " = ";
+    if (swept)
+      out << "swept" << (shown.unit.empty() ? "" : " (" + shown.unit + ")");
+    else
+      out << formatValue(value * shown.factor) << (shown.unit.empty() ? "" : " " + shown.unit);
     separator = ", ";
   }
   out << "\n";
@@ -125,7 +133,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     const double writeSeconds = clock.lap();
 
     // 3. The summary.
-    printHeader(out, s, options.study);
+    printHeader(out, s, options.study, choices.units);
     if (s.run)
       printRunResults(out, s.deck, *s.run, prepared ? &prepared->extremes : nullptr,
                       choices.units);
@@ -155,8 +163,8 @@ int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& e
                  const OutputUnits& units) {
   return guarded(err, [&] {
     const Study s = solveWithProgress(request, err);
-    printHeader(out, s, request);
     const OutputUnits shown = s.deck.output.units.overlaid(units);
+    printHeader(out, s, request, shown);
     const auto [runs, labels] = runsOf(s, shown);
     const int failed = printChecks(out, s.deck, runs, labels, shown);
     return int(failed > 0 ? kChecksFailed : kOk);

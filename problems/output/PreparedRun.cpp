@@ -163,7 +163,8 @@ void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
     for (std::optional<CsvTable>* t :
          {&p.rotor->modes, &p.rotor->orbits, &p.rotor->campbell, &p.rotor->critical,
           &p.rotor->unbalance, &p.rotor->api684, &p.rotor->frf, &p.rotor->bearings, &p.rotor->map,
-          &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag})
+          &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag,
+          &p.rotor->levelOne})
       if (*t) *t = inUnits(**t, units);
   for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank, &p.torsion})
     for (CsvTable& t : *list) t = inUnits(t, units);

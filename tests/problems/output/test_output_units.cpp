@@ -16,6 +16,7 @@
 #include "problems/deck/parse/UnitText.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/output/PreparedRun.hpp"
+#include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/TableUnits.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 #include "tests/problems/output/OutputFixtures.hpp"
@@ -328,12 +329,15 @@ TEST_SUITE("output units (every place)") {
     // P L = 1.2 kN m = 1200 kN mm (a moment follows force and length).
     CHECK(lineWith(mm.out, "root moment").find("ref 1200 kN mm") != std::string::npos);
     CHECK(lineWith(mm.out, "root force").find("ref 1 kN") != std::string::npos);
+    // The parameters line: the deck's L = 1.2 m, D = 50 mm, P = 1 kN.
+    CHECK(mm.out.find("parameters: L = 1200 mm, D = 50 mm, P = 1 kN,") != std::string::npos);
     // Unset: the check's own unit, named.
     const ProcessResult si = runBeamrotor({"check", "problems/cantilever.yaml"});
     REQUIRE_MESSAGE(si.exitCode == 0, si.err);
     CHECK(lineWith(si.out, "tip deflection").find("ref " + six(cantileverTip(1.2)) + " m ") !=
           std::string::npos);
     CHECK(lineWith(si.out, "root moment").find("ref 1200 N m") != std::string::npos);
+    CHECK(si.out.find("parameters: L = 1.2 m, D = 0.05 m, P = 1000 N,") != std::string::npos);
     // A wrong unit is an input error naming the option.
     const ProcessResult bad =
         runBeamrotor({"check", "problems/cantilever.yaml", "--units", "length=kN"});
@@ -363,7 +367,7 @@ TEST_SUITE("output units (every place)") {
             doctest::Approx(1000 * cantileverTip(L)).epsilon(1e-9));
     // sweep.json stays SI and names the check's unit.
     const nlohmann::json doc = readJson(dir / "out" / "sweep.json");
-    const nlohmann::json& check = doc["values"][1]["checks"][0];
+    const nlohmann::json& check = doc["runs"][1]["checks"][0];
     CHECK(check["unit"] == "m");
     fs::remove_all(dir);
   }
@@ -519,6 +523,33 @@ TEST_SUITE("output units (every place)") {
     CHECK(interference.find("speed of motor [rad/s]") != std::string::npos);
     CHECK(interference.find("frequency [rpm]") != std::string::npos);
     CHECK(readText(dir / "out" / "drive_response.gp").find("peak [kN m]") != std::string::npos);
+    fs::remove_all(dir);
+  }
+}
+
+TEST_SUITE("output units (every place)") {
+  TEST_CASE("API 684 Level I: the table, the chart's axis and marked Qa and Q0 in the units") {
+    const fs::path dir = scratchDir("units-level1");
+    const ProcessResult p = runBeamrotor(
+        {"solve", "problems/level1_stability.yaml", "--units", "force=kN,length=mm,speed=Hz",
+         "--out", (dir / "out").string()});
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    const nlohmann::json doc = readJson(dir / "out" / "results.json");
+    const nlohmann::json& a = doc["analyses"][0];
+    const double qa = a["qa"].get<double>(), q0 = a["q0"].get<double>();
+    // kN/mm = 1e6 N/m; the chart's marks are the SI figures / 1e6.
+    const WrittenCsv table = writtenCsv(dir / "out" / "level1_level1.csv");
+    CHECK(unitEntry(table, "cross_coupling") == "kN/mm");
+    const std::string gp = readText(dir / "out" / "level1_level1.gp");
+    CHECK(gp.find("added cross-coupling Q [kN/mm]") != std::string::npos);
+    CHECK(gp.find("using ($1*1):2") != std::string::npos);  // the table holds kN/mm already
+    CHECK(gp.find("Qa = " + labelNumber(qa * 1e-6) + " kN/mm") != std::string::npos);
+    CHECK(gp.find("Q0 = " + labelNumber(q0 * 1e-6) + " kN/mm") != std::string::npos);
+    // The caption's speed: 3000 rpm = 50 turns per second.
+    CHECK(gp.find("at 50 Hz, cross-coupling") != std::string::npos);
+    // The check table: Qa with its unit, API 617's figure / 1e6.
+    CHECK(lineWith(p.out, "level1 qa").find("ref " + six(qa * 1e-6) + " kN/mm") !=
+          std::string::npos);
     fs::remove_all(dir);
   }
 }
