@@ -139,7 +139,7 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
                       choices.units);
     else
       printSweepResults(out, s.deck, *s.sweep, choices.units);
-    printSweepPeaks(out, s, options.study.deckPath);
+    printSweepPeaks(out, s, options.study.deckPath, choices.units);
     const auto [runs, labels] = runsOf(s, choices.units);
     const int failed = printChecks(out, s.deck, runs, labels, choices.units);
     char times[96];
