@@ -1,6 +1,5 @@
 // The units of the summary, tables and charts (see OutputUnits.hpp).
 #include "problems/deck/OutputUnits.hpp"
-#include "problems/deck/ShownFieldUnit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <stdexcept>
 
 #include "problems/deck/FieldUnits.hpp"
+#include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/deck/parse/UnitText.hpp"
 

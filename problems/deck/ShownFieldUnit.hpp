@@ -1,5 +1,6 @@
 // Numbers a deck field's bare unit holds (a check's computed value and reference, a
 // convergence study's values: SI, or rpm for a critical speed) shown in the output units.
+// Defined in OutputUnits.cpp.
 #pragma once
 
 #include <string>
