@@ -553,3 +553,34 @@ TEST_SUITE("output units (every place)") {
     fs::remove_all(dir);
   }
 }
+
+TEST_SUITE("output units (every place)") {
+  TEST_CASE("a transient sweep's table: the swept values and the history maxima in the units") {
+    const fs::path dir = scratchDir("units-transient");
+    const ProcessResult si = runBeamrotor({"solve", "problems/mo10_steady.yaml", "--charts",
+                                           "none", "--out", (dir / "si").string()});
+    const ProcessResult kn =
+        runBeamrotor({"solve", "problems/mo10_steady.yaml", "--charts", "none", "--units",
+                      "force=kN", "--out", (dir / "kn").string()});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    REQUIRE_MESSAGE(kn.exitCode == 0, kn.err);
+    CHECK(kn.out.find("c kN/m") != std::string::npos);
+    CHECK(kn.out.find("spring_force_max kN") != std::string::npos);
+    CHECK(si.out.find("c N/m") != std::string::npos);
+    // The first value, c = 10 kN/m: its row in kN/m and kN is the SI row's numbers / 1000.
+    const auto cells = [](const std::string& line) {
+      std::vector<double> out;
+      std::istringstream s(line);
+      for (double v; s >> v;) out.push_back(v);
+      return out;
+    };
+    const std::vector<double> a = cells(lineWith(si.out, "  10000  ")),
+                              b = cells(lineWith(kn.out, "  10  "));
+    REQUIRE(a.size() == 4);
+    REQUIRE(b.size() == 4);
+    CHECK(b[0] == 10);
+    CHECK(b[1] == a[1]);  // phi_max in rad either way
+    CHECK(b[2] == doctest::Approx(a[2] / 1000).epsilon(1e-5));  // six printed digits
+    fs::remove_all(dir);
+  }
+}
