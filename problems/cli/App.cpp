@@ -72,6 +72,21 @@ void addDeckOptions(CLI::App& sub, StudyRequest& request) {
                "solve the parameters' own values once even if the deck has a sweep");
 }
 
+/// `--units Q=UNIT,...` on `sub`, checked as it is parsed (what is wrong with it, as an input
+/// error), `what` saying what it sets.
+void addUnitsOption(CLI::App& sub, std::string& units, const std::string& what) {
+  sub.add_option("--units", units, what + ". Quantities: " + joinNames(outputQuantityNames()))
+      ->check([](const std::string& list) -> std::string {
+        try {
+          parseOutputUnits(list);
+          return "";
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+      })
+      ->type_name("Q=UNIT,...");
+}
+
 /// A first argument that is neither an option nor a subcommand (`beamrotor slove deck.yaml`):
 /// one line naming it, the closest subcommand and the list; empty when the argument is fine.
 std::string unknownCommand(const CLI::App& app, int argc, const char* const* argv) {
@@ -123,21 +138,9 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       "a long line's fields table at every station (5 an element), not thinned to "
       "about 4000 stations");
   std::string units;
-  solveCmd
-      ->add_option("--units", units,
-                   "units of the summary, CSV tables and charts, e.g. length=mm,force=kN,"
-                   "stress=MPa,speed=rpm; over the deck's output: units (results.json stays SI). "
-                   "Quantities: " +
-                       joinNames(outputQuantityNames()))
-      ->check([](const std::string& list) -> std::string {
-        try {
-          parseOutputUnits(list);
-          return "";
-        } catch (const std::invalid_argument& e) {
-          return e.what();
-        }
-      })
-      ->type_name("Q=UNIT,...");
+  addUnitsOption(*solveCmd, units,
+                 "units of the summary, CSV tables and charts, e.g. length=mm,force=kN,"
+                 "stress=MPa,speed=rpm; over the deck's output: units (results.json stays SI)");
   bool allCases = false;
   CLI::Option* allCasesFlag = solveCmd->add_flag(
       "--all-cases", allCases,
@@ -153,6 +156,10 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   CLI::App* checkCmd = app.add_subcommand(
       "check", "Solve a deck and compare it with its closed forms; exits 3 if any check fails.");
   addDeckOptions(*checkCmd, check);
+  std::string checkUnits;
+  addUnitsOption(*checkCmd, checkUnits,
+                 "units of the checks' values, e.g. length=mm,speed=rpm; over the deck's "
+                 "output: units");
 
   BenchOptions bench;
   std::string benchJsonPath;
@@ -238,6 +245,10 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->add_option("--out,-o", converge.outDir,
                    "output directory (default: out/<deck name>_converge/)")
       ->type_name("DIR");
+  std::string convergeUnits;
+  addUnitsOption(*convergeCmd, convergeUnits,
+                 "units of the printed values, the tables' value column and the time axis, "
+                 "e.g. length=mm; over the deck's output: units");
 
   OverlayRequest overlay;
   CLI::App* overlayCmd = app.add_subcommand(
@@ -260,6 +271,10 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       ->type_name("Q");
   overlayCmd->add_option("--out,-o", overlay.outDir, "output directory (default: out/overlay/)")
       ->type_name("DIR");
+  std::string overlayUnits;
+  addUnitsOption(*overlayCmd, overlayUnits,
+                 "units of the tables and the chart, e.g. length=mm,force=kN; over the first "
+                 "deck's output: units");
 
   DesignStudyRequest study;
   CLI::App* studyCmd = app.add_subcommand(
@@ -354,6 +369,10 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
   }
   if (!charts.empty()) solve.output.charts = chartFormatNamed(charts);
   if (!units.empty()) solve.output.units = parseOutputUnits(units);
+  const OutputUnits checkOutputUnits =
+      checkUnits.empty() ? OutputUnits() : parseOutputUnits(checkUnits);
+  if (!convergeUnits.empty()) converge.units = parseOutputUnits(convergeUnits);
+  if (!overlayUnits.empty()) overlay.units = parseOutputUnits(overlayUnits);
   if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
   if (fullTablesFlag->count() > 0) solve.output.fullTables = fullTables;
   if (allCasesFlag->count() > 0) solve.output.allCases = allCases;
@@ -364,7 +383,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
     if (convergeCmd->parsed()) return convergeCommand(converge, out, err);
     if (overlayCmd->parsed()) return overlayCommand(overlay, out, err);
     if (studyCmd->parsed()) return studyCommand(study, out, err);
-    return checkCommand(check, out, err);
+    return checkCommand(check, out, err, checkOutputUnits);
   } catch (const std::bad_alloc&) {
     err << "beamrotor: " << kOutOfMemory << "\n";
     return kSolveFailure;

@@ -34,7 +34,9 @@ Study solveWithProgress(const StudyRequest& request, std::ostream& err) {
 }
 
 /// The runs of a study with a label each ("eta = 0.4" in a sweep, empty otherwise).
-std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(const Study& s) {
+/// The runs of s, and for a sweep each run's label ("L = 1200 mm": the value in `units`).
+std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(
+    const Study& s, const OutputUnits& units) {
   std::vector<const RunResult*> runs;
   std::vector<std::string> labels;
   if (s.run) {
@@ -43,7 +45,8 @@ std::pair<std::vector<const RunResult*>, std::vector<std::string>> runsOf(const 
   } else {
     for (std::size_t i = 0; i < s.sweep->runs.size(); ++i) {
       runs.push_back(&s.sweep->runs[i]);
-      labels.push_back(s.sweep->parameter + " = " + formatValue(s.sweep->values[i]));
+      labels.push_back(s.sweep->parameter + " = " +
+                       valueText(s.sweep->values[i], s.sweep->unit, units));
     }
   }
   return {runs, labels};
@@ -60,7 +63,8 @@ void exportStudyMatrices(const Study& s, const std::filesystem::path& dir) {
     exportMatrices(*s.sweep->runs[k].model, dir / ("run-" + std::to_string(k + 1)));
 }
 
-void printHeader(std::ostream& out, const Study& s, const StudyRequest& request) {
+void printHeader(std::ostream& out, const Study& s, const StudyRequest& request,
+                 const OutputUnits& units) {
   out << "beamrotor " << BEAMROTOR_VERSION << ": " << s.deck.path;
   if (!s.deck.title.empty()) out << " (" << s.deck.title << ")";
   out << "\n";
@@ -69,9 +73,16 @@ void printHeader(std::ostream& out, const Study& s, const StudyRequest& request)
   const char* separator = " ";
   for (const auto& [name, value] : s.deck.parameters) {
     const bool swept = s.sweep && s.sweep->parameter == name;
-    out << separator << name << " = " << (swept ? "swept" : formatValue(value));
-    for (const auto& [named, dimension] : s.deck.dimensions)  // in SI, with its unit
-      if (named == name) out << (swept ? " (" : " ") << siUnitOf(dimension) << (swept ? ")" : "");
+    // In SI with its unit, or in the user's unit of its quantity; a bare one as written.
+    std::string unit;
+    for (const auto& [named, dimension] : s.deck.dimensions)
+      if (named == name) unit = siUnitOf(dimension);
+    const OutputUnits::Shown shown = units.valueIn(unit, {1, unit});
+    out << separator << name << " = ";
+    if (swept)
+      out << "swept" << (shown.unit.empty() ? "" : " (" + shown.unit + ")");
+    else
+      out << formatValue(value * shown.factor) << (shown.unit.empty() ? "" : " " + shown.unit);
     separator = ", ";
   }
   out << "\n";
@@ -122,15 +133,15 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
     const double writeSeconds = clock.lap();
 
     // 3. The summary.
-    printHeader(out, s, options.study);
+    printHeader(out, s, options.study, choices.units);
     if (s.run)
       printRunResults(out, s.deck, *s.run, prepared ? &prepared->extremes : nullptr,
                       choices.units);
     else
       printSweepResults(out, s.deck, *s.sweep, choices.units);
-    printSweepPeaks(out, s, options.study.deckPath);
-    const auto [runs, labels] = runsOf(s);
-    const int failed = printChecks(out, s.deck, runs, labels);
+    printSweepPeaks(out, s, options.study.deckPath, choices.units);
+    const auto [runs, labels] = runsOf(s, choices.units);
+    const int failed = printChecks(out, s.deck, runs, labels, choices.units);
     char times[96];
     std::snprintf(times, sizeof times, "time: %.3f s (solve %.3f s, write %.3f s)\n",
                   solveSeconds + writeSeconds, solveSeconds, writeSeconds);
@@ -148,12 +159,14 @@ int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& e
   });
 }
 
-int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err) {
+int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err,
+                 const OutputUnits& units) {
   return guarded(err, [&] {
     const Study s = solveWithProgress(request, err);
-    printHeader(out, s, request);
-    const auto [runs, labels] = runsOf(s);
-    const int failed = printChecks(out, s.deck, runs, labels);
+    const OutputUnits shown = s.deck.output.units.overlaid(units);
+    printHeader(out, s, request, shown);
+    const auto [runs, labels] = runsOf(s, shown);
+    const int failed = printChecks(out, s.deck, runs, labels, shown);
     return int(failed > 0 ? kChecksFailed : kOk);
   });
 }

@@ -27,8 +27,10 @@ struct SolveOptions {
 /// `beamrotor solve`: solve, write results.json, CSV, VTK and charts, print a summary.
 int solveCommand(const SolveOptions& options, std::ostream& out, std::ostream& err);
 
-/// `beamrotor check`: solve and print the checks; kChecksFailed when any fails.
-int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err);
+/// `beamrotor check`: solve and print the checks; kChecksFailed when any fails. Values are
+/// shown in `units` (`--units`) over the deck's `output: units:`.
+int checkCommand(const StudyRequest& request, std::ostream& out, std::ostream& err,
+                 const OutputUnits& units = {});
 
 /// `beamrotor bench`: prints the benchmark table; writes its JSON to jsonPath when given.
 /// A size the kind cannot build is one line on err and kInputError.
@@ -41,6 +43,7 @@ struct ConvergeRequest {
   std::vector<std::string> sets;  ///< "NAME=VALUE" overrides, as typed
   ConvergeOptions options;
   std::string outDir;  ///< empty: out/<deck stem>_converge
+  OutputUnits units;   ///< `--units`, over the deck's `output: units:`
 };
 
 /// `beamrotor converge` (ConvergeCommand.cpp): the convergence study of one deck quantity,
@@ -53,6 +56,7 @@ struct OverlayRequest {
   std::vector<std::string> sets;       ///< "NAME=VALUE" overrides, applied to every deck
   std::string quantity = "all";        ///< a diagramName or "all"
   std::string outDir;                  ///< empty: out/overlay
+  OutputUnits units;  ///< `--units`, over the first deck's `output: units:`
 };
 
 /// `beamrotor overlay` (OverlayCommand.cpp): the static diagrams of several decks on one chart.

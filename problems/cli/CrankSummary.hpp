@@ -5,10 +5,12 @@
 
 #include <ostream>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
 
-void printCrankSlider(std::ostream& out, const AnalysisOutcome& a);
+/// Numbers in the user's `units` where they set the quantity, SI (speed in rpm) otherwise.
+void printCrankSlider(std::ostream& out, const AnalysisOutcome& a, const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

@@ -39,12 +39,13 @@ int overlayCommand(const OverlayRequest& request, std::ostream& out, std::ostrea
     const std::filesystem::path dir =
         request.outDir.empty() ? std::filesystem::path("out") / "overlay"
                                : std::filesystem::path(request.outDir);
+    const OutputUnits units = studies.front().deck.output.units.overlaid(request.units);
     std::vector<OverlaidRun> runs;
     for (const Study& s : studies) runs.push_back({s.run->deckName, &*s.run});
     bool drawn = false;
     try {
       writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
-        drawn = writeOverlay(temporary, runs, shown);
+        drawn = writeOverlay(temporary, runs, shown, units);
       });
     } catch (const std::exception& e) {
       err << dir.string() << ": cannot write the results: " << e.what() << "\n";

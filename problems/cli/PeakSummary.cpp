@@ -1,5 +1,6 @@
 #include "problems/cli/PeakSummary.hpp"
 
+#include "problems/cli/Summary.hpp"
 #include "problems/deck/parse/DeckSource.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/study/ReadSweepRefinement.hpp"
@@ -7,7 +8,8 @@
 
 namespace beamrotor::cli {
 
-void printSweepPeaks(std::ostream& out, const Study& study, const std::string& deckPath) {
+void printSweepPeaks(std::ostream& out, const Study& study, const std::string& deckPath,
+                     const OutputUnits& units) {
   if (!study.sweep || !study.deck.sweep || study.deck.sweep->place.line == 0) return;
   const auto refine = readSweepRefinement(loadDeckFile(deckPath), study.deck);
   if (!refine || refine->parameter != study.sweep->parameter) return;
@@ -18,7 +20,7 @@ void printSweepPeaks(std::ostream& out, const Study& study, const std::string& d
   if (peaks.empty()) out << " none inside the range";
   for (const auto& [value, result] : peaks)
     out << (&value == &peaks.front().first ? " " : ", ") << refine->parameter << " = "
-        << formatNumber(value) << " (" << formatNumber(result) << ")";
+        << valueText(value, study.sweep->unit, units) << " (" << formatNumber(result) << ")";
   out << "\n";
 }
 

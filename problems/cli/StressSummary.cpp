@@ -91,7 +91,8 @@ void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResul
        {std::pair{"normal stress", &normal}, std::pair{"shear stress ", &shear}}) {
     if (!peak->found) continue;
     printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak, "  ", units);
-    out << " at " << sweep.parameter << " = " << formatValue(sweep.values[peak->run]) << "\n";
+    out << " at " << sweep.parameter << " = "
+        << valueText(sweep.values[peak->run], sweep.unit, units) << "\n";
   }
 }
 

@@ -19,6 +19,7 @@
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/TorsionSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
+#include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/output/structure/Reactions.hpp"
 #include "problems/run/Overloaded.hpp"
 
@@ -196,11 +197,11 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
               printModes(out, a, r.modes, units);
               if (r.free)
                 out << "    (no support holds the twist: mode 1 is the train turning as one)\n";
-              if (!r.shafts.empty()) printTrain(out, r);
+              if (!r.shafts.empty()) printTrain(out, r, units);
             },
-            [&](const TransientOutcome&) { printTransient(out, a); },
+            [&](const TransientOutcome&) { printTransient(out, a, units); },
             [&](const RotorResult auto& r) { printRotor(out, a, r, units); },
-            [&](const CrankSliderOutcome&) { printCrankSlider(out, a); },
+            [&](const CrankSliderOutcome&) { printCrankSlider(out, a, units); },
             [&](const MovingLoadOutcome& r) { printMovingLoad(out, a, r); }},
         a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
@@ -214,14 +215,17 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   const SystemSize size = sizeOf(first);
   out << "model: " << deck.dimension << ", " << size.nodes << " nodes, " << size.elements
       << " elements, " << size.dofs << " dofs (" << size.freeDofs << " free) at " << sweep.parameter
-      << " = " << formatValue(sweep.values.front()) << "\n";
+      << " = " << valueText(sweep.values.front(), sweep.unit, units) << "\n";
   out << "sweep over " << sweep.parameter << ": " << sweep.runs.size() << " values\n";
   for (const std::string& w : first.warnings) out << "warning: " << w << "\n";
 
   // Columns: the reactions of the first static analysis, the frequencies of the first modal.
   constexpr int kFrequencies = 3;
   constexpr std::size_t kColumn = 14;
-  std::vector<std::string> headers{sweep.parameter};
+  // The swept values in the user's unit of their quantity where set, else in their own.
+  const OutputUnits::Shown swept = units.valueIn(sweep.unit, {1, sweep.unit});
+  std::vector<std::string> headers{swept.unit.empty() ? sweep.parameter
+                                                     : sweep.parameter + " " + swept.unit};
   for (const auto& [name, value] : first.reported) headers.push_back(name);
   auto staticOf = [](const RunResult& r) -> const StaticResult* {
     for (const auto& a : r.analyses)
@@ -246,13 +250,13 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   }
   const OutputUnits::Shown force = units.valueIn("N", {1, "N"});
   const OutputUnits::Shown moment = units.valueIn("N m", {1, "N m"});
-  if (headers.size() == 1) return printTransientSweep(out, sweep);  // nothing static or modal
+  if (headers.size() == 1) return printTransientSweep(out, sweep, units);  // nothing static or modal
   out << "  ";
   for (const std::string& h : headers) out << padded(h, kColumn);
   out << "\n";
   for (std::size_t k = 0; k < sweep.runs.size(); ++k) {
     const RunResult& run = sweep.runs[k];
-    out << "  " << padded(formatValue(sweep.values[k]), kColumn);
+    out << "  " << padded(formatValue(sweep.values[k] * swept.factor), kColumn);
     for (const auto& [name, value] : run.reported) out << padded(formatValue(value), kColumn);
     if (const StaticResult* s = staticOf(run))
       for (const SupportReactions& support : reactionsBySupport(*s))
@@ -264,13 +268,13 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
     out << "\n";
   }
   out << "  (reactions in " << force.unit << " and " << moment.unit << " on the structure)\n";
-  printTransientSweep(out, sweep);
+  printTransientSweep(out, sweep, units);
 
   printSweepStressPeaks(out, deck, sweep, units);
 }
 
 int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,
-                const std::vector<std::string>& labels) {
+                const std::vector<std::string>& labels, const OutputUnits& units) {
   int failed = 0, passed = 0, skipped = 0;
   std::size_t nameWidth = 10, quantityWidth = 10;
   for (const DeckCheck& c : deck.checks) {
@@ -284,12 +288,20 @@ int printChecks(std::ostream& out, const Deck& deck, const std::vector<const Run
     for (const Check& c : runs[i]->checks) {
       const bool ok = c.pass();
       (ok ? passed : failed)++;
+      // The values in the user's unit of the quantity where set, else in the check's own.
+      const OutputUnits::Shown shown = shownField(units, checkQuantityUnit(c.quantity));
+      const std::string unit = shown.unit.empty() ? "" : " " + shown.unit;
+      const auto value = [&](double v) { return formatValue(v * shown.factor) + unit; };
+      // Against a zero reference the error and the tolerance are absolute, in that unit.
+      const bool absolute = c.reference == 0;
+      const double scale = absolute ? shown.factor : 1;
       out << "  " << (ok ? "PASS  " : "FAIL  ") << prefix << padded(c.name, nameWidth)
-          << padded(c.quantity, quantityWidth) << padded(formatValue(c.computed), 14) << "ref "
-          << padded(formatValue(c.reference), 14) << "rel.err "
-          << padded(scientific(c.relError()), 10) << "tol " << scientific(c.tolerance) << "\n";
+          << padded(c.quantity, quantityWidth) << padded(value(c.computed), 18) << "ref "
+          << padded(value(c.reference), 18) << (absolute ? "abs.err " : "rel.err ")
+          << padded(scientific(c.relError() * scale) + (absolute ? unit : ""), 10) << "tol "
+          << scientific(c.tolerance * scale) << (absolute ? unit : "") << "\n";
       if (c.paper)
-        out << "        " << prefix << "paper prints " << formatValue(*c.paper) << " ("
+        out << "        " << prefix << "paper prints " << value(*c.paper) << " ("
             << scientific(std::abs(c.computed - *c.paper) / std::abs(*c.paper))
             << " from the computed value): " << c.reason << "\n";
     }

@@ -29,9 +29,11 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
 
 /// Every check of every run with its relative error and PASS / FAIL, and those whose `when:`
 /// is false as n/a. `label(i)` names run i in a sweep (empty for a single run). Returns the
-/// number of failed checks.
+/// number of failed checks. Values and references are shown with their unit, the user's where
+/// they set its quantity (shownField); against a zero reference the error and the
+/// tolerance are absolute and shown in that unit too.
 int printChecks(std::ostream& out, const Deck& deck, const std::vector<const RunResult*>& runs,
-                const std::vector<std::string>& labels);
+                const std::vector<std::string>& labels, const OutputUnits& units = {});
 
 /// s followed by spaces up to `width` characters (at least one space).
 std::string padded(const std::string& s, std::size_t width);

@@ -4,6 +4,8 @@
 #include <numbers>
 #include <string>
 
+#include "problems/cli/Summary.hpp"
+
 namespace beamrotor::cli {
 
 namespace {
@@ -16,32 +18,36 @@ std::string trainFigure(const char* format, double v) {
 }
 }  // namespace
 
-void printTrain(std::ostream& out, const TorsionOutcome& t) {
+void printTrain(std::ostream& out, const TorsionOutcome& t, const OutputUnits& units) {
+  // Speeds in rpm, frequencies in Hz, torques in N m and twists in rad unless the user set
+  // their quantities.
+  const auto speed = [&](double radPerSecond) {
+    return valueText(radPerSecond * kSummaryRpm, "rpm", units);
+  };
   out << "    speeds over shaft '" << t.reference << "':";
   for (std::size_t i = 0; i < t.shafts.size(); ++i)
     out << " " << t.shafts[i] << " " << trainFigure("%.6g", t.speedRatios[i]);
   out << "\n";
   if (!t.orders.empty()) {
-    out << "    interference " << trainFigure("%.6g", t.speedFrom * kSummaryRpm) << " to "
-        << trainFigure("%.6g", t.speedTo * kSummaryRpm) << " rpm: " << t.crossings.size() << " crossings\n";
+    out << "    interference " << speed(t.speedFrom) << " to " << speed(t.speedTo) << ": "
+        << t.crossings.size() << " crossings\n";
     for (const TorsionCrossing& c : t.crossings)
       out << "      order " << trainFigure("%g", c.order) << " x mode " << c.mode << " ("
-          << trainFigure("%.5g", c.frequencyHz) << " Hz) at " << trainFigure("%.6g", c.speed * kSummaryRpm) << " rpm\n";
+          << valueText(c.frequencyHz, "Hz", units) << ") at " << speed(c.speed) << "\n";
   }
   if (!t.excitation.empty()) {
     out << "    harmonic torques:";
     for (const HarmonicTorque& h : t.excitation)
       out << " " << h.at.name() << " order " << trainFigure("%g", h.order) << " "
-          << trainFigure("%.5g", h.amplitude) << " N m;";
+          << valueText(h.amplitude, "N m", units) << ";";
     out << "\n";
   }
   if (t.atSpeed) {
-    out << "    steady response at " << trainFigure("%.6g", t.atSpeed->speed * kSummaryRpm)
-        << " rpm (peak over a revolution):\n";
+    out << "    steady response at " << speed(t.atSpeed->speed) << " (peak over a revolution):\n";
     for (const ResponseTrace& r : t.atSpeed->torques)
-      out << "      torque " << r.name << ": " << trainFigure("%.5g", r.peak) << " N m\n";
+      out << "      torque " << r.name << ": " << valueText(r.peak, "N m", units) << "\n";
     for (const ResponseTrace& r : t.atSpeed->twists)
-      out << "      twist " << r.name << ": " << trainFigure("%.5g", r.peak) << " rad\n";
+      out << "      twist " << r.name << ": " << valueText(r.peak, "rad", units) << "\n";
   }
 }
 

@@ -5,10 +5,13 @@
 
 #include <ostream>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/TorsionOutcome.hpp"
 
 namespace beamrotor::cli {
 
-void printTrain(std::ostream& out, const TorsionOutcome& t);
+/// Numbers in the user's `units` where they set the quantity (speeds rpm, frequencies Hz,
+/// torques N m, twists rad otherwise).
+void printTrain(std::ostream& out, const TorsionOutcome& t, const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

@@ -7,6 +7,8 @@
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/Gnuplot.hpp"
+#include "problems/deck/ShownFieldUnit.hpp"
+#include "problems/output/files/TableUnits.hpp"
 
 namespace beamrotor {
 
@@ -20,14 +22,15 @@ Json optionalNumber(const std::optional<double>& v) {
   return v ? Json(*v) : Json(nullptr);
 }
 
-/// Relative error (log) against column `x` of every method's table (log), points joined.
-ChartScript errorChart(const ConvergeStudy& study, const std::string& name, const std::string& x,
-                       const std::string& xLabel) {
+/// Relative error (log) against column `x` of every method's table as written (`tables`, one
+/// per series), log, points joined.
+ChartScript errorChart(const ConvergeStudy& study, const std::vector<CsvTable>& tables,
+                       const std::string& name, const std::string& x, const std::string& xLabel) {
   // Both axes in whole decades of the drawn (positive) values.
   PositiveRange xRange, errors;
-  for (const ConvergeSeries& s : study.series) {
-    for (const double v : convergenceTable(s).numbers(x)) xRange.include(v);
-    for (const ConvergeLevel& l : s.levels) errors.include(l.error);
+  for (std::size_t i = 0; i < study.series.size(); ++i) {
+    for (const double v : tables[i].numbers(x)) xRange.include(v);
+    for (const ConvergeLevel& l : study.series[i].levels) errors.include(l.error);
   }
   std::ostringstream body;
   const std::string reference = study.check.empty() ? "Richardson-extrapolated reference (estimate)"
@@ -44,7 +47,7 @@ ChartScript errorChart(const ConvergeStudy& study, const std::string& name, cons
   for (std::size_t i = 0; i < study.series.size(); ++i) {
     const ConvergeSeries& s = study.series[i];
     if (s.levels.empty()) continue;
-    const CsvTable table = convergenceTable(s);
+    const CsvTable& table = tables[i];
     const int error = table.column("rel_error");
     // Errors at round-off can be exactly 0: not drawable on a log axis, left out.
     body << separator << gnuplotFile(csvName(s)) << " skip 1 using " << table.column(x) << ":($"
@@ -98,7 +101,7 @@ Json convergenceJson(const ConvergeStudy& study) {
   return doc;
 }
 
-CsvTable convergenceTable(const ConvergeSeries& series) {
+CsvTable convergenceTable(const ConvergeSeries& series, const FieldUnit& unit) {
   CsvTable table(csvName(series), {{"level", ""},
                                    {"elements", ""},
                                    {"dofs", ""},
@@ -107,7 +110,7 @@ CsvTable convergenceTable(const ConvergeSeries& series) {
                                    {"factor", "s"},
                                    {"solve", "s"},
                                    {"total", "s"},
-                                   {"value", ""},
+                                   {"value", bareUnitName(unit)},
                                    {"rel_error", ""}});
   for (const ConvergeLevel& l : series.levels)
     table.addRow({static_cast<long long>(l.level), static_cast<long long>(l.elements),
@@ -116,11 +119,13 @@ CsvTable convergenceTable(const ConvergeSeries& series) {
   return table;
 }
 
-void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir) {
+void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir,
+                             const OutputUnits& units) {
   const Json doc = convergenceJson(study);
   requireFiniteNumbers(doc, kConvergenceJson);
   std::vector<CsvTable> tables;
-  for (const ConvergeSeries& s : study.series) tables.push_back(convergenceTable(s));
+  for (const ConvergeSeries& s : study.series)
+    tables.push_back(inUnits(convergenceTable(s, study.unit), units));
   writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
     // Both charts drawn together, as SVG (the verification report inlines them) and PNG.
     ChartBatch charts(ChartFormat::both);
@@ -128,10 +133,11 @@ void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::
     for (const CsvTable& t : tables) t.write(temporary / t.title());
     // The size of the discretisation: free dofs on a mesh, steps in time.
     if (study.refinement == "time step")
-      drawChart(temporary, errorChart(study, "convergence_dofs", "steps", "time steps"));
+      drawChart(temporary, errorChart(study, tables, "convergence_dofs", "steps", "time steps"));
     else
-      drawChart(temporary, errorChart(study, "convergence_dofs", "dofs", "free dofs"));
-    drawChart(temporary, errorChart(study, "convergence_time", "total", "wall time (total) [s]"));
+      drawChart(temporary, errorChart(study, tables, "convergence_dofs", "dofs", "free dofs"));
+    drawChart(temporary, errorChart(study, tables, "convergence_time", "total",
+                                    "wall time (total) [" + units.of("s").unit + "]"));
     charts.draw();
   });
 }

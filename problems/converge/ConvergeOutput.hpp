@@ -17,7 +17,7 @@
 //             failure (null, or why the method stopped before the last level)}],
 //   beamrotor_version.
 // convergence_<method name>.csv: one row per level solved: level, elements, dofs, steps, assembly,
-//   factor, solve, total [s], value, rel_error.
+//   factor, solve, total [s], value [the quantity's unit], rel_error; in the output units.
 // convergence_dofs.{gp,svg,png}: relative error against free dofs, log-log, one line per
 //   method (against time steps in a time-step study); convergence_time.{gp,svg,png}: relative error
 //   against wall time (total).
@@ -26,6 +26,7 @@
 #include <filesystem>
 
 #include "problems/converge/ConvergeStudy.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
 
@@ -34,10 +35,13 @@ namespace beamrotor {
 /// convergence.json's document.
 Json convergenceJson(const ConvergeStudy& study);
 
-/// convergence_<method>.csv's table of one series.
-CsvTable convergenceTable(const ConvergeSeries& series);
+/// convergence_<method>.csv's table of one series, its values in `unit` (the study's).
+CsvTable convergenceTable(const ConvergeSeries& series, const FieldUnit& unit = {});
 
-/// Writes the files above into dir (atomically). Throws std::runtime_error when it cannot.
-void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir);
+/// Writes the files above into dir (atomically), the tables (values, times) and the time axis
+/// in `units` (inUnits; convergence.json stays as measured). Throws std::runtime_error when it
+/// cannot.
+void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir,
+                             const OutputUnits& units = {});
 
 }  // namespace beamrotor

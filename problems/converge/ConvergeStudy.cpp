@@ -8,6 +8,7 @@
 #include "fem/timing/Median.hpp"
 #include "problems/converge/ConvergenceRates.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/structure/SectionNeeds.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
@@ -329,6 +330,7 @@ ConvergeStudy runConvergence(const Deck& deck, const ConvergeOptions& options) {
   study.deckPath = deck.path;
   study.deckName = deck.stem;
   study.quantity = t.quantity.text;
+  study.unit = referenceUnit(t.quantity);
   study.analysis = t.analysis->name;
   if (t.check) study.check = t.check->name;
   study.refinement = timeStep ? "time step" : "mesh";

@@ -55,6 +55,7 @@ struct ConvergeSeries {
 struct ConvergeStudy {
   std::string deckPath, deckName;
   std::string quantity;    ///< as written, e.g. "frequency 1"
+  FieldUnit unit;          ///< of the values and references (referenceUnit of the quantity)
   std::string analysis;    ///< the deck analysis it reads
   std::string check;       ///< the check giving the closed form; empty when there is none
   std::string refinement;  ///< "mesh" or "time step"

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "problems/deck/FieldUnits.hpp"
+#include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/deck/parse/UnitText.hpp"
 
@@ -199,6 +201,33 @@ OutputUnits parseOutputUnits(const std::string& list) {
     start = comma + 1;
   }
   return units;
+}
+
+// ShownFieldUnit.hpp: bare field units shown in the output units (kept in this file: one
+// translation unit for the output units).
+std::string bareUnitName(const FieldUnit& field) {
+  if (field.bareSize != 1)
+    for (const Unit& u : units())
+      if (u.dimension == field.dimension && u.si == field.bareSize) return u.name;
+  return siUnitOf(field.dimension);
+}
+
+OutputUnits::Shown shownField(const OutputUnits& units, const FieldUnit& field) {
+  if (const std::string si = siUnitOf(field.dimension); !si.empty() && units.sets(si)) {
+    const OutputUnits::Shown shown = units.ofSI(field.dimension);
+    return {field.bareSize * shown.factor, shown.unit};
+  }
+  return {1, bareUnitName(field)};
+}
+
+FieldUnit checkQuantityUnit(const std::string& quantity) {
+  // evaluate() appends the load case a check reads to the deck's phrase.
+  const std::string phrase = quantity.substr(0, quantity.find(" (case "));
+  try {
+    return referenceUnit(parseQuantity(phrase));
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
 }
 
 }  // namespace beamrotor

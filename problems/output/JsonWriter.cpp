@@ -10,6 +10,7 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/model/DofMap.hpp"
 #include "problems/deck/AnalysisKinds.hpp"
+#include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/output/structure/MemberEndRotations.hpp"
 #include "problems/output/structure/AdequateJson.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
@@ -311,6 +312,7 @@ Json checksJson(const std::vector<Check>& checks) {
                 {"quantity", c.quantity},
                 {"computed", c.computed},
                 {"reference", c.reference},
+                {"unit", bareUnitName(checkQuantityUnit(c.quantity))},
                 {"rel_error", c.relError()},
                 {"tolerance", c.tolerance},
                 {"pass", c.pass()}};

@@ -176,7 +176,8 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             [&](const TorsionOutcome& r) {
               writeModalFiles(prepared, p, *r.model, r.modes, dir, charts);
               for (const CsvTable& table : p.torsion) table.write(dir / table.title());
-              if (charts) drawTorsionCharts(dir, r, p.stem, captionOf(prepared, a.name));
+              if (charts)
+                drawTorsionCharts(dir, r, p.stem, captionOf(prepared, a.name), prepared.units);
             },
             [&](const TransientOutcome& r) {
               writeTransientFiles(dir, model, p.stem, r, *p.history,

@@ -24,8 +24,9 @@ const AnalysisOutcome* overlaidAnalysis(const RunResult& run);
 /// Writes into dir (an empty directory being filled): `<label>_fields.csv` per run (the
 /// fields table of its overlaidAnalysis, which every run must have) and the chart
 /// `overlay.svg/png/gp` with the diagrams in `shown`, one line per run; markers at the named
-/// points that lie at the same place in every run. Returns whether gnuplot drew it.
+/// points that lie at the same place in every run; tables and chart in `units` (inUnits).
+/// Returns whether gnuplot drew it.
 bool writeOverlay(const std::filesystem::path& dir, const std::vector<OverlaidRun>& runs,
-                  const std::vector<Diagram>& shown);
+                  const std::vector<Diagram>& shown, const OutputUnits& units = {});
 
 }  // namespace beamrotor

@@ -166,9 +166,9 @@ void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
          {&p.rotor->modes, &p.rotor->orbits, &p.rotor->campbell, &p.rotor->critical,
           &p.rotor->unbalance, &p.rotor->api684, &p.rotor->frf, &p.rotor->bearings, &p.rotor->map,
           &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag,
-          &p.rotor->runUp, &p.rotor->runUpHistory})
+          &p.rotor->runUp, &p.rotor->runUpHistory, &p.rotor->levelOne})
       if (*t) *t = inUnits(**t, units);
-  for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank})
+  for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank, &p.torsion})
     for (CsvTable& t : *list) t = inUnits(t, units);
 }
 
@@ -209,7 +209,7 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
             [&](const TorsionOutcome& r) {
               p.modes = modesTable(modesCsv(p.stem), r.modes);
               p.shapes = modeShapesTable(shapesCsv(p.stem), *r.model, r.modes);
-              p.torsion = torsionTables(r, p.stem);
+              p.torsion = torsionTables(r, p.stem, choices.units);
             },
             [&](const BucklingResult& r) {
               p.modes = bucklingFactorsTable(bucklingFactorsCsv(p.stem), r);

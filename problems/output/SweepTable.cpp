@@ -214,14 +214,16 @@ std::vector<SweepQuantity> sweepQuantities(const std::vector<Json>& runDocs) {
                                      "reported value " + name)
                          .get<double>();
                    }});
-  std::vector<std::string> checks;
+  std::vector<std::pair<std::string, std::string>> checks;  // name, unit
   for (const Json& doc : runDocs)
     for (const Json& c : doc.at("checks")) {
       const std::string name = c.at("name");
-      if (std::find(checks.begin(), checks.end(), name) == checks.end()) checks.push_back(name);
+      if (std::none_of(checks.begin(), checks.end(), [&](const auto& k) { return k.first == name; }))
+        checks.emplace_back(name, c.value("unit", ""));
     }
-  for (const std::string& name : checks) {
-    out.push_back({SweepGroup::check, "", name, {"check." + name, ""},
+  for (const auto& check : checks) {
+    const std::string& name = check.first;  // a plain name: the lambdas below copy it
+    out.push_back({SweepGroup::check, "", name, {"check." + name, check.second},
                    [name](const Json& doc) {
                      return checkNamed(doc, name).at("computed").get<double>();
                    },

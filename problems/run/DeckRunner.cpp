@@ -16,6 +16,8 @@
 #include "fem/static/Static.hpp"
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/ShownFieldUnit.hpp"
+#include "problems/deck/study/SweepOption.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/parse/Units.hpp"
@@ -278,8 +280,7 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
                      const DeckAdjustment& adjust) {
   SweepResult sweep;
   sweep.parameter = base.sweep->parameter;
-  for (const auto& [name, dimension] : base.dimensions)
-    if (name == sweep.parameter) sweep.unit = siUnitOf(dimension);
+  sweep.unit = bareUnitName(parameterUnit(base, sweep.parameter));
   sweep.values = base.sweep->values;
   // Every value reads the deck again: what an earlier reading evaluated comes from the
   // memo's byte code (the same deck, bit for bit), as a design study's points do. Re-parsing

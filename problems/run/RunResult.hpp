@@ -165,8 +165,8 @@ struct RunResult {
 /// A deck solved over a list of values of one parameter.
 struct SweepResult {
   std::string parameter;
-  /// The parameter's SI unit when the deck wrote it with a unit ("N", "m"); empty for a bare
-  /// number, whose unit the deck does not say (SI by convention).
+  /// Its values' unit (bareUnitName of parameterUnit): SI ("N", "m"), a bare one's from the
+  /// fields it flows into ("rpm" for a *_rpm field); empty when dimensionless or unknown.
   std::string unit;
   std::vector<double> values;
   std::vector<RunResult> runs;  ///< one per value

@@ -100,9 +100,10 @@ TEST_SUITE("deck sweep") {
     const Study withUnit = solveStudyText(text, r);
     REQUIRE(withUnit.sweep);
     CHECK(withUnit.sweep->unit == "N");
-    // A bare number says nothing of its unit: no unit is claimed.
+    // A bare number takes the dimension of the field it flows into (s places a support: a
+    // length), in SI: its values are metres.
     const Study bare = solve("sweep: {parameter: s, values: [1, 1.5]}");
-    CHECK(bare.sweep->unit.empty());
+    CHECK(bare.sweep->unit == "m");
   }
 
   TEST_CASE("sweep values take units of the swept parameter's dimension") {

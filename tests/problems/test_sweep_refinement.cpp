@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "problems/cli/PeakSummary.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/Study.hpp"
 #include "problems/run/SweepRefinement.hpp"
 #include "problems/scenes/Mo10.hpp"
@@ -119,5 +121,12 @@ TEST_SUITE("sweep refinement") {
     cli::printSweepPeaks(summary, s, request.deckPath);
     MESSAGE(summary.str());
     CHECK(summary.str().find("peaks of history spring_force maxabs (blows)") != std::string::npos);
+    // In the user's stiffness unit: the first peak's c in N/m (SI) / 1000 as kN/m.
+    std::ostringstream inKn;
+    cli::printSweepPeaks(inKn, s, request.deckPath, parseOutputUnits("force=kN"));
+    std::ostringstream first;
+    first << "c = " << std::setprecision(6) << peaks.front().first / 1000 << " kN/m (";
+    CHECK(inKn.str().find(first.str()) != std::string::npos);
+    CHECK(summary.str().find(" N/m (") != std::string::npos);  // unset: SI, named
   }
 }

@@ -221,6 +221,17 @@ def test_torsion_train_tables(tmp_path):
     assert response["speed_rpm"].size == 21 and np.all(response["flex"] > 0)
     crossings = run.tables["twist"]["crossings"]
     assert crossings["speed_rpm"].size == 1
+    # In kN m and rad/s: the response table's torques are the N m ones / 1000, its speeds the
+    # rpm ones x pi/30; the torques table names each row's unit.
+    kn = beamrotor.solve(deck, units={"force": "kN", "speed": "rad/s"})
+    shown = kn.tables["twist"]["response"]
+    assert kn.units["twist"]["response"]["flex"] == "kN m"
+    assert kn.units["twist"]["response"]["speed_rpm"] == "rad/s"
+    assert np.allclose(shown["flex"], response["flex"] / 1000, rtol=1e-15, atol=0)
+    assert np.allclose(shown["speed_rpm"], response["speed_rpm"] * math.pi / 30, rtol=1e-15, atol=0)
+    assert shown["flex"][-1] > 0 and shown["speed_rpm"][-1] == pytest.approx(3000 * math.pi / 30, rel=1e-12)
+    torques = kn.tables["twist"]["torques"]
+    assert set(torques["quantity"]) == {"torque kN m", "twist rad"}
 
 
 def test_spring_force_of_a_propped_cantilever(tmp_path):

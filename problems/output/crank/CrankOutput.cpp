@@ -34,7 +34,7 @@ CsvTable motionTable(const CrankSliderOutcome& c, const std::string& stem) {
   std::vector<CsvColumn> columns{
       {"phi", "deg"},         {"x", "m"},          {"x_approx", "m"},     {"v", "m/s"},
       {"v_approx", "m/s"},    {"a", "m/s^2"},      {"a_approx", "m/s^2"}, {"beta", "rad"},
-      {"beta_approx", "rad"}, {"beta_dot", "1/s"}, {"beta_ddot", "1/s^2"}};
+      {"beta_approx", "rad"}, {"beta_dot", "rad/s"}, {"beta_ddot", "rad/s^2"}};
   const bool loads = c.reduced.has_value();
   if (loads)
     for (const char* name : {"F1_term", "F2_term", "inertia_force", "cranks_F1_term",

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/Gnuplot.hpp"
 #include "problems/run/RotorRunResult.hpp"
@@ -27,7 +28,8 @@ CsvTable levelOneTable(const std::string& title, const LevelOneResult& r);
 /// The least log decrement against added cross-coupling, with Qa, Q0 (when found) and the
 /// 0.1 line marked.
 ChartScript levelOneDiagram(const std::string& caption, const std::string& chartName,
-                            const LevelOneResult& r, const std::string& csvFile);
+                            const LevelOneResult& r, const std::string& csvFile,
+                            const OutputUnits& units = {});
 
 /// API 617's map of the critical speed ratio against the average gas density: the boundary of
 /// regions A and B, and the machine's point.

@@ -232,11 +232,13 @@ void writeRotorFiles(const RotorFiles& f, const BearingLoadsOutcome&) {
 void writeRotorFiles(const RotorFiles& f, const LevelOneOutcome& r) {
   f.tables.levelOne->write(f.dir / levelOneCsv(f.stem));
   const LevelOneResult& s = r.screening;
-  const std::string what = "at " + labelNumber(s.speed * 30 / std::numbers::pi) +
-                           " rpm, cross-coupling at " + r.station + ": " + levelOneVerdict(s);
+  const OutputUnits::Shown speed = f.units.of("rpm");
+  const std::string what = "at " + labelNumber(s.speed * 30 / std::numbers::pi * speed.factor) +
+                           " " + speed.unit + ", cross-coupling at " + r.station + ": " +
+                           levelOneVerdict(s);
   if (f.charts && f.tables.levelOne->rowCount() > 0)
     drawChart(f.dir, levelOneDiagram(fitted(f.caption) + "\n" + what, levelOneChart(f.stem), s,
-                                     levelOneCsv(f.stem)));
+                                     levelOneCsv(f.stem), f.units));
   if (f.charts)
     drawChart(f.dir, criticalSpeedRatioDiagram(fitted(f.caption) + "\n" + what,
                                                criticalSpeedRatioChart(f.stem), s.map));

@@ -58,16 +58,23 @@ CsvTable crossingsTable(const TorsionOutcome& t, const std::string& stem) {
   return table;
 }
 
-CsvTable torquesTable(const TorsionResponse& r, const std::string& stem) {
+/// Torques and twists share the amplitude and peak columns: each row names its unit in its
+/// quantity cell ("torque kN m"), its numbers converted into it here (the columns have none).
+CsvTable torquesTable(const TorsionResponse& r, const std::string& stem,
+                      const OutputUnits& units) {
   CsvTable table(torquesCsv(stem), {{"name", ""}, {"quantity", ""}, {"order", ""},
                                     {"amplitude", ""}, {"phase", "deg"}, {"peak", ""}});
-  const auto add = [&](const ResponseTrace& trace, const char* quantity) {
+  const auto add = [&](const ResponseTrace& trace, const char* quantity, const char* unit) {
+    const OutputUnits::Shown shown = units.of(unit);
+    std::string what = quantity;
+    what += " ";
+    what += shown.unit;
     for (std::size_t j = 0; j < r.orders.size(); ++j)
-      table.addRow({trace.name, std::string(quantity), r.orders[j], std::abs(trace.amplitudes[j]),
-                    std::arg(trace.amplitudes[j]) * kTrainDegree, trace.peak});
+      table.addRow({trace.name, what, r.orders[j], std::abs(trace.amplitudes[j]) * shown.factor,
+                    std::arg(trace.amplitudes[j]) * kTrainDegree, trace.peak * shown.factor});
   };
-  for (const ResponseTrace& trace : r.torques) add(trace, "torque N m");
-  for (const ResponseTrace& trace : r.twists) add(trace, "twist rad");
+  for (const ResponseTrace& trace : r.torques) add(trace, "torque", "N m");
+  for (const ResponseTrace& trace : r.twists) add(trace, "twist", "rad");
   return table;
 }
 
@@ -104,11 +111,12 @@ Json responseJson(const TorsionResponse& r) {
 
 }  // namespace
 
-std::vector<CsvTable> torsionTables(const TorsionOutcome& t, const std::string& stem) {
+std::vector<CsvTable> torsionTables(const TorsionOutcome& t, const std::string& stem,
+                                   const OutputUnits& units) {
   std::vector<CsvTable> out;
   if (t.speedTo > t.speedFrom) out.push_back(interferenceTable(t, stem));
   if (!t.orders.empty()) out.push_back(crossingsTable(t, stem));
-  if (t.atSpeed) out.push_back(torquesTable(*t.atSpeed, stem));
+  if (t.atSpeed) out.push_back(torquesTable(*t.atSpeed, stem, units));
   if (!t.sweep.empty()) out.push_back(responseTable(t, stem));
   return out;
 }
@@ -151,8 +159,15 @@ Json torsionTrainJson(const TorsionOutcome& t, const std::string& stem) {
 }
 
 void drawTorsionCharts(const std::filesystem::path& dir, const TorsionOutcome& t,
-                       const std::string& stem, const std::string& caption) {
+                       const std::string& stem, const std::string& caption,
+                       const OutputUnits& units) {
   if (!(t.speedTo > t.speedFrom)) return;
+  // The tables hold speeds in rpm, frequencies in Hz and torques in N m, or (inUnits) the
+  // user's units of them: the axes' ranges and labels follow.
+  const OutputUnits::Shown rpm = units.of("rpm");
+  const OutputUnits::Shown hz = units.of("Hz");
+  const OutputUnits::Shown torque = units.of("N m");
+  const std::string speedAxis = "speed of " + t.reference + " [" + rpm.unit + "]";
   const CsvTable diagram = interferenceTable(t, stem);
   const std::string file = interferenceCsv(stem);
   std::vector<std::string> titles;
@@ -177,18 +192,20 @@ void drawTorsionCharts(const std::filesystem::path& dir, const TorsionOutcome& t
   for (int m : modes)
     if (const double f = t.modes.modes[m - 1].frequencyHz; f <= top)
       line("mode_" + std::to_string(m),
-           "mode " + std::to_string(m) + ": " + labelNumber(f) + " Hz", false);
+           "mode " + std::to_string(m) + ": " + labelNumber(f * hz.factor) + " " + hz.unit, false);
   for (double o : t.orders) line(orderColumn(o), "order " + labelNumber(o), true);
   std::ostringstream body;
   const int width = 900 + keyWidth(titles);
   body << "  set encoding utf8\n  set title " << captionText(caption) << "\n  set grid\n"
        << "  set key outside right top\n"
-       << "  set xlabel " << gnuplotText("speed of " + t.reference + " [rpm]") << "\n"
-       << "  set ylabel 'frequency [Hz]'\n"
-       << "  set xrange [" << number(t.speedFrom * kTrainRpm) << ":" << number(t.speedTo * kTrainRpm) << "]\n"
-       << "  set yrange [0:" << number(std::max(top, 1e-300)) << "]\n";
+       << "  set xlabel " << gnuplotText(speedAxis) << "\n"
+       << "  set ylabel " << gnuplotText("frequency [" + hz.unit + "]") << "\n"
+       << "  set xrange [" << number(t.speedFrom * kTrainRpm * rpm.factor) << ":"
+       << number(t.speedTo * kTrainRpm * rpm.factor) << "]\n"
+       << "  set yrange [0:" << number(std::max(top * hz.factor, 1e-300)) << "]\n";
   for (const TorsionCrossing& c : t.crossings)
-    body << "  set object circle at " << number(c.speed * kTrainRpm) << "," << number(c.frequencyHz)
+    body << "  set object circle at " << number(c.speed * kTrainRpm * rpm.factor) << ","
+         << number(c.frequencyHz * hz.factor)
          << " size screen 0.006 fillcolor rgb 'black' fillstyle solid front\n";
   body << plot.str() << "\n";
   drawChart(dir, {stem + "_interference",
@@ -199,13 +216,13 @@ void drawTorsionCharts(const std::filesystem::path& dir, const TorsionOutcome& t
   std::ostringstream rbody;
   PositiveRange range;
   for (const TorsionResponse& r : t.sweep)
-    for (const ResponseTrace& trace : r.torques) range.include(trace.peak);
+    for (const ResponseTrace& trace : r.torques) range.include(trace.peak * torque.factor);
   std::vector<std::string> names;
   for (const ResponseTrace& trace : t.sweep.front().torques) names.push_back(trace.name);
   rbody << "  set encoding utf8\n  set title " << captionText(caption) << "\n  set grid\n"
         << "  set key outside right top\n"
-        << "  set xlabel " << gnuplotText("speed of " + t.reference + " [rpm]") << "\n"
-        << "  set ylabel 'vibratory torque, peak [N m]'\n";
+        << "  set xlabel " << gnuplotText(speedAxis) << "\n"
+        << "  set ylabel " << gnuplotText("vibratory torque, peak [" + torque.unit + "]") << "\n";
   if (range.high > 0) rbody << logAxis("y", range);
   rbody << "  plot ";
   for (std::size_t i = 0; i < names.size(); ++i) {

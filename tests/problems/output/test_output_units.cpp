@@ -16,6 +16,7 @@
 #include "problems/deck/parse/UnitText.hpp"
 #include "problems/output/Output.hpp"
 #include "problems/output/PreparedRun.hpp"
+#include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/TableUnits.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 #include "tests/problems/output/OutputFixtures.hpp"
@@ -270,5 +271,316 @@ TEST_SUITE("output units (command line)") {
     CHECK(p.exitCode == 2);
     CHECK(p.err.find("--units") != std::string::npos);
     CHECK(p.err.find("'kN' is a force (N), not a length (m)") != std::string::npos);
+  }
+}
+
+// The places that printed SI whatever the units said: the check table, a sweep's parameter
+// column and check columns, overlay and converge charts, the crank-slider and the torsion
+// train. Each is compared with the same number in SI (results.json, which stays SI, or the
+// deck's closed form) times the unit's exact factor, and its unit named where it is shown.
+namespace {
+
+/// "8.94025": v as the summary prints it (six significant digits).
+std::string six(double v) {
+  std::ostringstream s;
+  s << std::setprecision(6) << v;
+  return s.str();
+}
+
+/// The line of `text` that contains `what` ("" when none).
+std::string lineWith(const std::string& text, const std::string& what) {
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.find(what) != std::string::npos) return line;
+  return "";
+}
+
+/// The cantilever's tip deflection, -P L^3 / (3 E I) in m: P = 1 kN, E = 210 GPa, D = 50 mm.
+double cantileverTip(double L) {
+  const double I = std::numbers::pi * std::pow(0.05, 4) / 64;
+  return -1000.0 * std::pow(L, 3) / (3 * 210e9 * I);
+}
+
+/// The number in `cells[column]` of the data row whose first cell is `first`.
+double cellAt(const WrittenCsv& csv, std::size_t row, const std::string& column) {
+  return std::stod(csv.rows.at(row).at(csvColumn(csv.rows.at(0), column)));
+}
+
+/// The units line's entry of `column`.
+std::string unitEntry(const WrittenCsv& csv, const std::string& column) {
+  std::vector<std::string> units;
+  std::istringstream s(csv.unitsLine.substr(std::string("# units: ").size()));
+  for (std::string u; std::getline(s, u, ',');) units.push_back(u);
+  units.resize(csv.rows.at(0).size());
+  return units.at(csvColumn(csv.rows.at(0), column));
+}
+
+}  // namespace
+
+TEST_SUITE("output units (every place)") {
+  TEST_CASE("beamrotor check: values, references and zero-reference tolerances in the units") {
+    const ProcessResult mm = runBeamrotor(
+        {"check", "problems/cantilever.yaml", "--units", "length=mm,force=kN"});
+    REQUIRE_MESSAGE(mm.exitCode == 0, mm.err);
+    // Computed and reference both -P L^3/(3 E I): the reference is the closed form itself.
+    const std::string tip = lineWith(mm.out, "tip deflection");
+    CHECK(tip.find(" " + six(1000 * cantileverTip(1.2)) + " mm") != std::string::npos);
+    CHECK(tip.find("ref " + six(1000 * cantileverTip(1.2)) + " mm") != std::string::npos);
+    // P L = 1.2 kN m = 1200 kN mm (a moment follows force and length).
+    CHECK(lineWith(mm.out, "root moment").find("ref 1200 kN mm") != std::string::npos);
+    CHECK(lineWith(mm.out, "root force").find("ref 1 kN") != std::string::npos);
+    // The parameters line: the deck's L = 1.2 m, D = 50 mm, P = 1 kN.
+    CHECK(mm.out.find("parameters: L = 1200 mm, D = 50 mm, P = 1 kN,") != std::string::npos);
+    // Unset: the check's own unit, named.
+    const ProcessResult si = runBeamrotor({"check", "problems/cantilever.yaml"});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    CHECK(lineWith(si.out, "tip deflection").find("ref " + six(cantileverTip(1.2)) + " m ") !=
+          std::string::npos);
+    CHECK(lineWith(si.out, "root moment").find("ref 1200 N m") != std::string::npos);
+    CHECK(si.out.find("parameters: L = 1.2 m, D = 0.05 m, P = 1000 N,") != std::string::npos);
+    // A wrong unit is an input error naming the option.
+    const ProcessResult bad =
+        runBeamrotor({"check", "problems/cantilever.yaml", "--units", "length=kN"});
+    CHECK(bad.exitCode == 2);
+    CHECK(bad.err.find("--units") != std::string::npos);
+  }
+
+  TEST_CASE("a sweep: the summary's parameter column and sweep.csv's check columns") {
+    const fs::path dir = scratchDir("units-sweep");
+    const ProcessResult p = runBeamrotor(
+        {"solve", "problems/cantilever.yaml", "--sweep", "L=1m,1.2m", "--charts", "none",
+         "--units", "length=mm", "--out", (dir / "out").string()});
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    CHECK(p.out.find("at L = 1000 mm") != std::string::npos);
+    const std::string header = lineWith(p.out, "L mm");
+    REQUIRE_FALSE(header.empty());
+    CHECK(p.out.find("\n  1200 ") != std::string::npos);  // 1.2 m x 1000
+    const WrittenCsv sweep = writtenCsv(dir / "out" / "sweep.csv");
+    REQUIRE(sweep.rows.size() == 3);
+    CHECK(unitEntry(sweep, "L") == "mm");
+    CHECK(unitEntry(sweep, "check.tip deflection") == "mm");
+    CHECK(unitEntry(sweep, "check.tip rotation") == "rad");  // angle not set
+    CHECK(cellAt(sweep, 2, "L") == 1200);
+    // Hermite elements are exact at the nodes: the closed form to round-off (1e-9 as the deck).
+    for (const auto& [row, L] : {std::pair{1, 1.0}, std::pair{2, 1.2}})
+      CHECK(cellAt(sweep, std::size_t(row), "check.tip deflection") ==
+            doctest::Approx(1000 * cantileverTip(L)).epsilon(1e-9));
+    // sweep.json stays SI and names the check's unit.
+    const nlohmann::json doc = readJson(dir / "out" / "sweep.json");
+    const nlohmann::json& check = doc["runs"][1]["checks"][0];
+    CHECK(check["unit"] == "m");
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("beamrotor overlay: tables and chart in the units") {
+    const fs::path dir = scratchDir("units-overlay");
+    const ProcessResult p = runBeamrotor(
+        {"overlay", "problems/cantilever.yaml", "problems/simply_supported.yaml", "--units",
+         "length=mm,force=kN", "--out", (dir / "out").string()});
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    const WrittenCsv fields = writtenCsv(dir / "out" / "cantilever_fields.csv");
+    CHECK(unitEntry(fields, "uy") == "mm");
+    CHECK(unitEntry(fields, "x") == "mm");
+    CHECK(cellAt(fields, fields.rows.size() - 1, "uy") ==
+          doctest::Approx(1000 * cantileverTip(1.2)).epsilon(1e-9));
+    const std::string script = readText(dir / "out" / "overlay.gp");
+    CHECK(script.find("set ylabel 'deflection [mm]'") != std::string::npos);
+    CHECK(script.find("set ylabel 'shear force [kN]'") != std::string::npos);
+    CHECK(script.find("set xlabel 'x along the line [mm]'") != std::string::npos);
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("beamrotor converge: values, the value column and the time axis in the units") {
+    const fs::path dir = scratchDir("units-converge");
+    const ProcessResult p = runBeamrotor(
+        {"converge", "problems/cantilever.yaml", "--quantity", "displacement tip uy", "--levels",
+         "2", "--units", "length=mm,time=ms", "--out", (dir / "out").string()});
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    const nlohmann::json doc = readJson(dir / "out" / "convergence.json");
+    const nlohmann::json& method = doc["methods"][0];
+    const std::string file = "convergence_" + method["name"].get<std::string>() + ".csv";
+    const WrittenCsv table = writtenCsv(dir / "out" / file);
+    CHECK(unitEntry(table, "value") == "mm");
+    CHECK(unitEntry(table, "total") == "ms");
+    const nlohmann::json& level = method["levels"][0];
+    CHECK(cellAt(table, 1, "value") ==
+          doctest::Approx(level["value"].get<double>() * 1000).epsilon(1e-15));
+    CHECK(cellAt(table, 1, "value") == doctest::Approx(1000 * cantileverTip(1.2)).epsilon(1e-9));
+    CHECK(cellAt(table, 1, "total") ==
+          doctest::Approx(level["time_s"]["total"].get<double>() * 1000).epsilon(1e-15));
+    CHECK(readText(dir / "out" / "convergence_time.gp").find("wall time (total) [ms]") !=
+          std::string::npos);
+    CHECK(p.out.find("value " + six(1000 * cantileverTip(1.2)).substr(0, 6)) !=
+          std::string::npos);
+    CHECK(lineWith(p.out, "level 0").find(" mm ") != std::string::npos);
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("crank-slider: summary, motion table and charts in the units") {
+    const fs::path dir = scratchDir("units-crank");
+    const ProcessResult si = runBeamrotor(
+        {"solve", "problems/snt32_drive.yaml", "--out", (dir / "si").string()});
+    const ProcessResult p = runBeamrotor(
+        {"solve", "problems/snt32_drive.yaml", "--units", "length=mm,force=kN,speed=rad/s",
+         "--out", (dir / "out").string()});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    // The deck's r = 18.8 mm and l = 288 mm.
+    CHECK(p.out.find("r = 18.8 mm, l = 288 mm") != std::string::npos);
+    CHECK(si.out.find("r = 0.0188 m, l = 0.288 m") != std::string::npos);
+    const nlohmann::json doc = readJson(dir / "out" / "results.json");
+    const nlohmann::json& crank = doc["analyses"][0];  // 'drive', printed first
+    REQUIRE(crank["name"] == "drive");
+    const double rpm = crank["speed_rpm"].get<double>();
+    CHECK(p.out.find(six(rpm * std::numbers::pi / 30) + " rad/s, ") != std::string::npos);
+    // One crank's first harmonic m_rec r w^2 in kN: the SI summary's newtons / 1000.
+    const std::string harmonic = lineWith(si.out, "inertia force, one crank");
+    const double newtons = std::stod(harmonic.substr(harmonic.find("1st harmonic ") + 13));
+    CHECK(lineWith(p.out, "inertia force, one crank").find(six(newtons / 1000) + " kN") !=
+          std::string::npos);
+    const std::string motion = "drive_motion.csv";
+    const WrittenCsv a = writtenCsv(dir / "si" / motion), b = writtenCsv(dir / "out" / motion);
+    CHECK(unitEntry(b, "x") == "mm");
+    CHECK(unitEntry(b, "v") == "mm/s");
+    CHECK(unitEntry(b, "inertia_force") == "kN");
+    CHECK(unitEntry(a, "beta_dot") == "rad/s");  // an angular velocity, not a frequency
+    for (std::size_t row = 1; row < a.rows.size(); row += 7) {
+      CHECK(cellAt(b, row, "x") == doctest::Approx(cellAt(a, row, "x") * 1000).epsilon(1e-14));
+      CHECK(cellAt(b, row, "inertia_force") ==
+            doctest::Approx(cellAt(a, row, "inertia_force") / 1000).epsilon(1e-14));
+    }
+    // x runs from the outer dead centre: at phi = 180 deg the slider has moved the stroke 2 r.
+    bool inner = false;
+    for (std::size_t row = 1; row < b.rows.size(); ++row)
+      if (cellAt(b, row, "phi") == 180) {
+        inner = true;
+        CHECK(cellAt(b, row, "x") == doctest::Approx(2 * 18.8).epsilon(1e-12));
+      }
+    CHECK(inner);
+    const std::string gp = readText(dir / "out" / "drive_kinematics.gp");
+    CHECK(gp.find("slider position x [mm]") != std::string::npos);
+    CHECK(gp.find("slider velocity v [mm/s]") != std::string::npos);
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("torsion train: summary, tables and charts in the units") {
+    const fs::path dir = scratchDir("units-torsion");
+    const std::string units = "force=kN,speed=rad/s,frequency=rpm,angle=deg";
+    const ProcessResult si = runBeamrotor(
+        {"solve", "problems/snt32_torsion.yaml", "--out", (dir / "si").string()});
+    const ProcessResult p = runBeamrotor(
+        {"solve", "problems/snt32_torsion.yaml", "--units", units, "--out",
+         (dir / "out").string()});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    // The deck's motor_speed of 1470 rpm is 1470 pi / 30 rad/s.
+    CHECK(p.out.find("steady response at " + six(1470 * std::numbers::pi / 30) + " rad/s") !=
+          std::string::npos);
+    CHECK(si.out.find("steady response at 1470 rpm") != std::string::npos);
+    const nlohmann::json doc = readJson(dir / "out" / "results.json");
+    nlohmann::json train;
+    for (const nlohmann::json& a : doc["analyses"])
+      if (a.contains("train")) train = a["train"];
+    REQUIRE_FALSE(train.is_null());
+    const double crankshaft = train["response"]["torques_n_m"]["crankshaft"]["peak"].get<double>();
+    CHECK(lineWith(p.out, "torque crankshaft:").find(six(crankshaft / 1000) + " kN m") !=
+          std::string::npos);
+    const double twist = train["response"]["twists_rad"]["motor.start"]["peak"].get<double>();
+    CHECK(lineWith(p.out, "twist motor.start:").find(six(twist * 180 / std::numbers::pi) +
+                                                      " deg") != std::string::npos);
+    const nlohmann::json& crossing = train["interference"]["crossings"][0];
+    CHECK(lineWith(p.out, "order " + six(crossing["order"].get<double>()) + " x mode")
+              .find(six(crossing["frequency_hz"].get<double>() * 60) + " rpm") !=
+          std::string::npos);
+
+    // The torques table: each row names its unit; the SI table's numbers / 1000.
+    const std::vector<std::vector<std::string>> a = csvCells(dir / "si" / "drive_torques.csv");
+    const std::vector<std::vector<std::string>> b = csvCells(dir / "out" / "drive_torques.csv");
+    const std::size_t quantity = csvColumn(b[0], "quantity"), peak = csvColumn(b[0], "peak");
+    bool torqueRow = false;
+    for (std::size_t row = 1; row < b.size(); ++row) {
+      if (b[row][0].rfind("#", 0) == 0) continue;
+      if (b[row][quantity] != "torque kN m") continue;
+      torqueRow = true;
+      CHECK(a[row][quantity] == "torque N m");
+      CHECK(std::stod(b[row][peak]) == doctest::Approx(std::stod(a[row][peak]) / 1000).epsilon(1e-14));
+    }
+    CHECK(torqueRow);
+    // The response against speed: speeds in rad/s (rpm x pi/30), torques in kN m.
+    const WrittenCsv rs = writtenCsv(dir / "si" / "drive_response.csv");
+    const WrittenCsv rb = writtenCsv(dir / "out" / "drive_response.csv");
+    CHECK(unitEntry(rb, "speed_rpm") == "rad/s");
+    CHECK(unitEntry(rb, "crankshaft") == "kN m");
+    const std::size_t last = rb.rows.size() - 1;
+    CHECK(cellAt(rb, last, "speed_rpm") ==
+          doctest::Approx(cellAt(rs, last, "speed_rpm") * std::numbers::pi / 30).epsilon(1e-14));
+    CHECK(cellAt(rb, last, "speed_rpm") == doctest::Approx(1800 * std::numbers::pi / 30).epsilon(1e-12));
+    CHECK(cellAt(rb, last, "crankshaft") ==
+          doctest::Approx(cellAt(rs, last, "crankshaft") / 1000).epsilon(1e-14));
+    const WrittenCsv ib = writtenCsv(dir / "out" / "drive_interference.csv");
+    CHECK(unitEntry(ib, "mode_2") == "rpm");
+    const std::string interference = readText(dir / "out" / "drive_interference.gp");
+    CHECK(interference.find("speed of motor [rad/s]") != std::string::npos);
+    CHECK(interference.find("frequency [rpm]") != std::string::npos);
+    CHECK(readText(dir / "out" / "drive_response.gp").find("peak [kN m]") != std::string::npos);
+    fs::remove_all(dir);
+  }
+}
+
+TEST_SUITE("output units (every place)") {
+  TEST_CASE("API 684 Level I: the table, the chart's axis and marked Qa and Q0 in the units") {
+    const fs::path dir = scratchDir("units-level1");
+    const ProcessResult p = runBeamrotor(
+        {"solve", "problems/level1_stability.yaml", "--units", "force=kN,length=mm,speed=Hz",
+         "--out", (dir / "out").string()});
+    REQUIRE_MESSAGE(p.exitCode == 0, p.err);
+    const nlohmann::json doc = readJson(dir / "out" / "results.json");
+    const nlohmann::json& a = doc["analyses"][0];
+    const double qa = a["qa"].get<double>(), q0 = a["q0"].get<double>();
+    // kN/mm = 1e6 N/m; the chart's marks are the SI figures / 1e6.
+    const WrittenCsv table = writtenCsv(dir / "out" / "level1_level1.csv");
+    CHECK(unitEntry(table, "cross_coupling") == "kN/mm");
+    const std::string gp = readText(dir / "out" / "level1_level1.gp");
+    CHECK(gp.find("added cross-coupling Q [kN/mm]") != std::string::npos);
+    CHECK(gp.find("using ($1*1):2") != std::string::npos);  // the table holds kN/mm already
+    CHECK(gp.find("Qa = " + labelNumber(qa * 1e-6) + " kN/mm") != std::string::npos);
+    CHECK(gp.find("Q0 = " + labelNumber(q0 * 1e-6) + " kN/mm") != std::string::npos);
+    // The caption's speed: 3000 rpm = 50 turns per second.
+    CHECK(gp.find("at 50 Hz, cross-coupling") != std::string::npos);
+    // The check table: Qa with its unit, API 617's figure / 1e6.
+    CHECK(lineWith(p.out, "level1 qa").find("ref " + six(qa * 1e-6) + " kN/mm") !=
+          std::string::npos);
+    fs::remove_all(dir);
+  }
+}
+
+TEST_SUITE("output units (every place)") {
+  TEST_CASE("a transient sweep's table: the swept values and the history maxima in the units") {
+    const fs::path dir = scratchDir("units-transient");
+    const ProcessResult si = runBeamrotor({"solve", "problems/mo10_steady.yaml", "--charts",
+                                           "none", "--out", (dir / "si").string()});
+    const ProcessResult kn =
+        runBeamrotor({"solve", "problems/mo10_steady.yaml", "--charts", "none", "--units",
+                      "force=kN", "--out", (dir / "kn").string()});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    REQUIRE_MESSAGE(kn.exitCode == 0, kn.err);
+    CHECK(kn.out.find("c kN/m") != std::string::npos);
+    CHECK(kn.out.find("spring_force_max kN") != std::string::npos);
+    CHECK(si.out.find("c N/m") != std::string::npos);
+    // The first value, c = 10 kN/m: its row in kN/m and kN is the SI row's numbers / 1000.
+    const auto cells = [](const std::string& line) {
+      std::vector<double> out;
+      std::istringstream s(line);
+      for (double v; s >> v;) out.push_back(v);
+      return out;
+    };
+    const std::vector<double> a = cells(lineWith(si.out, "  10000  ")),
+                              b = cells(lineWith(kn.out, "  10  "));
+    REQUIRE(a.size() == 4);
+    REQUIRE(b.size() == 4);
+    CHECK(b[0] == 10);
+    CHECK(b[1] == a[1]);  // phi_max in rad either way
+    CHECK(b[2] == doctest::Approx(a[2] / 1000).epsilon(1e-5));  // six printed digits
+    fs::remove_all(dir);
   }
 }
