@@ -27,7 +27,8 @@ namespace beamrotor {
 using AnalysisSpec = std::variant<StaticSpec, ModalSpec, BucklingSpec, TransientSpec, RotorSpec,
                                   CampbellSpec, UnbalanceSpec, RigidBodySpec, FrequencyResponseSpec,
                                   CrankSliderSpec, CriticalSpeedMapSpec, BearingLoadsSpec,
-                                  TorsionSpec, LevelOneSpec>;
+                                  TorsionSpec, LevelOneSpec, ResponseSpectrumSpec,
+                                  BaseMotionSpec>;
 
 /// Every row's deck type, in row order.
 std::vector<std::string> analysisTypeNames();

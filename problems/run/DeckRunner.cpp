@@ -7,7 +7,9 @@
 #include <variant>
 
 #include "fem/assembly/Recovery.hpp"
+#include "fem/modal/BaseMotion.hpp"
 #include "fem/modal/Modal.hpp"
+#include "fem/modal/ResponseSpectrum.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/stability/Buckling.hpp"
 #include "fem/stability/Prestressed.hpp"
@@ -145,6 +147,21 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
                                                    : solveModes(model, options);
               out.warnings.insert(out.warnings.end(), modal.warnings.begin(), modal.warnings.end());
               return modal;
+            },
+            [&](const ResponseSpectrumSpec& spec) -> AnalysisResult {
+              ResponseSpectrumOptions options;
+              options.modes = spec.modes;
+              options.shift = spec.shift;
+              options.dampingRatio = spec.damping;
+              options.rule = spec.rule;
+              options.directional = spec.directional;
+              options.directions = spec.directions;
+              ResponseSpectrumResult r = solveResponseSpectrum(model, spec.spectrum, options);
+              out.warnings = r.warnings;
+              return r;
+            },
+            [&](const BaseMotionSpec& spec) -> AnalysisResult {
+              return solveBaseMotion(model, spec.options);
             },
             [&](const TransientSpec& spec) -> AnalysisResult {
               return runTransient(deck, spec.run, model);

@@ -1,9 +1,14 @@
 // The rows of the table of analysis kinds (problems/deck/AnalysisKinds.hpp) that solve the
 // beams and frames as they are: statics (second_order: true included), modes (prestressed:
-// true included) and buckling. Each row states its deck type, its reader, the check
+// true included), buckling and the peak response to a ground acceleration's spectrum. Each row states its deck type, its reader, the check
 // quantities it answers and holds the settings its entry gives.
 #pragma once
 
+#include <vector>
+
+#include "fem/modal/BaseMotion.hpp"
+#include "fem/modal/DesignSpectrum.hpp"
+#include "fem/modal/ModalCombination.hpp"
 #include "problems/deck/AnalysisRow.hpp"
 
 namespace beamrotor {
@@ -40,6 +45,33 @@ struct BucklingSpec {
   void read(const reader::Context& c, const Field& f);
   int modes = 4;
   bool reversed = false;  ///< also the negative load factors (the load reversed)
+};
+
+/// Response-spectrum analysis (fem/modal/ResponseSpectrum.hpp): the modes' peak responses to
+/// a spectrum of ground acceleration, combined over the modes and the directions.
+struct ResponseSpectrumSpec {
+  static constexpr std::string_view deckType = "response-spectrum";
+  static constexpr std::array answers{Quantity::Kind::spectrum, Quantity::Kind::effectiveMass,
+                                      Quantity::Kind::frequency, Quantity::Kind::sectionProperty};
+  static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
+  int modes = 12;
+  double shift = 0;  ///< rad^2/s^2, as a modal analysis'
+  double damping = 0.05;
+  DesignSpectrum spectrum = DesignSpectrum::table({0, 1}, {0, 0});
+  ModalRule rule = ModalRule::cqc;
+  DirectionalRule directional = DirectionalRule::percent30;
+  std::vector<int> directions{0};  ///< 0 x, 1 y, 2 z
+};
+
+/// Harmonic motion of the ground (fem/modal/BaseMotion.hpp) over a range of frequencies.
+struct BaseMotionSpec {
+  static constexpr std::string_view deckType = "base-motion";
+  static constexpr std::array answers{Quantity::Kind::baseMotion, Quantity::Kind::sectionProperty};
+  static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
+  BaseMotionOptions options;
+  int modes = 12;  ///< modal method: modes taken (modesComputed reads it)
 };
 
 }  // namespace beamrotor
