@@ -38,19 +38,37 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
   }
   const PeakResponse& p = r.combined;
   out << "    combined peaks: base force";
-  for (int d = 0; d < 3; ++d) out << " " << directionName(d) << " " << formatValue(p.baseForce[d]);
+  const double base = std::max({p.baseForce[0], p.baseForce[1], p.baseForce[2]});
+  for (int d = 0; d < 3; ++d)
+    out << " " << directionName(d) << " "
+        << formatValue(p.baseForce[d] > 1e-9 * base ? p.baseForce[d] : 0.0);
   out << " N\n";
   for (int k = 0; k < 3; ++k)
-    if (p.displacement.rows() > 0 && p.displacement.col(k).maxCoeff() > 0) {
+    if (p.displacement.rows() > 0 &&
+        p.displacement.col(k).maxCoeff() > 1e-9 * p.displacement.leftCols(3).maxCoeff()) {
       int node = 0;
       const double largest = p.displacement.col(k).maxCoeff(&node);
       const std::string name = model.nameOf(node);
       out << "    largest " << dofName(kAllDofs[k]) << " " << formatValue(largest) << " m at "
           << (name.empty() ? "node " + std::to_string(node) : name) << "\n";
     }
+  // Components below 1e-9 of the largest of their kind (forces, moments) are round-off of a
+  // zero: left out, or shown as 0.
+  std::array<double, 2> largest{};  // forces, moments
   for (const ReactionComponent& c : p.reactions)
-    out << "    reaction " << c.support << " " << dofName(c.dof) << " "
-        << formatValue(c.value) << (isRotation(c.dof) ? " N m" : " N") << "\n";
+    largest[isRotation(c.dof)] = std::max(largest[isRotation(c.dof)], c.value);
+  for (const ReactionComponent& c : p.reactions)
+    if (c.value > 1e-9 * largest[isRotation(c.dof)])
+      out << "    reaction " << c.support << " " << dofName(c.dof) << " " << formatValue(c.value)
+          << (isRotation(c.dof) ? " N m" : " N") << "\n";
+  const auto isMoment = [](ForceComponent c) {
+    return c == ForceComponent::T || c == ForceComponent::My || c == ForceComponent::Mz;
+  };
+  std::array<double, 2> largestResultant{};
+  for (const BeamStation& s : p.stations)
+    for (ForceComponent c : kForceComponents)
+      largestResultant[isMoment(c)] =
+          std::max(largestResultant[isMoment(c)], componentOf(s.forces, c));
   for (const auto& [name, elements] : model.members()) {
     out << "    member " << padded(name, 12);
     for (ForceComponent c : kForceComponents) {
@@ -58,7 +76,8 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
       for (const BeamStation& s : p.stations)
         if (std::find(elements.begin(), elements.end(), s.element) != elements.end())
           peak = std::max(peak, componentOf(s.forces, c));
-      out << " " << componentName(c) << " " << formatValue(peak);
+      out << " " << componentName(c) << " "
+          << formatValue(peak > 1e-9 * largestResultant[isMoment(c)] ? peak : 0.0);
     }
     out << "\n";
   }

@@ -149,14 +149,7 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
               return modal;
             },
             [&](const ResponseSpectrumSpec& spec) -> AnalysisResult {
-              ResponseSpectrumOptions options;
-              options.modes = spec.modes;
-              options.shift = spec.shift;
-              options.dampingRatio = spec.damping;
-              options.rule = spec.rule;
-              options.directional = spec.directional;
-              options.directions = spec.directions;
-              ResponseSpectrumResult r = solveResponseSpectrum(model, spec.spectrum, options);
+              ResponseSpectrumResult r = solveResponseSpectrum(model, spec.spectrum, spec.options);
               out.warnings = r.warnings;
               return r;
             },

@@ -43,26 +43,29 @@ void ResponseSpectrumSpec::read(const reader::Context& c, const Field& f) {
                "combination", "directional"},
               "a response-spectrum analysis");
   if (auto m = f.get("modes")) modes = m->integer(c.evaluator, 1, kMaxModes);
+  options.modes = modes;
   // As a modal analysis' shift: the eigenvalue omega^2 (rad^2/s^2).
-  if (auto s = f.get("shift")) shift = s->number(c.evaluator, FieldUnit{Dimension::of(0, 0, -2, 2)});
+  if (auto s = f.get("shift"))
+    options.shift = s->number(c.evaluator, FieldUnit{Dimension::of(0, 0, -2, 2)});
   if (auto d = f.get("damping")) {
-    damping = d->positive(c.evaluator, dim::none);
-    if (damping >= 1) d->fail("damping is a ratio of critical below 1 (0.05 for 5 %)");
+    options.dampingRatio = d->positive(c.evaluator, dim::none);
+    if (options.dampingRatio >= 1) d->fail("damping is a ratio of critical below 1 (0.05 for 5 %)");
   }
   const Field s = f.require("spectrum");
   if (s.isMap() && s.has("table")) {
     s.allowOnly({"table"}, "a tabulated spectrum");
     spectrum = spectrumTable(c, s.require("table"));
   } else if (s.isMap()) {
-    spectrum = codeSpectrum(c, s, damping);
+    spectrum = codeSpectrum(c, s, options.dampingRatio);
   } else {
     s.fail("a spectrum is {table: [[T, Sa], ...]} or {code: EN1998-1, type, ground, ag}");
   }
   if (auto r = f.get("combination"))
-    rule = r->choice({"cqc", "srss"}) == "cqc" ? ModalRule::cqc : ModalRule::srss;
+    options.rule = r->choice({"cqc", "srss"}) == "cqc" ? ModalRule::cqc : ModalRule::srss;
   if (auto r = f.get("directional"))
-    directional =
+    options.directional =
         r->choice({"100/30", "srss"}) == "srss" ? DirectionalRule::srss : DirectionalRule::percent30;
+  std::vector<int>& directions = options.directions;
   if (auto d = f.get("directions")) {
     directions.clear();
     for (const Field& item : d->itemsOrSingle()) {

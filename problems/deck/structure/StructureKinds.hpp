@@ -7,8 +7,7 @@
 #include <vector>
 
 #include "fem/modal/BaseMotion.hpp"
-#include "fem/modal/DesignSpectrum.hpp"
-#include "fem/modal/ModalCombination.hpp"
+#include "fem/modal/ResponseSpectrum.hpp"
 #include "problems/deck/AnalysisRow.hpp"
 
 namespace beamrotor {
@@ -55,13 +54,9 @@ struct ResponseSpectrumSpec {
                                       Quantity::Kind::frequency, Quantity::Kind::sectionProperty};
   static constexpr bool needsMass = true;
   void read(const reader::Context& c, const Field& f);
-  int modes = 12;
-  double shift = 0;  ///< rad^2/s^2, as a modal analysis'
-  double damping = 0.05;
-  DesignSpectrum spectrum = DesignSpectrum::table({0, 1}, {0, 0});
-  ModalRule rule = ModalRule::cqc;
-  DirectionalRule directional = DirectionalRule::percent30;
-  std::vector<int> directions{0};  ///< 0 x, 1 y, 2 z
+  ResponseSpectrumOptions options;
+  DesignSpectrum spectrum;
+  int modes = 12;  ///< the options' modes (modesComputed reads it)
 };
 
 /// Harmonic motion of the ground (fem/modal/BaseMotion.hpp) over a range of frequencies.

@@ -157,9 +157,22 @@ std::string spectrumCurve(const ResponseSpectrumResult& r) {
   for (double T : periods)
     if (T <= last) data << number(T) << "," << number(r.spectrum.at(T)) << "\n";
   data << "EOD\n$modes << EOD\n";
-  for (std::size_t j = 0; j < r.modal.modes.size(); ++j)
-    data << number(periodOf(r.modal.modes[j])) << "," << number(r.spectralAcceleration[j]) << ","
-         << j + 1 << "\n";
+  // Modes within 1 % of the axis of each other share one label ("1,2,3"), at the first.
+  const std::size_t n = r.modal.modes.size();
+  for (std::size_t j = 0; j < n;) {
+    std::size_t end = j + 1;
+    std::string label = std::to_string(j + 1);
+    while (end < n &&
+           std::abs(periodOf(r.modal.modes[end]) - periodOf(r.modal.modes[j])) < 0.01 * last) {
+      label += ',';  // appended piece by piece: GCC 12 misreads "," + text
+      label += std::to_string(end + 1);
+      ++end;
+    }
+    for (std::size_t k = j; k < end; ++k)
+      data << number(periodOf(r.modal.modes[k])) << "," << number(r.spectralAcceleration[k])
+           << ",\"" << (k == j ? label : "") << "\"\n";
+    j = end;
+  }
   data << "EOD\n";
   return data.str();
 }
