@@ -111,7 +111,7 @@ void drawBaseMotionChart(const std::filesystem::path& dir, const CsvTable& table
   const int width = 1000, height = 760;
   std::ostringstream body;
   body << "  set encoding utf8\n"
-       << panelLayout(2, 1, caption, width, height, 40 + keyWidth(names)) << "  set grid\n"
+       << panelLayout(2, 1, caption, width, height, 90 + keyWidth(names)) << "  set grid\n"
        << "  set logscale y\n  set format y '10^{%L}'\n"
        << "  set key outside right top\n  set xrange [*:*] noextend\n";
   for (int panel = 0; panel < 2; ++panel) {
