@@ -111,19 +111,25 @@ TEST_SUITE("analysis kinds") {
         {"history tip max", "transient"},
         {"history tip min", "transient"},
         {"history tip maxabs", "transient"},
-        {"history tip at 0.1", "transient"}};
+        {"history tip at 0.1", "transient"},
+        {"spectrum displacement tip uy", "response-spectrum"},
+        {"effective_mass 2 x", "response-spectrum"},
+        {"base_motion transmissibility tip max", "base-motion"}};
     for (const auto& [text, type] : defaults) {
       CAPTURE(text);
       const Quantity q = parseQuantity(text);
       CHECK(defaultAnalysisType(q) == type);
       CHECK(answers(*analysisSpecNamed(type), q));
     }
-    // A rotor analysis also gives frequencies (its damped ones), and a torsion analysis those
-    // of the twist; no other row does.
+    // A rotor analysis also gives frequencies (its damped ones), a torsion analysis those of
+    // the twist and a response-spectrum analysis those of the modes it combines; no other row
+    // does.
     const Quantity frequency = parseQuantity("frequency 1");
     for (const std::string& type : analysisTypeNames()) {
       CAPTURE(type);
-      CHECK(answers(*analysisSpecNamed(type), frequency) == (type == "modal" || type == "rotor" || type == "torsion"));
+      CHECK(answers(*analysisSpecNamed(type), frequency) ==
+            (type == "modal" || type == "rotor" || type == "torsion" ||
+             type == "response-spectrum"));
     }
     CHECK_FALSE(answers(*analysisSpecNamed("frequency-response"), frequency));
   }
