@@ -6,9 +6,11 @@
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/parse/Suggest.hpp"
-#include "problems/deck/rotor/RotorQuantity.hpp"
 
 namespace beamrotor {
+
+/// "3" -> 3 (Quantity.cpp, which every family's quantities share).
+int parseOrdinal(const std::string& word, const std::string& what);
 
 namespace {
 
