@@ -7,11 +7,14 @@
 
 namespace beamrotor {
 
-HarmonicResponse::HarmonicResponse(const Model& model) : model_(model), dofs_(model) {
+HarmonicResponse::HarmonicResponse(const Model& model, double alpha, double beta)
+    : model_(model), dofs_(model) {
   SparseAssembler assembler(model, dofs_);
   K_ = assembler.assemble(MatrixKind::stiffness);
   M_ = assembler.assemble(MatrixKind::mass);
   C_ = assembler.assemble(MatrixKind::damping);
+  if (alpha != 0) C_ += alpha * M_;
+  if (beta != 0) C_ += beta * K_;
 }
 
 ComplexVector HarmonicResponse::solve(double w, const ComplexVector& f) const {

@@ -18,10 +18,13 @@ using ComplexVector = Eigen::VectorXcd;
 
 class HarmonicResponse {
  public:
-  /// Assembles K, M and C of `model` (which must outlive this).
-  explicit HarmonicResponse(const Model& model);
+  /// Assembles K, M and C of `model` (which must outlive this), with Rayleigh damping
+  /// alpha M + beta K (alpha in 1/s, beta in s) added to C.
+  explicit HarmonicResponse(const Model& model, double alpha = 0, double beta = 0);
   const DofMap& dofs() const { return dofs_; }
   const Model& model() const { return model_; }
+  /// The free-free mass matrix.
+  const SparseMatrix& mass() const { return M_; }
   /// The full-length complex amplitudes (ordered as dofs(); constrained dofs 0) under the
   /// full-length complex load `f` at w (rad/s). Throws SolveError when K - w^2 M + i w C is
   /// singular at w (an undamped natural frequency at w).

@@ -141,6 +141,7 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
       mode.energyShare[kind[eq]] += e;
       sum += e;
     }
+    mode.participation = participation;
     for (int k = 0; k < 3; ++k) mode.effectiveMass[k] = participation[k] * participation[k];
     if (sum > 0)
       for (double& s : mode.energyShare) s /= sum;

@@ -97,6 +97,9 @@ struct Mode {
   /// A zero-energy motion of the structure (a rigid-body mode or a mechanism): K's null space.
   bool rigidBody = false;
   NodalField shape;        ///< mass-normalised (phi^T M phi = 1)
+  /// Participation factor r_k' M phi (kg^0.5, signed as the shape) of rigid translation r_k
+  /// along ux, uy, uz; its square is the effective modal mass.
+  std::array<double, 3> participation{};
   /// Effective modal mass (kg) for rigid translation along ux, uy, uz.
   std::array<double, 3> effectiveMass{};
   /// Share of the mode's kinetic energy carried by each dof kind (sums to 1).

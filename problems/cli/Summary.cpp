@@ -15,6 +15,7 @@
 #include "problems/cli/MovingSummary.hpp"
 #include "problems/cli/MemberSummary.hpp"
 #include "problems/cli/RotorSummary.hpp"
+#include "problems/cli/SpectrumSummary.hpp"
 #include "problems/cli/StabilitySummary.hpp"
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/TorsionSummary.hpp"
@@ -34,6 +35,7 @@ SystemSize sizeOf(const RunResult& run) {
         Overloaded{[](const StaticOutcome& r) -> Size { return r.statics.size; },
                    [](const SecondOrderResult& r) -> Size { return r.secondOrder.size; },
                    [](const ModalResult& r) -> Size { return r.size; },
+                   [](const ResponseSpectrumResult& r) -> Size { return r.modal.size; },
                    [](const BucklingResult& r) -> Size { return r.size; },
                    [](const TransientOutcome& r) -> Size { return r.result.size; },
                    [](const RotorModesResult& r) -> Size { return r.size; },
@@ -50,7 +52,8 @@ SystemSize sizeOf(const RunResult& run) {
                    [](const BearingLoadsOutcome&) -> Size { return std::nullopt; },
                    [](const LevelOneOutcome&) -> Size { return std::nullopt; },
                    [](const CrankSliderOutcome&) -> Size { return std::nullopt; },
-                   [](const MovingLoadOutcome&) -> Size { return std::nullopt; }},
+                   [](const MovingLoadOutcome&) -> Size { return std::nullopt; },
+                   [](const BaseMotionResult&) -> Size { return std::nullopt; }},
         a.result);
     if (size) return *size;
   }
@@ -202,7 +205,9 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
             [&](const TransientOutcome&) { printTransient(out, a, units); },
             [&](const RotorResult auto& r) { printRotor(out, a, r, units); },
             [&](const CrankSliderOutcome&) { printCrankSlider(out, a, units); },
-            [&](const MovingLoadOutcome& r) { printMovingLoad(out, a, r); }},
+            [&](const MovingLoadOutcome& r) { printMovingLoad(out, a, r); },
+            [&](const ResponseSpectrumResult& r) { printSpectrum(out, a, r, *run.model); },
+            [&](const BaseMotionResult& r) { printBaseMotion(out, a, r, *run.model); }},
         a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }

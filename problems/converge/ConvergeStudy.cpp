@@ -208,6 +208,9 @@ SolveCost costOf(const AnalysisOutcome& a) {
                  [](const ModalResult& r) -> SolveCost {
                    return {r.time, r.size};
                  },
+                 [](const ResponseSpectrumResult& r) -> SolveCost {
+                   return {r.modal.time, r.modal.size};
+                 },
                  [](const TorsionOutcome& r) -> SolveCost {
                    return {r.modes.time, r.modes.size};
                  },
@@ -234,6 +237,7 @@ SolveCost costOf(const AnalysisOutcome& a) {
                  [](const CriticalSpeedMapOutcome&) -> SolveCost { return {}; },
                  [](const BearingLoadsOutcome&) -> SolveCost { return {}; },
                  [](const LevelOneOutcome&) -> SolveCost { return {}; },
+                 [](const BaseMotionResult&) -> SolveCost { return {}; },
                  // A mechanism has no mesh to refine (studiable): nothing of it is timed.
                  [](const CrankSliderOutcome&) -> SolveCost { return {}; },
                  // Its solves are many right-hand sides of one factorisation, not timed apart.

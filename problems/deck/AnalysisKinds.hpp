@@ -27,8 +27,8 @@ namespace beamrotor {
 using AnalysisSpec = std::variant<StaticSpec, ModalSpec, BucklingSpec, TransientSpec, RotorSpec,
                                   CampbellSpec, UnbalanceSpec, RigidBodySpec, FrequencyResponseSpec,
                                   CrankSliderSpec, CriticalSpeedMapSpec, BearingLoadsSpec,
-                                  TorsionSpec, LevelOneSpec, MovingLoadSpec,
-                                  RunUpSpec>;
+                                  TorsionSpec, LevelOneSpec, MovingLoadSpec, RunUpSpec,
+                                  ResponseSpectrumSpec, BaseMotionSpec>;
 
 /// Every row's deck type, in row order.
 std::vector<std::string> analysisTypeNames();

@@ -59,6 +59,18 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
       return crankReferenceUnit(q);
     case K::torsion:
       return {q.property == "torque" ? dim::moment : dim::angle};
+    case K::spectrum:
+      if (q.property == "member")
+        return {q.extreme == "N" || q.extreme.starts_with('V') ? dim::force : dim::moment};
+      if (q.property == "displacement") return unitForDof(q.dof, dim::length, dim::angle);
+      return unitForDof(q.dof, dim::force, dim::moment);  // reaction, base_shear
+    case K::effectiveMass:
+      return {q.mode > 0 ? dim::mass : dim::none};
+    case K::baseMotion:
+      if (q.property == "relative" || q.property == "absolute") return {dim::length};
+      if (q.property == "base_force") return {dim::force};
+      if (q.property == "peak_frequency") return {dim::frequency};
+      return {};  // transmissibility
     default:
       return {};  // buckling_factor, log_decrement; histories: their unit is free text
   }

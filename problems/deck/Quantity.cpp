@@ -8,6 +8,7 @@
 #include "problems/deck/crank/CrankQuantity.hpp"
 #include "problems/deck/parse/PlainText.hpp"
 #include "problems/deck/rotor/RotorQuantity.hpp"
+#include "problems/deck/structure/SpectrumQuantity.hpp"
 #include "problems/deck/torsion/TorsionQuantity.hpp"
 
 namespace beamrotor {
@@ -24,10 +25,15 @@ constexpr const char* kGrammar =
     "'rigid_body PROPERTY', 'level1 PROPERTY', 'runup peak|speed_at_peak POINT', "
     "'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
     "'crank PROPERTY at PHI deg', 'torsion torque NAME', 'torsion twist STATION', "
-    "'history NAME max|min|maxabs', 'history NAME at TIME', 'resultant N|Vy|Vz|T|My|Mz at POINT' "
-    "or 'moving max|min QUANTITY'";
+    "'history NAME max|min|maxabs', 'history NAME at TIME', 'resultant N|Vy|Vz|T|My|Mz at POINT', "
+    "'moving max|min QUANTITY', "
+    "'spectrum displacement|reaction NAME DOF', 'spectrum base_shear DIR', "
+    "'spectrum member NAME COMP max', 'effective_mass N DIR', 'captured_mass DIR', "
+    "'base_motion transmissibility|relative|absolute POINT max', 'base_motion base_force max' "
+    "or 'base_motion peak_frequency POINT'";
 
-/// ux..rz, or the force/moment names fx fy fz mx my mz for the same dofs.
+}  // namespace
+
 Dof parseComponent(const std::string& word) {
   if (auto d = parseDof(word)) return *d;
   static const std::vector<std::pair<std::string, Dof>> aliases{{"fx", Dof::ux}, {"fy", Dof::uy},
@@ -38,8 +44,6 @@ Dof parseComponent(const std::string& word) {
   throw std::invalid_argument("'" + word +
                               "' is not a component (ux uy uz rx ry rz, or fx fy fz mx my mz)");
 }
-
-}  // namespace
 
 int parseOrdinal(const std::string& n, const std::string& what) {
   const bool digits = !n.empty() && n.size() <= 4 &&
@@ -150,6 +154,7 @@ Quantity parseQuantity(const std::string& text) {
   if (parseRotorQuantity(words, q)) return q;
   if (parseCrankQuantity(words, q)) return q;
   if (parseTorsionQuantity(words, q)) return q;
+  if (parseSpectrumQuantity(words, q)) return q;
   if ((head == "stress" || head == "shear" || head == "moment") && words.size() == 2 &&
       words[1] == "max") {
     q.kind = head == "stress"  ? Quantity::Kind::maxStress

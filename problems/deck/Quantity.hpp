@@ -32,6 +32,20 @@
 //   runup speed_at_peak POINT the speed of the revolution where it occurs (rpm)
 //   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
 //                             (N, per unit modal amplitude) of a rigid-body analysis
+// those of the response-spectrum analysis (structure/SpectrumQuantity.hpp):
+//   spectrum displacement POINT DOF   combined peak displacement (m, rad) relative to the ground
+//   spectrum reaction SUPPORT DOF     combined peak reaction (N, N m)
+//   spectrum base_shear x|y|z         combined peak total force into the ground (N)
+//   spectrum member NAME COMP max     largest combined peak of a resultant along a member
+//   effective_mass N x|y|z            effective modal mass of mode N (kg)
+//   captured_mass x|y|z               the modes' effective masses over the total mass
+// and of the base-motion analysis (the largest over its frequencies):
+//   base_motion transmissibility POINT max   |absolute acceleration| / |ground's|, along the
+//                                            ground's direction
+//   base_motion relative POINT max   |displacement relative to the ground| (m)
+//   base_motion absolute POINT max   |absolute displacement| (m)
+//   base_motion base_force max       |force the ground exerts| (N)
+//   base_motion peak_frequency POINT   the frequency (Hz) of the largest transmissibility
 // and those of the crank-slider analysis (CrankQuantity.hpp):
 //   crank PROPERTY [at LAMBDA]   a figure of the mechanism, or a row of its harmonic table
 //   crank PROPERTY at PHI deg    the motion or a load of the first crank at crank angle PHI
@@ -74,7 +88,10 @@ struct Quantity {
     historyAt,  // transient analyses
     resultantAt,
     movingMax,
-    movingMin  // moving-load analyses: the envelope of `inner`
+    movingMin,     // moving-load analyses: the envelope of `inner`
+    spectrum,      // response-spectrum: `spectrum WHAT ...` (property: what)
+    effectiveMass,  // response-spectrum: effective_mass N DIR (mode N), captured_mass DIR (mode 0)
+    baseMotion      // base-motion: `base_motion PROPERTY [POINT] ...`
   };
   Kind kind = Kind::reaction;
   std::string target;    ///< support (reaction), point (displacement) or history name
@@ -87,7 +104,8 @@ struct Quantity {
   int mode = 1;  ///< frequency, buckling_factor, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
   std::string property;  ///< rigid_body, level1: which property; torsion: torque or twist;
-                         ///< memberForce: N, Vy, Vz, T, My, Mz;
+                         ///< memberForce: N, Vy, Vz, T, My, Mz; spectrum: displacement,
+                         ///< reaction, base_shear or member (its component in `extreme`);
                          ///< sectionProperty: one of kSectionProperties
   std::string extreme;   ///< memberForce: max, min or maxabs
   double lambda = 0;     ///< crankSlider `... at LAMBDA`: the table row; 0 for the mechanism's own
@@ -102,6 +120,10 @@ struct Quantity {
 /// The properties `section NAME PROPERTY` names, in the steel tables' axes.
 inline constexpr const char* kSectionProperties[] = {"A",     "Iy",    "Iz",    "It",
                                                      "Wel_y", "Wel_z", "Wpl_y", "Wpl_z"};
+
+/// ux..rz, or the force/moment names fx fy fz mx my mz for the same dofs; throws
+/// std::invalid_argument for another word.
+Dof parseComponent(const std::string& word);
 
 /// Parses the phrase; throws std::invalid_argument saying what is wrong and what is allowed.
 /// Names are not checked here (the deck reader knows them).

@@ -26,6 +26,8 @@
 #include "problems/output/structure/StabilityOutput.hpp"
 #include "problems/output/transient/TransientJson.hpp"
 #include "problems/run/Overloaded.hpp"
+#include "problems/output/structure/BaseMotionOutput.hpp"
+#include "problems/output/structure/SpectrumOutput.hpp"
 
 namespace beamrotor {
 
@@ -468,7 +470,13 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
             [&](const TransientOutcome&) { return transientJson(a); },
             [&](const RotorResult auto& r) { return rotorJson(a, r); },
             [&](const MovingLoadOutcome&) { return movingJson(a, fileStem(a.name)); },
-            [&](const CrankSliderOutcome&) { return crankJson(a, fileStem(a.name)); }},
+            [&](const CrankSliderOutcome&) { return crankJson(a, fileStem(a.name)); },
+            [&](const ResponseSpectrumResult& r) {
+              Json entry = modalJson(carried, a, r.modal);
+              entry.update(spectrumJson(a.type, a.name, r, model));
+              return entry;
+            },
+            [&](const BaseMotionResult& r) { return baseMotionJson(a.type, a.name, r, model); }},
         a.result));
     if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;
   }

@@ -37,6 +37,8 @@
 #include "problems/output/transient/TransientFiles.hpp"
 #include "problems/output/structure/VtkWriter.hpp"
 #include "problems/run/Overloaded.hpp"
+#include "problems/output/structure/BaseMotionOutput.hpp"
+#include "problems/output/structure/SpectrumOutput.hpp"
 
 namespace beamrotor {
 
@@ -191,6 +193,16 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             [&](const MovingLoadOutcome& r) {
               for (const CsvTable& table : p.moving) table.write(dir / table.title());
               if (charts) drawMovingCharts(dir, r, p.stem, captionOf(prepared, a.name));
+            },
+            [&](const ResponseSpectrumResult& r) {
+              writeModalFiles(prepared, p, model, r.modal, dir, charts);
+              for (const CsvTable& table : p.spectrum) table.write(dir / table.title());
+              writeSpectrumFiles(dir, r, model, p.stem, captionOf(prepared, a.name), charts);
+            },
+            [&](const BaseMotionResult&) {
+              p.baseMotion->write(dir / p.baseMotion->title());
+              if (charts)
+                drawBaseMotionChart(dir, *p.baseMotion, p.stem, captionOf(prepared, a.name));
             },
             [&](const CrankSliderOutcome& r) {
               for (const CsvTable& table : p.crank) table.write(dir / table.title());

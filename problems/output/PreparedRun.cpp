@@ -17,13 +17,15 @@
 #include "problems/output/structure/ThinnedStations.hpp"
 #include "problems/output/transient/TransientFiles.hpp"
 #include "problems/run/Overloaded.hpp"
+#include "problems/output/structure/BaseMotionOutput.hpp"
+#include "problems/output/structure/SpectrumOutput.hpp"
 
 namespace beamrotor {
 
 std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() const {
   std::vector<std::pair<std::string, const CsvTable*>> all;
   for (const std::optional<CsvTable>* t :
-       {&fields, &reactions, &springs, &modes, &shapes, &history})
+       {&fields, &reactions, &springs, &modes, &shapes, &history, &baseMotion})
     if (*t) all.emplace_back((*t)->title(), &**t);
   if (caseTable) all.emplace_back(caseTable->title(), &*caseTable);
   if (rotor)
@@ -33,7 +35,8 @@ std::vector<std::pair<std::string, const CsvTable*>> PreparedAnalysis::tables() 
           &rotor->mapCrossings, &rotor->bearingLoads, &rotor->sag, &rotor->levelOne,
           &rotor->runUp, &rotor->runUpHistory})
       if (*t) all.emplace_back((*t)->title(), &**t);
-  for (const std::vector<CsvTable>* list : {&members, &envelopes, &crank, &torsion, &moving})
+  for (const std::vector<CsvTable>* list :
+       {&members, &envelopes, &crank, &torsion, &moving, &spectrum})
     for (const CsvTable& t : *list) all.emplace_back(t.title(), &t);
   return all;
 }
@@ -159,7 +162,8 @@ Json checkedDocument(const RunResult& run, const std::vector<AnalysisExtremes>& 
 
 /// Every table of p in `units` (inUnits).
 void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
-  for (std::optional<CsvTable>* t : {&p.fields, &p.springs, &p.modes, &p.shapes, &p.history})
+  for (std::optional<CsvTable>* t :
+       {&p.fields, &p.springs, &p.modes, &p.shapes, &p.history, &p.baseMotion})
     if (*t) *t = inUnits(**t, units);
   if (p.rotor)
     for (std::optional<CsvTable>* t :
@@ -168,7 +172,8 @@ void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
           &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag,
           &p.rotor->runUp, &p.rotor->runUpHistory, &p.rotor->levelOne})
       if (*t) *t = inUnits(**t, units);
-  for (std::vector<CsvTable>* list : {&p.members, &p.envelopes, &p.crank, &p.torsion})
+  for (std::vector<CsvTable>* list :
+       {&p.members, &p.envelopes, &p.crank, &p.torsion, &p.moving, &p.spectrum})
     for (CsvTable& t : *list) t = inUnits(t, units);
 }
 
@@ -222,7 +227,13 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
             },
             [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
             [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); },
-            [&](const MovingLoadOutcome& r) { p.moving = movingTables(r, p.stem); }},
+            [&](const MovingLoadOutcome& r) { p.moving = movingTables(r, p.stem); },
+            [&](const ResponseSpectrumResult& r) {
+              p.modes = modesTable(modesCsv(p.stem), r.modal);
+              p.shapes = modeShapesTable(shapesCsv(p.stem), model, r.modal);
+              p.spectrum = spectrumTables(r, model, p.stem);
+            },
+            [&](const BaseMotionResult& r) { p.baseMotion = baseMotionTable(r, model, p.stem); }},
         a.result);
     prepared.analyses.push_back(std::move(p));
   }

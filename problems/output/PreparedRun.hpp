@@ -44,6 +44,7 @@ struct PreparedAnalysis {
   std::optional<CsvTable> modes;   ///< modal: <stem>_modes.csv; buckling: <stem>_factors.csv
   std::optional<CsvTable> shapes;  ///< modal, buckling: <stem>_shapes.csv
   std::optional<CsvTable> history;      ///< transient: <stem>_history.csv
+  std::optional<CsvTable> baseMotion;   ///< base motion: <stem>_base_motion.csv
   std::optional<PreparedRotor> rotor;   ///< rotor analyses
   /// Statics of a frame: <stem>_member_<name>.csv each, or the one <stem>_members.csv
   /// (oneMembersTable).
@@ -60,6 +61,7 @@ struct PreparedAnalysis {
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
   std::vector<CsvTable> torsion;  ///< a train: interference, crossings, torques, response
   std::vector<CsvTable> moving;   ///< a moving load: influence lines, envelopes
+  std::vector<CsvTable> spectrum;  ///< response spectrum: modes, displacements, reactions, members
 
   /// Every table this analysis has, each with its CSV file name, in writing order.
   std::vector<std::pair<std::string, const CsvTable*>> tables() const;

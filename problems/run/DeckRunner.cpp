@@ -8,7 +8,9 @@
 
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
+#include "fem/modal/BaseMotion.hpp"
 #include "fem/modal/Modal.hpp"
+#include "fem/modal/ResponseSpectrum.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/stability/Buckling.hpp"
 #include "fem/stability/Prestressed.hpp"
@@ -162,6 +164,14 @@ AnalysisOutcome solve(const Deck& deck, const DeckAnalysis& a, const Model& mode
                                                    : solveModes(model, options);
               out.warnings.insert(out.warnings.end(), modal.warnings.begin(), modal.warnings.end());
               return modal;
+            },
+            [&](const ResponseSpectrumSpec& spec) -> AnalysisResult {
+              ResponseSpectrumResult r = solveResponseSpectrum(model, spec.spectrum, spec.options);
+              out.warnings = r.warnings;
+              return r;
+            },
+            [&](const BaseMotionSpec& spec) -> AnalysisResult {
+              return solveBaseMotion(model, spec.options);
             },
             [&](const TransientSpec& spec) -> AnalysisResult {
               return runTransient(deck, spec.run, model);

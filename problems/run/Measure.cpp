@@ -12,6 +12,7 @@
 #include "problems/deck/AnalysisKinds.hpp"
 #include "problems/run/MeasureRotor.hpp"
 #include "problems/run/MeasureSection.hpp"
+#include "problems/run/MeasureSpectrum.hpp"
 #include "problems/run/RunCrankSlider.hpp"
 #include "problems/run/RunMovingLoad.hpp"
 #include "problems/run/TransientOutcome.hpp"
@@ -101,6 +102,17 @@ double measure(const Quantity& q, const AnalysisOutcome& outcome, const Model& m
       throw std::invalid_argument("analysis '" + outcome.name + "' is not a moving-load analysis");
     const TrainEnvelope& e = moving->quantity(q.inner->text).envelope;
     return q.kind == Quantity::Kind::movingMax ? e.max.value : e.min.value;
+  }
+  if (q.kind == Quantity::Kind::baseMotion) {
+    const auto* motion = resultOf<BaseMotionResult>(outcome);
+    if (!motion) throw std::invalid_argument("analysis '" + outcome.name + "' is not a base-motion one");
+    return measureBaseMotion(q, *motion, model);
+  }
+  if (q.kind == Quantity::Kind::spectrum || q.kind == Quantity::Kind::effectiveMass) {
+    const auto* spectrum = resultOf<ResponseSpectrumResult>(outcome);
+    if (!spectrum)
+      throw std::invalid_argument("analysis '" + outcome.name + "' is not a response-spectrum one");
+    return measureSpectrum(q, *spectrum, model);
   }
   if (q.kind == Quantity::Kind::frequency) {
     const ModalResult* modal = modesOf(outcome, model).modes;

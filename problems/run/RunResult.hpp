@@ -16,6 +16,8 @@
 #include "fem/model/Loading.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
+#include "fem/modal/BaseMotion.hpp"
+#include "fem/modal/ResponseSpectrum.hpp"
 #include "fem/stability/StabilityResults.hpp"
 #include "problems/deck/Deck.hpp"
 #include "problems/run/AdequateChoice.hpp"
@@ -83,7 +85,7 @@ using AnalysisResult =
                  RotorModesResult, CampbellOutcome, UnbalanceOutcome, RigidBodyOutcome,
                  FrequencyResponseOutcome, CriticalSpeedMapOutcome, BearingLoadsOutcome,
                  CrankSliderOutcome, TorsionOutcome, LevelOneOutcome, MovingLoadOutcome,
-                 RunUpOutcome>;
+                 RunUpOutcome, ResponseSpectrumResult, BaseMotionResult>;
 
 /// One analysis of a deck, solved.
 struct AnalysisOutcome {
@@ -119,8 +121,8 @@ inline StaticResult* staticsOf(AnalysisOutcome& a) {
   return const_cast<StaticResult*>(staticsOf(std::as_const(a)));
 }
 
-/// The modes of a modal or torsion analysis with the model they are shaped on (a torsion
-/// analysis has its own); null for the other kinds.
+/// The modes of a modal, torsion or response-spectrum analysis with the model they are shaped
+/// on (a torsion analysis has its own); null for the other kinds.
 struct ModesOn {
   const ModalResult* modes = nullptr;
   const Model* model = nullptr;
@@ -128,6 +130,7 @@ struct ModesOn {
 inline ModesOn modesOf(const AnalysisOutcome& a, const Model& deckModel) {
   if (const auto* m = resultOf<ModalResult>(a)) return {m, &deckModel};
   if (const auto* t = resultOf<TorsionOutcome>(a)) return {&t->modes, t->model.get()};
+  if (const auto* s = resultOf<ResponseSpectrumResult>(a)) return {&s->modal, &deckModel};
   return {};
 }
 

@@ -51,7 +51,7 @@ TEST_SUITE("analysis kinds") {
   TEST_CASE("every analysis type FORMAT.md lists has exactly one row, and every row is listed") {
     const std::vector<std::string> listed = formatTypeList();
     const std::vector<std::string> rows = analysisTypeNames();
-    CHECK(listed.size() == 16);
+    CHECK(listed.size() == 18);
     for (const std::string& name : listed) {
       CAPTURE(name);
       CHECK(std::count(rows.begin(), rows.end(), name) == 1);
@@ -114,19 +114,25 @@ TEST_SUITE("analysis kinds") {
         {"history tip at 0.1", "transient"},
         {"resultant Mz at mid", "static"},
         {"moving max reaction left uy", "moving-load"},
-        {"moving min resultant Vy at mid", "moving-load"}};
+        {"moving min resultant Vy at mid", "moving-load"},
+        {"spectrum displacement tip uy", "response-spectrum"},
+        {"effective_mass 2 x", "response-spectrum"},
+        {"base_motion transmissibility tip max", "base-motion"}};
     for (const auto& [text, type] : defaults) {
       CAPTURE(text);
       const Quantity q = parseQuantity(text);
       CHECK(defaultAnalysisType(q) == type);
       CHECK(answers(*analysisSpecNamed(type), q));
     }
-    // A rotor analysis also gives frequencies (its damped ones), and a torsion analysis those
-    // of the twist; no other row does.
+    // A rotor analysis also gives frequencies (its damped ones), a torsion analysis those of
+    // the twist and a response-spectrum analysis those of the modes it combines; no other row
+    // does.
     const Quantity frequency = parseQuantity("frequency 1");
     for (const std::string& type : analysisTypeNames()) {
       CAPTURE(type);
-      CHECK(answers(*analysisSpecNamed(type), frequency) == (type == "modal" || type == "rotor" || type == "torsion"));
+      CHECK(answers(*analysisSpecNamed(type), frequency) ==
+            (type == "modal" || type == "rotor" || type == "torsion" ||
+             type == "response-spectrum"));
     }
     CHECK_FALSE(answers(*analysisSpecNamed("frequency-response"), frequency));
   }

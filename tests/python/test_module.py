@@ -350,7 +350,8 @@ def test_csv_tables_read_by_numpy_as_written(tmp_path, deck):
 @pytest.mark.parametrize("deck", ["continuous_beam.yaml", "compressor_rotor.yaml",
                                   "forme_shaft_rotor.yaml", "portal_frame.yaml",
                                   "snt32_drive.yaml", "mo10_steady.yaml", "pump_rod.yaml",
-                                  "jeffcott_runup.yaml"])
+                                  "jeffcott_runup.yaml",
+                                  "machine_base_frame.yaml"])
 def test_tables_hold_every_table_the_command_line_writes(tmp_path, deck):
     """Every CSV file of the results directory is a table of run.tables, with its columns and
     rows: the load cases, the bearing loads, the critical-speed map and the orbits too."""

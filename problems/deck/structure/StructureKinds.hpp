@@ -1,14 +1,17 @@
 // The rows of the table of analysis kinds (problems/deck/AnalysisKinds.hpp) that solve the
 // beams and frames as they are: statics (second_order: true included), modes (prestressed:
-// true included), buckling and a train of loads moving along a path (influence lines and
-// their envelopes). Each row states its deck type, its reader, the check
-// quantities it answers and holds the settings its entry gives.
+// true included), buckling, a train of loads moving along a path (influence lines and
+// their envelopes) and the peak response to a ground acceleration's spectrum. Each row states
+// its deck type, its reader, the check quantities it answers and holds the settings its entry
+// gives.
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
 
+#include "fem/modal/BaseMotion.hpp"
+#include "fem/modal/ResponseSpectrum.hpp"
 #include "problems/deck/AnalysisRow.hpp"
 #include "problems/deck/parse/DeckError.hpp"
 
@@ -69,6 +72,29 @@ struct MovingLoadSpec {
   std::vector<Quantity> quantities;  ///< reactions, displacements, resultants at points
   double pathLength = 0;             ///< m
   DeckPlace place;
+};
+
+/// Response-spectrum analysis (fem/modal/ResponseSpectrum.hpp): the modes' peak responses to
+/// a spectrum of ground acceleration, combined over the modes and the directions.
+struct ResponseSpectrumSpec {
+  static constexpr std::string_view deckType = "response-spectrum";
+  static constexpr std::array answers{Quantity::Kind::spectrum, Quantity::Kind::effectiveMass,
+                                      Quantity::Kind::frequency, Quantity::Kind::sectionProperty};
+  static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
+  ResponseSpectrumOptions options;
+  DesignSpectrum spectrum;
+  int modes = 12;  ///< the options' modes (modesComputed reads it)
+};
+
+/// Harmonic motion of the ground (fem/modal/BaseMotion.hpp) over a range of frequencies.
+struct BaseMotionSpec {
+  static constexpr std::string_view deckType = "base-motion";
+  static constexpr std::array answers{Quantity::Kind::baseMotion, Quantity::Kind::sectionProperty};
+  static constexpr bool needsMass = true;
+  void read(const reader::Context& c, const Field& f);
+  BaseMotionOptions options;
+  int modes = 12;  ///< modal method: modes taken (modesComputed reads it)
 };
 
 }  // namespace beamrotor

@@ -6,6 +6,7 @@
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/ReaderContext.hpp"
+#include "problems/deck/structure/SpectrumQuantity.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 
 namespace beamrotor::reader {
@@ -317,13 +318,15 @@ std::string resolveQuantity(const Context& c, Quantity& q, const Field& f,
     f.fail("'displacement max' needs beams; name a point: 'displacement POINT DOF'");
   if (analysis->as<TransientSpec>()) resolveHistoryQuantity(c, q, f, *analysis, applicable);
   const int modes = modesComputed(analysis->kind);
-  if ((q.kind == Quantity::Kind::frequency || q.kind == Quantity::Kind::bucklingFactor) &&
+  if ((q.kind == Quantity::Kind::frequency || q.kind == Quantity::Kind::bucklingFactor ||
+       q.kind == Quantity::Kind::effectiveMass) &&
       q.mode > modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + analysis->name +
            "' computes " + std::to_string(modes) + " modes (set its modes:)");
   resolveRotorQuantity(c, q, f, *analysis);
   resolveCrankQuantity(q, f, *analysis);
   resolveTorsionQuantity(c, q, f, *analysis);
+  requireSpectrumNames(deck, q, f);
   return analysis->name;
 }
 

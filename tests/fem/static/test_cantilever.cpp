@@ -10,7 +10,7 @@ using namespace beamrotor::test;
 
 // Hermite cubics reproduce the exact deflection of an end-loaded beam: only round-off remains
 // (condition number ~1e6 for these models times machine epsilon ~1e-16).
-constexpr double kExact = 1e-10;
+constexpr double kHermiteRoundOff = 1e-10;
 
 TEST_SUITE("statics") {
   TEST_CASE("Euler-Bernoulli cantilever: tip force and tip moment are exact") {
@@ -25,10 +25,10 @@ TEST_SUITE("statics") {
         clamp(m, "root", line.nodes.front(), DofSet::planar());
         m.addLoad({line.nodes.back(), Dof::uy, -P});
         const StaticResult r = solveStatic(m);
-        CHECK(relError(r.displacement(line.nodes.back(), 1), -P * L * L * L / (3 * EI)) < kExact);
-        CHECK(relError(r.displacement(line.nodes.back(), 5), -P * L * L / (2 * EI)) < kExact);
-        CHECK(relError(r.reaction("root", Dof::uy), P) < kExact);
-        CHECK(relError(r.reaction("root", Dof::rz), P * L) < kExact);
+        CHECK(relError(r.displacement(line.nodes.back(), 1), -P * L * L * L / (3 * EI)) < kHermiteRoundOff);
+        CHECK(relError(r.displacement(line.nodes.back(), 5), -P * L * L / (2 * EI)) < kHermiteRoundOff);
+        CHECK(relError(r.reaction("root", Dof::uy), P) < kHermiteRoundOff);
+        CHECK(relError(r.reaction("root", Dof::rz), P * L) < kHermiteRoundOff);
       }
       SUBCASE("tip moment") {
         Model m;
@@ -36,8 +36,8 @@ TEST_SUITE("statics") {
         clamp(m, "root", line.nodes.front(), DofSet::planar());
         m.addLoad({line.nodes.back(), Dof::rz, M0});
         const StaticResult r = solveStatic(m);
-        CHECK(relError(r.displacement(line.nodes.back(), 1), M0 * L * L / (2 * EI)) < kExact);
-        CHECK(relError(r.displacement(line.nodes.back(), 5), M0 * L / EI) < kExact);
+        CHECK(relError(r.displacement(line.nodes.back(), 1), M0 * L * L / (2 * EI)) < kHermiteRoundOff);
+        CHECK(relError(r.displacement(line.nodes.back(), 5), M0 * L / EI) < kHermiteRoundOff);
       }
     }
   }
@@ -53,8 +53,8 @@ TEST_SUITE("statics") {
     m.addLoad({line.nodes.back(), Dof::uy, P2});
     const StaticResult r = solveStatic(m);
     CHECK(relError(r.displacement(line.nodes.back(), 1), (P1 + P2) * L * L * L / (3 * sec->EIz())) <
-          kExact);
-    CHECK(relError(r.reaction("root", Dof::uy), -(P1 + P2)) < kExact);
+          kHermiteRoundOff);
+    CHECK(relError(r.reaction("root", Dof::uy), -(P1 + P2)) < kHermiteRoundOff);
   }
 
   TEST_CASE("3D cantilever, b != h, uniform load in each plane: deflection and moments") {
@@ -83,8 +83,8 @@ TEST_SUITE("statics") {
         clamp(m, "root", line.nodes.front(), DofSet::frame3d());
         const StaticResult r = solveStatic(m);
         const double tip = q * std::pow(L, 4) / (8 * E * I) + shear;
-        CHECK(relError(r.displacement(line.nodes.back(), axis), tip) < kExact);
-        CHECK(std::abs(r.displacement(line.nodes.back(), 3 - axis)) < kExact * std::abs(tip));
+        CHECK(relError(r.displacement(line.nodes.back(), axis), tip) < kHermiteRoundOff);
+        CHECK(std::abs(r.displacement(line.nodes.back(), 3 - axis)) < kHermiteRoundOff * std::abs(tip));
         // Stations every quarter of each element, ends included.
         const std::vector<BeamStation> stations = recoverBeamFields({m, r.displacement}, 4);
         REQUIRE(stations.size() == std::size_t(n * 5));
@@ -94,9 +94,9 @@ TEST_SUITE("statics") {
           CHECK(std::abs(st.position.x() - x) < 1e-14 * L);
           const double V = q * (L - x), M = q * (L - x) * (L - x) / 2;
           const SectionForces& f = st.forces;
-          CHECK(std::abs((axis == 1 ? f.Vy : f.Vz) - V) < kExact * std::abs(q * L));
-          CHECK(std::abs((axis == 1 ? f.Mz : -f.My) - M) < kExact * std::abs(q * L * L));
-          CHECK(std::abs(axis == 1 ? f.My : f.Mz) < kExact * std::abs(q * L * L));
+          CHECK(std::abs((axis == 1 ? f.Vy : f.Vz) - V) < kHermiteRoundOff * std::abs(q * L));
+          CHECK(std::abs((axis == 1 ? f.Mz : -f.My) - M) < kHermiteRoundOff * std::abs(q * L * L));
+          CHECK(std::abs(axis == 1 ? f.My : f.Mz) < kHermiteRoundOff * std::abs(q * L * L));
         }
       }
   }

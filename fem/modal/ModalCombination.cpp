@@ -1,0 +1,41 @@
+#include "fem/modal/ModalCombination.hpp"
+
+#include <cmath>
+
+namespace beamrotor {
+
+double cqcCorrelation(double wi, double wj, double xi) {
+  const double r = wj / wi;
+  const double num = 8 * xi * xi * (1 + r) * std::pow(r, 1.5);
+  const double den = (1 - r * r) * (1 - r * r) + 4 * xi * xi * r * (1 + r) * (1 + r);
+  return den > 0 ? num / den : 1;
+}
+
+Eigen::MatrixXd modalCorrelations(const std::vector<double>& omega, double dampingRatio,
+                                  ModalRule rule) {
+  const int n = int(omega.size());
+  Eigen::MatrixXd rho = Eigen::MatrixXd::Identity(n, n);
+  if (rule == ModalRule::cqc)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        if (i != j) rho(i, j) = cqcCorrelation(omega[i], omega[j], dampingRatio);
+  return rho;
+}
+
+Eigen::VectorXd combineModes(const Eigen::MatrixXd& modal, const Eigen::MatrixXd& rho) {
+  // rho is positive semi-definite, so each q' rho q >= 0 up to round-off: clip that at zero.
+  const Eigen::MatrixXd weighted = modal * rho;
+  return weighted.cwiseProduct(modal).rowwise().sum().cwiseMax(0.0).cwiseSqrt();
+}
+
+Eigen::VectorXd combineDirections(const Eigen::MatrixXd& perDirection, DirectionalRule rule) {
+  if (perDirection.cols() == 0) return Eigen::VectorXd::Zero(perDirection.rows());
+  if (rule == DirectionalRule::srss) return perDirection.rowwise().norm();
+  const Eigen::VectorXd sum = perDirection.rowwise().sum();
+  Eigen::VectorXd best = Eigen::VectorXd::Zero(perDirection.rows());
+  for (int d = 0; d < perDirection.cols(); ++d)
+    best = best.cwiseMax(perDirection.col(d) + 0.3 * (sum - perDirection.col(d)));
+  return best;
+}
+
+}  // namespace beamrotor

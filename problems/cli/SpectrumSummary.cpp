@@ -1,0 +1,115 @@
+#include "problems/cli/SpectrumSummary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "fem/assembly/MemberExtrema.hpp"
+#include "problems/cli/Summary.hpp"
+
+namespace beamrotor::cli {
+
+void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSpectrumResult& r,
+                   const Model& model) {
+  out << a.type << " analysis '" << a.name << "' (" << r.modal.modes.size() << " modes, "
+      << (r.rule == ModalRule::cqc ? "CQC" : "SRSS") << ", directions";
+  for (int d : r.directions) out << " " << directionName(d);
+  if (r.directions.size() > 1)
+    out << " by " << (r.directional == DirectionalRule::srss ? "SRSS" : "100/30 %");
+  out << ")\n    spectrum: " << r.spectrum.describe() << "\n";
+  out << "    mode  f [Hz]      T [s]       Sa [m/s^2]  ";
+  for (int d : r.directions)
+    out << padded(std::string("m_") + directionName(d) + " [kg]", 13)
+        << padded(std::string("sum ") + directionName(d), 8);
+  out << "\n";
+  std::array<double, 3> sum{};
+  for (std::size_t j = 0; j < r.modal.modes.size(); ++j) {
+    const Mode& m = r.modal.modes[j];
+    out << "    " << padded(std::to_string(j + 1), 6) << padded(formatValue(m.frequencyHz), 12)
+        << padded(formatValue(2 * std::numbers::pi / std::sqrt(m.eigenvalue)), 12)
+        << padded(formatValue(r.spectralAcceleration[j]), 12);
+    for (int d : r.directions) {
+      sum[d] += m.effectiveMass[d];
+      char percent[16];
+      std::snprintf(percent, sizeof percent, "%.1f %%", 100 * sum[d] / r.modal.totalMass[d]);
+      out << padded(formatValue(m.effectiveMass[d]), 13) << padded(percent, 8);
+    }
+    out << "\n";
+  }
+  const PeakResponse& p = r.combined;
+  out << "    combined peaks: base force";
+  const double base = std::max({p.baseForce[0], p.baseForce[1], p.baseForce[2]});
+  for (int d = 0; d < 3; ++d)
+    out << " " << directionName(d) << " "
+        << formatValue(p.baseForce[d] > 1e-9 * base ? p.baseForce[d] : 0.0);
+  out << " N\n";
+  for (int k = 0; k < 3; ++k)
+    if (p.displacement.rows() > 0 &&
+        p.displacement.col(k).maxCoeff() > 1e-9 * p.displacement.leftCols(3).maxCoeff()) {
+      int node = 0;
+      const double largest = p.displacement.col(k).maxCoeff(&node);
+      const std::string name = model.nameOf(node);
+      out << "    largest " << dofName(kAllDofs[k]) << " " << formatValue(largest) << " m at "
+          << (name.empty() ? "node " + std::to_string(node) : name) << "\n";
+    }
+  // Components below 1e-9 of the largest of their kind (forces, moments) are round-off of a
+  // zero: left out, or shown as 0.
+  std::array<double, 2> largest{};  // forces, moments
+  for (const ReactionComponent& c : p.reactions)
+    largest[isRotation(c.dof)] = std::max(largest[isRotation(c.dof)], c.value);
+  for (const ReactionComponent& c : p.reactions)
+    if (c.value > 1e-9 * largest[isRotation(c.dof)])
+      out << "    reaction " << c.support << " " << dofName(c.dof) << " " << formatValue(c.value)
+          << (isRotation(c.dof) ? " N m" : " N") << "\n";
+  const auto isMoment = [](ForceComponent c) {
+    return c == ForceComponent::T || c == ForceComponent::My || c == ForceComponent::Mz;
+  };
+  std::array<double, 2> largestResultant{};
+  for (const BeamStation& s : p.stations)
+    for (ForceComponent c : kForceComponents)
+      largestResultant[isMoment(c)] =
+          std::max(largestResultant[isMoment(c)], componentOf(s.forces, c));
+  for (const auto& [name, elements] : model.members()) {
+    out << "    member " << padded(name, 12);
+    for (ForceComponent c : kForceComponents) {
+      double peak = 0;
+      for (const BeamStation& s : p.stations)
+        if (std::find(elements.begin(), elements.end(), s.element) != elements.end())
+          peak = std::max(peak, componentOf(s.forces, c));
+      out << " " << componentName(c) << " "
+          << formatValue(peak > 1e-9 * largestResultant[isMoment(c)] ? peak : 0.0);
+    }
+    out << "\n";
+  }
+}
+
+void printBaseMotion(std::ostream& out, const AnalysisOutcome& a, const BaseMotionResult& r,
+                     const Model& model) {
+  const BaseMotionOptions& o = r.options;
+  out << a.type << " analysis '" << a.name << "' (ground along " << directionName(o.direction)
+      << ", " << (o.displacement > 0 ? formatValue(o.displacement) + " m"
+                                     : formatValue(o.acceleration) + " m/s^2")
+      << ", " << r.points.size() << " frequencies, "
+      << (o.method == BaseMotionMethod::modal ? std::to_string(r.modal.modes.size()) + " modes"
+                                              : std::string("direct"))
+      << ")\n";
+  double force = 0;
+  for (const BaseMotionPoint& p : r.points) force = std::max(force, std::abs(p.baseForce));
+  for (const auto& [name, node] : model.namedNodes()) {
+    double T = 0, at = 0, relative = 0;
+    for (const BaseMotionPoint& p : r.points) {
+      relative = std::max(relative, std::abs(p.relative(node, o.direction)));
+      if (p.transmissibility(node, o.direction) > T) {
+        T = p.transmissibility(node, o.direction);
+        at = p.frequencyHz;
+      }
+    }
+    if (relative == 0) continue;  // moves with the ground
+    out << "    " << padded(name, 12) << "transmissibility max " << formatValue(T) << " at "
+        << formatValue(at) << " Hz, relative displacement max " << formatValue(relative)
+        << " m\n";
+  }
+  out << "    base force max " << formatValue(force) << " N\n";
+}
+
+}  // namespace beamrotor::cli

@@ -1,0 +1,258 @@
+#include "problems/output/structure/SpectrumOutput.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "fem/assembly/MemberExtrema.hpp"
+#include "problems/output/files/ChartParts.hpp"
+#include "problems/output/files/FileNames.hpp"
+#include "problems/output/files/Gnuplot.hpp"
+#include "problems/output/structure/VtkWriter.hpp"
+
+namespace beamrotor {
+
+namespace {
+
+const char* ruleName(ModalRule r) { return r == ModalRule::cqc ? "CQC" : "SRSS"; }
+const char* directionalName(DirectionalRule r) {
+  return r == DirectionalRule::srss ? "SRSS" : "100/30";
+}
+
+double periodOf(const Mode& m) { return 2 * std::numbers::pi / std::sqrt(m.eigenvalue); }
+
+CsvTable modesTable(const ResponseSpectrumResult& r, const std::string& stem) {
+  std::vector<CsvColumn> columns{{"mode", ""}, {"frequency", "Hz"}, {"period", "s"},
+                                 {"Sa", "m/s^2"}, {"Sd", "m"}};
+  for (const char* d : {"x", "y", "z"}) columns.push_back({std::string("gamma_") + d, "kg^0.5"});
+  for (const char* d : {"x", "y", "z"}) columns.push_back({std::string("mass_") + d, "kg"});
+  for (const char* d : {"x", "y", "z"}) columns.push_back({std::string("cumulative_") + d, ""});
+  CsvTable t(stem + "_spectrum_modes.csv", columns);
+  std::array<double, 3> sum{};
+  for (std::size_t j = 0; j < r.modal.modes.size(); ++j) {
+    const Mode& m = r.modal.modes[j];
+    std::vector<CsvCell> row;  // filled in place: GCC 12 misreads a braced list of variants
+    row.reserve(columns.size());
+    row.emplace_back((long long)(j + 1));
+    for (double v : {m.frequencyHz, periodOf(m), r.spectralAcceleration[j],
+                     r.spectralAcceleration[j] / m.eigenvalue})
+      row.emplace_back(v);
+    for (double g : m.participation) row.push_back(g);
+    for (double e : m.effectiveMass) row.push_back(e);
+    for (int d = 0; d < 3; ++d) {
+      sum[d] += m.effectiveMass[d];
+      row.push_back(r.modal.totalMass[d] > 0 ? sum[d] / r.modal.totalMass[d] : 0.0);
+    }
+    t.addRow(std::move(row));
+  }
+  return t;
+}
+
+CsvTable displacementsTable(const ResponseSpectrumResult& r, const Model& model,
+                            const std::string& stem) {
+  CsvTable t(stem + "_spectrum_displacements.csv",
+             {{"node", ""}, {"point", ""}, {"x", "m"}, {"y", "m"}, {"z", "m"}, {"ux", "m"},
+              {"uy", "m"}, {"uz", "m"}, {"rx", "rad"}, {"ry", "rad"}, {"rz", "rad"}});
+  std::map<int, std::string> names;
+  for (const auto& [name, node] : model.namedNodes()) names[node] = name;
+  for (int n = 0; n < model.nodeCount(); ++n) {
+    const Eigen::Vector3d& x = model.nodes()[n];
+    std::vector<CsvCell> row;  // filled in place: GCC 12 misreads a braced list of variants
+    row.reserve(11);
+    row.emplace_back((long long)n);
+    row.emplace_back(names.count(n) ? names[n] : std::string());
+    for (int k = 0; k < 3; ++k) row.emplace_back(x[k]);
+    for (int k = 0; k < kDofKinds; ++k) row.push_back(r.combined.displacement(n, k));
+    t.addRow(std::move(row));
+  }
+  return t;
+}
+
+CsvTable reactionsTable(const ResponseSpectrumResult& r, const std::string& stem) {
+  std::vector<CsvColumn> columns{{"support", ""}, {"dof", ""}, {"unit", ""}, {"combined", ""}};
+  for (int d : r.directions) columns.push_back({std::string("from_") + directionName(d), ""});
+  CsvTable t(stem + "_spectrum_reactions.csv", columns);
+  for (std::size_t i = 0; i < r.combined.reactions.size(); ++i) {
+    const ReactionComponent& c = r.combined.reactions[i];
+    std::vector<CsvCell> row;  // filled in place: GCC 12 misreads a braced list of variants
+    row.reserve(columns.size());
+    row.emplace_back(c.support);
+    row.emplace_back(std::string(dofName(c.dof)));
+    row.emplace_back(std::string(isRotation(c.dof) ? "N m" : "N"));
+    row.emplace_back(c.value);
+    for (const PeakResponse& p : r.perDirection) row.push_back(p.reactions[i].value);
+    t.addRow(std::move(row));
+  }
+  return t;
+}
+
+CsvTable membersTable(const ResponseSpectrumResult& r, const Model& model,
+                      const std::string& stem) {
+  CsvTable t(stem + "_spectrum_members.csv",
+             {{"member", ""}, {"element", ""}, {"s", ""}, {"x", "m"}, {"y", "m"}, {"z", "m"},
+              {"N", "N"}, {"Vy", "N"}, {"Vz", "N"}, {"T", "N m"}, {"My", "N m"}, {"Mz", "N m"}});
+  std::map<int, std::string> memberOf;
+  for (const auto& [name, elements] : model.members())
+    for (int e : elements) memberOf[e] = name;
+  for (const BeamStation& s : r.combined.stations) {
+    const SectionForces& f = s.forces;
+    std::vector<CsvCell> row;  // filled in place: GCC 12 misreads a braced list of variants
+    row.reserve(12);
+    row.emplace_back(memberOf.count(s.element) ? memberOf[s.element] : std::string());
+    row.emplace_back((long long)s.element);
+    for (double v : {s.s, s.position.x(), s.position.y(), s.position.z(), f.N, f.Vy, f.Vz, f.T,
+                     f.My, f.Mz})
+      row.emplace_back(v);
+    t.addRow(std::move(row));
+  }
+  return t;
+}
+
+Json peakJson(const PeakResponse& p, const Model& model) {
+  Json out = Json::object();
+  Json base = Json::object();
+  for (int d = 0; d < 3; ++d) base[directionName(d)] = p.baseForce[d];
+  out["base_force_n"] = base;
+  Json reactions = Json::array();
+  for (const ReactionComponent& c : p.reactions)
+    reactions.push_back({{"support", c.support}, {"dof", dofName(c.dof)}, {"value", c.value}});
+  out["reactions"] = reactions;
+  Json largest = Json::object();
+  for (int k = 0; k < kDofKinds; ++k)
+    largest[std::string(dofName(kAllDofs[k]))] =
+        p.displacement.rows() > 0 ? p.displacement.col(k).maxCoeff() : 0.0;
+  out["largest_displacement"] = largest;
+  Json members = Json::object();
+  for (const auto& [name, elements] : model.members()) {
+    Json peaks = Json::object();
+    for (ForceComponent c : kForceComponents) {
+      double peak = 0;
+      for (const BeamStation& s : p.stations)
+        if (std::find(elements.begin(), elements.end(), s.element) != elements.end())
+          peak = std::max(peak, componentOf(s.forces, c));
+      peaks[componentName(c)] = peak;
+    }
+    members[name] = peaks;
+  }
+  if (!members.empty()) out["member_peaks"] = members;
+  return out;
+}
+
+/// Sa against T as a gnuplot data block: over a table's own range, or an EN 1998-1 shape up to
+/// 4 s (its range) or past the longest mode; its corners sampled exactly.
+std::string spectrumCurve(const ResponseSpectrumResult& r) {
+  std::vector<double> periods = r.spectrum.breakPeriods();
+  double last = periods.back();
+  if (!r.spectrum.isTable()) {
+    last = 4;
+    for (const Mode& m : r.modal.modes) last = std::max(last, 1.1 * periodOf(m));
+  }
+  const double first = periods.front();
+  for (int i = 0; i <= 400; ++i) periods.push_back(first + (last - first) * i / 400.0);
+  std::sort(periods.begin(), periods.end());
+  std::ostringstream data;
+  data << "$spectrum << EOD\n";
+  for (double T : periods)
+    if (T <= last) data << number(T) << "," << number(r.spectrum.at(T)) << "\n";
+  data << "EOD\n$modes << EOD\n";
+  // Modes within 1 % of the axis of each other share one label ("1,2,3"), at the first.
+  const std::size_t n = r.modal.modes.size();
+  for (std::size_t j = 0; j < n;) {
+    std::size_t end = j + 1;
+    std::string label = std::to_string(j + 1);
+    while (end < n &&
+           std::abs(periodOf(r.modal.modes[end]) - periodOf(r.modal.modes[j])) < 0.01 * last) {
+      label += ',';  // appended piece by piece: GCC 12 misreads "," + text
+      label += std::to_string(end + 1);
+      ++end;
+    }
+    for (std::size_t k = j; k < end; ++k)
+      data << number(periodOf(r.modal.modes[k])) << "," << number(r.spectralAcceleration[k])
+           << ",\"" << (k == j ? label : "") << "\"\n";
+    j = end;
+  }
+  data << "EOD\n";
+  return data.str();
+}
+
+}  // namespace
+
+std::string spectrumVtu(const std::string& stem) { return stem + "_spectrum.vtu"; }
+
+std::vector<CsvTable> spectrumTables(const ResponseSpectrumResult& r, const Model& model,
+                                     const std::string& stem) {
+  std::vector<CsvTable> tables{modesTable(r, stem), displacementsTable(r, model, stem)};
+  if (!r.combined.reactions.empty()) tables.push_back(reactionsTable(r, stem));
+  if (!r.combined.stations.empty()) tables.push_back(membersTable(r, model, stem));
+  return tables;
+}
+
+Json spectrumJson(const std::string& type, const std::string& name,
+                  const ResponseSpectrumResult& r, const Model& model) {
+  Json out = {{"type", type}, {"name", name}};
+  out["spectrum"] = r.spectrum.describe();
+  out["damping_ratio"] = r.dampingRatio;
+  out["modal_combination"] = ruleName(r.rule);
+  out["directional_combination"] = directionalName(r.directional);
+  Json directions = Json::array();
+  for (int d : r.directions) directions.push_back(directionName(d));
+  out["directions"] = directions;
+  Json modes = Json::array();
+  for (std::size_t j = 0; j < r.modal.modes.size(); ++j) {
+    const Mode& m = r.modal.modes[j];
+    Json gamma = Json::object(), mass = Json::object();
+    for (int d = 0; d < 3; ++d) {
+      gamma[directionName(d)] = m.participation[d];
+      mass[directionName(d)] = m.effectiveMass[d];
+    }
+    modes.push_back({{"mode", j + 1},
+                     {"frequency_hz", m.frequencyHz},
+                     {"period_s", periodOf(m)},
+                     {"sa_m_s2", r.spectralAcceleration[j]},
+                     {"participation", gamma},
+                     {"effective_mass_kg", mass},
+                     {"description", m.description}});
+  }
+  out["modes"] = modes;
+  Json total = Json::object(), captured = Json::object();
+  const std::array<double, 3> fraction = r.capturedFraction();
+  for (int d = 0; d < 3; ++d) {
+    total[directionName(d)] = r.modal.totalMass[d];
+    captured[directionName(d)] = fraction[d];
+  }
+  out["total_mass_kg"] = total;
+  out["captured_mass_fraction"] = captured;
+  Json each = Json::object();
+  for (std::size_t i = 0; i < r.directions.size(); ++i)
+    each[directionName(r.directions[i])] = peakJson(r.perDirection[i], model);
+  out["per_direction"] = each;
+  out["combined"] = peakJson(r.combined, model);
+  out["vtu"] = spectrumVtu(fileStem(name));
+  return out;
+}
+
+void writeSpectrumFiles(const std::filesystem::path& dir, const ResponseSpectrumResult& r,
+                        const Model& model, const std::string& stem, const std::string& caption,
+                        bool charts) {
+  writeFrameVtu(dir / spectrumVtu(stem), model, {0, r.combined.displacement});
+  if (!charts) return;
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << "  set title " << captionText(caption + "\n" + r.spectrum.describe()) << "\n"
+       << "  set grid\n"
+       << "  set key top right\n"
+       << "  set xlabel " << gnuplotText("period T [s]") << "\n"
+       << "  set ylabel " << gnuplotText("spectral acceleration Sa [m/s^2]") << "\n"
+       << "  set xrange [0:*]\n  set yrange [0:*]\n"
+       << "  plot $spectrum using 1:2 with lines linewidth 2 " << colour(0)
+       << " title 'spectrum', \\\n"
+       << "       $modes using 1:2 with points pointtype 7 pointsize 1.5 " << colour(1)
+       << " title 'modes', \\\n"
+       << "       $modes using 1:2:3 with labels offset 0,1 notitle\n";
+  drawChart(dir, {stem + "_spectrum", "Response spectrum and the modes' periods", 900, 600,
+                  body.str(), spectrumCurve(r)});
+}
+
+}  // namespace beamrotor
