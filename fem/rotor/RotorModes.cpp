@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fem/rotor/DegenerateModes.hpp"
+#include "fem/rotor/WhirlIteration.hpp"
 #include "fem/timing/Stopwatch.hpp"
 
 namespace beamrotor {
@@ -149,6 +150,25 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
   }
   // 4. Repeated eigenvalues get a basis fixed by their whirl, not by the solver's start.
   canonicalRepeatedModes(lambdas, vectors, dofs, nodes);
+  // 5. Bearings whose coefficients depend on the whirl: each mode at its own eigenvalue.
+  std::vector<int> iterations(lambdas.size(), 0);
+  if (system.dependsOnWhirl()) {
+    result.coefficients.atOwnWhirl = true;
+    for (int m = 0; m < int(lambdas.size()); ++m) {
+      const WhirlMode w = modeAtOwnWhirl(system, speed, lambdas[m], vectors.col(m), solver,
+                                         options.method);
+      lambdas[m] = w.eigenvalue;
+      vectors.col(m) = w.vector;
+      iterations[m] = w.iterations;
+      result.coefficients.mostIterations = std::max(result.coefficients.mostIterations,
+                                                    w.iterations);
+      if (!w.converged)
+        result.coefficients.unsettled.push_back({0, w.eigenvalue.imag() / kTwoPi});
+    }
+    // Each member of a repeated pair settles on some vector of its plane: the basis again.
+    canonicalRepeatedModes(lambdas, vectors, dofs, nodes);
+    result.time.solve += clock.lap();
+  }
   double nearest = std::numeric_limits<double>::infinity();
   for (const auto& lambda : lambdas) nearest = std::min(nearest, std::abs(lambda - options.shift));
   result.vectors.resize(system.size(), kept.size());
@@ -161,6 +181,7 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
     }
     normaliseShape(q, dofs);
     RotorMode mode = describe(lambda, q, dofs, nodes);
+    mode.whirlIterations = iterations[m];
     const double d =
         nearest > 0 ? std::max(1.0, std::abs(lambda - options.shift) / nearest) : 1.0;
     mode.roundOff = kRoundOffLinear * d + kRoundOffSquare * d * d;
