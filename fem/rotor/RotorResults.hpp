@@ -74,8 +74,9 @@ struct RotorMode {
 struct WhirlCoefficientsUsed {
   bool atOwnWhirl = false;    ///< each mode at its own eigenvalue
   int mostIterations = 0;     ///< the most eigen-solutions one mode took
-  /// Modes that did not settle within kMaxWhirlIterations: their sweep speed index (0 for a
-  /// single speed) and damped frequency (Hz) at the last iteration.
+  /// Modes that did not settle within kMaxWhirlIterations, or settled on a mode found before
+  /// them (they keep the synchronous set's eigenvalue): their sweep speed index (0 for a
+  /// single speed) and that eigenvalue's damped frequency (Hz).
   struct Unsettled {
     std::size_t speed = 0;
     double frequencyHz = 0;

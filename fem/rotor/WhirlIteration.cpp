@@ -19,6 +19,9 @@ constexpr double kShiftOffset = 1e-6;
 /// Eigenvalues asked for around the shift: the mode and its conjugate, and a second mode (a
 /// nearly repeated one, the other whirl of an isotropic rotor's pair) to tell it from.
 constexpr int kAround = 4;
+/// A real eigenvalue's imaginary part from the eigensolver, relative: round-off of ~1e-12,
+/// more for a real eigenvalue among close complex ones.
+constexpr double kRealRoundOff = 1e-8;
 
 /// |a^H b|^2 / (|a|^2 |b|^2).
 double correlation(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
@@ -46,7 +49,8 @@ std::optional<std::pair<std::complex<double>, Eigen::VectorXcd>> frozenMode(
   double bestMac = -1;
   for (int k = 0; k < int(pairs.values.size()); ++k) {
     const std::complex<double> v = pairs.values[k];
-    if (v.imag() < -1e-12 * std::abs(v)) continue;
+    // A real eigenvalue (an overdamped mode) comes back with Im of round-off either sign.
+    if (v.imag() < -kRealRoundOff * std::abs(v)) continue;
     const double m = correlation(q, pairs.vectors.col(k));
     if (m > bestMac + 1e-9 || (best >= 0 && std::abs(m - bestMac) <= 1e-9 &&
                                std::abs(v - at) < std::abs(pairs.values[best] - at))) {

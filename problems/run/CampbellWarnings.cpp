@@ -60,9 +60,9 @@ std::vector<std::string> whirlWarnings(const WhirlCoefficientsUsed& used,
   for (const auto& u : used.unsettled) {
     char text[400];
     std::snprintf(text, sizeof text,
-                  "the mode at %.6g Hz (%.6g rpm) did not settle with the bearing coefficients "
-                  "at its own eigenvalue in %d eigen-solutions: its eigenvalue is the last one "
-                  "found",
+                  "the mode at %.6g Hz (%.6g rpm, synchronous bearing coefficients) did not "
+                  "settle with the coefficients at its own eigenvalue (in %d eigen-solutions, "
+                  "or it settled on another mode's): it is reported with the synchronous set",
                   u.frequencyHz, rpmOf(speeds.at(u.speed)), kMaxWhirlIterations);
     out.push_back(text);
   }

@@ -25,6 +25,7 @@
 #include "elements/WhirlTable.hpp"
 #include "fem/rotor/RotorModes.hpp"
 #include "meshes/LineBuilder.hpp"
+#include "tests/elements/TiltingPadTestSupport.hpp"
 #include "tests/fem/rotor/RotorTestSupport.hpp"
 
 using namespace beamrotor;
@@ -81,19 +82,7 @@ std::array<int, 2> buildShaft(Model& model) {
 }
 
 TiltingPadPoint padPoint(double speed) {
-  PlainJournal j;
-  j.diameter = 0.1;
-  j.length = 0.05;
-  j.clearance = 100e-6;
-  j.viscosity = 0.02;
-  j.load = 5000;
-  TiltingPads p;
-  p.count = 4;
-  p.arc = 80 * std::numbers::pi / 180;
-  p.pivotOffset = 0.5;
-  p.preload = 0.3;
-  p.loadOnPad = false;
-  return tiltingPadPoint(j, p, speed, {24, 8});
+  return tiltingPadPoint(tiltingPadTestJournal(), fourPadsBetween(), speed, {24, 8});
 }
 
 }  // namespace
@@ -197,14 +186,18 @@ TEST_SUITE("rotor") {
       return solveRotorModes(s, speed, rotorOptions(4));
     }();
     REQUIRE(rc.modes.size() == 4);
+    // Four modes, not one found four times: the bounce pair and the next ones differ.
+    CHECK(std::abs(rc.modes[3].eigenvalue - rc.modes[0].eigenvalue) >
+          1e-3 * std::abs(rc.modes[0].eigenvalue));
     for (std::size_t i = 0; i < rc.modes.size(); ++i) {
       const std::complex<double> lambda = rc.modes[i].eigenvalue;
       CAPTURE(lambda);
       double nearest = 1e300;
       for (const RotorMode& f : rf.modes) nearest = std::min(nearest, std::abs(f.eigenvalue - lambda));
       // The iteration stops at 1e-10 of |lambda|; the two eigen-solutions' round-off is below
-      // 1e-12. 1e-9 keeps a margin.
-      CHECK(nearest <= 1e-9 * std::abs(lambda));
+      // 1e-12; a real eigenvalue (an overdamped mode) is read 1e-9 off the axis
+      // (tiltingPadCoefficientsAt). 1e-8 keeps a margin.
+      CHECK(nearest <= 1e-8 * std::abs(lambda));
       double toSync = 1e300;
       for (const RotorMode& s : sync.modes) toSync = std::min(toSync, std::abs(s.eigenvalue - lambda));
       CHECK(toSync > 1e-4 * std::abs(lambda));
