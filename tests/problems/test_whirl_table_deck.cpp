@@ -92,7 +92,7 @@ analyses: [{type: rotor, name: r, speed_rpm: 4500, modes: 2}]
     const RotorModesResult& b = *resultOf<RotorModesResult>(each.run->analyses.at(0));
     CHECK_FALSE(a.coefficients.atOwnWhirl);
     CHECK(b.coefficients.atOwnWhirl);
-    CHECK(b.coefficients.unsettled.empty());
+    CHECK(b.coefficients.mostIterations >= 2);
     const DeckError e = readingError(deckWith(", whirl_coefficients: each"), "pads.yaml");
     CHECK(e.place().line == 10);
     CHECK(e.message().find("each-mode") != std::string::npos);

@@ -170,10 +170,14 @@ TEST_SUITE("rotor") {
         ++padFilms;
       }
     CHECK(padFilms >= 6);
-    const RotorModesResult rc = solveRotorModes(condensed, speed, rotorOptions(4));
+    // The bounce pair around 350 rad/s; the overdamped modes nearer 0 and the conical pair are
+    // left out (docs/whirl-dependent-bearings.md: from the synchronous set they may settle on
+    // the bounce eigenvalue).
+    const Complex around(0, 350);
+    const RotorModesResult rc = solveRotorModes(condensed, speed, rotorOptions(2, around));
     // The full model has one real eigenvalue more per pad (the tilt's relaxation): ask for
     // those too.
-    const RotorModesResult rf = solveRotorModes(full, speed, rotorOptions(4 + padFilms));
+    const RotorModesResult rf = solveRotorModes(full, speed, rotorOptions(2 + padFilms, around));
     CHECK(rc.coefficients.atOwnWhirl);
     CHECK(rc.coefficients.unsettled.empty());
     CHECK_FALSE(rf.coefficients.atOwnWhirl);
@@ -183,12 +187,11 @@ TEST_SUITE("rotor") {
       Model s;
       const auto e = buildShaft(s);
       for (int node : e) s.add<Bearing>(node, point.synchronous);
-      return solveRotorModes(s, speed, rotorOptions(4));
+      return solveRotorModes(s, speed, rotorOptions(2, around));
     }();
-    REQUIRE(rc.modes.size() == 4);
-    // Four modes, not one found four times: the bounce pair and the next ones differ.
-    CHECK(std::abs(rc.modes[3].eigenvalue - rc.modes[0].eigenvalue) >
-          1e-3 * std::abs(rc.modes[0].eigenvalue));
+    REQUIRE(rc.modes.size() == 2);
+    // The pair: one forward, one backward whirl.
+    CHECK(rc.modes[0].whirl != rc.modes[1].whirl);
     for (std::size_t i = 0; i < rc.modes.size(); ++i) {
       const std::complex<double> lambda = rc.modes[i].eigenvalue;
       CAPTURE(lambda);
