@@ -38,15 +38,35 @@ Bearing::Bearing(int node, std::vector<double> speeds, std::vector<BearingCoeffi
   }
 }
 
+TableBracket tableBracket(const std::vector<double>& rows, double value) {
+  if (value <= rows.front()) return {0, 0.0};
+  if (value >= rows.back()) return {rows.size() - 1, 0.0};
+  const auto hi = std::size_t(std::upper_bound(rows.begin(), rows.end(), value) - rows.begin());
+  return {hi - 1, (value - rows[hi - 1]) / (rows[hi] - rows[hi - 1])};
+}
+
+BearingCoefficients blend(const BearingCoefficients& a, const BearingCoefficients& b, double t) {
+  const auto x = values(a), y = values(b);
+  std::array<double, 8> v{};
+  for (int i = 0; i < 8; ++i) v[i] = (1 - t) * x[i] + t * y[i];
+  return fromValues(v);
+}
+
 BearingCoefficients Bearing::coefficientsAt(double speed) const {
   if (speed <= speeds_.front()) return table_.front();
   if (speed >= speeds_.back()) return table_.back();
-  const auto hi = std::upper_bound(speeds_.begin(), speeds_.end(), speed) - speeds_.begin();
-  const double t = (speed - speeds_[hi - 1]) / (speeds_[hi] - speeds_[hi - 1]);
-  const auto a = values(table_[hi - 1]), b = values(table_[hi]);
-  std::array<double, 8> v{};
-  for (int i = 0; i < 8; ++i) v[i] = (1 - t) * a[i] + t * b[i];
-  return fromValues(v);
+  const TableBracket at = tableBracket(speeds_, speed);
+  return blend(table_[at.low], table_[at.low + 1], at.t);
+}
+
+void Bearing::setWhirlCoefficients(std::shared_ptr<const WhirlCoefficients> whirl) {
+  whirl_ = std::move(whirl);
+}
+
+EigenvalueMatrices Bearing::atEigenvalue(double speed, std::complex<double> lambda) const {
+  if (!whirl_) return SpeedDependentElement::atEigenvalue(speed, lambda);
+  const BearingCoefficients c = whirl_->at(speed, lambda);
+  return {twoByTwo(c.kyy, c.kyz, c.kzy, c.kzz), twoByTwo(c.cyy, c.cyz, c.czy, c.czz)};
 }
 
 ElementMatrix Bearing::stiffnessAt(double speed) const {

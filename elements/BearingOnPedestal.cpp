@@ -32,4 +32,10 @@ ElementMatrix BearingOnPedestal::dampingAt(double speed) const {
   return relative(film_.dampingAt(speed));
 }
 
+EigenvalueMatrices BearingOnPedestal::atEigenvalue(double speed,
+                                                  std::complex<double> lambda) const {
+  const EigenvalueMatrices film = film_.atEigenvalue(speed, lambda);
+  return {relative(film.stiffness), relative(film.damping)};
+}
+
 }  // namespace beamrotor

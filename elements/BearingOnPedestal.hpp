@@ -27,6 +27,13 @@ class BearingOnPedestal : public SpeedDependentElement {
   std::string kind() const override { return "bearing-on-pedestal"; }
   int housing() const { return housing_; }  ///< the housing's node
 
+  /// The film's coefficients by whirl as well (Bearing::setWhirlCoefficients).
+  void setWhirlCoefficients(std::shared_ptr<const WhirlCoefficients> whirl) {
+    film_.setWhirlCoefficients(std::move(whirl));
+  }
+  bool dependsOnWhirl() const override { return film_.dependsOnWhirl(); }
+  EigenvalueMatrices atEigenvalue(double speed, std::complex<double> lambda) const override;
+
  private:
   Bearing film_;  ///< the coefficients, as a grounded bearing at the journal would have them
   int journal_, housing_;

@@ -52,6 +52,9 @@ class PadFilm {
   /// s inside (low, high) (it closes at the trailing edge at `high`); near `high` the pressure
   /// gathers at the trailing edge (f . t < 0); at s = 0 with m + rho > 0 the film is thinnest at
   /// the pivot and the pressure lies ahead of it (f . t > 0): the root lies between.
+  /// A first guess for the next tilt (s), as the last root found would be.
+  void seed(double s) { lastRoot_ = s; }
+
   std::optional<double> equilibriumTilt(double rho) {
     const double a = preload_ + rho;
     if (!(1 - a > 0)) throw std::invalid_argument("the journal reaches a pad's pivot");
@@ -102,12 +105,12 @@ class PadFilm {
 
 using Complex2 = Eigen::Matrix2cd;
 
-/// Z_k' = Z - Z t t^T Z / (t^T Z t) in pad axes (t = (0, 1)), rotated to the bearing's axes.
-Complex2 condensedPad(const PadFilmState& p, double whirlRatio) {
+/// Z_k' = Z - Z t t^T Z / (t^T Z t) in pad axes (t = (0, 1)), rotated to the bearing's axes,
+/// Z = K + s C for a motion e^{s Omega t} (s = i nu: whirl at nu times the spin).
+Complex2 condensedPad(const PadFilmState& p, std::complex<double> s) {
   Complex2 z;
   for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j)
-      z(i, j) = std::complex<double>(p.stiffness[i][j], whirlRatio * p.damping[i][j]);
+    for (int j = 0; j < 2; ++j) z(i, j) = p.stiffness[i][j] + s * p.damping[i][j];
   if (z(1, 1) == 0.0) return Complex2::Zero();  // an unloaded pad
   Complex2 reduced = z - z.col(1) * z.row(1) / z(1, 1);
   Eigen::Matrix2d q;  // columns e_k, t_k in the bearing's axes
@@ -115,9 +118,9 @@ Complex2 condensedPad(const PadFilmState& p, double whirlRatio) {
   return q.cast<std::complex<double>>() * reduced * q.transpose().cast<std::complex<double>>();
 }
 
-Complex2 condensedBearing(const TiltingPadPoint& point, double whirlRatio) {
+Complex2 condensedBearing(const TiltingPadPoint& point, std::complex<double> s) {
   Complex2 z = Complex2::Zero();
-  for (const PadFilmState& p : point.pads) z += condensedPad(p, whirlRatio);
+  for (const PadFilmState& p : point.pads) z += condensedPad(p, s);
   return z;
 }
 
@@ -148,7 +151,7 @@ PadEquilibrium padEquilibrium(const TiltingPads& pads, double lengthOverDiameter
 }
 
 TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, double speed,
-                                const ReynoldsGrid& grid) {
+                                const ReynoldsGrid& grid, const TiltingPadPoint* near) {
   checkGeometry(j, pads, speed);
   const double R = j.diameter / 2, cp = j.clearance / (1 - pads.preload);
   const double forceScale = j.viscosity * speed * R * R * R * j.length / (cp * cp);
@@ -179,9 +182,16 @@ TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, 
     }
     return b;
   };
-  // Newton from the centre; a step that would close a film at a pivot is shortened.
+  // Newton from the centre, or from `near`'s journal and tilts; a step that would close a
+  // film at a pivot is shortened.
   const double thinnest = kThinnestPadFilm * (1 - pads.preload);
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  if (near && near->pads.size() == pivots.size()) {
+    u = near->eccentricity * j.clearance / cp * unit(near->attitude + kPiPads);
+    for (std::size_t k = 0; k < pivots.size(); ++k)
+      if (near->pads[k].force != 0)
+        films[k].seed(u.dot(unit(pivots[k] + kPiPads / 2)) - near->pads[k].tilt * R / cp);
+  }
   Balance b = balance(u);
   for (int iteration = 0;; ++iteration) {
     const Eigen::Vector2d residual = b.force - Eigen::Vector2d(load, 0);
@@ -239,17 +249,35 @@ TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, 
 BearingCoefficients tiltingPadCoefficients(const TiltingPadPoint& point, double whirlRatio) {
   if (!(whirlRatio > 0))
     throw std::invalid_argument("tiltingPadCoefficients: the whirl ratio must be positive");
-  const Complex2 z = condensedBearing(point, whirlRatio);
+  const Complex2 z = condensedBearing(point, std::complex<double>(0, whirlRatio));
   const double ks = point.stiffnessScale, cs = point.dampingScale / whirlRatio;
   return {ks * z(0, 0).real(), ks * z(0, 1).real(), ks * z(1, 0).real(), ks * z(1, 1).real(),
           cs * z(0, 0).imag(), cs * z(0, 1).imag(), cs * z(1, 0).imag(), cs * z(1, 1).imag()};
 }
 
 BearingCoefficients tiltingPadStaticStiffness(const TiltingPadPoint& point) {
-  const Complex2 z = condensedBearing(point, 0);
+  const Complex2 z = condensedBearing(point, 0.0);
   const double ks = point.stiffnessScale;
   return {ks * z(0, 0).real(), ks * z(0, 1).real(), ks * z(1, 0).real(), ks * z(1, 1).real(),
           0, 0, 0, 0};
+}
+
+BearingCoefficients tiltingPadCoefficientsAt(const TiltingPadPoint& point,
+                                              std::complex<double> lambda) {
+  // A motion with no frequency of its own (a real eigenvalue) is read a hair off the real axis:
+  // C is then the impedance's slope there, and K + lambda C still the impedance at lambda to
+  // that hair squared.
+  const double hair = 1e-9 * std::max(std::abs(lambda), point.speed);
+  if (std::abs(lambda.imag()) < hair) lambda = {lambda.real(), hair};
+  const Complex2 z = condensedBearing(point, lambda / point.speed);
+  const double ks = point.stiffnessScale;
+  std::array<double, 8> k{}, c{};
+  for (int i = 0; i < 4; ++i) {
+    const std::complex<double> zi = ks * z(i / 2, i % 2);
+    c[i] = zi.imag() / lambda.imag();
+    k[i] = zi.real() - lambda.real() * c[i];
+  }
+  return {k[0], k[1], k[2], k[3], c[0], c[1], c[2], c[3]};
 }
 
 }  // namespace beamrotor

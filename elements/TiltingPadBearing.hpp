@@ -36,6 +36,7 @@
 // static stiffness, which is the Jacobian of the load against the journal's displacement.
 #pragma once
 
+#include <complex>
 #include <vector>
 
 #include "elements/Bearing.hpp"
@@ -87,13 +88,21 @@ PadEquilibrium padEquilibrium(const TiltingPads& pads, double lengthOverDiameter
 /// The bearing's equilibrium and coefficients at spin speed Omega (rad/s, > 0), each pad's film
 /// on `grid` (cells over one pad's arc). Throws std::invalid_argument for bad geometry, a pad
 /// whose film cannot turn its force through the pivot, or a load that needs a film thinner
-/// than 1 % of c_b.
+/// than 1 % of c_b. `near`, when given (the same bearing at a nearby speed), is where Newton
+/// starts from: the same equilibrium to Newton's tolerance (1e-11 of the load) in fewer steps.
 TiltingPadPoint tiltingPadPoint(const PlainJournal& bearing, const TiltingPads& pads, double speed,
-                                const ReynoldsGrid& grid);
+                                const ReynoldsGrid& grid, const TiltingPadPoint* near = nullptr);
 
 /// The coefficients condensed at whirl = whirlRatio * Omega (whirlRatio > 0; 1: synchronous),
 /// in the bearing's axes as Bearing.hpp names them (x_b -> y).
 BearingCoefficients tiltingPadCoefficients(const TiltingPadPoint& point, double whirlRatio);
+
+/// The coefficients a motion e^{lambda t} (lambda in 1/s, Im lambda >= 0) sees, the pads
+/// condensed exactly at lambda (Z_k' with Z_k = K_k + (lambda / Omega) C_k): real K and C with
+/// K + lambda C = Z'(lambda), C = Im Z' / Im lambda, K = Re Z' - Re lambda C, bearing's axes
+/// (x_b -> y). At lambda = i nu Omega the set tiltingPadCoefficients gives at nu.
+BearingCoefficients tiltingPadCoefficientsAt(const TiltingPadPoint& point,
+                                              std::complex<double> lambda);
 
 /// The static stiffness (whirl -> 0): the Jacobian of the pads' load against the journal's
 /// displacement, each pad at its equilibrium tilt. Damping terms are left 0.

@@ -2,6 +2,8 @@
 // the rotor analyses re-evaluate them at every speed; the other analyses see them at rest.
 #pragma once
 
+#include <complex>
+
 #include "fem/model/Element.hpp"
 
 namespace beamrotor {
@@ -12,6 +14,12 @@ inline ElementDofs lateralDofs(int node) {
   return {{node, node}, codes, 2};
 }
 
+/// What an element shows a motion q e^{lambda t}: real K and C whose K + lambda C is its
+/// impedance at that lambda (whirl-dependent bearings, SpeedDependentElement::atEigenvalue).
+struct EigenvalueMatrices {
+  ElementMatrix stiffness, damping;  ///< damping empty when none
+};
+
 class SpeedDependentElement : public Element {
  public:
   /// Stiffness at spin speed Omega (rad/s), global frame, ordered as dofs(); may be
@@ -19,6 +27,17 @@ class SpeedDependentElement : public Element {
   virtual ElementMatrix stiffnessAt(double speed) const = 0;
   /// Viscous damping at spin speed Omega (rad/s); empty when none.
   virtual ElementMatrix dampingAt(double speed) const = 0;
+
+  /// Whether the coefficients depend on the motion's frequency as well as on the speed (a
+  /// tilting-pad bearing, a table by whirl frequency): the damped modes then find each mode
+  /// with the coefficients at its own eigenvalue (fem/rotor/WhirlIteration.hpp).
+  virtual bool dependsOnWhirl() const { return false; }
+  /// K and C at spin speed Omega (rad/s) seen by a motion e^{lambda t} (lambda in 1/s,
+  /// Im lambda >= 0); without whirl dependence the speed's own (synchronous) set.
+  virtual EigenvalueMatrices atEigenvalue(double speed, std::complex<double> lambda) const {
+    (void)lambda;
+    return {stiffnessAt(speed), dampingAt(speed)};
+  }
 
   /// At rest (Omega = 0): what statics and the non-rotating modal analysis use.
   ElementMatrix stiffness() const override { return stiffnessAt(0); }

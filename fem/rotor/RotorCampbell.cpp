@@ -133,6 +133,7 @@ class SweepSolver {
     result_.time.solve += at.time.solve;
     result_.size = at.size;
     result_.candidates = std::max(result_.candidates, candidates);
+    result_.coefficients.add(at.coefficients, sweepIndex_);
     const int lines = options_.modes;
     if (int(at.modes.size()) < lines)
       throw SolveError("Campbell diagram: only " + std::to_string(at.modes.size()) +
@@ -141,12 +142,15 @@ class SweepSolver {
     return at;
   }
   int analyses() const { return solver_.analyses(); }
+  /// The sweep speed index the next solutions belong to (a local sweep's: its interval's end).
+  void atSweepIndex(std::size_t s) { sweepIndex_ = s; }
 
  private:
   RotorSystem system_;
   RotorOptions options_;
   CampbellResult& result_;
   QuadraticEigenSolver solver_;
+  std::size_t sweepIndex_ = 0;
 };
 
 /// The lines followed from `from` (their vectors there, and their history) to `to` through
@@ -253,6 +257,7 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
   for (std::size_t s = 0; s < speeds.size(); ++s) {
     // 1. The first speed defines the lines (nearest the shift first); later speeds follow
     //    each line to the candidate whose shape correlates best with its last one.
+    solver.atSweepIndex(s);
     TrackedSpeed t{solver.solve(speeds[s], candidates), {}};
     if (s == 0) {
       for (int l = 0; l < lines; ++l) t.pick.push_back({l, 1.0});

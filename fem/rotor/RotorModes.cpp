@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fem/rotor/DegenerateModes.hpp"
+#include "fem/rotor/WhirlIteration.hpp"
 #include "fem/timing/Stopwatch.hpp"
 
 namespace beamrotor {
@@ -107,6 +108,39 @@ RotorMode describe(std::complex<double> lambda, const Eigen::VectorXcd& q, const
   return mode;
 }
 
+/// Every mode found again at its own eigenvalue (WhirlIteration.hpp); the eigen-solutions
+/// each took. A mode that does not settle, or settles on a mode found before it (the same
+/// eigenvalue and shape: the synchronous set's overdamped modes may lead there), keeps its
+/// synchronous eigenvalue and is recorded in `used.unsettled`.
+std::vector<int> modesAtOwnWhirl(const RotorSystem& system, double speed,
+                                 const RotorOptions& options, QuadraticEigenSolver& solver,
+                                 std::vector<std::complex<double>>& lambdas,
+                                 Eigen::MatrixXcd& vectors, WhirlCoefficientsUsed& used) {
+  // A settled mode this close (relative) to an earlier one, with shapes this alike, is it.
+  constexpr double kSameEigenvalue = 1e-8, kSameShape = 0.99;
+  used.atOwnWhirl = true;
+  std::vector<int> iterations(lambdas.size(), 0), settled;
+  for (int m = 0; m < int(lambdas.size()); ++m) {
+    const WhirlMode w =
+        modeAtOwnWhirl(system, speed, lambdas[m], vectors.col(m), solver, options.method);
+    iterations[m] = w.iterations;
+    used.mostIterations = std::max(used.mostIterations, w.iterations);
+    bool taken = false;
+    for (int j : settled)
+      taken = taken || (std::abs(w.eigenvalue - lambdas[j]) <=
+                            kSameEigenvalue * std::abs(lambdas[j]) &&
+                        std::norm(vectors.col(j).dot(w.vector)) > kSameShape);
+    if (!w.converged || taken) {
+      used.unsettled.push_back({0, lambdas[m].imag() / kTwoPi});
+      continue;
+    }
+    lambdas[m] = w.eigenvalue;
+    vectors.col(m) = w.vector;
+    settled.push_back(m);
+  }
+  return iterations;
+}
+
 ComplexNodalField toComplexNodalField(const DofMap& dofs, int nodeCount,
                                       const Eigen::VectorXcd& q) {
   ComplexNodalField field = ComplexNodalField::Zero(nodeCount, kDofKinds);
@@ -149,6 +183,15 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
   }
   // 4. Repeated eigenvalues get a basis fixed by their whirl, not by the solver's start.
   canonicalRepeatedModes(lambdas, vectors, dofs, nodes);
+  // 5. Bearings whose coefficients depend on the whirl: each mode at its own eigenvalue.
+  std::vector<int> iterations(lambdas.size(), 0);
+  if (system.dependsOnWhirl()) {
+    iterations = modesAtOwnWhirl(system, speed, options, solver, lambdas, vectors,
+                                 result.coefficients);
+    // Each member of a repeated pair settles on some vector of its plane: the basis again.
+    canonicalRepeatedModes(lambdas, vectors, dofs, nodes);
+    result.time.solve += clock.lap();
+  }
   double nearest = std::numeric_limits<double>::infinity();
   for (const auto& lambda : lambdas) nearest = std::min(nearest, std::abs(lambda - options.shift));
   result.vectors.resize(system.size(), kept.size());
@@ -161,6 +204,7 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
     }
     normaliseShape(q, dofs);
     RotorMode mode = describe(lambda, q, dofs, nodes);
+    mode.whirlIterations = iterations[m];
     const double d =
         nearest > 0 ? std::max(1.0, std::abs(lambda - options.shift) / nearest) : 1.0;
     mode.roundOff = kRoundOffLinear * d + kRoundOffSquare * d * d;

@@ -64,6 +64,26 @@ struct RotorMode {
   int whirlNode = -1;
   /// Complex shape, scaled so its largest translation is 1 (real); empty in Campbell results.
   ComplexNodalField shape;
+  /// Eigen-solutions that found this mode with whirl-dependent bearings at its own eigenvalue
+  /// (fem/rotor/WhirlIteration.hpp); 0 with the synchronous set.
+  int whirlIterations = 0;
+};
+
+/// Which bearing coefficients the modes were found with: the synchronous set (whirl = spin),
+/// or each mode's own (bearings whose coefficients depend on the whirl).
+struct WhirlCoefficientsUsed {
+  bool atOwnWhirl = false;    ///< each mode at its own eigenvalue
+  int mostIterations = 0;     ///< the most eigen-solutions one mode took
+  /// Modes that did not settle within kMaxWhirlIterations, or settled on a mode found before
+  /// them (they keep the synchronous set's eigenvalue): their sweep speed index (0 for a
+  /// single speed) and that eigenvalue's damped frequency (Hz).
+  struct Unsettled {
+    std::size_t speed = 0;
+    double frequencyHz = 0;
+  };
+  std::vector<Unsettled> unsettled;
+  /// Folds another speed's record into this one (speed indices as given).
+  void add(const WhirlCoefficientsUsed& other, std::size_t speed);
 };
 
 struct RotorModesResult {
@@ -72,6 +92,7 @@ struct RotorModesResult {
   /// The same modes as free-dof vectors (DofMap order, columns as modes, unit norm), for
   /// correlation (MAC) and post-processing.
   Eigen::MatrixXcd vectors;
+  WhirlCoefficientsUsed coefficients;
   SystemSize size;
   SolveTimings time;
 };
@@ -117,6 +138,7 @@ struct CampbellResult {
   int localSweeps = 0;
   std::vector<LineJump> jumps;  ///< the jumps those sweeps did not cure
   std::optional<UntrackedGrowth> untracked;  ///< the lowest growing mode outside the lines
+  WhirlCoefficientsUsed coefficients;  ///< over every speed solved (local sweeps included)
 };
 
 /// Where a line's damped frequency crosses the excitation order x speed line.

@@ -54,6 +54,7 @@ RotorSystem::RotorSystem(const Model& model, ProportionalDamping damping)
         term.slots.push_back(dofs_.isFree(row) && dofs_.isFree(col) ? valueIndex(K0_, row, col)
                                                                     : -1);
       }
+    whirlDependent_ = whirlDependent_ || sd->dependsOnWhirl();
     terms_.push_back(std::move(term));
   }
   if (proportional_.internal != 0) assembleShaft();
@@ -112,12 +113,18 @@ void RotorSystem::assembleShaft() {
   }
 }
 
-SparseMatrix RotorSystem::atSpeed(const SparseMatrix& A, double speed, bool stiffness) const {
+SparseMatrix RotorSystem::atSpeed(const SparseMatrix& A, double speed, bool stiffness,
+                                  const std::complex<double>* lambda) const {
   SparseMatrix out = A;
   for (const SpeedTerm& t : terms_) {
     const int n = int(t.k0.rows());
-    const ElementMatrix now =
-        orZero(stiffness ? t.element->stiffnessAt(speed) : t.element->dampingAt(speed), n);
+    ElementMatrix now;
+    if (lambda && t.element->dependsOnWhirl()) {
+      EigenvalueMatrices at = t.element->atEigenvalue(speed, *lambda);
+      now = orZero(stiffness ? std::move(at.stiffness) : std::move(at.damping), n);
+    } else {
+      now = orZero(stiffness ? t.element->stiffnessAt(speed) : t.element->dampingAt(speed), n);
+    }
     const ElementMatrix& rest = stiffness ? t.k0 : t.c0;
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a)
@@ -127,8 +134,20 @@ SparseMatrix RotorSystem::atSpeed(const SparseMatrix& A, double speed, bool stif
   return out;
 }
 
-SparseMatrix RotorSystem::stiffness(double speed) const {
-  SparseMatrix K = atSpeed(K0_, speed, true);
+SparseMatrix RotorSystem::stiffness(double speed) const { return stiffnessAt(speed, nullptr); }
+
+SparseMatrix RotorSystem::stiffness(double speed, std::complex<double> lambda) const {
+  return stiffnessAt(speed, &lambda);
+}
+
+SparseMatrix RotorSystem::damping(double speed) const { return dampingAt(speed, nullptr); }
+
+SparseMatrix RotorSystem::damping(double speed, std::complex<double> lambda) const {
+  return dampingAt(speed, &lambda);
+}
+
+SparseMatrix RotorSystem::stiffnessAt(double speed, const std::complex<double>* lambda) const {
+  SparseMatrix K = atSpeed(K0_, speed, true, lambda);
   if (proportional_.internal != 0 && speed != 0)
     K += (speed * proportional_.internal) * circulatory_;
   if (crossCoupling_.size() > 0) K += crossCoupling_;
@@ -149,10 +168,10 @@ void RotorSystem::setCrossCoupling(int node, double q) {
   crossCoupling_.setFromTriplets(t.begin(), t.end());
 }
 
-SparseMatrix RotorSystem::damping(double speed) const {
-  SparseMatrix C = atSpeed(C0_, speed, false);
+SparseMatrix RotorSystem::dampingAt(double speed, const std::complex<double>* lambda) const {
+  SparseMatrix C = atSpeed(C0_, speed, false, lambda);
   if (proportional_.alpha != 0) C += proportional_.alpha * M_;
-  if (proportional_.beta != 0) C += proportional_.beta * atSpeed(K0_, speed, true);
+  if (proportional_.beta != 0) C += proportional_.beta * atSpeed(K0_, speed, true, lambda);
   if (proportional_.internal != 0) C += proportional_.internal * shaft_;
   return C;
 }

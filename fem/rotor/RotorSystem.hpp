@@ -6,6 +6,7 @@
 // sparse factorisation's symbolic analysis can be reused across speeds.
 #pragma once
 
+#include <complex>
 #include <vector>
 
 #include "fem/assembly/Assembly.hpp"
@@ -58,6 +59,14 @@ class RotorSystem {
   void setCrossCoupling(int node, double q);
   /// Viscous damping at spin speed Omega (rad/s), proportional damping included.
   SparseMatrix damping(double speed) const;
+  /// Whether an element's coefficients depend on the motion's frequency
+  /// (SpeedDependentElement::dependsOnWhirl).
+  bool dependsOnWhirl() const { return whirlDependent_; }
+  /// Stiffness and damping as stiffness(speed) and damping(speed), with each whirl-dependent
+  /// element at the motion e^{lambda t} (lambda in 1/s): what a mode with eigenvalue lambda
+  /// sees. The same as the speed's own without whirl-dependent elements.
+  SparseMatrix stiffness(double speed, std::complex<double> lambda) const;
+  SparseMatrix damping(double speed, std::complex<double> lambda) const;
   /// Sizes for the results (factorEntries from the caller's factorisation).
   SystemSize systemSize(double factorEntries) const;
 
@@ -69,8 +78,12 @@ class RotorSystem {
     std::vector<int> slots;  // column-major over the element's dofs
     ElementMatrix k0, c0;
   };
-  /// A plus the changes (kind at speed minus kind at rest) of the speed-dependent elements.
-  SparseMatrix atSpeed(const SparseMatrix& A, double speed, bool stiffness) const;
+  /// A plus the changes (kind at speed minus kind at rest) of the speed-dependent elements,
+  /// the whirl-dependent ones at `lambda` when given.
+  SparseMatrix atSpeed(const SparseMatrix& A, double speed, bool stiffness,
+                       const std::complex<double>* lambda = nullptr) const;
+  SparseMatrix stiffnessAt(double speed, const std::complex<double>* lambda) const;
+  SparseMatrix dampingAt(double speed, const std::complex<double>* lambda) const;
 
   /// The beams' own stiffness K_s and K_s R (ProportionalDamping::internal), on the pattern;
   /// empty without internal damping.
@@ -83,6 +96,7 @@ class RotorSystem {
   SparseMatrix shaft_, circulatory_;  ///< K_s and K_s R when beta_i != 0
   SparseMatrix crossCoupling_;        ///< setCrossCoupling's entries; empty without
   std::vector<SpeedTerm> terms_;
+  bool whirlDependent_ = false;
 };
 
 }  // namespace beamrotor

@@ -90,12 +90,24 @@ std::string modeShapeText(const FormeShaftMode& m) {
   }
 }
 
+/// Which bearing coefficients the modes saw, for whirl-dependent bearings (the synchronous
+/// set, the only one of other bearings, goes unsaid).
+void printCoefficientsUsed(std::ostream& out, const WhirlCoefficientsUsed& used) {
+  if (!used.atOwnWhirl) return;
+  out << "    bearing coefficients: each mode's own, at its eigenvalue (whirl-dependent "
+         "bearings; at most "
+      << used.mostIterations << " eigen-solutions a mode";
+  if (!used.unsettled.empty()) out << "; " << used.unsettled.size() << " did not settle";
+  out << ")\n";
+}
+
 }  // namespace
 
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesResult& r,
                 const OutputUnits& units) {
   out << "rotor analysis '" << a.name << "' at " << rpmText(r.speed * kRpm, units) << " ("
       << r.modes.size() << " damped modes)\n";
+  printCoefficientsUsed(out, r.coefficients);
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const RotorMode& m = r.modes[i];
     out << "    mode " << i + 1 << "  " << hzText(m.dampedFrequencyHz, units) << "  damping "
@@ -111,6 +123,7 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutco
   out << "campbell analysis '" << a.name << "' (" << c.lines.size() << " lines, " << c.speeds.size()
       << " speeds " << rpmText(c.speeds.front() * kRpm, units) << " to "
       << rpmText(c.speeds.back() * kRpm, units) << ")\n";
+  printCoefficientsUsed(out, c.coefficients);
   if (r.criticalSpeeds.empty())
     out << "    no critical speed (" << formatValue(r.order) << "x) in this range\n";
   // Numbered as the check quantity `critical_speed N` reads them.

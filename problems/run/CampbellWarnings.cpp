@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "fem/rotor/WhirlIteration.hpp"
+
 namespace beamrotor {
 
 namespace {
@@ -47,6 +49,23 @@ std::vector<std::string> campbellWarnings(const CampbellResult& campbell,
     out.push_back(text);
   }
   if (auto w = onsetWarning(onset)) out.push_back(*w);
+  for (const std::string& w : whirlWarnings(campbell.coefficients, campbell.speeds))
+    out.push_back(w);
+  return out;
+}
+
+std::vector<std::string> whirlWarnings(const WhirlCoefficientsUsed& used,
+                                       const std::vector<double>& speeds) {
+  std::vector<std::string> out;
+  for (const auto& u : used.unsettled) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "the mode at %.6g Hz (%.6g rpm, synchronous bearing coefficients) did not "
+                  "settle with the coefficients at its own eigenvalue (in %d eigen-solutions, "
+                  "or it settled on another mode's): it is reported with the synchronous set",
+                  u.frequencyHz, rpmOf(speeds.at(u.speed)), kMaxWhirlIterations);
+    out.push_back(text);
+  }
   return out;
 }
 

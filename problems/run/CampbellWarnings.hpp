@@ -19,6 +19,12 @@ namespace beamrotor {
 std::vector<std::string> campbellWarnings(const CampbellResult& campbell,
                                           const std::optional<InstabilityOnset>& onset);
 
+/// One warning per mode that did not settle with whirl-dependent bearings at its own
+/// eigenvalue (fem/rotor/WhirlIteration.hpp), naming its frequency and speed (`speeds`: the
+/// ones the record's indices refer to).
+std::vector<std::string> whirlWarnings(const WhirlCoefficientsUsed& used,
+                                       const std::vector<double>& speeds);
+
 /// The warning of an onset that settled on a sweep speed; none for another.
 std::optional<std::string> onsetWarning(const std::optional<InstabilityOnset>& onset);
 

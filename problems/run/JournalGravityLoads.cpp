@@ -1,7 +1,11 @@
 #include "problems/run/JournalGravityLoads.hpp"
 
+#include <algorithm>
+#include <exception>
 #include <stdexcept>
+#include <vector>
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/rotor/GravityLoads.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/rotor/JournalTable.hpp"
@@ -15,6 +19,13 @@ constexpr double kStandardGravity = 9.81;  // m/s^2, along -y: the journal's loa
 
 bool waitsForLoad(const DeckBearing& b) {
   return b.loadFromGravity && b.table.empty();
+}
+
+/// Where a bearing's `load: gravity` is written.
+DeckPlace loadPlace(const DeckBearing& b) {
+  DeckPlace place = b.place;
+  place.field += ".load";
+  return place;
 }
 
 }  // namespace
@@ -47,24 +58,39 @@ Deck withJournalLoads(const Deck& deck) {
   }
   // 2. Bearings are the model's only Bearing elements, added in deck order.
   Deck out = deck;
+  std::vector<std::size_t> waiting;
   for (std::size_t i = 0; i < out.rotor.bearings.size(); ++i) {
     DeckBearing& b = out.rotor.bearings[i];
     if (!waitsForLoad(b)) continue;
     const double W = loads.bearings.at(i).fy;
-    DeckPlace place = b.place;
-    place.field += ".load";
     if (!(W > 0))
-      throw DeckError(deck.path, place,
+      throw DeckError(deck.path, loadPlace(b),
                       "load: gravity: on pinned bearings the rotor's weight gives bearing '" +
                           b.name + "' " + formatNumber(W) +
                           " N (the shaft lifts off it); give its load as a number");
     b.journal->load = W;
-    try {
-      fillJournalTable(b);
-    } catch (const std::invalid_argument& e) {
-      throw DeckError(deck.path, place, "load: gravity (" + formatNumber(W) + " N): " + e.what());
-    }
+    waiting.push_back(i);
   }
+  // 3. Their tables, one bearing per core at a time: each bearing's table is its own work
+  //    (the same to the bit on one core or many); the first failure in deck order is thrown.
+  const int parts = std::max(1, std::min(usableCores(), int(waiting.size())));
+  std::vector<std::exception_ptr> failures(waiting.size());
+  runParts(parts, [&](int part) {
+    for (std::size_t k = std::size_t(part); k < waiting.size(); k += std::size_t(parts)) {
+      DeckBearing& b = out.rotor.bearings[waiting[k]];
+      try {
+        fillJournalTable(b);
+      } catch (const std::invalid_argument& e) {
+        failures[k] = std::make_exception_ptr(
+            DeckError(deck.path, loadPlace(b),
+                      "load: gravity (" + formatNumber(b.journal->load) + " N): " + e.what()));
+      } catch (...) {
+        failures[k] = std::current_exception();
+      }
+    }
+  });
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
   return out;
 }
 

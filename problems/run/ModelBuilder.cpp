@@ -4,13 +4,16 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <vector>
 
 #include "elements/Bearing.hpp"
 #include "elements/BearingOnPedestal.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/Spring.hpp"
+#include "elements/TiltingPadWhirl.hpp"
 #include "elements/TurnedBearing.hpp"
+#include "elements/WhirlTable.hpp"
 #include "meshes/FrameBuilder.hpp"
 #include "meshes/LineBuilder.hpp"
 #include "problems/run/JournalGravityLoads.hpp"
@@ -274,6 +277,19 @@ namespace {
 /// The bearing on its pedestal: a housing node at the bearing's point (uy, uz free, every
 /// other dof fixed), the pedestal's mass there and its springs to the ground, and the bearing
 /// between journal and housing.
+/// The bearing's coefficients by whirl as well, turned by its load angle: a table by whirl
+/// frequency, or tilting pads condensed at each mode's eigenvalue (whirl_coefficients:
+/// each-mode); null for neither.
+std::shared_ptr<const WhirlCoefficients> whirlCoefficientsOf(const DeckBearing& b) {
+  std::shared_ptr<const WhirlCoefficients> whirl;
+  if (!b.whirls.empty())
+    whirl = std::make_shared<WhirlTable>(b.speeds, b.whirls, b.whirlRows);
+  else if (b.eachModesWhirl && !b.padPoints.empty())
+    whirl = std::make_shared<TiltingPadWhirl>(b.padPoints);
+  if (whirl && b.loadAngle != 0) whirl = std::make_shared<TurnedWhirl>(whirl, b.loadAngle);
+  return whirl;
+}
+
 void addPedestal(const Deck& deck, const DeckBearing& b, std::vector<BearingCoefficients> table,
                  Model* model) {
   const DeckPedestal& p = *b.pedestal;
@@ -288,7 +304,9 @@ void addPedestal(const Deck& deck, const DeckBearing& b, std::vector<BearingCoef
   model->add<Spring>(NodeDof{housing, Dof::uy}, p.kyy, p.cyy);
   model->add<Spring>(NodeDof{housing, Dof::uz}, p.kzz, p.czz);
   std::vector<double> speeds = b.speeds.empty() ? std::vector<double>{0.0} : b.speeds;
-  model->add<BearingOnPedestal>(journal, housing, std::move(speeds), std::move(table));
+  auto& bearing =
+      model->add<BearingOnPedestal>(journal, housing, std::move(speeds), std::move(table));
+  bearing.setWhirlCoefficients(whirlCoefficientsOf(b));
 }
 
 void addAttachments(const Deck& deck, Model* model) {
@@ -333,7 +351,8 @@ void addAttachments(const Deck& deck, Model* model) {
       else if (b.speeds.empty())
         model->add<Bearing>(model->node(b.point), table.front());
       else
-        model->add<Bearing>(model->node(b.point), b.speeds, std::move(table));
+        model->add<Bearing>(model->node(b.point), b.speeds, std::move(table))
+            .setWhirlCoefficients(whirlCoefficientsOf(b));
       model->nameElement(b.name, int(model->elements().size()) - 1);
     });
   for (const NodalLoad& l : pointLoads(deck, *model, deck.loads)) model->addLoad(l);

@@ -328,6 +328,8 @@ AnalysisResult solveRotorAnalysis(const Deck& deck, const DeckAnalysis& a, const
 std::vector<std::string> rotorWarnings(const AnalysisResult& result) {
   if (const auto* c = std::get_if<CampbellOutcome>(&result))
     return campbellWarnings(c->campbell, c->onset);
+  if (const auto* m = std::get_if<RotorModesResult>(&result))
+    return whirlWarnings(m->coefficients, {m->speed});
   if (const auto* u = std::get_if<UnbalanceOutcome>(&result); u && u->stability)
     if (auto w = onsetWarning(u->stability->onset)) return {*w};
   return {};

@@ -20,8 +20,10 @@
 #include <numbers>
 
 #include "elements/TiltingPadBearing.hpp"
+#include "tests/elements/TiltingPadTestSupport.hpp"
 
 using namespace beamrotor;
+using namespace beamrotor::test;
 
 namespace {
 
@@ -36,26 +38,6 @@ double sliderCentreOfPressure(double K) {
 /// Michell's load over 6 mu U B^2 L / h_o^2.
 double sliderLoad(double K) {
   return (std::log(1 + K) - 2 * K / (2 + K)) / (K * K);
-}
-
-PlainJournal testJournal() {
-  PlainJournal j;
-  j.diameter = 0.1;
-  j.length = 0.05;
-  j.clearance = 100e-6;
-  j.viscosity = 0.02;
-  j.load = 5000;
-  return j;
-}
-
-TiltingPads fourPadsBetween() {
-  TiltingPads p;
-  p.count = 4;
-  p.arc = 80 * kPiPad / 180;
-  p.pivotOffset = 0.5;
-  p.preload = 0.3;
-  p.loadOnPad = false;
-  return p;
 }
 
 }  // namespace
@@ -102,7 +84,7 @@ TEST_CASE("a tilting-pad bearing's static stiffness is the derivative of its loa
   // The journal's equilibrium at W (1 -+ 1e-3); with the load between two pads it moves along
   // the load line (attitude 0), so dW / d(e c) is the static kxx. Central differences: error
   // O(1e-6) relative; the Newton solves balance the load to 1e-11.
-  const PlainJournal j = testJournal();
+  const PlainJournal j = tiltingPadTestJournal();
   const TiltingPads pads = fourPadsBetween();
   const double speed = 3000 * kPiPad / 30, h = 1e-3;
   const ReynoldsGrid grid{24, 8};
@@ -124,7 +106,7 @@ TEST_CASE("a tilting-pad bearing's static stiffness is the derivative of its loa
 
 TEST_CASE("four pads with the load between two: isotropic coefficients") {
   const TiltingPadPoint at =
-      tiltingPadPoint(testJournal(), fourPadsBetween(), 3000 * kPiPad / 30, {24, 8});
+      tiltingPadPoint(tiltingPadTestJournal(), fourPadsBetween(), 3000 * kPiPad / 30, {24, 8});
   for (double whirl : {0.5, 1.0, 2.0}) {
     CAPTURE(whirl);
     const BearingCoefficients k = tiltingPadCoefficients(at, whirl);
@@ -144,7 +126,7 @@ TEST_CASE("four pads with the load between two: isotropic coefficients") {
   // carry equal forces at the same film shape; their tilts differ by the journal's motion
   // across their pivot lines, e (t_135 - t_225) . (-1, 0) / R = sqrt(2) e / R.
   REQUIRE(at.pads.size() == 4);
-  const PlainJournal j = testJournal();
+  const PlainJournal j = tiltingPadTestJournal();
   CHECK(at.pads[0].force == doctest::Approx(at.pads[3].force).epsilon(1e-9));
   CHECK(at.pads[3].tilt - at.pads[0].tilt ==
         doctest::Approx(std::sqrt(2.0) * at.eccentricity * j.clearance / (j.diameter / 2))
@@ -157,7 +139,7 @@ TEST_CASE("one pad condenses to a stiffness along its pivot line") {
   TiltingPads pad = fourPadsBetween();
   pad.count = 1;
   pad.loadOnPad = true;
-  const TiltingPadPoint at = tiltingPadPoint(testJournal(), pad, 3000 * kPiPad / 30, {24, 8});
+  const TiltingPadPoint at = tiltingPadPoint(tiltingPadTestJournal(), pad, 3000 * kPiPad / 30, {24, 8});
   const BearingCoefficients k = at.synchronous;
   CHECK(k.kyy > 0);
   CHECK(k.cyy > 0);
@@ -166,4 +148,21 @@ TEST_CASE("one pad condenses to a stiffness along its pivot line") {
   CHECK(std::abs(k.kzz) < 1e-12 * k.kyy);
   CHECK(std::abs(k.czz) < 1e-12 * k.cyy);
   CHECK(std::abs(at.attitude) < 1e-12);
+}
+
+TEST_CASE("a tilting-pad equilibrium started from a nearby speed's is the one from the centre") {
+  // Newton stops within 1e-11 of the load from either start; the journal and coefficients
+  // then agree to about that (1e-10 keeps a margin).
+  const ReynoldsGrid grid{24, 8};
+  const double speed = 3000 * kPiPad / 30;
+  const TiltingPadPoint cold =
+      tiltingPadPoint(tiltingPadTestJournal(), fourPadsBetween(), speed, grid);
+  const TiltingPadPoint before =
+      tiltingPadPoint(tiltingPadTestJournal(), fourPadsBetween(), 0.8 * speed, grid);
+  const TiltingPadPoint warm =
+      tiltingPadPoint(tiltingPadTestJournal(), fourPadsBetween(), speed, grid, &before);
+  CHECK(warm.eccentricity == doctest::Approx(cold.eccentricity).epsilon(1e-10));
+  CHECK(warm.synchronous.kyy == doctest::Approx(cold.synchronous.kyy).epsilon(1e-10));
+  CHECK(warm.synchronous.czz == doctest::Approx(cold.synchronous.czz).epsilon(1e-10));
+  CHECK(before.eccentricity > 1.01 * cold.eccentricity);  // a start that is not the answer
 }

@@ -13,6 +13,7 @@
 #include "elements/TiltingPadBearing.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
+#include "tests/elements/TiltingPadTestSupport.hpp"
 #include "tests/fem/rotor/RotorTestSupport.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
@@ -26,20 +27,18 @@ TEST_SUITE("slow") {
     const CampbellOutcome& c = *resultOf<CampbellOutcome>(s.run->analyses.at(2));
     REQUIRE(c.journals.size() == 2);
     const double mass = compressorRotorMass();
-    TiltingPads pads;
-    pads.count = 4;
-    pads.arc = 80 * std::numbers::pi / 180;
-    pads.pivotOffset = 0.5;
-    pads.preload = 0.3;
-    pads.loadOnPad = false;
+    const TiltingPads pads = fourPadsBetween();  // the deck's pads
     for (const JournalBearingCurve& j : c.journals) {
       // The symmetric rotor's half, to the static solve's round-off.
       CHECK(j.journal.load == doctest::Approx(mass * 9.81 / 2).epsilon(1e-9));
       for (std::size_t i : {std::size_t(0), j.speeds.size() / 2, j.speeds.size() - 1}) {
+        // The deck's Newton starts from the last speed's equilibrium, the direct one from the
+        // centre: both stop within 1e-11 of the load, which moves the journal by about that
+        // much of its eccentricity (and the coefficients alike); 1e-10 keeps a margin.
         const TiltingPadPoint direct = tiltingPadPoint(j.journal, pads, j.speeds[i], {24, 8});
-        CHECK(j.eccentricity[i] == doctest::Approx(direct.eccentricity).epsilon(1e-12));
-        CHECK(j.coefficients[i].kyy == doctest::Approx(direct.synchronous.kyy).epsilon(1e-12));
-        CHECK(j.coefficients[i].czz == doctest::Approx(direct.synchronous.czz).epsilon(1e-12));
+        CHECK(j.eccentricity[i] == doctest::Approx(direct.eccentricity).epsilon(1e-10));
+        CHECK(j.coefficients[i].kyy == doctest::Approx(direct.synchronous.kyy).epsilon(1e-10));
+        CHECK(j.coefficients[i].czz == doctest::Approx(direct.synchronous.czz).epsilon(1e-10));
         // Four pads with the load between two: isotropic (tests/elements/...).
         CHECK(j.coefficients[i].kzz == doctest::Approx(j.coefficients[i].kyy).epsilon(1e-8));
       }

@@ -34,7 +34,12 @@ struct DeckBearing {
   std::string name;
   std::string point;
   std::vector<double> speeds;              ///< rad/s; empty for constant coefficients
-  std::vector<BearingCoefficients> table;  ///< N/m, N s/m
+  std::vector<BearingCoefficients> table;  ///< N/m, N s/m (by whirl too: the synchronous set)
+  /// A table by speed and whirl frequency (rows with `whirl_hz`): the whirl frequencies
+  /// (rad/s, ascending, the same at every speed) and the rows, speed by speed
+  /// (elements/WhirlTable.hpp); empty for a table by speed only.
+  std::vector<double> whirls;
+  std::vector<BearingCoefficients> whirlRows;
   /// A plain journal bearing (type: plain-journal): its geometry and oil; the table then holds
   /// its coefficients at `speeds`, by the short-bearing theory or the finite film (`model`).
   std::optional<PlainJournal> journal;
@@ -46,6 +51,11 @@ struct DeckBearing {
   std::optional<TiltingPads> tiltingPads;
   /// The journal's operating point at each of `speeds` (what `table` was filled from).
   std::vector<JournalOperatingPoint> journalPoints;
+  /// Tilting pads: the pads' states at each of `speeds`, from which the modes take the
+  /// coefficients at their own eigenvalue (elements/TiltingPadWhirl.hpp) with
+  /// `whirl_coefficients: each-mode` (eachModesWhirl); by default the synchronous set.
+  std::vector<TiltingPadPoint> padPoints;
+  bool eachModesWhirl = false;
   /// A plain journal with `load: gravity`: its load is the rotor's weight share on pinned
   /// bearings, found when the deck runs (journal->load and table are empty until then).
   bool loadFromGravity = false;

@@ -32,8 +32,11 @@ void fillLoadedJournalPoints(DeckBearing& b) {
     // The pads' equilibrium and synchronous coefficients once per table speed.
     for (double w : b.speeds) {
       try {
-        const TiltingPadPoint p = tiltingPadPoint(j, *b.tiltingPads, w, b.journalGrid);
+        // Each speed's Newton starts from the last speed's equilibrium.
+        TiltingPadPoint p = tiltingPadPoint(j, *b.tiltingPads, w, b.journalGrid,
+                                            b.padPoints.empty() ? nullptr : &b.padPoints.back());
         b.journalPoints.push_back({p.eccentricity, p.attitude, p.synchronous});
+        b.padPoints.push_back(std::move(p));
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument("at " + formatNumber(w * 30 / std::numbers::pi) +
                                     " rpm: " + e.what() + "; raise from_rpm, mu or L, or check "
@@ -66,6 +69,7 @@ void fillJournalTable(DeckBearing& b) {
   const PlainJournal& j = *b.journal;
   b.table.clear();
   b.journalPoints.clear();
+  b.padPoints.clear();
   if (j.load == 0) {  // an unloaded journal runs centred
     if (b.journalModel != DeckBearing::JournalModel::shortBearing)
       throw std::invalid_argument(

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "elements/PlainJournalBearing.hpp"
+#include "elements/WhirlTable.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/rotor/JournalTable.hpp"
 #include "problems/deck/ReaderContext.hpp"
@@ -115,7 +116,7 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
   if (tilting)
     f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
                  "from_rpm", "to_rpm", "steps", "grid", "pads", "arc", "offset", "preload",
-                 "orientation"},
+                 "orientation", "whirl_coefficients"},
                 "a tilting-pad bearing");
   else
     f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
@@ -142,7 +143,11 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
       length.fail("the short-bearing theory holds for L/D <= 1 (here L/D = " + formatNumber(ld) +
                   "); use model: finite");
   }
-  if (tilting) b.tiltingPads = readTiltingPads(c, f);
+  if (tilting) {
+    b.tiltingPads = readTiltingPads(c, f);
+    if (auto w = f.get("whirl_coefficients"))
+      b.eachModesWhirl = w->choice({"synchronous", "each-mode"}) == "each-mode";
+  }
   auto grid = f.get("grid");
   if (grid && b.journalModel != Model::finite && !tilting)
     grid->fail("a film grid belongs to model: finite (the short theory has closed forms)");
@@ -208,6 +213,53 @@ DeckPedestal readPedestal(const Context& c, const Field& f) {
   return p;
 }
 
+/// A table by speed and whirl frequency: rows {speed_rpm, whirl_hz, kxx ... cyx}, speed by
+/// speed (ascending), each speed on the same ascending whirl frequencies. The speed table gets
+/// the synchronous set (whirl = spin), which the analyses at the spin's frequency read.
+void readWhirlTable(const Context& c, const Field& table, DeckBearing& b) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  const std::vector<Field> rows = table.items();
+  std::size_t column = 0;  // the row's place among its speed's whirl frequencies
+  for (const Field& row : rows) {
+    if (!row.isMap()) row.fail("expected a table row {speed_rpm, whirl_hz, kxx, ...}, got " +
+                               row.describe());
+    const Field speed = row.require("speed_rpm");
+    const double w = speed.nonNegative(ev, kRpmField) * kRadPerRpm;
+    const Field whirlField = row.require("whirl_hz");
+    const double whirl = whirlField.nonNegative(ev, dim::frequency) * 2 * std::numbers::pi;
+    const bool newSpeed = b.speeds.empty() || w != b.speeds.back();
+    if (newSpeed) {
+      if (!b.speeds.empty() && !(w > b.speeds.back()))
+        speed.fail("speeds of a bearing table must be strictly ascending (rows speed by speed, "
+                   "each speed's whirl frequencies ascending)");
+      if (!b.speeds.empty() && column != b.whirls.size())
+        speed.fail("every speed of a whirl table lists the same whirl frequencies (" +
+                   std::to_string(b.whirls.size()) + " at the first speed, " +
+                   std::to_string(column) + " at " +
+                   formatNumber(b.speeds.back() / kRadPerRpm) + " rpm)");
+      b.speeds.push_back(w);
+      column = 0;
+    }
+    if (b.speeds.size() == 1) {
+      if (!b.whirls.empty() && !(whirl > b.whirls.back()))
+        whirlField.fail("a speed's whirl frequencies must be strictly ascending");
+      b.whirls.push_back(whirl);
+    } else if (column >= b.whirls.size() || whirl != b.whirls[column]) {
+      whirlField.fail("every speed of a whirl table lists the same whirl frequencies as the "
+                      "first (" + formatNumber(b.whirls[std::min(column, b.whirls.size() - 1)] /
+                                               (2 * std::numbers::pi)) +
+                      " Hz expected here)");
+    }
+    ++column;
+    b.whirlRows.push_back(readCoefficients(c, row, {"speed_rpm", "whirl_hz"}, "a whirl table row"));
+  }
+  if (b.speeds.size() > 1 && column != b.whirls.size())
+    rows.back().fail("every speed of a whirl table lists the same whirl frequencies (" +
+                     std::to_string(b.whirls.size()) + " at the first speed, " +
+                     std::to_string(column) + " at the last)");
+  b.table = WhirlTable(b.speeds, b.whirls, b.whirlRows).synchronous();
+}
+
 bool carriesLateral(const Deck& deck) {
   return deck.dofs.contains(Dof::uy) && deck.dofs.contains(Dof::uz);
 }
@@ -236,13 +288,17 @@ void readBearings(Context& c) {
       f.allowOnly({"name", "at", "table", "load_angle", "pedestal"}, "a tabulated bearing");
       const std::vector<Field> rows = table->items();
       if (rows.empty()) table->fail("the bearing table is empty");
-      for (const Field& row : rows) {
-        const Field speed = row.require("speed_rpm");
-        const double w = speed.nonNegative(c.evaluator, kRpmField) * kRadPerRpm;
-        if (!b.speeds.empty() && !(w > b.speeds.back()))
-          speed.fail("speeds of a bearing table must be strictly ascending");
-        b.speeds.push_back(w);
-        b.table.push_back(readCoefficients(c, row, {"speed_rpm"}, "a bearing table row"));
+      if (rows.front().isMap() && rows.front().has("whirl_hz")) {
+        readWhirlTable(c, *table, b);
+      } else {
+        for (const Field& row : rows) {
+          const Field speed = row.require("speed_rpm");
+          const double w = speed.nonNegative(c.evaluator, kRpmField) * kRadPerRpm;
+          if (!b.speeds.empty() && !(w > b.speeds.back()))
+            speed.fail("speeds of a bearing table must be strictly ascending");
+          b.speeds.push_back(w);
+          b.table.push_back(readCoefficients(c, row, {"speed_rpm"}, "a bearing table row"));
+        }
       }
     } else {
       b.table.push_back(

@@ -23,6 +23,16 @@ Json finiteOrNull(double x) {
   return std::isinf(x) ? Json(nullptr) : Json(x);
 }
 
+/// Which bearing coefficients the modes were found with (WhirlCoefficientsUsed).
+Json coefficientsJson(const WhirlCoefficientsUsed& used, const std::vector<double>& speeds) {
+  Json unsettled = Json::array();
+  for (const auto& u : used.unsettled)
+    unsettled.push_back({{"rpm", rpmOf(speeds.at(u.speed))}, {"frequency_hz", u.frequencyHz}});
+  return {{"used", used.atOwnWhirl ? "each mode's eigenvalue" : "synchronous"},
+          {"most_iterations", used.mostIterations},
+          {"unsettled", unsettled}};
+}
+
 Json modesJson(const std::string& stem, const RotorModesResult& r) {
   Json frequencies = Json::array(), modes = Json::array(), vtus = Json::array(),
        orbits = Json::array();
@@ -36,13 +46,15 @@ Json modesJson(const std::string& stem, const RotorModesResult& r) {
                      {"log_decrement", finiteOrNull(mode.logDecrement)},
                      {"whirl", std::string(whirlName(mode.whirl))},
                      {"whirl_ratio", mode.whirlRatio},
-                     {"eigenvalue", {mode.eigenvalue.real(), mode.eigenvalue.imag()}}});
+                     {"eigenvalue", {mode.eigenvalue.real(), mode.eigenvalue.imag()}},
+                     {"whirl_iterations", mode.whirlIterations}});
     vtus.push_back(modeVtu(stem, int(m) + 1));
     orbits.push_back(orbitVtu(stem, int(m) + 1));
   }
   return {{"speed_rpm", rpmOf(r.speed)},
           {"frequencies_hz", frequencies},
           {"modes", modes},
+          {"bearing_coefficients", coefficientsJson(r.coefficients, {r.speed})},
           {"time_s", r.time.total},
           {"files",
            {{"modes_csv", modesCsv(stem)},
@@ -139,6 +151,7 @@ Json campbellJson(const std::string& stem, const CampbellOutcome& r) {
           {"critical_speeds", critical},
           {"further_orders", further},
           {"symbolic_analyses", c.symbolicAnalyses},
+          {"bearing_coefficients", coefficientsJson(c.coefficients, c.speeds)},
           {"time_s", c.time.total},
           {"files",
            {{"campbell_csv", campbellCsv(stem)},

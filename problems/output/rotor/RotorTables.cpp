@@ -87,12 +87,16 @@ CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
                          {"damping_ratio", ""},
                          {"log_decrement", ""},
                          {"whirl", ""},
-                         {"whirl_ratio", ""}});
+                         {"whirl_ratio", ""},
+                         {"whirl_iterations", ""}});
   for (std::size_t m = 0; m < r.modes.size(); ++m) {
     const RotorMode& mode = r.modes[m];
+    // whirl_iterations: 0 with the synchronous set, else the eigen-solutions that found the
+    // mode with whirl-dependent bearings at its own eigenvalue.
     table.addRow({(long long)(m + 1), mode.dampedFrequencyHz, mode.naturalFrequencyHz,
                   mode.dampingRatio, logDecrementCell(mode.logDecrement),
-                  std::string(whirlName(mode.whirl)), mode.whirlRatio});
+                  std::string(whirlName(mode.whirl)), mode.whirlRatio,
+                  (long long)mode.whirlIterations});
   }
   return table;
 }

@@ -1,0 +1,209 @@
+// Bearings whose coefficients depend on the whirl frequency (fem/rotor/WhirlIteration.hpp):
+// each mode found with the coefficients at its own eigenvalue, against two references.
+//  - A Jeffcott rotor on a table whose stiffness is linear in the whirl frequency,
+//    k(w) = k0 + k1 w, damping c: the disk's r = uy + i uz obeys m l^2 + c l + k_s + k(w) = 0
+//    with w = Im l. The imaginary part gives Re l = -c / (2 m), the real part
+//    m w^2 - k1 w - (k_s + k0 - c^2 / (4 m)) = 0, so
+//      w = (k1 + sqrt(k1^2 + 4 m (k_s + k0 - c^2 / (4 m)))) / (2 m)
+//    for both whirls (no gyroscopic moment at a point mass).
+//  - A rotor on tilting pads: the eigenvalues with the pads condensed at each mode's
+//    eigenvalue are the eigenvalues of the full model that keeps every pad's tilt as a degree
+//    of freedom (massless pads: the tilt's equation holds no inertia, so condensing it at the
+//    eigenvalue is exact there; Lund 1964, Allaire et al. 1981).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "elements/Bearing.hpp"
+#include "elements/TiltingPadWhirl.hpp"
+#include "elements/WhirlTable.hpp"
+#include "fem/rotor/RotorModes.hpp"
+#include "meshes/LineBuilder.hpp"
+#include "tests/elements/TiltingPadTestSupport.hpp"
+#include "tests/fem/rotor/RotorTestSupport.hpp"
+
+using namespace beamrotor;
+using namespace beamrotor::test;
+
+namespace {
+
+/// A pad's film between the journal (uy, uz) and the pad's tilt (a dof of its own node, in
+/// metres across the pivot line): with w = Q^T u - tau t the film's motion relative to the
+/// pad in pad axes (e_k, t_k; Q their columns in global y, z), the journal feels -Q Z w and
+/// the tilt t^T Z w, so the element's K and C are B K_k B^T and B C_k B^T, B = [Q; -t^T]
+/// (elements/TiltingPadBearing.hpp; t = (0, 1) in pad axes).
+class PadFilmElement : public SpeedDependentElement {
+ public:
+  PadFilmElement(int journal, int pad, const PadFilmState& p, double stiffnessScale,
+                 double dampingScale)
+      : journal_(journal), pad_(pad) {
+    Eigen::Matrix<double, 3, 2> b;
+    b << std::cos(p.pivot), -std::sin(p.pivot), std::sin(p.pivot), std::cos(p.pivot), 0, -1;
+    Eigen::Matrix2d k, c;
+    k << p.stiffness[0][0], p.stiffness[0][1], p.stiffness[1][0], p.stiffness[1][1];
+    c << p.damping[0][0], p.damping[0][1], p.damping[1][0], p.damping[1][1];
+    k_ = stiffnessScale * b * k * b.transpose();
+    c_ = dampingScale * b * c * b.transpose();
+  }
+  ElementDofs dofs() const override {
+    static constexpr std::uint8_t codes[] = {elementDofCode(0, Dof::uy),
+                                             elementDofCode(0, Dof::uz),
+                                             elementDofCode(1, Dof::rx)};
+    return {{journal_, pad_}, codes, 3};
+  }
+  ElementMatrix stiffnessAt(double) const override { return k_; }
+  ElementMatrix dampingAt(double) const override { return c_; }
+  std::string kind() const override { return "pad film"; }
+
+ private:
+  int journal_, pad_;
+  ElementMatrix k_, c_;
+};
+
+/// A steel shaft (1 m, 100 mm) with a 300 kg disk at mid-span on a bearing at each end; the
+/// bearings are added by the caller at the returned end nodes.
+std::array<int, 2> buildShaft(Model& model) {
+  auto sec = std::make_shared<Section>(
+      Section::circle("shaft", Material::fromEnu("steel", 2.1e11, 0.3, 7850), 0.1));
+  LineSpec spec;
+  spec.dofs = DofSet::lateral();
+  spec.segments.push_back({1.0, sec, 8, 0, {}});
+  spec.points = {{"left", 0}, {"disk", 0.5}, {"right", 1.0}};
+  buildLine(model, spec);
+  model.add<PointInertia>(model.node("disk"), DofSet::lateral(), 300.0, 6.0, 3.0,
+                          Eigen::Vector3d::UnitX());
+  return {model.node("left"), model.node("right")};
+}
+
+TiltingPadPoint padPoint(double speed) {
+  return tiltingPadPoint(tiltingPadTestJournal(), fourPadsBetween(), speed, {24, 8});
+}
+
+}  // namespace
+
+TEST_SUITE("rotor") {
+  TEST_CASE("whirl table linear in the whirl frequency: the Jeffcott rotor's closed form") {
+    const double L = 0.7, D = 0.03, m = 20, E = 2.1e11;
+    const double k0 = 1e6, k1 = 500, c = 200;  // N/m, N/m per rad/s, N s/m
+    const double ks = 48 * E * (std::numbers::pi * std::pow(D, 4) / 64) / std::pow(L, 3);
+    // Two speeds and two whirl frequencies bracket the mode (its whirl ~ 330 rad/s): the
+    // bilinear table is then exactly linear in the whirl frequency.
+    std::vector<BearingCoefficients> rows;
+    for (int speedRow = 0; speedRow < 2; ++speedRow)
+      for (double w : {0.0, 2000.0}) rows.push_back(BearingCoefficients::isotropic(k0 + k1 * w, c));
+    auto table = std::make_shared<WhirlTable>(std::vector<double>{0, 2000},
+                                              std::vector<double>{0, 2000}, rows);
+    Model model;
+    const int disk = buildJeffcottRotor(model, L, D, m, E);
+    const double speed = 500;
+    model.add<Bearing>(disk, std::vector<double>{0, 2000}, table->synchronous())
+        .setWhirlCoefficients(table);
+    const RotorModesResult r = solveRotorModes(model, speed, rotorOptions(2));
+    const double sigma = -c / (2 * m);
+    const double w = (k1 + std::sqrt(k1 * k1 + 4 * m * (ks + k0 - c * c / (4 * m)))) / (2 * m);
+    CHECK(r.coefficients.atOwnWhirl);
+    CHECK(r.coefficients.unsettled.empty());
+    REQUIRE(r.modes.size() == 2);
+    for (const RotorMode& mode : r.modes) {
+      // The iteration stops at 1e-10 (relative) and contracts by k1 / (2 m w) = 0.04 a step,
+      // so it lies within 1e-11 of its fixed point; the shaft's mass (4e-13 of the disk's)
+      // and round-off of the eigen-solution add less. 1e-9 keeps a margin of 10.
+      CHECK(mode.eigenvalue.real() == doctest::Approx(sigma).epsilon(1e-9));
+      CHECK(mode.eigenvalue.imag() == doctest::Approx(w).epsilon(1e-9));
+      CHECK(mode.whirlIterations >= 2);
+    }
+    // The synchronous set (k at whirl = spin, 500 rad/s) gives another frequency: the
+    // iteration moved it.
+    const double wSync = std::sqrt((ks + k0 + k1 * speed) / m - sigma * sigma);
+    CHECK(std::abs(w - wSync) > 1e-3 * w);
+  }
+
+  TEST_CASE("whirl table constant in the whirl frequency: the synchronous modes") {
+    // Coefficients that do not change with the whirl: the fixed point is the synchronous
+    // eigenvalue itself, reached at the first re-solve (to the eigensolver's round-off).
+    Model a, b;
+    const BearingCoefficients k{2e6, 3e5, -3e5, 2.5e6, 400, 20, 20, 500};
+    buildJeffcottRotor(a, 0.7, 0.03, 20, 2.1e11, k);
+    const int db = buildJeffcottRotor(b, 0.7, 0.03, 20, 2.1e11);
+    auto table = std::make_shared<WhirlTable>(std::vector<double>{0}, std::vector<double>{0, 1e4},
+                                              std::vector<BearingCoefficients>{k, k});
+    b.add<Bearing>(db, std::vector<double>{0}, table->synchronous()).setWhirlCoefficients(table);
+    const RotorModesResult ra = solveRotorModes(a, 300, rotorOptions(2));
+    const RotorModesResult rb = solveRotorModes(b, 300, rotorOptions(2));
+    CHECK_FALSE(ra.coefficients.atOwnWhirl);
+    CHECK(ra.modes[0].whirlIterations == 0);
+    REQUIRE(rb.modes.size() == ra.modes.size());
+    for (std::size_t i = 0; i < ra.modes.size(); ++i) {
+      CHECK(std::abs(rb.modes[i].eigenvalue - ra.modes[i].eigenvalue) <=
+            1e-11 * std::abs(ra.modes[i].eigenvalue));
+      CHECK(rb.modes[i].whirlIterations <= 2);
+    }
+  }
+
+  TEST_CASE("tilting pads at each mode's eigenvalue: the full model with the pads' tilts") {
+    const double speed = 6000 * std::numbers::pi / 30;
+    const TiltingPadPoint point = padPoint(speed);
+    // Condensed: the pads at each mode's eigenvalue.
+    Model condensed;
+    const auto ends = buildShaft(condensed);
+    auto whirl = std::make_shared<TiltingPadWhirl>(std::vector<TiltingPadPoint>{point});
+    for (int node : ends)
+      condensed.add<Bearing>(node, std::vector<double>{speed},
+                             std::vector<BearingCoefficients>{point.synchronous})
+          .setWhirlCoefficients(whirl);
+    // Full: every loaded pad's tilt kept, a node of its own.
+    Model full;
+    const auto fullEnds = buildShaft(full);
+    int padFilms = 0;
+    for (int node : fullEnds)
+      for (const PadFilmState& p : point.pads) {
+        if (p.stiffness[1][1] == 0) continue;  // a pad the journal has left carries nothing
+        const Eigen::Vector3d at = full.nodes()[node];
+        const int pad = full.addNode(at);
+        full.add<PadFilmElement>(node, pad, p, point.stiffnessScale, point.dampingScale);
+        ++padFilms;
+      }
+    CHECK(padFilms >= 6);
+    // The bounce pair around 350 rad/s; the overdamped modes nearer 0 and the conical pair are
+    // left out (docs/whirl-dependent-bearings.md: from the synchronous set they may settle on
+    // the bounce eigenvalue).
+    const Complex around(0, 350);
+    const RotorModesResult rc = solveRotorModes(condensed, speed, rotorOptions(2, around));
+    // The full model has one real eigenvalue more per pad (the tilt's relaxation): ask for
+    // those too.
+    const RotorModesResult rf = solveRotorModes(full, speed, rotorOptions(2 + padFilms, around));
+    CHECK(rc.coefficients.atOwnWhirl);
+    CHECK(rc.coefficients.unsettled.empty());
+    CHECK_FALSE(rf.coefficients.atOwnWhirl);
+    // The synchronous set differs from the eigenvalue's by several per cent (whirl well below
+    // the spin for these modes): the test tells the two apart.
+    const RotorModesResult sync = [&] {
+      Model s;
+      const auto e = buildShaft(s);
+      for (int node : e) s.add<Bearing>(node, point.synchronous);
+      return solveRotorModes(s, speed, rotorOptions(2, around));
+    }();
+    REQUIRE(rc.modes.size() == 2);
+    // The pair: one forward, one backward whirl.
+    CHECK(rc.modes[0].whirl != rc.modes[1].whirl);
+    for (std::size_t i = 0; i < rc.modes.size(); ++i) {
+      const std::complex<double> lambda = rc.modes[i].eigenvalue;
+      CAPTURE(lambda);
+      double nearest = 1e300;
+      for (const RotorMode& f : rf.modes) nearest = std::min(nearest, std::abs(f.eigenvalue - lambda));
+      // The iteration stops at 1e-10 of |lambda|; the two eigen-solutions' round-off is below
+      // 1e-12; a real eigenvalue (an overdamped mode) is read 1e-9 off the axis
+      // (tiltingPadCoefficientsAt). 1e-8 keeps a margin.
+      CHECK(nearest <= 1e-8 * std::abs(lambda));
+      double toSync = 1e300;
+      for (const RotorMode& s : sync.modes) toSync = std::min(toSync, std::abs(s.eigenvalue - lambda));
+      CHECK(toSync > 1e-4 * std::abs(lambda));
+    }
+  }
+}
