@@ -1,11 +1,20 @@
 #include "fem/static/TrainEnvelope.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "fem/assembly/ElementExtrema.hpp"
 
 namespace beamrotor {
+
+namespace {
+
+/// Relative size below which an extreme is the round-off of zero: far above the few ulps a
+/// cubic's evaluation loses, far below any effect a load on the path has.
+constexpr double kRoundOffOfZero = 1e-12;
+
+}  // namespace
 
 double trainEffect(const InfluenceLine& line, const std::vector<TrainLoad>& train, double lead) {
   double sum = 0;
@@ -59,6 +68,20 @@ TrainEnvelope trainEnvelope(const InfluenceLine& line, const std::vector<TrainLo
       if (value < out.min.value) out.min = {value, lead};
     }
   }
+  // An extreme within the round-off of the largest effect the train could have (every load at
+  // the line's largest value) is that round-off of 0, e.g. the train standing off the path or
+  // on a support: it is reported as 0.
+  double largest = 0;  // |line| <= the sum of a piece's |coefficients| on [0, 1]
+  for (const Polynomial& piece : line.pieces) {
+    double bound = 0;
+    for (double c : piece) bound += std::abs(c);
+    largest = std::max(largest, bound);
+  }
+  double forces = 0;
+  for (const TrainLoad& load : train) forces += std::abs(load.force);
+  const double noise = kRoundOffOfZero * forces * largest;
+  for (TrainExtreme* e : {&out.max, &out.min})
+    if (std::abs(e->value) <= noise) e->value = 0;
   return out;
 }
 
