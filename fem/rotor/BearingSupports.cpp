@@ -8,13 +8,17 @@
 
 namespace beamrotor {
 
+const SpeedDependentElement* asBearing(const Element& element) {
+  const auto* b = dynamic_cast<const SpeedDependentElement*>(&element);
+  return b && b->kind() == "bearing" ? b : nullptr;
+}
+
 BearingSupports bearingSupports(const RotorSystem& system) {
   const DofMap& dofs = system.dofs();
   BearingSupports out{system.stiffness(0), {}};
   for (const auto& e : system.model().elements()) {
-    // A bearing: a speed-dependent element of kind "bearing" (elements/Bearing.hpp).
-    const auto* b = dynamic_cast<const SpeedDependentElement*>(e.get());
-    if (!b || b->kind() != "bearing") continue;
+    const SpeedDependentElement* b = asBearing(*e);
+    if (!b) continue;
     const auto d = b->dofs();
     const ElementMatrix k = b->stiffnessAt(0);
     for (int r = 0; r < int(d.size()); ++r) {

@@ -6,9 +6,14 @@
 
 #include <vector>
 
+#include "fem/model/RotorElement.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 
 namespace beamrotor {
+
+/// The element as a bearing: a speed-dependent element of kind "bearing" (elements/Bearing.hpp),
+/// or nullptr for any other element.
+const SpeedDependentElement* asBearing(const Element& element);
 
 struct BearingSupports {
   SparseMatrix shaft;          ///< K at rest without the bearings (the system's pattern)

@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "fem/model/RotorElement.hpp"
 #include "fem/rotor/BearingSupports.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -160,8 +159,8 @@ double rigidSupportCriticalSpeed(const Model& model, double speed) {
   std::vector<int> pinned;
   bool bearings = false;
   for (const auto& e : model.elements()) {
-    const auto* b = dynamic_cast<const SpeedDependentElement*>(e.get());
-    if (!b || b->kind() != "bearing") continue;
+    const SpeedDependentElement* b = asBearing(*e);
+    if (!b) continue;
     bearings = true;
     const auto d = b->dofs();
     const ElementMatrix k = b->stiffnessAt(speed);

@@ -84,8 +84,8 @@ GravityLoads solveGravityLoads(const Model& model, const Eigen::Vector3d& gravit
   const Eigen::VectorXd pinReaction = K * u - f;
   std::vector<bool> taken(n, false);
   for (int i = 0; i < int(model.elements().size()); ++i) {
-    const auto* b = dynamic_cast<const SpeedDependentElement*>(model.elements()[i].get());
-    if (!b || b->kind() != "bearing") continue;
+    const SpeedDependentElement* b = asBearing(*model.elements()[i]);
+    if (!b) continue;
     const auto d = b->dofs();  // uy, uz
     BearingForce force{i, d[0].node, model.nodes()[d[0].node].x(), 0, 0};
     const int y = dofs.equation(d[0]), z = dofs.equation(d[1]);
