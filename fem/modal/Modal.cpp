@@ -28,6 +28,14 @@ constexpr double kRigidBodyRatio = 1e-6;
 void markRigidBodyModes(const Model& model, const DofMap& dofs, const SparseMatrix& K,
                         double shift, std::vector<Mode>& modes) {
   if (shift == 0 || modes.empty()) return;  // K was factorised: it has no null space
+  // The QR costs about a factorisation: skip it when no eigenvalue could pass the test below
+  // (its scale is one of the computed eigenvalues or |shift|), the usual shifted analysis.
+  double nearest = std::abs(modes.front().eigenvalue), largest = std::abs(shift);
+  for (const Mode& m : modes) {
+    nearest = std::min(nearest, std::abs(m.eigenvalue));
+    largest = std::max(largest, std::abs(m.eigenvalue));
+  }
+  if (nearest > kRigidBodyRatio * largest) return;
   const int nullity = findMechanism(model, dofs, K).count;
   if (nullity == 0) return;
   std::vector<int> order(modes.size());
