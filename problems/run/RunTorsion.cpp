@@ -94,37 +94,49 @@ std::complex<double> trainElementTorque(const Element& e, const DofMap& dofs, co
   return t;
 }
 
-/// The train's steady response at the reference speed `speed` (rad/s).
-TorsionResponse trainResponse(const Deck& deck, const TorsionSpec& spec, const TrainMesh& mesh,
-                        const HarmonicResponse& harmonic, const std::vector<double>& ratios,
-                        double speed) {
-  const TrainSpec& train = deck.train;
-  const Model& model = harmonic.model();
-  const DofMap& dofs = harmonic.dofs();
-  TorsionResponse out;
-  out.speed = speed;
-  // The torques' frequencies as orders of the reference shaft, equal ones together.
+/// The harmonic torques grouped by frequency: each distinct order of the reference shaft's
+/// speed and the load vector of the torques at that order. Independent of the speed.
+struct TrainExcitation {
+  std::vector<double> orders;
   std::vector<ComplexVector> loads;
+};
+
+TrainExcitation trainExcitation(const TrainSpec& train, const TorsionSpec& spec, const Model& model,
+                                const DofMap& dofs, const std::vector<double>& ratios) {
+  TrainExcitation out;
   for (const HarmonicTorque& h : spec.torques) {
     const double order = h.order * ratios[shaftOf(train, h.at.shaft)];
     auto same = std::find_if(out.orders.begin(), out.orders.end(),
                              [&](double o) { return std::abs(o - order) <= 1e-12 * order; });
     if (same == out.orders.end()) {
       out.orders.push_back(order);
-      loads.push_back(ComplexVector::Zero(dofs.size()));
+      out.loads.push_back(ComplexVector::Zero(dofs.size()));
       same = out.orders.end() - 1;
     }
     const int eq = dofs.equation(model.node(h.at.name()), Dof::rx);
-    loads[same - out.orders.begin()](eq) += std::polar(h.amplitude, h.phase);
+    out.loads[same - out.orders.begin()](eq) += std::polar(h.amplitude, h.phase);
   }
+  return out;
+}
+
+/// The train's steady response at the reference speed `speed` (rad/s); `peakOf` samples the
+/// excitation's orders.
+TorsionResponse trainResponse(const TrainSpec& train, const TrainMesh& mesh,
+                              const HarmonicResponse& harmonic, const TrainExcitation& excitation,
+                              const HarmonicPeak& peakOf, double speed) {
+  const Model& model = harmonic.model();
+  const DofMap& dofs = harmonic.dofs();
+  TorsionResponse out;
+  out.speed = speed;
+  out.orders = excitation.orders;
   std::vector<ComplexVector> twist;
   for (std::size_t j = 0; j < out.orders.size(); ++j)
-    twist.push_back(harmonic.solve(out.orders[j] * speed, loads[j]));
+    twist.push_back(harmonic.solve(out.orders[j] * speed, excitation.loads[j]));
   const auto trace = [&](const std::string& name, auto&& amplitudeOf) {
     ResponseTrace r{name, {}, 0};
     for (std::size_t j = 0; j < out.orders.size(); ++j)
       r.amplitudes.push_back(amplitudeOf(twist[j], out.orders[j] * speed));
-    r.peak = peakOfHarmonics(r.amplitudes, out.orders);
+    r.peak = peakOf(r.amplitudes);
     return r;
   };
   const auto jointTrace = [&](const TrainJoint& j, int element, bool gear) {
@@ -193,13 +205,18 @@ TorsionOutcome runTrain(const Deck& deck, const TorsionSpec& spec) {
   out.excitation = spec.torques;
   if (spec.torques.empty()) return out;
   const HarmonicResponse harmonic(*model);
-  if (spec.speed > 0)
-    out.atSpeed = trainResponse(deck, spec, mesh, harmonic, out.speedRatios, spec.speed);
+  const TrainExcitation excitation =
+      trainExcitation(train, spec, *model, harmonic.dofs(), out.speedRatios);
+  const HarmonicPeak peakOf(excitation.orders);
+  const auto responseAt = [&](double speed) {
+    return trainResponse(train, mesh, harmonic, excitation, peakOf, speed);
+  };
+  if (spec.speed > 0) out.atSpeed = responseAt(spec.speed);
   if (spec.speeds)
     for (int i = 0; i <= spec.speeds->steps; ++i) {
       const double speed =
           spec.speeds->from + (spec.speeds->to - spec.speeds->from) * i / spec.speeds->steps;
-      if (speed > 0) out.sweep.push_back(trainResponse(deck, spec, mesh, harmonic, out.speedRatios, speed));
+      if (speed > 0) out.sweep.push_back(responseAt(speed));
     }
   return out;
 }

@@ -57,11 +57,23 @@ struct TorsionOutcome {
   std::vector<TorsionResponse> sweep;      ///< over the speed range
 };
 
-/// The peak over a revolution of sum_j Re(a_j exp(i o_j theta)) in absolute value; o_j > 0.
-/// Exact for one order (|a|); otherwise the largest of 64 samples per period of the highest
-/// order over two revolutions (so half orders repeat), refined by golden-section search.
-double peakOfHarmonics(const std::vector<std::complex<double>>& amplitudes,
-                       const std::vector<double>& orders);
+/// The peak over a revolution of sum_j Re(a_j exp(i o_j theta)) in absolute value, for one set
+/// of orders o_j > 0 and any amplitudes. Exact for one order (|a|); otherwise the largest of 64
+/// samples per period of the highest order over two revolutions (so half orders repeat),
+/// refined by golden-section search. The samples' phasors exp(i o_j theta_k) are computed once
+/// for the orders, so the peaks of many quantities at one speed share them.
+class HarmonicPeak {
+ public:
+  explicit HarmonicPeak(std::vector<double> orders);
+  double operator()(const std::vector<std::complex<double>>& amplitudes) const;
+
+ private:
+  double valueAt(const std::vector<std::complex<double>>& amplitudes, double theta) const;
+  std::vector<double> orders_;
+  int samples_ = 0;
+  double step_ = 0;
+  std::vector<std::complex<double>> phasors_;  ///< [sample][order]
+};
 
 /// What a check quantity `torsion torque|twist NAME` reads: the trace at the operating speed.
 double measureTorsion(const std::string& property, const std::string& target,

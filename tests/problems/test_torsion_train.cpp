@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "problems/run/RunResult.hpp"
+#include "problems/run/TorsionOutcome.hpp"
 #include "problems/scenes/CrankTorque.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
@@ -70,6 +71,22 @@ std::string twoDisks(double J1, double J2, double D, double L, double kc, double
 }  // namespace
 
 TEST_SUITE("torsion train") {
+  TEST_CASE("the peak of summed harmonics over a revolution: closed forms") {
+    // |cos t + 0.5 sin 2t| is largest where -sin t + cos 2t = 0, sin t = 1/2: 3 sqrt(3) / 4.
+    // Re(-0.5 i e^{2it}) = 0.5 sin 2t. The golden-section search ends within 1e-14 of the
+    // revolution, so the peak (a maximum: error second order in the place) is round-off.
+    const HarmonicPeak peakOf({1.0, 2.0});
+    CHECK(relError(peakOf({{1, 0}, {0, -0.5}}), 3 * std::sqrt(3.0) / 4) < 1e-14);
+    // Half orders repeat over two revolutions: with s = t/2, cos s + 0.3 sin 2s =
+    // cos s (1 + 0.6 sin s) is stationary where 1.2 x^2 + x - 0.6 = 0, x = sin s.
+    const double x = (-1 + std::sqrt(1 + 4 * 1.2 * 0.6)) / 2.4;
+    const HarmonicPeak halfOrders({0.5, 1.0});
+    CHECK(relError(halfOrders({{1, 0}, {0, -0.3}}), std::sqrt(1 - x * x) * (1 + 0.6 * x)) < 1e-14);
+    // One order: the modulus, exactly.
+    CHECK(HarmonicPeak({3.0})({{3, 4}}) == 5.0);
+    CHECK_THROWS_AS(peakOf({{1, 0}}), std::logic_error);
+  }
+
   TEST_CASE("two disks on a shaft: omega^2 = k (J1 + J2) / (J1 J2)") {
     const double D = 0.04, L = 0.8, J1 = 1.5, J2 = 0.4;
     const Study s = test::solveDeckText(
