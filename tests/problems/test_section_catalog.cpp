@@ -1,9 +1,9 @@
 // The section catalogue (problems/deck/catalog): every row's properties computed from its
-// dimensions against the steel tables' printed values (a documented sample of rows, to their
-// printed digits) or, for the hollow sections, against closed forms of their own; catalogue
-// sections in decks: a cantilever of IPE 300 bent about its strong and its weak axis against
-// P L^3 / (3 E I) with the printed I, and an unknown designation refused at its line with the
-// nearest one suggested.
+// dimensions against the steel tables' printed values (a documented sample of rows of every
+// family, to their printed digits) and, for the hollow sections, every row against closed
+// forms of their own; catalogue sections in decks: a cantilever of IPE 300 bent about its
+// strong and its weak axis against P L^3 / (3 E I) with the printed I, and an unknown
+// designation refused at its line with the nearest one suggested.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -123,11 +123,6 @@ const IRow kIRows[] = {
     {"IPE400", "84.46", "23130", "1156", "1307", "1318", "146.4", "229.0", "51.08"},
 };
 
-// The torsion constant: the tables' It lies 0.35 % to 0.54 % below Roark's formula with El
-// Darwish and Johnston's junction term (StandardSections.cpp), which our I-sections use; the
-// difference is that term's (the tables' junctions come out 1.7 % smaller on every row; their
-// formula is not printed with them). Allowed: 0.6 %.
-constexpr double kTorsionFormulaGap = 6e-3;
 
 // EN 10056-1 equal angles as printed in the same kind of table (3 significant digits): A cm^2,
 // Iy = Iz about the axes parallel to the legs cm^4, Wel about them cm^3, Iu, Iv cm^4.
@@ -156,11 +151,15 @@ const LRow kLRows[] = {
 struct WelRow {
   const char *designation, *A, *Iy, *Iz, *Wely, *Welz;
 };
-// UPN: the sloping-flange channel outline (StandardSections' channel: 8 % or 5 % slope, tf at
-// b/2 from the web's back, root r1 = tf, toe r2 = r1 / 2) is not quite the tables': on several
-// rows Iy, Wel,y (UPN 50: +0.37 %, UPN 100: -0.32 %) and most of all the weak axis' Iz and
-// Wel,z (0.2 % to 0.57 % below) miss the printed three digits, while HE M agrees to them.
-// Allowed beyond half a digit for UPN: 0.6 %.
+// UPN: DIN 1026-1's outline (8 % or 5 % slope, tf at b/2 from the web's back, root r1 = tf,
+// toe r2 as tabulated), computed exactly, misses some printed three-digit values by more
+// than half a digit: Iy, Wel,y on a few rows with either sign (UPN 50: +0.37 %, UPN 100:
+// -0.32 %), Iz and Wel,z below on most (0.2 % to 0.57 %). The residual is the tables': no
+// outline of the family fits them (a four-parameter least-squares fit of slope, tf's place and
+// both radii still misses by 2.3 half-digits), the published tables disagree with one another
+// by as much (ArcelorMittal's Wpl,y of UPN 80, 32.3 cm^3, against DIN's 2 S_x = 31.8; the
+// outline 31.9), and HE M from the same tables agrees with its outline to its digits
+// (docs/section_catalog.md). Allowed beyond half a digit for UPN: 0.6 %.
 constexpr double kChannelOutlineGap = 6e-3;
 const WelRow kWelRows[] = {
     {"HEM100", "53.2", "1143", "399", "190", "75.3"},
@@ -179,6 +178,76 @@ const WelRow kWelRows[] = {
     {"UPN220", "37.4", "2690", "197", "245", "33.6"},
     {"UPN240", "42.3", "3600", "248", "300", "39.6"},
     {"UPN300", "58.8", "8030", "495", "535", "67.8"},
+};
+
+// UPN: DIN 1026-1:2009, Table 1, prints S_x, the first moment of half the section about the
+// strong axis (cm^3, three digits), so Wpl,y = 2 S_x.
+struct UpnFirstMoment {
+  const char *designation, *Sx;
+};
+const UpnFirstMoment kUpnFirstMoments[] = {
+    {"UPN80", "15.9"},  {"UPN100", "24.5"}, {"UPN120", "36.3"}, {"UPN140", "51.4"},
+    {"UPN160", "68.8"}, {"UPN180", "89.6"}, {"UPN200", "114"},
+};
+
+/// A row of printed values, one per column of its table (nullptr: not compared).
+struct PrintedRow {
+  const char* designation;
+  std::vector<const char*> printed;
+};
+
+// EN 10210-2 hot-finished square hollow sections, as tabulated from the standard's Table of
+// SHS properties (amesweb.info, "Square Hollow Section Dimensions and Properties", EN 10210-2,
+// three significant figures): A cm^2, I cm^4, Wel, Wpl cm^3, It cm^4. The standard's corner
+// radii for calculating them: 1.5 t outside, t inside (the catalogue's).
+const std::vector<PrintedRow> kShsRows = {
+    {"SHS40x40x2.6", {"3.82", "8.80", "4.40", "5.31", "14.0"}},
+    {"SHS40x40x5", {"6.73", "13.4", "6.68", "8.66", "22.5"}},
+    {"SHS50x50x3.2", {"5.88", "21.2", "8.49", "10.2", "33.8"}},
+    {"SHS50x50x6.3", {"10.6", "32.8", "13.1", "17.0", "55.2"}},
+    {"SHS60x60x4", {"8.79", "45.4", "15.1", "18.3", "72.5"}},
+    {"SHS60x60x8", {"16.0", "69.7", "23.2", "30.4", "118"}},
+    {"SHS70x70x5", {"12.7", "88.5", "25.3", "30.8", "142"}},
+    {"SHS80x80x3.2", {"9.72", "95.0", "23.7", "27.9", "148"}},
+    {"SHS80x80x6.3", {"18.1", "162", "40.5", "49.7", "262"}},
+    {"SHS90x90x4", {"13.6", "166", "37.0", "43.6", "260"}},
+};
+
+// EN 10219 cold-formed rectangular hollow sections (corner radii 2 t outside, t inside for
+// t <= 6 mm), as tabulated by b2bmetal.eu ("Rectangular structural hollow sections - HSS of
+// EN 10219, cold formed", computed with those radii; four significant figures or two
+// decimals): A cm^2; Iy, Iz, It cm^4; Wel,y, Wel,z, Wpl,y, Wpl,z cm^3 (y-y across the depth h).
+const std::vector<PrintedRow> kColdFormedRhsRows = {
+    {"RHS40x20x2-CF", {"2.14", "4.05", "2.02", "2.61", "1.34", "1.34", "1.60", "3.45"}},
+    {"RHS40x20x2.5-CF", {"2.59", "4.69", "2.35", "3.09", "1.54", "1.54", "1.88", "4.06"}},
+    {"RHS40x20x3-CF", {"3.01", "5.21", "2.60", "3.50", "1.68", "1.68", "2.12", "4.57"}},
+    {"RHS40x30x2-CF", {"2.54", "5.49", "2.75", "3.37", "3.51", "2.34", "2.77", "7.07"}},
+    {"RHS40x30x2.5-CF", {"3.09", "6.45", "3.23", "4.03", "4.10", "2.74", "3.30", "8.47"}},
+    {"RHS40x30x3-CF", {"3.61", "7.27", "3.63", "4.61", "4.60", "3.07", "3.77", "9.72"}},
+    {"RHS50x30x2-CF", {"2.94", "9.54", "3.81", "4.74", "4.29", "2.86", "3.33", "9.77"}},
+    {"RHS50x30x2.5-CF", {"3.59", "11.30", "4.52", "5.70", "5.05", "3.37", "3.98", "11.74"}},
+    {"RHS50x30x3-CF", {"4.21", "12.83", "5.13", "6.57", "5.70", "3.80", "4.58", "13.53"}},
+    {"RHS50x30x4-CF", {"5.35", "15.25", "6.10", "8.05", "6.69", "4.46", "5.58", "16.53"}},
+    {"RHS60x40x2-CF", {"3.74", "18.41", "6.14", "7.47", "9.83", "4.92", "5.65", "20.70"}},
+    {"RHS60x40x2.5-CF", {"4.59", "22.07", "7.36", "9.06", "11.74", "5.87", "6.84", "25.14"}},
+    {"RHS60x40x3-CF", {"5.41", "25.38", "8.46", "10.53", "13.44", "6.72", "7.94", "29.28"}},
+};
+
+// Cold-formed circular hollow sections (EN 10219-2 sizes) as tabulated in a manufacturer's
+// catalogue of structural tubes ("Tubes Final English", scribd document 338559492, "Circular
+// Hollow Sections - Cold Formed"): A cm^2, I cm^4, Wel, Wpl cm^3, three significant figures.
+const std::vector<PrintedRow> kChsRows = {
+    {"CHS42.4x4", {"4.83", "8.99", "4.24", "5.92"}},
+    {"CHS48.3x4", {"5.57", "13.8", "5.70", "7.87"}},
+    {"CHS48.3x5", {"6.8", "16.2", "6.69", "9.42"}},
+    {"CHS60.3x4", {"7.07", "28.2", "9.34", "12.7"}},
+    {"CHS60.3x5", {"8.69", "33.5", "11.10", "15.3"}},
+    {"CHS76.1x4", {"9.06", "59.1", "15.5", "20.8"}},
+    {"CHS76.1x5", {"11.2", "70.9", "18.6", "25.3"}},
+    {"CHS76.1x6.3", {"13.8", "84.8", "22.3", "30.8"}},
+    {"CHS88.9x4", {"10.7", "96.3", "21.7", "28.9"}},
+    {"CHS88.9x5", {"13.2", "116", "26.2", "35.2"}},
+    {"CHS88.9x6.3", {"16.3", "140", "31.5", "43.1"}},
 };
 
 
@@ -307,6 +376,41 @@ void report(const std::string& family, const std::vector<Worst>& worst) {
   std::string line = family + ": largest |computed / printed - 1|:";
   for (const Worst& w : worst) line += " " + w.property + " " + std::to_string(w.relative) + " (" + w.row + ")";
   MESSAGE(line);
+}
+
+/// A column of a printed table: the property's name there, how to read it from the
+/// catalogue's properties, and the table's unit (SI per cm^k).
+struct Column {
+  const char* name;
+  double (*get)(const CatalogProperties&);
+  double unit;
+};
+const Column kColA{"A", [](const CatalogProperties& p) { return p.A; }, 1e-4};
+const Column kColIy{"Iy", [](const CatalogProperties& p) { return p.Iy; }, 1e-8};
+const Column kColIz{"Iz", [](const CatalogProperties& p) { return p.Iz; }, 1e-8};
+const Column kColWely{"Wel,y", [](const CatalogProperties& p) { return p.Wely; }, 1e-6};
+const Column kColWelz{"Wel,z", [](const CatalogProperties& p) { return p.Welz; }, 1e-6};
+const Column kColWply{"Wpl,y", [](const CatalogProperties& p) { return p.Wply; }, 1e-6};
+const Column kColWplz{"Wpl,z", [](const CatalogProperties& p) { return p.Wplz; }, 1e-6};
+const Column kColIt{"It", [](const CatalogProperties& p) { return p.It; }, 1e-8};
+const Column kColIu{"Iu", [](const CatalogProperties& p) { return p.Iu; }, 1e-8};
+const Column kColIv{"Iv", [](const CatalogProperties& p) { return p.Iv; }, 1e-8};
+
+/// Every printed value of the rows against the computed one, to half its last digit; the
+/// largest relative differences reported under `family`.
+void compareRows(const std::string& family, const std::vector<Column>& columns,
+                 const std::vector<PrintedRow>& rows) {
+  std::vector<Worst> worst;
+  for (const PrintedRow& r : rows) {
+    REQUIRE(r.printed.size() == columns.size());
+    const CatalogProperties p = catalogProperties(entry(r.designation));
+    std::vector<Expected> expected;
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      if (r.printed[i] != nullptr)
+        expected.push_back({columns[i].name, columns[i].get(p), r.printed[i], columns[i].unit});
+    compareAll(r.designation, expected, worst);
+  }
+  report(family, worst);
 }
 
 // A spandrel: the corner square r x r less the quarter disc that rounds it, its square's
@@ -473,7 +577,7 @@ supports:
                   {"Wel,z", p.Welz, r.Welz, 1e-6},
                   {"Wpl,y", p.Wply, r.Wply, 1e-6},
                   {"Wpl,z", p.Wplz, r.Wplz, 1e-6},
-                  {"It", p.It, r.It, 1e-8, kTorsionFormulaGap}},
+                  {"It", p.It, r.It, 1e-8}},
                  worst);
     }
     for (const auto& [family, worst] : byFamily) report(family, worst);
@@ -494,6 +598,36 @@ supports:
                  byFamily[e.family]);
     }
     for (const auto& [family, worst] : byFamily) report(family, worst);
+  }
+
+  TEST_CASE("UPN: the plastic modulus against DIN 1026-1's first moment of half the section") {
+    // Same outline gap as A, I and Wel above (kChannelOutlineGap); measured: up to 0.31 %
+    // (UPN 80: 2 x 15.95 cm^3 computed against 2 x 15.9).
+    std::vector<Worst> worst;
+    for (const UpnFirstMoment& r : kUpnFirstMoments) {
+      const CatalogProperties p = catalogProperties(entry(r.designation));
+      compareAll(r.designation, {{"Sx = Wpl,y / 2", p.Wply / 2, r.Sx, 1e-6, kChannelOutlineGap}},
+                 worst);
+    }
+    report("UPN", worst);
+  }
+
+  TEST_CASE("hot-finished SHS against EN 10210-2's printed A, I, Wel, Wpl and It (10 rows)") {
+    // Every value within half a unit of its last printed digit, It included: the catalogue's
+    // It is the standard's own closed-cell formula (StandardSections.cpp).
+    compareRows("SHS (EN 10210)", {kColA, kColIy, kColWely, kColWply, kColIt}, kShsRows);
+  }
+
+  TEST_CASE("cold-formed RHS against EN 10219's printed A, I, Wel, Wpl and It (13 rows)") {
+    // Within half a unit of the last printed digit on every property: the corner radii
+    // (2 t, t) and the closed-cell It are the standard's.
+    compareRows("RHS (EN 10219)",
+                {kColA, kColIy, kColWely, kColWply, kColIz, kColWelz, kColWplz, kColIt},
+                kColdFormedRhsRows);
+  }
+
+  TEST_CASE("cold-formed CHS against the printed A, I, Wel and Wpl (11 rows)") {
+    compareRows("CHS", {kColA, kColIy, kColWely, kColWply}, kChsRows);
   }
 
   TEST_CASE("equal angles against the printed A, I about the legs, Wel, Iu and Iv (8 rows)") {
@@ -545,6 +679,28 @@ supports:
     report("L unequal", worst);
   }
 
+  TEST_CASE("unequal angles against the printed A, I, Wel, Iu and Iv (10 rows)") {
+    // EN 10056-1 unequal angles as tabulated with their properties by eng-calculations.com
+    // ("Dimensions and sectional properties of hot-rolled unequal leg angles"; two decimals or
+    // three figures): A cm^2; Iy (bending the long leg h), Iz, Iu, Iv cm^4; Wel,y, Wel,z cm^3
+    // to the toes. L 45x30x4's printed Iu and Iv (6.65, 1.18) are left out: they miss the
+    // outline's (6.637, 1.193) by 0.2 % and 1.1 % while its A, Iy, Iz and Wel agree and no
+    // radius reproduces them (r2 = 2.25 or 0 moves them the other way or not enough).
+    const std::vector<PrintedRow> rows{
+        {"L30x20x3", {"1.43", "1.25", "0.62", "0.44", "0.29", "1.43", "0.26"}},
+        {"L30x20x4", {"1.86", "1.59", "0.81", "0.55", "0.38", "1.81", "0.33"}},
+        {"L40x20x4", {"2.26", "3.59", "1.42", "0.60", "0.39", "3.80", "0.39"}},
+        {"L40x25x4", {"2.46", "3.89", "1.47", "1.16", "0.62", "4.35", "0.70"}},
+        {"L45x30x4", {"2.87", "5.78", "1.91", "2.05", "0.91", nullptr, nullptr}},
+        {"L50x30x5", {"3.78", "9.36", "2.86", "2.51", "1.11", "10.3", "1.54"}},
+        {"L60x30x5", {"4.28", "15.6", "4.07", "2.63", "1.14", "16.5", "1.71"}},
+        {"L60x40x5", {"4.79", "17.2", "4.25", "6.11", "2.02", "19.7", "3.54"}},
+        {"L60x40x6", {"5.68", "20.1", "5.03", "7.12", "2.38", "23.1", "4.16"}},
+        {"L65x50x5", {"5.54", "23.2", "5.14", "11.9", "3.19", "28.8", "6.32"}},
+    };
+    compareRows("L unequal", {kColA, kColIy, kColWely, kColIz, kColWelz, kColIu, kColIv}, rows);
+  }
+
   TEST_CASE("every hollow section against the closed forms of its rounded corners") {
     // A, I and Wpl of an RHS are a rounded rectangle less its rounded hole: exact in closed
     // form, so they agree with the outline's Green's-theorem integrals and polygon clipping to
@@ -593,9 +749,9 @@ supports:
     // ones: a row's tolerance is half a printed digit of the property plus the spread of the
     // dimensions' rounding (roundingSpread: 0.1 % to 0.6 % of A). J: AISC's formula for W
     // shapes (flange and web plates with the fillets' junction term, its own constants) is
-    // not ours (Roark's with El Darwish and Johnston's junction, StandardSections.cpp); the
+    // not ours (the European tables' formula, StandardSections.cpp); the
     // measured gap is reported below and allowed as kWTorsionGap.
-    constexpr double kWTorsionGap = 0.09;  // measured: up to 8.2 % (W10X12), thin rows most
+    constexpr double kWTorsionGap = 0.09;  // measured: up to 7.7 % (W10X12), thin rows most
     // The area: W30X99's printed A (29.0 in^2) lies 0.62 % below the area of its printed
     // dimensions, 0.03 % beyond their rounding spread; its printed weight says otherwise
     // (99 lb/ft at 490 lb/ft^3 is 29.1 in^2). Allowed beyond the spread for A: 0.1 %.
