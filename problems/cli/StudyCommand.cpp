@@ -51,7 +51,7 @@ std::string figureText(const Json& value, const OutputUnits::Shown& shown) {
   return text;
 }
 
-/// " D = 150 mm L = 1.2 m": a point's parameters, each in its shown unit.
+/// " D = 150 mm, L = 1.2 m": a point's parameters, each in its shown unit.
 std::string parametersText(const Json& parameters, const Json& declared,
                            const OutputUnits& units) {
   std::string text;
@@ -59,7 +59,7 @@ std::string parametersText(const Json& parameters, const Json& declared,
     OutputUnits::Shown shown;
     for (const Json& p : declared)
       if (p["name"] == name) shown = shownUnit(units, p);
-    text += " ";
+    text += text.empty() ? " " : ", ";
     text += name;
     text += " = ";
     text += figureText(value, shown);

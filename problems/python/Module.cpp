@@ -405,7 +405,9 @@ py::object study(const std::filesystem::path& deck, const std::vector<std::strin
   // The worst point solved in full, as the command line writes it into worst/.
   if (outcome.summary.contains("worst_point") &&
       outcome.summary["worst_point"].contains("directory")) {
-    py::dict at = set;
+    // A copy: `set` may be the keyword's default dict, which pybind11 shares between calls.
+    py::dict at;
+    for (const auto& [name, value] : set) at[name] = value;
     for (const auto& [name, value] : outcome.summary["worst_point"]["parameters"].items())
       at[py::str(name)] = value.get<double>();
     result.worst = solve(deck, at, "", "", true, units);

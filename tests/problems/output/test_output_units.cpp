@@ -178,6 +178,25 @@ TEST_SUITE("output units") {
     // The tip against P L^3 / (3 EI): Hermite elements are exact at the nodes (round-off).
     CHECK(uyMm.back() == doctest::Approx(1000 * c.deflection(c.L)).epsilon(1e-9));
     CHECK(uyMm.back() == doctest::Approx(-1000 * c.P * std::pow(c.L, 3) / (3 * c.EI())).epsilon(1e-9));
+    // The reactions table: its force and moment columns too (the root holds P and P L; N m
+    // and kN mm are the same size).
+    const CsvTable& ra = tableOf(si, 0, "tip_reactions.csv");
+    const CsvTable& rb = tableOf(shown, 0, "tip_reactions.csv");
+    CHECK(unitOf(rb, "force") == "kN");
+    CHECK(unitOf(rb, "moment") == "kN mm");
+    const auto forceSI = ra.numbers("force"), forceKn = rb.numbers("force");
+    const auto momentSI = ra.numbers("moment"), momentShown = rb.numbers("moment");
+    REQUIRE(forceSI.size() == forceKn.size());
+    bool loaded = false;
+    for (std::size_t i = 0; i < forceSI.size(); ++i) {
+      if (std::isnan(forceSI[i])) continue;  // a moment's row
+      CHECK(forceKn[i] == doctest::Approx(forceSI[i] / 1000).epsilon(1e-15));
+      loaded = loaded || std::abs(std::abs(forceKn[i]) - c.P / 1000) < 1e-9;
+    }
+    CHECK(loaded);
+    for (std::size_t i = 0; i < momentSI.size(); ++i)
+      if (!std::isnan(momentSI[i]))
+        CHECK(std::abs(momentShown[i]) == doctest::Approx(c.P * c.L).epsilon(1e-9));
     // results.json stays SI: the same document either way.
     CHECK(shown.doc.dump() == si.doc.dump());
   }
@@ -637,9 +656,9 @@ TEST_SUITE("output units (design studies, tables with a unit per row)") {
           std::string::npos);
     const nlohmann::json& worst = summary["worst_point"]["parameters"];
     const double eta = worst["eta"].get<double>(), w0 = worst["w0"].get<double>();
-    CHECK(lineWith(mm.out, "worst point").find("eta = " + six(eta * 1000) + " mm w0 = " +
+    CHECK(lineWith(mm.out, "worst point").find("eta = " + six(eta * 1000) + " mm, w0 = " +
                                                six(w0 * 1000) + " mm") != std::string::npos);
-    CHECK(lineWith(si.out, "worst point").find("eta = " + six(eta) + " m w0 = " + six(w0) +
+    CHECK(lineWith(si.out, "worst point").find("eta = " + six(eta) + " m, w0 = " + six(w0) +
                                                " m") != std::string::npos);
     // The worst point's results directory in the units.
     const WrittenCsv fields = writtenCsv(dir / "mm" / "worst" / "bending_fields.csv");
@@ -676,6 +695,17 @@ TEST_SUITE("output units (design studies, tables with a unit per row)") {
     }
     CHECK(forces > 0);
     CHECK(moments > 0);
+    // The summary: results.json's SI peaks / 1000, in kN and kN m.
+    const nlohmann::json doc = readJson(dir / "kn" / "results.json");
+    const nlohmann::json& peaks = doc["analyses"][0]["combined"];
+    CHECK(lineWith(kn.out, "combined peaks").find(
+              "x " + six(peaks["base_force_n"]["x"].get<double>() / 1000) + " kN") !=
+          std::string::npos);
+    const double a0 = peaks["reactions"][0]["value"].get<double>();
+    CHECK(lineWith(kn.out, "reaction A0 ux").find(six(a0 / 1000) + " kN") != std::string::npos);
+    CHECK(lineWith(kn.out, "reaction A0 rx").find(" kN m") != std::string::npos);
+    CHECK(lineWith(si.out, "reaction A0 ux").find(six(a0) + " N") != std::string::npos);
+    CHECK(lineWith(kn.out, "base force max").find(" kN") != std::string::npos);
     fs::remove_all(dir);
   }
 
@@ -684,7 +714,7 @@ TEST_SUITE("output units (design studies, tables with a unit per row)") {
     const ProcessResult si = runBeamrotor({"solve", "problems/crane_girder.yaml", "--charts",
                                            "none", "--out", (dir / "si").string()});
     const ProcessResult mm =
-        runBeamrotor({"solve", "problems/crane_girder.yaml", "--charts", "none", "--units",
+        runBeamrotor({"solve", "problems/crane_girder.yaml", "--charts", "svg", "--units",
                       "force=kN,length=mm", "--out", (dir / "mm").string()});
     REQUIRE_MESSAGE(si.exitCode == 0, si.err);
     REQUIRE_MESSAGE(mm.exitCode == 0, mm.err);
@@ -712,6 +742,28 @@ TEST_SUITE("output units (design studies, tables with a unit per row)") {
       const std::size_t lead = csvColumn(b[0], "first_wheel_at_max");
       CHECK(std::stod(b[row][lead]) == doctest::Approx(std::stod(a[row][lead]) * 1000).epsilon(1e-15));
     }
+    // The summary and the chart: results.json's SI envelope times the factors. The textbook
+    // figures: the largest left reaction 101.25 kN with the first wheel at 2.5 m.
+    const nlohmann::json doc = readJson(dir / "mm" / "results.json");
+    const nlohmann::json& reaction = doc["analyses"][0]["quantities"][1];
+    REQUIRE(reaction["quantity"] == "reaction left uy");
+    const double most = reaction["max"]["value"].get<double>();
+    const double at = reaction["max"]["first_wheel_at"].get<double>();
+    CHECK(most == doctest::Approx(101250).epsilon(1e-12));
+    const std::string line = lineWith(mm.out, "reaction left uy: max");
+    CAPTURE(line);
+    CHECK(line.find("max " + six(most / 1000) + " kN (first wheel at " + six(at * 1000) +
+                    " mm)") != std::string::npos);
+    CHECK(lineWith(mm.out, "wheel(s) along").find(" 8000 mm of path") != std::string::npos);
+    CHECK(lineWith(si.out, "reaction left uy: max").find("max 101250 N (first wheel at 2.5 m)") !=
+          std::string::npos);
+    const std::string chart = readText(dir / "mm" / "trolley_influence.gp");
+    CHECK(chart.find("unit load at s along the path [mm]") != std::string::npos);
+    CHECK(chart.find("reaction left uy [-]") != std::string::npos);  // N per N
+    CHECK(chart.find("displacement mid uy [mm/kN]") != std::string::npos);
+    CHECK(chart.find("max " + labelNumber(most / 1000) + " kN (first wheel at 2500 mm)") !=
+          std::string::npos);
+    CHECK(chart.find("set xrange [0:8000]") != std::string::npos);
     fs::remove_all(dir);
   }
 }

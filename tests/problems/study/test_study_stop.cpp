@@ -287,7 +287,7 @@ TEST_SUITE("study command line") {
     CHECK(p.exitCode == 1);
     CHECK(p.err.find("no point succeeded (2 failed") != std::string::npos);
     CHECK(p.out.find("worst/") == std::string::npos);
-    CHECK(p.out.find("point 0 (eta = 2) failed") != std::string::npos);
+    CHECK(p.out.find("point 0 (eta = 2 m) failed") != std::string::npos);  // its unit named
     CHECK_FALSE(fs::exists(scratch / "s" / "worst"));
     CHECK(fs::exists(scratch / "s" / "study.csv"));  // the rows say why, still
     fs::remove_all(scratch);
