@@ -335,6 +335,11 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
                    "output directory (default: out/<deck name>_study/, or where the resumed "
                    "study was going); replaced as a whole")
       ->type_name("DIR");
+  std::string studyUnits;
+  addUnitsOption(*studyCmd, studyUnits,
+                 "units of the printed summary and of the worst point's (and --point-files') "
+                 "results, e.g. length=mm,stress=MPa; over the deck's output: units (study.csv "
+                 "and summary.json keep the units they name)");
   studyCmd
       ->add_option("--resume", study.resumeDir,
                    "continue the study that was stopped in DIR (its partial results, or the "
@@ -373,6 +378,7 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
       checkUnits.empty() ? OutputUnits() : parseOutputUnits(checkUnits);
   if (!convergeUnits.empty()) converge.units = parseOutputUnits(convergeUnits);
   if (!overlayUnits.empty()) overlay.units = parseOutputUnits(overlayUnits);
+  if (!studyUnits.empty()) study.units = parseOutputUnits(studyUnits);
   if (pointFilesFlag->count() > 0) solve.output.pointFiles = pointFiles;
   if (fullTablesFlag->count() > 0) solve.output.fullTables = fullTables;
   if (allCasesFlag->count() > 0) solve.output.allCases = allCases;

@@ -5,10 +5,13 @@
 
 #include <ostream>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
 
-void printMovingLoad(std::ostream& out, const AnalysisOutcome& a, const MovingLoadOutcome& m);
+/// The train, and each quantity's envelope with the governing positions, in `units`.
+void printMovingLoad(std::ostream& out, const AnalysisOutcome& a, const MovingLoadOutcome& m,
+                     const OutputUnits& units);
 
 }  // namespace beamrotor::cli

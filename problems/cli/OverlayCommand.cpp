@@ -1,7 +1,5 @@
 // `beamrotor overlay`: solves several decks (each without its sweep) and draws their static
 // diagrams on one chart, one line per deck.
-#include <set>
-
 #include "problems/cli/Commands.hpp"
 #include "problems/cli/ExitCodes.hpp"
 #include "problems/cli/Guarded.hpp"
@@ -13,27 +11,8 @@ namespace beamrotor::cli {
 int overlayCommand(const OverlayRequest& request, std::ostream& out, std::ostream& err) {
   return guarded(err, [&] {
     // 1. Solve every deck before writing anything.
-    std::vector<Study> studies;
-    std::set<std::string> labels;
-    for (const std::string& path : request.deckPaths) {
-      StudyRequest one;
-      one.deckPath = path;
-      one.sets = request.sets;
-      one.noSweep = true;
-      studies.push_back(solveStudy(one));
-      const RunResult& run = *studies.back().run;
-      if (!overlaidAnalysis(run))
-        throw DeckError(path, DeckPlace{0, 0, "analyses"},
-                        "has no static analysis along a line to overlay (a frame's members or "
-                        "a model without beams have no diagrams along one line)");
-      if (!labels.insert(run.deckName).second)
-        throw DeckError(path, DeckPlace{0, 0, "overlay"},
-                        "is given twice; for several values of one deck's parameter use "
-                        "`beamrotor solve DECK --sweep NAME=V1,V2`");
-    }
-    std::vector<Diagram> shown;
-    for (Diagram d : kAllDiagrams)
-      if (request.quantity == "all" || request.quantity == diagramName(d)) shown.push_back(d);
+    const std::vector<Study> studies = solveOverlaid(request.deckPaths, request.sets);
+    const std::vector<Diagram> shown = overlaidDiagrams(request.quantity);
 
     // 2. Write the tables and the chart.
     const std::filesystem::path dir =

@@ -78,15 +78,25 @@ void printApi684Verdict(std::ostream& out, const UnbalanceOutcome& r, const Outp
   out << ")\n";
 }
 
-/// What a two-dof mode is, in words: coupled, or (b = 0) the limits of the paper's 0/0 ratio.
-std::string modeShapeText(const FormeShaftMode& m) {
+/// What a two-dof mode is, in words: coupled (n in `units`' length per angle), or (b = 0) the
+/// limits of the paper's 0/0 ratio.
+std::string modeShapeText(const FormeShaftMode& m, const OutputUnits& units) {
   switch (m.kind) {
     case FormeModeKind::bounce:
       return "pure bounce (phi = 0: C1 l1 = C2 l2, the paper's n = 0/0 tends to infinity)";
     case FormeModeKind::rocking:
       return "pure rocking about the centre of mass (z = 0, n = 0)";
-    default:
-      return "n = " + formatValue(m.n) + " m/rad";
+    default: {
+      const OutputUnits::Shown length = units.valueIn("m", {1, "m"});
+      const OutputUnits::Shown angle = units.valueIn("rad", {1, "rad"});
+      std::string text = "n = ";  // appended piece by piece: GCC 12's false -Wrestrict
+      text += formatValue(m.n * length.factor / angle.factor);
+      text += " ";
+      text += length.unit;
+      text += "/";
+      text += angle.unit;
+      return text;
+    }
   }
 }
 
@@ -150,11 +160,17 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutco
   for (const JournalBearingCurve& j : r.journals)
     for (std::size_t s : {std::size_t(0), j.speeds.size() - 1}) {
       const BearingCoefficients& k = j.coefficients[s];
-      out << "    bearing " << j.name << " (" << j.type << ") at " << formatValue(j.speeds[s] * kRpm)
-          << " rpm: eccentricity " << formatValue(j.eccentricity[s]) << ", kxx "
-          << formatValue(k.kyy) << ", kyy " << formatValue(k.kzz) << ", kxy "
-          << formatValue(k.kyz) << ", kyx " << formatValue(k.kzy) << " N/m, cxx "
-          << formatValue(k.cyy) << ", cyy " << formatValue(k.czz) << " N s/m\n";
+      const OutputUnits::Shown stiffness = units.valueIn("N/m", {1, "N/m"});
+      const OutputUnits::Shown damping = units.valueIn("N s/m", {1, "N s/m"});
+      const auto in = [](double v, const OutputUnits::Shown& shown) {
+        return formatValue(v * shown.factor);
+      };
+      out << "    bearing " << j.name << " (" << j.type << ") at "
+          << rpmText(j.speeds[s] * kRpm, units) << ": eccentricity "
+          << formatValue(j.eccentricity[s]) << ", kxx " << in(k.kyy, stiffness) << ", kyy "
+          << in(k.kzz, stiffness) << ", kxy " << in(k.kyz, stiffness) << ", kyx "
+          << in(k.kzy, stiffness) << " " << stiffness.unit << ", cxx " << in(k.cyy, damping)
+          << ", cyy " << in(k.czz, damping) << " " << damping.unit << "\n";
     }
 }
 
@@ -196,17 +212,19 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const UnbalanceOutc
 
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const RigidBodyOutcome& r,
                 const OutputUnits& units) {
-  out << "rigid-body analysis '" << a.name << "': m = " << formatValue(r.body.m)
-      << " kg, centre of mass x = " << formatValue(r.body.xG) << " m, J = " << formatValue(r.body.J)
-      << " kg m^2 (mode amplitudes scaled to z^2 + rho^2 phi^2 = 1 m^2; bearing loads scale"
+  out << "rigid-body analysis '" << a.name << "': m = " << valueText(r.body.m, "kg", units)
+      << ", centre of mass x = " << valueText(r.body.xG, "m", units)
+      << ", J = " << valueText(r.body.J, "kg m^2", units)
+      << " (mode amplitudes scaled to z^2 + rho^2 phi^2 = 1 m^2; bearing loads scale"
          " with the amplitude)\n";
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const FormeShaftMode& m = r.modes[i];
+    // The bearing forces of a unit modal amplitude: a force per length.
     out << "    two-dof mode " << i + 1 << " (the paper's " << paperModeName(int(i)) << ")  "
         << hzText(m.k / (2 * std::numbers::pi), units) << " (k = " << formatValue(m.k)
-        << " rad/s)  " << modeShapeText(m) << "  F_" << r.points[0] << " = " << formatValue(m.FA)
-        << " N, F_" << r.points[1] << " = " << formatValue(m.FB)
-        << " N per metre of modal amplitude\n";
+        << " rad/s)  " << modeShapeText(m, units) << "  F_" << r.points[0] << " = "
+        << valueText(m.FA, "N/m", units) << ", F_" << r.points[1] << " = "
+        << valueText(m.FB, "N/m", units) << " of modal amplitude\n";
   }
 }
 

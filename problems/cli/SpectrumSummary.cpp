@@ -10,29 +10,37 @@
 namespace beamrotor::cli {
 
 void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSpectrumResult& r,
-                   const Model& model) {
+                   const Model& model, const OutputUnits& units) {
+  // Each column in the user's unit of its quantity where set, else in its own.
+  const OutputUnits::Shown hz = units.valueIn("Hz", {1, "Hz"});
+  const OutputUnits::Shown period = units.valueIn("s", {1, "s"});
+  const OutputUnits::Shown sa = units.valueIn("m/s^2", {1, "m/s^2"});
+  const OutputUnits::Shown kg = units.valueIn("kg", {1, "kg"});
   out << a.type << " analysis '" << a.name << "' (" << r.modal.modes.size() << " modes, "
       << (r.rule == ModalRule::cqc ? "CQC" : "SRSS") << ", directions";
   for (int d : r.directions) out << " " << directionName(d);
   if (r.directions.size() > 1)
     out << " by " << (r.directional == DirectionalRule::srss ? "SRSS" : "100/30 %");
   out << ")\n    spectrum: " << r.spectrum.describe() << "\n";
-  out << "    mode  f [Hz]      T [s]       Sa [m/s^2]  ";
+  out << "    mode  " << padded("f [" + hz.unit + "]", 12) << padded("T [" + period.unit + "]", 12)
+      << padded("Sa [" + sa.unit + "]", 12);
   for (int d : r.directions)
-    out << padded(std::string("m_") + directionName(d) + " [kg]", 13)
+    out << padded(std::string("m_") + directionName(d) + " [" + kg.unit + "]", 13)
         << padded(std::string("sum ") + directionName(d), 8);
   out << "\n";
   std::array<double, 3> sum{};
   for (std::size_t j = 0; j < r.modal.modes.size(); ++j) {
     const Mode& m = r.modal.modes[j];
-    out << "    " << padded(std::to_string(j + 1), 6) << padded(formatValue(m.frequencyHz), 12)
-        << padded(formatValue(2 * std::numbers::pi / std::sqrt(m.eigenvalue)), 12)
-        << padded(formatValue(r.spectralAcceleration[j]), 12);
+    out << "    " << padded(std::to_string(j + 1), 6)
+        << padded(formatValue(m.frequencyHz * hz.factor), 12)
+        << padded(formatValue(2 * std::numbers::pi / std::sqrt(m.eigenvalue) * period.factor),
+                  12)
+        << padded(formatValue(r.spectralAcceleration[j] * sa.factor), 12);
     for (int d : r.directions) {
       sum[d] += m.effectiveMass[d];
       char percent[16];
       std::snprintf(percent, sizeof percent, "%.1f %%", 100 * sum[d] / r.modal.totalMass[d]);
-      out << padded(formatValue(m.effectiveMass[d]), 13) << padded(percent, 8);
+      out << padded(formatValue(m.effectiveMass[d] * kg.factor), 13) << padded(percent, 8);
     }
     out << "\n";
   }
@@ -41,15 +49,16 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
   const double base = std::max({p.baseForce[0], p.baseForce[1], p.baseForce[2]});
   for (int d = 0; d < 3; ++d)
     out << " " << directionName(d) << " "
-        << formatValue(p.baseForce[d] > 1e-9 * base ? p.baseForce[d] : 0.0);
-  out << " N\n";
+        << valueText(p.baseForce[d] > 1e-9 * base ? p.baseForce[d] : 0.0, "N", units);
+  out << "\n";
   for (int k = 0; k < 3; ++k)
     if (p.displacement.rows() > 0 &&
         p.displacement.col(k).maxCoeff() > 1e-9 * p.displacement.leftCols(3).maxCoeff()) {
       int node = 0;
       const double largest = p.displacement.col(k).maxCoeff(&node);
       const std::string name = model.nameOf(node);
-      out << "    largest " << dofName(kAllDofs[k]) << " " << formatValue(largest) << " m at "
+      out << "    largest " << dofName(kAllDofs[k]) << " " << valueText(largest, "m", units)
+          << " at "
           << (name.empty() ? "node " + std::to_string(node) : name) << "\n";
     }
   // Components below 1e-9 of the largest of their kind (forces, moments) are round-off of a
@@ -59,8 +68,8 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
     largest[isRotation(c.dof)] = std::max(largest[isRotation(c.dof)], c.value);
   for (const ReactionComponent& c : p.reactions)
     if (c.value > 1e-9 * largest[isRotation(c.dof)])
-      out << "    reaction " << c.support << " " << dofName(c.dof) << " " << formatValue(c.value)
-          << (isRotation(c.dof) ? " N m" : " N") << "\n";
+      out << "    reaction " << c.support << " " << dofName(c.dof) << " "
+          << valueText(c.value, isRotation(c.dof) ? "N m" : "N", units) << "\n";
   const auto isMoment = [](ForceComponent c) {
     return c == ForceComponent::T || c == ForceComponent::My || c == ForceComponent::Mz;
   };
@@ -77,18 +86,19 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
         if (std::find(elements.begin(), elements.end(), s.element) != elements.end())
           peak = std::max(peak, componentOf(s.forces, c));
       out << " " << componentName(c) << " "
-          << formatValue(peak > 1e-9 * largestResultant[isMoment(c)] ? peak : 0.0);
+          << valueText(peak > 1e-9 * largestResultant[isMoment(c)] ? peak : 0.0,
+                       isMoment(c) ? "N m" : "N", units);
     }
     out << "\n";
   }
 }
 
 void printBaseMotion(std::ostream& out, const AnalysisOutcome& a, const BaseMotionResult& r,
-                     const Model& model) {
+                     const Model& model, const OutputUnits& units) {
   const BaseMotionOptions& o = r.options;
   out << a.type << " analysis '" << a.name << "' (ground along " << directionName(o.direction)
-      << ", " << (o.displacement > 0 ? formatValue(o.displacement) + " m"
-                                     : formatValue(o.acceleration) + " m/s^2")
+      << ", " << (o.displacement > 0 ? valueText(o.displacement, "m", units)
+                                     : valueText(o.acceleration, "m/s^2", units))
       << ", " << r.points.size() << " frequencies, "
       << (o.method == BaseMotionMethod::modal ? std::to_string(r.modal.modes.size()) + " modes"
                                               : std::string("direct"))
@@ -106,10 +116,10 @@ void printBaseMotion(std::ostream& out, const AnalysisOutcome& a, const BaseMoti
     }
     if (relative == 0) continue;  // moves with the ground
     out << "    " << padded(name, 12) << "transmissibility max " << formatValue(T) << " at "
-        << formatValue(at) << " Hz, relative displacement max " << formatValue(relative)
-        << " m\n";
+        << valueText(at, "Hz", units) << ", relative displacement max "
+        << valueText(relative, "m", units) << "\n";
   }
-  out << "    base force max " << formatValue(force) << " N\n";
+  out << "    base force max " << valueText(force, "N", units) << "\n";
 }
 
 }  // namespace beamrotor::cli

@@ -20,9 +20,9 @@ namespace beamrotor::cli {
 
 namespace {
 
-std::string formatFigure(const Json& value) {
+std::string formatFigure(double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value.get<double>());
+  std::snprintf(text, sizeof text, "%.6g", value);
   return text;
 }
 
@@ -34,13 +34,35 @@ std::string probabilityText(const Json& p) {
   return text;
 }
 
-std::string parametersText(const Json& parameters) {
+/// How the numbers of a summary.json entry (in its `unit`, the column's) are shown: in the
+/// user's unit of their quantity where set, else in the column's own.
+OutputUnits::Shown shownUnit(const OutputUnits& units, const Json& entry) {
+  const std::string unit = entry.value("unit", "");
+  return units.valueIn(unit, {1, unit});
+}
+
+/// "150 mm": a figure in its column's unit shown as `shown` says, its unit named.
+std::string figureText(const Json& value, const OutputUnits::Shown& shown) {
+  std::string text = formatFigure(value.get<double>() * shown.factor);
+  if (!shown.unit.empty()) {
+    text += ' ';
+    text += shown.unit;
+  }
+  return text;
+}
+
+/// " D = 150 mm, L = 1.2 m": a point's parameters, each in its shown unit.
+std::string parametersText(const Json& parameters, const Json& declared,
+                           const OutputUnits& units) {
   std::string text;
   for (const auto& [name, value] : parameters.items()) {
-    text += " ";
+    OutputUnits::Shown shown;
+    for (const Json& p : declared)
+      if (p["name"] == name) shown = shownUnit(units, p);
+    text += text.empty() ? " " : ", ";
     text += name;
     text += " = ";
-    text += formatFigure(value);
+    text += figureText(value, shown);
   }
   return text;
 }
@@ -66,17 +88,21 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
                 "code)"
               : "full (the deck read in full at every point)")
       << "\n";
+  // Values in the output units chosen (summary.json holds them in the columns' units).
+  const OutputUnits& units = o.units;
   for (const Json& output : s["outputs"]) {
     out << "  " << output["name"].get<std::string>() << ":";
     if (!output.contains("mean")) {
       out << " no values\n";
       continue;
     }
-    out << " min " << formatFigure(output["min"]) << ", mean " << formatFigure(output["mean"])
-        << ", max " << formatFigure(output["max"]) << ", sd " << formatFigure(output["sd"]);
+    const OutputUnits::Shown shown = shownUnit(units, output);
+    out << " min " << figureText(output["min"], shown) << ", mean "
+        << figureText(output["mean"], shown) << ", max " << figureText(output["max"], shown)
+        << ", sd " << figureText(output["sd"], shown);
     if (output.contains("limit"))
       out << (output.value("limit_is", "upper") == "lower" ? "; below " : "; above ")
-          << formatFigure(output["limit"]) << ": " << output["exceeded"]
+          << figureText(output["limit"], shown) << ": " << output["exceeded"]
           << (output.contains("exceedance")
                   ? ", probability " + probabilityText(output["exceedance"])
                   : std::string{});
@@ -91,9 +117,10 @@ void printStudySummary(std::ostream& out, const DesignStudyOutcome& o) {
   }
   if (s.contains("worst_point"))
     out << "  worst point " << s["worst_point"]["point"] << ":"
-        << parametersText(s["worst_point"]["parameters"]) << "\n";
+        << parametersText(s["worst_point"]["parameters"], s["parameters"], units) << "\n";
   for (const Json& failure : s["failures"])
-    out << "  point " << failure["point"] << " (" << parametersText(failure["parameters"]).substr(1)
+    out << "  point " << failure["point"] << " ("
+        << parametersText(failure["parameters"], s["parameters"], units).substr(1)
         << ") failed: " << failure["status"].get<std::string>() << "\n";
   char line[256];
   const long long solvedHere = o.points - o.resumed;

@@ -21,6 +21,7 @@
 #include "problems/cli/TorsionSummary.hpp"
 #include "problems/cli/TransientSummary.hpp"
 #include "problems/deck/ShownFieldUnit.hpp"
+#include "problems/output/ShownCheck.hpp"
 #include "problems/output/structure/Reactions.hpp"
 #include "problems/run/Overloaded.hpp"
 
@@ -205,9 +206,9 @@ void printRunResults(std::ostream& out, const Deck& deck, const RunResult& run,
             [&](const TransientOutcome&) { printTransient(out, a, units); },
             [&](const RotorResult auto& r) { printRotor(out, a, r, units); },
             [&](const CrankSliderOutcome&) { printCrankSlider(out, a, units); },
-            [&](const MovingLoadOutcome& r) { printMovingLoad(out, a, r); },
-            [&](const ResponseSpectrumResult& r) { printSpectrum(out, a, r, *run.model); },
-            [&](const BaseMotionResult& r) { printBaseMotion(out, a, r, *run.model); }},
+            [&](const MovingLoadOutcome& r) { printMovingLoad(out, a, r, units); },
+            [&](const ResponseSpectrumResult& r) { printSpectrum(out, a, r, *run.model, units); },
+            [&](const BaseMotionResult& r) { printBaseMotion(out, a, r, *run.model, units); }},
         a.result);
     for (const std::string& w : a.warnings) out << "warning: " << a.name << ": " << w << "\n";
   }
@@ -299,20 +300,19 @@ int printChecks(std::ostream& out, const Deck& deck, const std::vector<const Run
     for (const Check& c : runs[i]->checks) {
       const bool ok = c.pass();
       (ok ? passed : failed)++;
-      // The values in the user's unit of the quantity where set, else in the check's own.
-      const OutputUnits::Shown shown = shownField(units, checkQuantityUnit(c.quantity));
+      // The values in the user's unit of the quantity where set, else in the check's own;
+      // against a zero reference the error and the tolerance are absolute, in that unit.
+      const ShownCheck shown = shownCheck(c, units);
       const std::string unit = shown.unit.empty() ? "" : " " + shown.unit;
-      const auto value = [&](double v) { return formatValue(v * shown.factor) + unit; };
-      // Against a zero reference the error and the tolerance are absolute, in that unit.
-      const bool absolute = c.reference == 0;
-      const double scale = absolute ? shown.factor : 1;
+      const auto value = [&](double v) { return formatValue(v) + unit; };
+      const bool absolute = shown.absolute;
       out << "  " << (ok ? "PASS  " : "FAIL  ") << prefix << padded(c.name, nameWidth)
-          << padded(c.quantity, quantityWidth) << padded(value(c.computed), 18) << "ref "
-          << padded(value(c.reference), 18) << (absolute ? "abs.err " : "rel.err ")
-          << padded(scientific(c.relError() * scale) + (absolute ? unit : ""), 10) << "tol "
-          << scientific(c.tolerance * scale) << (absolute ? unit : "") << "\n";
-      if (c.paper)
-        out << "        " << prefix << "paper prints " << value(*c.paper) << " ("
+          << padded(c.quantity, quantityWidth) << padded(value(shown.computed), 18) << "ref "
+          << padded(value(shown.reference), 18) << (absolute ? "abs.err " : "rel.err ")
+          << padded(scientific(shown.error) + (absolute ? unit : ""), 10) << "tol "
+          << scientific(shown.tolerance) << (absolute ? unit : "") << "\n";
+      if (shown.paper)
+        out << "        " << prefix << "paper prints " << value(*shown.paper) << " ("
             << scientific(std::abs(c.computed - *c.paper) / std::abs(*c.paper))
             << " from the computed value): " << c.reason << "\n";
     }

@@ -119,13 +119,18 @@ CsvTable convergenceTable(const ConvergeSeries& series, const FieldUnit& unit) {
   return table;
 }
 
+std::vector<CsvTable> convergenceTables(const ConvergeStudy& study, const OutputUnits& units) {
+  std::vector<CsvTable> tables;
+  for (const ConvergeSeries& s : study.series)
+    tables.push_back(inUnits(convergenceTable(s, study.unit), units));
+  return tables;
+}
+
 void writeConvergenceOutputs(const ConvergeStudy& study, const std::filesystem::path& dir,
                              const OutputUnits& units) {
   const Json doc = convergenceJson(study);
   requireFiniteNumbers(doc, kConvergenceJson);
-  std::vector<CsvTable> tables;
-  for (const ConvergeSeries& s : study.series)
-    tables.push_back(inUnits(convergenceTable(s, study.unit), units));
+  const std::vector<CsvTable> tables = convergenceTables(study, units);
   writeDirectoryAtomically(dir, [&](const std::filesystem::path& temporary) {
     // Both charts drawn together, as SVG (the verification report inlines them) and PNG.
     ChartBatch charts(ChartFormat::both);

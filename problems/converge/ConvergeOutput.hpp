@@ -38,6 +38,9 @@ Json convergenceJson(const ConvergeStudy& study);
 /// convergence_<method>.csv's table of one series, its values in `unit` (the study's).
 CsvTable convergenceTable(const ConvergeSeries& series, const FieldUnit& unit = {});
 
+/// Every series' table in `units` (inUnits), in method order.
+std::vector<CsvTable> convergenceTables(const ConvergeStudy& study, const OutputUnits& units);
+
 /// Writes the files above into dir (atomically), the tables (values, times) and the time axis
 /// in `units` (inUnits; convergence.json stays as measured). Throws std::runtime_error when it
 /// cannot.

@@ -192,12 +192,14 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             },
             [&](const MovingLoadOutcome& r) {
               for (const CsvTable& table : p.moving) table.write(dir / table.title());
-              if (charts) drawMovingCharts(dir, r, p.stem, captionOf(prepared, a.name));
+              if (charts)
+                drawMovingCharts(dir, r, p.stem, captionOf(prepared, a.name), prepared.units);
             },
             [&](const ResponseSpectrumResult& r) {
               writeModalFiles(prepared, p, model, r.modal, dir, charts);
               for (const CsvTable& table : p.spectrum) table.write(dir / table.title());
-              writeSpectrumFiles(dir, r, model, p.stem, captionOf(prepared, a.name), charts);
+              writeSpectrumFiles(dir, r, model, p.stem, captionOf(prepared, a.name), charts,
+                                 prepared.units);
             },
             [&](const BaseMotionResult&) {
               p.baseMotion->write(dir / p.baseMotion->title());

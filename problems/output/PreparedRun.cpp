@@ -163,7 +163,7 @@ Json checkedDocument(const RunResult& run, const std::vector<AnalysisExtremes>& 
 /// Every table of p in `units` (inUnits).
 void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
   for (std::optional<CsvTable>* t :
-       {&p.fields, &p.springs, &p.modes, &p.shapes, &p.history, &p.baseMotion})
+       {&p.fields, &p.springs, &p.reactions, &p.modes, &p.shapes, &p.history, &p.baseMotion})
     if (*t) *t = inUnits(**t, units);
   if (p.rotor)
     for (std::optional<CsvTable>* t :
@@ -227,11 +227,11 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
             },
             [&](const RotorResult auto& r) { p.rotor = prepareRotor(r, p.stem); },
             [&](const CrankSliderOutcome& r) { p.crank = crankTables(r, p.stem); },
-            [&](const MovingLoadOutcome& r) { p.moving = movingTables(r, p.stem); },
+            [&](const MovingLoadOutcome& r) { p.moving = movingTables(r, p.stem, choices.units); },
             [&](const ResponseSpectrumResult& r) {
               p.modes = modesTable(modesCsv(p.stem), r.modal);
               p.shapes = modeShapesTable(shapesCsv(p.stem), model, r.modal);
-              p.spectrum = spectrumTables(r, model, p.stem);
+              p.spectrum = spectrumTables(r, model, p.stem, choices.units);
             },
             [&](const BaseMotionResult& r) { p.baseMotion = baseMotionTable(r, model, p.stem); }},
         a.result);

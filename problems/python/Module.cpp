@@ -31,10 +31,15 @@
 #include <vector>
 
 #include "fem/solvers/BlasThreads.hpp"
+#include "problems/converge/ConvergeOutput.hpp"
 #include "problems/deck/parse/DeckError.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/study/Overrides.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/output/Output.hpp"
+#include "problems/output/OverlayOutput.hpp"
+#include "problems/output/ShownCheck.hpp"
+#include "problems/output/files/AtomicDirectory.hpp"
 #include "problems/output/PreparedRun.hpp"
 #include "problems/run/Study.hpp"
 #include "problems/study/DesignStudyRun.hpp"
@@ -264,20 +269,23 @@ OutputUnits unitsFrom(const py::object& units) {
   }
 }
 
-py::object solve(const std::filesystem::path& deck, const py::dict& set, const std::string& sweep,
-                 const std::string& formulation, bool noSweep, const py::object& units) {
-  const OutputUnits chosen = unitsFrom(units);
+/// The deck read with solve()'s arguments and solved, the GIL let go meanwhile.
+Study solvedStudy(const std::filesystem::path& deck, const py::dict& set,
+                  const std::string& sweep, const std::string& formulation, bool noSweep) {
   StudyRequest request;
   request.deckPath = deck.string();
   request.sets = overridesFrom(set);
   request.sweep = sweep;
   request.formulation = formulation;
   request.noSweep = noSweep;
-  Study study;
-  {
-    py::gil_scoped_release free;
-    study = solveStudy(request);
-  }
+  py::gil_scoped_release free;
+  return solveStudy(request);
+}
+
+py::object solve(const std::filesystem::path& deck, const py::dict& set, const std::string& sweep,
+                 const std::string& formulation, bool noSweep, const py::object& units) {
+  const OutputUnits chosen = unitsFrom(units);
+  Study study = solvedStudy(deck, set, sweep, formulation, noSweep);
   DeckOutput output = study.deck.output;
   output.units = output.units.overlaid(chosen);
   if (study.sweep) return py::cast(PythonSweep(std::move(*study.sweep), output));
@@ -308,13 +316,22 @@ std::vector<std::string> csvLine(const std::string& line) {
 /// study.csv as columns: a column whose every cell is a number or empty as a NumPy array (NaN
 /// where empty), read back to the same bits the study computed (the file holds each number's
 /// shortest exact decimal); any other as a list of str.
-py::dict studyColumns(const std::filesystem::path& file) {
+/// `units`, when given, gets each column's unit from the table's units line ("# units: ...").
+py::dict studyColumns(const std::filesystem::path& file, py::dict* units = nullptr) {
   std::ifstream in(file);
   std::string line;
   std::getline(in, line);
   const std::vector<std::string> names = csvLine(line);
   std::vector<std::vector<std::string>> cells(names.size());
+  const std::string unitsLine = "# units: ";
   while (std::getline(in, line)) {
+    if (line.rfind(unitsLine, 0) == 0) {
+      const std::vector<std::string> unit = csvLine(line.substr(unitsLine.size()));
+      if (units)
+        for (std::size_t c = 0; c < names.size() && c < unit.size(); ++c)
+          (*units)[py::str(names[c])] = unit[c];
+      continue;
+    }
     const std::vector<std::string> row = csvLine(line);
     for (std::size_t c = 0; c < names.size(); ++c) cells[c].push_back(c < row.size() ? row[c] : "");
   }
@@ -342,6 +359,7 @@ py::dict studyColumns(const std::filesystem::path& file) {
 /// A design study run from Python: its table, summary and worst point.
 struct PythonStudy {
   py::dict table;         ///< study.csv's columns
+  py::dict units;         ///< each column's unit, as study.csv names it
   py::object summary;     ///< summary.json
   py::object worst;       ///< the worst point's Run, or None
   std::filesystem::path directory;
@@ -351,8 +369,10 @@ py::object study(const std::filesystem::path& deck, const std::vector<std::strin
                  const py::dict& sample, std::optional<long long> samples,
                  const std::vector<std::string>& outputs, int threads,
                  std::optional<std::uint64_t> seed, const std::string& sampling,
-                 const py::dict& set, const std::optional<std::filesystem::path>& out) {
+                 const py::dict& set, const std::optional<std::filesystem::path>& out,
+                 const py::object& units) {
   DesignStudyRequest request;
+  request.units = unitsFrom(units);
   request.deckPath = deck.string();
   request.sets = overridesFrom(set);
   request.study.sweeps = sweep;
@@ -377,16 +397,143 @@ py::object study(const std::filesystem::path& deck, const std::vector<std::strin
     py::gil_scoped_release free;
     outcome = runDesignStudy(request);
   }
-  PythonStudy result{studyColumns(outcome.dir / "study.csv"), toPython(outcome.summary),
-                     py::none(), temporary ? std::filesystem::path() : outcome.dir};
+  py::dict columnUnits;
+  py::dict table = studyColumns(outcome.dir / "study.csv", &columnUnits);
+  PythonStudy result{table, columnUnits, toPython(outcome.summary), py::none(),
+                     temporary ? std::filesystem::path() : outcome.dir};
   if (temporary) std::filesystem::remove_all(outcome.dir);
   // The worst point solved in full, as the command line writes it into worst/.
   if (outcome.summary.contains("worst_point") &&
       outcome.summary["worst_point"].contains("directory")) {
-    py::dict at = set;
+    // A copy: `set` may be the keyword's default dict, which pybind11 shares between calls.
+    py::dict at;
+    for (const auto& [name, value] : set) at[name] = value;
     for (const auto& [name, value] : outcome.summary["worst_point"]["parameters"].items())
       at[py::str(name)] = value.get<double>();
-    result.worst = solve(deck, at, "", "", true, py::none());
+    result.worst = solve(deck, at, "", "", true, units);
+  }
+  return py::cast(std::move(result));
+}
+
+// 5. Checks, convergence studies and overlays, in the output units -----------------------
+
+/// check(): the deck's checks as `beamrotor check` prints them, in the output units: one dict
+/// per check (per value and check for a sweep, `at` naming the value).
+py::list check(const std::filesystem::path& deck, const py::dict& set, const std::string& sweep,
+               const std::string& formulation, bool noSweep, const py::object& units) {
+  const OutputUnits chosen = unitsFrom(units);
+  const Study study = solvedStudy(deck, set, sweep, formulation, noSweep);
+  const OutputUnits shownIn = study.deck.output.units.overlaid(chosen);
+  py::list checks;
+  const auto add = [&](const RunResult& run, const py::object& at) {
+    for (const Check& c : run.checks) {
+      const ShownCheck shown = shownCheck(c, shownIn);
+      py::dict entry;
+      entry["name"] = c.name;
+      entry["quantity"] = c.quantity;
+      entry["computed"] = shown.computed;
+      entry["reference"] = shown.reference;
+      entry["error"] = shown.error;
+      entry["tolerance"] = shown.tolerance;
+      entry["absolute"] = shown.absolute;
+      entry["unit"] = shown.unit;
+      entry["pass"] = c.pass();
+      if (shown.paper) entry["paper"] = *shown.paper;
+      if (!at.is_none()) entry["at"] = at;
+      checks.append(entry);
+    }
+  };
+  if (study.run) {
+    add(*study.run, py::none());
+  } else {
+    const SweepResult& s = *study.sweep;
+    const OutputUnits::Shown value = shownIn.valueIn(s.unit, {1, s.unit});
+    for (std::size_t i = 0; i < s.runs.size(); ++i) {
+      py::dict at;
+      at["parameter"] = s.parameter;
+      at["value"] = s.values[i] * value.factor;
+      at["unit"] = value.unit;
+      add(s.runs[i], at);
+    }
+  }
+  return checks;
+}
+
+/// Tables as Python: {key: columns} and {key: {column: unit}}, the key the table's file name
+/// without `stem`_ and .csv.
+void tablesToPython(const std::vector<CsvTable>& tables, const std::string& stem,
+                    py::dict& columns, py::dict& units) {
+  for (const CsvTable& t : tables) {
+    columns[py::str(tableKey(t.title(), stem))] = columnsOf(t);
+    units[py::str(tableKey(t.title(), stem))] = unitsOf(t);
+  }
+}
+
+/// A convergence study run from Python: convergence.json (as measured) and the tables.
+struct PythonConvergence {
+  py::object results;    ///< convergence.json
+  py::dict tables;       ///< per method: its table's columns, in the output units
+  py::dict units;        ///< per method: each column's unit
+};
+
+py::object converge(const std::filesystem::path& deck, const py::dict& set,
+                    const std::string& quantity, int levels, int repeats,
+                    const std::optional<std::filesystem::path>& out, const py::object& units) {
+  const OutputUnits chosen = unitsFrom(units);
+  const DeckSource source = loadDeckFile(deck.string());
+  std::vector<ParameterOverride> overrides;
+  for (const std::string& s : overridesFrom(set))
+    overrides.push_back(parseOverride(s, source.path));
+  const Deck d = readDeck(source, overrides);
+  const OutputUnits shownIn = d.output.units.overlaid(chosen);
+  ConvergeStudy study;
+  {
+    py::gil_scoped_release free;
+    study = runConvergence(d, ConvergeOptions{quantity, levels, repeats});
+    if (out) writeConvergenceOutputs(study, *out, shownIn);
+  }
+  PythonConvergence result{toPython(convergenceJson(study)), {}, {}};
+  tablesToPython(convergenceTables(study, shownIn), "convergence", result.tables, result.units);
+  return py::cast(std::move(result));
+}
+
+/// An overlay run from Python: each deck's fields table along its line, in the output units.
+struct PythonOverlay {
+  py::dict tables;  ///< per deck (its label): the fields table's columns
+  py::dict units;   ///< per deck: each column's unit
+  bool drawn = false;  ///< whether the chart was drawn (written with `out` and gnuplot)
+};
+
+py::object overlay(const std::vector<std::filesystem::path>& decks, const py::dict& set,
+                   const std::string& quantity, const std::optional<std::filesystem::path>& out,
+                   const py::object& units) {
+  const OutputUnits chosen = unitsFrom(units);
+  const std::vector<Diagram> shown = overlaidDiagrams(quantity);
+  if (shown.empty())
+    throw py::value_error("quantity: '" + quantity + "' is not 'all' nor one of the diagrams");
+  if (decks.size() < 2) throw py::value_error("decks: an overlay needs two or more decks");
+  std::vector<std::string> paths;
+  for (const std::filesystem::path& d : decks) paths.push_back(d.string());
+  const std::vector<std::string> sets = overridesFrom(set);
+  std::vector<Study> studies;
+  {
+    py::gil_scoped_release free;
+    studies = solveOverlaid(paths, sets);
+  }
+  const OutputUnits shownIn = studies.front().deck.output.units.overlaid(chosen);
+  std::vector<OverlaidRun> runs;
+  for (const Study& s : studies) runs.push_back({s.run->deckName, &*s.run});
+  PythonOverlay result;
+  for (const OverlaidRun& r : runs) {
+    const CsvTable table = overlaidTable(r, shownIn);
+    result.tables[py::str(r.label)] = columnsOf(table);
+    result.units[py::str(r.label)] = unitsOf(table);
+  }
+  if (out) {
+    py::gil_scoped_release free;
+    writeDirectoryAtomically(*out, [&](const std::filesystem::path& temporary) {
+      result.drawn = writeOverlay(temporary, runs, shown, shownIn);
+    });
   }
   return py::cast(std::move(result));
 }
@@ -398,7 +545,7 @@ py::dict parameters(const std::filesystem::path& deck) {
   return p;
 }
 
-// 5. Errors ------------------------------------------------------------------------------
+// 6. Errors ------------------------------------------------------------------------------
 
 /// Imports NumPy, or fails the import of this module with an ImportError that names NumPy,
 /// the Python running and the one the module was built for (pybind11 alone says
@@ -507,7 +654,11 @@ PYBIND11_MODULE(beamrotor, m) {
   py::class_<PythonStudy>(m, "Study", "A design study: its table, summary and worst point.")
       .def_readonly("table", &PythonStudy::table,
                     "study.csv's columns: NumPy arrays (text columns as lists of str)")
-      .def_readonly("summary", &PythonStudy::summary, "summary.json as dicts and lists")
+      .def_readonly("units", &PythonStudy::units,
+                    "each column's unit, as study.csv's units line names it (the table keeps "
+                    "these units whatever `units` chose)")
+      .def_readonly("summary", &PythonStudy::summary,
+                    "summary.json as dicts and lists (in the columns' units, which it names)")
       .def_readonly("worst", &PythonStudy::worst, "the worst point's Run (None without one)")
       .def_property_readonly(
           "directory",
@@ -520,12 +671,48 @@ PYBIND11_MODULE(beamrotor, m) {
         py::arg("sweep") = std::vector<std::string>{}, py::arg("sample") = py::dict(),
         py::arg("samples") = py::none(), py::arg("outputs") = std::vector<std::string>{},
         py::arg("threads") = 1, py::arg("seed") = py::none(), py::arg("sampling") = "",
-        py::arg("set") = py::dict(), py::arg("out") = py::none(),
+        py::arg("set") = py::dict(), py::arg("out") = py::none(), py::arg("units") = py::none(),
         "Runs a design study as `beamrotor study` does: `sweep` grid axes ('eta=0:0.4:99'), "
         "`sample` {name: 'normal(1e-3,0.2e-3)'} with `samples` points, `outputs` ('stress max "
         "<= 150 MPa'), on `threads` threads. Returns a Study: its table (the columns of "
         "study.csv, the same numbers to the bit), summary and worst point's Run; `out` keeps "
-        "the results directory there.");
+        "the results directory there. `units` (as solve's) sets the units of the worst "
+        "point's Run and results directory, as --units does.");
+  m.def("check", &beamrotor::check, py::arg("deck"), py::kw_only(), py::arg("set") = py::dict(),
+        py::arg("sweep") = "", py::arg("formulation") = "", py::arg("sweep_off") = false,
+        py::arg("units") = py::none(),
+        "Solves the deck as solve() does and returns its checks as `beamrotor check` prints "
+        "them: a list of dicts {name, quantity, computed, reference, error, tolerance, "
+        "absolute, unit, pass[, paper][, at]}, the values in `units` (as solve's) over the "
+        "deck's output: units; error and tolerance are relative, or absolute in `unit` when "
+        "the reference is 0 (`absolute`). A sweep gives each value's checks, `at` "
+        "{parameter, value, unit} naming the value.");
+  py::class_<PythonConvergence>(m, "Convergence", "A convergence study: its results and tables.")
+      .def_readonly("results", &PythonConvergence::results,
+                    "convergence.json as dicts and lists (as measured: SI)")
+      .def_readonly("tables", &PythonConvergence::tables,
+                    "tables[method][column]: each method's table as NumPy arrays, in the "
+                    "output units")
+      .def_readonly("units", &PythonConvergence::units, "units[method][column]");
+  m.def("converge", &beamrotor::converge, py::arg("deck"), py::kw_only(),
+        py::arg("set") = py::dict(), py::arg("quantity") = "", py::arg("levels") = 5,
+        py::arg("repeats") = 3, py::arg("out") = py::none(), py::arg("units") = py::none(),
+        "Runs `beamrotor converge` on the deck: `quantity` (default: the first that changes "
+        "with the discretisation) on `levels` meshes or time steps, each timed as the median "
+        "of `repeats` runs. Returns a Convergence; `out` also writes its results directory. "
+        "`units` (as solve's) sets the units of its tables and charts.");
+  py::class_<PythonOverlay>(m, "Overlay", "Several decks' static diagrams along their lines.")
+      .def_readonly("tables", &PythonOverlay::tables,
+                    "tables[deck][column]: each deck's fields table, in the output units")
+      .def_readonly("units", &PythonOverlay::units, "units[deck][column]")
+      .def_readonly("drawn", &PythonOverlay::drawn, "whether the chart was drawn");
+  m.def("overlay", &beamrotor::overlay, py::arg("decks"), py::kw_only(),
+        py::arg("set") = py::dict(), py::arg("quantity") = "all", py::arg("out") = py::none(),
+        py::arg("units") = py::none(),
+        "Runs `beamrotor overlay` on two or more decks (each without its sweep): their fields "
+        "tables, and with `out` the results directory with the chart of `quantity` "
+        "(deflection, rotation, moment, force, stress, shear or all). `units` (as solve's) "
+        "sets the units of the tables and the chart over the first deck's output: units.");
   m.def("parameters", &beamrotor::parameters, py::arg("deck"),
         "The deck's parameters and their values, in deck order.");
 }

@@ -146,6 +146,10 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
   const DesignPoints points(plan.spec);
   DesignStudyOutcome outcome;
   outcome.threads = request.threads;
+  DeckOutput commandLine;
+  commandLine.units = request.units;
+  const OutputChoices worstChoices = chooseOutput(plan.output, commandLine);
+  outcome.units = worstChoices.units;
   if (!isStudyManager()) {  // an MPI rank other than 0: solve what rank 0 hands out
     const DeferredSignals deferred;  // a signal stops it between points, as it does rank 0
     outcome.ranks = solvePointsOnRank(plan, points, {}, request.threads, {}, stopAsked);
@@ -185,8 +189,11 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
           const auto writePointFiles = [&](const StudyRow& row) {
             Stopwatch pointClock;
             unlessStopping(pointDir(row.index), [&] {
+              OutputChoices choices;
+              choices.charts = ChartFormat::none;
+              choices.units = outcome.units;
               writeRunOutputs(pointFiles->solveFully(row.parameters), pointDir(row.index),
-                              OutputChoices{ChartFormat::none, false});
+                              choices);
             });
             outcome.pointFileSeconds += pointClock.lap();
           };
@@ -237,7 +244,7 @@ DesignStudyOutcome runDesignStudy(const DesignStudyRequest& request,
           try {
             outcome.worstWritten = unlessStopping(temporary / "worst", [&] {
               writeRunOutputs(PointSolver(plan).solveFully(worst->second), temporary / "worst",
-                              chooseOutput(plan.output, {}));
+                              worstChoices);
             });
             if (outcome.worstWritten)
               entry["directory"] = "worst";

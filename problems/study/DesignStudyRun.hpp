@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/deck/study/DesignStudy.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/study/PointRanges.hpp"
@@ -34,6 +35,10 @@ struct DesignStudyRequest {
   int threads = 1;         ///< threads over points on this machine (per MPI rank)
   bool pointFiles = false; ///< also every point's results directory (no charts), points/<k>/
   bool fullPath = false;   ///< read the deck in full at every point (StudyPlan::lean false)
+  /// `--units`, over the deck's `output: units:`: of the printed summary and the worst
+  /// point's and every point's results directory (study.csv and summary.json keep the
+  /// columns' units, which they name).
+  OutputUnits units;
 };
 
 struct DesignStudyOutcome {
@@ -56,6 +61,9 @@ struct DesignStudyOutcome {
   /// (--point-files), summed over the points.
   double pointFileSeconds = 0;
   Json summary;
+  /// The units chosen for the printed summary: the deck's `output: units:` with --units over
+  /// them.
+  OutputUnits units;
   bool partial() const { return !missing.empty(); }
 };
 

@@ -9,8 +9,10 @@
 
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/deck/DeckReader.hpp"
+#include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/structure/FormulationOption.hpp"
+#include "problems/deck/study/SweepOption.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/Measure.hpp"
 
@@ -73,10 +75,17 @@ StudyPlan makeStudyPlan(const std::string& deckPath, const std::string& deckText
   plan.overrides = std::move(overrides);
   plan.formulation = formulation;
   plan.output = deck.output;
-  for (const StudyParameter& p : spec.parameters) plan.parameterNames.push_back(p.name);
-  for (const StudyOutput& o : spec.outputs) addOnce(plan.analyses, o.analysis);
+  for (const StudyParameter& p : spec.parameters) {
+    plan.parameterNames.push_back(p.name);
+    plan.parameterUnits.push_back(parameterUnit(deck, p.name));
+  }
+  for (const StudyOutput& o : spec.outputs) {
+    addOnce(plan.analyses, o.analysis);
+    plan.outputUnits.push_back(referenceUnit(o.quantity));
+  }
   for (const DeckCheck& k : deck.checks) {
     plan.checkNames.push_back(k.name);
+    plan.checkUnits.push_back(referenceUnit(k.quantity));
     addOnce(plan.analyses, k.analysis);
   }
   plan.exclusive = std::any_of(deck.analyses.begin(), deck.analyses.end(),

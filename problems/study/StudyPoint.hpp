@@ -11,6 +11,7 @@
 #include "problems/deck/parse/DeckSource.hpp"
 #include "problems/deck/study/DesignStudy.hpp"
 #include "problems/deck/parse/Expression.hpp"
+#include "problems/deck/parse/Units.hpp"
 #include "problems/deck/study/Overrides.hpp"
 #include "problems/run/DeckRunner.hpp"
 #include "problems/run/RunResult.hpp"
@@ -26,6 +27,10 @@ struct StudyPlan {
   DesignStudySpec spec;
   std::vector<std::string> parameterNames;  ///< the varied parameters, in spec order
   std::vector<std::string> checkNames;      ///< the deck's checks, deck order
+  /// The unit each column holds its numbers in, told by the deck as it was read: a varied
+  /// parameter's (parameterUnit: SI, or rpm for a bare one read by a *_rpm field), an
+  /// output's and a check's computed value's (referenceUnit of the quantity).
+  std::vector<FieldUnit> parameterUnits, outputUnits, checkUnits;
   std::vector<std::string> analyses;        ///< the analyses the outputs and checks read
   /// Whether points must take turns solving: ARPACK (modes, buckling, rotor modes, the
   /// central-difference step estimate) keeps its state in Fortran SAVE variables and is not
@@ -36,7 +41,7 @@ struct StudyPlan {
   /// false: every point reads the deck in full (the reference the lean path must equal).
   bool lean = true;
   /// The deck's `output:` choices: the worst point's directory is written with them (its
-  /// charts and output units); study.csv stays SI.
+  /// charts and output units); study.csv and summary.json stay in the columns' units.
   DeckOutput output;
 };
 

@@ -1,5 +1,6 @@
 #include "problems/study/StudyResume.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 
@@ -41,7 +42,7 @@ Json studyIdentity(const StudyPlan& plan, long long points) {
     sets.push_back(o.name + value);
   }
   std::string header = studyCsvHeader(plan);
-  header.pop_back();  // its newline
+  header.pop_back();  // its last newline (the names and the units line stay apart by theirs)
   return Json{{"deck", plan.deckPath},
               {"deck_text_fnv1a64", textHash(plan.deckText)},
               {"sets", sets},
@@ -88,11 +89,18 @@ StudyResumption::StudyResumption(const fs::path& dir, const StudyPlan& plan,
   differs("columns", "records other columns");
 
   table_.open(dir / "study.csv", std::ios::binary);
-  std::string line;
-  if (!table_ || !completeLine(table_, line) || line != here["columns"].get<std::string>())
+  // The header's lines: the names, and the units line when there is one.
+  std::string header, line;
+  const std::string written = studyCsvHeader(plan);
+  const long long headerLines = std::count(written.begin(), written.end(), '\n');
+  for (long long k = 0; k < headerLines && table_ && completeLine(table_, line); ++k) {
+    if (k > 0) header += '\n';
+    header += line;
+  }
+  if (!table_ || header != here["columns"].get<std::string>())
     fail("its study.csv does not begin with the columns of this study");
   const std::streampos rowsStart = table_.tellg();
-  for (long long lineNumber = 2; completeLine(table_, line); ++lineNumber) {
+  for (long long lineNumber = headerLines + 1; completeLine(table_, line); ++lineNumber) {
     const auto row = parseStudyCsvRow(line, shape_);
     const std::string at = "study.csv line " + std::to_string(lineNumber);
     if (!row) fail(at + " is not a row of this study");

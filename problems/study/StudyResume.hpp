@@ -4,7 +4,8 @@
 // as they finished. Every study writes resume.json when it starts (removed once it is
 // complete): what makes its table this table. The continued study must be the same: the deck's
 // text, the --set overrides and --formulation (which change every value), the number of points
-// and the columns; and each stored row's parameter values must be those of its point here
+// and the columns (their names and units; the output units chosen are no part of the table);
+// and each stored row's parameter values must be those of its point here
 // (other --sweep, --sample, --seed or sampling give other values). It then solves only the
 // points missing, and its table is, byte for byte, the table of an uninterrupted run.
 #pragma once

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/study/StudyStatistics.hpp"
 
 namespace beamrotor {
@@ -104,8 +105,9 @@ Json StudySummary::json() const {
   j["points"] = points_;
   j["failed"] = failed_;
   Json parameters = Json::array();
-  for (const StudyParameter& p : spec.parameters) {
-    Json one{{"name", p.name}};
+  for (std::size_t k = 0; k < spec.parameters.size(); ++k) {
+    const StudyParameter& p = spec.parameters[k];
+    Json one{{"name", p.name}, {"unit", bareUnitName(plan_.parameterUnits.at(k))}};
     if (p.distribution) {
       const StudyDistribution& d = *p.distribution;
       one["distribution"] = distributionName(d.kind);
@@ -124,7 +126,10 @@ Json StudySummary::json() const {
   for (std::size_t k = 0; k < outputs_.size(); ++k) {
     const OutputTally& t = outputs_[k];
     const StudyOutput& o = spec.outputs[k];
-    Json one{{"name", o.text}, {"analysis", o.analysis}, {"count", t.values.size()}};
+    Json one{{"name", o.text},
+             {"unit", bareUnitName(plan_.outputUnits.at(k))},
+             {"analysis", o.analysis},
+             {"count", t.values.size()}};
     if (o.limit) one["limit"] = *o.limit;
     if (o.lowerLimit) one["limit_is"] = "lower";
     if (!t.values.empty()) {
@@ -155,7 +160,10 @@ Json StudySummary::json() const {
   Json checks = Json::array();
   for (std::size_t k = 0; k < checks_.size(); ++k) {
     const CheckTally& t = checks_[k];
-    Json one{{"name", plan_.checkNames[k]}, {"applicable", t.applicable}, {"passed", t.passed}};
+    Json one{{"name", plan_.checkNames[k]},
+             {"unit", bareUnitName(plan_.checkUnits.at(k))},
+             {"applicable", t.applicable},
+             {"passed", t.passed}};
     if (t.applicable > 0) {
       one["pass_rate"] = double(t.passed) / double(t.applicable);
       if (sampled) one["failure"] = proportionJson(t.applicable - t.passed, t.applicable);

@@ -1,10 +1,11 @@
 // summary.json of a design study, gathered row by row in point order (so a threaded or MPI
 // study sums in the serial order and gives the same file):
-//   {deck, sampling, seed, points, failed, parameters [{name, values | distribution}],
-//    outputs [{name, unit?, limit?, limit_is? ("lower"), count, min, max, mean, sd,
+//   {deck, sampling, seed, points, failed, parameters [{name, unit, values | distribution}],
+//    outputs [{name, unit, analysis, count, limit?, limit_is? ("lower"), min, max, mean, sd,
 //              percentiles {p1 .. p99}, worst {point, value, parameters {}}, exceeded?,
 //              exceedance? {count, probability, wilson95}}],
-//    checks [{name, applicable, passed, pass_rate, failure_probability? {...}}],
+//    checks [{name, unit, applicable, passed, pass_rate, failure? {count, trials, probability,
+//             wilson95}}],
 //    worst_point {point, parameters, why}, failures [first 20 {point, parameters, status}]}
 // The worst point of an output is where it is largest (with an upper limit), smallest (with a
 // lower one) or largest in magnitude (without); the study's worst point is the worst of the
@@ -13,6 +14,9 @@
 // limit (above an upper, below a lower one). Sampled studies also give, for each limit and
 // check, the probability of passing the limit or failing the check with its Wilson 95 %
 // interval.
+// Every number is in its column's unit of study.csv (SI, rpm for a critical speed or a bare
+// *_rpm parameter), named by `unit` ("" when dimensionless); the output units chosen change
+// only the printed summary and the worst point's directory.
 // Memory: one double per output per point (for the percentiles), the rest is counters.
 #pragma once
 

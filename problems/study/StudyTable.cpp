@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/output/files/CsvTable.hpp"
 
 namespace beamrotor {
@@ -24,19 +25,29 @@ void appendNumber(std::string& line, double v) {
 }  // namespace
 
 std::string studyCsvHeader(const StudyPlan& plan) {
-  std::string line = "point";
+  std::string names = "point", units = "# units: ";
+  bool anyUnit = false;
   // Appended piece by piece: `"," + temporary` trips GCC 12's false -Wrestrict when inlined.
-  const auto appendCell = [&line](const std::string& text) {
-    line += ',';
-    line += csvField(text);
+  const auto appendColumn = [&](const std::string& name, const std::string& unit) {
+    names += ',';
+    names += csvField(name);
+    units += ',';
+    units += csvField(unit);
+    anyUnit = anyUnit || !unit.empty();
   };
-  for (const std::string& name : plan.parameterNames) appendCell(name);
-  for (const StudyOutput& o : plan.spec.outputs) appendCell(o.text);
-  for (const std::string& name : plan.checkNames) {
-    appendCell(name);
-    appendCell(name + " pass");
+  for (std::size_t k = 0; k < plan.parameterNames.size(); ++k)
+    appendColumn(plan.parameterNames[k], bareUnitName(plan.parameterUnits.at(k)));
+  for (std::size_t k = 0; k < plan.spec.outputs.size(); ++k)
+    appendColumn(plan.spec.outputs[k].text, bareUnitName(plan.outputUnits.at(k)));
+  for (std::size_t k = 0; k < plan.checkNames.size(); ++k) {
+    appendColumn(plan.checkNames[k], bareUnitName(plan.checkUnits.at(k)));
+    appendColumn(plan.checkNames[k] + " pass", "");
   }
-  return line + ",status\n";
+  appendColumn("status", "");
+  names += '\n';
+  if (!anyUnit) return names;
+  units += '\n';
+  return names + units;
 }
 
 std::string studyCsvRow(const StudyRow& row) {

@@ -395,7 +395,7 @@ def read_study_csv(path):
     decimals read back), empty cells as NaN, text as str."""
     import csv
     with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+        rows = [row for row in csv.reader(f) if not (row and row[0].startswith("#"))]
     columns = {}
     for k, name in enumerate(rows[0]):
         cells = [row[k] for row in rows[1:]]
@@ -464,3 +464,112 @@ def test_moving_load_tables_and_envelope():
     moving = run.results["analyses"][0]
     assert moving["type"] == "moving-load"
     assert abs(moving["quantities"][0]["max"]["value"] / rule - 1) < EXACT
+
+
+def cantilever_tip(length):
+    """The cantilever deck's tip deflection, -P L^3 / (3 E I) in m (P = 1 kN, E = 210 GPa,
+    D = 50 mm)."""
+    return -1000.0 * length**3 / (3 * 210e9 * math.pi * 0.05**4 / 64)
+
+
+def test_check_in_output_units_is_si_times_the_factor():
+    """check(units=) against check() in SI: lengths x 1000, forces / 1000, moments in kN mm
+    (x 1), rotations as they are; a zero-reference check's absolute error and tolerance follow
+    its unit. The SI values are the closed forms to the deck's 1e-9."""
+    si = beamrotor.check(PROBLEMS / "cantilever.yaml")
+    mm = beamrotor.check(PROBLEMS / "cantilever.yaml", units={"length": "mm", "force": "kN"})
+    assert [c["name"] for c in mm] == [c["name"] for c in si]
+    by_name = {c["name"]: (a, c) for a, c in zip(si, mm)}
+    a, b = by_name["tip deflection"]
+    assert a["unit"] == "m" and b["unit"] == "mm"
+    assert b["computed"] == a["computed"] * 1000  # 1000 is exact: bit for bit
+    assert b["reference"] == a["reference"] * 1000
+    assert abs(a["computed"] / cantilever_tip(1.2) - 1) < EXACT
+    assert not b["absolute"] and b["error"] == a["error"] and b["tolerance"] == 1e-9
+    a, b = by_name["root force"]
+    assert (a["unit"], b["unit"]) == ("N", "kN")
+    assert b["reference"] == pytest.approx(a["reference"] / 1000, rel=1e-15)
+    assert b["reference"] == pytest.approx(1.0, rel=1e-15)  # P = 1 kN
+    a, b = by_name["root moment"]
+    assert (a["unit"], b["unit"]) == ("N m", "kN mm")
+    assert b["reference"] == pytest.approx(1200.0, rel=1e-15)  # P L = 1.2 kN m
+    a, b = by_name["tip rotation"]
+    assert a["unit"] == b["unit"] == "rad" and b["computed"] == a["computed"]
+    assert all(c["pass"] for c in mm)
+    # A string of units as --units takes it; a sweep names each value in the units.
+    swept = beamrotor.check(PROBLEMS / "cantilever.yaml", sweep="L=1m,1.2m", units="length=mm")
+    tips = [c for c in swept if c["name"] == "tip deflection"]
+    assert [t["at"]["value"] for t in tips] == [1000.0, 1200.0]
+    assert {t["at"]["unit"] for t in tips} == {"mm"} and tips[0]["at"]["parameter"] == "L"
+    for tip, length in zip(tips, (1.0, 1.2)):
+        assert abs(tip["computed"] / (1000 * cantilever_tip(length)) - 1) < EXACT
+    with pytest.raises(ValueError, match="length"):
+        beamrotor.check(PROBLEMS / "cantilever.yaml", units={"length": "kN"})
+
+
+def test_converge_in_output_units_is_si_times_the_factor(tmp_path):
+    """converge(units=): each method's value column in mm is convergence.json's SI value x 1000
+    (bit for bit), its time columns in ms; written, the table and chart say so."""
+    study = beamrotor.converge(PROBLEMS / "cantilever.yaml", quantity="displacement tip uy",
+                               levels=2, repeats=1, out=tmp_path / "c",
+                               units={"length": "mm", "time": "ms"})
+    method = study.results["methods"][0]
+    table = study.tables[method["name"]]
+    assert study.units[method["name"]]["value"] == "mm"
+    assert study.units[method["name"]]["total"] == "ms"
+    values = [level["value"] for level in method["levels"]]
+    assert list(table["value"]) == [v * 1000 for v in values]
+    assert abs(table["value"][0] / (1000 * cantilever_tip(1.2)) - 1) < EXACT
+    total = [level["time_s"]["total"] for level in method["levels"]]
+    assert table["total"] == pytest.approx([t * 1000 for t in total], rel=1e-15)
+    written = np.genfromtxt(tmp_path / "c" / ("convergence_" + method["name"] + ".csv"),
+                            delimiter=",", names=True)
+    assert list(written["value"]) == list(table["value"])
+    chart = (tmp_path / "c" / "convergence_time.gp").read_text()
+    assert "wall time (total) [ms]" in chart
+
+
+def test_overlay_in_output_units_is_si_times_the_factor(tmp_path):
+    """overlay(units=): each deck's fields table in mm and kN is the SI table times the exact
+    factors (x 1000 bit for bit, / 1000 to one rounding); the tip is the closed form."""
+    decks = [PROBLEMS / "cantilever.yaml", PROBLEMS / "simply_supported.yaml"]
+    si = beamrotor.overlay(decks)
+    mm = beamrotor.overlay(decks, units="length=mm,force=kN", out=tmp_path / "o",
+                           quantity="deflection")
+    assert set(mm.tables) == {"cantilever", "simply_supported"}
+    a, b = si.tables["cantilever"], mm.tables["cantilever"]
+    assert si.units["cantilever"]["uy"] == "m" and mm.units["cantilever"]["uy"] == "mm"
+    assert mm.units["cantilever"]["Vy"] == "kN"
+    assert list(b["uy"]) == [v * 1000 for v in a["uy"]]
+    assert list(b["x"]) == [v * 1000 for v in a["x"]]
+    assert b["Vy"] == pytest.approx(a["Vy"] / 1000, rel=1e-15)
+    assert abs(b["uy"][-1] / (1000 * cantilever_tip(1.2)) - 1) < EXACT
+    written = (tmp_path / "o" / "overlay.gp").read_text()
+    assert "deflection [mm]" in written
+    assert (tmp_path / "o" / "cantilever_fields.csv").exists()
+    with pytest.raises(ValueError, match="quantity"):
+        beamrotor.overlay(decks, quantity="torque")
+
+
+def test_study_table_names_its_units_and_genfromtxt_reads_it(tmp_path):
+    """study(units=): the table stays in the units study.csv names (SI), bit for bit the same
+    as without units; genfromtxt(names=True) reads the written file to the same numbers; the
+    worst point's Run is in the units chosen."""
+    deck = PROBLEMS / "pump_rod.yaml"
+    grid = ["eta=0:0.4:2", "w0=0.5e-3:1.5e-3:1"]
+    plain = beamrotor.study(deck, sweep=grid, outputs=["stress max"])
+    shown = beamrotor.study(deck, sweep=grid, outputs=["stress max"], out=tmp_path / "s",
+                            units={"length": "mm", "stress": "MPa"})
+    assert shown.units["eta"] == "m" and shown.units["stress max"] == "Pa"
+    assert shown.units["status"] == ""
+    for name, column in plain.table.items():
+        if isinstance(column, np.ndarray):
+            assert np.array_equal(shown.table[name], column, equal_nan=True)
+    read = np.genfromtxt(tmp_path / "s" / "study.csv", delimiter=",", names=True,
+                         dtype=None, encoding="utf-8")
+    assert read.dtype.names[:3] == ("point", "eta", "w0")
+    assert list(read["eta"]) == list(shown.table["eta"])
+    assert list(read["stress_max"]) == list(shown.table["stress max"])
+    assert shown.summary["outputs"][0]["unit"] == "Pa"
+    assert shown.worst.units["bending"]["fields"]["x"] == "mm"
+    assert plain.worst.units["bending"]["fields"]["x"] == "m"

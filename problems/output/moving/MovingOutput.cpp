@@ -58,16 +58,21 @@ CsvTable influenceTable(const MovingLoadOutcome& m, const std::string& stem) {
   return t;
 }
 
-CsvTable envelopesTable(const MovingLoadOutcome& m, const std::string& stem) {
+/// Quantities of several kinds share the value columns: each row names its unit (`units`'
+/// of the quantity's, SI where none is set), its numbers converted into it here.
+CsvTable envelopesTable(const MovingLoadOutcome& m, const std::string& stem,
+                        const OutputUnits& units) {
   CsvTable t(envelopesCsv(stem), {{"quantity", ""},
                                   {"unit", ""},
                                   {"max", ""},
                                   {"first_wheel_at_max", "m"},
                                   {"min", ""},
                                   {"first_wheel_at_min", "m"}});
-  for (const MovingQuantity& q : m.quantities)
-    t.addRow({q.text, q.valueUnit, q.envelope.max.value, q.envelope.max.lead,
-              q.envelope.min.value, q.envelope.min.lead});
+  for (const MovingQuantity& q : m.quantities) {
+    const OutputUnits::Shown shown = units.of(q.valueUnit);
+    t.addRow({q.text, shown.unit, q.envelope.max.value * shown.factor, q.envelope.max.lead,
+              q.envelope.min.value * shown.factor, q.envelope.min.lead});
+  }
   return t;
 }
 
@@ -77,8 +82,9 @@ Json extremeJson(const TrainExtreme& e) {
 
 }  // namespace
 
-std::vector<CsvTable> movingTables(const MovingLoadOutcome& m, const std::string& stem) {
-  return {influenceTable(m, stem), envelopesTable(m, stem)};
+std::vector<CsvTable> movingTables(const MovingLoadOutcome& m, const std::string& stem,
+                                   const OutputUnits& units) {
+  return {influenceTable(m, stem), envelopesTable(m, stem, units)};
 }
 
 Json movingJson(const AnalysisOutcome& a, const std::string& stem) {
@@ -109,15 +115,20 @@ Json movingJson(const AnalysisOutcome& a, const std::string& stem) {
 }
 
 void drawMovingCharts(const std::filesystem::path& dir, const MovingLoadOutcome& m,
-                      const std::string& stem, const std::string& caption) {
+                      const std::string& stem, const std::string& caption,
+                      const OutputUnits& units) {
   const int panels = int(m.quantities.size());
   const int width = 1000, height = 120 + 300 * panels;
+  // Places along the path, the influence per unit load and the effects under the train, each
+  // in the user's unit of its quantity where set (SI otherwise).
+  const OutputUnits::Shown length = units.of("m");
   std::ostringstream data, body;
   for (std::size_t i = 0; i < m.quantities.size(); ++i) {
+    const double influence = units.of(m.quantities[i].unit).factor;
     data << "$line" << i << " << EOD\n";
     for (const Sample& x : samplesOf(m.quantities[i].line))
-      data << number(x.s) << "," << number(valueAt(m.quantities[i].line.pieces[x.piece], x.t))
-           << "\n";
+      data << number(x.s * length.factor) << ","
+           << number(valueAt(m.quantities[i].line.pieces[x.piece], x.t) * influence) << "\n";
     data << "EOD\n";
     // The wheels where the largest and smallest effects put them, on the line.
     for (const auto& [block, extreme] :
@@ -126,7 +137,8 @@ void drawMovingCharts(const std::filesystem::path& dir, const MovingLoadOutcome&
       for (const TrainLoad& w : m.train) {
         const double s = extreme.lead - w.offset;
         if (s >= 0 && s <= m.length)
-          data << number(s) << "," << number(m.quantities[i].line.at(s)) << "\n";
+          data << number(s * length.factor) << ","
+               << number(m.quantities[i].line.at(s) * influence) << "\n";
       }
       data << "EOD\n";
     }
@@ -136,19 +148,28 @@ void drawMovingCharts(const std::filesystem::path& dir, const MovingLoadOutcome&
                       30 + keyWidth({"per unit load", "wheels at max", "wheels at min"}))
        << "  set grid\n"
        << "  set xzeroaxis linetype 1 linecolor rgb 'gray40'\n"
-       << "  set key outside right top\n  set xrange [0:" << number(m.length) << "]\n";
+       << "  set key outside right top\n  set xrange [0:" << number(m.length * length.factor)
+       << "]\n";
   for (std::size_t i = 0; i < m.quantities.size(); ++i) {
     const MovingQuantity& q = m.quantities[i];
+    const OutputUnits::Shown value = units.of(q.valueUnit);
+    const auto place = [&](double s) { return labelNumber(s * length.factor) + " " + length.unit; };
     if (i + 1 == m.quantities.size())
-      body << "  set xlabel " << gnuplotText("unit load at s along the path [m]") << "\n";
-    body << "  set ylabel " << gnuplotText(q.text + " [" + q.unit + "]") << "\n";
-    body << "  set title " << gnuplotText("influence line of " + q.text + "; under the train max " +
-                                          labelNumber(q.envelope.max.value) + " " + q.valueUnit +
-                                          " (first wheel at " + labelNumber(q.envelope.max.lead) +
-                                          " m), min " + labelNumber(q.envelope.min.value) + " " +
-                                          q.valueUnit + " (at " +
-                                          labelNumber(q.envelope.min.lead) + " m)")
-         << "\n";
+      body << "  set xlabel "
+           << gnuplotText("unit load at s along the path [" + length.unit + "]") << "\n";
+    const OutputUnits::Shown perLoad = units.of(q.unit);
+    body << "  set ylabel " << gnuplotText(q.text + " [" + perLoad.unit + "]") << "\n";
+    std::string title = "influence line of " + q.text + "; under the train max ";
+    title += labelNumber(q.envelope.max.value * value.factor) + " " + value.unit;
+    // Appended piece by piece: `" (at " + temporary` trips GCC 12's false -Wrestrict.
+    title += " (first wheel at ";
+    title += place(q.envelope.max.lead);
+    title += "), min ";
+    title += labelNumber(q.envelope.min.value * value.factor) + " " + value.unit;
+    title += " (at ";
+    title += place(q.envelope.min.lead);
+    title += ")";
+    body << "  set title " << gnuplotText(title) << "\n";
     body << "  plot $line" << i << " using 1:2 with lines linewidth 2 " << colour(0)
          << " title " << gnuplotText("per unit load") << ", \\\n       $max" << i
          << " using 1:2 with points pointtype 7 pointsize 1.5 " << colour(1) << " title "

@@ -114,13 +114,22 @@ void drawBaseMotionChart(const std::filesystem::path& dir, const CsvTable& table
        << panelLayout(2, 1, caption, width, height, 90 + keyWidth(names)) << "  set grid\n"
        << "  set logscale y\n  set format y '10^{%L}'\n"
        << "  set key outside right top\n  set xrange [*:*] noextend\n";
+  // "NAME [UNIT]" with the unit of the table's column (the user's, inUnits). Appended piece
+  // by piece: `"..." + temporary` trips GCC 12's false -Wrestrict.
+  const auto label = [&](const std::string& name, const std::string& column) {
+    std::string text = name;
+    text += " [";
+    text += table.columns().at(std::size_t(table.column(column) - 1)).unit;
+    text += "]";
+    return text;
+  };
   for (int panel = 0; panel < 2; ++panel) {
     const std::string prefix = panel == 0 ? "T_" : "relative_";
     body << "  set ylabel "
-         << gnuplotText(panel == 0 ? "transmissibility |a_abs| / |a_g| [-]"
-                                   : "relative displacement |u| [m]")
+         << gnuplotText(panel == 0 ? std::string("transmissibility |a_abs| / |a_g| [-]")
+                                   : label("relative displacement |u|", prefix + names.front()))
          << "\n";
-    if (panel == 1) body << "  set xlabel " << gnuplotText("frequency [Hz]") << "\n";
+    if (panel == 1) body << "  set xlabel " << gnuplotText(label("frequency", "frequency")) << "\n";
     body << "  plot ";
     for (std::size_t i = 0; i < names.size(); ++i)
       body << (i ? ", \\\n       " : "") << gnuplotFile(file) << " skip 1 using "

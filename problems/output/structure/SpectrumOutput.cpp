@@ -70,19 +70,24 @@ CsvTable displacementsTable(const ResponseSpectrumResult& r, const Model& model,
   return t;
 }
 
-CsvTable reactionsTable(const ResponseSpectrumResult& r, const std::string& stem) {
+/// Forces and moments share the value columns: each row names its unit (the force unit, or
+/// force x length for a moment, of `units`), its numbers converted into it here.
+CsvTable reactionsTable(const ResponseSpectrumResult& r, const std::string& stem,
+                        const OutputUnits& units) {
   std::vector<CsvColumn> columns{{"support", ""}, {"dof", ""}, {"unit", ""}, {"combined", ""}};
   for (int d : r.directions) columns.push_back({std::string("from_") + directionName(d), ""});
   CsvTable t(stem + "_spectrum_reactions.csv", columns);
+  const OutputUnits::Shown force = units.of("N"), moment = units.of("N m");
   for (std::size_t i = 0; i < r.combined.reactions.size(); ++i) {
     const ReactionComponent& c = r.combined.reactions[i];
+    const OutputUnits::Shown& shown = isRotation(c.dof) ? moment : force;
     std::vector<CsvCell> row;  // filled in place: GCC 12 misreads a braced list of variants
     row.reserve(columns.size());
     row.emplace_back(c.support);
     row.emplace_back(std::string(dofName(c.dof)));
-    row.emplace_back(std::string(isRotation(c.dof) ? "N m" : "N"));
-    row.emplace_back(c.value);
-    for (const PeakResponse& p : r.perDirection) row.push_back(p.reactions[i].value);
+    row.emplace_back(shown.unit);
+    row.emplace_back(c.value * shown.factor);
+    for (const PeakResponse& p : r.perDirection) row.push_back(p.reactions[i].value * shown.factor);
     t.addRow(std::move(row));
   }
   return t;
@@ -142,7 +147,9 @@ Json peakJson(const PeakResponse& p, const Model& model) {
 
 /// Sa against T as a gnuplot data block: over a table's own range, or an EN 1998-1 shape up to
 /// 4 s (its range) or past the longest mode; its corners sampled exactly.
-std::string spectrumCurve(const ResponseSpectrumResult& r) {
+/// The spectrum's curve and the modes' (T, Sa), T shown as `period` says and Sa as `sa`.
+std::string spectrumCurve(const ResponseSpectrumResult& r, const OutputUnits::Shown& period,
+                          const OutputUnits::Shown& sa) {
   std::vector<double> periods = r.spectrum.breakPeriods();
   double last = periods.back();
   if (!r.spectrum.isTable()) {
@@ -155,7 +162,8 @@ std::string spectrumCurve(const ResponseSpectrumResult& r) {
   std::ostringstream data;
   data << "$spectrum << EOD\n";
   for (double T : periods)
-    if (T <= last) data << number(T) << "," << number(r.spectrum.at(T)) << "\n";
+    if (T <= last)
+      data << number(T * period.factor) << "," << number(r.spectrum.at(T) * sa.factor) << "\n";
   data << "EOD\n$modes << EOD\n";
   // Modes within 1 % of the axis of each other share one label ("1,2,3"), at the first.
   const std::size_t n = r.modal.modes.size();
@@ -169,8 +177,9 @@ std::string spectrumCurve(const ResponseSpectrumResult& r) {
       ++end;
     }
     for (std::size_t k = j; k < end; ++k)
-      data << number(periodOf(r.modal.modes[k])) << "," << number(r.spectralAcceleration[k])
-           << ",\"" << (k == j ? label : "") << "\"\n";
+      data << number(periodOf(r.modal.modes[k]) * period.factor) << ","
+           << number(r.spectralAcceleration[k] * sa.factor) << ",\"" << (k == j ? label : "")
+           << "\"\n";
     j = end;
   }
   data << "EOD\n";
@@ -182,9 +191,9 @@ std::string spectrumCurve(const ResponseSpectrumResult& r) {
 std::string spectrumVtu(const std::string& stem) { return stem + "_spectrum.vtu"; }
 
 std::vector<CsvTable> spectrumTables(const ResponseSpectrumResult& r, const Model& model,
-                                     const std::string& stem) {
+                                     const std::string& stem, const OutputUnits& units) {
   std::vector<CsvTable> tables{modesTable(r, stem), displacementsTable(r, model, stem)};
-  if (!r.combined.reactions.empty()) tables.push_back(reactionsTable(r, stem));
+  if (!r.combined.reactions.empty()) tables.push_back(reactionsTable(r, stem, units));
   if (!r.combined.stations.empty()) tables.push_back(membersTable(r, model, stem));
   return tables;
 }
@@ -235,16 +244,17 @@ Json spectrumJson(const std::string& type, const std::string& name,
 
 void writeSpectrumFiles(const std::filesystem::path& dir, const ResponseSpectrumResult& r,
                         const Model& model, const std::string& stem, const std::string& caption,
-                        bool charts) {
+                        bool charts, const OutputUnits& units) {
   writeFrameVtu(dir / spectrumVtu(stem), model, {0, r.combined.displacement});
   if (!charts) return;
+  const OutputUnits::Shown period = units.of("s"), sa = units.of("m/s^2");
   std::ostringstream body;
   body << "  set encoding utf8\n"
        << "  set title " << captionText(caption + "\n" + r.spectrum.describe()) << "\n"
        << "  set grid\n"
        << "  set key top right\n"
-       << "  set xlabel " << gnuplotText("period T [s]") << "\n"
-       << "  set ylabel " << gnuplotText("spectral acceleration Sa [m/s^2]") << "\n"
+       << "  set xlabel " << gnuplotText("period T [" + period.unit + "]") << "\n"
+       << "  set ylabel " << gnuplotText("spectral acceleration Sa [" + sa.unit + "]") << "\n"
        << "  set xrange [0:*]\n  set yrange [0:*]\n"
        << "  plot $spectrum using 1:2 with lines linewidth 2 " << colour(0)
        << " title 'spectrum', \\\n"
@@ -252,7 +262,7 @@ void writeSpectrumFiles(const std::filesystem::path& dir, const ResponseSpectrum
        << " title 'modes', \\\n"
        << "       $modes using 1:2:3 with labels offset 0,1 notitle\n";
   drawChart(dir, {stem + "_spectrum", "Response spectrum and the modes' periods", 900, 600,
-                  body.str(), spectrumCurve(r)});
+                  body.str(), spectrumCurve(r, period, sa)});
 }
 
 }  // namespace beamrotor

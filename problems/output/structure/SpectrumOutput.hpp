@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fem/modal/ResponseSpectrum.hpp"
+#include "problems/deck/OutputUnits.hpp"
 #include "problems/output/JsonWriter.hpp"
 #include "problems/output/files/CsvTable.hpp"
 
@@ -16,19 +17,21 @@ namespace beamrotor {
 
 /// <stem>_spectrum_modes.csv, <stem>_spectrum_displacements.csv,
 /// <stem>_spectrum_reactions.csv (with supports) and <stem>_spectrum_members.csv (with line
-/// elements), each table titled by its file name.
+/// elements), each table titled by its file name. The reactions table's rows are in `units`
+/// already (each names its unit: forces and moments share its columns); the other tables'
+/// columns are in SI, each named, for inUnits.
 std::vector<CsvTable> spectrumTables(const ResponseSpectrumResult& r, const Model& model,
-                                     const std::string& stem);
+                                     const std::string& stem, const OutputUnits& units);
 
 /// The analysis' results.json entry.
 Json spectrumJson(const std::string& type, const std::string& name,
                   const ResponseSpectrumResult& r, const Model& model);
 
-/// <stem>_spectrum.png: Sa against the period with each mode's (T, Sa) marked; and
-/// <stem>_spectrum.vtu, the combined peak displacements.
+/// <stem>_spectrum.png: Sa against the period with each mode's (T, Sa) marked, in `units`;
+/// and <stem>_spectrum.vtu, the combined peak displacements (SI).
 void writeSpectrumFiles(const std::filesystem::path& dir, const ResponseSpectrumResult& r,
                         const Model& model, const std::string& stem, const std::string& caption,
-                        bool charts);
+                        bool charts, const OutputUnits& units);
 
 /// The name of <stem>'s VTK file of combined peak displacements.
 std::string spectrumVtu(const std::string& stem);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -177,6 +178,25 @@ TEST_SUITE("output units") {
     // The tip against P L^3 / (3 EI): Hermite elements are exact at the nodes (round-off).
     CHECK(uyMm.back() == doctest::Approx(1000 * c.deflection(c.L)).epsilon(1e-9));
     CHECK(uyMm.back() == doctest::Approx(-1000 * c.P * std::pow(c.L, 3) / (3 * c.EI())).epsilon(1e-9));
+    // The reactions table: its force and moment columns too (the root holds P and P L; N m
+    // and kN mm are the same size).
+    const CsvTable& ra = tableOf(si, 0, "tip_reactions.csv");
+    const CsvTable& rb = tableOf(shown, 0, "tip_reactions.csv");
+    CHECK(unitOf(rb, "force") == "kN");
+    CHECK(unitOf(rb, "moment") == "kN mm");
+    const auto forceSI = ra.numbers("force"), forceKn = rb.numbers("force");
+    const auto momentSI = ra.numbers("moment"), momentShown = rb.numbers("moment");
+    REQUIRE(forceSI.size() == forceKn.size());
+    bool loaded = false;
+    for (std::size_t i = 0; i < forceSI.size(); ++i) {
+      if (std::isnan(forceSI[i])) continue;  // a moment's row
+      CHECK(forceKn[i] == doctest::Approx(forceSI[i] / 1000).epsilon(1e-15));
+      loaded = loaded || std::abs(std::abs(forceKn[i]) - c.P / 1000) < 1e-9;
+    }
+    CHECK(loaded);
+    for (std::size_t i = 0; i < momentSI.size(); ++i)
+      if (!std::isnan(momentSI[i]))
+        CHECK(std::abs(momentShown[i]) == doctest::Approx(c.P * c.L).epsilon(1e-9));
     // results.json stays SI: the same document either way.
     CHECK(shown.doc.dump() == si.doc.dump());
   }
@@ -581,6 +601,169 @@ TEST_SUITE("output units (every place)") {
     CHECK(b[0] == 10);
     CHECK(b[1] == a[1]);  // phi_max in rad either way
     CHECK(b[2] == doctest::Approx(a[2] / 1000).epsilon(1e-5));  // six printed digits
+    fs::remove_all(dir);
+  }
+}
+
+TEST_SUITE("output units (design studies, tables with a unit per row)") {
+  TEST_CASE("a design study: its summary in the units, study.csv in the units it names") {
+    const fs::path dir = scratchDir("units-study");
+    const auto study = [&](const std::string& out, const std::vector<std::string>& more) {
+      std::vector<std::string> arguments{
+          "study",    "problems/pump_rod.yaml", "--sweep", "eta=0:0.4:4", "--sweep",
+          "w0=0.5e-3:1.5e-3:2", "--output", "stress max <= 60 MPa", "--output",
+          "reaction left uy", "--out", (dir / out).string()};
+      arguments.insert(arguments.end(), more.begin(), more.end());
+      return runBeamrotor(arguments);
+    };
+    const ProcessResult si = study("si", {});
+    const ProcessResult mm = study("mm", {"--units", "length=mm,force=kN,stress=MPa"});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    REQUIRE_MESSAGE(mm.exitCode == 0, mm.err);
+    // study.csv: the same bytes whatever the units (a resumed study continues it), each
+    // column's unit named on its units line.
+    CHECK(fileContents(dir / "mm" / "study.csv") == fileContents(dir / "si" / "study.csv"));
+    const WrittenCsv table = writtenCsv(dir / "mm" / "study.csv");
+    CHECK(unitEntry(table, "eta") == "m");
+    CHECK(unitEntry(table, "w0") == "m");
+    CHECK(unitEntry(table, "stress max") == "Pa");
+    CHECK(unitEntry(table, "reaction left uy") == "N");
+    CHECK(unitEntry(table, "M1 published") == "N m");
+    CHECK(unitEntry(table, "M1 published pass") == "");
+    CHECK(unitEntry(table, "middle rotation closed form") == "rad");
+    CHECK(unitEntry(table, "status") == "");
+    // summary.json: the same document, its numbers in the columns' units, which it names.
+    const nlohmann::json summary = readJson(dir / "mm" / "summary.json");
+    CHECK(summary == readJson(dir / "si" / "summary.json"));
+    CHECK(summary["parameters"][0]["unit"] == "m");
+    const nlohmann::json& stress = summary["outputs"][0];
+    const nlohmann::json& force = summary["outputs"][1];
+    CHECK(stress["unit"] == "Pa");
+    CHECK(force["unit"] == "N");
+    CHECK(summary["checks"][0]["unit"] == "N m");
+    // The printed summary: the SI figures times the units' factors, each unit named.
+    const std::string stressLine = lineWith(mm.out, "  stress max");
+    CAPTURE(stressLine);
+    CHECK(stressLine.find("min " + six(stress["min"].get<double>() * 1e-6) + " MPa") !=
+          std::string::npos);
+    CHECK(stressLine.find("sd " + six(stress["sd"].get<double>() * 1e-6) + " MPa") !=
+          std::string::npos);
+    CHECK(stressLine.find("above 60 MPa") != std::string::npos);
+    CHECK(lineWith(si.out, "  stress max").find("above 6e+07 Pa") != std::string::npos);
+    const std::string forceLine = lineWith(mm.out, "  reaction left uy:");
+    CAPTURE(forceLine);
+    CHECK(forceLine.find("max " + six(force["max"].get<double>() / 1000) + " kN") !=
+          std::string::npos);
+    const nlohmann::json& worst = summary["worst_point"]["parameters"];
+    const double eta = worst["eta"].get<double>(), w0 = worst["w0"].get<double>();
+    CHECK(lineWith(mm.out, "worst point").find("eta = " + six(eta * 1000) + " mm, w0 = " +
+                                               six(w0 * 1000) + " mm") != std::string::npos);
+    CHECK(lineWith(si.out, "worst point").find("eta = " + six(eta) + " m, w0 = " + six(w0) +
+                                               " m") != std::string::npos);
+    // The worst point's results directory in the units.
+    const WrittenCsv fields = writtenCsv(dir / "mm" / "worst" / "bending_fields.csv");
+    CHECK(unitEntry(fields, "x") == "mm");
+    CHECK(unitEntry(fields, "Vy") == "kN");
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("response spectrum: the reactions table's rows in the force and moment units") {
+    const fs::path dir = scratchDir("units-spectrum");
+    const ProcessResult si = runBeamrotor({"solve", "problems/machine_base_frame.yaml",
+                                           "--charts", "none", "--out", (dir / "si").string()});
+    const ProcessResult kn =
+        runBeamrotor({"solve", "problems/machine_base_frame.yaml", "--charts", "none",
+                      "--units", "force=kN", "--out", (dir / "kn").string()});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    REQUIRE_MESSAGE(kn.exitCode == 0, kn.err);
+    const auto a = csvCells(dir / "si" / "quake_spectrum_reactions.csv");
+    const auto b = csvCells(dir / "kn" / "quake_spectrum_reactions.csv");
+    REQUIRE(a.size() == b.size());
+    REQUIRE(a.size() > 2);
+    const std::size_t unit = csvColumn(b[0], "unit"), combined = csvColumn(b[0], "combined");
+    int forces = 0, moments = 0;
+    for (std::size_t row = 1; row < b.size(); ++row) {
+      CAPTURE(row);
+      const bool moment = a[row][unit] == "N m";
+      CHECK(a[row][unit] == (moment ? "N m" : "N"));
+      CHECK(b[row][unit] == (moment ? "kN m" : "kN"));
+      (moment ? moments : forces)++;
+      // Every value column: the SI value / 1000 (to the round-off of one division).
+      for (std::size_t column = combined; column < b[row].size(); ++column)
+        CHECK(std::stod(b[row][column]) ==
+              doctest::Approx(std::stod(a[row][column]) / 1000).epsilon(1e-15));
+    }
+    CHECK(forces > 0);
+    CHECK(moments > 0);
+    // The summary: results.json's SI peaks / 1000, in kN and kN m.
+    const nlohmann::json doc = readJson(dir / "kn" / "results.json");
+    const nlohmann::json& peaks = doc["analyses"][0]["combined"];
+    CHECK(lineWith(kn.out, "combined peaks").find(
+              "x " + six(peaks["base_force_n"]["x"].get<double>() / 1000) + " kN") !=
+          std::string::npos);
+    const double a0 = peaks["reactions"][0]["value"].get<double>();
+    CHECK(lineWith(kn.out, "reaction A0 ux").find(six(a0 / 1000) + " kN") != std::string::npos);
+    CHECK(lineWith(kn.out, "reaction A0 rx").find(" kN m") != std::string::npos);
+    CHECK(lineWith(si.out, "reaction A0 ux").find(six(a0) + " N") != std::string::npos);
+    CHECK(lineWith(kn.out, "base force max").find(" kN") != std::string::npos);
+    fs::remove_all(dir);
+  }
+
+  TEST_CASE("moving load: the envelopes table's rows in their quantities' units") {
+    const fs::path dir = scratchDir("units-moving");
+    const ProcessResult si = runBeamrotor({"solve", "problems/crane_girder.yaml", "--charts",
+                                           "none", "--out", (dir / "si").string()});
+    const ProcessResult mm =
+        runBeamrotor({"solve", "problems/crane_girder.yaml", "--charts", "svg", "--units",
+                      "force=kN,length=mm", "--out", (dir / "mm").string()});
+    REQUIRE_MESSAGE(si.exitCode == 0, si.err);
+    REQUIRE_MESSAGE(mm.exitCode == 0, mm.err);
+    fs::path file;
+    for (const auto& entry : fs::directory_iterator(dir / "mm"))
+      if (entry.path().filename().string().ends_with("_envelopes.csv")) file = entry.path();
+    REQUIRE_FALSE(file.empty());
+    const auto a = csvCells(dir / "si" / file.filename());
+    const auto b = csvCells(file);
+    REQUIRE(a.size() == b.size());
+    const std::size_t unit = csvColumn(b[0], "unit");
+    // N -> kN: / 1000; N m -> kN mm: x 1; m -> mm: x 1000; rad stays.
+    const std::map<std::string, std::pair<std::string, double>> expected{
+        {"N", {"kN", 1e-3}}, {"N m", {"kN mm", 1}}, {"m", {"mm", 1e3}}, {"rad", {"rad", 1}}};
+    for (std::size_t row = 1; row < b.size(); ++row) {
+      CAPTURE(row);
+      const auto& [shown, factor] = expected.at(a[row][unit]);
+      CHECK(b[row][unit] == shown);
+      for (const char* column : {"max", "min"}) {
+        const std::size_t k = csvColumn(b[0], column);
+        CHECK(std::stod(b[row][k]) ==
+              doctest::Approx(std::stod(a[row][k]) * factor).epsilon(1e-15));
+      }
+      // The first wheel's place is a length column: mm on the units line.
+      const std::size_t lead = csvColumn(b[0], "first_wheel_at_max");
+      CHECK(std::stod(b[row][lead]) == doctest::Approx(std::stod(a[row][lead]) * 1000).epsilon(1e-15));
+    }
+    // The summary and the chart: results.json's SI envelope times the factors. The textbook
+    // figures: the largest left reaction 101.25 kN with the first wheel at 2.5 m.
+    const nlohmann::json doc = readJson(dir / "mm" / "results.json");
+    const nlohmann::json& reaction = doc["analyses"][0]["quantities"][1];
+    REQUIRE(reaction["quantity"] == "reaction left uy");
+    const double most = reaction["max"]["value"].get<double>();
+    const double at = reaction["max"]["first_wheel_at"].get<double>();
+    CHECK(most == doctest::Approx(101250).epsilon(1e-12));
+    const std::string line = lineWith(mm.out, "reaction left uy: max");
+    CAPTURE(line);
+    CHECK(line.find("max " + six(most / 1000) + " kN (first wheel at " + six(at * 1000) +
+                    " mm)") != std::string::npos);
+    CHECK(lineWith(mm.out, "wheel(s) along").find(" 8000 mm of path") != std::string::npos);
+    CHECK(lineWith(si.out, "reaction left uy: max").find("max 101250 N (first wheel at 2.5 m)") !=
+          std::string::npos);
+    const std::string chart = readText(dir / "mm" / "trolley_influence.gp");
+    CHECK(chart.find("unit load at s along the path [mm]") != std::string::npos);
+    CHECK(chart.find("reaction left uy [-]") != std::string::npos);  // N per N
+    CHECK(chart.find("displacement mid uy [mm/kN]") != std::string::npos);
+    CHECK(chart.find("max " + labelNumber(most / 1000) + " kN (first wheel at 2500 mm)") !=
+          std::string::npos);
+    CHECK(chart.find("set xrange [0:8000]") != std::string::npos);
     fs::remove_all(dir);
   }
 }

@@ -22,7 +22,7 @@ fail() { echo "$1"; status=1; }
 # Waits (at most 60 s) until the study writing $1 has 20 rows; fails otherwise.
 await_rows() {
   for _ in $(seq 6000); do
-    rows=$(cat "$1".tmp-*/study.csv 2>/dev/null | wc -l)
+    rows=$(cat "$1".tmp-*/study.csv 2>/dev/null | grep -vc '^#')
     [ "$rows" -gt 20 ] && return 0
     sleep 0.01
   done
@@ -56,7 +56,7 @@ partial_results() {
   [ "$(key "$summary" stopped_by)" = "SIGTERM" ] || fail "$1: not stopped by SIGTERM"
   [ "$(key "$summary" ranks)" = "2" ] || fail "$1: summary does not say 2 ranks"
   grep -q "ranks: 2" "$2.txt" || fail "$1: console does not state the rank count"
-  echo "$1: $(($(wc -l <"$2/study.csv") - 1)) rows kept"
+  echo "$1: $(($(grep -vc '^#' "$2/study.csv") - 1)) rows kept"
 }
 
 # 1. kill -9 of rank 1.

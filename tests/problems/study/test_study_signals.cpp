@@ -36,10 +36,11 @@ fs::path temporaryOf(const fs::path& root) {
   return {};
 }
 
+/// The lines of a table other than its units line (a comment): the names and the rows.
 long long lineCount(const fs::path& file) {
   std::ifstream in(file);
   long long n = 0;
-  for (std::string line; std::getline(in, line);) ++n;
+  for (std::string line; std::getline(in, line);) n += line.rfind('#', 0) != 0;
   return n;
 }
 

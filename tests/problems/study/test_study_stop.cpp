@@ -145,6 +145,38 @@ TEST_SUITE("study stop and resume") {
     fs::remove_all(scratch);
   }
 
+  TEST_CASE("--resume with output units (or others than the stopped run's): the same table") {
+    // study.csv holds the columns' own units, which its units line names: the output units
+    // change the summary and the worst point's files only, so a study stopped in one choice
+    // of units and resumed in another (or in none) gives the uninterrupted table.
+    const fs::path scratch = scratchDir("study-resume-units");
+    DesignStudyRequest whole = strokeAndWear(scratch / "whole");
+    const DesignStudyOutcome reference = runDesignStudy(whole);
+    REQUIRE_FALSE(reference.partial());
+    for (const char* resumedIn : {"length=mm,force=kN", ""}) {
+      CAPTURE(resumedIn);
+      DesignStudyRequest r = strokeAndWear(scratch / (std::string("part-") + resumedIn));
+      r.units = parseOutputUnits("length=mm,stress=MPa");
+      const DesignStudyOutcome part = runUntilSignal(r, 40, SIGTERM);
+      REQUIRE(part.partial());
+      r.units = *resumedIn ? parseOutputUnits(resumedIn) : OutputUnits();
+      r.resumeDir = r.outDir;
+      r.outDir.clear();
+      const DesignStudyOutcome resumed = runDesignStudy(r);
+      CHECK_FALSE(resumed.partial());
+      CHECK(resumed.resumed == 40);
+      CHECK(fileContents(resumed.dir / "study.csv") == fileContents(reference.dir / "study.csv"));
+      CHECK(fileContents(resumed.dir / "summary.json") ==
+            fileContents(reference.dir / "summary.json"));
+      // The table reads back as written: a names line, a units line, then the rows.
+      const auto rows = csvCells(resumed.dir / "study.csv");
+      CHECK(rows.size() == 1 + 231);
+      CHECK(fileContents(resumed.dir / "study.csv").find("\n# units: ,m,m,") !=
+            std::string::npos);
+    }
+    fs::remove_all(scratch);
+  }
+
   TEST_CASE("--resume of a stopped study writes the uninterrupted table byte for byte") {
     const fs::path scratch = scratchDir("study-resume");
     // 81 x 61 points: more than threads may solve ahead of the table (4096 rows, see
@@ -255,7 +287,7 @@ TEST_SUITE("study command line") {
     CHECK(p.exitCode == 1);
     CHECK(p.err.find("no point succeeded (2 failed") != std::string::npos);
     CHECK(p.out.find("worst/") == std::string::npos);
-    CHECK(p.out.find("point 0 (eta = 2) failed") != std::string::npos);
+    CHECK(p.out.find("point 0 (eta = 2 m) failed") != std::string::npos);  // its unit named
     CHECK_FALSE(fs::exists(scratch / "s" / "worst"));
     CHECK(fs::exists(scratch / "s" / "study.csv"));  // the rows say why, still
     fs::remove_all(scratch);
