@@ -72,7 +72,8 @@ class PadFilm {
     auto sOf = [&](double t) { return low + t * (high - low); };
     auto moment = [&](double t) { return solve(rho, sOf(t), false).force[1]; };
     if (lastRoot_)
-      if (const std::optional<double> s = newtonTilt(rho, *lastRoot_, low, high)) return lastRoot_ = s;
+      if (const std::optional<double> s = newtonTilt(rho, *lastRoot_, low, high))
+        return lastRoot_ = s;
     // Near the last root first (the Newton steps move the journal little): a bracket of
     // +-0.02 around it, when the moment changes sign there.
     if (lastRoot_) {
