@@ -306,9 +306,13 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
       repeated[l] = isRepeated(t.at.modes, c);
     }
     previous = std::move(next);
-    // 3. A growing mode no line follows.
+    // 3. A growing mode no line follows. With whirl-dependent bearings a candidate no line
+    //    follows keeps the synchronous set's eigenvalue (WhirlScope), which is not the model's:
+    //    its growth says nothing (a massless shaft's numerically infinite eigenvalues, for one).
+    const bool ownWhirl = t.at.coefficients.atOwnWhirl;
     for (std::size_t c = 0; c < t.at.modes.size() && !result.untracked; ++c)
-      if (!followed[c] && growthRate(t.at.modes[c]) > 0) {
+      if (!followed[c] && !(ownWhirl && t.at.modes[c].whirlIterations == 0) &&
+          growthRate(t.at.modes[c]) > 0) {
         const RotorMode& m = t.at.modes[c];
         result.untracked = UntrackedGrowth{s, m.dampedFrequencyHz, m.logDecrement, m.whirl};
       }
