@@ -33,7 +33,10 @@ class PadFilm {
     return {-offset_ * arc_, arc_, -(preload_ + rho), -s};
   }
   FilmSolution solve(double rho, double s, bool withCoefficients) {
-    return solveArcFilm(shape(rho, s), ld_, grid_, {}, withCoefficients, &cavity_);
+    if (withCoefficients && last_ && last_->rho == rho && last_->s == s) return last_->film;
+    FilmSolution f = solveArcFilm(shape(rho, s), ld_, grid_, {}, withCoefficients, &cavity_);
+    if (withCoefficients) last_ = Solved{rho, s, f};
+    return f;
   }
   /// The thinnest film (/ c_p) over the pad's nodes.
   double thinnest(double rho, double s) const {
@@ -68,6 +71,9 @@ class PadFilm {
     }
     auto sOf = [&](double t) { return low + t * (high - low); };
     auto moment = [&](double t) { return solve(rho, sOf(t), false).force[1]; };
+    if (lastRoot_)
+      if (const std::optional<double> s = newtonTilt(rho, *lastRoot_, low, high))
+        return lastRoot_ = s;
     // Near the last root first (the Newton steps move the journal little): a bracket of
     // +-0.02 around it, when the moment changes sign there.
     if (lastRoot_) {
@@ -97,6 +103,33 @@ class PadFilm {
   }
 
  private:
+  /// Newton on the pad's moment f . t from s, its slope the film's own stiffness
+  /// (d(f . t)/ds = -K_tt, the tilt moving the film as the journal does along t): one film a
+  /// step, against some eight for the bracketed root. The tilt whose step falls below 1e-13 of
+  /// the bracket (the bracketed root's tolerance); none when a step leaves (low, high), the
+  /// slope is not negative, or ten steps do not settle (the caller then brackets).
+  std::optional<double> newtonTilt(double rho, double s, double low, double high) {
+    constexpr double kTiltTolerance = 1e-13;
+    constexpr int kNewtonSteps = 10;
+    for (int step = 0; step < kNewtonSteps; ++step) {
+      if (!(s > low && s < high)) return std::nullopt;
+      const FilmSolution f = solve(rho, s, true);
+      const double slope = -f.stiffness[1][1];
+      if (!(slope < 0)) return std::nullopt;
+      const double ds = -f.force[1] / slope;
+      if (std::abs(ds) <= kTiltTolerance * (high - low)) return s;
+      s += ds;
+    }
+    return std::nullopt;
+  }
+
+  /// The last film solved with its coefficients, and where: balance() asks for the one
+  /// newtonTilt ended on.
+  struct Solved {
+    double rho, s;
+    FilmSolution film;
+  };
+  std::optional<Solved> last_;
   double arc_, offset_, preload_, ld_;
   ReynoldsGrid grid_;
   std::vector<char> cavity_;  ///< the last film's pressurised nodes, the next one's first guess

@@ -42,7 +42,9 @@ LineFollower::LineFollower(const Model& model, const CampbellResult& campbell,
 
 RotorModesResult LineFollower::solve(double speed) {
   ++evaluations_;
-  RotorModesResult at = solveRotorModes(system_, speed, options_, solver_, false);
+  // Once the lines are anchored, only the candidates they follow are found at their own
+  // eigenvalue (whirl-dependent bearings); the anchoring solve finds every one.
+  RotorModesResult at = solveRotorModes(system_, speed, options_, solver_, false, {&anchor_});
   if (int(at.modes.size()) < lines_)
     throw SolveError("Campbell diagram: only " + std::to_string(at.modes.size()) +
                      " modes found at " + std::to_string(speed) + " rad/s, " +

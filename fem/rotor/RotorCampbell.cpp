@@ -125,10 +125,12 @@ class SweepSolver {
   SweepSolver(const Model& model, const RotorOptions& options, CampbellResult& result)
       : system_(model, options.damping), options_(options), result_(result) {}
 
-  RotorModesResult solve(double speed, int candidates) {
+  /// `scope`: the lines' vectors at the last speed (or, at the first, how many lines), so
+  /// that only the candidates the lines follow are found at their own eigenvalue.
+  RotorModesResult solve(double speed, int candidates, WhirlScope scope) {
     RotorOptions o = options_;
     o.modes = candidates;
-    RotorModesResult at = solveRotorModes(system_, speed, o, solver_, false);
+    RotorModesResult at = solveRotorModes(system_, speed, o, solver_, false, scope);
     result_.time.assembly += at.time.assembly;
     result_.time.solve += at.time.solve;
     result_.size = at.size;
@@ -163,7 +165,7 @@ TrackedSpeed sweepLocally(SweepSolver& solver, double from, double to, Eigen::Ma
   std::vector<bool> seen(lines, false);
   for (int k = 1; k <= kLocalSteps; ++k) {
     const double speed = from + (to - from) * k / kLocalSteps;
-    t.at = solver.solve(speed, candidates);
+    t.at = solver.solve(speed, candidates, {&vectors});
     t.pick = matchByMac(vectors, t.at.vectors);
     Eigen::MatrixXcd next(t.at.vectors.rows(), Eigen::Index(lines));
     for (std::size_t l = 0; l < lines; ++l) {
@@ -258,7 +260,8 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
     // 1. The first speed defines the lines (nearest the shift first); later speeds follow
     //    each line to the candidate whose shape correlates best with its last one.
     solver.atSweepIndex(s);
-    TrackedSpeed t{solver.solve(speeds[s], candidates), {}};
+    const WhirlScope scope = s == 0 ? WhirlScope{nullptr, lines} : WhirlScope{&previous};
+    TrackedSpeed t{solver.solve(speeds[s], candidates, scope), {}};
     if (s == 0) {
       for (int l = 0; l < lines; ++l) t.pick.push_back({l, 1.0});
       candidates = candidatesAtGap(t.at.modes, lines, options.shift);
@@ -303,9 +306,13 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
       repeated[l] = isRepeated(t.at.modes, c);
     }
     previous = std::move(next);
-    // 3. A growing mode no line follows.
+    // 3. A growing mode no line follows. With whirl-dependent bearings a candidate no line
+    //    follows keeps the synchronous set's eigenvalue (WhirlScope), which is not the model's:
+    //    its growth says nothing (a massless shaft's numerically infinite eigenvalues, for one).
+    const bool ownWhirl = t.at.coefficients.atOwnWhirl;
     for (std::size_t c = 0; c < t.at.modes.size() && !result.untracked; ++c)
-      if (!followed[c] && growthRate(t.at.modes[c]) > 0) {
+      if (!followed[c] && !(ownWhirl && t.at.modes[c].whirlIterations == 0) &&
+          growthRate(t.at.modes[c]) > 0) {
         const RotorMode& m = t.at.modes[c];
         result.untracked = UntrackedGrowth{s, m.dampedFrequencyHz, m.logDecrement, m.whirl};
       }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fem/rotor/DegenerateModes.hpp"
+#include "fem/rotor/RotorCampbell.hpp"
 #include "fem/rotor/WhirlIteration.hpp"
 #include "fem/timing/Stopwatch.hpp"
 
@@ -109,34 +110,64 @@ RotorMode describe(std::complex<double> lambda, const Eigen::VectorXcd& q, const
 }
 
 /// Every mode found again at its own eigenvalue (WhirlIteration.hpp); the eigen-solutions
-/// each took. A mode that does not settle, or settles on a mode found before it (the same
-/// eigenvalue and shape: the synchronous set's overdamped modes may lead there), keeps its
-/// synchronous eigenvalue and is recorded in `used.unsettled`.
+/// each took. Each mode is tracked from its start (the synchronous set's eigenpair) to its end,
+/// and the ends are compared with the starts: a mode keeps its synchronous eigenvalue, and is
+/// recorded in `used.unsettled`, when it did not settle, when its shape at the end is no longer
+/// the one it started with (MAC below kKeptShape), or when it ends where another mode ends
+/// although the two started apart (two starts cannot both be one eigenvalue's mode: the one
+/// whose end keeps its start's shape less yields).
 std::vector<int> modesAtOwnWhirl(const RotorSystem& system, double speed,
                                  const RotorOptions& options, QuadraticEigenSolver& solver,
                                  std::vector<std::complex<double>>& lambdas,
-                                 Eigen::MatrixXcd& vectors, WhirlCoefficientsUsed& used) {
-  // A settled mode this close (relative) to an earlier one, with shapes this alike, is it.
-  constexpr double kSameEigenvalue = 1e-8, kSameShape = 0.99;
+                                 Eigen::MatrixXcd& vectors, WhirlScope scope,
+                                 WhirlCoefficientsUsed& used) {
+  // Ends this close (relative) are one eigenvalue; starts farther apart than this were two
+  // (a repeated eigenvalue's members start within kRepeatedEigenvalue of each other).
+  constexpr double kSameEigenvalue = 1e-8, kApart = 1e-6;
+  // A mode's end whose shape correlates less than this with its start has become another mode.
+  // Measured on a shaft on two four-pad bearings (test_whirl_dependent_bearings.cpp): the
+  // modes that settle on their own end at MAC >= 0.996 against their start; its conical mode,
+  // which lands on the bounce pair, at 3e-30. An end that keeps more than this but lands on
+  // another mode is caught by the comparison of the ends.
+  constexpr double kKeptShape = 0.5;
   used.atOwnWhirl = true;
-  std::vector<int> iterations(lambdas.size(), 0), settled;
-  for (int m = 0; m < int(lambdas.size()); ++m) {
-    const WhirlMode w =
-        modeAtOwnWhirl(system, speed, lambdas[m], vectors.col(m), solver, options.method);
-    iterations[m] = w.iterations;
-    used.mostIterations = std::max(used.mostIterations, w.iterations);
-    bool taken = false;
-    for (int j : settled)
-      taken = taken || (std::abs(w.eigenvalue - lambdas[j]) <=
-                            kSameEigenvalue * std::abs(lambdas[j]) &&
-                        std::norm(vectors.col(j).dot(w.vector)) > kSameShape);
-    if (!w.converged || taken) {
+  const int n = int(lambdas.size());
+  std::vector<int> iterations(n, 0);
+  std::vector<WhirlMode> ends;
+  std::vector<bool> kept(n, false), asked(n, true);
+  if (scope.follow && scope.follow->cols() > 0) {
+    asked.assign(n, false);
+    for (const auto& [candidate, mac] : matchByMac(*scope.follow, vectors)) asked[candidate] = true;
+  } else if (scope.first >= 0) {
+    for (int m = 0; m < n; ++m) asked[m] = m < scope.first;
+  }
+  for (int m = 0; m < n; ++m) {
+    if (!asked[m]) {
+      ends.push_back({lambdas[m], vectors.col(m), 0, false});
+      continue;
+    }
+    ends.push_back(
+        modeAtOwnWhirl(system, speed, lambdas[m], vectors.col(m), solver, options.method));
+    iterations[m] = ends[m].iterations;
+    used.mostIterations = std::max(used.mostIterations, ends[m].iterations);
+    kept[m] = ends[m].converged && ends[m].startShape >= kKeptShape;
+  }
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      if (!kept[a] || !kept[b]) continue;
+      const std::complex<double> ea = ends[a].eigenvalue, eb = ends[b].eigenvalue;
+      if (std::abs(ea - eb) > kSameEigenvalue * std::abs(ea)) continue;
+      if (std::abs(lambdas[a] - lambdas[b]) <= kApart * std::abs(lambdas[a])) continue;
+      (ends[a].startShape < ends[b].startShape ? kept[a] : kept[b]) = false;
+    }
+  for (int m = 0; m < n; ++m) {
+    if (!asked[m]) continue;
+    if (!kept[m]) {
       used.unsettled.push_back({0, lambdas[m].imag() / kTwoPi});
       continue;
     }
-    lambdas[m] = w.eigenvalue;
-    vectors.col(m) = w.vector;
-    settled.push_back(m);
+    lambdas[m] = ends[m].eigenvalue;
+    vectors.col(m) = ends[m].vector;
   }
   return iterations;
 }
@@ -155,7 +186,7 @@ ComplexNodalField toComplexNodalField(const DofMap& dofs, int nodeCount,
 
 RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
                                  const RotorOptions& options, QuadraticEigenSolver& solver,
-                                 bool shapes) {
+                                 bool shapes, WhirlScope scope) {
   Stopwatch clock, total;
   RotorModesResult result;
   result.speed = speed;
@@ -186,7 +217,7 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
   // 5. Bearings whose coefficients depend on the whirl: each mode at its own eigenvalue.
   std::vector<int> iterations(lambdas.size(), 0);
   if (system.dependsOnWhirl()) {
-    iterations = modesAtOwnWhirl(system, speed, options, solver, lambdas, vectors,
+    iterations = modesAtOwnWhirl(system, speed, options, solver, lambdas, vectors, scope,
                                  result.coefficients);
     // Each member of a repeated pair settles on some vector of its plane: the basis again.
     canonicalRepeatedModes(lambdas, vectors, dofs, nodes);

@@ -28,11 +28,20 @@ struct RotorOptions {
 RotorModesResult solveRotorModes(const Model& model, double speed,
                                  const RotorOptions& options = {});
 
+/// Which modes a system with whirl-dependent bearings finds at their own eigenvalue
+/// (WhirlIteration.hpp): every one (the default), the first `first`, or the candidates a
+/// sweep's lines follow (matchByMac of `follow`'s columns, RotorCampbell.hpp). The others are
+/// candidates the sweep does not report: they keep the synchronous set's eigenvalue, unflagged.
+struct WhirlScope {
+  const Eigen::MatrixXcd* follow = nullptr;
+  int first = -1;
+};
+
 /// The same for an assembled system, reusing `solver`'s symbolic factorisation (speed
 /// sweeps). options.damping is ignored: the system carries its own. With shapes = false the
 /// per-node shapes are left empty (vectors are always filled).
 RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
                                  const RotorOptions& options, QuadraticEigenSolver& solver,
-                                 bool shapes = true);
+                                 bool shapes = true, WhirlScope scope = {});
 
 }  // namespace beamrotor

@@ -33,25 +33,26 @@ double correlation(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
 
 namespace {
 
-/// The eigenpair of the problem with the coefficients frozen at `at` that is the mode with
-/// vector `q` (nearest `at`); none when only lower half-plane members are near.
+/// The eigenpair of the problem with the coefficients frozen at `at` that is the mode that
+/// started with vector `start` and last had vector `q`: of the eigenvalues near `at`, the one
+/// whose shape correlates best with the start (ties: the nearest `at`); on the real axis only
+/// for an overdamped mode (`real`); none when no candidate qualifies.
 std::optional<std::pair<std::complex<double>, Eigen::VectorXcd>> frozenMode(
-    const RotorSystem& system, double speed, std::complex<double> at, const Eigen::VectorXcd& q,
-    QuadraticEigenSolver& solver, EigenMethod method) {
+    const RotorSystem& system, double speed, std::complex<double> at, const Eigen::VectorXcd& start,
+    const Eigen::VectorXcd& q, bool real, QuadraticEigenSolver& solver, EigenMethod method) {
   const SparseMatrix K = system.stiffness(speed, at);
   const SparseMatrix D = system.damping(speed, at) + speed * system.gyroscopic();
   const double scale = std::max({std::abs(at), speed, 1.0});
   const std::complex<double> shift = at + std::complex<double>(0, kShiftOffset * scale);
   const QuadraticEigenpairs pairs = solver.solve(K, D, system.mass(), kAround, shift, method);
-  // The candidate whose shape is the mode's; of equal shapes (a conjugate pair of a real
-  // vector) the one on the mode's side of the real axis, then the nearest.
   int best = -1;
   double bestMac = -1;
   for (int k = 0; k < int(pairs.values.size()); ++k) {
     const std::complex<double> v = pairs.values[k];
     // A real eigenvalue (an overdamped mode) comes back with Im of round-off either sign.
-    if (v.imag() < -kRealRoundOff * std::abs(v)) continue;
-    const double m = correlation(q, pairs.vectors.col(k));
+    const bool onAxis = std::abs(v.imag()) <= kRealRoundOff * std::abs(v);
+    if (real ? !onAxis : v.imag() < -kRealRoundOff * std::abs(v)) continue;
+    const double m = correlation(start, pairs.vectors.col(k));
     if (m > bestMac + 1e-9 || (best >= 0 && std::abs(m - bestMac) <= 1e-9 &&
                                std::abs(v - at) < std::abs(pairs.values[best] - at))) {
       best = k;
@@ -59,7 +60,8 @@ std::optional<std::pair<std::complex<double>, Eigen::VectorXcd>> frozenMode(
     }
   }
   if (best < 0) return std::nullopt;
-  const std::complex<double> lambda = pairs.values[best];
+  std::complex<double> lambda = pairs.values[best];
+  if (real) lambda = lambda.real();
   // A repeated eigenvalue (both whirls of an isotropic rotor) has a plane of vectors: the
   // mode keeps its own, the last vector projected onto that plane.
   std::vector<int> same;
@@ -81,14 +83,18 @@ WhirlMode modeAtOwnWhirl(const RotorSystem& system, double speed, std::complex<d
                          EigenMethod method, double tolerance) {
   // f(at) = g(at) - at, g the frozen problem's eigenvalue: a fixed point of g is a root of f.
   // Secant steps on f (superlinear where the coefficients are smooth in lambda), a plain
-  // fixed-point step at the start and wherever the secant would not shrink |f|.
-  WhirlMode out{lambda, q.normalized(), 0, false};
-  std::complex<double> at = lambda, previousAt = 0, previousF = 0;
+  // fixed-point step at the start and wherever the secant would not shrink |f|. An overdamped
+  // mode (a real eigenvalue) stays on the real axis, among the real eigenvalues.
+  const bool real = std::abs(lambda.imag()) <= kRealRoundOff * std::abs(lambda);
+  const Eigen::VectorXcd start = q.normalized();
+  WhirlMode out{lambda, start, 0, false};
+  std::complex<double> at = real ? std::complex<double>(lambda.real()) : lambda;
+  std::complex<double> previousAt = 0, previousF = 0;
   bool havePrevious = false;
   while (out.iterations < kMaxWhirlIterations) {
-    const auto frozen = frozenMode(system, speed, at, out.vector, solver, method);
+    const auto frozen = frozenMode(system, speed, at, start, out.vector, real, solver, method);
     ++out.iterations;
-    if (!frozen) break;  // only the lower half-plane's members: the mode left the candidates
+    if (!frozen) break;  // no candidate on the mode's side of the real axis (or on it)
     out.eigenvalue = frozen->first;
     out.vector = frozen->second;
     const std::complex<double> f = frozen->first - at;
@@ -104,8 +110,9 @@ WhirlMode modeAtOwnWhirl(const RotorSystem& system, double speed, std::complex<d
     previousAt = at;
     previousF = f;
     havePrevious = true;
-    at = next;
+    at = real ? std::complex<double>(next.real()) : next;
   }
+  out.startShape = correlation(start, out.vector);
   return out;
 }
 

@@ -25,6 +25,7 @@ struct WhirlMode {
   Eigen::VectorXcd vector;          ///< free dofs, unit norm
   int iterations = 0;               ///< eigen-solutions done
   bool converged = false;
+  double startShape = 0;  ///< MAC of the end vector against the start's (1: the same shape)
 };
 
 /// The mode whose eigenvalue with the synchronous coefficients is `lambda` (vector `q`), found

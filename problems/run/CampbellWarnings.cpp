@@ -61,8 +61,9 @@ std::vector<std::string> whirlWarnings(const WhirlCoefficientsUsed& used,
     char text[400];
     std::snprintf(text, sizeof text,
                   "the mode at %.6g Hz (%.6g rpm, synchronous bearing coefficients) did not "
-                  "settle with the coefficients at its own eigenvalue (in %d eigen-solutions, "
-                  "or it settled on another mode's): it is reported with the synchronous set",
+                  "settle with the coefficients at its own eigenvalue (in %d eigen-solutions "
+                  "it did not converge, lost its shape or ended on another mode's eigenvalue): "
+                  "it is reported with the synchronous set",
                   u.frequencyHz, rpmOf(speeds.at(u.speed)), kMaxWhirlIterations);
     out.push_back(text);
   }

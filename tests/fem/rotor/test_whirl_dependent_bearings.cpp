@@ -85,6 +85,55 @@ TiltingPadPoint padPoint(double speed) {
   return tiltingPadPoint(tiltingPadTestJournal(), fourPadsBetween(), speed, {24, 8});
 }
 
+/// The shaft on two bearings of `point`'s pads, condensed at each mode's eigenvalue.
+void condensedPads(Model& model, const TiltingPadPoint& point) {
+  auto whirl = std::make_shared<TiltingPadWhirl>(std::vector<TiltingPadPoint>{point});
+  for (int node : buildShaft(model))
+    model.add<Bearing>(node, std::vector<double>{point.speed},
+                       std::vector<BearingCoefficients>{point.synchronous})
+        .setWhirlCoefficients(whirl);
+}
+
+/// The same shaft with every loaded pad's tilt kept, a node of its own; the pads kept.
+int fullPads(Model& model, const TiltingPadPoint& point) {
+  int padFilms = 0;
+  for (int node : buildShaft(model))
+    for (const PadFilmState& p : point.pads) {
+      if (p.stiffness[1][1] == 0) continue;  // a pad the journal has left carries nothing
+      const Eigen::Vector3d at = model.nodes()[node];
+      const int pad = model.addNode(at);
+      model.add<PadFilmElement>(node, pad, p, point.stiffnessScale, point.dampingScale);
+      ++padFilms;
+    }
+  return padFilms;
+}
+
+/// The same shaft on the pads' synchronous set.
+void synchronousPads(Model& model, const TiltingPadPoint& point) {
+  for (int node : buildShaft(model)) model.add<Bearing>(node, point.synchronous);
+}
+
+/// The test shaft at 6000 rpm three ways: pads condensed at each mode's eigenvalue, the full
+/// model with the pads' tilts, and the synchronous set.
+struct PadModels {
+  double speed = 6000 * std::numbers::pi / 30;
+  TiltingPadPoint point = padPoint(speed);
+  Model condensed, full, synchronous;
+  int padFilms = 0;
+  PadModels() {
+    condensedPads(condensed, point);
+    padFilms = fullPads(full, point);
+    synchronousPads(synchronous, point);
+  }
+};
+
+/// The distance from lambda to the nearest of `modes`' eigenvalues.
+double nearestTo(std::complex<double> lambda, const std::vector<RotorMode>& modes) {
+  double nearest = 1e300;
+  for (const RotorMode& m : modes) nearest = std::min(nearest, std::abs(m.eigenvalue - lambda));
+  return nearest;
+}
+
 }  // namespace
 
 TEST_SUITE("rotor") {
@@ -147,63 +196,69 @@ TEST_SUITE("rotor") {
   }
 
   TEST_CASE("tilting pads at each mode's eigenvalue: the full model with the pads' tilts") {
-    const double speed = 6000 * std::numbers::pi / 30;
-    const TiltingPadPoint point = padPoint(speed);
-    // Condensed: the pads at each mode's eigenvalue.
-    Model condensed;
-    const auto ends = buildShaft(condensed);
-    auto whirl = std::make_shared<TiltingPadWhirl>(std::vector<TiltingPadPoint>{point});
-    for (int node : ends)
-      condensed.add<Bearing>(node, std::vector<double>{speed},
-                             std::vector<BearingCoefficients>{point.synchronous})
-          .setWhirlCoefficients(whirl);
-    // Full: every loaded pad's tilt kept, a node of its own.
-    Model full;
-    const auto fullEnds = buildShaft(full);
-    int padFilms = 0;
-    for (int node : fullEnds)
-      for (const PadFilmState& p : point.pads) {
-        if (p.stiffness[1][1] == 0) continue;  // a pad the journal has left carries nothing
-        const Eigen::Vector3d at = full.nodes()[node];
-        const int pad = full.addNode(at);
-        full.add<PadFilmElement>(node, pad, p, point.stiffnessScale, point.dampingScale);
-        ++padFilms;
-      }
-    CHECK(padFilms >= 6);
-    // The bounce pair around 350 rad/s; the overdamped modes nearer 0 and the conical pair are
-    // left out (docs/whirl-dependent-bearings.md: from the synchronous set they may settle on
-    // the bounce eigenvalue).
+    const PadModels p;
+    const double speed = p.speed;
+    CHECK(p.padFilms >= 6);
+    // The bounce pair around 350 rad/s.
     const Complex around(0, 350);
-    const RotorModesResult rc = solveRotorModes(condensed, speed, rotorOptions(2, around));
-    // The full model has one real eigenvalue more per pad (the tilt's relaxation): ask for
-    // those too.
-    const RotorModesResult rf = solveRotorModes(full, speed, rotorOptions(2 + padFilms, around));
+    const RotorModesResult rc = solveRotorModes(p.condensed, speed, rotorOptions(2, around));
+    // The full model has one eigenvalue more per pad (the tilt's relaxation): ask for those too.
+    const RotorModesResult rf =
+        solveRotorModes(p.full, speed, rotorOptions(2 + p.padFilms, around));
+    const RotorModesResult sync = solveRotorModes(p.synchronous, speed, rotorOptions(2, around));
     CHECK(rc.coefficients.atOwnWhirl);
     CHECK(rc.coefficients.unsettled.empty());
     CHECK_FALSE(rf.coefficients.atOwnWhirl);
-    // The synchronous set differs from the eigenvalue's by several per cent (whirl well below
-    // the spin for these modes): the test tells the two apart.
-    const RotorModesResult sync = [&] {
-      Model s;
-      const auto e = buildShaft(s);
-      for (int node : e) s.add<Bearing>(node, point.synchronous);
-      return solveRotorModes(s, speed, rotorOptions(2, around));
-    }();
     REQUIRE(rc.modes.size() == 2);
     // The pair: one forward, one backward whirl.
     CHECK(rc.modes[0].whirl != rc.modes[1].whirl);
+    for (const RotorMode& mode : rc.modes) {
+      const std::complex<double> lambda = mode.eigenvalue;
+      CAPTURE(lambda);
+      // The iteration stops at 1e-10 of |lambda|; the two eigen-solutions' round-off is below
+      // 1e-12. 1e-8 keeps a margin.
+      CHECK(nearestTo(lambda, rf.modes) <= 1e-8 * std::abs(lambda));
+      // The synchronous set differs from the eigenvalue's by several per cent (whirl well
+      // below the spin for these modes): the test tells the two apart.
+      CHECK(nearestTo(lambda, sync.modes) > 1e-4 * std::abs(lambda));
+    }
+  }
+
+  TEST_CASE("tilting pads at each mode's eigenvalue: every mode found, or named") {
+    // The eight modes nearest 0: the bounce pair, two bending modes and a high one settle on
+    // eigenvalues of the full model; the synchronous set's conical mode (-613 + 21i /s) and
+    // its overdamped pair (-702 /s) have no counterpart near them (the full model has
+    // -467 + 488i, -490 + 478i, -520 + 519i twice and its pads' real modes near -199 /s: the
+    // pads' lag changes those heavily damped modes altogether), and the iteration from them
+    // lands on the bounce pair or leaves the real axis' candidates. Those three are named
+    // (coefficients.unsettled) and keep their synchronous eigenvalues: none is reported at
+    // another mode's eigenvalue (docs/whirl-dependent-bearings.md).
+    const PadModels p;
+    const double speed = p.speed;
+    const RotorModesResult rc = solveRotorModes(p.condensed, speed, rotorOptions(8));
+    const RotorModesResult rf = solveRotorModes(p.full, speed, rotorOptions(8 + p.padFilms));
+    const RotorModesResult sync = solveRotorModes(p.synchronous, speed, rotorOptions(8));
+    REQUIRE(rc.modes.size() == 8);
+    REQUIRE(sync.modes.size() == 8);
+    CHECK(rc.coefficients.unsettled.size() == 3);
+    int found = 0, named = 0;
     for (std::size_t i = 0; i < rc.modes.size(); ++i) {
       const std::complex<double> lambda = rc.modes[i].eigenvalue;
       CAPTURE(lambda);
-      double nearest = 1e300;
-      for (const RotorMode& f : rf.modes) nearest = std::min(nearest, std::abs(f.eigenvalue - lambda));
-      // The iteration stops at 1e-10 of |lambda|; the two eigen-solutions' round-off is below
-      // 1e-12; a real eigenvalue (an overdamped mode) is read 1e-9 off the axis
-      // (tiltingPadCoefficientsAt). 1e-8 keeps a margin.
-      CHECK(nearest <= 1e-8 * std::abs(lambda));
-      double toSync = 1e300;
-      for (const RotorMode& s : sync.modes) toSync = std::min(toSync, std::abs(s.eigenvalue - lambda));
-      CHECK(toSync > 1e-4 * std::abs(lambda));
+      if (std::abs(lambda - sync.modes[i].eigenvalue) <= 1e-12 * std::abs(lambda)) {
+        // Named: the synchronous eigenvalue, at least 30 % of |lambda| from any of the full
+        // model's (measured: 68 % and 72 %), so the name is deserved.
+        ++named;
+        CHECK(nearestTo(lambda, rf.modes) > 0.3 * std::abs(lambda));
+        CHECK(rc.modes[i].whirlIterations >= 1);
+      } else {
+        // Found: as in the bounce pair's case above, 1e-8 keeps a margin over the iteration's
+        // 1e-10.
+        ++found;
+        CHECK(nearestTo(lambda, rf.modes) <= 1e-8 * std::abs(lambda));
+      }
     }
+    CHECK(found == 5);
+    CHECK(named == 3);
   }
 }
