@@ -164,17 +164,17 @@ Json checkedDocument(const RunResult& run, const std::vector<AnalysisExtremes>& 
 void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
   for (std::optional<CsvTable>* t :
        {&p.fields, &p.springs, &p.reactions, &p.modes, &p.shapes, &p.history, &p.baseMotion})
-    if (*t) *t = inUnits(**t, units);
+    if (*t) *t = inUnits(std::move(**t), units);
   if (p.rotor)
     for (std::optional<CsvTable>* t :
          {&p.rotor->modes, &p.rotor->orbits, &p.rotor->campbell, &p.rotor->critical,
           &p.rotor->unbalance, &p.rotor->api684, &p.rotor->frf, &p.rotor->bearings, &p.rotor->map,
           &p.rotor->mapBearings, &p.rotor->mapCrossings, &p.rotor->bearingLoads, &p.rotor->sag,
           &p.rotor->runUp, &p.rotor->runUpHistory, &p.rotor->levelOne})
-      if (*t) *t = inUnits(**t, units);
+      if (*t) *t = inUnits(std::move(**t), units);
   for (std::vector<CsvTable>* list :
        {&p.members, &p.envelopes, &p.crank, &p.torsion, &p.moving, &p.spectrum})
-    for (CsvTable& t : *list) t = inUnits(t, units);
+    for (CsvTable& t : *list) t = inUnits(std::move(t), units);
 }
 
 }  // namespace

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <deque>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -150,6 +152,40 @@ std::optional<Dimension> dimensionFrom(const std::vector<double>& v, bool angleA
   return d;
 }
 
+/// The value of a plain decimal literal (an optional minus, digits, an optional fraction and
+/// exponent: "-5000", "0.3", "2.1e11"), or nullopt for any other text or one that does not fit
+/// a finite double. Such text means the same to muparser (a minus applied to the number it
+/// reads with strtod, both correctly rounded) in every scaling, so it is dimensionless and
+/// needs no parse: most numbers of a generated deck (coordinates, loads) are literals.
+std::optional<double> plainNumber(const std::string& text) {
+  const char* p = text.data();
+  const char* const end = p + text.size();
+  const auto digits = [&] {
+    const char* from = p;
+    while (p != end && *p >= '0' && *p <= '9') ++p;
+    return p != from;
+  };
+  if (p != end && *p == '-') ++p;
+  if (!digits()) return std::nullopt;
+  if (p != end && *p == '.') {
+    ++p;
+    digits();
+  }
+  if (p != end && (*p == 'e' || *p == 'E')) {
+    ++p;
+    if (p != end && (*p == '+' || *p == '-')) ++p;
+    if (!digits()) return std::nullopt;
+  }
+  if (p != end) return std::nullopt;
+  double x = 0;
+  const auto [last, error] = std::from_chars(text.data(), end, x);
+  // Subnormal numbers go the full way too (a reader may flag their loss of precision).
+  if (error != std::errc() || last != end || !std::isfinite(x) ||
+      (x != 0 && std::abs(x) < std::numeric_limits<double>::min()))
+    return std::nullopt;
+  return x;
+}
+
 }  // namespace
 
 ExpressionEvaluator::ExpressionEvaluator() : ExpressionEvaluator(nullptr) {}
@@ -281,6 +317,10 @@ std::vector<double> ExpressionEvaluator::valuesInEveryScaling(const std::string&
 }
 
 Amount ExpressionEvaluator::amount(const std::string& text) const {
+  // A literal: what the evaluation in every scaling gives (its zero fits any dimension).
+  if (const std::optional<double> x =
+          text.size() <= kLongestExpression ? plainNumber(text) : std::nullopt)
+    return *x == 0 ? Amount{0, Dimension{}, true} : Amount{*x, Dimension{}, false};
   if (memo_) {
     ExpressionMemo::State& m = *memo_->state_;
     if (const auto found = m.entries.find(text); found != m.entries.end())

@@ -1,9 +1,9 @@
 // CSV tables (see CsvTable.hpp): RFC 4180 quoting, shortest exact decimals.
 #include "problems/output/files/CsvTable.hpp"
 
+#include <bit>
 #include <charconv>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -46,7 +46,7 @@ std::string exactDecimal(double x) {
 CsvTable::CsvTable(std::string title, std::vector<CsvColumn> columns)
     : title_(std::move(title)), columns_(std::move(columns)) {}
 
-void CsvTable::addRow(std::vector<CsvCell> row) {
+void CsvTable::addRow(std::span<const CsvCell> row) {
   if (row.size() != columns_.size())
     throw std::invalid_argument(title_ + ": a row of " + std::to_string(row.size()) +
                                 " cells for " + std::to_string(columns_.size()) + " columns");
@@ -55,8 +55,64 @@ void CsvTable::addRow(std::vector<CsvCell> row) {
       throw std::runtime_error(title_ + ": column '" + columns_[c].name + "', row " +
                                std::to_string(rowCount() + 1) + " would be " + exactDecimal(*x) +
                                "; only finite numbers are written");
-  cells_.insert(cells_.end(), std::make_move_iterator(row.begin()),
-                std::make_move_iterator(row.end()));
+  for (const CsvCell& cell : row) {
+    if (const double* x = std::get_if<double>(&cell)) {
+      kinds_.push_back(Kind::number);
+      payload_.push_back(std::bit_cast<std::uint64_t>(*x));
+    } else if (const long long* n = std::get_if<long long>(&cell)) {
+      kinds_.push_back(Kind::count);
+      payload_.push_back(std::bit_cast<std::uint64_t>(*n));
+    } else if (const std::string* text = std::get_if<std::string>(&cell)) {
+      kinds_.push_back(Kind::text);
+      payload_.push_back(textIndex(*text));
+    } else {
+      kinds_.push_back(Kind::empty);
+      payload_.push_back(0);
+    }
+  }
+}
+
+void CsvTable::reserveRows(std::size_t rows) {
+  kinds_.reserve(rows * columns_.size());
+  payload_.reserve(rows * columns_.size());
+}
+
+std::uint64_t CsvTable::textIndex(const std::string& text) {
+  const auto [at, added] = textIndices_.try_emplace(text, texts_.size());
+  if (added) texts_.push_back(text);
+  return at->second;
+}
+
+double CsvTable::numberAt(std::size_t index) const {
+  return std::bit_cast<double>(payload_[index]);
+}
+
+CsvCell CsvTable::cell(std::size_t row, std::size_t column) const {
+  if (column >= columns_.size() || row >= rowCount())
+    throw std::out_of_range(title_ + ": no such cell");
+  const std::size_t i = row * columns_.size() + column;
+  switch (kinds_[i]) {
+    case Kind::number: return numberAt(i);
+    case Kind::count: return std::bit_cast<long long>(payload_[i]);
+    case Kind::text: return texts_[payload_[i]];
+    case Kind::empty: break;
+  }
+  return std::monostate{};
+}
+
+void CsvTable::convertColumn(std::size_t column, double factor, std::string unit) {
+  if (column >= columns_.size()) throw std::out_of_range(title_ + ": no such column");
+  columns_[column].unit = std::move(unit);
+  if (factor == 1) return;
+  for (std::size_t i = column; i < kinds_.size(); i += columns_.size()) {
+    if (kinds_[i] != Kind::number) continue;
+    const double x = numberAt(i) * factor;
+    if (!std::isfinite(x))
+      throw std::runtime_error(title_ + ": column '" + columns_[column].name + "', row " +
+                               std::to_string(i / columns_.size() + 1) + " would be " +
+                               exactDecimal(x) + "; only finite numbers are written");
+    payload_[i] = std::bit_cast<std::uint64_t>(x);
+  }
 }
 
 bool CsvTable::hasColumn(std::string_view name) const {
@@ -72,16 +128,15 @@ int CsvTable::column(std::string_view name) const {
 }
 
 std::vector<double> CsvTable::numbers(std::string_view name) const {
-  const int c = column(name) - 1;
+  const std::size_t c = std::size_t(column(name) - 1);
   std::vector<double> values;
   values.reserve(rowCount());
-  for (std::size_t r = 0; r < rowCount(); ++r) {
-    const CsvCell& value = cell(r, std::size_t(c));
-    if (const double* x = std::get_if<double>(&value))
-      values.push_back(*x);
-    else if (const long long* n = std::get_if<long long>(&value))
-      values.push_back(double(*n));
-    else if (std::holds_alternative<std::monostate>(value))
+  for (std::size_t i = c; i < kinds_.size(); i += columns_.size()) {
+    if (kinds_[i] == Kind::number)
+      values.push_back(numberAt(i));
+    else if (kinds_[i] == Kind::count)
+      values.push_back(double(std::bit_cast<long long>(payload_[i])));
+    else if (kinds_[i] == Kind::empty)
       values.push_back(std::numeric_limits<double>::quiet_NaN());
     else
       throw std::invalid_argument(title_ + ": column '" + std::string(name) + "' holds text");
@@ -107,19 +162,28 @@ void CsvTable::writeTo(std::ostream& out) const {
   out << names << '\n';
   if (anyUnit) out << units << '\n';
   // A row at a time into a buffer, one stream write each (a large table has 10^7 cells).
+  // Each distinct text's field once.
+  std::vector<std::string> fields;
+  fields.reserve(texts_.size());
+  for (const std::string& text : texts_) fields.push_back(csvField(text));
   char buffer[32];
   std::string line;
-  for (std::size_t r = 0; r < rowCount(); ++r) {
+  const std::size_t width = columns_.size();
+  for (std::size_t first = 0; first < kinds_.size(); first += width) {
     line.clear();
-    for (std::size_t c = 0; c < columns_.size(); ++c) {
-      if (c) line += ',';
-      const CsvCell& value = cell(r, c);
-      if (const double* x = std::get_if<double>(&value))
-        line.append(buffer, decimalInto(buffer, *x));
-      else if (const long long* n = std::get_if<long long>(&value))
-        line += std::to_string(*n);
-      else if (const std::string* text = std::get_if<std::string>(&value))
-        line += csvField(*text);
+    for (std::size_t i = first; i < first + width; ++i) {
+      if (i > first) line += ',';
+      switch (kinds_[i]) {
+        case Kind::number: line.append(buffer, decimalInto(buffer, numberAt(i))); break;
+        case Kind::count: {
+          const auto [end, error] =
+              std::to_chars(buffer, buffer + sizeof buffer, std::bit_cast<long long>(payload_[i]));
+          line.append(buffer, end);
+          break;
+        }
+        case Kind::text: line += fields[payload_[i]]; break;
+        case Kind::empty: break;
+      }
     }
     line += '\n';
     out.write(line.data(), std::streamsize(line.size()));

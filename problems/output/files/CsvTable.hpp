@@ -4,11 +4,15 @@
 // for a column's position by name, so a chart never plots a column the table does not have.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <ostream>
+#include <span>
 #include <string>
 #include <stdexcept>
 #include <string_view>
+#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -32,9 +36,14 @@ class CsvTable {
   /// Appends a row. Throws std::invalid_argument for a row of the wrong width and
   /// std::runtime_error for a NaN or infinite number (naming the column and row), so a table
   /// that exists holds only finite numbers.
-  void addRow(std::vector<CsvCell> row);
+  void addRow(std::span<const CsvCell> row);
+  void addRow(std::initializer_list<CsvCell> row) { addRow(std::span(row.begin(), row.size())); }
   /// Room for `rows` rows in all, so that a large table grows without copying itself.
-  void reserveRows(std::size_t rows) { cells_.reserve(rows * columns_.size()); }
+  void reserveRows(std::size_t rows);
+
+  /// Multiplies the numbers of a column (0-based position) by `factor` and names its unit
+  /// `unit` (a table shown in other units, TableUnits.hpp); counts, texts and empty cells stay.
+  void convertColumn(std::size_t column, double factor, std::string unit);
 
   /// 1-based position of a column (gnuplot's numbering); throws std::out_of_range if absent.
   int column(std::string_view name) const;
@@ -44,14 +53,11 @@ class CsvTable {
   std::vector<double> numbers(std::string_view name) const;
 
   /// The cell of a row (0-based) and column (0-based position).
-  const CsvCell& cell(std::size_t row, std::size_t column) const {
-    if (column >= columns_.size()) throw std::out_of_range(title_ + ": no such column");
-    return cells_.at(row * columns_.size() + column);
-  }
+  CsvCell cell(std::size_t row, std::size_t column) const;
 
   const std::string& title() const { return title_; }
   const std::vector<CsvColumn>& columns() const { return columns_; }
-  std::size_t rowCount() const { return columns_.empty() ? 0 : cells_.size() / columns_.size(); }
+  std::size_t rowCount() const { return columns_.empty() ? 0 : kinds_.size() / columns_.size(); }
 
   /// Writes the table; numbers in the shortest form that reads back exactly.
   /// Throws std::runtime_error when the file cannot be written.
@@ -60,9 +66,21 @@ class CsvTable {
   void writeTo(std::ostream& out) const;
 
  private:
+  /// What a cell holds; its payload is a number's or a count's bits or a text's index.
+  enum class Kind : std::uint8_t { number, count, text, empty };
+  /// The index of `text` in texts_, added when new: a text repeated down a table (a member's
+  /// name on each of its rows, the combination governing an envelope) is held once.
+  std::uint64_t textIndex(const std::string& text);
+  double numberAt(std::size_t index) const;
+
   std::string title_;
   std::vector<CsvColumn> columns_;
-  std::vector<CsvCell> cells_;  ///< row by row: one allocation, not one per row
+  // Row by row, 9 bytes a cell (a variant with a string would take 40): the kind of each cell
+  // and its payload, in two arrays that grow without an allocation per row.
+  std::vector<Kind> kinds_;
+  std::vector<std::uint64_t> payload_;
+  std::vector<std::string> texts_;
+  std::unordered_map<std::string, std::uint64_t> textIndices_;  ///< text -> index in texts_
 };
 
 /// A text cell or column name as written: bare, unless RFC 4180 needs quotes (a comma, a

@@ -8,7 +8,7 @@
 
 namespace beamrotor {
 
-/// `table` in `units`; the table itself when none is set.
-CsvTable inUnits(const CsvTable& table, const OutputUnits& units);
+/// `table` in `units`, converted in place; the table itself when none is set.
+CsvTable inUnits(CsvTable table, const OutputUnits& units);
 
 }  // namespace beamrotor

@@ -49,6 +49,8 @@ std::vector<CsvColumn> memberColumns(bool named) {
 void addMemberRows(CsvTable& table, const Model& model, const std::vector<int>& elements,
                    const StationsByElement& stations, const std::string* name) {
   double start = 0;
+  std::vector<CsvCell> row;  // one row's cells, reused
+  row.reserve(25);
   for (int e : elements) {
     const LineElement& line = *asLine(model.elements().at(e));
     const double length = line.length();
@@ -57,8 +59,7 @@ void addMemberRows(CsvTable& table, const Model& model, const std::vector<int>& 
       const Eigen::Vector3d x = placeOnElement(model, e, st.place.s);
       const auto& u = st.displacement;
       const SectionForces& f = st.forces;
-      std::vector<CsvCell> row;
-      row.reserve(25);
+      row.clear();
       if (name) row.emplace_back(std::in_place_type<std::string>, *name);
       for (double v : {start + st.place.s * length, x.x(), x.y(), x.z(), u[0], u[1], u[2], u[3],
                        u[4], u[5], f.N, f.Vy, f.Vz, f.T, f.My, f.Mz, st.stress})
@@ -66,7 +67,7 @@ void addMemberRows(CsvTable& table, const Model& model, const std::vector<int>& 
       row.emplace_back(std::in_place_type<long long>, e);
       for (double v : {R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)})
         row.emplace_back(std::in_place_type<double>, v);
-      table.addRow(std::move(row));
+      table.addRow(row);
     }
     start += length;
   }
@@ -133,8 +134,9 @@ std::vector<CsvColumn> envelopeColumns(bool named) {
 /// The rows of one member's envelope, `name` first when given.
 void addEnvelopeRows(CsvTable& table, const std::vector<EnvelopeStation>& stations,
                      const std::vector<std::string>& solutionNames, const std::string* name) {
+  std::vector<CsvCell> row;  // one row's cells, reused
   for (const EnvelopeStation& st : stations) {
-    std::vector<CsvCell> row;
+    row.clear();
     if (name) row.emplace_back(std::in_place_type<std::string>, *name);
     row.emplace_back(std::in_place_type<double>, st.along);
     row.emplace_back(std::in_place_type<long long>, st.element);
@@ -146,7 +148,7 @@ void addEnvelopeRows(CsvTable& table, const std::vector<EnvelopeStation>& statio
       row.emplace_back(std::in_place_type<double>, st.min[c]);
       row.emplace_back(std::in_place_type<std::string>, solutionNames.at(st.minBy[c]));
     }
-    table.addRow(std::move(row));
+    table.addRow(row);
   }
 }
 

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <variant>
 
 #include "elements/Spring.hpp"
 #include "problems/output/files/CsvTable.hpp"
@@ -131,6 +133,40 @@ TEST_SUITE("output") {
     for (const char* name : {"ULS both", "#2", " edge"}) plain.addRow({std::string(name), 1.0});
     plain.write(scratch / "p.csv");
     CHECK(readText(scratch / "p.csv") == "case,value\nULS both,1\n\"#2\",1\n\" edge\",1\n");
+  }
+
+  TEST_CASE("CsvTable: every kind of cell reads back and writes as it was given") {
+    // Cells are held as a kind and 8 bytes, texts once each: what goes in must come out, in
+    // cell(), numbers() and the file, whatever the order of kinds and repeats of texts.
+    CsvTable t("k.csv", {{"member", ""}, {"x", "m"}, {"element", ""}, {"F", "N"}});
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    t.addRow({std::string("m1"), -0.0, 7LL, CsvCell{std::monostate{}}});
+    t.addRow({std::string("m2"), 0.1 + 0.2, -3LL, tiny});
+    t.addRow({std::string("m1"), 1e300, 9007199254740993LL, -2.5});
+    CHECK(t.rowCount() == 3);
+    CHECK(std::get<std::string>(t.cell(2, 0)) == "m1");
+    CHECK(std::get<double>(t.cell(1, 1)) == 0.1 + 0.2);  // bit for bit
+    CHECK(std::get<long long>(t.cell(2, 2)) == 9007199254740993LL);  // beyond a double's 2^53
+    CHECK(std::holds_alternative<std::monostate>(t.cell(0, 3)));
+    const std::vector<double> F = t.numbers("F");
+    CHECK(std::isnan(F[0]));
+    CHECK(F[1] == tiny);
+    CHECK(t.numbers("element") == std::vector<double>{7, -3, 9007199254740992.0});
+    CHECK_THROWS_AS(t.numbers("member"), std::invalid_argument);
+    CHECK_THROWS_AS(t.cell(3, 0), std::out_of_range);
+    std::ostringstream out;
+    t.writeTo(out);
+    CHECK(out.str() == "member,x,element,F\n# units: ,m,,N\nm1,0,7,\nm2,0.30000000000000004,-3,"
+                       "5e-324\nm1,1e+300,9007199254740993,-2.5\n");
+    // Converted in place: numbers scaled, counts, texts and empty cells kept; a product that
+    // leaves the doubles is refused as addRow refuses it.
+    t.convertColumn(3, 1e-3, "kN");
+    t.convertColumn(2, 1e-3, "");
+    CHECK(t.columns()[3].unit == "kN");
+    CHECK(std::get<double>(t.cell(2, 3)) == -2.5 * 1e-3);
+    CHECK(std::get<long long>(t.cell(0, 2)) == 7);
+    CHECK_THROWS_WITH_AS(t.convertColumn(1, 1e10, "x"), doctest::Contains("column 'x', row 3"),
+                         std::runtime_error);
   }
 
   TEST_CASE("requireFiniteNumbers names the JSON path of a NaN") {
