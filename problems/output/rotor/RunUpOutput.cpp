@@ -34,17 +34,26 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
       {"time", "s"}, {"speed", "rad/s"}, {"speed_rpm", "rpm"}, {"angle", "rad"}};
   for (const std::string& p : r.responsePoints)
     for (const char* what : {"_uy", "_uz"}) columns.push_back({p + what, "m"});
-  for (const char* what : {"kinetic", "strain", "dissipated", "gyroscopic", "work", "energy_balance"})
+  if (r.runUp.driven)
+    for (const char* what : {"drive_torque", "unbalance_torque"}) columns.push_back({what, "N m"});
+  for (const JournalTrack& j : r.runUp.journals) {
+    for (const char* what : {"_y", "_z"}) columns.push_back({j.name + what, "m"});
+    columns.push_back({j.name + "_eccentricity", ""});
+  }
+  for (const char* what :
+       {"kinetic", "strain", "dissipated", "gyroscopic", "film", "work", "energy_balance"})
     columns.push_back({what, "J"});
   CsvTable table(title, columns);
   const RunUpResult& u = r.runUp;
   for (std::size_t i = 0; i < u.times.size(); ++i) {
     std::vector<CsvCell> row{u.times[i], u.speed[i], rpmOf(u.speed[i]), u.angle[i]};
     for (const RunUpHistory& h : u.histories) row.insert(row.end(), {h.uy[i], h.uz[i]});
+    if (u.driven) row.insert(row.end(), {u.driveTorque[i], u.unbalanceTorque[i]});
+    for (const JournalTrack& j : u.journals)
+      row.insert(row.end(), {j.y[i], j.z[i], j.eccentricity[i]});
     const RunUpEnergy& e = u.energy;
-    row.insert(row.end(),
-               {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i], e.work[i],
-                e.balance(i)});
+    row.insert(row.end(), {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i],
+                           e.film[i], e.work[i], e.balance(i)});
     table.addRow(std::move(row));
   }
   return table;
@@ -110,6 +119,35 @@ ChartScript runUpOrbitsChart(const std::string& caption, const std::string& char
   body << "\n  unset multiplot\n";
   return {chartName, "run-up: orbits of the response points over the run", width, height,
           body.str()};
+}
+
+ChartScript runUpJournalsChart(const std::string& caption, const std::string& chartName,
+                               const CsvTable& history, const std::string& csvFile,
+                               const RunUpOutcome& r) {
+  std::vector<std::string> titles;
+  for (const JournalTrack& j : r.runUp.journals) titles.push_back(j.name);
+  titles.push_back("clearance");
+  const int keyMargin = keyWidth(titles);
+  const int width = 700 + keyMargin, height = 700;
+  std::ostringstream body;
+  body << "  set encoding utf8\n"
+       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n  set size ratio -1\n"
+       << "  set xrange [-1.05:1.05]\n  set yrange [-1.05:1.05]\n"
+       << "  set xlabel " << gnuplotText("y / c") << "\n"
+       << "  set ylabel " << gnuplotText("z / c") << "\n"
+       << "  set parametric\n  set trange [0:2*pi]\n  plot ";
+  for (std::size_t k = 0; k < r.runUp.journals.size(); ++k) {
+    const JournalTrack& j = r.runUp.journals[k];
+    const int y = history.column(j.name + "_y"), z = history.column(j.name + "_z");
+    body << gnuplotFile(csvFile) << " skip 1 using ($" << y << "/" << number(j.clearance)
+         << "):($" << z << "/" << number(j.clearance) << ") with lines linewidth 0.8 "
+         << colour(k) << " title " << gnuplotText(j.name) << ", \\\n       ";
+  }
+  body << "cos(t), sin(t) with lines linewidth 1.5 lc rgb 'black' title "
+       << gnuplotText("clearance") << "\n  unset multiplot\n";
+  return {chartName, "run-up: the journals' centres in their bearings over the run", width,
+          height, body.str()};
 }
 
 }  // namespace beamrotor
