@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
@@ -96,19 +97,34 @@ ChartScript runUpAmplitudeChart(const std::string& caption, const std::string& c
           body.str()};
 }
 
+namespace {
+
+/// Opens a square chart of orbits in `body`: one panel at equal scales on both axes, the key
+/// of `titles` beside it. Returns the chart's width and height (px).
+std::pair<int, int> squarePanel(std::ostringstream& body, const std::string& caption,
+                                const std::vector<std::string>& titles, const std::string& xlabel,
+                                const std::string& ylabel) {
+  const int keyMargin = keyWidth(titles);
+  const int width = 700 + keyMargin, height = 700;
+  body << "  set encoding utf8\n"
+       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n  set size ratio -1\n"
+       << "  set xlabel " << gnuplotText(xlabel) << "\n"
+       << "  set ylabel " << gnuplotText(ylabel) << "\n";
+  return {width, height};
+}
+
+}  // namespace
+
 ChartScript runUpOrbitsChart(const std::string& caption, const std::string& chartName,
                              const CsvTable& history, const std::string& csvFile,
                              const RunUpOutcome& r, const OutputUnits& units) {
   const OutputUnits::Shown length = units.columnIn("m", {1e6, "µm"});
   const std::vector<std::string>& titles = r.responsePoints;
-  const int keyMargin = keyWidth(titles);
-  const int width = 700 + keyMargin, height = 700;
   std::ostringstream body;
-  body << "  set encoding utf8\n"
-       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
-       << "  set key outside right top\n  set size ratio -1\n"
-       << "  set xlabel " << gnuplotText("uy [" + length.unit + "]") << "\n"
-       << "  set ylabel " << gnuplotText("uz [" + length.unit + "]") << "\n  plot ";
+  const auto [width, height] = squarePanel(body, caption, titles, "uy [" + length.unit + "]",
+                                           "uz [" + length.unit + "]");
+  body << "  plot ";
   for (std::size_t k = 0; k < titles.size(); ++k) {
     const int y = history.column(titles[k] + "_uy"), z = history.column(titles[k] + "_uz");
     if (k) body << ", \\\n       ";
@@ -127,15 +143,9 @@ ChartScript runUpJournalsChart(const std::string& caption, const std::string& ch
   std::vector<std::string> titles;
   for (const JournalTrack& j : r.runUp.journals) titles.push_back(j.name);
   titles.push_back("clearance");
-  const int keyMargin = keyWidth(titles);
-  const int width = 700 + keyMargin, height = 700;
   std::ostringstream body;
-  body << "  set encoding utf8\n"
-       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
-       << "  set key outside right top\n  set size ratio -1\n"
-       << "  set xrange [-1.05:1.05]\n  set yrange [-1.05:1.05]\n"
-       << "  set xlabel " << gnuplotText("y / c") << "\n"
-       << "  set ylabel " << gnuplotText("z / c") << "\n"
+  const auto [width, height] = squarePanel(body, caption, titles, "y / c", "z / c");
+  body << "  set xrange [-1.05:1.05]\n  set yrange [-1.05:1.05]\n"
        << "  set parametric\n  set trange [0:2*pi]\n  plot ";
   for (std::size_t k = 0; k < r.runUp.journals.size(); ++k) {
     const JournalTrack& j = r.runUp.journals[k];
