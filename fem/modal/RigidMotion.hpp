@@ -9,6 +9,7 @@
 #include "fem/assembly/Assembly.hpp"
 #include "fem/model/DofMap.hpp"
 #include "fem/model/Model.hpp"
+#include "fem/model/Results.hpp"
 
 namespace beamrotor {
 

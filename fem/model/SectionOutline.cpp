@@ -6,38 +6,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "fem/model/GaussLegendre.hpp"
+
 namespace beamrotor {
 
 namespace {
 
-
-/// Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial). 16 points
-/// integrate polynomials up to degree 31 exactly; along an arc the integrands below are
-/// trigonometric polynomials of degree <= 4 over at most a half turn, where 16 points are
+/// 16 points integrate polynomials up to degree 31 exactly; along an arc the integrands below
+/// are trigonometric polynomials of degree <= 4 over at most a half turn, where 16 points are
 /// exact to round-off.
-struct GaussRule {
-  static constexpr int n = 16;
-  std::array<double, n> x{}, w{};
-  GaussRule() {
-    for (int i = 0; i < n; ++i) {
-      double t = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1;
-      for (int iteration = 0; iteration < 100; ++iteration) {
-        double p0 = 1, p1 = t;
-        for (int k = 2; k <= n; ++k) {
-          const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = n * (t * p1 - p0) / (t * t - 1);
-        const double step = p1 / dp;
-        t -= step;
-        if (std::abs(step) < 1e-16) break;
-      }
-      x[i] = t;
-      w[i] = 2 / ((1 - t * t) * dp * dp);
-    }
-  }
-};
+using GaussRule = GaussLegendre<16>;
 
 /// The boundary integrals of Green's theorem (material to the left of the path):
 /// A = int y dz, Sy = int y^2/2 dz (= int y dA), Sz = -int z^2/2 dy, Iyy = -int z^3/3 dy,

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -18,6 +20,14 @@ namespace beamrotor {
 
 namespace {
 
+/// Newton's iterations allowed in one step (quadratic convergence needs a handful).
+constexpr int kMostNewtonIterations = 30;
+
+/// The spin at one instant: speed (rad/s), angular acceleration (rad/s^2), angle (rad).
+struct Spin {
+  double speed = 0, acceleration = 0, angle = 0;
+};
+
 /// The equations of motion at one instant: the matrices at its speed and acceleration, and
 /// the load at its angle.
 struct Instant {
@@ -27,11 +37,27 @@ struct Instant {
   Eigen::VectorXd f;
 };
 
+/// A nonlinear journal placed in the equations: its dofs, where u = 0 puts it in its bearing
+/// and the constant load it carries.
+struct PlacedJournal {
+  const NonlinearJournal* journal = nullptr;
+  int y = -1, z = -1;           ///< equations of uy, uz
+  Eigen::Vector2d offset;       ///< journal centre at u = 0 (m, from the bearing's centre)
+  Eigen::Vector2d appliedLoad;  ///< N, on the journal (zero when gravity carries it)
+};
+
+/// The films' forces (constant loads included) on the whole system, and their derivatives.
+struct FilmForces {
+  Eigen::VectorXd force;
+  std::vector<FilmForce> each;  ///< per journal, for the tangent matrices
+};
+
 class RunUpSystem {
  public:
-  RunUpSystem(const Model& model, const SpeedProfile& profile, const RunUpOptions& o)
-      : rotor_(model, o.damping), profile_(profile) {
+  RunUpSystem(const Model& model, double startSpeed, const RunUpOptions& o)
+      : rotor_(model, o.damping), unbalanceList_(o.unbalance), gravity_(o.gravity) {
     unbalance_ = unbalanceForces(rotor_, o.unbalance);
+    placeJournals(model, startSpeed, o);
     // The weight as GravityLoads takes it: f = M a with a = g on every translation.
     const DofMap& dofs = rotor_.dofs();
     Eigen::VectorXd a = Eigen::VectorXd::Zero(rotor_.size());
@@ -46,19 +72,77 @@ class RunUpSystem {
   const Eigen::VectorXd& weight() const { return weight_; }
   const Eigen::VectorXcd& unbalance() const { return unbalance_; }
 
-  Instant at(double t) const {
+  Instant at(double t, const Spin& spin) const {
     Instant i;
     i.t = t;
-    i.speed = profile_.speed(t);
-    i.acceleration = profile_.acceleration(t);
-    i.angle = profile_.angle(t);
+    i.speed = spin.speed;
+    i.acceleration = spin.acceleration;
+    i.angle = spin.angle;
     i.K = rotor_.stiffness(i.speed);
     i.C = rotor_.damping(i.speed);
+    // The nonlinear journals' linear coefficients out: their films act instead.
+    for (const PlacedJournal& j : journals_) {
+      const auto& element =
+          static_cast<const SpeedDependentElement&>(*rotor_.model().elements()[j.journal->element]);
+      subtract(i.K, j, element.stiffnessAt(i.speed));
+      subtract(i.C, j, element.dampingAt(i.speed));
+    }
     // Re(f e^{i phi} (Omega^2 - i Omega')): see unbalanceForces.
     const std::complex<double> turn =
         std::polar(1.0, i.angle) * std::complex<double>(i.speed * i.speed, -i.acceleration);
     i.f = weight_ + (unbalance_ * turn).real();
     return i;
+  }
+
+  const std::vector<PlacedJournal>& journals() const { return journals_; }
+
+  /// The films' forces at the state (u, v) and speed, with the loads they carry.
+  FilmForces films(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double speed) const {
+    FilmForces out;
+    out.force = Eigen::VectorXd::Zero(rotor_.size());
+    for (const PlacedJournal& j : journals_) {
+      const Eigen::Vector2d x = j.offset + Eigen::Vector2d(u[j.y], u[j.z]);
+      FilmForce f;
+      try {
+        f = j.journal->film->at(x, Eigen::Vector2d(v[j.y], v[j.z]), speed);
+      } catch (const JournalLeftClearance& e) {
+        throw JournalLeftClearance("bearing '" + j.journal->name + "': " + e.what());
+      }
+      out.force[j.y] += f.force[0] + j.appliedLoad[0];
+      out.force[j.z] += f.force[1] + j.appliedLoad[1];
+      out.each.push_back(std::move(f));
+    }
+    return out;
+  }
+
+  /// A += the films' stiffness (or damping) times `scale`, on the pattern's existing entries.
+  void addTangents(SparseMatrix& A, const FilmForces& f, double stiffness, double damping) const {
+    for (std::size_t k = 0; k < journals_.size(); ++k) {
+      const PlacedJournal& j = journals_[k];
+      const int eq[2] = {j.y, j.z};
+      for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c)
+          A.coeffRef(eq[r], eq[c]) +=
+              stiffness * f.each[k].stiffness(r, c) + damping * f.each[k].damping(r, c);
+    }
+  }
+
+  /// The torque the unbalances take from the spin (N m): the heavy spot m e at angle
+  /// psi = phi + p rides on the shaft's centre, whose acceleration a and gravity g pull it
+  /// back, m e (-sin psi (a_y - g_y) + cos psi (a_z - g_z)) (the spin's equation of a disk
+  /// with a heavy spot, Lagrange's equation in phi; its m e^2 phi'' is left out, e << radius
+  /// of gyration).
+  double unbalanceTorque(const Eigen::VectorXd& acceleration, double angle) const {
+    const DofMap& dofs = rotor_.dofs();
+    double torque = 0;
+    for (const Unbalance& u : unbalanceList_) {
+      const int y = dofs.equation(u.node, Dof::uy), z = dofs.equation(u.node, Dof::uz);
+      const double ay = dofs.isFree(y) ? acceleration[y] : 0;
+      const double az = dofs.isFree(z) ? acceleration[z] : 0;
+      const double psi = angle + u.phase;
+      torque += u.me * (-std::sin(psi) * (ay - gravity_[1]) + std::cos(psi) * (az - gravity_[2]));
+    }
+    return torque;
   }
 
   /// Omega G q' + Omega' G q: the gyroscopic and angular-acceleration forces.
@@ -67,46 +151,117 @@ class RunUpSystem {
   }
 
  private:
+  static void subtract(SparseMatrix& A, const PlacedJournal& j, const ElementMatrix& m) {
+    if (m.size() == 0) return;
+    const int eq[2] = {j.y, j.z};
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) A.coeffRef(eq[r], eq[c]) -= m(r, c);
+  }
+
+  void placeJournals(const Model& model, double startSpeed, const RunUpOptions& o) {
+    const DofMap& dofs = rotor_.dofs();
+    for (const NonlinearJournal& n : o.journals) {
+      const auto* element =
+          n.element >= 0 && n.element < int(model.elements().size())
+              ? dynamic_cast<const SpeedDependentElement*>(model.elements()[n.element].get())
+              : nullptr;
+      if (!element || !n.film || element->dofs().size() != 2 ||
+          element->dofs()[0] != NodeDof{n.node, Dof::uy} ||
+          element->dofs()[1] != NodeDof{n.node, Dof::uz})
+        throw std::invalid_argument(
+            "run-up: nonlinear journal '" + n.name +
+            "' is no bearing between its journal's uy, uz and the ground (or has no film)");
+      PlacedJournal j;
+      j.journal = &n;
+      j.y = dofs.equation(n.node, Dof::uy);
+      j.z = dofs.equation(n.node, Dof::uz);
+      if (!dofs.isFree(j.y) || !dofs.isFree(j.z))
+        throw std::invalid_argument("run-up: nonlinear journal '" + n.name +
+                                    "' needs free uy and uz at its node");
+      if (!(startSpeed > 0) && n.load.norm() > 0)
+        throw std::invalid_argument(
+            "run-up: a loaded journal bearing has no film at rest: its nonlinear run starts at "
+            "a speed above 0 (bearing '" +
+            n.name + "')");
+      j.offset = n.film->equilibrium(n.load, startSpeed);
+      const bool gravityCarries = o.gravity.squaredNorm() > 0;
+      j.appliedLoad = gravityCarries ? Eigen::Vector2d::Zero() : Eigen::Vector2d(n.load);
+      journals_.push_back(j);
+    }
+  }
+
   RotorSystem rotor_;
-  const SpeedProfile& profile_;
+  std::vector<Unbalance> unbalanceList_;
+  Eigen::Vector3d gravity_;
   Eigen::VectorXcd unbalance_;
   Eigen::VectorXd weight_;
+  std::vector<PlacedJournal> journals_;
 };
+
+/// Newton on the static equilibrium K u - F_films(u, 0) = M g: the journals' films carrying
+/// the weight (the linear rest of the rotor in K).
+void settleOnFilms(const RunUpSystem& system, const Instant& start, Eigen::VectorXd& u,
+                   double tolerance, RepeatedFactor<double>& factor) {
+  const Eigen::VectorXd v = Eigen::VectorXd::Zero(u.size());
+  for (int iteration = 0; iteration < kMostNewtonIterations; ++iteration) {
+    const FilmForces films = system.films(u, v, start.speed);
+    SparseMatrix K = start.K + start.acceleration * system.rotor().gyroscopic();
+    system.addTangents(K, films, 1, 0);
+    if (!factor.factorize(K))
+      throw SolveError(
+          "run-up: the rotor on its journal films has no static equilibrium at the "
+          "start speed (its tangent stiffness is singular)");
+    const Eigen::VectorXd du = factor.solve(
+        Eigen::VectorXd(system.weight() + films.force -
+                        (start.K + start.acceleration * system.rotor().gyroscopic()) * u));
+    u += du;
+    if (du.lpNorm<Eigen::Infinity>() <= tolerance) return;
+  }
+  throw SolveError(
+      "run-up: Newton's iterations on the static equilibrium on the journal films "
+      "did not converge at the start speed");
+}
 
 /// The initial state (RunUpStart): the static deflection under gravity at the start speed,
 /// plus on request the steady unbalance orbit there, its acceleration from the equation of
-/// motion.
+/// motion. With nonlinear journals the rest is their films' equilibrium, the steady orbit the
+/// linear one about it (a small start-up transient remains).
 TransientState initialState(const RunUpSystem& system, const Instant& start, RunUpStart how,
-                            RepeatedFactor<double>& factor) {
+                            double tolerance, RepeatedFactor<double>& factor) {
   const int n = system.rotor().size();
   TransientState s;
   s.u = Eigen::VectorXd::Zero(n);
   s.v = Eigen::VectorXd::Zero(n);
+  const FilmForces rest = system.films(s.u, s.v, start.speed);
+  SparseMatrix K = start.K, C = start.C;  // with the films' slopes there
+  system.addTangents(K, rest, 1, 0);
+  system.addTangents(C, rest, 0, 1);
   if (system.weight().squaredNorm() > 0) {
-    if (!factor.factorize(start.K))
+    if (!factor.factorize(K))
       throw SolveError(
           "run-up: the rotor has no static equilibrium under gravity at the start speed (its "
           "stiffness is singular: a rigid-body motion the bearings do not hold)");
-    s.u = factor.solve(system.weight());
+    s.u = factor.solve(Eigen::VectorXd(system.weight() + rest.force));
+    if (!system.journals().empty()) settleOnFilms(system, start, s.u, tolerance, factor);
   }
   if (how == RunUpStart::steady && start.speed > 0 && system.unbalance().squaredNorm() > 0) {
     using Complex = std::complex<double>;
     const double w = start.speed;
     const RotorSystem& r = system.rotor();
     RepeatedFactor<Complex> dynamic;
-    const ComplexSparseMatrix Z =
-        start.K.cast<Complex>() - (w * w) * r.mass().cast<Complex>() +
-        Complex(0, w) * (start.C + w * r.gyroscopic()).cast<Complex>();
+    const ComplexSparseMatrix Z = K.cast<Complex>() - (w * w) * r.mass().cast<Complex>() +
+                                  Complex(0, w) * (C + w * r.gyroscopic()).cast<Complex>();
     factorizeDynamicStiffness(dynamic, Z, w, "run-up's steady start", "the start speed");
     const Eigen::VectorXcd q = dynamic.solve(Eigen::VectorXcd((w * w) * system.unbalance()));
     const Eigen::VectorXcd turn = q * std::polar(1.0, start.angle);
     s.u += turn.real();
     s.v += (turn * Complex(0, w)).real();
   }
-  // M a = f - C v - K u - Omega G v - Omega' G u (massless dofs at a = 0: the first step's
-  // solve puts them in equilibrium).
+  // M a = f - C v - K u - Omega G v - Omega' G u (+ the films; massless dofs at a = 0: the
+  // first step's solve puts them in equilibrium).
   s.a = accelerationOf(system.rotor().mass(),
-                       start.f - start.C * s.v - start.K * s.u - system.gyroscopicForce(start, s),
+                       start.f + system.films(s.u, s.v, start.speed).force - start.C * s.v -
+                           start.K * s.u - system.gyroscopicForce(start, s),
                        "run-up");
   return s;
 }
@@ -121,11 +276,12 @@ class EnergyAccount {
 
   void advance(const Instant& i, const TransientState& s) {
     const Eigen::VectorXd du = s.u - u_;
-    const Eigen::VectorXd f0 = f_, c0 = Cv_, g0 = gyro_;
+    const Eigen::VectorXd f0 = f_, c0 = Cv_, g0 = gyro_, n0 = film_;
     measure(i, s);
     work_ += du.dot(f0 + f_) / 2;
     dissipated_ += du.dot(c0 + Cv_) / 2;
     gyroscopic_ += du.dot(g0 + gyro_) / 2;
+    filmWork_ -= du.dot(n0 + film_) / 2;
   }
 
   void record(RunUpEnergy& e) const {
@@ -134,6 +290,7 @@ class EnergyAccount {
     e.dissipated.push_back(dissipated_);
     e.work.push_back(work_);
     e.gyroscopic.push_back(gyroscopic_);
+    e.film.push_back(filmWork_);
   }
 
  private:
@@ -142,13 +299,14 @@ class EnergyAccount {
     f_ = i.f;
     Cv_ = i.C * s.v;
     gyro_ = system_.gyroscopicForce(i, s);
+    film_ = system_.films(s.u, s.v, i.speed).force;
     kinetic_ = 0.5 * s.v.dot(system_.rotor().mass() * s.v);
     strain_ = 0.5 * s.u.dot(i.K * s.u);
   }
 
   const RunUpSystem& system_;
-  Eigen::VectorXd u_, f_, Cv_, gyro_;
-  double kinetic_ = 0, strain_ = 0, work_ = 0, dissipated_ = 0, gyroscopic_ = 0;
+  Eigen::VectorXd u_, f_, Cv_, gyro_, film_;
+  double kinetic_ = 0, strain_ = 0, work_ = 0, dissipated_ = 0, gyroscopic_ = 0, filmWork_ = 0;
 };
 
 /// The free equations of uy and uz at `node`; throws when either is not free.
@@ -163,28 +321,94 @@ std::pair<int, int> lateralEquations(const RotorSystem& rotor, int node) {
   return {y, z};
 }
 
-}  // namespace
+/// Where the spin comes from: a prescribed profile, or a drive whose speed is a state.
+struct SpinSource {
+  const SpeedProfile* profile = nullptr;
+  const SpeedDrive* drive = nullptr;
+  double duration() const { return profile ? profile->duration() : drive->duration; }
+  double startSpeed() const { return profile ? profile->startSpeed() : drive->startSpeed; }
+  Spin prescribed(double t) const {
+    return {profile->speed(t), profile->acceleration(t), profile->angle(t)};
+  }
+};
 
-RunUpResult solveRunUp(const Model& model, const SpeedProfile& profile,
-                       const RunUpOptions& o) {
+/// One implicit step's outcome: the state at t_n+1, the films there, Newton's iterations.
+struct StepOutcome {
+  TransientState state;
+  FilmForces films;
+  int iterations = 0;
+};
+
+RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptions& o) {
   Stopwatch clock, total;
   const NewmarkRule rule(o.timeStep, o.hhtAlpha);
   if (o.sampleEvery < 1) throw std::invalid_argument("run-up: sampleEvery must be at least 1");
-  const RunUpSystem system(model, profile, o);
+  const RunUpSystem system(model, source.startSpeed(), o);
   const RotorSystem& rotor = system.rotor();
   std::vector<std::pair<int, int>> recorded;
   for (int node : o.nodes) recorded.push_back(lateralEquations(rotor, node));
 
   RunUpResult out;
   out.timeStep = o.timeStep;
-  out.steps = std::max(1, int(std::lround(profile.duration() / o.timeStep)));
+  out.steps = std::max(1, int(std::lround(source.duration() / o.timeStep)));
   out.histories.resize(o.nodes.size());
   std::vector<RevolutionAmplitude> trackers(o.nodes.size());
   for (std::size_t k = 0; k < o.nodes.size(); ++k) out.histories[k].node = o.nodes[k];
+  out.driven = source.drive != nullptr;
+
+  double smallestClearance = std::numeric_limits<double>::infinity();
+  for (const NonlinearJournal& j : o.journals)
+    smallestClearance = std::min(smallestClearance, j.film->clearance());
+  const double tolerance = o.newtonTolerance * smallestClearance;  // m
+
+  // The drive's torque balance J Omega' = T(t, Omega) - T_unbalance for Omega' when Omega
+  // follows it by the trapezoid rule from (Omega_n, Omega'_n) over dt (Newton on a piecewise
+  // linear T: exact in two iterations on one piece).
+  const SpeedDrive* drive = source.drive;
+  if (drive && !(drive->inertia > 0))
+    throw std::invalid_argument("run-up: a driven speed needs a positive polar inertia");
+  const auto balance = [&](double t, double speed, double acceleration, double dt,
+                           double unbalanceTorque) {
+    double x = acceleration;
+    for (int k = 0; k < 50; ++k) {
+      const double w = speed + dt / 2 * (acceleration + x);
+      const double g = drive->inertia * x - drive->torque.at(t, w) + unbalanceTorque;
+      const double dx = g / (drive->inertia - drive->torque.slope(t, w) * dt / 2);
+      x -= dx;
+      if (std::abs(dx) <= 1e-15 * (std::abs(x) + std::abs(drive->torque.at(t, w)) / drive->inertia))
+        break;
+    }
+    return x;
+  };
+  // The drive's torque tolerance on Omega' between the lateral step and the balance.
+  const auto settled = [&](double a, double b, double t, double speed) {
+    return std::abs(a - b) <=
+           1e-12 * (std::abs(a) + std::abs(drive->torque.at(t, speed)) / drive->inertia + 1e-300);
+  };
 
   RepeatedFactor<double> factor;
-  Instant now = system.at(0);
-  TransientState s = initialState(system, now, o.start, factor);
+  Spin spin;
+  Instant now;
+  TransientState s;
+  double unbalanceTorque = 0;
+  if (drive) {
+    // Omega'_0 and the state's acceleration depend on each other through the unbalance's
+    // tangential force and torque: a fixed point (a contraction: the coupling is (m e)^2 / (m J)).
+    spin = {drive->startSpeed, drive->torque.at(0, drive->startSpeed) / drive->inertia, 0};
+    for (int k = 0;; ++k) {
+      now = system.at(0, spin);
+      s = initialState(system, now, o.start, tolerance, factor);
+      unbalanceTorque = system.unbalanceTorque(s.a, 0);
+      const double a = (drive->torque.at(0, spin.speed) - unbalanceTorque) / drive->inertia;
+      if (settled(a, spin.acceleration, 0, spin.speed) || o.unbalance.empty()) break;
+      if (k == 50) throw SolveError("run-up: the drive's start acceleration did not settle");
+      spin.acceleration = a;
+    }
+  } else {
+    spin = source.prescribed(0);
+    now = system.at(0, spin);
+    s = initialState(system, now, o.start, tolerance, factor);
+  }
   EnergyAccount energy(system, now, s);
   out.time.assembly = clock.lap();
 
@@ -200,41 +424,145 @@ RunUpResult solveRunUp(const Model& model, const SpeedProfile& profile,
     out.times.push_back(now.t);
     out.speed.push_back(now.speed);
     out.angle.push_back(now.angle);
+    if (drive) {
+      out.driveTorque.push_back(drive->torque.at(now.t, now.speed));
+      out.unbalanceTorque.push_back(unbalanceTorque);
+    }
     energy.record(out.energy);
   };
   sample(true);
 
   // HHT with matrices that change in time (alpha = 0: the average acceleration rule):
   //   M a_n+1 + (1 + alpha) r_n+1 - alpha r_n = (1 + alpha) f_n+1 - alpha f_n,
-  // r = (C + Omega G) v + (K + Omega' G) u, one solve for a_n+1 with the effective matrix
-  //   S = M + (1 + alpha) [gamma dt (C + Omega G) + beta dt^2 (K + Omega' G)] at t_n+1.
+  // r = (C + Omega G) v + (K + Omega' G) u - F_films(u, v), solved for a_n+1 with
+  //   S = M + (1 + alpha) [gamma dt (C + Omega G + C_films) + beta dt^2 (K + Omega' G + K_films)]
+  // at t_n+1: one solve without films, Newton's iterations with them (u and v follow a_n+1
+  // through the rule; the films' slopes at the last iterate).
   const double a1 = 1 + rule.alpha, dt = rule.dt;
-  Eigen::VectorXd uPredicted, vPredicted;
-  Eigen::VectorXd residual = now.f - now.C * s.v - now.K * s.u - system.gyroscopicForce(now, s);
-  for (int step = 1; step <= out.steps; ++step) {
-    Instant next = system.at(step * dt);
+  const bool nonlinear = !system.journals().empty();
+  for (const PlacedJournal& j : system.journals()) {
+    JournalTrack t;
+    t.name = j.journal->name;
+    t.clearance = j.journal->film->clearance();
+    t.startEccentricity = j.offset.norm() / t.clearance;
+    out.journals.push_back(std::move(t));
+  }
+  const auto trackJournals = [&](bool keep) {
+    for (std::size_t k = 0; k < out.journals.size(); ++k) {
+      const PlacedJournal& j = system.journals()[k];
+      JournalTrack& t = out.journals[k];
+      const Eigen::Vector2d x = j.offset + Eigen::Vector2d(s.u[j.y], s.u[j.z]);
+      const double e = x.norm() / t.clearance;
+      t.largestEccentricity = std::max(t.largestEccentricity, e);
+      if (!keep) continue;
+      t.y.push_back(x[0]);
+      t.z.push_back(x[1]);
+      t.eccentricity.push_back(e);
+    }
+  };
+  trackJournals(true);
+  FilmForces films = system.films(s.u, s.v, now.speed);
+  Eigen::VectorXd residual =
+      now.f + films.force - now.C * s.v - now.K * s.u - system.gyroscopicForce(now, s);
+
+  const auto lateralStep = [&](const Instant& next) {
     const SparseMatrix damping = next.C + next.speed * rotor.gyroscopic();
     const SparseMatrix stiffness = next.K + next.acceleration * rotor.gyroscopic();
     const SparseMatrix S =
         rotor.mass() + (a1 * rule.gamma * dt) * damping + (a1 * rule.beta * dt * dt) * stiffness;
-    out.time.assembly += clock.lap();
-    if (!factor.factorize(S)) {
-      std::ostringstream msg;
-      msg << "run-up: the effective matrix M + gamma dt C + beta dt^2 K is singular at t = "
-          << next.t << " s (UMFPACK rcond = " << factor.rcond()
-          << "): some free dof has neither mass nor stiffness";
-      throw SolveError(msg.str());
-    }
-    out.time.factor += clock.lap();
+    Eigen::VectorXd uPredicted, vPredicted;
     rule.predict(s, uPredicted, vPredicted);
-    const Eigen::VectorXd rhs =
-        a1 * (next.f - damping * vPredicted - stiffness * uPredicted) - rule.alpha * residual;
-    rule.correct(s, uPredicted, vPredicted, factor.solve(rhs));
-    s.t = next.t;  // the step's own time, free of the sum's round-off
-    residual = next.f - damping * s.v - stiffness * s.u;
+    Eigen::VectorXd a = Eigen::VectorXd::Zero(s.u.size()), u = uPredicted, v = vPredicted;
+    out.time.assembly += clock.lap();
+    StepOutcome step;
+    for (int iteration = 1;; ++iteration) {
+      try {
+        step.films = system.films(u, v, next.speed);
+      } catch (const JournalLeftClearance& e) {
+        std::ostringstream msg;
+        msg << "run-up at t = " << next.t << " s (" << next.speed * 30 / std::numbers::pi
+            << " rpm), " << e.what();
+        throw JournalLeftClearance(msg.str());
+      }
+      SparseMatrix tangent = S;
+      system.addTangents(tangent, step.films, a1 * rule.beta * dt * dt, a1 * rule.gamma * dt);
+      if (!factor.factorize(tangent)) {
+        std::ostringstream msg;
+        msg << "run-up: the effective matrix M + gamma dt C + beta dt^2 K is singular at t = "
+            << next.t << " s (UMFPACK rcond = " << factor.rcond()
+            << "): some free dof has neither mass nor stiffness";
+        throw SolveError(msg.str());
+      }
+      out.time.factor += clock.lap();
+      const Eigen::VectorXd rhs = a1 * (next.f + step.films.force - damping * v - stiffness * u) -
+                                  rule.alpha * residual - rotor.mass() * a;
+      const Eigen::VectorXd da = factor.solve(rhs);
+      a += da;
+      u = uPredicted + (rule.beta * dt * dt) * a;
+      v = vPredicted + (rule.gamma * dt) * a;
+      step.iterations = iteration;
+      if (!nonlinear) break;  // linear: the one solve is exact
+      if ((rule.beta * dt * dt) * da.lpNorm<Eigen::Infinity>() <= tolerance) break;
+      if (iteration == kMostNewtonIterations) {
+        std::ostringstream msg;
+        msg << "run-up: Newton's iterations on the journal films did not converge in "
+            << kMostNewtonIterations << " iterations at t = " << next.t << " s (try a smaller dt)";
+        throw SolveError(msg.str());
+      }
+    }
+    step.state = s;
+    rule.correct(step.state, uPredicted, vPredicted, a);
+    step.state.t = next.t;  // the step's own time, free of the sum's round-off
+    if (nonlinear) step.films = system.films(step.state.u, step.state.v, next.speed);
+    out.time.solve += clock.lap();
+    return step;
+  };
+
+  for (int step = 1; step <= out.steps; ++step) {
+    const double t = step * dt;
+    Instant next;
+    StepOutcome outcome;
+    if (!drive) {
+      next = system.at(t, source.prescribed(t));
+      outcome = lateralStep(next);
+    } else {
+      // The speed by the trapezoid rule, the angle by the average acceleration rule, from the
+      // torque balance at t_n+1; the unbalance torque from the lateral step, iterated to a fixed
+      // point (one pass without unbalance).
+      const auto spinOf = [&](double acceleration) {
+        return Spin{
+            spin.speed + dt / 2 * (spin.acceleration + acceleration), acceleration,
+            spin.angle + dt * spin.speed + dt * dt / 4 * (spin.acceleration + acceleration)};
+      };
+      double acceleration = balance(t, spin.speed, spin.acceleration, dt, unbalanceTorque);
+      for (int pass = 0;; ++pass) {
+        next = system.at(t, spinOf(acceleration));
+        outcome = lateralStep(next);
+        if (o.unbalance.empty()) break;
+        unbalanceTorque = system.unbalanceTorque(outcome.state.a, next.angle);
+        const double settledAcceleration =
+            balance(t, spin.speed, spin.acceleration, dt, unbalanceTorque);
+        if (settled(settledAcceleration, acceleration, t, next.speed)) break;
+        if (pass == 50)
+          throw SolveError(
+              "run-up: the drive's speed and the rotor's motion did not settle in "
+              "a step at t = " +
+              std::to_string(t) + " s");
+        acceleration = settledAcceleration;
+      }
+      spin = {next.speed, next.acceleration, next.angle};
+    }
+    out.newtonIterations += outcome.iterations;
+    out.mostNewtonIterations = std::max(out.mostNewtonIterations, outcome.iterations);
+    s = std::move(outcome.state);
+    films = std::move(outcome.films);
+    residual = next.f + films.force - (next.C + next.speed * rotor.gyroscopic()) * s.v -
+               (next.K + next.acceleration * rotor.gyroscopic()) * s.u;
     now = std::move(next);
     energy.advance(now, s);
-    sample(step % o.sampleEvery == 0 || step == out.steps);
+    const bool keep = step % o.sampleEvery == 0 || step == out.steps;
+    sample(keep);
+    trackJournals(keep);
     out.time.solve += clock.lap();
   }
 
@@ -252,6 +580,24 @@ RunUpResult solveRunUp(const Model& model, const SpeedProfile& profile,
   out.size = rotor.systemSize(factor.factorEntries());
   out.time.total = total.lap();
   return out;
+}
+
+}  // namespace
+
+RunUpResult solveRunUp(const Model& model, const SpeedProfile& profile, const RunUpOptions& o) {
+  SpinSource source;
+  source.profile = &profile;
+  return runUp(model, source, o);
+}
+
+RunUpResult solveRunUp(const Model& model, const SpeedDrive& drive, const RunUpOptions& o) {
+  if (!(drive.duration > 0) || !std::isfinite(drive.duration))
+    throw std::invalid_argument("run-up: a driven run needs a positive duration");
+  if (!(drive.startSpeed >= 0))
+    throw std::invalid_argument("run-up: a driven run starts at a speed >= 0");
+  SpinSource source;
+  source.drive = &drive;
+  return runUp(model, source, o);
 }
 
 }  // namespace beamrotor

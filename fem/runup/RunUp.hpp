@@ -18,6 +18,10 @@
 // U_c the moments of its two opposite heavy spots.
 // The effective matrix changes with the speed: it is factorised each step on one symbolic
 // analysis (a step at an unchanged speed keeps its factor).
+// Journal bearings may act by their film force instead (fem/runup/JournalFilm.hpp): the force
+// at the journal's instantaneous position and velocity and the instantaneous speed, in place of
+// their linear coefficients; each implicit step is then solved by Newton's method on the film's
+// exact derivatives (docs/runup.md).
 #pragma once
 
 #include <Eigen/Dense>
@@ -28,7 +32,9 @@
 #include "fem/model/Results.hpp"
 #include "fem/rotor/RotorSystem.hpp"
 #include "fem/rotor/RotorUnbalance.hpp"
+#include "fem/runup/JournalFilm.hpp"
 #include "fem/runup/RevolutionAmplitude.hpp"
+#include "fem/runup/SpeedDrive.hpp"
 #include "fem/runup/SpeedProfile.hpp"
 
 namespace beamrotor {
@@ -44,14 +50,30 @@ enum class RunUpStart {
 };
 
 struct RunUpOptions {
-  double timeStep = 0;   ///< s, constant
-  double hhtAlpha = 0;   ///< in [-1/3, 0]; 0: Newmark's average acceleration rule
+  double timeStep = 0;  ///< s, constant
+  double hhtAlpha = 0;  ///< in [-1/3, 0]; 0: Newmark's average acceleration rule
   RunUpStart start = RunUpStart::rest;
   std::vector<Unbalance> unbalance;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< m/s^2, global
   ProportionalDamping damping;
   std::vector<int> nodes;  ///< nodes whose uy, uz are recorded (histories and amplitudes)
   int sampleEvery = 1;     ///< histories kept every n steps (and the last); amplitudes use all
+  /// Bearings acting by their nonlinear film force (their linear coefficients are taken out)
+  std::vector<NonlinearJournal> journals;
+  /// Newton's tolerance on the state: a step is converged when its last correction moved no
+  /// dof by more than this fraction of the smallest journal clearance
+  double newtonTolerance = 1e-10;
+};
+
+/// A nonlinear journal's motion in its bearing at RunUpResult::times.
+struct JournalTrack {
+  std::string name;
+  double clearance = 0;  ///< c (m)
+  /// The journal centre from the bearing's centre (m, global y and z)
+  std::vector<double> y, z;
+  std::vector<double> eccentricity;  ///< |journal centre - bearing centre| / c
+  double largestEccentricity = 0;    ///< over every step, not only the samples
+  double startEccentricity = 0;      ///< the film's own equilibrium at the start speed
 };
 
 /// One recorded node's motion (m, global y and z) at RunUpResult::times.
@@ -73,32 +95,47 @@ struct RunUpEnergy {
   /// Work of the unbalance forces and gravity so far (trapezoidal in the displacement
   /// increments, as the average acceleration rule's own balance)
   std::vector<double> work;
+  /// Work done against the nonlinear films and the loads they carry so far (trapezoidal)
+  std::vector<double> film;
   /// Work done against Omega G q' + Omega' G q so far: the first part is zero in the
   /// continuous system (G skew), the second is the drive's, -integral of Omega' q'^T G q
   std::vector<double> gyroscopic;
   double balance(std::size_t i) const {
-    return kinetic[i] + strain[i] + dissipated[i] + gyroscopic[i] - work[i] -
+    return kinetic[i] + strain[i] + dissipated[i] + gyroscopic[i] + film[i] - work[i] -
            (kinetic[0] + strain[0]);
   }
 };
 
 struct RunUpResult {
-  std::vector<double> times;   ///< sample times (s), t = 0 included
-  std::vector<double> speed;   ///< Omega at the samples (rad/s)
-  std::vector<double> angle;   ///< phi at the samples (rad)
+  std::vector<double> times;  ///< sample times (s), t = 0 included
+  std::vector<double> speed;  ///< Omega at the samples (rad/s)
+  std::vector<double> angle;  ///< phi at the samples (rad)
+  bool driven = false;        ///< the speed driven by a torque (SpeedDrive), not prescribed
+  /// Driven: the drive's torque and the unbalances' torque on the spin at the samples (N m)
+  std::vector<double> driveTorque, unbalanceTorque;
   std::vector<RunUpHistory> histories;  ///< one per requested node, in request order
   RunUpEnergy energy;
   double timeStep = 0;  ///< s
   int steps = 0;
-  int factorizations = 0;  ///< numeric factorisations of the effective matrix
+  int factorizations = 0;              ///< numeric factorisations of the effective matrix
+  std::vector<JournalTrack> journals;  ///< one per nonlinear journal, in RunUpOptions' order
+  int newtonIterations = 0;            ///< over all steps (one per step without nonlinear journals)
+  int mostNewtonIterations = 0;        ///< in any one step
   SystemSize size;
   SolveTimings time;
 };
 
 /// Runs the rotor through `profile`. Throws std::invalid_argument for bad options (a
 /// non-positive step, alpha outside [-1/3, 0], an unbalance or recorded node without free uy
-/// and uz) and SolveError for a singular effective matrix.
+/// and uz) and SolveError for a singular effective matrix or a Newton iteration that does not
+/// converge; JournalLeftClearance when a journal reaches its bearing's wall.
 RunUpResult solveRunUp(const Model& model, const SpeedProfile& profile,
                        const RunUpOptions& options);
+
+/// Runs the rotor with its speed driven by `drive` (fem/runup/SpeedDrive.hpp): J Omega' =
+/// T(t, Omega) - T_unbalance, Omega by the trapezoid rule and phi by the average acceleration
+/// rule, solved with each step's lateral motion. Throws as the prescribed run, and
+/// std::invalid_argument for a non-positive inertia or duration.
+RunUpResult solveRunUp(const Model& model, const SpeedDrive& drive, const RunUpOptions& options);
 
 }  // namespace beamrotor

@@ -320,6 +320,10 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome&
       << " steps of " << formatValue(r.timeStep) << " s ("
       << (o.alpha == 0 ? std::string("newmark") : "hht alpha " + formatValue(o.alpha)) << ", "
       << formatValue(r.time.total) << " s)\n";
+  if (r.driven && !r.speed.empty())
+    out << "    speed driven by a torque on " << formatValue(o.inertia) << " kg m^2"
+        << " of polar inertia: " << rpmText(r.speed.back() * kRpm, units) << " at the end (torque "
+        << valueText(r.driveTorque.back(), "N m", units) << ")\n";
   for (std::size_t k = 0; k < o.responsePoints.size(); ++k) {
     const RunUpHistory& h = r.histories[k];
     out << "    " << o.responsePoints[k] << ": ";
@@ -331,12 +335,23 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome&
         << rpmText(h.speedAtPeak * kRpm, units) << " (t = " << formatValue(h.timeAtPeak)
         << " s)\n";
   }
+  for (const JournalTrack& j : r.journals)
+    out << "    journal '" << j.name << "' on its film: eccentricity "
+        << formatValue(j.startEccentricity) << " at the start, at most "
+        << formatValue(j.largestEccentricity) << " (c = " << valueText(j.clearance, "m", units)
+        << ")\n";
+  if (!r.journals.empty())
+    out << "    Newton: " << r.newtonIterations << " iterations over " << r.steps
+        << " steps, at most " << r.mostNewtonIterations << " in one\n";
   const RunUpEnergy& e = r.energy;
   if (!e.kinetic.empty()) {
     const std::size_t last = e.kinetic.size() - 1;
     out << "    energy at the end: kinetic " << valueText(e.kinetic[last], "J", units)
         << ", strain " << valueText(e.strain[last], "J", units) << ", dissipated "
-        << valueText(e.dissipated[last], "J", units) << ", work of unbalance and gravity "
+        << valueText(e.dissipated[last], "J", units)
+        << (r.journals.empty() ? std::string()
+                               : ", against the films " + valueText(e.film[last], "J", units))
+        << ", work of unbalance and gravity "
         << valueText(e.work[last], "J", units) << " (balance "
         << valueText(e.balance(last), "J", units) << ")\n";
   }

@@ -40,8 +40,9 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
       return kRpmField;
     case K::unbalanceAmplitude:
       return {dim::length};
-    case K::runUp:  // the peak amplitude (m), or the speed it occurs at (rpm)
+    case K::runUp:  // the peak amplitude (m), a journal's eccentricity ratio, or a speed (rpm)
       if (q.property == "peak") return {dim::length};
+      if (q.property == "eccentricity") return {dim::none};
       return kRpmField;
     case K::rigidBody: {
       const std::string& p = q.property;

@@ -23,6 +23,7 @@ constexpr const char* kGrammar =
     "'instability_onset', "
     "'unbalance_amplitude POINT at RPM', "
     "'rigid_body PROPERTY', 'level1 PROPERTY', 'runup peak|speed_at_peak POINT', "
+    "'runup eccentricity BEARING', 'runup end_speed', "
     "'crank PROPERTY', 'crank PROPERTY at LAMBDA', "
     "'crank PROPERTY at PHI deg', 'torsion torque NAME', 'torsion twist STATION', "
     "'history NAME max|min|maxabs', 'history NAME at TIME', 'resultant N|Vy|Vz|T|My|Mz at POINT', "

@@ -30,6 +30,8 @@
 //   unbalance_amplitude POINT at RPM   orbit semi-major axis of POINT at RPM (m)
 //   runup peak POINT          largest per-revolution amplitude of POINT in a run-up (m)
 //   runup speed_at_peak POINT the speed of the revolution where it occurs (rpm)
+//   runup eccentricity BEARING the largest eccentricity ratio of a nonlinear journal (-)
+//   runup end_speed          the speed at the end of the run (rpm; a driven speed's result)
 //   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
 //                             (N, per unit modal amplitude) of a rigid-body analysis
 // those of the response-spectrum analysis (structure/SpectrumQuantity.hpp):

@@ -102,6 +102,13 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
     case Quantity::Kind::runUp: {
       const auto* r = resultOf<RunUpOutcome>(outcome);
       if (!r) throw std::invalid_argument(name + " is not a run-up analysis");
+      if (q.property == "end_speed")
+        return r->runUp.speed.empty() ? 0.0 : r->runUp.speed.back() * kRpm;
+      if (q.property == "eccentricity") {
+        for (const JournalTrack& j : r->runUp.journals)
+          if (j.name == q.target) return j.largestEccentricity;
+        throw std::invalid_argument(name + " has no nonlinear journal bearing '" + q.target + "'");
+      }
       for (std::size_t k = 0; k < r->responsePoints.size(); ++k) {
         if (r->responsePoints[k] != q.target) continue;
         const RunUpHistory& h = r->runUp.histories[k];

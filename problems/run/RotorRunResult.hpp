@@ -139,6 +139,7 @@ struct RunUpOutcome {
   std::vector<std::string> responsePoints;  ///< names of runUp.histories' nodes, in order
   bool steadyStart = false;                 ///< started on the steady orbit (else at rest)
   double alpha = 0;                         ///< HHT's alpha (0: average acceleration)
+  double inertia = 0;  ///< driven speed: the polar inertia driven (kg m^2); 0 when prescribed
 };
 
 /// The result of any rotor analysis: the writers take each through one overload set

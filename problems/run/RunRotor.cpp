@@ -7,13 +7,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
 
 #include "elements/Bearing.hpp"
+#include "elements/PointInertia.hpp"
 #include "elements/BearingOnPedestal.hpp"
+#include "elements/ShortJournalFilm.hpp"
 #include "elements/Spring.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
@@ -189,6 +192,59 @@ CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily&
   return out;
 }
 
+/// The deck's plain journal bearings as films (run-up `bearings: nonlinear`): each replaces
+/// its model element's coefficients, its load along the bearing's -x_b.
+std::vector<NonlinearJournal> nonlinearJournals(const Deck& deck, const Model& model) {
+  std::vector<NonlinearJournal> out;
+  for (const DeckBearing& b : deck.rotor.bearings) {
+    if (!b.journal || b.tiltingPads) continue;
+    NonlinearJournal j;
+    j.name = b.name;
+    j.node = model.node(b.point);
+    for (const auto& [name, element] : model.namedElements())
+      if (name == b.name) j.element = element;
+    j.film = std::make_shared<ShortJournalFilm>(*b.journal);
+    j.load = -b.journal->load * Eigen::Vector2d(std::cos(b.loadAngle), std::sin(b.loadAngle));
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+/// The polar inertia (kg m^2) of the model's spinning parts about the shaft's axis: each
+/// mass's Jp and each shaft element's rho Ip L.
+double rotorPolarInertia(const Model& model) {
+  double J = 0;
+  for (const auto& e : model.elements()) {
+    if (const auto* p = dynamic_cast<const PointInertia*>(e.get())) J += p->Jp();
+    if (const LineElement* line = asLine(e)) {
+      const Section& section = line->section();
+      J += section.material.rho * section.Ip() * line->length();
+    }
+  }
+  return J;
+}
+
+/// The run-up's torque drive (`speed:`): its torque, the rotor's polar inertia plus the extra.
+SpeedDrive speedDriveOf(const DeckRunUp& d, const Model& model) {
+  const DeckDrive& deck = *d.drive;
+  SpeedDrive drive;
+  switch (deck.kind) {
+    case DeckDrive::Kind::constant:
+      drive.torque = DriveTorque::constant(deck.torques.front());
+      break;
+    case DeckDrive::Kind::time:
+      drive.torque = DriveTorque::againstTime(deck.x, deck.torques);
+      break;
+    case DeckDrive::Kind::speed:
+      drive.torque = DriveTorque::againstSpeed(deck.x, deck.torques);
+      break;
+  }
+  drive.inertia = rotorPolarInertia(model) + deck.extraInertia;
+  drive.startSpeed = d.speeds.front();
+  drive.duration = d.times.back();
+  return drive;
+}
+
 RunUpOutcome runRunUp(const Deck& deck, const RotorFamily& s, const Model& model) {
   const DeckRotorAnalysis& r = s.rotor;
   const DeckRunUp& d = r.runUp;
@@ -201,8 +257,19 @@ RunUpOutcome runRunUp(const Deck& deck, const RotorFamily& s, const Model& model
   o.damping = deck.rotor.damping;
   for (const std::string& p : r.response) o.nodes.push_back(model.node(p));
   o.sampleEvery = d.sampleEvery;
+  if (d.nonlinearBearings) o.journals = nonlinearJournals(deck, model);
   RunUpOutcome out;
-  out.runUp = solveRunUp(model, SpeedProfile::table(d.times, d.speeds), o);
+  if (d.drive) {
+    const SpeedDrive drive = speedDriveOf(d, model);
+    if (!(drive.inertia > 0))
+      throw std::invalid_argument(
+          "speed: the rotor has no polar inertia to drive (no mass has Jp and no shaft has "
+          "density): give speed: {inertia: ...} (kg*m^2)");
+    out.runUp = solveRunUp(model, drive, o);
+    out.inertia = drive.inertia;
+  } else {
+    out.runUp = solveRunUp(model, SpeedProfile::table(d.times, d.speeds), o);
+  }
   out.responsePoints = r.response;
   out.steadyStart = d.steadyStart;
   out.alpha = d.alpha;

@@ -31,6 +31,35 @@ analyses:
 }  // namespace
 
 TEST_SUITE("rotor decks") {
+  TEST_CASE("run-up on journal films driven by a motor: every output, the closed-form speed") {
+    const test::SolvedDeck solved =
+        test::solveShippedDeckToScratch("journal_runup.yaml", "journal-runup-deck");
+    const nlohmann::json results = solved.json("results.json");
+    nlohmann::json runUp;
+    for (const auto& a : results["analyses"])
+      if (a["type"] == "run-up") runUp = a;
+    REQUIRE(runUp.is_object());
+    CHECK(runUp["speed_driven"] == true);
+    CHECK(runUp["bearings"] == "nonlinear");
+    // The motor's closed form (the header): 3986.66 rpm, the unbalance's torque leaving 1.2e-5.
+    CHECK(runUp["end_rpm"].get<double>() == doctest::Approx(3986.66).epsilon(1e-4));
+    CHECK(runUp["polar_inertia"].get<double>() == doctest::Approx(0.1).epsilon(1e-15));
+    REQUIRE(runUp["journals"].size() == 2);
+    const double eps = runUp["journals"][0]["start_eccentricity"].get<double>();
+    CHECK(eps > 0.6);  // Ocvirk's equilibrium at 1200 rpm: 0.70
+    CHECK(runUp["journals"][0]["largest_eccentricity"].get<double>() < 1);
+    CHECK(std::abs(runUp["energy"]["balance"].get<double>()) <
+          1e-6 * runUp["energy"]["work"].get<double>());
+    for (const auto& check : results["checks"]) CHECK(check["pass"] == true);
+    CHECK(solved.process.out.find("journal 'left' on its film") != std::string::npos);
+    CHECK(solved.process.out.find("speed driven by a torque") != std::string::npos);
+    const auto history = test::csvCells(solved.dir / "films_runup_history.csv");
+    for (const char* column : {"left_eccentricity", "right_y", "drive_torque", "film"})
+      CHECK(test::csvColumn(history[0], column) >= 0);
+    CHECK(std::filesystem::exists(solved.dir / "films_runup_journals.png"));
+    std::filesystem::remove_all(solved.dir.parent_path());
+  }
+
   TEST_CASE("run-up deck: the passage's peak in every output, against Runge-Kutta") {
     const test::SolvedDeck solved =
         test::solveShippedDeckToScratch("jeffcott_runup.yaml", "runup-deck");
@@ -74,6 +103,14 @@ TEST_SUITE("rotor decks") {
         {"    speed_table: [[0, 0], [100 s, 100]]\n    dt: 1e-6 s\n", 12, "steps"},
         {"    from_rpm: 0\n    to_rpm: 100\n    duration: 1 s\n    dt: 1 ms\n    start: hot\n",
          15, "steady"},
+        {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
+         "    bearings: nonlinear\n",
+         15, "type: plain-journal"},
+        {"    from_rpm: 100\n    duration: 1 s\n    dt: 1 ms\n    speed: {torque: 5 kg}\n", 14,
+         "moment"},
+        {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
+         "    speed: {torque: 5}\n",
+         12, "torque"},
     };
     for (const Bad& b : cases) {
       CAPTURE(b.lines);

@@ -167,6 +167,20 @@ def test_run_up_tables_hold_the_passage_peak():
     assert peak["speed_at_peak_rpm"] == pytest.approx(2638.7, rel=1e-3)
 
 
+def test_run_up_on_journal_films_driven_by_a_motor():
+    """The journal deck's history: the speed follows the motor curve's closed form
+    Omega_s + (Omega_0 - Omega_s) exp(-t / tau), tau = J Omega_s / T0 (the unbalance's torque
+    leaves 2.1e-5 at most), and the journals stay inside their clearance."""
+    run = beamrotor.solve(PROBLEMS / "journal_runup.yaml", sweep_off=True)
+    history = run.tables["films"]["runup_history"]
+    tau = 0.1 * (7000 * np.pi / 30) / 8
+    closed = 7000 - 5800 * np.exp(-history["time"] / tau)
+    assert np.max(np.abs(history["speed_rpm"] / closed - 1)) < 5e-5
+    for bearing in ("left", "right"):
+        assert np.all(history[bearing + "_eccentricity"] < 1)
+        assert np.all(history[bearing + "_eccentricity"] > 0.3)
+
+
 def test_torsion_of_two_disks(tmp_path):
     # Two disks (Jp 2 and 3 kg m^2) on a light round shaft (D 50 mm, 1 m, G 80 GPa), free:
     # omega^2 = k (J1 + J2) / (J1 J2), k = G pi D^4 / 32 / L; the shaft's inertia is 1e-12

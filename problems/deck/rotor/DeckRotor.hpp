@@ -94,6 +94,16 @@ struct DeckTwoDofBody {
   double C1 = 0, C2 = 0;        ///< spring stiffnesses at A and B (N/m)
 };
 
+/// run-up `speed:` the speed driven by a torque (fem/runup/SpeedDrive.hpp) against the rotor's
+/// polar inertia plus `inertia`: a constant torque, a table against time or a motor curve.
+struct DeckDrive {
+  enum class Kind { constant, time, speed };
+  Kind kind = Kind::constant;
+  std::vector<double> x;        ///< time (s) or speed (rad/s) of each point; {0} for constant
+  std::vector<double> torques;  ///< N m
+  double extraInertia = 0;      ///< kg m^2, added to the model's spinning parts
+};
+
 /// run-up: the spin speed against time and the time grid (fem/runup/RunUp.hpp).
 struct DeckRunUp {
   std::vector<double> times;   ///< s, from 0, strictly ascending (a ramp: 0 and its duration)
@@ -103,6 +113,11 @@ struct DeckRunUp {
   bool steadyStart = false;    ///< start on the steady unbalance orbit (else at rest)
   std::array<double, 3> gravity{0, 0, 0};  ///< m/s^2, global; zero without `gravity:`
   int sampleEvery = 1;                     ///< histories kept every n steps
+  /// `bearings: nonlinear`: the plain journal bearings act by their film force at the
+  /// journal's instantaneous position and velocity (fem/runup/JournalFilm.hpp)
+  bool nonlinearBearings = false;
+  /// `speed:` driven by a torque; times then holds {0, duration} and speeds the start speed
+  std::optional<DeckDrive> drive;
 };
 
 struct DeckRotorAnalysis {

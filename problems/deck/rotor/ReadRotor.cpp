@@ -443,15 +443,84 @@ std::array<double, 3> readGravity(const Context& c, const Field& f) {
   return {0, direction.back() == 'y' ? sign * g : 0, direction.back() == 'z' ? sign * g : 0};
 }
 
+/// run-up `speed:` {torque: N*m} | {torque_table: [[t, N*m], ...]} | {motor: [[rpm, N*m], ...]},
+/// with an optional `inertia:` (kg m^2) added to the rotor's own polar inertia.
+DeckDrive readDrive(const Context& c, const Field& f) {
+  if (!f.isMap())
+    f.fail("expected {torque: N*m}, {torque_table: [[t, N*m], ...]} or {motor: [[rpm, N*m], "
+           "...]}, got " + f.describe());
+  f.allowOnly({"torque", "torque_table", "motor", "inertia"}, "a driven speed");
+  const ExpressionEvaluator& ev = c.evaluator;
+  DeckDrive d;
+  const int given = int(f.has("torque")) + int(f.has("torque_table")) + int(f.has("motor"));
+  if (given != 1) f.fail("give one of torque, torque_table or motor");
+  if (auto t = f.get("torque")) {
+    d.x = {0};
+    d.torques = {t->number(ev, dim::moment)};
+  } else {
+    const bool motor = f.has("motor");
+    const Field table = f.require(motor ? "motor" : "torque_table");
+    d.kind = motor ? DeckDrive::Kind::speed : DeckDrive::Kind::time;
+    for (const Field& row : table.items()) {
+      const std::vector<Field> pair = row.isList() ? row.items() : std::vector<Field>{};
+      if (pair.size() != 2)
+        row.fail(std::string("expected a row [") + (motor ? "rpm" : "t") + ", N*m], got " +
+                 row.describe());
+      const double x = motor ? pair[0].nonNegative(ev, kRpmField) * kRadPerRpm
+                             : pair[0].nonNegative(ev, dim::time);
+      if (!motor && d.x.empty() && x != 0) pair[0].fail("the table starts at t = 0");
+      if (!d.x.empty() && !(x > d.x.back()))
+        pair[0].fail(std::string(motor ? "speeds" : "times") + " must ascend strictly");
+      d.x.push_back(x);
+      d.torques.push_back(pair[1].number(ev, dim::moment));
+    }
+    if (d.x.size() < 2) table.fail("a torque table needs at least two rows");
+  }
+  if (auto j = f.get("inertia")) d.extraInertia = j->nonNegative(ev, dim::inertia);
+  return d;
+}
+
+/// run-up `bearings: nonlinear`: the deck's plain journal bearings (short theory) act by their
+/// films; the other bearings keep their coefficients.
+void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u) {
+  bool any = false;
+  for (const DeckBearing& b : c.deck.rotor.bearings) {
+    if (!b.journal || b.tiltingPads) continue;
+    if (b.pedestal)
+      f.fail("bearing '" + b.name + "' stands on a pedestal: its film force acts between journal "
+             "and ground in a nonlinear run-up (remove the pedestal or run bearings: linear)");
+    if (b.journalModel != DeckBearing::JournalModel::shortBearing)
+      f.fail("bearing '" + b.name + "' uses the finite film: the nonlinear run-up has the short "
+             "bearing's film (model: short, L/D <= 1); run bearings: linear for it");
+    any = true;
+  }
+  if (!any)
+    f.fail("bearings: nonlinear puts the plain journal bearings' film forces in place of their "
+           "coefficients; the deck has none (type: plain-journal)");
+  if (!(u.speeds.front() > 0))
+    f.fail("a journal bearing carries its load on a film only when the shaft turns: a nonlinear "
+           "run-up starts at a speed above 0");
+}
+
 /// run-up: the speed against time (a ramp from_rpm -> to_rpm over duration, or speed_table
 /// rows [t, rpm]), the time grid and scheme, the start, gravity, unbalance and response.
 void readRunUp(const Context& c, const Field& f, DeckRotorAnalysis& r) {
-  f.allowOnly({"type", "name", "from_rpm", "to_rpm", "duration", "speed_table", "dt", "scheme",
-               "alpha", "start", "gravity", "sample_every", "unbalance", "response"},
+  f.allowOnly({"type", "name", "from_rpm", "to_rpm", "duration", "speed_table", "speed", "dt",
+               "scheme", "alpha", "start", "gravity", "sample_every", "unbalance", "response",
+               "bearings"},
               "a run-up analysis");
   const ExpressionEvaluator& ev = c.evaluator;
   DeckRunUp& u = r.runUp;
-  if (auto table = f.get("speed_table")) {
+  if (auto drive = f.get("speed")) {
+    for (const char* key : {"to_rpm", "speed_table"})
+      if (auto other = f.get(key))
+        other->fail("speed: drives the rotor by a torque; its speed is a result, not given by " +
+                    std::string(key));
+    u.drive = readDrive(c, *drive);
+    const double from = f.require("from_rpm").nonNegative(ev, kRpmField) * kRadPerRpm;
+    u.times = {0, f.require("duration").positive(ev, dim::time)};
+    u.speeds = {from, from};
+  } else if (auto table = f.get("speed_table")) {
     for (const char* key : {"from_rpm", "to_rpm", "duration"})
       if (auto other = f.get(key))
         other->fail("give either speed_table: or from_rpm, to_rpm and duration, not both");
@@ -501,6 +570,10 @@ void readRunUp(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   if (steps / u.sampleEvery > kMaxRunUpSamples)
     dt.fail("the run would record " + formatNumber(std::round(steps / u.sampleEvery)) +
             " samples; at most " + formatNumber(kMaxRunUpSamples) + " (set sample_every)");
+  if (auto b = f.get("bearings")) {
+    u.nonlinearBearings = b->choice({"linear", "nonlinear"}) == "nonlinear";
+    if (u.nonlinearBearings) readNonlinearBearings(c, *b, u);
+  }
   readUnbalance(c, f, r);
 }
 
@@ -625,6 +698,13 @@ void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
            "' computes " + std::to_string(settings->modes) + " modes (set its modes:)");
   if (q.kind != Quantity::Kind::unbalanceAmplitude && q.kind != Quantity::Kind::runUp) return;
   const DeckRotorAnalysis& r = settings->rotor;
+  if (q.kind == Quantity::Kind::runUp && q.property == "end_speed") return;
+  if (q.kind == Quantity::Kind::runUp && q.property == "eccentricity") {
+    if (!r.runUp.nonlinearBearings)
+      f.fail("analysis '" + a.name + "' runs its bearings linear: a journal's eccentricity is "
+             "followed with bearings: nonlinear");
+    return;  // the bearing's name is checked when the run measures it
+  }
   const auto& points = r.response;
   if (std::find(points.begin(), points.end(), q.target) == points.end())
     f.fail("analysis '" + a.name + "' reports no response at '" + q.target + "'" +

@@ -52,11 +52,15 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
     return true;
   }
   if (head == "runup") {
-    if (words.size() != 3 || (words[1] != "peak" && words[1] != "speed_at_peak"))
-      throw std::invalid_argument("expected 'runup peak POINT' or 'runup speed_at_peak POINT'");
+    const bool ofPoint = words.size() == 3 && (words[1] == "peak" || words[1] == "speed_at_peak" ||
+                                               words[1] == "eccentricity");
+    if (!ofPoint && !(words.size() == 2 && words[1] == "end_speed"))
+      throw std::invalid_argument(
+          "expected 'runup peak POINT', 'runup speed_at_peak POINT', 'runup eccentricity BEARING' "
+          "or 'runup end_speed'");
     q.kind = Kind::runUp;
     q.property = words[1];
-    q.target = words[2];
+    if (ofPoint) q.target = words[2];
     return true;
   }
   if (head == "rigid_body" || head == "level1") {

@@ -359,6 +359,12 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
                                                 : Json(nullptr)},
                       {"time_at_peak", any ? Json(h.timeAtPeak) : Json(nullptr)}});
   }
+  Json journals = Json::array();
+  for (const JournalTrack& j : r.journals)
+    journals.push_back({{"bearing", j.name},
+                        {"clearance", j.clearance},
+                        {"start_eccentricity", j.startEccentricity},
+                        {"largest_eccentricity", j.largestEccentricity}});
   const RunUpEnergy& e = r.energy;
   const std::size_t last = e.kinetic.empty() ? 0 : e.kinetic.size() - 1;
   const double rpm = 30 / std::numbers::pi;
@@ -372,12 +378,19 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
           {"start", o.steadyStart ? "steady" : "rest"},
           {"revolutions", r.histories.empty() ? 0 : r.histories[0].revolutions.speed.size()},
           {"factorizations", r.factorizations},
+          {"speed_driven", r.driven},
+          {"polar_inertia", o.inertia},
+          {"bearings", r.journals.empty() ? "linear" : "nonlinear"},
+          {"newton_iterations", r.newtonIterations},
+          {"most_newton_iterations", r.mostNewtonIterations},
+          {"journals", journals},
           {"points", points},
           {"energy",
            {{"kinetic", e.kinetic.empty() ? 0.0 : e.kinetic[last]},
             {"strain", e.strain.empty() ? 0.0 : e.strain[last]},
             {"dissipated", e.dissipated.empty() ? 0.0 : e.dissipated[last]},
             {"gyroscopic", e.gyroscopic.empty() ? 0.0 : e.gyroscopic[last]},
+            {"film", e.film.empty() ? 0.0 : e.film[last]},
             {"work", e.work.empty() ? 0.0 : e.work[last]},
             {"balance", e.kinetic.empty() ? 0.0 : e.balance(last)}}},
           {"time_s", r.time.total},

@@ -255,6 +255,9 @@ void writeRotorFiles(const RotorFiles& f, const RunUpOutcome& r) {
   if (f.tables.runUpHistory->rowCount() > 1)
     drawChart(f.dir, runUpOrbitsChart(fitted(f.caption), runUpOrbitChart(stem),
                                       *f.tables.runUpHistory, runUpHistoryCsv(stem), r, f.units));
+  if (f.tables.runUpHistory->rowCount() > 1 && !r.runUp.journals.empty())
+    drawChart(f.dir, runUpJournalsChart(fitted(f.caption), runUpJournalChart(stem),
+                                        *f.tables.runUpHistory, runUpHistoryCsv(stem), r));
 }
 
 }  // namespace beamrotor

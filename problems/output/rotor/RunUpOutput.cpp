@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/rotor/RotorTables.hpp"
@@ -34,17 +35,26 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
       {"time", "s"}, {"speed", "rad/s"}, {"speed_rpm", "rpm"}, {"angle", "rad"}};
   for (const std::string& p : r.responsePoints)
     for (const char* what : {"_uy", "_uz"}) columns.push_back({p + what, "m"});
-  for (const char* what : {"kinetic", "strain", "dissipated", "gyroscopic", "work", "energy_balance"})
+  if (r.runUp.driven)
+    for (const char* what : {"drive_torque", "unbalance_torque"}) columns.push_back({what, "N m"});
+  for (const JournalTrack& j : r.runUp.journals) {
+    for (const char* what : {"_y", "_z"}) columns.push_back({j.name + what, "m"});
+    columns.push_back({j.name + "_eccentricity", ""});
+  }
+  for (const char* what :
+       {"kinetic", "strain", "dissipated", "gyroscopic", "film", "work", "energy_balance"})
     columns.push_back({what, "J"});
   CsvTable table(title, columns);
   const RunUpResult& u = r.runUp;
   for (std::size_t i = 0; i < u.times.size(); ++i) {
     std::vector<CsvCell> row{u.times[i], u.speed[i], rpmOf(u.speed[i]), u.angle[i]};
     for (const RunUpHistory& h : u.histories) row.insert(row.end(), {h.uy[i], h.uz[i]});
+    if (u.driven) row.insert(row.end(), {u.driveTorque[i], u.unbalanceTorque[i]});
+    for (const JournalTrack& j : u.journals)
+      row.insert(row.end(), {j.y[i], j.z[i], j.eccentricity[i]});
     const RunUpEnergy& e = u.energy;
-    row.insert(row.end(),
-               {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i], e.work[i],
-                e.balance(i)});
+    row.insert(row.end(), {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i],
+                           e.film[i], e.work[i], e.balance(i)});
     table.addRow(std::move(row));
   }
   return table;
@@ -87,19 +97,34 @@ ChartScript runUpAmplitudeChart(const std::string& caption, const std::string& c
           body.str()};
 }
 
+namespace {
+
+/// Opens a square chart of orbits in `body`: one panel at equal scales on both axes, the key
+/// of `titles` beside it. Returns the chart's width and height (px).
+std::pair<int, int> squarePanel(std::ostringstream& body, const std::string& caption,
+                                const std::vector<std::string>& titles, const std::string& xlabel,
+                                const std::string& ylabel) {
+  const int keyMargin = keyWidth(titles);
+  const int width = 700 + keyMargin, height = 700;
+  body << "  set encoding utf8\n"
+       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
+       << "  set key outside right top\n  set size ratio -1\n"
+       << "  set xlabel " << gnuplotText(xlabel) << "\n"
+       << "  set ylabel " << gnuplotText(ylabel) << "\n";
+  return {width, height};
+}
+
+}  // namespace
+
 ChartScript runUpOrbitsChart(const std::string& caption, const std::string& chartName,
                              const CsvTable& history, const std::string& csvFile,
                              const RunUpOutcome& r, const OutputUnits& units) {
   const OutputUnits::Shown length = units.columnIn("m", {1e6, "µm"});
   const std::vector<std::string>& titles = r.responsePoints;
-  const int keyMargin = keyWidth(titles);
-  const int width = 700 + keyMargin, height = 700;
   std::ostringstream body;
-  body << "  set encoding utf8\n"
-       << panelLayout(1, 1, caption, width, height, keyMargin) << "  set grid\n"
-       << "  set key outside right top\n  set size ratio -1\n"
-       << "  set xlabel " << gnuplotText("uy [" + length.unit + "]") << "\n"
-       << "  set ylabel " << gnuplotText("uz [" + length.unit + "]") << "\n  plot ";
+  const auto [width, height] = squarePanel(body, caption, titles, "uy [" + length.unit + "]",
+                                           "uz [" + length.unit + "]");
+  body << "  plot ";
   for (std::size_t k = 0; k < titles.size(); ++k) {
     const int y = history.column(titles[k] + "_uy"), z = history.column(titles[k] + "_uz");
     if (k) body << ", \\\n       ";
@@ -110,6 +135,29 @@ ChartScript runUpOrbitsChart(const std::string& caption, const std::string& char
   body << "\n  unset multiplot\n";
   return {chartName, "run-up: orbits of the response points over the run", width, height,
           body.str()};
+}
+
+ChartScript runUpJournalsChart(const std::string& caption, const std::string& chartName,
+                               const CsvTable& history, const std::string& csvFile,
+                               const RunUpOutcome& r) {
+  std::vector<std::string> titles;
+  for (const JournalTrack& j : r.runUp.journals) titles.push_back(j.name);
+  titles.push_back("clearance");
+  std::ostringstream body;
+  const auto [width, height] = squarePanel(body, caption, titles, "y / c", "z / c");
+  body << "  set xrange [-1.05:1.05]\n  set yrange [-1.05:1.05]\n"
+       << "  set parametric\n  set trange [0:2*pi]\n  plot ";
+  for (std::size_t k = 0; k < r.runUp.journals.size(); ++k) {
+    const JournalTrack& j = r.runUp.journals[k];
+    const int y = history.column(j.name + "_y"), z = history.column(j.name + "_z");
+    body << gnuplotFile(csvFile) << " skip 1 using ($" << y << "/" << number(j.clearance)
+         << "):($" << z << "/" << number(j.clearance) << ") with lines linewidth 0.8 "
+         << colour(k) << " title " << gnuplotText(j.name) << ", \\\n       ";
+  }
+  body << "cos(t), sin(t) with lines linewidth 1.5 lc rgb 'black' title "
+       << gnuplotText("clearance") << "\n  unset multiplot\n";
+  return {chartName, "run-up: the journals' centres in their bearings over the run", width,
+          height, body.str()};
 }
 
 }  // namespace beamrotor

@@ -24,6 +24,9 @@ inline std::string runUpChart(const std::string& stem) {
 inline std::string runUpOrbitChart(const std::string& stem) {
   return stem + "_runup_orbits";
 }
+inline std::string runUpJournalChart(const std::string& stem) {
+  return stem + "_runup_journals";
+}
 
 /// One row per revolution: time (s, its end), speed (rad/s, its mean), speed_rpm, then per
 /// point <p>_amplitude (largest distance from the revolution's mean position), <p>_uy_half_range
@@ -31,8 +34,9 @@ inline std::string runUpOrbitChart(const std::string& stem) {
 CsvTable runUpTable(const std::string& title, const RunUpOutcome& r);
 
 /// One row per sample: time (s), speed (rad/s), speed_rpm, angle (rad), <p>_uy, <p>_uz (m) per
-/// point, then the energy account (J, RunUpEnergy): kinetic, strain, dissipated, gyroscopic,
-/// work, energy_balance.
+/// point, <b>_y, <b>_z (m, the journal centre from the bearing's centre) and <b>_eccentricity per
+/// nonlinear journal, then the energy account (J, RunUpEnergy): kinetic, strain, dissipated,
+/// gyroscopic, film, work, energy_balance.
 CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r);
 
 /// Amplitude against speed from a runUpTable in csvFile, one curve per point, its peak named
@@ -46,5 +50,11 @@ ChartScript runUpAmplitudeChart(const std::string& caption, const std::string& c
 ChartScript runUpOrbitsChart(const std::string& caption, const std::string& chartName,
                              const CsvTable& history, const std::string& csvFile,
                              const RunUpOutcome& r, const OutputUnits& units = {});
+
+/// The nonlinear journals' centres in their bearings over the run (y / c, z / c), inside the
+/// clearance circle, from a runUpHistoryTable in csvFile.
+ChartScript runUpJournalsChart(const std::string& caption, const std::string& chartName,
+                               const CsvTable& history, const std::string& csvFile,
+                               const RunUpOutcome& r);
 
 }  // namespace beamrotor

@@ -83,11 +83,13 @@ CsvTable reactionsTable(const ResponseSpectrumResult& r, const std::string& stem
     const OutputUnits::Shown& shown = isRotation(c.dof) ? moment : force;
     std::vector<CsvCell> row;  // filled in place: GCC 12 misreads a braced list of variants
     row.reserve(columns.size());
-    row.emplace_back(c.support);
-    row.emplace_back(std::string(dofName(c.dof)));
-    row.emplace_back(shown.unit);
-    row.emplace_back(c.value * shown.factor);
-    for (const PeakResponse& p : r.perDirection) row.push_back(p.reactions[i].value * shown.factor);
+    // Each cell made in place (GCC 12's false -Wmaybe-uninitialized on moved variants).
+    row.emplace_back(std::in_place_type<std::string>, c.support);
+    row.emplace_back(std::in_place_type<std::string>, dofName(c.dof));
+    row.emplace_back(std::in_place_type<std::string>, shown.unit);
+    row.emplace_back(std::in_place_type<double>, c.value * shown.factor);
+    for (const PeakResponse& p : r.perDirection)
+      row.emplace_back(std::in_place_type<double>, p.reactions[i].value * shown.factor);
     t.addRow(std::move(row));
   }
   return t;

@@ -91,7 +91,12 @@ CsvTable modesTable(const std::string& title, const ModalResult& modal) {
   CsvTable table(title, columns);
   for (std::size_t m = 0; m < modal.modes.size(); ++m) {
     const Mode& mode = modal.modes[m];
-    std::vector<CsvCell> row{(long long)(m + 1), mode.frequencyHz, mode.description};
+    // Each cell made in place: moving a variant that may hold a string draws a false
+    // -Wmaybe-uninitialized from GCC 12 in some unity batches.
+    std::vector<CsvCell> row;
+    row.emplace_back(std::in_place_type<long long>, (long long)(m + 1));
+    row.emplace_back(std::in_place_type<double>, mode.frequencyHz);
+    row.emplace_back(std::in_place_type<std::string>, mode.description);
     for (int k = 0; k < 3; ++k) row.push_back(mode.effectiveMass[k]);
     for (int k = 0; k < 3; ++k)
       row.push_back(modal.totalMass[k] > 0 ? mode.effectiveMass[k] / modal.totalMass[k] : 0.0);

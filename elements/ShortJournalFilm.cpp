@@ -1,0 +1,77 @@
+#include "elements/ShortJournalFilm.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "fem/model/GaussLegendre.hpp"
+
+namespace beamrotor {
+
+ShortJournalFilm::ShortJournalFilm(const PlainJournal& journal) : journal_(journal) {
+  if (!(journal.diameter > 0 && journal.length > 0 && journal.clearance > 0 &&
+        journal.viscosity > 0))
+    throw std::invalid_argument("a short-bearing film needs positive D, L, c and mu");
+}
+
+FilmForce ShortJournalFilm::at(const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
+                               double speed) const {
+  const double c = journal_.clearance;
+  const double X = position[0] / c, Y = position[1] / c;
+  const double eps = std::hypot(X, Y);
+  if (!(eps < 1)) {
+    std::ostringstream msg;
+    msg << "the journal left the bearing's clearance (eccentricity ratio " << eps
+        << " >= 1): the film cannot carry the motion; lower the unbalance or the speed, or "
+           "check c";
+    throw JournalLeftClearance(msg.str());
+  }
+  const double Vy = velocity[0] / c, Vz = velocity[1] / c;
+  // G = A sin(theta) + B cos(theta) = |G| cos(theta - theta0): negative on
+  // (theta0 + pi/2, theta0 + 3 pi/2).
+  const double A = 6 * speed * X - 12 * Vz, B = -6 * speed * Y - 12 * Vy;
+  // A centred journal at rest has no film; its derivatives then depend on the direction of
+  // the motion: the half-film below the +y axis is taken (any half would do).
+  const double theta0 = (A == 0 && B == 0) ? 0.0 : std::atan2(A, B);
+  static const GaussLegendre<64> rule;
+  constexpr double kPi = std::numbers::pi, half = kPi / 2;
+  double F[2] = {0, 0}, dX[2][4] = {};  // dF_i / d(X, Y, Vy, Vz)
+  for (int g = 0; g < rule.n; ++g) {
+    const double theta = theta0 + kPi + half * rule.x[g], w = half * rule.w[g];
+    const double co = std::cos(theta), si = std::sin(theta);
+    const double H = 1 - X * co - Y * si, G = A * si + B * co;
+    const double h3 = 1 / (H * H * H), h4 = h3 / H;
+    const double n[2] = {co, si};
+    // d(G / H^3) = dG / H^3 - 3 G / H^4 dH, dH/dX = -cos, dH/dY = -sin.
+    const double d[4] = {6 * speed * si * h3 + 3 * G * h4 * co,
+                         -6 * speed * co * h3 + 3 * G * h4 * si, -12 * co * h3, -12 * si * h3};
+    for (int i = 0; i < 2; ++i) {
+      F[i] += w * G * h3 * n[i];
+      for (int j = 0; j < 4; ++j) dX[i][j] += w * d[j] * n[i];
+    }
+  }
+  const double R = journal_.diameter / 2, L = journal_.length;
+  const double scale = journal_.viscosity * R * L * L * L / (12 * c * c);
+  FilmForce out;
+  for (int i = 0; i < 2; ++i) {
+    out.force[i] = scale * F[i];
+    for (int j = 0; j < 2; ++j) {
+      out.stiffness(i, j) = -scale * dX[i][j] / c;
+      out.damping(i, j) = -scale * dX[i][j + 2] / c;
+    }
+  }
+  return out;
+}
+
+Eigen::Vector2d ShortJournalFilm::equilibrium(const Eigen::Vector2d& load, double speed) const {
+  const double W = load.norm();
+  if (W == 0) return Eigen::Vector2d::Zero();  // an unloaded journal runs centred
+  PlainJournal j = journal_;
+  j.load = W;
+  const double eps = eccentricityRatio(j, speed);
+  const double angle = std::atan2(load[1], load[0]) + attitudeAngle(eps);
+  return eps * journal_.clearance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+}
+
+}  // namespace beamrotor
