@@ -52,15 +52,14 @@ DesignSpectrum DesignSpectrum::table(std::vector<double> periods,
   return s;
 }
 
+bool DesignSpectrum::covers(double T) const {
+  return !isTable() || (T >= periods_.front() && T <= periods_.back());
+}
+
 double DesignSpectrum::at(double T) const {
   if (isTable()) {
     const auto& P = periods_;
-    if (T < P.front() || T > P.back()) {
-      std::ostringstream why;
-      why << "the spectrum table covers periods " << P.front() << " to " << P.back()
-          << " s, not " << T << " s";
-      throw std::domain_error(why.str());
-    }
+    if (T <= P.front()) return accelerations_.front();
     const std::size_t i = std::upper_bound(P.begin(), P.end(), T) - P.begin();
     if (i >= P.size()) return accelerations_.back();
     const double w = (T - P[i - 1]) / (P[i] - P[i - 1]);

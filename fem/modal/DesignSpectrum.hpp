@@ -30,12 +30,14 @@ class DesignSpectrum {
   /// The EN 1998-1 horizontal elastic spectrum (3.2)-(3.5) at design ground acceleration ag
   /// (m/s^2) on ground type A-E, for viscous damping ratio `dampingRatio` (0.05 for 5 %).
   static DesignSpectrum en1998(int type, GroundType ground, double ag, double dampingRatio);
-  /// Sa (m/s^2) at the periods (s, ascending, distinct), linear between them; a period outside
-  /// the table has no value (Sa throws).
+  /// Sa (m/s^2) at the periods (s, ascending, distinct), linear between them; outside the
+  /// table its end values hold (the first for stiffer modes, the last for softer ones).
   static DesignSpectrum table(std::vector<double> periods, std::vector<double> accelerations);
 
-  /// Sa (m/s^2) at period T (s). Throws std::domain_error for a period a table does not cover.
+  /// Sa (m/s^2) at period T (s).
   double at(double period) const;
+  /// Whether a table gives Sa at T itself (a code shape covers every period).
+  bool covers(double period) const;
   /// "EN 1998-1 type 1, ground B, ag = 2.5 m/s^2, 5 % damping (eta = 1)" or "table of N periods".
   std::string describe() const;
   bool isTable() const { return !periods_.empty(); }
