@@ -2,8 +2,10 @@
 // T' K T, T' KG T of buckling. A two-storey shear frame whose floors are diaphragms against
 // its closed-form modes (storey stiffness 12 E I / h^3 per column; e.g. Chopra, Dynamics of
 // Structures, 4th ed., sec. 10.2), a member with end offsets against the same member between
-// the offset points on rigid arms transformed by hand and solved densely, and a column with a
-// rigid cap against the closed form of its buckling load (the cap's own P-delta).
+// the offset points on rigid arms transformed by hand and solved densely, a column with a
+// rigid cap against the closed form of its buckling load (the cap's own P-delta) and against
+// the equilibrium of its deformed state (second order), and a clamp reached only through an
+// offset taking the spectrum's whole base force.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -216,6 +218,63 @@ TEST_SUITE("rigid ties in dynamics and stability") {
                                                     << std::abs(b->modes.front().factor * P - critical) / critical);
     const double euler = std::numbers::pi * std::numbers::pi * kE * I / (4 * L * L);
     CHECK(std::abs(b->modes.front().factor * P - euler) > 0.2 * euler);
+  }
+
+  TEST_CASE("response spectrum: a clamp that holds its member through an offset reacts") {
+    // A massless column hangs from its clamp A through a start offset (a rigid arm up its
+    // axis), a mass on its top. No element touches A: its reaction is what the arm's tie
+    // carries. One sway mode along x (the other, axial, has no x mass): the clamp takes the
+    // whole base force m Sa, here with Sa a flat 5 m/s^2.
+    const double L = 3, m = 1000;
+    const std::string deck =
+        "model: {dimension: planar}\n"
+        "materials: [{name: steel, E: " + fmt(kE) + ", nu: " + fmt(kNu) + "}]\n"
+        "sections: [{name: bar, shape: circle, D: " + fmt(kD) + "}]\n"
+        "nodes: [{name: A, at: [0, 0]}, {name: B, at: [0, " + fmt(L) + "]}]\n"
+        "members: [{name: col, from: A, to: B, section: bar, elements: 1,\n"
+        "           offsets: {start: [0, 0.2]}}]\n"
+        "supports: [{name: A, at: A, fix: clamped}]\n"
+        "masses: [{name: top, at: B, m: " + fmt(m) + "}]\n"
+        "analyses: [{type: response-spectrum, modes: 2, directions: [x],\n"
+        "            spectrum: {table: [[0, 5], [10, 5]]}}]\n";
+    const Study s = test::solveDeckText(deck, "hung.yaml");
+    const auto* r = resultOf<ResponseSpectrumResult>(s.run->analyses.front());
+    REQUIRE(r);
+    double fx = 0;
+    for (const ReactionComponent& c : r->combined.reactions)
+      if (c.support == "A" && c.dof == Dof::ux) fx = c.value;
+    // One mode carries all of the x mass: m Sa to round-off (1e-9).
+    CHECK(r->combined.baseForce[0] == doctest::Approx(m * 5).epsilon(1e-9));
+    CHECK(fx == doctest::Approx(m * 5).epsilon(1e-9));
+  }
+
+  TEST_CASE("second order: the capped column balances in its deformed state, cap included") {
+    // The same column and cap under P down and H across at C. In the deformed state the clamp
+    // holds M_A = H (L + e) + P u_C, C's sway lever including the cap's tilt (without the
+    // cap's own geometric stiffness it would be P u_B, 1 kN m less here).
+    const double L = 3, e = 0.75, P = 1e5, H = 1e3;
+    const std::string column =
+        "model: {dimension: planar}\n"
+        "materials: [{name: steel, E: " + fmt(kE) + ", nu: " + fmt(kNu) + "}]\n"
+        "sections: [{name: bar, shape: circle, D: " + fmt(kD) + "}]\n"
+        "nodes: [{name: A, at: [0, 0]}, {name: B, at: [0, " + fmt(L) + "]}, {name: C, at: [0, " +
+        fmt(L + e) + "]}]\n"
+        "members: [{name: col, from: A, to: B, section: bar, elements: 16}]\n"
+        "supports: [{name: A, at: A, fix: clamped}]\n"
+        "rigid_links: [{name: cap, master: B, slave: C}]\n"
+        "loads: [{type: point, at: C, fy: " + fmt(-P) + ", fx: " + fmt(H) + "}]\n"
+        "analyses: [{type: static, second_order: true}]\n";
+    const Study s = test::solveDeckText(column, "cap.yaml");
+    const StaticResult& r = *staticsOf(s.run->analyses.front());
+    const int B = s.run->model->node("B"), C = s.run->model->node("C");
+    const double uB = r.displacement(B, dofIndex(Dof::ux)), uC = r.displacement(C, dofIndex(Dof::ux));
+    const double rz = r.displacement(B, dofIndex(Dof::rz));
+    // The cap follows B rigidly: u_C = u_B - e rz (a turn about z moves a point above to -x).
+    CHECK(uC == doctest::Approx(uB - e * rz).epsilon(1e-12));
+    // Equilibrium of the whole deformed body: the reaction from the element forces and the
+    // tie's, against the statics of the loads on their displaced points (round-off; 1e-9).
+    CHECK(r.reaction("A", Dof::rz) == doctest::Approx(H * (L + e) + P * uC).epsilon(1e-9));
+    CHECK(std::abs(P * (uC - uB)) > 0.1 * H * (L + e));
   }
 }
 
