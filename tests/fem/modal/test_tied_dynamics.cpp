@@ -17,19 +17,31 @@
 
 #include "elements/Beam.hpp"
 #include "fem/model/Model.hpp"
+#include "tests/fem/static/RigidTieDecks.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
 
 namespace tied_dynamics {
 
-constexpr double kE = 210e9, kNu = 0.3, kD = 0.1;  // steel, a round bar 100 mm across
+using test::ties::fmt;
+using test::ties::kD;
+using test::ties::kE;
+using test::ties::kNu;
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
+/// A clamped column of length L (16 elements) from A to B under a rigid cap of height e from
+/// B to C, loaded at C by fx and fy, and analysed by `analysis`.
+std::string cappedColumn(double L, double e, double fx, double fy, const std::string& analysis) {
+  return "model: {dimension: planar}\n"
+         "materials: [{name: steel, E: " + fmt(kE) + ", nu: " + fmt(kNu) + "}]\n"
+         "sections: [{name: bar, shape: circle, D: " + fmt(kD) + "}]\n"
+         "nodes: [{name: A, at: [0, 0]}, {name: B, at: [0, " + fmt(L) + "]}, {name: C, at: [0, " +
+         fmt(L + e) + "]}]\n"
+         "members: [{name: col, from: A, to: B, section: bar, elements: 16}]\n"
+         "supports: [{name: A, at: A, fix: clamped}]\n"
+         "rigid_links: [{name: cap, master: B, slave: C}]\n"
+         "loads: [{type: point, at: C, fx: " + fmt(fx) + ", fy: " + fmt(fy) + "}]\n"
+         "analyses: [" + analysis + "]\n";
 }
 
 /// The eigenvalues of the 2-storey shear building [k1 + k2, -k2; -k2, k2] x = w^2 diag(m, m)
@@ -195,17 +207,7 @@ TEST_SUITE("rigid ties in dynamics and stability") {
       (mid * std::tan(mid) < L / e ? lo : hi) = mid;
     }
     const double critical = kE * I * std::pow(lo / L, 2);
-    const std::string column =
-        "model: {dimension: planar}\n"
-        "materials: [{name: steel, E: " + fmt(kE) + ", nu: " + fmt(kNu) + "}]\n"
-        "sections: [{name: bar, shape: circle, D: " + fmt(kD) + "}]\n"
-        "nodes: [{name: A, at: [0, 0]}, {name: B, at: [0, " + fmt(L) + "]}, {name: C, at: [0, " +
-        fmt(L + e) + "]}]\n"
-        "members: [{name: col, from: A, to: B, section: bar, elements: 16}]\n"
-        "supports: [{name: A, at: A, fix: clamped}]\n"
-        "rigid_links: [{name: cap, master: B, slave: C}]\n"
-        "loads: [{type: point, at: C, fy: " + fmt(-P) + "}]\n"
-        "analyses: [{type: buckling, modes: 1}]\n";
+    const std::string column = cappedColumn(L, e, 0, -P, "{type: buckling, modes: 1}");
     const Study s = test::solveDeckText(column, "cap.yaml");
     const BucklingResult* b = resultOf<BucklingResult>(s.run->analyses.front());
     REQUIRE(b);
@@ -253,17 +255,7 @@ TEST_SUITE("rigid ties in dynamics and stability") {
     // holds M_A = H (L + e) + P u_C, C's sway lever including the cap's tilt (without the
     // cap's own geometric stiffness it would be P u_B, 1 kN m less here).
     const double L = 3, e = 0.75, P = 1e5, H = 1e3;
-    const std::string column =
-        "model: {dimension: planar}\n"
-        "materials: [{name: steel, E: " + fmt(kE) + ", nu: " + fmt(kNu) + "}]\n"
-        "sections: [{name: bar, shape: circle, D: " + fmt(kD) + "}]\n"
-        "nodes: [{name: A, at: [0, 0]}, {name: B, at: [0, " + fmt(L) + "]}, {name: C, at: [0, " +
-        fmt(L + e) + "]}]\n"
-        "members: [{name: col, from: A, to: B, section: bar, elements: 16}]\n"
-        "supports: [{name: A, at: A, fix: clamped}]\n"
-        "rigid_links: [{name: cap, master: B, slave: C}]\n"
-        "loads: [{type: point, at: C, fy: " + fmt(-P) + ", fx: " + fmt(H) + "}]\n"
-        "analyses: [{type: static, second_order: true}]\n";
+    const std::string column = cappedColumn(L, e, H, -P, "{type: static, second_order: true}");
     const Study s = test::solveDeckText(column, "cap.yaml");
     const StaticResult& r = *staticsOf(s.run->analyses.front());
     const int B = s.run->model->node("B"), C = s.run->model->node("C");
