@@ -71,6 +71,12 @@ TEST_SUITE("base excitation decks") {
          "ground", 8},
         {"  - {type: response-spectrum, spectrum: {code: EN1998-1, type: 1, ground: B, ag: 2 m}}\n",
          "ag", 8},
+        {"  - {type: response-spectrum, spectrum: {code: EN1998-1, type: 1, component: vertical, "
+         "ground: B, ag: 2}}\n",
+         "ground", 8},
+        {"  - {type: response-spectrum, spectrum: {code: EN1998-1, type: 1, component: up, "
+         "ag: 2}}\n",
+         "component", 8},
         {"  - {type: response-spectrum, damping: 1.5, spectrum: {table: [[0, 1], [1, 1]]}}\n",
          "damping", 8},
         {"  - {type: response-spectrum, spectrum: {table: [[0, 1], [0, 1]]}}\n", "table", 8},
@@ -114,5 +120,22 @@ TEST_SUITE("base excitation decks") {
           std::string::npos)
         ++outside;
     CHECK(outside == 2);
+  }
+
+  TEST_CASE("the vertical spectrum from the deck: each mode's Sa on (3.8) by hand") {
+    // The rod's modes (periods 0.046 and 0.007 s) lie below TB = 0.05 s: Sa = avg (1 + T / TB
+    // (3 eta - 1)) with avg = 0.9 ag, eta = 1 (Table 3.4, (3.8)).
+    const std::string deck = std::string(kLine) +
+                             "  - {type: response-spectrum, modes: 2, directions: [y], "
+                             "spectrum: {code: EN1998-1, type: 1, component: vertical, "
+                             "ag: 2 m/s^2}}\n";
+    const Study s = test::solveDeckText(deck, "shake.yaml");
+    const auto* r = resultOf<ResponseSpectrumResult>(s.run->analyses.front());
+    REQUIRE(r);
+    REQUIRE(r->spectralAcceleration.size() == 2);
+    for (std::size_t j = 0; j < 2; ++j) {
+      const double T = 2 * std::numbers::pi / std::sqrt(r->modal.modes[j].eigenvalue);
+      CHECK(r->spectralAcceleration[j] == doctest::Approx(1.8 * (1 + T / 0.05 * 2)).epsilon(1e-12));
+    }
   }
 }

@@ -188,6 +188,21 @@ TEST_SUITE("response spectrum") {
           doctest::Approx(7.5 * std::sqrt(10.0 / 7)).epsilon(1e-14));
   }
 
+  TEST_CASE("EN 1998-1 vertical spectrum: Table 3.4 and (3.8)-(3.11) by hand") {
+    // Type 1, ag = 2 m/s^2: avg = 0.9 ag = 1.8, TB = 0.05, TC = 0.15, TD = 1 s, plateau
+    // 3.0 avg = 5.4 at 5 % (eta = 1), whatever the ground.
+    const DesignSpectrum v1 = DesignSpectrum::en1998Vertical(1, 2.0, 0.05);
+    CHECK(v1.at(0) == doctest::Approx(1.8).epsilon(1e-14));
+    CHECK(v1.at(0.025) == doctest::Approx(1.8 * (1 + 0.5 * 2)).epsilon(1e-14));
+    CHECK(v1.at(0.1) == doctest::Approx(5.4).epsilon(1e-14));
+    CHECK(v1.at(1.0) == doctest::Approx(5.4 * 0.15).epsilon(1e-14));
+    CHECK(v1.at(2.0) == doctest::Approx(5.4 * 0.15 * 1.0 / 4).epsilon(1e-14));
+    // Type 2: avg = 0.45 ag; at 2 % damping eta = sqrt(10 / 7) on the plateau.
+    const DesignSpectrum v2 = DesignSpectrum::en1998Vertical(2, 2.0, 0.02);
+    CHECK(v2.at(0.1) == doctest::Approx(0.9 * 3 * std::sqrt(10.0 / 7)).epsilon(1e-14));
+    CHECK(v2.describe().find("vertical") != std::string::npos);
+  }
+
   TEST_CASE("a period outside the table holds its end value; a direction without mass") {
     const Model model = shearBuilding({1000}, {1e6});  // T = 0.199 s
     // Below the table's first period the first value holds, above its last the last; each
