@@ -1,5 +1,6 @@
 #include "fem/assembly/RigidTies.hpp"
 
+#include <complex>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -90,6 +91,77 @@ SparseMatrix tiedStiffness(const SparseMatrix& K, const SparseMatrix& T,
   reduced += D;
   reduced.makeCompressed();
   return reduced;
+}
+
+TieReduction::TieReduction(const Model& model, const DofMap& dofs)
+    : tied_(tiedEquations(model, dofs)) {
+  if (tied_.empty()) return;
+  T_ = tieTransformation(tied_, dofs.freeCount());
+  for (const RigidTie& t : model.rigidTies()) {
+    Arm arm;
+    arm.r = model.nodes()[t.slave] - model.nodes()[t.master];
+    for (int k = 0; k < 3; ++k) {
+      const int m = dofs.equation(t.master, kAllDofs[3 + k]);
+      if (m >= 0 && !dofs.isConstrained(m)) arm.masterRotation[k] = m;
+    }
+    for (Dof d : t.dofs)
+      if (!isRotation(d)) arm.followerTranslation[dofIndex(d)] = dofs.equation(t.slave, d);
+    arms_.push_back(arm);
+  }
+}
+
+std::vector<int> TieReduction::tiedNumbers() const {
+  std::vector<int> out;
+  for (const TiedEquation& t : tied_) out.push_back(t.equation);
+  return out;
+}
+
+SparseMatrix TieReduction::stiffness(const SparseMatrix& K) const {
+  return empty() ? K : tiedStiffness(K, T_, tied_);
+}
+
+SparseMatrix TieReduction::projected(const SparseMatrix& A) const {
+  if (empty()) return A;
+  return SparseMatrix(SparseMatrix(T_.transpose()) * A * T_);
+}
+
+SparseMatrix TieReduction::geometric(const SparseMatrix& KG,
+                                     const Eigen::VectorXd& residual) const {
+  if (empty()) return KG;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (const Arm& arm : arms_) {
+    Eigen::Vector3d F = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      if (arm.followerTranslation[k] >= 0) F[k] = -residual[arm.followerTranslation[k]];
+    const Eigen::Matrix3d k = F.dot(arm.r) * Eigen::Matrix3d::Identity() -
+                              0.5 * (F * arm.r.transpose() + arm.r * F.transpose());
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (arm.masterRotation[i] >= 0 && arm.masterRotation[j] >= 0 && k(i, j) != 0)
+          entries.emplace_back(arm.masterRotation[i], arm.masterRotation[j], k(i, j));
+  }
+  SparseMatrix own(KG.rows(), KG.cols());
+  own.setFromTriplets(entries.begin(), entries.end());
+  return SparseMatrix(projected(KG) + own);
+}
+
+Eigen::VectorXd TieReduction::loads(const Eigen::VectorXd& f) const {
+  if (empty()) return f;
+  return T_.transpose() * f.head(T_.rows());
+}
+
+Eigen::MatrixXd TieReduction::expand(const Eigen::MatrixXd& q) const {
+  if (empty()) return q;
+  return T_ * q;
+}
+
+Eigen::VectorXcd TieReduction::expand(const Eigen::VectorXcd& q) const {
+  if (empty()) return q;
+  return T_.cast<std::complex<double>>() * q;
+}
+
+Eigen::VectorXd stateResidual(const Model& model, const DofMap& dofs, const Eigen::VectorXd& u) {
+  return elementForces(model, dofs, u) - nodalLoadVector(model, dofs);
 }
 
 void addTiedReactions(const std::vector<TiedEquation>& tied, const DofMap& dofs,

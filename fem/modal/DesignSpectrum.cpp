@@ -23,6 +23,15 @@ SpectrumCorners en1998Corners(int type, GroundType ground) {
   return (type == 1 ? type1 : type2)[int(ground)];
 }
 
+DesignSpectrum DesignSpectrum::en1998Vertical(int type, double ag, double dampingRatio) {
+  if (type != 1 && type != 2) throw std::invalid_argument("EN 1998-1 spectrum type is 1 or 2");
+  DesignSpectrum s = en1998(type, GroundType::A, (type == 1 ? 0.90 : 0.45) * ag, dampingRatio);
+  s.vertical_ = true;
+  s.corners_ = {1.0, 0.05, 0.15, 1.0};  // Table 3.4: S plays no part
+  s.plateauFactor_ = 3.0;
+  return s;
+}
+
 double en1998DampingCorrection(double dampingRatio) {
   return std::max(0.55, std::sqrt(10 / (5 + 100 * dampingRatio)));
 }
@@ -52,24 +61,24 @@ DesignSpectrum DesignSpectrum::table(std::vector<double> periods,
   return s;
 }
 
+bool DesignSpectrum::covers(double T) const {
+  return !isTable() || (T >= periods_.front() && T <= periods_.back());
+}
+
 double DesignSpectrum::at(double T) const {
   if (isTable()) {
     const auto& P = periods_;
-    if (T < P.front() || T > P.back()) {
-      std::ostringstream why;
-      why << "the spectrum table covers periods " << P.front() << " to " << P.back()
-          << " s, not " << T << " s";
-      throw std::domain_error(why.str());
-    }
+    if (T <= P.front()) return accelerations_.front();
     const std::size_t i = std::upper_bound(P.begin(), P.end(), T) - P.begin();
     if (i >= P.size()) return accelerations_.back();
     const double w = (T - P[i - 1]) / (P[i] - P[i - 1]);
     return (1 - w) * accelerations_[i - 1] + w * accelerations_[i];
   }
-  // EN 1998-1:2004 (3.2)-(3.5); the last branch is carried past 4 s.
+  // EN 1998-1:2004 (3.2)-(3.5), or (3.8)-(3.11) with S = 1 and 3.0 for 2.5; the last branch
+  // is carried past 4 s.
   const auto [S, TB, TC, TD] = corners_;
-  const double plateau = ag_ * S * eta_ * 2.5;
-  if (T <= TB) return ag_ * S * (1 + T / TB * (eta_ * 2.5 - 1));
+  const double plateau = ag_ * S * eta_ * plateauFactor_;
+  if (T <= TB) return ag_ * S * (1 + T / TB * (eta_ * plateauFactor_ - 1));
   if (T <= TC) return plateau;
   if (T <= TD) return plateau * TC / T;
   return plateau * TC * TD / (T * T);
@@ -83,6 +92,11 @@ std::string DesignSpectrum::describe() const {
     return text.str();
   }
   static constexpr const char* grounds = "ABCDE";
+  if (vertical_) {
+    text << "EN 1998-1 type " << type_ << " vertical, avg = " << ag_ << " m/s^2, "
+         << 100 * damping_ << " % damping (eta = " << eta_ << ")";
+    return text.str();
+  }
   text << "EN 1998-1 type " << type_ << ", ground " << grounds[int(ground_)] << ", ag = " << ag_
        << " m/s^2, " << 100 * damping_ << " % damping (eta = " << eta_ << ")";
   return text.str();

@@ -30,13 +30,20 @@ class DesignSpectrum {
   /// The EN 1998-1 horizontal elastic spectrum (3.2)-(3.5) at design ground acceleration ag
   /// (m/s^2) on ground type A-E, for viscous damping ratio `dampingRatio` (0.05 for 5 %).
   static DesignSpectrum en1998(int type, GroundType ground, double ag, double dampingRatio);
-  /// Sa (m/s^2) at the periods (s, ascending, distinct), linear between them; a period outside
-  /// the table has no value (Sa throws).
+  /// The EN 1998-1 vertical elastic spectrum (3.8)-(3.11) of Table 3.4: avg = 0.90 ag (type 1)
+  /// or 0.45 ag (type 2), TB = 0.05, TC = 0.15, TD = 1.0 s, the plateau 3.0 eta avg, whatever
+  /// the ground.
+  static DesignSpectrum en1998Vertical(int type, double ag, double dampingRatio);
+  /// Sa (m/s^2) at the periods (s, ascending, distinct), linear between them; outside the
+  /// table its end values hold (the first for stiffer modes, the last for softer ones).
   static DesignSpectrum table(std::vector<double> periods, std::vector<double> accelerations);
 
-  /// Sa (m/s^2) at period T (s). Throws std::domain_error for a period a table does not cover.
+  /// Sa (m/s^2) at period T (s).
   double at(double period) const;
-  /// "EN 1998-1 type 1, ground B, ag = 2.5 m/s^2, 5 % damping (eta = 1)" or "table of N periods".
+  /// Whether a table gives Sa at T itself (a code shape covers every period).
+  bool covers(double period) const;
+  /// "EN 1998-1 type 1, ground B, ag = 2.5 m/s^2, 5 % damping (eta = 1)", "EN 1998-1 type 1
+  /// vertical, avg = ..." or "table of N periods".
   std::string describe() const;
   bool isTable() const { return !periods_.empty(); }
   const SpectrumCorners& corners() const { return corners_; }
@@ -48,8 +55,10 @@ class DesignSpectrum {
   // EN 1998-1 shape
   int type_ = 1;
   GroundType ground_ = GroundType::A;
+  bool vertical_ = false;
   SpectrumCorners corners_;
-  double ag_ = 0, eta_ = 1, damping_ = 0.05;
+  double ag_ = 0, eta_ = 1, damping_ = 0.05;  ///< ag_: avg for the vertical spectrum
+  double plateauFactor_ = 2.5;                 ///< 2.5 horizontal (3.3), 3.0 vertical (3.9)
   // table
   std::vector<double> periods_, accelerations_;
 };

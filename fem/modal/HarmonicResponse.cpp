@@ -8,11 +8,12 @@
 namespace beamrotor {
 
 HarmonicResponse::HarmonicResponse(const Model& model, double alpha, double beta)
-    : model_(model), dofs_(model) {
+    : model_(model), dofs_(model), ties_(model, dofs_) {
   SparseAssembler assembler(model, dofs_);
-  K_ = assembler.assemble(MatrixKind::stiffness);
-  M_ = assembler.assemble(MatrixKind::mass);
-  C_ = assembler.assemble(MatrixKind::damping);
+  K_ = ties_.stiffness(assembler.assemble(MatrixKind::stiffness));
+  fullMass_ = assembler.assemble(MatrixKind::mass);
+  M_ = ties_.projected(fullMass_);
+  C_ = ties_.projected(assembler.assemble(MatrixKind::damping));
   if (alpha != 0) C_ += alpha * M_;
   if (beta != 0) C_ += beta * K_;
 }
@@ -25,7 +26,12 @@ ComplexVector HarmonicResponse::solve(double w, const ComplexVector& f) const {
   lu.compute(Z);
   const int n = dofs_.freeCount();
   ComplexVector x = ComplexVector::Zero(dofs_.size());
-  if (lu.info() == Eigen::Success) x.head(n) = lu.solve(f.head(n));
+  if (lu.info() == Eigen::Success) {
+    const ComplexVector reduced = ties_.empty() ? ComplexVector(f.head(n))
+                                                : ComplexVector(ties_.loads(f.real()).cast<Complex>() +
+                                                                Complex(0, 1) * ties_.loads(f.imag()));
+    x.head(n) = ties_.expand(ComplexVector(lu.solve(reduced)));
+  }
   if (lu.info() != Eigen::Success || !x.allFinite()) {
     std::ostringstream why;
     why << "the dynamic stiffness K - w^2 M + i w C is singular at w = " << w

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "fem/assembly/ReducedSystem.hpp"
+#include "fem/assembly/RigidTies.hpp"
 #include "fem/modal/RigidMotion.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/SupportCheck.hpp"
@@ -26,7 +27,7 @@ constexpr double kRigidBodyRatio = 1e-6;
 /// computed eigenvalues nearest zero are those motions: each is set to exactly 0 (its computed
 /// value is round-off of the shifted factorisation) when it is far below the next one.
 void markRigidBodyModes(const Model& model, const DofMap& dofs, const SparseMatrix& K,
-                        double shift, std::vector<Mode>& modes) {
+                        const std::vector<int>& tied, double shift, std::vector<Mode>& modes) {
   if (shift == 0 || modes.empty()) return;  // K was factorised: it has no null space
   // The QR costs about a factorisation: skip it when no eigenvalue could pass the test below
   // (its scale is one of the computed eigenvalues or |shift|), the usual shifted analysis.
@@ -36,7 +37,7 @@ void markRigidBodyModes(const Model& model, const DofMap& dofs, const SparseMatr
     largest = std::max(largest, std::abs(m.eigenvalue));
   }
   if (nearest > kRigidBodyRatio * largest) return;
-  const int nullity = findMechanism(model, dofs, K).count;
+  const int nullity = findMechanism(model, dofs, K, tied).count;
   if (nullity == 0) return;
   std::vector<int> order(modes.size());
   for (int i = 0; i < int(order.size()); ++i) order[i] = i;
@@ -97,19 +98,35 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
   const SparseMatrix geometric =
       state.size() > 0 ? assembler.assembleGeometric(state) : SparseMatrix();
   auto [K, M] = std::move(assembler).assemble(MatrixKind::stiffness, MatrixKind::mass);
-  if (state.size() > 0) K += geometric;
-  dropExactZeros(K);
   dropExactZeros(M);
+  // Rigid ties (fem/assembly/RigidTies.hpp): the pencil T' K T, T' M T in the same numbering;
+  // each tied equation is an infinite eigenvalue (no mass), which the eigensolvers drop.
+  // About a loaded state, K gains its geometric stiffness (the arms' own with ties).
+  const TieReduction ties(model, dofs);
+  SparseMatrix Kr, Mr;
+  if (!ties.empty()) {
+    Kr = ties.stiffness(K);
+    if (state.size() > 0) Kr += ties.geometric(geometric, stateResidual(model, dofs, state));
+    Mr = ties.projected(M);
+    dropExactZeros(Kr);
+    dropExactZeros(Mr);
+  } else if (state.size() > 0) {
+    K += geometric;
+  }
+  dropExactZeros(K);
+  const SparseMatrix& pencilK = ties.empty() ? K : Kr;
+  const SparseMatrix& pencilM = ties.empty() ? M : Mr;
   result.time.assembly = clock.lap();
 
   // 2. Eigenpairs nearest the shift. At shift 0 a singular K is a mechanism: name its dofs.
   EigenPairs pairs;
   try {
-    pairs = symmetricEigenpairs(K, M, std::min(options.modes, dofs.freeCount()), options.shift,
-                                dofs.freeNodes());
+    const int independent = dofs.freeCount() - int(ties.tied().size());
+    pairs = symmetricEigenpairs(pencilK, pencilM, std::min(options.modes, independent),
+                                options.shift, dofs.freeNodes());
   } catch (const SingularSystem& e) {
     if (options.shift == 0) {
-      const Mechanism mechanism = findMechanism(model, dofs, K);
+      const Mechanism mechanism = findMechanism(model, dofs, pencilK, ties.tiedNumbers());
       if (mechanism.count > 0)
         throwUnsupported(model, dofs, mechanism,
                          std::string(e.what()) + ".\nmodal analysis at shift 0");
@@ -117,6 +134,10 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
     throw;
   }
   result.time.solve = clock.lap();
+  // The modes over every free dof, the tied ones following their masters: their effective
+  // masses below are r' M phi with the whole mass matrix (a follower of a fixed master moves
+  // with the ground, and its mass still pulls on the free dofs it couples to).
+  pairs.vectors = ties.expand(pairs.vectors);
   if (pairs.missedBySturmCount > 0)
     result.warnings.push_back(
         "a Sturm count finds " + std::to_string(pairs.missedBySturmCount) +
@@ -156,7 +177,7 @@ ModalResult solveModesAbout(const Model& model, const ModalOptions& options,
     mode.description = describeMode(mode.energyShare);
     result.modes.push_back(std::move(mode));
   }
-  markRigidBodyModes(model, dofs, K, options.shift, result.modes);
+  markRigidBodyModes(model, dofs, pencilK, ties.tiedNumbers(), options.shift, result.modes);
   // A frame's modes are named by the rigid motion their effective mass follows (sway,
   // torsion), which the energy shares by global dof kind do not tell for members across x.
   if (!model.members().empty()) {

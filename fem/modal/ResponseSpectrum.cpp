@@ -7,6 +7,7 @@
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
+#include "fem/assembly/RigidTies.hpp"
 #include "fem/modal/Modal.hpp"
 #include "fem/model/Loading.hpp"
 
@@ -19,15 +20,24 @@ namespace {
 class ResponseLayout {
  public:
   ResponseLayout(const Model& model, int stationsPerElement)
-      : model_(model), dofs_(model), perElement_(stationsPerElement) {}
+      : model_(model), dofs_(model), ties_(model, dofs_), perElement_(stationsPerElement) {
+    if (!ties_.empty()) mass_ = SparseAssembler(model, dofs_).assemble(MatrixKind::mass);
+  }
 
   /// The quantities of displacement field u (relative to the ground, no loads on the
-  /// elements), with base force `base`.
-  PeakResponse respond(const NodalField& u, const std::array<double, 3>& base) const {
+  /// elements) of a mode of eigenvalue omega^2, with base force `base`.
+  PeakResponse respond(const NodalField& u, double omega2, const std::array<double, 3>& base) const {
     PeakResponse r;
     r.displacement = u;
     const Eigen::VectorXd full = fromNodalField(dofs_, u);
-    const Eigen::VectorXd reaction = constrainedElementForces(model_, dofs_, full, unloaded_);
+    Eigen::VectorXd reaction = constrainedElementForces(model_, dofs_, full, unloaded_);
+    if (!ties_.empty()) {
+      // A fixed master also holds what its ties hold their followers with: at each follower,
+      // its elements' forces less the inertia omega^2 M u the modal peak stands for.
+      Eigen::VectorXd residual = elementForces(model_, dofs_, full, unloaded_);
+      residual.head(dofs_.freeCount()) -= omega2 * (mass_ * full.head(dofs_.freeCount()));
+      addTiedReactions(ties_.tied(), dofs_, residual, reaction);
+    }
     for (const Support& s : model_.supports())
       for (const PrescribedDof& p : s.dofs)
         r.reactions.push_back(
@@ -71,6 +81,8 @@ class ResponseLayout {
  private:
   const Model& model_;
   DofMap dofs_;
+  TieReduction ties_;
+  SparseMatrix mass_;  ///< free-free, made only with ties
   int perElement_;
   Loading unloaded_;
 };
@@ -120,10 +132,16 @@ ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpe
       throw std::domain_error(why.str());
     }
     omega.push_back(std::sqrt(mode.eigenvalue));
-    try {
-      result.spectralAcceleration.push_back(spectrum.at(2 * std::numbers::pi / omega.back()));
-    } catch (const std::domain_error& e) {
-      throw std::domain_error("mode " + std::to_string(j + 1) + ": " + e.what());
+    const double T = 2 * std::numbers::pi / omega.back();
+    result.spectralAcceleration.push_back(spectrum.at(T));
+    if (!spectrum.covers(T)) {
+      const std::vector<double> ends = spectrum.breakPeriods();
+      std::ostringstream w;
+      w << "mode " << j + 1 << " has the period " << T << " s, outside the spectrum table's "
+        << ends.front() << " to " << ends.back() << " s: it reads the table's "
+        << (T < ends.front() ? "first" : "last") << " value, " << result.spectralAcceleration.back()
+        << " m/s^2 (extend the table to be sure)";
+      result.warnings.push_back(w.str());
     }
   }
   result.correlation = modalCorrelations(omega, options.dampingRatio, options.rule);
@@ -143,7 +161,7 @@ ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpe
       // takes, springs to it included.
       std::array<double, 3> base{};
       for (int k = 0; k < 3; ++k) base[k] = mode.participation[k] * mode.participation[d] * Sa;
-      PeakResponse r = layout.respond(mode.shape * amplitude, base);
+      PeakResponse r = layout.respond(mode.shape * amplitude, mode.eigenvalue, base);
       const Eigen::VectorXd q = ResponseLayout::flatten(r);
       if (j == 0) {
         columns.resize(q.size(), Eigen::Index(modal.modes.size()));

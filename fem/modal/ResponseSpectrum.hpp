@@ -57,8 +57,8 @@ struct ResponseSpectrumResult {
 
 /// Solves the modes of `model` and its peak response to `spectrum` along each of the options'
 /// directions. Throws std::invalid_argument for a direction carrying no mass, and
-/// std::domain_error for a mode at zero frequency (a structure free to move with the ground) or
-/// a period the spectrum does not cover.
+/// std::domain_error for a mode at zero frequency (a structure free to move with the ground).
+/// A mode outside a spectrum table reads its nearer end value, with a warning.
 ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpectrum& spectrum,
                                              const ResponseSpectrumOptions& options);
 

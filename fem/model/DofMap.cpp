@@ -22,6 +22,11 @@ DofMap::DofMap(const Model& model) {
   for (const RigidTie& t : model.rigidTies())
     for (int k = 0; k < kDofKinds; ++k)
       if (slots_.at(t.slave)[k] == kPresent) slots_.at(t.master)[k] = kPresent;
+  // And a slave follows its master in each tied dof the master carries (a bracket's tip that
+  // no element touches still takes a load).
+  for (const RigidTie& t : model.rigidTies())
+    for (Dof d : t.dofs)
+      if (slots_.at(t.master)[dofIndex(d)] == kPresent) slots_.at(t.slave)[dofIndex(d)] = kPresent;
   for (const Support& s : model.supports())
     for (const PrescribedDof& p : s.dofs) {
       int& slot = slots_.at(s.node)[dofIndex(p.dof)];

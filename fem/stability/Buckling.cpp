@@ -5,6 +5,7 @@
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
+#include "fem/assembly/RigidTies.hpp"
 #include "fem/solvers/BucklingEigen.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/static/Static.hpp"
@@ -73,18 +74,27 @@ BucklingResult solveBuckling(const Model& model, const BucklingOptions& options)
   result.reference = solveStatic(model);
 
   // 2. K and the geometric stiffness of the reference state's axial forces.
+  //    Rigid ties reduce both as T' K T and T' KG T, with the arms' own geometric stiffness
+  //    (fem/assembly/RigidTies.hpp); the tied equations have no geometric stiffness, so no
+  //    finite factor, and the shapes expand.
   const DofMap dofs(model);
   const SparseAssembler assembler(model, dofs);
-  const SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
-  const SparseMatrix KG =
-      assembler.assembleGeometric(fromNodalField(dofs, result.reference.displacement));
+  const TieReduction ties(model, dofs);
+  const SparseMatrix K = ties.stiffness(assembler.assemble(MatrixKind::stiffness));
+  const Eigen::VectorXd state = fromNodalField(dofs, result.reference.displacement);
+  const SparseMatrix KG = ties.geometric(assembler.assembleGeometric(state),
+                                         stateResidual(model, dofs, state));
   result.time.assembly = clock.lap();
 
   // 3. The load factors of least magnitude, positive and (when asked) negative.
-  const BucklingPairs positive = bucklingEigenpairs(K, KG, options.count, +1);
+  const auto solve = [&](int sign) {
+    BucklingPairs pairs = bucklingEigenpairs(K, KG, options.count, sign);
+    pairs.vectors = ties.expand(pairs.vectors);
+    return pairs;
+  };
+  const BucklingPairs positive = solve(+1);
   result.modes = toModes(model, dofs, positive);
-  if (options.reversed)
-    result.reversed = toModes(model, dofs, bucklingEigenpairs(K, KG, options.count, -1));
+  if (options.reversed) result.reversed = toModes(model, dofs, solve(-1));
   result.time.solve = clock.lap();
   // Copied from static strings: GCC 12 misreads a long literal moved into the vector as a read
   // past a temporary's inline buffer (a false -Warray-bounds, GCC bug 105651's family).

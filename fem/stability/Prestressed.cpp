@@ -2,6 +2,7 @@
 
 #include "fem/assembly/Assembly.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
+#include "fem/assembly/RigidTies.hpp"
 #include "fem/stability/Buckling.hpp"
 #include "fem/static/Static.hpp"
 
@@ -11,9 +12,11 @@ ModalResult solvePrestressedModes(const Model& model, const ModalOptions& option
   const StaticResult loaded = solveStatic(model);
   const DofMap dofs(model);
   const SparseAssembler assembler(model, dofs);
+  const TieReduction ties(model, dofs);
   const Eigen::VectorXd state = fromNodalField(dofs, loaded.displacement);
-  requireBelowCritical(lowestBucklingFactor(assembler.assemble(MatrixKind::stiffness),
-                                            assembler.assembleGeometric(state)),
+  requireBelowCritical(lowestBucklingFactor(ties.stiffness(assembler.assemble(MatrixKind::stiffness)),
+                                            ties.geometric(assembler.assembleGeometric(state),
+                                                           stateResidual(model, dofs, state))),
                        "prestressed modal analysis");
   return solveModesAbout(model, options, state);
 }

@@ -8,6 +8,7 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/ReducedSystem.hpp"
+#include "fem/assembly/RigidTies.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/SparseLU.hpp"
 #include "fem/stability/Buckling.hpp"
@@ -59,14 +60,19 @@ SecondOrderResult solveSecondOrder(const Model& model, const SecondOrderOptions&
   result.firstOrder = solveStatic(model);
 
   // 1. K, the loads, the prescribed values, and the critical factor of the first-order state.
+  //    Rigid ties (fem/assembly/RigidTies.hpp) reduce the tangent as T' (K + KG) T, with K's
+  //    tied diagonals kept, and the loads as T' f; each solution expands as T q.
   const DofMap dofs(model);
   const SparseAssembler assembler(model, dofs);
+  const TieReduction ties(model, dofs);
   const SparseMatrix K = assembler.assemble(MatrixKind::stiffness);
+  const SparseMatrix Kr = ties.stiffness(K);
   const Eigen::VectorXd f = loadVector(model, dofs);
   const Eigen::VectorXd uPrescribed = prescribedValues(model, dofs);
   const int nf = dofs.freeCount();
   Eigen::VectorXd u = fromNodalField(dofs, result.firstOrder.displacement);
-  result.criticalFactor = lowestBucklingFactor(K, assembler.assembleGeometric(u));
+  result.criticalFactor = lowestBucklingFactor(
+      Kr, ties.geometric(assembler.assembleGeometric(u), stateResidual(model, dofs, u)));
   requireBelowCritical(result.criticalFactor, "second-order statics");
 
   // 2. Solve (K + KG(u)) u' = f with the axial forces of the last u until u settles.
@@ -75,7 +81,10 @@ SecondOrderResult solveSecondOrder(const Model& model, const SecondOrderOptions&
   const double scaleT = std::max(largest(result.firstOrder.displacement, 0), 1e-300);
   const double scaleR = std::max(largest(result.firstOrder.displacement, 1), 1e-300);
   for (int it = 1;; ++it) {
-    const SparseMatrix A = K + assembler.assembleGeometric(u);
+    // The arms' forces of the last state, as the members' axial forces are.
+    const SparseMatrix A =
+        Kr + ties.geometric(assembler.assembleGeometric(u),
+                            ties.empty() ? Eigen::VectorXd() : tangentTimes(model, dofs, u, u) - f);
     if (!analysed) {
       lu.analyzePattern(A);
       analysed = true;
@@ -86,9 +95,9 @@ SecondOrderResult solveSecondOrder(const Model& model, const SecondOrderOptions&
                        "iterating; the lowest buckling factor of the first-order state is " +
                        std::to_string(result.criticalFactor));
     const Eigen::VectorXd rhs =
-        f.head(nf) - tangentTimes(model, dofs, u, uPrescribed).head(nf);
+        ties.loads(f.head(nf) - tangentTimes(model, dofs, u, uPrescribed).head(nf));
     Eigen::VectorXd next = uPrescribed;
-    next.head(nf) = lu.solve(rhs);
+    next.head(nf) = ties.expand(Eigen::MatrixXd(lu.solve(rhs)));
     if (!next.allFinite())
       throw SolveError("second-order statics: the solution is not finite; the lowest buckling "
                        "factor of the first-order state is " +
@@ -117,7 +126,10 @@ SecondOrderResult solveSecondOrder(const Model& model, const SecondOrderOptions&
   s.displacement = toNodalField(model, dofs, u);
   s.activeSetIterations = result.iterations;
   const Eigen::VectorXd forces = tangentTimes(model, dofs, u, u) - f;
-  for (ReactionComponent& r : s.reactions) r.value = forces[dofs.equation(r.node, r.dof)];
+  // A fixed master also holds what its ties hold their slaves with.
+  Eigen::VectorXd held = forces.tail(dofs.size() - nf);
+  addTiedReactions(ties.tied(), dofs, forces, held);
+  for (ReactionComponent& r : s.reactions) r.value = held[dofs.equation(r.node, r.dof) - nf];
   s.hinges = hingeRotations({model, s.displacement});
   s.elementForces = namedElementForces(model, s.displacement);
   const auto ratio = [](double a, double b) { return b > 0 ? a / b : 1.0; };

@@ -134,10 +134,10 @@ double measuredError(const SymmetricBand& A, const Eigen::VectorXd& b,
 }  // namespace
 
 LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
-    : model_(model), dofs_(model), tied_(tiedEquations(model, dofs_)), reuse_(reuse) {
+    : model_(model), dofs_(model), ties_(model, dofs_), reuse_(reuse) {
   // A line numbered node by node goes into a band, without a pattern (fem/assembly/
   // BandAssembly); other structures, and any with rigid ties, into the sparse pattern.
-  const std::optional<int> kd = tied_.empty() ? stiffnessBand(model, dofs_) : std::nullopt;
+  const std::optional<int> kd = ties_.empty() ? stiffnessBand(model, dofs_) : std::nullopt;
   if (kd) {
     bandK_ = assembleBand(model, dofs_, MatrixKind::stiffness, *kd);
     banded_ = true;
@@ -154,10 +154,7 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
   std::move(assembler).assemble(MatrixKind::stiffness).swap(K_);
   // The factor needs only the pairs that couple (its fill and flops fall by up to 3x), and K
   // keeps only their storage: a planar line's 40 % less, which the factor then reuses.
-  if (!tied_.empty()) {
-    T_ = tieTransformation(tied_, dofs_.freeCount());
-    K_ = tiedStiffness(K_, T_, tied_);
-  }
+  if (!ties_.empty()) K_ = ties_.stiffness(K_);
   dropExactZeros(K_);
   stiffnessEntries_ = K_.nonZeros();
   // Only the reduced right-hand side is kept: the nodal loads and the prescribed values are
@@ -169,8 +166,7 @@ LinearStatics::LinearStatics(const Model& model, SymbolicReuse* reuse)
 Eigen::VectorXd LinearStatics::reducedLoads(Eigen::VectorXd f) const {
   Eigen::VectorXd rhs = reducedRightHandSide(model_, dofs_, std::move(f),
                                              prescribedValues(model_, dofs_));
-  if (tied_.empty()) return rhs;
-  return T_.transpose() * rhs;
+  return ties_.loads(rhs);
 }
 
 void LinearStatics::setLoads(const Loading* loading) {
@@ -192,7 +188,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
     kinematicsChecked = true;
     std::vector<int> heldEquations;
     for (const HeldDof& h : held) heldEquations.push_back(h.equation);
-    for (const TiedEquation& t : tied_) heldEquations.push_back(t.equation);
+    for (int tied : ties_.tiedNumbers()) heldEquations.push_back(tied);
     const SparseMatrix fromBand = banded_ ? bandK_.toSparse() : SparseMatrix();
     const Mechanism mechanism =
         findMechanism(model_, dofs_, banded_ ? fromBand : K_, heldEquations);
@@ -269,7 +265,7 @@ Eigen::VectorXd LinearStatics::solve(const std::vector<HeldDof>& held, double si
   } else {
     u.head(nf) = solver_->solve(b);
     roundOff_ = refineAndMeasure(held.empty() ? K_ : heldMatrix, b, u.head(nf), *solver_);
-    if (!tied_.empty()) u.head(nf) = T_ * Eigen::VectorXd(u.head(nf));  // the slaves' values
+    if (!ties_.empty()) u.head(nf) = ties_.expand(Eigen::MatrixXd(u.head(nf)));  // the slaves' values
   }
   if (!u.allFinite() || !std::isfinite(roundOff_)) {
     requireHeld();
@@ -308,7 +304,7 @@ Eigen::VectorXd LinearStatics::reactions(const Eigen::VectorXd& u) const {
     if (dofs_.isConstrained(eq)) r[eq - dofs_.freeCount()] -= l.value;
   }
   // A fixed master also holds what its ties hold their slaves with.
-  if (!tied_.empty()) addTiedReactions(tied_, dofs_, residual(u), r);
+  if (!ties_.empty()) addTiedReactions(ties_.tied(), dofs_, residual(u), r);
   return r;
 }
 

@@ -84,10 +84,9 @@ class LinearStatics {
   SparseMatrix K_;
   MatrixSymmetry symmetry_ = MatrixSymmetry::unknown;  ///< of K_, known from its elements
   Eigen::VectorXd rhs_;  ///< the free equations' loads less K_fc u_c (prescribed values)
-  /// Rigid ties eliminated (RigidTies.hpp): the tied equations and T; K_ and rhs_ are then
-  /// the reduced ones (the sparse path always).
-  std::vector<TiedEquation> tied_;
-  SparseMatrix T_;
+  /// Rigid ties eliminated (RigidTies.hpp); K_ and rhs_ are then the reduced ones (the
+  /// sparse path always).
+  TieReduction ties_;
   /// The reduced right-hand side of full-length loads f: its free part less K_fc u_c, times T'.
   Eigen::VectorXd reducedLoads(Eigen::VectorXd f) const;
   SymbolicReuse* reuse_;

@@ -185,6 +185,10 @@ TEST_SUITE("moving load") {
              {"path: [span2, span1]", "path: [span2, span3]"}},
             "does not join", "    path:");
     refused({{"path: [span2, span1]", "path: [span2, span1, span2]"}}, "twice", "    path:");
+    // A hinge on the path, at a station along it or at a joint its members share (read-time:
+    // the runner would refuse the released ends only once meshed).
+    refused({{"analyses:\n", "hinges: [{at: m1}]\nanalyses:\n"}}, "the hinge at 'm1'", "    path:");
+    refused({{"analyses:\n", "hinges: [{at: B}]\nanalyses:\n"}}, "the hinge at 'B'", "    path:");
     // A wheel whose offset leaves it off the path while the first wheel is on it.
     refused({{"wheels: [{force: 1 N}]", "wheels: [{force: 1 N}, {force: 1 N, offset: 13 m}]"}},
             "never on the path", "    wheels:");

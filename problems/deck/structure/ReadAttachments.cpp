@@ -589,12 +589,17 @@ void readAttachments(Context& c) {
 void refuseTiedAnalyses(const Context& c) {
   if (c.deck.rigidLinks.empty()) return;
   for (const DeckAnalysis& a : c.deck.analyses) {
-    const StaticSpec* s = a.as<StaticSpec>();
-    if (s && !s->secondOrder) continue;
+    // The frame analyses eliminate the ties (fem/assembly/RigidTies.hpp): the statics, first
+    // and second order, and what they drive (moving loads, buckling), the modes and what
+    // rests on them (response spectra, base motion).
+    if (a.as<StaticSpec>() || a.as<ModalSpec>() || a.as<BucklingSpec>() ||
+        a.as<MovingLoadSpec>() || a.as<ResponseSpectrumSpec>() || a.as<BaseMotionSpec>())
+      continue;
     throw DeckError(c.deck.path, a.place,
-                    "rigid links, offsets and diaphragms are eliminated in first-order statics "
-                    "only; the " + a.type() + (s ? " (second-order)" : "") + " analysis '" +
-                    a.name + "' would ignore them: remove it or the ties");
+                    "rigid links, offsets and diaphragms are eliminated in the frame analyses "
+                    "(static, modal, buckling, moving-load, response-spectrum, base-motion) "
+                    "only; the " + a.type() + " analysis '" + a.name +
+                    "' would ignore them: remove it or the ties");
   }
 }
 

@@ -88,6 +88,32 @@ void MovingLoadSpec::read(const reader::Context& c, const Field& f) {
         f.fail("member '" + name + "' on the path releases an end: a moving load's path holds "
                "no hinges (its elements' nodal loads would not be the beam's own)");
     }
+  // A frame's `hinges:` entry releases every member end at its point: one at a path
+  // member's end, at a joint on it or at a station along it releases the path.
+  if (deck.frame) {
+    const DeckFrame& frame = *deck.frame;
+    const auto onPath = [&](int member) {
+      return member >= 0 &&
+             std::find(path.begin(), path.end(), deck.segments[std::size_t(member)].name) !=
+                 path.end();
+    };
+    for (const DeckHinge& h : deck.hinges) {
+      bool released = false;
+      for (std::size_t j = 0; j < frame.joints.size(); ++j) {
+        if (frame.joints[j].name != h.point) continue;
+        released = released || onPath(frame.joints[j].member);
+        for (std::size_t m = 0; m < frame.members.size(); ++m)
+          if ((frame.members[m].from == int(j) || frame.members[m].to == int(j)) && onPath(int(m)))
+            released = true;
+      }
+      for (const MemberStation& st : frame.stations)
+        if (st.name == h.point && onPath(st.member)) released = true;
+      if (released)
+        f.require("path").fail("the hinge at '" + h.point + "' releases a member end on the path: a moving "
+               "load's path holds no hinges (its elements' nodal loads would not be the beam's "
+               "own)");
+    }
+  }
   if (!deck.frame && !deck.hinges.empty())
     f.fail("the line has a hinge (at '" + deck.hinges.front().point +
            "'): a moving load's path holds no hinges (its elements' nodal loads would not be "

@@ -25,11 +25,20 @@ DesignSpectrum spectrumTable(const reader::Context& c, const Field& table) {
   return DesignSpectrum::table(std::move(periods), std::move(accelerations));
 }
 
-/// `{code: EN1998-1, type: 1|2, ground: A..E, ag: ...}` at the analysis' damping.
+/// `{code: EN1998-1, type: 1|2, ground: A..E, ag: ...}` at the analysis' damping, or with
+/// `component: vertical` the vertical spectrum (no ground).
 DesignSpectrum codeSpectrum(const reader::Context& c, const Field& f, double damping) {
-  f.allowOnly({"code", "type", "ground", "ag"}, "a code spectrum");
+  f.allowOnly({"code", "type", "ground", "ag", "component"}, "a code spectrum");
   f.require("code").choice({"EN1998-1"});
   const int type = f.require("type").integer(c.evaluator, 1, 2);
+  if (auto component = f.get("component");
+      component && component->choice({"horizontal", "vertical"}) == "vertical") {
+    if (auto ground = f.get("ground"))
+      ground->fail("the vertical spectrum (EN 1998-1 Table 3.4) is the same on every ground: "
+                   "remove ground");
+    return DesignSpectrum::en1998Vertical(
+        type, f.require("ag").positive(c.evaluator, dim::acceleration), damping);
+  }
   const std::string ground = f.require("ground").choice({"A", "B", "C", "D", "E"});
   const double ag = f.require("ag").positive(c.evaluator, dim::acceleration);
   return DesignSpectrum::en1998(type, GroundType(ground[0] - 'A'), ag, damping);

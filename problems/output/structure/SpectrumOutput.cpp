@@ -148,17 +148,19 @@ Json peakJson(const PeakResponse& p, const Model& model) {
 }
 
 /// Sa against T as a gnuplot data block: over a table's own range, or an EN 1998-1 shape up to
-/// 4 s (its range) or past the longest mode; its corners sampled exactly.
-/// The spectrum's curve and the modes' (T, Sa), T shown as `period` says and Sa as `sa`.
+/// 4 s (its range) or past the longest mode; its corners sampled exactly. A table's held end
+/// values reach out to the modes beyond it. The spectrum's curve and the modes' (T, Sa), T shown
+/// as `period` says and Sa as `sa`.
 std::string spectrumCurve(const ResponseSpectrumResult& r, const OutputUnits::Shown& period,
                           const OutputUnits::Shown& sa) {
   std::vector<double> periods = r.spectrum.breakPeriods();
-  double last = periods.back();
-  if (!r.spectrum.isTable()) {
-    last = 4;
-    for (const Mode& m : r.modal.modes) last = std::max(last, 1.1 * periodOf(m));
+  double first = periods.front(), last = periods.back();
+  if (!r.spectrum.isTable()) last = 4;
+  for (const Mode& m : r.modal.modes) {
+    if (!r.spectrum.isTable() || periodOf(m) > last) last = std::max(last, 1.1 * periodOf(m));
+    if (r.spectrum.isTable()) first = std::min(first, periodOf(m));
   }
-  const double first = periods.front();
+  if (first < periods.front()) periods.push_back(first);
   for (int i = 0; i <= 400; ++i) periods.push_back(first + (last - first) * i / 400.0);
   std::sort(periods.begin(), periods.end());
   std::ostringstream data;

@@ -188,11 +188,37 @@ TEST_SUITE("response spectrum") {
           doctest::Approx(7.5 * std::sqrt(10.0 / 7)).epsilon(1e-14));
   }
 
-  TEST_CASE("refusals: a period outside the table, a direction without mass") {
+  TEST_CASE("EN 1998-1 vertical spectrum: Table 3.4 and (3.8)-(3.11) by hand") {
+    // Type 1, ag = 2 m/s^2: avg = 0.9 ag = 1.8, TB = 0.05, TC = 0.15, TD = 1 s, plateau
+    // 3.0 avg = 5.4 at 5 % (eta = 1), whatever the ground.
+    const DesignSpectrum v1 = DesignSpectrum::en1998Vertical(1, 2.0, 0.05);
+    CHECK(v1.at(0) == doctest::Approx(1.8).epsilon(1e-14));
+    CHECK(v1.at(0.025) == doctest::Approx(1.8 * (1 + 0.5 * 2)).epsilon(1e-14));
+    CHECK(v1.at(0.1) == doctest::Approx(5.4).epsilon(1e-14));
+    CHECK(v1.at(1.0) == doctest::Approx(5.4 * 0.15).epsilon(1e-14));
+    CHECK(v1.at(2.0) == doctest::Approx(5.4 * 0.15 * 1.0 / 4).epsilon(1e-14));
+    // Type 2: avg = 0.45 ag; at 2 % damping eta = sqrt(10 / 7) on the plateau.
+    const DesignSpectrum v2 = DesignSpectrum::en1998Vertical(2, 2.0, 0.02);
+    CHECK(v2.at(0.1) == doctest::Approx(0.9 * 3 * std::sqrt(10.0 / 7)).epsilon(1e-14));
+    CHECK(v2.describe().find("vertical") != std::string::npos);
+  }
+
+  TEST_CASE("a period outside the table holds its end value; a direction without mass") {
     const Model model = shearBuilding({1000}, {1e6});  // T = 0.199 s
-    CHECK_THROWS_AS(solveResponseSpectrum(model, DesignSpectrum::table({0.5, 1}, {1, 1}),
-                                          onlyX(1, ModalRule::cqc)),
-                    std::domain_error);
+    // Below the table's first period the first value holds, above its last the last; each
+    // such mode is named in a warning. The table's values are exact (no interpolation).
+    const ResponseSpectrumResult below = solveResponseSpectrum(
+        model, DesignSpectrum::table({0.5, 1}, {2, 3}), onlyX(1, ModalRule::cqc));
+    CHECK(below.spectralAcceleration.front() == 2.0);
+    REQUIRE(below.warnings.size() == 1);
+    CHECK(below.warnings.front().find("mode 1 has the period 0.198") != std::string::npos);
+    const ResponseSpectrumResult above = solveResponseSpectrum(
+        model, DesignSpectrum::table({0.05, 0.1}, {2, 3}), onlyX(1, ModalRule::cqc));
+    CHECK(above.spectralAcceleration.front() == 3.0);
+    CHECK(above.warnings.size() == 1);
+    CHECK(solveResponseSpectrum(model, DesignSpectrum::table({0.1, 0.3}, {2, 3}),
+                                onlyX(1, ModalRule::cqc))
+              .warnings.empty());
     ResponseSpectrumOptions o = onlyX(1, ModalRule::cqc);
     o.directions = {1};
     CHECK_THROWS_AS(solveResponseSpectrum(model, sloped(1, 0), o), std::invalid_argument);
