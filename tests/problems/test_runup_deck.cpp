@@ -5,7 +5,10 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "tests/problems/DeckTestSupport.hpp"
 
@@ -58,6 +61,42 @@ TEST_SUITE("rotor decks") {
       CHECK(test::csvColumn(history[0], column) >= 0);
     CHECK(std::filesystem::exists(solved.dir / "films_runup_journals.png"));
     std::filesystem::remove_all(solved.dir.parent_path());
+  }
+
+  TEST_CASE("run-up charts in the user's units: journals over their clearance, the peak") {
+    // The journals' chart divides the history's positions (in mm here) by the clearance: the
+    // divisor must be c in mm, so that the plotted radius is the eccentricity column, and the
+    // amplitude chart's key names the peak of results.json (SI) in mm.
+    const auto out = test::scratchDir("journal-runup-mm") / "out";
+    const test::ProcessResult run = test::runBeamrotor(
+        {"solve", "problems/journal_runup.yaml", "--out", out.string(), "--units", "length=mm"});
+    CAPTURE(run.err);
+    REQUIRE(run.exitCode == 0);
+    const std::string script = test::fileContents(out / "films_runup_journals.gp");
+    const auto history = test::csvCells(out / "films_runup_history.csv");
+    const std::size_t y = test::csvColumn(history[0], "left_y"),
+                      z = test::csvColumn(history[0], "left_z"),
+                      e = test::csvColumn(history[0], "left_eccentricity");
+    const std::string using_ = "($" + std::to_string(y + 1) + "/";
+    const std::size_t at = script.find(using_);
+    REQUIRE(at != std::string::npos);
+    const double divisor = std::stod(script.substr(at + using_.size()));
+    CHECK(divisor == doctest::Approx(0.040).epsilon(1e-12));  // c = 40 um in mm
+    for (std::size_t row = 2; row < history.size(); row += 97) {
+      const double radius = std::hypot(std::stod(history[row][y]), std::stod(history[row][z]));
+      CHECK(radius / divisor == doctest::Approx(std::stod(history[row][e])).epsilon(1e-12));
+    }
+    const nlohmann::json results = nlohmann::json::parse(test::fileContents(out / "results.json"));
+    double peak = 0;
+    for (const auto& a : results["analyses"])
+      if (a["type"] == "run-up") peak = a["points"][0]["peak_amplitude"].get<double>();
+    const std::string amplitude = test::fileContents(out / "films_runup.gp");
+    const std::size_t key = amplitude.find("disk: peak ");
+    REQUIRE(key != std::string::npos);
+    // The key's number has 4 significant digits.
+    CHECK(std::stod(amplitude.substr(key + 11)) == doctest::Approx(peak * 1e3).epsilon(1e-3));
+    CHECK(amplitude.find(" mm at ", key) != std::string::npos);
+    std::filesystem::remove_all(out.parent_path());
   }
 
   TEST_CASE("run-up deck: the passage's peak in every output, against Runge-Kutta") {

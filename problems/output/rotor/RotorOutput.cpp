@@ -257,7 +257,7 @@ void writeRotorFiles(const RotorFiles& f, const RunUpOutcome& r) {
                                       *f.tables.runUpHistory, runUpHistoryCsv(stem), r, f.units));
   if (f.tables.runUpHistory->rowCount() > 1 && !r.runUp.journals.empty())
     drawChart(f.dir, runUpJournalsChart(fitted(f.caption), runUpJournalChart(stem),
-                                        *f.tables.runUpHistory, runUpHistoryCsv(stem), r));
+                                        *f.tables.runUpHistory, runUpHistoryCsv(stem), r, f.units));
 }
 
 }  // namespace beamrotor

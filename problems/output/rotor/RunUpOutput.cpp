@@ -64,12 +64,14 @@ ChartScript runUpAmplitudeChart(const std::string& caption, const std::string& c
                                 const CsvTable& table, const std::string& csvFile,
                                 const RunUpOutcome& r, const OutputUnits& units) {
   const SpeedAxes axes = speedAxes(units);
+  // The table's column (already in the user's unit where they set one) and the peak (SI).
   const OutputUnits::Shown amplitude = units.columnIn("m", {1e6, "µm"});
+  const OutputUnits::Shown peak = units.valueIn("m", {1e6, "µm"});
   std::vector<std::string> titles;
   for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
     const RunUpHistory& h = r.runUp.histories[k];
     titles.push_back(r.responsePoints[k] + ": peak " +
-                     labelNumber(h.peakAmplitude * amplitude.factor) + " " + amplitude.unit +
+                     labelNumber(h.peakAmplitude * peak.factor) + " " + peak.unit +
                      " at " + labelNumber(rpmOf(h.speedAtPeak) * axes.speed.factor) + " " +
                      axes.speed.unit);
   }
@@ -139,7 +141,9 @@ ChartScript runUpOrbitsChart(const std::string& caption, const std::string& char
 
 ChartScript runUpJournalsChart(const std::string& caption, const std::string& chartName,
                                const CsvTable& history, const std::string& csvFile,
-                               const RunUpOutcome& r) {
+                               const RunUpOutcome& r, const OutputUnits& units) {
+  // The history's positions are in the user's length unit where they set one: so is c here.
+  const double toTable = units.valueIn("m", {1, "m"}).factor;
   std::vector<std::string> titles;
   for (const JournalTrack& j : r.runUp.journals) titles.push_back(j.name);
   titles.push_back("clearance");
@@ -150,8 +154,9 @@ ChartScript runUpJournalsChart(const std::string& caption, const std::string& ch
   for (std::size_t k = 0; k < r.runUp.journals.size(); ++k) {
     const JournalTrack& j = r.runUp.journals[k];
     const int y = history.column(j.name + "_y"), z = history.column(j.name + "_z");
-    body << gnuplotFile(csvFile) << " skip 1 using ($" << y << "/" << number(j.clearance)
-         << "):($" << z << "/" << number(j.clearance) << ") with lines linewidth 0.8 "
+    const std::string clearance = number(j.clearance * toTable);
+    body << gnuplotFile(csvFile) << " skip 1 using ($" << y << "/" << clearance << "):($" << z
+         << "/" << clearance << ") with lines linewidth " << (k % 2 ? "1.2 dashtype 2 " : "0.8 ")
          << colour(k) << " title " << gnuplotText(j.name) << ", \\\n       ";
   }
   body << "cos(t), sin(t) with lines linewidth 1.5 lc rgb 'black' title "

@@ -52,9 +52,10 @@ ChartScript runUpOrbitsChart(const std::string& caption, const std::string& char
                              const RunUpOutcome& r, const OutputUnits& units = {});
 
 /// The nonlinear journals' centres in their bearings over the run (y / c, z / c), inside the
-/// clearance circle, from a runUpHistoryTable in csvFile.
+/// clearance circle, from a runUpHistoryTable in csvFile (its positions in `units`). Every
+/// second journal is dashed: the journals of a symmetric rotor run on one path.
 ChartScript runUpJournalsChart(const std::string& caption, const std::string& chartName,
                                const CsvTable& history, const std::string& csvFile,
-                               const RunUpOutcome& r);
+                               const RunUpOutcome& r, const OutputUnits& units = {});
 
 }  // namespace beamrotor
