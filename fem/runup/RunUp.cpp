@@ -13,6 +13,7 @@
 #include "fem/rotor/DynamicStiffness.hpp"
 #include "fem/solvers/Errors.hpp"
 #include "fem/solvers/RotorFactor.hpp"
+#include "fem/solvers/StepFactor.hpp"
 #include "fem/timing/Stopwatch.hpp"
 #include "fem/transient/TransientNewmark.hpp"
 
@@ -201,7 +202,7 @@ class RunUpSystem {
 /// Newton on the static equilibrium K u - F_films(u, 0) = M g: the journals' films carrying
 /// the weight (the linear rest of the rotor in K).
 void settleOnFilms(const RunUpSystem& system, const Instant& start, Eigen::VectorXd& u,
-                   double tolerance, RepeatedFactor<double>& factor) {
+                   double tolerance, StepFactor& factor) {
   const Eigen::VectorXd v = Eigen::VectorXd::Zero(u.size());
   for (int iteration = 0; iteration < kMostNewtonIterations; ++iteration) {
     const FilmForces films = system.films(u, v, start.speed);
@@ -227,7 +228,7 @@ void settleOnFilms(const RunUpSystem& system, const Instant& start, Eigen::Vecto
 /// motion. With nonlinear journals the rest is their films' equilibrium, the steady orbit the
 /// linear one about it (a small start-up transient remains).
 TransientState initialState(const RunUpSystem& system, const Instant& start, RunUpStart how,
-                            double tolerance, RepeatedFactor<double>& factor) {
+                            double tolerance, StepFactor& factor) {
   const int n = system.rotor().size();
   TransientState s;
   s.u = Eigen::VectorXd::Zero(n);
@@ -386,7 +387,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
            1e-12 * (std::abs(a) + std::abs(drive->torque.at(t, speed)) / drive->inertia + 1e-300);
   };
 
-  RepeatedFactor<double> factor;
+  StepFactor factor;
   Spin spin;
   Instant now;
   TransientState s;
@@ -495,7 +496,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
         if (!factor.factorize(tangent)) {
           std::ostringstream msg;
           msg << "run-up: the effective matrix M + gamma dt C + beta dt^2 K is singular at t = "
-              << next.t << " s (UMFPACK rcond = " << factor.rcond()
+              << next.t << " s (rcond = " << factor.rcond()
               << "): some free dof has neither mass nor stiffness";
           throw SolveError(msg.str());
         }

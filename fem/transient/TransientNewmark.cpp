@@ -34,13 +34,13 @@ NewmarkStepper::NewmarkStepper(const TransientSystem& system, double dt, double 
   const double gamma = rule_.gamma, beta = rule_.beta;
 
   // Effective matrix: M, C and K share the assembler's pattern, so this is an entrywise sum.
-  S_ = system.mass() + ((1 + alpha) * beta * dt * dt) * system.stiffness();
-  if (system.damped()) S_ += ((1 + alpha) * gamma * dt) * system.damping();
-  lu_.compute(S_);
+  SparseMatrix S = system.mass() + ((1 + alpha) * beta * dt * dt) * system.stiffness();
+  if (system.damped()) S += ((1 + alpha) * gamma * dt) * system.damping();
+  lu_.compute(S);
   if (!lu_.healthy(kSingularRcond)) {
     std::ostringstream msg;
     msg << "transient analysis: the effective matrix M + gamma dt C + beta dt^2 K is singular "
-           "(UMFPACK rcond = "
+           "(rcond = "
         << lu_.rcond()
         << "): some free dof has neither mass nor "
            "stiffness, or the structure has a massless mechanism";

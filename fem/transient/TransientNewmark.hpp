@@ -12,7 +12,7 @@
 // triangular solves per step.
 #pragma once
 
-#include "fem/solvers/SparseLU.hpp"
+#include "fem/solvers/StepFactor.hpp"
 #include "fem/transient/TransientSystem.hpp"
 
 namespace beamrotor {
@@ -37,7 +37,7 @@ class NewmarkStepper {
   /// dt in s; alpha in [-1/3, 0] (throws std::invalid_argument otherwise). Factorises S; throws
   /// SolveError when it is singular (e.g. a free dof with neither mass nor stiffness).
   NewmarkStepper(const TransientSystem& system, double dt, double alpha);
-  NewmarkStepper(const NewmarkStepper&) = delete;  // the factors point into S_
+  NewmarkStepper(const NewmarkStepper&) = delete;  // the factor holds its matrix
   NewmarkStepper& operator=(const NewmarkStepper&) = delete;
 
   /// Advances s (consistent: M a + C v + K u = f at s.t) by one step dt.
@@ -51,8 +51,7 @@ class NewmarkStepper {
  private:
   const TransientSystem& system_;
   NewmarkRule rule_;
-  SparseMatrix S_;  // the effective matrix; UMFPACK's solve refers back to it, keep it alive
-  SparseLU lu_;
+  StepFactor lu_;  ///< of the effective matrix S
   Eigen::VectorXd uPredicted_, vPredicted_, rhs_, f_;
 };
 
