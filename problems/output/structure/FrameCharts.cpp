@@ -192,7 +192,8 @@ std::string frameLayout(bool planar, int rows, int columns, const std::string& c
 /// Equal scales on every axis: a planar frame in its plane, a 3d frame in a 3d view with
 /// global y (up) vertical. The vertical range holds the magnified shape and the diagrams (a
 /// flat frame would otherwise get a sliver of an axis crowded with ticks); the view shrunk a
-/// little and the z ticks moved off the corner they share with the x axis' last tick.
+/// little and the z ticks moved off the corner they share with the x axis' last tick; the
+/// vertical axis' name clear of its tick labels.
 std::string axesSetup(bool planar, const Eigen::Vector3d& lowest, const Eigen::Vector3d& highest,
                       double extent, const OutputUnits::Shown& length) {
   const Eigen::Vector3d low = lowest * length.factor, high = highest * length.factor;
@@ -231,6 +232,8 @@ std::string axesSetup(bool planar, const Eigen::Vector3d& lowest, const Eigen::V
   out += axis("x", "x");
   out += axis("y", "z");
   out += axis("z", "y");
+  // The vertical axis' name two characters further left: four-digit ticks (mm) reached it.
+  out.insert(out.size() - 1, " offset -2,0");
   return out;
 }
 
