@@ -30,4 +30,16 @@ class KeptPattern {
   std::vector<int> starts_, rows_;
 };
 
+/// True when A and B are compressed with the same pattern and the same values, entry for entry:
+/// a factor of one serves the other.
+template <class Matrix>
+bool sameEntries(const Matrix& A, const Matrix& B) {
+  return A.isCompressed() && B.isCompressed() && A.rows() == B.rows() && A.cols() == B.cols() &&
+         A.nonZeros() == B.nonZeros() &&
+         std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1,
+                    B.outerIndexPtr()) &&
+         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), B.innerIndexPtr()) &&
+         std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), B.valuePtr());
+}
+
 }  // namespace beamrotor

@@ -34,10 +34,8 @@ class RepeatedFactor {
   /// speed-independent bearings factorises K once).
   bool factorize(Matrix A) {
     if (!A.isCompressed()) A.makeCompressed();
+    if (factorizations_ > 0 && sameEntries(A, A_)) return factored_;
     const bool samePattern = pattern_.matches(A);  // false before the first analysis
-    if (samePattern && factorizations_ > 0 &&
-        std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), A_.valuePtr()))
-      return factored_;
     A_ = std::move(A);
     if (!samePattern) {
       lu_.analyzePattern(A_);

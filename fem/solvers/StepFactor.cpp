@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fem/solvers/KeptPattern.hpp"
+
 namespace beamrotor {
 
 void StepFactor::compute(const SparseMatrix& A) {
@@ -25,22 +27,11 @@ void StepFactor::compute(const SparseMatrix& A) {
 }
 
 bool StepFactor::factorize(const SparseMatrix& A) {
-  if (factorizations_ == 0 || !sameAsLast(A)) {
+  if (factorizations_ == 0 || !sameEntries(A, A_)) {
     compute(A);
     ++factorizations_;
   }
   return healthy(kSingularRcond);
-}
-
-bool StepFactor::sameAsLast(const SparseMatrix& A) const {
-  if (!A.isCompressed() || A.rows() != A_.rows() || A.cols() != A_.cols() ||
-      A.nonZeros() != A_.nonZeros())
-    return false;
-  const auto n = A.nonZeros();
-  return std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1,
-                    A_.outerIndexPtr()) &&
-         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + n, A_.innerIndexPtr()) &&
-         std::equal(A.valuePtr(), A.valuePtr() + n, A_.valuePtr());
 }
 
 bool StepFactor::healthy(double tol) const {

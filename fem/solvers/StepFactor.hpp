@@ -43,7 +43,6 @@ class StepFactor {
   Eigen::VectorXd rowScale_;  ///< 1 / (sum of |a_ij| of the row), dense path
   Eigen::PartialPivLU<Eigen::MatrixXd> denseLu_;
   double denseRcond_ = 0;
-  bool sameAsLast(const SparseMatrix& A) const;
   SparseMatrix A_;  // the matrix last factorised (UMFPACK's solve refines with it)
   SparseLU sparseLu_;
 };
