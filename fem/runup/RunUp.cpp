@@ -462,7 +462,8 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
   };
   if (drive) {
     // Omega'_0 and the state's acceleration depend on each other through the unbalance's
-    // tangential force and torque: a fixed point (a contraction: the coupling is (m e)^2 / (m J)).
+    // tangential force and torque: a fixed point (a contraction: the coupling is (m e)^2 / (m J));
+    // the rubs' and films' torques at the start state come in on the second pass.
     spin = {drive->startSpeed, drive->torque.at(0, drive->startSpeed) / drive->inertia, 0};
     for (int k = 0;; ++k) {
       now = system.at(0, spin);
@@ -470,7 +471,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
       unbalanceTorque = system.unbalanceTorque(s.a, 0);
       load = loadOf(system.films(s.u, s.v, spin.speed), spin.speed);
       const double a = (drive->torque.at(0, spin.speed) - load.torque) / drive->inertia;
-      if (settled(a, spin.acceleration, 0, spin.speed) || o.unbalance.empty()) break;
+      if (settled(a, spin.acceleration, 0, spin.speed)) break;
       if (k == 50) throw SolveError("run-up: the drive's start acceleration did not settle");
       spin.acceleration = a;
     }

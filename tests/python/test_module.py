@@ -175,7 +175,7 @@ def test_run_up_on_journal_films_driven_by_a_motor():
     run = beamrotor.solve(PROBLEMS / "journal_runup.yaml", sweep_off=True)
     history = run.tables["films"]["runup_history"]
     w = history["speed"]
-    assert history["speed_rpm"][-1] == pytest.approx(JOURNALEND, rel=JOURNALTOL)
+    assert history["speed_rpm"][-1] == pytest.approx(2801.79, rel=1e-4)
     petroff = 2 * 2 * np.pi * 0.02 * w * 0.015**3 * 0.012 / 40e-6
     assert np.all(history["film_torque"] > petroff)
     for bearing in ("left", "right"):

@@ -1,7 +1,9 @@
 #include "problems/output/rotor/RunUpOutput.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
+#include <string>
 #include <utility>
 
 #include "problems/output/files/ChartParts.hpp"
@@ -139,14 +141,30 @@ ChartScript runUpOrbitsChart(const std::string& caption, const std::string& char
   std::ostringstream body;
   const auto [width, height] = squarePanel(body, caption, titles, "uy [" + length.unit + "]",
                                            "uz [" + length.unit + "]");
-  if (!r.runUp.rubs.empty()) body << "  set parametric\n  set trange [0:2*pi]\n";
+  if (!r.runUp.rubs.empty()) {
+    // Centred on the stators, the clearance circles and the orbits in view.
+    double extent = 0;
+    for (const RubTrack& t : r.runUp.rubs) extent = std::max(extent, t.clearance);
+    for (const RunUpHistory& h : r.runUp.histories)
+      for (std::size_t i = 0; i < h.uy.size(); ++i)
+        extent = std::max(extent, std::hypot(h.uy[i], h.uz[i]));
+    const std::string e = number(1.1 * extent * shown);
+    body << "  set parametric\n  set trange [0:2*pi]\n  set xrange [-" << e << ":" << e
+         << "]\n  set yrange [-" << e << ":" << e << "]\n";
+  }
   body << "  plot ";
+  const std::string last = std::to_string(std::max<std::size_t>(history.rowCount(), 1) - 1);
   for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
     const int y = history.column(titles[k] + "_uy"), z = history.column(titles[k] + "_uz");
+    const std::string columns = " skip 1 using ($" + std::to_string(y) + "*" +
+                                number(length.factor) + "):($" + std::to_string(z) + "*" +
+                                number(length.factor) + ")";
     if (k) body << ", \\\n       ";
-    body << gnuplotFile(csvFile) << " skip 1 using ($" << y << "*" << number(length.factor)
-         << "):($" << z << "*" << number(length.factor) << ") with lines linewidth 0.8 "
-         << colour(k) << " title " << gnuplotText(titles[k]);
+    body << gnuplotFile(csvFile) << columns << " with lines linewidth 0.8 " << colour(k)
+         << " title " << gnuplotText(titles[k]);
+    // Where the point ends (a still point draws no line).
+    body << ", \\\n       " << gnuplotFile(csvFile) << columns << " every ::" << last << "::"
+         << last << " with points pointtype 7 pointsize 1.2 " << colour(k) << " notitle";
   }
   // Each rub's clearance circle, in its point's colour.
   for (std::size_t k = 0; k < r.runUp.rubs.size(); ++k) {
