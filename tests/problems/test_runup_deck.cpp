@@ -160,7 +160,7 @@ TEST_SUITE("rotor decks") {
          {"seal_radial", "seal_normal_force", "seal_friction_force", "seal_rub_torque", "rub"})
       CHECK(test::csvColumn(history[0], column) >= 0);
     const std::string script = test::fileContents(solved.dir / "rub_runup_orbits.gp");
-    CHECK(script.find("clearance of rub 'seal'") != std::string::npos);
+    CHECK(script.find("clearance of rub") != std::string::npos);
     CHECK(std::filesystem::exists(solved.dir / "rub_runup_orbits.png"));
     std::filesystem::remove_all(solved.dir.parent_path());
   }
@@ -195,14 +195,14 @@ TEST_SUITE("rotor decks") {
          15, "length"},
         {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
          "    rub: [{at: mid, clearance: 0.1 mm, stiffness: -1e7, friction: 0.2, radius: 1 cm}]\n",
-         15, "stiffness"},
+         15, "positive"},
         {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
          "    rub: [{at: middle, clearance: 0.1 mm, stiffness: 1e7, friction: 0.2, radius: 1 cm}]\n",
          15, "middle"},
         {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
          "    rub: [{at: mid, clearance: 0.1 mm, stiffness: 1e7, friction: 0.2, radius: 1 cm,\n"
          "           slip: 1}]\n",
-         15, "slip_velocity"},
+         16, "slip_velocity"},
     };
     for (const Bad& b : cases) {
       CAPTURE(b.lines);
