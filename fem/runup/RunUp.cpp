@@ -9,6 +9,8 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "fem/rotor/DynamicStiffness.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -64,6 +66,19 @@ struct PlacedRub {
   const RubContact* rub = nullptr;
   int y = -1, z = -1;
 };
+
+/// The free equations of uy and uz at `node`; throws naming `what` (a recorded node, a rub
+/// station, ...) when either is not free.
+std::pair<int, int> lateralEquations(const RotorSystem& rotor, int node, const std::string& what) {
+  const DofMap& dofs = rotor.dofs();
+  if (node < 0 || node >= rotor.model().nodeCount())
+    throw std::invalid_argument("run-up: " + what + " has no node " + std::to_string(node));
+  const int y = dofs.equation(node, Dof::uy), z = dofs.equation(node, Dof::uz);
+  if (!dofs.isFree(y) || !dofs.isFree(z))
+    throw std::invalid_argument("run-up: " + what + " needs free uy and uz, not " +
+                                rotor.model().describe({node, Dof::uy}));
+  return {y, z};
+}
 
 class RunUpSystem {
  public:
@@ -191,7 +206,6 @@ class RunUpSystem {
   }
 
   void placeJournals(const Model& model, double startSpeed, const RunUpOptions& o) {
-    const DofMap& dofs = rotor_.dofs();
     for (const NonlinearJournal& n : o.journals) {
       const auto* element =
           n.element >= 0 && n.element < int(model.elements().size())
@@ -205,11 +219,7 @@ class RunUpSystem {
             "' is no bearing between its journal's uy, uz and the ground (or has no film)");
       PlacedJournal j;
       j.journal = &n;
-      j.y = dofs.equation(n.node, Dof::uy);
-      j.z = dofs.equation(n.node, Dof::uz);
-      if (!dofs.isFree(j.y) || !dofs.isFree(j.z))
-        throw std::invalid_argument("run-up: nonlinear journal '" + n.name +
-                                    "' needs free uy and uz at its node");
+      std::tie(j.y, j.z) = lateralEquations(rotor_, n.node, "nonlinear journal '" + n.name + "'");
       if (!(startSpeed > 0) && n.load.norm() > 0)
         throw std::invalid_argument(
             "run-up: a loaded journal bearing has no film at rest: its nonlinear run starts at "
@@ -223,20 +233,14 @@ class RunUpSystem {
   }
 
   void placeRubs(const RunUpOptions& o) {
-    const DofMap& dofs = rotor_.dofs();
     for (const RubContact& r : o.rubs) {
-      if (r.node < 0 || r.node >= rotor_.model().nodeCount())
-        throw std::invalid_argument("run-up: rub '" + r.name + "' has no node");
       if (!(r.clearance > 0 && r.stiffness > 0 && r.damping >= 0 && r.friction >= 0 &&
             r.radius > 0 && r.slipVelocity > 0))
         throw std::invalid_argument("run-up: rub '" + r.name +
                                     "' needs c, k, R, v_e > 0 and d, mu >= 0");
       PlacedRub p;
       p.rub = &r;
-      p.y = dofs.equation(r.node, Dof::uy);
-      p.z = dofs.equation(r.node, Dof::uz);
-      if (!dofs.isFree(p.y) || !dofs.isFree(p.z))
-        throw std::invalid_argument("run-up: rub '" + r.name + "' needs free uy and uz at its node");
+      std::tie(p.y, p.z) = lateralEquations(rotor_, r.node, "rub '" + r.name + "'");
       rubs_.push_back(p);
     }
   }
@@ -367,18 +371,6 @@ class EnergyAccount {
          rubWork_ = 0;
 };
 
-/// The free equations of uy and uz at `node`; throws when either is not free.
-std::pair<int, int> lateralEquations(const RotorSystem& rotor, int node) {
-  const DofMap& dofs = rotor.dofs();
-  if (node < 0 || node >= rotor.model().nodeCount())
-    throw std::invalid_argument("run-up: no node " + std::to_string(node) + " to record");
-  const int y = dofs.equation(node, Dof::uy), z = dofs.equation(node, Dof::uz);
-  if (!dofs.isFree(y) || !dofs.isFree(z))
-    throw std::invalid_argument("run-up: a recorded node needs free uy and uz, not " +
-                                rotor.model().describe({node, Dof::uy}));
-  return {y, z};
-}
-
 /// Where the spin comes from: a prescribed profile, or a drive whose speed is a state.
 struct SpinSource {
   const SpeedProfile* profile = nullptr;
@@ -404,7 +396,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
   const RunUpSystem system(model, source.startSpeed(), o);
   const RotorSystem& rotor = system.rotor();
   std::vector<std::pair<int, int>> recorded;
-  for (int node : o.nodes) recorded.push_back(lateralEquations(rotor, node));
+  for (int node : o.nodes) recorded.push_back(lateralEquations(rotor, node, "a recorded node"));
 
   RunUpResult out;
   out.timeStep = o.timeStep;

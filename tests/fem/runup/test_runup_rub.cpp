@@ -59,6 +59,30 @@ RubContact rubStation(double clearance, double stiffness, double friction, doubl
   return r;
 }
 
+/// The rotor spun at a constant `spin` (rad/s) for `duration` (s) with an unbalance `me` at
+/// the disk.
+RunUpResult unbalancedRun(const RubRotor& rotor, double dt, double me, double spin,
+                          double duration, RunUpStart start = RunUpStart::rest) {
+  RunUpOptions o = rotor.options(dt);
+  o.start = start;
+  Unbalance u;
+  u.node = rotor.disk;
+  u.me = me;
+  o.unbalance = {u};
+  return solveRunUp(rotor.model, SpeedProfile::ramp(spin, spin, duration), o);
+}
+
+/// The disk's mean whirl speed (rad/s, > 0 forward) over the samples from `from` on: its
+/// centre's unwrapped angle against time.
+double whirlSpeed(const RunUpResult& r, std::size_t from) {
+  const RunUpHistory& h = r.histories[0];
+  double turned = 0;
+  for (std::size_t i = from + 1; i < h.uy.size(); ++i)
+    turned += std::remainder(std::atan2(h.uz[i], h.uy[i]) - std::atan2(h.uz[i - 1], h.uy[i - 1]),
+                             2 * std::numbers::pi);
+  return turned / (r.times.back() - r.times[from]);
+}
+
 }  // namespace
 
 TEST_SUITE("run-up with rub") {
@@ -162,12 +186,7 @@ TEST_SUITE("run-up with rub") {
     std::vector<double> errors;
     for (double dt : {2e-4, 1e-4}) {
       const RubRotor rotor(20, rubStation(c, kc, mu, R));
-      RunUpOptions o = rotor.options(dt);
-      Unbalance u;
-      u.node = rotor.disk;
-      u.me = 2.36e-3;
-      o.unbalance = {u};
-      const RunUpResult r = solveRunUp(rotor.model, SpeedProfile::ramp(spin, spin, 0.4), o);
+      const RunUpResult r = unbalancedRun(rotor, dt, 2.36e-3, spin, 0.4);
       const RubTrack& t = r.rubs[0];
       REQUIRE(t.contactTime > 0.05);
       // The run's account: the average acceleration rule's trapezoidal identity, exact up to
@@ -220,29 +239,21 @@ TEST_SUITE("run-up with rub") {
     double lo = c, hi = 1;
     for (int k = 0; k < 200; ++k) (excess((lo + hi) / 2) < 0 ? lo : hi) = (lo + hi) / 2;
     const double rho = (lo + hi) / 2, N = kc * (rho - c);
-    RunUpOptions o = rotor.options(1e-4);
-    o.start = RunUpStart::steady;  // on the free orbit, 2 mm: it hits the stator at once
-    Unbalance u;
-    u.node = rotor.disk;
-    u.me = me;
-    o.unbalance = {u};
-    const RunUpResult r = solveRunUp(rotor.model, SpeedProfile::ramp(spin, spin, 1.5), o);
+    // Started on the free orbit, 2 mm: it hits the stator at once.
+    const RunUpResult r = unbalancedRun(rotor, 1e-4, me, spin, 1.5, RunUpStart::steady);
     // The last 0.2 s (2.9 whirls).
     const RunUpHistory& h = r.histories[0];
     const RubTrack& t = r.rubs[0];
     const std::size_t n = r.times.size(), from = n - 2000;
-    double turned = 0, smallest = 1, largest = 0, lowN = 1e300, highN = 0;
+    double smallest = 1, largest = 0, lowN = 1e300, highN = 0;
     for (std::size_t i = from; i < n; ++i) {
       const double radius = std::hypot(h.uy[i], h.uz[i]);
       smallest = std::min(smallest, radius);
       largest = std::max(largest, radius);
       lowN = std::min(lowN, t.normal[i]);
       highN = std::max(highN, t.normal[i]);
-      if (i > from)
-        turned += std::remainder(std::atan2(h.uz[i], h.uy[i]) - std::atan2(h.uz[i - 1], h.uy[i - 1]),
-                                 2 * std::numbers::pi);
     }
-    const double whirl = turned / (r.times[n - 1] - r.times[from]);
+    const double whirl = whirlSpeed(r, from);
     MESSAGE("full annular rub: radius " << smallest << " .. " << largest << " m against " << rho
                                         << ", N " << lowN << " .. " << highN << " N against " << N
                                         << ", whirl " << whirl << " rad/s against " << spin
@@ -268,36 +279,17 @@ TEST_SUITE("run-up with rub") {
     // rest into the stator (c 1 mm, k_c 1e7 N/m, mu 0.3, R 5 mm).
     const double c = 1e-3, kc = 1e7, mu = 0.3, R = 5e-3, spin = 100;
     const RubRotor rotor(20, rubStation(c, kc, mu, R));
-    RunUpOptions o = rotor.options(2e-5);
-    Unbalance u;
-    u.node = rotor.disk;
-    u.me = 1e-3;
-    o.unbalance = {u};
-    const RunUpResult r = solveRunUp(rotor.model, SpeedProfile::ramp(spin, spin, 1.0), o);
-    const RunUpHistory& h = r.histories[0];
-    const std::size_t n = r.times.size(), from = n - std::size_t(0.2 / 2e-5);
-    double turned = 0;
-    for (std::size_t i = from + 1; i < n; ++i)
-      turned += std::remainder(std::atan2(h.uz[i], h.uy[i]) - std::atan2(h.uz[i - 1], h.uy[i - 1]),
-                               2 * std::numbers::pi);
-    const double whirl = turned / (r.times[n - 1] - r.times[from]);
+    const RunUpResult r = unbalancedRun(rotor, 2e-5, 1e-3, spin, 1.0);
+    const std::size_t from = r.times.size() - std::size_t(0.2 / 2e-5);  // the last 0.2 s
+    const double whirl = whirlSpeed(r, from);
     MESSAGE("dry whip: whirl " << whirl << " rad/s (spin " << spin << "), contact "
                                << r.rubs[0].contactTime << " s from " << r.rubs[0].firstContact
                                << " s, peak N " << r.rubs[0].peakNormal << " N");
     // Without friction the same rotor whirls forward with the spin (checked below).
     CHECK(whirl < -100);
     CHECK(whirl > -std::sqrt((rotor.shaft + kc) / rotor.mass));
-    RubRotor smooth(20, rubStation(c, kc, 0, R));
-    RunUpOptions f = smooth.options(2e-5);
-    f.unbalance = {u};
-    const RunUpResult smoothRun = solveRunUp(smooth.model, SpeedProfile::ramp(spin, spin, 1.0), f);
-    double forward = 0;
-    for (std::size_t i = from + 1; i < n; ++i)
-      forward += std::remainder(std::atan2(smoothRun.histories[0].uz[i], smoothRun.histories[0].uy[i]) -
-                                    std::atan2(smoothRun.histories[0].uz[i - 1],
-                                               smoothRun.histories[0].uy[i - 1]),
-                                2 * std::numbers::pi);
-    forward /= r.times[n - 1] - r.times[from];
+    const RubRotor smooth(20, rubStation(c, kc, 0, R));
+    const double forward = whirlSpeed(unbalancedRun(smooth, 2e-5, 1e-3, spin, 1.0), from);
     MESSAGE("without friction: whirl " << forward << " rad/s");
     CHECK(forward > 0);
   }
