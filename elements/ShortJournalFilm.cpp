@@ -1,5 +1,6 @@
 #include "elements/ShortJournalFilm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -72,6 +73,19 @@ Eigen::Vector2d ShortJournalFilm::equilibrium(const Eigen::Vector2d& load, doubl
   const double eps = eccentricityRatio(j, speed);
   const double angle = std::atan2(load[1], load[0]) + attitudeAngle(eps);
   return eps * journal_.clearance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+}
+
+double ShortJournalFilm::dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
+                                    double speed) const {
+  // The film is massless, so the moments on it balance about the bearing's centre: the
+  // journal's resisting torque exceeds the bearing's drag by x cross F (the film force on the
+  // journal acts at the journal's centre, offset x); each is the Couette torque plus or minus
+  // half of it (the pressure flow's shear, antisymmetric across the gap).
+  const double c = journal_.clearance, R = journal_.diameter / 2;
+  const double eps = std::min(position.norm() / c, 1 - 1e-12);
+  const double couette = 2 * std::numbers::pi * journal_.viscosity * speed * R * R * R *
+                         journal_.length / (c * std::sqrt(1 - eps * eps));
+  return couette + (position[0] * force[1] - position[1] * force[0]) / 2;
 }
 
 }  // namespace beamrotor

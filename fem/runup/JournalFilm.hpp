@@ -36,6 +36,11 @@ class JournalFilm {
   /// Where the journal rests carrying `load` (N, global (y, z): the force the shaft puts on
   /// the film) at `speed`, by the film's own equilibrium solution.
   virtual Eigen::Vector2d equilibrium(const Eigen::Vector2d& load, double speed) const = 0;
+  /// The film's viscous torque resisting the journal's spin (N m, > 0 for speed > 0) with the
+  /// journal at `position` (m, from the bearing's centre) while the film pushes on it with
+  /// `force` (N, the force at()'s answer).
+  virtual double dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
+                            double speed) const = 0;
   /// Radial clearance c (m).
   virtual double clearance() const = 0;
 };

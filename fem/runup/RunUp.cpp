@@ -9,6 +9,8 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "fem/rotor/DynamicStiffness.hpp"
 #include "fem/solvers/Errors.hpp"
@@ -47,11 +49,36 @@ struct PlacedJournal {
   Eigen::Vector2d appliedLoad;  ///< N, on the journal (zero when gravity carries it)
 };
 
-/// The films' forces (constant loads included) on the whole system, and their derivatives.
+/// The films' and rubs' forces (the films' constant loads included) on the whole system, their
+/// derivatives, and the torques they put on the spin.
 struct FilmForces {
   Eigen::VectorXd force;
+  Eigen::VectorXd rubForce;     ///< the rubs' share of force
   std::vector<FilmForce> each;  ///< per journal, for the tangent matrices
+  std::vector<RubForce> rubs;   ///< per rub station
+  /// The torque the rubs' friction and the films' drag take from the spin (N m) and its slope
+  /// in the speed (N m s)
+  double rubTorque = 0, dragTorque = 0, torqueSlope = 0;
 };
+
+/// A rub station placed in the equations: the equations of its uy, uz.
+struct PlacedRub {
+  const RubContact* rub = nullptr;
+  int y = -1, z = -1;
+};
+
+/// The free equations of uy and uz at `node`; throws naming `what` (a recorded node, a rub
+/// station, ...) when either is not free.
+std::pair<int, int> lateralEquations(const RotorSystem& rotor, int node, const std::string& what) {
+  const DofMap& dofs = rotor.dofs();
+  if (node < 0 || node >= rotor.model().nodeCount())
+    throw std::invalid_argument("run-up: " + what + " has no node " + std::to_string(node));
+  const int y = dofs.equation(node, Dof::uy), z = dofs.equation(node, Dof::uz);
+  if (!dofs.isFree(y) || !dofs.isFree(z))
+    throw std::invalid_argument("run-up: " + what + " needs free uy and uz, not " +
+                                rotor.model().describe({node, Dof::uy}));
+  return {y, z};
+}
 
 class RunUpSystem {
  public:
@@ -59,6 +86,7 @@ class RunUpSystem {
       : rotor_(model, o.damping), unbalanceList_(o.unbalance), gravity_(o.gravity) {
     unbalance_ = unbalanceForces(rotor_, o.unbalance);
     placeJournals(model, startSpeed, o);
+    placeRubs(o);
     // The weight as GravityLoads takes it: f = M a with a = g on every translation.
     const DofMap& dofs = rotor_.dofs();
     Eigen::VectorXd a = Eigen::VectorXd::Zero(rotor_.size());
@@ -96,11 +124,23 @@ class RunUpSystem {
   }
 
   const std::vector<PlacedJournal>& journals() const { return journals_; }
+  const std::vector<PlacedRub>& rubs() const { return rubs_; }
 
-  /// The films' forces at the state (u, v) and speed, with the loads they carry.
+  /// The films' and rubs' forces at the state (u, v) and speed, with the loads the films carry.
   FilmForces films(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double speed) const {
     FilmForces out;
     out.force = Eigen::VectorXd::Zero(rotor_.size());
+    out.rubForce = Eigen::VectorXd::Zero(rotor_.size());
+    for (const PlacedRub& r : rubs_) {
+      RubForce f = rubForce(*r.rub, Eigen::Vector2d(u[r.y], u[r.z]),
+                            Eigen::Vector2d(v[r.y], v[r.z]), speed);
+      out.rubForce[r.y] += f.force[0];
+      out.rubForce[r.z] += f.force[1];
+      out.rubTorque += f.torque;
+      out.torqueSlope += f.torqueSlope;
+      out.rubs.push_back(std::move(f));
+    }
+    out.force = out.rubForce;
     for (const PlacedJournal& j : journals_) {
       const Eigen::Vector2d x = j.offset + Eigen::Vector2d(u[j.y], u[j.z]);
       FilmForce f;
@@ -111,6 +151,11 @@ class RunUpSystem {
       }
       out.force[j.y] += f.force[0] + j.appliedLoad[0];
       out.force[j.z] += f.force[1] + j.appliedLoad[1];
+      // The drag's slope in the speed: its Couette part's (linear in Omega); the pressure
+      // part's dependence is left to the drive's fixed point.
+      out.dragTorque += j.journal->film->dragTorque(x, f.force, speed);
+      if (speed > 0)
+        out.torqueSlope += j.journal->film->dragTorque(x, Eigen::Vector2d::Zero(), speed) / speed;
       out.each.push_back(std::move(f));
     }
     return out;
@@ -118,14 +163,15 @@ class RunUpSystem {
 
   /// A += the films' stiffness (or damping) times `scale`, on the pattern's existing entries.
   void addTangents(SparseMatrix& A, const FilmForces& f, double stiffness, double damping) const {
-    for (std::size_t k = 0; k < journals_.size(); ++k) {
-      const PlacedJournal& j = journals_[k];
-      const int eq[2] = {j.y, j.z};
+    const auto add = [&](int y, int z, const Eigen::Matrix2d& K, const Eigen::Matrix2d& C) {
+      const int eq[2] = {y, z};
       for (int r = 0; r < 2; ++r)
-        for (int c = 0; c < 2; ++c)
-          A.coeffRef(eq[r], eq[c]) +=
-              stiffness * f.each[k].stiffness(r, c) + damping * f.each[k].damping(r, c);
-    }
+        for (int c = 0; c < 2; ++c) A.coeffRef(eq[r], eq[c]) += stiffness * K(r, c) + damping * C(r, c);
+    };
+    for (std::size_t k = 0; k < journals_.size(); ++k)
+      add(journals_[k].y, journals_[k].z, f.each[k].stiffness, f.each[k].damping);
+    for (std::size_t k = 0; k < rubs_.size(); ++k)
+      add(rubs_[k].y, rubs_[k].z, f.rubs[k].stiffness, f.rubs[k].damping);
   }
 
   /// The torque the unbalances take from the spin (N m): the heavy spot m e at angle
@@ -160,7 +206,6 @@ class RunUpSystem {
   }
 
   void placeJournals(const Model& model, double startSpeed, const RunUpOptions& o) {
-    const DofMap& dofs = rotor_.dofs();
     for (const NonlinearJournal& n : o.journals) {
       const auto* element =
           n.element >= 0 && n.element < int(model.elements().size())
@@ -174,11 +219,7 @@ class RunUpSystem {
             "' is no bearing between its journal's uy, uz and the ground (or has no film)");
       PlacedJournal j;
       j.journal = &n;
-      j.y = dofs.equation(n.node, Dof::uy);
-      j.z = dofs.equation(n.node, Dof::uz);
-      if (!dofs.isFree(j.y) || !dofs.isFree(j.z))
-        throw std::invalid_argument("run-up: nonlinear journal '" + n.name +
-                                    "' needs free uy and uz at its node");
+      std::tie(j.y, j.z) = lateralEquations(rotor_, n.node, "nonlinear journal '" + n.name + "'");
       if (!(startSpeed > 0) && n.load.norm() > 0)
         throw std::invalid_argument(
             "run-up: a loaded journal bearing has no film at rest: its nonlinear run starts at "
@@ -191,7 +232,21 @@ class RunUpSystem {
     }
   }
 
+  void placeRubs(const RunUpOptions& o) {
+    for (const RubContact& r : o.rubs) {
+      if (!(r.clearance > 0 && r.stiffness > 0 && r.damping >= 0 && r.friction >= 0 &&
+            r.radius > 0 && r.slipVelocity > 0))
+        throw std::invalid_argument("run-up: rub '" + r.name +
+                                    "' needs c, k, R, v_e > 0 and d, mu >= 0");
+      PlacedRub p;
+      p.rub = &r;
+      std::tie(p.y, p.z) = lateralEquations(rotor_, r.node, "rub '" + r.name + "'");
+      rubs_.push_back(p);
+    }
+  }
+
   RotorSystem rotor_;
+  std::vector<PlacedRub> rubs_;
   std::vector<Unbalance> unbalanceList_;
   Eigen::Vector3d gravity_;
   Eigen::VectorXcd unbalance_;
@@ -199,8 +254,8 @@ class RunUpSystem {
   std::vector<PlacedJournal> journals_;
 };
 
-/// Newton on the static equilibrium K u - F_films(u, 0) = M g: the journals' films carrying
-/// the weight (the linear rest of the rotor in K).
+/// Newton on the static equilibrium K u - F_films(u, 0) = M g: the journals' films (and any rub
+/// the weight presses on a stator) carrying the weight (the linear rest of the rotor in K).
 void settleOnFilms(const RunUpSystem& system, const Instant& start, Eigen::VectorXd& u,
                    double tolerance, StepFactor& factor) {
   const Eigen::VectorXd v = Eigen::VectorXd::Zero(u.size());
@@ -243,7 +298,8 @@ TransientState initialState(const RunUpSystem& system, const Instant& start, Run
           "run-up: the rotor has no static equilibrium under gravity at the start speed (its "
           "stiffness is singular: a rigid-body motion the bearings do not hold)");
     s.u = factor.solve(Eigen::VectorXd(system.weight() + rest.force));
-    if (!system.journals().empty()) settleOnFilms(system, start, s.u, tolerance, factor);
+    if (!system.journals().empty() || !system.rubs().empty())
+      settleOnFilms(system, start, s.u, tolerance, factor);
   }
   if (how == RunUpStart::steady && start.speed > 0 && system.unbalance().squaredNorm() > 0) {
     using Complex = std::complex<double>;
@@ -277,12 +333,13 @@ class EnergyAccount {
 
   void advance(const Instant& i, const TransientState& s) {
     const Eigen::VectorXd du = s.u - u_;
-    const Eigen::VectorXd f0 = f_, c0 = Cv_, g0 = gyro_, n0 = film_;
+    const Eigen::VectorXd f0 = f_, c0 = Cv_, g0 = gyro_, n0 = film_, r0 = rub_;
     measure(i, s);
     work_ += du.dot(f0 + f_) / 2;
     dissipated_ += du.dot(c0 + Cv_) / 2;
     gyroscopic_ += du.dot(g0 + gyro_) / 2;
     filmWork_ -= du.dot(n0 + film_) / 2;
+    rubWork_ -= du.dot(r0 + rub_) / 2;
   }
 
   void record(RunUpEnergy& e) const {
@@ -292,6 +349,7 @@ class EnergyAccount {
     e.work.push_back(work_);
     e.gyroscopic.push_back(gyroscopic_);
     e.film.push_back(filmWork_);
+    e.rub.push_back(rubWork_);
   }
 
  private:
@@ -300,27 +358,18 @@ class EnergyAccount {
     f_ = i.f;
     Cv_ = i.C * s.v;
     gyro_ = system_.gyroscopicForce(i, s);
-    film_ = system_.films(s.u, s.v, i.speed).force;
+    const FilmForces nonlinear = system_.films(s.u, s.v, i.speed);
+    rub_ = nonlinear.rubForce;
+    film_ = nonlinear.force - rub_;
     kinetic_ = 0.5 * s.v.dot(system_.rotor().mass() * s.v);
     strain_ = 0.5 * s.u.dot(i.K * s.u);
   }
 
   const RunUpSystem& system_;
-  Eigen::VectorXd u_, f_, Cv_, gyro_, film_;
-  double kinetic_ = 0, strain_ = 0, work_ = 0, dissipated_ = 0, gyroscopic_ = 0, filmWork_ = 0;
+  Eigen::VectorXd u_, f_, Cv_, gyro_, film_, rub_;
+  double kinetic_ = 0, strain_ = 0, work_ = 0, dissipated_ = 0, gyroscopic_ = 0, filmWork_ = 0,
+         rubWork_ = 0;
 };
-
-/// The free equations of uy and uz at `node`; throws when either is not free.
-std::pair<int, int> lateralEquations(const RotorSystem& rotor, int node) {
-  const DofMap& dofs = rotor.dofs();
-  if (node < 0 || node >= rotor.model().nodeCount())
-    throw std::invalid_argument("run-up: no node " + std::to_string(node) + " to record");
-  const int y = dofs.equation(node, Dof::uy), z = dofs.equation(node, Dof::uz);
-  if (!dofs.isFree(y) || !dofs.isFree(z))
-    throw std::invalid_argument("run-up: a recorded node needs free uy and uz, not " +
-                                rotor.model().describe({node, Dof::uy}));
-  return {y, z};
-}
 
 /// Where the spin comes from: a prescribed profile, or a drive whose speed is a state.
 struct SpinSource {
@@ -347,7 +396,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
   const RunUpSystem system(model, source.startSpeed(), o);
   const RotorSystem& rotor = system.rotor();
   std::vector<std::pair<int, int>> recorded;
-  for (int node : o.nodes) recorded.push_back(lateralEquations(rotor, node));
+  for (int node : o.nodes) recorded.push_back(lateralEquations(rotor, node, "a recorded node"));
 
   RunUpResult out;
   out.timeStep = o.timeStep;
@@ -360,21 +409,28 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
   double smallestClearance = std::numeric_limits<double>::infinity();
   for (const NonlinearJournal& j : o.journals)
     smallestClearance = std::min(smallestClearance, j.film->clearance());
+  for (const RubContact& r : o.rubs) smallestClearance = std::min(smallestClearance, r.clearance);
   const double tolerance = o.newtonTolerance * smallestClearance;  // m
 
-  // The drive's torque balance J Omega' = T(t, Omega) - T_unbalance for Omega' when Omega
+  // The drive's torque balance J Omega' = T(t, Omega) - T_load(Omega) for Omega' when Omega
   // follows it by the trapezoid rule from (Omega_n, Omega'_n) over dt (Newton on a piecewise
-  // linear T: exact in two iterations on one piece).
+  // linear T: exact in two iterations on one piece). The load (the unbalances', rubs' and films'
+  // torques) comes from the last lateral step, linear in the speed about it: T_load + slope
+  // (Omega - at).
   const SpeedDrive* drive = source.drive;
   if (drive && !(drive->inertia > 0))
     throw std::invalid_argument("run-up: a driven speed needs a positive polar inertia");
+  struct LoadTorque {
+    double torque = 0, slope = 0, at = 0;
+  };
   const auto balance = [&](double t, double speed, double acceleration, double dt,
-                           double unbalanceTorque) {
+                           const LoadTorque& load) {
     double x = acceleration;
     for (int k = 0; k < 50; ++k) {
       const double w = speed + dt / 2 * (acceleration + x);
-      const double g = drive->inertia * x - drive->torque.at(t, w) + unbalanceTorque;
-      const double dx = g / (drive->inertia - drive->torque.slope(t, w) * dt / 2);
+      const double g = drive->inertia * x - drive->torque.at(t, w) + load.torque +
+                       load.slope * (w - load.at);
+      const double dx = g / (drive->inertia + (load.slope - drive->torque.slope(t, w)) * dt / 2);
       x -= dx;
       if (std::abs(dx) <= 1e-15 * (std::abs(x) + std::abs(drive->torque.at(t, w)) / drive->inertia))
         break;
@@ -392,16 +448,22 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
   Instant now;
   TransientState s;
   double unbalanceTorque = 0;
+  LoadTorque load;  // the drive's load: unbalance, rubs and films
+  const auto loadOf = [&](const FilmForces& f, double speed) {
+    return LoadTorque{unbalanceTorque + f.rubTorque + f.dragTorque, f.torqueSlope, speed};
+  };
   if (drive) {
     // Omega'_0 and the state's acceleration depend on each other through the unbalance's
-    // tangential force and torque: a fixed point (a contraction: the coupling is (m e)^2 / (m J)).
+    // tangential force and torque: a fixed point (a contraction: the coupling is (m e)^2 / (m J));
+    // the rubs' and films' torques at the start state come in on the second pass.
     spin = {drive->startSpeed, drive->torque.at(0, drive->startSpeed) / drive->inertia, 0};
     for (int k = 0;; ++k) {
       now = system.at(0, spin);
       s = initialState(system, now, o.start, tolerance, factor);
       unbalanceTorque = system.unbalanceTorque(s.a, 0);
-      const double a = (drive->torque.at(0, spin.speed) - unbalanceTorque) / drive->inertia;
-      if (settled(a, spin.acceleration, 0, spin.speed) || o.unbalance.empty()) break;
+      load = loadOf(system.films(s.u, s.v, spin.speed), spin.speed);
+      const double a = (drive->torque.at(0, spin.speed) - load.torque) / drive->inertia;
+      if (settled(a, spin.acceleration, 0, spin.speed)) break;
       if (k == 50) throw SolveError("run-up: the drive's start acceleration did not settle");
       spin.acceleration = a;
     }
@@ -411,6 +473,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
     s = initialState(system, now, o.start, tolerance, factor);
   }
   EnergyAccount energy(system, now, s);
+  FilmForces films = system.films(s.u, s.v, now.speed);
   out.time.assembly = clock.lap();
 
   const auto sample = [&](bool keep) {
@@ -429,6 +492,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
       out.driveTorque.push_back(drive->torque.at(now.t, now.speed));
       out.unbalanceTorque.push_back(unbalanceTorque);
     }
+    if (!system.journals().empty()) out.filmTorque.push_back(films.dragTorque);
     energy.record(out.energy);
   };
   sample(true);
@@ -440,7 +504,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
   // at t_n+1: one solve without films, Newton's iterations with them (u and v follow a_n+1
   // through the rule; the films' slopes at the last iterate).
   const double a1 = 1 + rule.alpha, dt = rule.dt;
-  const bool nonlinear = !system.journals().empty();
+  const bool nonlinear = !system.journals().empty() || !system.rubs().empty();
   for (const PlacedJournal& j : system.journals()) {
     JournalTrack t;
     t.name = j.journal->name;
@@ -462,7 +526,37 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
     }
   };
   trackJournals(true);
-  FilmForces films = system.films(s.u, s.v, now.speed);
+  for (const PlacedRub& r : system.rubs()) {
+    RubTrack t;
+    t.name = r.rub->name;
+    t.clearance = r.rub->clearance;
+    out.rubs.push_back(std::move(t));
+  }
+  // Each rub's contact at the state `films` was taken at, at the end of a step of `stepTime`
+  // (0 at the start): contact time and energy by the step, the rest at the samples.
+  std::vector<RubForce> lastRubs = films.rubs;
+  const auto trackRubs = [&](bool keep, double stepTime) {
+    for (std::size_t k = 0; k < out.rubs.size(); ++k) {
+      const PlacedRub& r = system.rubs()[k];
+      const RubForce& f = films.rubs[k];
+      RubTrack& t = out.rubs[k];
+      if (f.touching()) {
+        t.contactTime += stepTime;
+        if (t.firstContact < 0) t.firstContact = now.t;
+      }
+      t.peakNormal = std::max(t.peakNormal, f.normal);
+      t.peakTorque = std::max(t.peakTorque, std::abs(f.torque));
+      t.frictionWork += stepTime / 2 * (lastRubs[k].frictionPower + f.frictionPower);
+      t.dampingWork += stepTime / 2 * (lastRubs[k].dampingPower + f.dampingPower);
+      if (!keep) continue;
+      t.radial.push_back(std::hypot(s.u[r.y], s.u[r.z]));
+      t.normal.push_back(f.normal);
+      t.friction.push_back(r.rub->radius > 0 ? f.torque / r.rub->radius : 0);
+      t.torque.push_back(f.torque);
+    }
+    lastRubs = films.rubs;
+  };
+  trackRubs(true, 0);
   Eigen::VectorXd residual =
       now.f + films.force - now.C * s.v - now.K * s.u - system.gyroscopicForce(now, s);
 
@@ -545,14 +639,15 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
             spin.speed + dt / 2 * (spin.acceleration + acceleration), acceleration,
             spin.angle + dt * spin.speed + dt * dt / 4 * (spin.acceleration + acceleration)};
       };
-      double acceleration = balance(t, spin.speed, spin.acceleration, dt, unbalanceTorque);
+      double acceleration = balance(t, spin.speed, spin.acceleration, dt, load);
       for (int pass = 0;; ++pass) {
         next = system.at(t, spinOf(acceleration));
         outcome = lateralStep(next);
-        if (o.unbalance.empty()) break;
-        unbalanceTorque = system.unbalanceTorque(outcome.state.a, next.angle);
-        const double settledAcceleration =
-            balance(t, spin.speed, spin.acceleration, dt, unbalanceTorque);
+        if (o.unbalance.empty() && !nonlinear) break;
+        if (!o.unbalance.empty())
+          unbalanceTorque = system.unbalanceTorque(outcome.state.a, next.angle);
+        load = loadOf(outcome.films, next.speed);
+        const double settledAcceleration = balance(t, spin.speed, spin.acceleration, dt, load);
         if (settled(settledAcceleration, acceleration, t, next.speed)) break;
         if (pass == 50)
           throw SolveError(
@@ -574,6 +669,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
     const bool keep = step % o.sampleEvery == 0 || step == out.steps;
     sample(keep);
     trackJournals(keep);
+    trackRubs(keep, dt);
     out.time.solve += clock.lap();
   }
 

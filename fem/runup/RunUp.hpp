@@ -21,7 +21,8 @@
 // Journal bearings may act by their film force instead (fem/runup/JournalFilm.hpp): the force
 // at the journal's instantaneous position and velocity and the instantaneous speed, in place of
 // their linear coefficients; each implicit step is then solved by Newton's method on the film's
-// exact derivatives (docs/runup.md).
+// exact derivatives (docs/runup.md). Rub stations (fem/runup/RubContact.hpp) add their contact
+// and friction forces the same way, and their friction's torque brakes a driven spin.
 #pragma once
 
 #include <Eigen/Dense>
@@ -34,6 +35,7 @@
 #include "fem/rotor/RotorUnbalance.hpp"
 #include "fem/runup/JournalFilm.hpp"
 #include "fem/runup/RevolutionAmplitude.hpp"
+#include "fem/runup/RubContact.hpp"
 #include "fem/runup/SpeedDrive.hpp"
 #include "fem/runup/SpeedProfile.hpp"
 
@@ -60,8 +62,10 @@ struct RunUpOptions {
   int sampleEvery = 1;     ///< histories kept every n steps (and the last); amplitudes use all
   /// Bearings acting by their nonlinear film force (their linear coefficients are taken out)
   std::vector<NonlinearJournal> journals;
+  /// Stations that may rub on a stator across a clearance, with friction
+  std::vector<RubContact> rubs;
   /// Newton's tolerance on the state: a step is converged when its last correction moved no
-  /// dof by more than this fraction of the smallest journal clearance
+  /// dof by more than this fraction of the smallest journal or rub clearance
   double newtonTolerance = 1e-10;
 };
 
@@ -74,6 +78,21 @@ struct JournalTrack {
   std::vector<double> eccentricity;  ///< |journal centre - bearing centre| / c
   double largestEccentricity = 0;    ///< over every step, not only the samples
   double startEccentricity = 0;      ///< the film's own equilibrium at the start speed
+};
+
+/// A rub station's contact over the run: sampled at RunUpResult::times, summed over every step.
+struct RubTrack {
+  std::string name;
+  double clearance = 0;  ///< c (m)
+  std::vector<double> radial;    ///< |station centre| (m)
+  std::vector<double> normal;    ///< N (N)
+  std::vector<double> friction;  ///< mu N s(v_s) (N, signed: > 0 opposes a forward slip)
+  std::vector<double> torque;    ///< mu N s R on the spin (N m)
+  double contactTime = 0;        ///< s, the steps that end in contact times dt
+  double firstContact = -1;      ///< s, the end of the first step in contact; -1: never
+  double peakNormal = 0, peakTorque = 0;  ///< over every step (N, N m; |torque|)
+  /// Energy the contact dissipated (J, trapezoidal in time): by friction, by its normal damper
+  double frictionWork = 0, dampingWork = 0;
 };
 
 /// One recorded node's motion (m, global y and z) at RunUpResult::times.
@@ -100,8 +119,10 @@ struct RunUpEnergy {
   /// Work done against Omega G q' + Omega' G q so far: the first part is zero in the
   /// continuous system (G skew), the second is the drive's, -integral of Omega' q'^T G q
   std::vector<double> gyroscopic;
+  /// Work done against the rub stations' contact and friction forces so far (trapezoidal)
+  std::vector<double> rub;
   double balance(std::size_t i) const {
-    return kinetic[i] + strain[i] + dissipated[i] + gyroscopic[i] + film[i] - work[i] -
+    return kinetic[i] + strain[i] + dissipated[i] + gyroscopic[i] + film[i] + rub[i] - work[i] -
            (kinetic[0] + strain[0]);
   }
 };
@@ -111,14 +132,19 @@ struct RunUpResult {
   std::vector<double> speed;  ///< Omega at the samples (rad/s)
   std::vector<double> angle;  ///< phi at the samples (rad)
   bool driven = false;        ///< the speed driven by a torque (SpeedDrive), not prescribed
-  /// Driven: the drive's torque and the unbalances' torque on the spin at the samples (N m)
+  /// Driven: the drive's torque and the unbalances' torque on the spin at the samples (N m; the
+  /// rubs' torques are in RubTrack)
   std::vector<double> driveTorque, unbalanceTorque;
+  /// With nonlinear journals: the films' drag torque on the spin at the samples (N m; it brakes
+  /// a driven speed, and a prescribed one's drive supplies it)
+  std::vector<double> filmTorque;
   std::vector<RunUpHistory> histories;  ///< one per requested node, in request order
   RunUpEnergy energy;
   double timeStep = 0;  ///< s
   int steps = 0;
   int factorizations = 0;              ///< numeric factorisations of the effective matrix
   std::vector<JournalTrack> journals;  ///< one per nonlinear journal, in RunUpOptions' order
+  std::vector<RubTrack> rubs;          ///< one per rub station, in RunUpOptions' order
   int newtonIterations = 0;            ///< over all steps (one per step without nonlinear journals)
   int mostNewtonIterations = 0;        ///< in any one step
   SystemSize size;

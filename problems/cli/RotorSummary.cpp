@@ -340,7 +340,22 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome&
         << formatValue(j.startEccentricity) << " at the start, at most "
         << formatValue(j.largestEccentricity) << " (c = " << valueText(j.clearance, "m", units)
         << ")\n";
-  if (!r.journals.empty())
+  if (!r.filmTorque.empty())
+    out << "    the films' drag on the spin: " << valueText(r.filmTorque.front(), "N m", units)
+        << " at the start, " << valueText(r.filmTorque.back(), "N m", units) << " at the end\n";
+  for (const RubTrack& t : r.rubs) {
+    out << "    rub '" << t.name << "' (c = " << valueText(t.clearance, "m", units) << "): ";
+    if (t.firstContact < 0) {
+      out << "no contact\n";
+      continue;
+    }
+    out << "in contact " << formatValue(t.contactTime) << " s from t = "
+        << formatValue(t.firstContact) << " s, peak normal force "
+        << valueText(t.peakNormal, "N", units) << ", peak rub torque "
+        << valueText(t.peakTorque, "N m", units) << ", friction dissipated "
+        << valueText(t.frictionWork, "J", units) << "\n";
+  }
+  if (!r.journals.empty() || !r.rubs.empty())
     out << "    Newton: " << r.newtonIterations << " iterations over " << r.steps
         << " steps, at most " << r.mostNewtonIterations << " in one\n";
   const RunUpEnergy& e = r.energy;
@@ -351,6 +366,8 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome&
         << valueText(e.dissipated[last], "J", units)
         << (r.journals.empty() ? std::string()
                                : ", against the films " + valueText(e.film[last], "J", units))
+        << (r.rubs.empty() ? std::string()
+                           : ", against the rubs " + valueText(e.rub[last], "J", units))
         << ", work of unbalance and gravity "
         << valueText(e.work[last], "J", units) << " (balance "
         << valueText(e.balance(last), "J", units) << ")\n";

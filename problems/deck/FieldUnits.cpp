@@ -43,6 +43,9 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
     case K::runUp:  // the peak amplitude (m), a journal's eccentricity ratio, or a speed (rpm)
       if (q.property == "peak") return {dim::length};
       if (q.property == "eccentricity") return {dim::none};
+      if (q.property == "rub_force") return {dim::force};
+      if (q.property == "rub_torque" || q.property == "film_torque") return {dim::moment};
+      if (q.property == "rub_time") return {dim::time};
       return kRpmField;
     case K::rigidBody: {
       const std::string& p = q.property;

@@ -32,6 +32,10 @@
 //   runup speed_at_peak POINT the speed of the revolution where it occurs (rpm)
 //   runup eccentricity BEARING the largest eccentricity ratio of a nonlinear journal (-)
 //   runup end_speed          the speed at the end of the run (rpm; a driven speed's result)
+//   runup film_torque        the nonlinear films' drag torque at the end of the run (N m)
+//   runup rub_force RUB      the largest normal force of a rub station (N)
+//   runup rub_torque RUB     the largest friction torque of a rub station on the spin (N m)
+//   runup rub_time RUB       how long a rub station was in contact (s)
 //   rigid_body PROPERTY       mass, com_x, J_com, Jp, f1, f2 (Hz), n1, n2, FA1, FB1, FA2, FB2
 //                             (N, per unit modal amplitude) of a rigid-body analysis
 // those of the response-spectrum analysis (structure/SpectrumQuantity.hpp):

@@ -109,6 +109,19 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
           if (j.name == q.target) return j.largestEccentricity;
         throw std::invalid_argument(name + " has no nonlinear journal bearing '" + q.target + "'");
       }
+      if (q.property == "film_torque") {
+        if (r->runUp.filmTorque.empty())
+          throw std::invalid_argument(name + " runs no journal film (bearings: nonlinear)");
+        return r->runUp.filmTorque.back();
+      }
+      if (q.property.starts_with("rub_")) {
+        for (const RubTrack& t : r->runUp.rubs)
+          if (t.name == q.target)
+            return q.property == "rub_force"    ? t.peakNormal
+                   : q.property == "rub_torque" ? t.peakTorque
+                                                : t.contactTime;
+        throw std::invalid_argument(name + " has no rub station '" + q.target + "'");
+      }
       for (std::size_t k = 0; k < r->responsePoints.size(); ++k) {
         if (r->responsePoints[k] != q.target) continue;
         const RunUpHistory& h = r->runUp.histories[k];

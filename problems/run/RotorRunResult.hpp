@@ -137,6 +137,7 @@ struct LevelOneOutcome {
 struct RunUpOutcome {
   RunUpResult runUp;
   std::vector<std::string> responsePoints;  ///< names of runUp.histories' nodes, in order
+  std::vector<std::string> rubPoints;       ///< the point of each of runUp.rubs, in order
   bool steadyStart = false;                 ///< started on the steady orbit (else at rest)
   double alpha = 0;                         ///< HHT's alpha (0: average acceleration)
   double inertia = 0;  ///< driven speed: the polar inertia driven (kg m^2); 0 when prescribed

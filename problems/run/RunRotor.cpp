@@ -255,10 +255,20 @@ RunUpOutcome runRunUp(const Deck& deck, const RotorFamily& s, const Model& model
   o.unbalance = unbalanceOf(r, model);
   o.gravity = Eigen::Vector3d(d.gravity[0], d.gravity[1], d.gravity[2]);
   o.damping = deck.rotor.damping;
-  for (const std::string& p : r.response) o.nodes.push_back(model.node(p));
+  RunUpOutcome out;
+  // The rub stations' orbits are reported with the response points' (drawn in their clearance).
+  out.responsePoints = r.response;
+  for (const DeckRub& rub : d.rubs) {
+    auto& points = out.responsePoints;
+    if (std::find(points.begin(), points.end(), rub.point) == points.end())
+      points.push_back(rub.point);
+    out.rubPoints.push_back(rub.point);
+    o.rubs.push_back({rub.name, model.node(rub.point), rub.clearance, rub.stiffness, rub.damping,
+                      rub.friction, rub.radius, rub.slipVelocity});
+  }
+  for (const std::string& p : out.responsePoints) o.nodes.push_back(model.node(p));
   o.sampleEvery = d.sampleEvery;
   if (d.nonlinearBearings) o.journals = nonlinearJournals(deck, model);
-  RunUpOutcome out;
   if (d.drive) {
     const SpeedDrive drive = speedDriveOf(d, model);
     if (!(drive.inertia > 0))
@@ -270,7 +280,6 @@ RunUpOutcome runRunUp(const Deck& deck, const RotorFamily& s, const Model& model
   } else {
     out.runUp = solveRunUp(model, SpeedProfile::table(d.times, d.speeds), o);
   }
-  out.responsePoints = r.response;
   out.steadyStart = d.steadyStart;
   out.alpha = d.alpha;
   return out;

@@ -100,6 +100,37 @@ TEST_SUITE("short journal film") {
     }
   }
 
+  TEST_CASE("the film's drag torque: Petroff at eccentricity plus e W sin(phi) / 2") {
+    // The short bearing's friction torque on the journal at its steady equilibrium (the form
+    // of Hamrock, Fundamentals of Fluid Film Lubrication, ch. 13, for the short bearing):
+    //   T = 2 pi mu Omega R^3 L / (c sqrt(1 - eps^2)) + e W sin(phi) / 2,
+    // phi Ocvirk's attitude angle, tan(phi) = pi sqrt(1 - eps^2) / (4 eps).
+    const PlainJournal b = filmBearing();
+    const ShortJournalFilm film(b);
+    const double R = b.diameter / 2;
+    for (double rpm : {500.0, 3000.0, 15000.0}) {
+      const double speed = rpm * std::numbers::pi / 30;
+      const Eigen::Vector2d x0 = film.equilibrium({-b.load, 0}, speed);
+      const FilmForce f = film.at(x0, Eigen::Vector2d::Zero(), speed);
+      const double eps = eccentricityRatio(b, speed);
+      const double phi = std::atan(std::numbers::pi * std::sqrt(1 - eps * eps) / (4 * eps));
+      const double expected =
+          2 * std::numbers::pi * b.viscosity * speed * R * R * R * b.length /
+              (b.clearance * std::sqrt(1 - eps * eps)) +
+          eps * b.clearance * b.load * std::sin(phi) / 2;
+      // The film force carries W to 1e-12 and eps is bisected to the last bit: 1e-12.
+      CAPTURE(rpm);
+      CHECK(film.dragTorque(x0, f.force, speed) == doctest::Approx(expected).epsilon(1e-12));
+      MESSAGE(rpm << " rpm: eps " << eps << ", drag " << film.dragTorque(x0, f.force, speed)
+                  << " N m against " << expected);
+    }
+    // Centred (unloaded): Petroff's torque 2 pi mu Omega R^3 L / c.
+    CHECK(film.dragTorque(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), 100) ==
+          doctest::Approx(2 * std::numbers::pi * b.viscosity * 100 * R * R * R * b.length /
+                          b.clearance)
+              .epsilon(1e-15));
+  }
+
   TEST_CASE("a journal at the wall is refused with a message, never NaN") {
     const ShortJournalFilm film(filmBearing());
     const double c = filmBearing().clearance;

@@ -44,8 +44,10 @@ TEST_SUITE("rotor decks") {
     REQUIRE(runUp.is_object());
     CHECK(runUp["speed_driven"] == true);
     CHECK(runUp["bearings"] == "nonlinear");
-    // The motor's closed form (the header): 2819.41 rpm after 3 s, the unbalance's torque leaving 2e-5.
-    CHECK(runUp["end_rpm"].get<double>() == doctest::Approx(2819.41).epsilon(1e-4));
+    // The motor against inertia and the films' drag with the journals at Ocvirk's equilibrium
+    // (the header's RK4): 2801.79 rpm after 3 s; the unbalance's torque and the orbit leave 5e-5.
+    CHECK(runUp["end_rpm"].get<double>() == doctest::Approx(2801.79).epsilon(1e-4));
+    CHECK(runUp["end_film_torque"].get<double>() > 0.09);
     CHECK(runUp["polar_inertia"].get<double>() == doctest::Approx(0.1).epsilon(1e-15));
     REQUIRE(runUp["journals"].size() == 2);
     const double eps = runUp["journals"][0]["start_eccentricity"].get<double>();
@@ -57,7 +59,8 @@ TEST_SUITE("rotor decks") {
     CHECK(solved.process.out.find("journal 'left' on its film") != std::string::npos);
     CHECK(solved.process.out.find("speed driven by a torque") != std::string::npos);
     const auto history = test::csvCells(solved.dir / "films_runup_history.csv");
-    for (const char* column : {"left_eccentricity", "right_y", "drive_torque", "film"})
+    for (const char* column :
+         {"left_eccentricity", "right_y", "drive_torque", "film", "film_torque", "rub"})
       CHECK(test::csvColumn(history[0], column) >= 0);
     CHECK(std::filesystem::exists(solved.dir / "films_runup_journals.png"));
     std::filesystem::remove_all(solved.dir.parent_path());
@@ -128,6 +131,40 @@ TEST_SUITE("rotor decks") {
     std::filesystem::remove_all(solved.dir.parent_path());
   }
 
+  TEST_CASE("rub on a seal: the closed forms of the deck's header in every output") {
+    const test::SolvedDeck solved =
+        test::solveShippedDeckToScratch("jeffcott_rub.yaml", "jeffcott-rub-deck");
+    const nlohmann::json results = solved.json("results.json");
+    nlohmann::json runUp;
+    for (const auto& a : results["analyses"])
+      if (a["type"] == "run-up") runUp = a;
+    REQUIRE(runUp.is_object());
+    REQUIRE(runUp["rubs"].size() == 1);
+    const auto& seal = runUp["rubs"][0];
+    // The header's closed forms: N = 70.594 N, mu N R = 0.211783 N m, 322.581 rpm at 0.3 s
+    // (Newton's static equilibrium: 1e-8; the speed's trapezoid rule is exact for a constant
+    // torque: the round-off of 300 steps).
+    CHECK(seal["peak_normal_force"].get<double>() == doctest::Approx(70.5945).epsilon(1e-5));
+    CHECK(seal["peak_rub_torque"].get<double>() == doctest::Approx(0.211783).epsilon(1e-5));
+    CHECK(seal["contact_time"].get<double>() == doctest::Approx(0.3).epsilon(1e-12));
+    CHECK(seal["first_contact"].get<double>() == 0.0);
+    CHECK(runUp["end_rpm"].get<double>() == doctest::Approx(322.581).epsilon(1e-6));
+    // The friction dissipates mu N R Omega: the torque times the angle turned.
+    CHECK(seal["friction_work"].get<double>() ==
+          doctest::Approx(0.211783 * (322.581 + 300) / 2 * 3.14159265358979 / 30 * 0.3)
+              .epsilon(1e-5));
+    for (const auto& check : results["checks"]) CHECK(check["pass"] == true);
+    CHECK(solved.process.out.find("rub 'seal' (c = ") != std::string::npos);
+    const auto history = test::csvCells(solved.dir / "rub_runup_history.csv");
+    for (const char* column :
+         {"seal_radial", "seal_normal_force", "seal_friction_force", "seal_rub_torque", "rub"})
+      CHECK(test::csvColumn(history[0], column) >= 0);
+    const std::string script = test::fileContents(solved.dir / "rub_runup_orbits.gp");
+    CHECK(script.find("clearance of rub") != std::string::npos);
+    CHECK(std::filesystem::exists(solved.dir / "rub_runup_orbits.png"));
+    std::filesystem::remove_all(solved.dir.parent_path());
+  }
+
   TEST_CASE("run-up: bad input is refused naming the field and its line") {
     struct Bad {
       std::string lines;
@@ -150,6 +187,22 @@ TEST_SUITE("rotor decks") {
         {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
          "    speed: {torque: 5}\n",
          12, "torque"},
+        {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
+         "    rub: [{at: mid, clearance: 0.1 mm, stiffness: 1e7 N/m, friction: 0.2}]\n",
+         15, "radius"},
+        {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
+         "    rub: [{at: mid, clearance: 0.1 kg, stiffness: 1e7, friction: 0.2, radius: 1 cm}]\n",
+         15, "length"},
+        {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
+         "    rub: [{at: mid, clearance: 0.1 mm, stiffness: -1e7, friction: 0.2, radius: 1 cm}]\n",
+         15, "positive"},
+        {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
+         "    rub: [{at: middle, clearance: 0.1 mm, stiffness: 1e7, friction: 0.2, radius: 1 cm}]\n",
+         15, "middle"},
+        {"    from_rpm: 100\n    to_rpm: 200\n    duration: 1 s\n    dt: 1 ms\n"
+         "    rub: [{at: mid, clearance: 0.1 mm, stiffness: 1e7, friction: 0.2, radius: 1 cm,\n"
+         "           slip: 1}]\n",
+         16, "slip_velocity"},
     };
     for (const Bad& b : cases) {
       CAPTURE(b.lines);

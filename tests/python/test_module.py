@@ -168,17 +168,40 @@ def test_run_up_tables_hold_the_passage_peak():
 
 
 def test_run_up_on_journal_films_driven_by_a_motor():
-    """The journal deck's history: the speed follows the motor curve's closed form
-    Omega_s + (Omega_0 - Omega_s) exp(-t / tau), tau = J Omega_s / T0 (the unbalance's torque
-    leaves 2.1e-5 at most), and the journals stay inside their clearance."""
+    """The journal deck's history: the speed ends where J Omega' = T0 (1 - Omega / Omega_s) - 2
+    T_d(Omega) takes it with the journals at Ocvirk's equilibrium (2801.79 rpm, RK4: the deck's
+    header), the drag is Petroff's 2 pi mu Omega R^3 L / c at least (the centred journal's), and
+    the journals stay inside their clearance."""
     run = beamrotor.solve(PROBLEMS / "journal_runup.yaml", sweep_off=True)
     history = run.tables["films"]["runup_history"]
-    tau = 0.1 * (7000 * np.pi / 30) / 8
-    closed = 7000 - 5800 * np.exp(-history["time"] / tau)
-    assert np.max(np.abs(history["speed_rpm"] / closed - 1)) < 5e-5
+    w = history["speed"]
+    assert history["speed_rpm"][-1] == pytest.approx(2801.79, rel=1e-4)
+    petroff = 2 * 2 * np.pi * 0.02 * w * 0.015**3 * 0.012 / 40e-6
+    assert np.all(history["film_torque"] > petroff)
     for bearing in ("left", "right"):
         assert np.all(history[bearing + "_eccentricity"] < 1)
         assert np.all(history[bearing + "_eccentricity"] > 0.3)
+
+
+def test_rub_on_a_seal_brakes_the_spin():
+    """The seal deck: the disk rests on the seal with the closed-form normal force (70.594 N),
+    the friction is mu N and its torque mu N R throughout, and the speed grows at
+    (T - mu N R) / J, as the deck's header derives."""
+    run = beamrotor.solve(PROBLEMS / "jeffcott_rub.yaml", sweep_off=True)
+    history = run.tables["rub"]["runup_history"]
+    assert np.allclose(history["seal_normal_force"], 70.594, rtol=1e-5)
+    assert np.allclose(history["seal_friction_force"], 0.2 * history["seal_normal_force"],
+                       rtol=1e-5)
+    assert np.allclose(history["seal_rub_torque"], 0.015 * history["seal_friction_force"],
+                       rtol=1e-12)
+    assert np.all(history["seal_radial"] > 0.1e-3)
+    rate = np.diff(history["speed"]) / np.diff(history["time"])
+    assert np.allclose(rate, (1 - 0.211783) / 0.1, rtol=1e-5)
+    entry = [a for a in run.results["analyses"] if a["type"] == "run-up"][0]
+    seal = entry["rubs"][0]
+    assert seal["name"] == "seal" and seal["point"] == "disk"
+    assert seal["contact_time"] == pytest.approx(0.3, rel=1e-12)
+    assert seal["peak_normal_force"] == pytest.approx(70.594, rel=1e-5)
 
 
 def test_torsion_of_two_disks(tmp_path):
@@ -364,7 +387,7 @@ def test_csv_tables_read_by_numpy_as_written(tmp_path, deck):
 @pytest.mark.parametrize("deck", ["continuous_beam.yaml", "compressor_rotor.yaml",
                                   "forme_shaft_rotor.yaml", "portal_frame.yaml",
                                   "snt32_drive.yaml", "mo10_steady.yaml", "pump_rod.yaml",
-                                  "jeffcott_runup.yaml",
+                                  "jeffcott_runup.yaml", "jeffcott_rub.yaml",
                                   "machine_base_frame.yaml"])
 def test_tables_hold_every_table_the_command_line_writes(tmp_path, deck):
     """Every CSV file of the results directory is a table of run.tables, with its columns and

@@ -104,6 +104,20 @@ struct DeckDrive {
   double extraInertia = 0;      ///< kg m^2, added to the model's spinning parts
 };
 
+/// run-up `rub:` a station that may touch a stator across a radial clearance, with Coulomb
+/// friction (fem/runup/RubContact.hpp).
+struct DeckRub {
+  std::string name;          ///< `name:`, else the point's
+  std::string point;         ///< `at:`
+  double clearance = 0;      ///< m
+  double stiffness = 0;      ///< N/m, the contact's penalty
+  double damping = 0;        ///< N s/m, normal, in contact
+  double friction = 0;       ///< Coulomb's mu
+  double radius = 0;         ///< m, the shaft's radius at the contact
+  double slipVelocity = 1e-3;  ///< m/s, the friction's regularisation
+  DeckPlace place;
+};
+
 /// run-up: the spin speed against time and the time grid (fem/runup/RunUp.hpp).
 struct DeckRunUp {
   std::vector<double> times;   ///< s, from 0, strictly ascending (a ramp: 0 and its duration)
@@ -118,6 +132,7 @@ struct DeckRunUp {
   bool nonlinearBearings = false;
   /// `speed:` driven by a torque; times then holds {0, duration} and speeds the start speed
   std::optional<DeckDrive> drive;
+  std::vector<DeckRub> rubs;  ///< `rub:` stations that may touch their stators
 };
 
 struct DeckRotorAnalysis {

@@ -502,12 +502,44 @@ void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u)
            "run-up starts at a speed above 0");
 }
 
+/// run-up `rub:` one station or a list, each {at: POINT, clearance, stiffness, friction, radius}
+/// with optional damping, slip_velocity and name.
+std::vector<DeckRub> readRubs(const Context& c, const Field& f) {
+  const ExpressionEvaluator& ev = c.evaluator;
+  std::vector<DeckRub> out;
+  for (const Field& r : f.itemsOrSingle()) {
+    if (!r.isMap())
+      r.fail("expected {at: POINT, clearance: m, stiffness: N/m, friction: MU, radius: m}, got " +
+             r.describe());
+    r.allowOnly({"name", "at", "clearance", "stiffness", "damping", "friction", "radius",
+                 "slip_velocity"},
+                "a rub station");
+    DeckRub d;
+    d.place = r.place();
+    d.point = c.point(r.require("at")).name;
+    d.name = d.point;
+    if (auto n = r.get("name")) d.name = n->text();
+    for (const DeckRub& other : out)
+      if (other.name == d.name)
+        r.fail("rub '" + d.name + "' is listed twice (give each station its own name:)");
+    d.clearance = r.require("clearance").positive(ev, dim::length);
+    d.stiffness = r.require("stiffness").positive(ev, dim::stiffness);
+    if (auto k = r.get("damping")) d.damping = k->nonNegative(ev, dim::damping);
+    d.friction = r.require("friction").nonNegative(ev, dim::none);
+    d.radius = r.require("radius").positive(ev, dim::length);
+    if (auto v = r.get("slip_velocity")) d.slipVelocity = v->positive(ev, dim::velocity);
+    out.push_back(std::move(d));
+  }
+  if (out.empty()) f.fail("expected one or more rub stations");
+  return out;
+}
+
 /// run-up: the speed against time (a ramp from_rpm -> to_rpm over duration, or speed_table
 /// rows [t, rpm]), the time grid and scheme, the start, gravity, unbalance and response.
 void readRunUp(const Context& c, const Field& f, DeckRotorAnalysis& r) {
   f.allowOnly({"type", "name", "from_rpm", "to_rpm", "duration", "speed_table", "speed", "dt",
                "scheme", "alpha", "start", "gravity", "sample_every", "unbalance", "response",
-               "bearings"},
+               "bearings", "rub"},
               "a run-up analysis");
   const ExpressionEvaluator& ev = c.evaluator;
   DeckRunUp& u = r.runUp;
@@ -574,6 +606,7 @@ void readRunUp(const Context& c, const Field& f, DeckRotorAnalysis& r) {
     u.nonlinearBearings = b->choice({"linear", "nonlinear"}) == "nonlinear";
     if (u.nonlinearBearings) readNonlinearBearings(c, *b, u);
   }
+  if (auto rub = f.get("rub")) u.rubs = readRubs(c, *rub);
   readUnbalance(c, f, r);
 }
 
@@ -699,6 +732,21 @@ void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
   if (q.kind != Quantity::Kind::unbalanceAmplitude && q.kind != Quantity::Kind::runUp) return;
   const DeckRotorAnalysis& r = settings->rotor;
   if (q.kind == Quantity::Kind::runUp && q.property == "end_speed") return;
+  if (q.kind == Quantity::Kind::runUp && q.property == "film_torque") {
+    if (!r.runUp.nonlinearBearings)
+      f.fail("analysis '" + a.name + "' runs its bearings linear: the films' drag torque is "
+             "followed with bearings: nonlinear");
+    return;
+  }
+  if (q.kind == Quantity::Kind::runUp && q.property.starts_with("rub_")) {
+    std::vector<std::string> names;
+    for (const DeckRub& rub : r.runUp.rubs) names.push_back(rub.name);
+    if (std::find(names.begin(), names.end(), q.target) == names.end())
+      f.fail("analysis '" + a.name + "' has no rub station '" + q.target + "'" +
+             didYouMean(q.target, names) +
+             (names.empty() ? " (it has no rub:)" : " (rub: " + joinNames(names) + ")"));
+    return;
+  }
   if (q.kind == Quantity::Kind::runUp && q.property == "eccentricity") {
     if (!r.runUp.nonlinearBearings)
       f.fail("analysis '" + a.name + "' runs its bearings linear: a journal's eccentricity is "

@@ -52,12 +52,15 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
     return true;
   }
   if (head == "runup") {
-    const bool ofPoint = words.size() == 3 && (words[1] == "peak" || words[1] == "speed_at_peak" ||
-                                               words[1] == "eccentricity");
-    if (!ofPoint && !(words.size() == 2 && words[1] == "end_speed"))
+    const bool ofPoint =
+        words.size() == 3 && (words[1] == "peak" || words[1] == "speed_at_peak" ||
+                              words[1] == "eccentricity" || words[1] == "rub_force" ||
+                              words[1] == "rub_torque" || words[1] == "rub_time");
+    const bool ofRun = words.size() == 2 && (words[1] == "end_speed" || words[1] == "film_torque");
+    if (!ofPoint && !ofRun)
       throw std::invalid_argument(
-          "expected 'runup peak POINT', 'runup speed_at_peak POINT', 'runup eccentricity BEARING' "
-          "or 'runup end_speed'");
+          "expected 'runup peak POINT', 'runup speed_at_peak POINT', 'runup eccentricity BEARING', "
+          "'runup rub_force|rub_torque|rub_time RUB', 'runup end_speed' or 'runup film_torque'");
     q.kind = Kind::runUp;
     q.property = words[1];
     if (ofPoint) q.target = words[2];

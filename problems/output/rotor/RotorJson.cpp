@@ -365,6 +365,19 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
                         {"clearance", j.clearance},
                         {"start_eccentricity", j.startEccentricity},
                         {"largest_eccentricity", j.largestEccentricity}});
+  Json rubs = Json::array();
+  for (std::size_t k = 0; k < r.rubs.size(); ++k) {
+    const RubTrack& t = r.rubs[k];
+    rubs.push_back({{"name", t.name},
+                    {"point", o.rubPoints[k]},
+                    {"clearance", t.clearance},
+                    {"contact_time", t.contactTime},
+                    {"first_contact", t.firstContact < 0 ? Json(nullptr) : Json(t.firstContact)},
+                    {"peak_normal_force", t.peakNormal},
+                    {"peak_rub_torque", t.peakTorque},
+                    {"friction_work", t.frictionWork},
+                    {"contact_damping_work", t.dampingWork}});
+  }
   const RunUpEnergy& e = r.energy;
   const std::size_t last = e.kinetic.empty() ? 0 : e.kinetic.size() - 1;
   const double rpm = 30 / std::numbers::pi;
@@ -384,6 +397,8 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
           {"newton_iterations", r.newtonIterations},
           {"most_newton_iterations", r.mostNewtonIterations},
           {"journals", journals},
+          {"end_film_torque", r.filmTorque.empty() ? Json(nullptr) : Json(r.filmTorque.back())},
+          {"rubs", rubs},
           {"points", points},
           {"energy",
            {{"kinetic", e.kinetic.empty() ? 0.0 : e.kinetic[last]},
@@ -391,6 +406,7 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
             {"dissipated", e.dissipated.empty() ? 0.0 : e.dissipated[last]},
             {"gyroscopic", e.gyroscopic.empty() ? 0.0 : e.gyroscopic[last]},
             {"film", e.film.empty() ? 0.0 : e.film[last]},
+            {"rub", e.rub.empty() ? 0.0 : e.rub[last]},
             {"work", e.work.empty() ? 0.0 : e.work[last]},
             {"balance", e.kinetic.empty() ? 0.0 : e.balance(last)}}},
           {"time_s", r.time.total},

@@ -1,7 +1,9 @@
 #include "problems/output/rotor/RunUpOutput.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
+#include <string>
 #include <utility>
 
 #include "problems/output/files/ChartParts.hpp"
@@ -41,8 +43,15 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
     for (const char* what : {"_y", "_z"}) columns.push_back({j.name + what, "m"});
     columns.push_back({j.name + "_eccentricity", ""});
   }
-  for (const char* what :
-       {"kinetic", "strain", "dissipated", "gyroscopic", "film", "work", "energy_balance"})
+  if (!r.runUp.journals.empty()) columns.push_back({"film_torque", "N m"});
+  for (const RubTrack& t : r.runUp.rubs) {
+    columns.push_back({t.name + "_radial", "m"});
+    for (const char* what : {"_normal_force", "_friction_force"})
+      columns.push_back({t.name + what, "N"});
+    columns.push_back({t.name + "_rub_torque", "N m"});
+  }
+  for (const char* what : {"kinetic", "strain", "dissipated", "gyroscopic", "film", "rub", "work",
+                           "energy_balance"})
     columns.push_back({what, "J"});
   CsvTable table(title, columns);
   const RunUpResult& u = r.runUp;
@@ -52,9 +61,12 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
     if (u.driven) row.insert(row.end(), {u.driveTorque[i], u.unbalanceTorque[i]});
     for (const JournalTrack& j : u.journals)
       row.insert(row.end(), {j.y[i], j.z[i], j.eccentricity[i]});
+    if (!u.journals.empty()) row.push_back(u.filmTorque[i]);
+    for (const RubTrack& t : u.rubs)
+      row.insert(row.end(), {t.radial[i], t.normal[i], t.friction[i], t.torque[i]});
     const RunUpEnergy& e = u.energy;
     row.insert(row.end(), {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i],
-                           e.film[i], e.work[i], e.balance(i)});
+                           e.film[i], e.rub[i], e.work[i], e.balance(i)});
     table.addRow(std::move(row));
   }
   return table;
@@ -122,17 +134,46 @@ ChartScript runUpOrbitsChart(const std::string& caption, const std::string& char
                              const CsvTable& history, const std::string& csvFile,
                              const RunUpOutcome& r, const OutputUnits& units) {
   const OutputUnits::Shown length = units.columnIn("m", {1e6, "µm"});
-  const std::vector<std::string>& titles = r.responsePoints;
+  // The history's columns are in the user's length unit where they set one; c is SI.
+  const double shown = length.factor * units.valueIn("m", {1, "m"}).factor;
+  std::vector<std::string> titles = r.responsePoints;
+  for (const RubTrack& t : r.runUp.rubs) titles.push_back("clearance of rub '" + t.name + "'");
   std::ostringstream body;
   const auto [width, height] = squarePanel(body, caption, titles, "uy [" + length.unit + "]",
                                            "uz [" + length.unit + "]");
+  if (!r.runUp.rubs.empty()) {
+    // Centred on the stators, the clearance circles and the orbits in view.
+    double extent = 0;
+    for (const RubTrack& t : r.runUp.rubs) extent = std::max(extent, t.clearance);
+    for (const RunUpHistory& h : r.runUp.histories)
+      for (std::size_t i = 0; i < h.uy.size(); ++i)
+        extent = std::max(extent, std::hypot(h.uy[i], h.uz[i]));
+    const std::string e = number(1.1 * extent * shown);
+    body << "  set parametric\n  set trange [0:2*pi]\n  set xrange [-" << e << ":" << e
+         << "]\n  set yrange [-" << e << ":" << e << "]\n";
+  }
   body << "  plot ";
-  for (std::size_t k = 0; k < titles.size(); ++k) {
+  const std::string last = std::to_string(std::max<std::size_t>(history.rowCount(), 1) - 1);
+  for (std::size_t k = 0; k < r.responsePoints.size(); ++k) {
     const int y = history.column(titles[k] + "_uy"), z = history.column(titles[k] + "_uz");
+    const std::string columns = " skip 1 using ($" + std::to_string(y) + "*" +
+                                number(length.factor) + "):($" + std::to_string(z) + "*" +
+                                number(length.factor) + ")";
     if (k) body << ", \\\n       ";
-    body << gnuplotFile(csvFile) << " skip 1 using ($" << y << "*" << number(length.factor)
-         << "):($" << z << "*" << number(length.factor) << ") with lines linewidth 0.8 "
-         << colour(k) << " title " << gnuplotText(titles[k]);
+    body << gnuplotFile(csvFile) << columns << " with lines linewidth 0.8 " << colour(k)
+         << " title " << gnuplotText(titles[k]);
+    // Where the point ends (a still point draws no line).
+    body << ", \\\n       " << gnuplotFile(csvFile) << columns << " every ::" << last << "::"
+         << last << " with points pointtype 7 pointsize 1.2 " << colour(k) << " notitle";
+  }
+  // Each rub's clearance circle, in its point's colour.
+  for (std::size_t k = 0; k < r.runUp.rubs.size(); ++k) {
+    const auto& points = r.responsePoints;
+    const std::size_t at = std::size_t(
+        std::find(points.begin(), points.end(), r.rubPoints[k]) - points.begin());
+    const std::string c = number(r.runUp.rubs[k].clearance * shown);
+    body << ", \\\n       " << c << "*cos(t), " << c << "*sin(t) with lines linewidth 1.5 dashtype 2 "
+         << colour(at) << " title " << gnuplotText(titles[points.size() + k]);
   }
   body << "\n  unset multiplot\n";
   return {chartName, "run-up: orbits of the response points over the run", width, height,

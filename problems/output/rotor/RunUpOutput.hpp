@@ -35,8 +35,10 @@ CsvTable runUpTable(const std::string& title, const RunUpOutcome& r);
 
 /// One row per sample: time (s), speed (rad/s), speed_rpm, angle (rad), <p>_uy, <p>_uz (m) per
 /// point, <b>_y, <b>_z (m, the journal centre from the bearing's centre) and <b>_eccentricity per
-/// nonlinear journal, then the energy account (J, RunUpEnergy): kinetic, strain, dissipated,
-/// gyroscopic, film, work, energy_balance.
+/// nonlinear journal and film_torque (N m, their drag on the spin), per rub station <r>_radial
+/// (m), <r>_normal_force, <r>_friction_force (N) and <r>_rub_torque (N m), then the energy
+/// account (J, RunUpEnergy): kinetic, strain, dissipated, gyroscopic, film, rub, work,
+/// energy_balance.
 CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r);
 
 /// Amplitude against speed from a runUpTable in csvFile, one curve per point, its peak named

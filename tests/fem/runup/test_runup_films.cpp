@@ -249,4 +249,42 @@ TEST_SUITE("run-up driven by a torque") {
       CHECK(errors[k - 1] / errors[k] == doctest::Approx(4).epsilon(0.01));
     CHECK(errors.back() < 1e-4 * Ws);
   }
+
+  TEST_CASE("the films' drag on a driven speed: the speed a constant torque settles at") {
+    // The film rotor's journal (D 50 mm, L 20 mm, c 50 um, mu 0.02 Pa s, 200 N) driven by a
+    // constant torque on J = 5e-5 kg m^2 from 200 rad/s. At each speed the journal sits at
+    // Ocvirk's eccentricity eps(Omega) and the film's drag is
+    //   T_d(Omega) = 2 pi mu Omega R^3 L / (c sqrt(1 - eps^2)) + e W sin(phi) / 2;
+    // the speed settles where T = T_d(Omega_s), found here by bisection on the closed form.
+    const FilmRotor rotor(300, 2000);  // the disk damped: the lateral motion settles too
+    const PlainJournal& b = rotor.journal;
+    const double R = b.diameter / 2, torque = 0.5;
+    const auto drag = [&](double w) {
+      const double eps = eccentricityRatio(b, w);
+      const double phi = std::atan(std::numbers::pi * std::sqrt(1 - eps * eps) / (4 * eps));
+      return 2 * std::numbers::pi * b.viscosity * w * R * R * R * b.length /
+                 (b.clearance * std::sqrt(1 - eps * eps)) +
+             eps * b.clearance * b.load * std::sin(phi) / 2;
+    };
+    double lo = 10, hi = 5000;
+    for (int k = 0; k < 200; ++k) (drag((lo + hi) / 2) < torque ? lo : hi) = (lo + hi) / 2;
+    const double steady = (lo + hi) / 2;
+    SpeedDrive drive;
+    drive.torque = DriveTorque::constant(torque);
+    drive.inertia = 5e-5;
+    drive.startSpeed = 200;
+    drive.duration = 1.5;
+    RunUpOptions o = rotor.options(2e-4, 0, true);
+    o.start = RunUpStart::rest;
+    const RunUpResult r = solveRunUp(rotor.model, drive, o);
+    REQUIRE(r.filmTorque.size() == r.times.size());
+    // tau = J / (dT_d/dOmega) ~ 0.05 s: after 1.5 s the speed is within e^-30 of its
+    // limit, which the trapezoid rule keeps exactly (a fixed point of the step); the film
+    // carries its load to ~1e-12 (quasi-static): 1e-6.
+    CHECK(r.speed.back() == doctest::Approx(steady).epsilon(1e-6));
+    CHECK(r.filmTorque.back() == doctest::Approx(torque).epsilon(1e-6));
+    MESSAGE("drag: steady speed " << r.speed.back() << " rad/s against " << steady
+                                  << " (closed form), film torque " << r.filmTorque.back()
+                                  << " N m, Newton at most " << r.mostNewtonIterations);
+  }
 }
