@@ -480,8 +480,8 @@ DeckDrive readDrive(const Context& c, const Field& f) {
   return d;
 }
 
-/// run-up `bearings: nonlinear`: the deck's plain journal bearings (short theory) act by their
-/// films; the other bearings keep their coefficients.
+/// run-up `bearings: nonlinear`: the deck's plain journal bearings act by their films (short
+/// or finite, as their coefficients); the other bearings keep their coefficients.
 void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u) {
   bool any = false;
   for (const DeckBearing& b : c.deck.rotor.bearings) {
@@ -489,9 +489,6 @@ void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u)
     if (b.pedestal)
       f.fail("bearing '" + b.name + "' stands on a pedestal: its film force acts between journal "
              "and ground in a nonlinear run-up (remove the pedestal or run bearings: linear)");
-    if (b.journalModel != DeckBearing::JournalModel::shortBearing)
-      f.fail("bearing '" + b.name + "' uses the finite film: the nonlinear run-up has the short "
-             "bearing's film (model: short, L/D <= 1); run bearings: linear for it");
     any = true;
   }
   if (!any)
