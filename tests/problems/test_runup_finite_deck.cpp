@@ -68,4 +68,21 @@ TEST_SUITE("rotor decks") {
                             << e.balance(1) << " J, drift after the start " << drift << " J");
     CHECK(drift < 1e-9 * e.work[last]);
   }
+
+  TEST_CASE("a finite film that cannot carry its load at the run-up's start is refused") {
+    std::string deck = test::fileContents(test::problemsDir() / "journal_runup.yaml");
+    deck = replaced(deck, "mu: 0.02 Pa*s,",
+                    "mu: 0.02 Pa*s, model: finite, grid: {circumferential: 36, axial: 4},");
+    // At 10 rpm the film needs an eccentricity above 0.99 (0.74 at 1200 rpm).
+    deck = replaced(deck, "from_rpm: 1200", "from_rpm: 10");
+    const std::string field = "    bearings: nonlinear";
+    int line = 1;
+    for (std::size_t k = 0; k < deck.find(field); ++k) line += deck[k] == '\n';
+    const DeckError e = test::readingError(deck, "finite_runup.yaml");
+    CAPTURE(e.message());
+    CHECK(e.place().line == line);
+    CHECK(e.message().find("bearing 'left' at the run-up's start speed (10 rpm)") !=
+          std::string::npos);
+    CHECK(e.message().find("start the run faster") != std::string::npos);
+  }
 }

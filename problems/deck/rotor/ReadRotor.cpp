@@ -7,6 +7,7 @@
 #include <numbers>
 #include <variant>
 
+#include "elements/FiniteJournalBearing.hpp"
 #include "elements/PlainJournalBearing.hpp"
 #include "elements/WhirlTable.hpp"
 #include "problems/deck/DeckReader.hpp"
@@ -497,6 +498,20 @@ void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u)
   if (!(u.speeds.front() > 0))
     f.fail("a journal bearing carries its load on a film only when the shaft turns: a nonlinear "
            "run-up starts at a speed above 0");
+  // The run starts where each film carries its load: a finite film must reach that equilibrium
+  // at the start speed (its table may start faster). A load from gravity is known only later.
+  for (const DeckBearing& b : c.deck.rotor.bearings) {
+    if (!b.journal || b.tiltingPads || b.loadFromGravity ||
+        b.journalModel != DeckBearing::JournalModel::finite || b.journal->load == 0)
+      continue;
+    try {
+      finiteJournalPoint(*b.journal, u.speeds.front(), b.journalGrid);
+    } catch (const std::invalid_argument& e) {
+      f.fail("bearing '" + b.name + "' at the run-up's start speed (" +
+             formatNumber(u.speeds.front() / kRadPerRpm) + " rpm): " + e.what() +
+             "; start the run faster");
+    }
+  }
 }
 
 /// run-up: the speed against time (a ramp from_rpm -> to_rpm over duration, or speed_table
