@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "elements/FiniteJournalBearing.hpp"
@@ -12,11 +11,11 @@ namespace beamrotor {
 namespace {
 
 /// Nearer the centre than this (/ c) the journal is taken this far out (see the header).
-constexpr double kCentred = 1e-9;
+constexpr double kCentredFilm = 1e-9;
 /// The spin (rad/s) a stopped journal's squeeze film is solved at (see the header).
-constexpr double kSlowestSpin = 1e-9;
+constexpr double kSlowestFilmSpin = 1e-9;
 
-Eigen::Matrix2d matrixOf(const double (&m)[2][2]) {
+Eigen::Matrix2d filmMatrix2(const double (&m)[2][2]) {
   Eigen::Matrix2d out;
   out << m[0][0], m[0][1], m[1][0], m[1][1];
   return out;
@@ -50,21 +49,15 @@ FilmForce FiniteJournalFilm::solve(const Eigen::Vector2d& position,
                                    Memo& memo) const {
   const double c = journal_.clearance;
   const double eps = position.norm() / c;
-  if (!(eps < 1)) {
-    std::ostringstream msg;
-    msg << "the journal left the bearing's clearance (eccentricity ratio " << eps
-        << " >= 1): the film cannot carry the motion; lower the unbalance or the speed, or "
-           "check c";
-    throw JournalLeftClearance(msg.str());
-  }
-  if (eps >= kCentred) memo.direction = position / (eps * c);
-  const double e = std::max(eps, kCentred);
+  requireInsideClearance(eps);
+  if (eps >= kCentredFilm) memo.direction = position / (eps * c);
+  const double e = std::max(eps, kCentredFilm);
   // The film's axes: axis 1 towards the largest gap (opposite the journal), axis 2 a quarter
   // turn on in the sense of rotation.
   Eigen::Matrix2d R;
   R.col(0) = -memo.direction;
   R.col(1) = Eigen::Vector2d(memo.direction[1], -memo.direction[0]);
-  const double spin = std::max(speed, kSlowestSpin);
+  const double spin = std::max(speed, kSlowestFilmSpin);
   const Eigen::Vector2d w = R.transpose() * velocity / (c * spin);
   FilmArc circle;
   circle.a = e;
@@ -74,8 +67,8 @@ FilmForce FiniteJournalFilm::solve(const Eigen::Vector2d& position,
   const double ld = journal_.length / journal_.diameter;
   const FilmSolution s = solveArcFilm(circle, ld, grid_, motion, true, &memo.cavity);
   const Eigen::Vector2d f(s.force[0], s.force[1]);
-  const Eigen::Matrix2d D = matrixOf(s.damping);
-  Eigen::Matrix2d K = matrixOf(s.stiffness);
+  const Eigen::Matrix2d D = filmMatrix2(s.damping);
+  Eigen::Matrix2d K = filmMatrix2(s.stiffness);
   // Across the line of centres the film turns with the journal (see the header).
   const auto quarter = [](const Eigen::Vector2d& x) { return Eigen::Vector2d(-x[1], x[0]); };
   K.col(1) = (quarter(f) + D * quarter(w)) / e;
@@ -86,6 +79,11 @@ FilmForce FiniteJournalFilm::solve(const Eigen::Vector2d& position,
   out.stiffness = (scale / c) * (R * K * R.transpose());
   out.damping = (scale / (c * spin)) * (R * D * R.transpose());
   return out;
+}
+
+double FiniteJournalFilm::dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
+                                     double speed) const {
+  return journalDragTorque(journal_, position, force, speed);
 }
 
 Eigen::Vector2d FiniteJournalFilm::equilibrium(const Eigen::Vector2d& load, double speed) const {

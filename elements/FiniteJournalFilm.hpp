@@ -52,6 +52,11 @@ class FiniteJournalFilm : public JournalFilm {
                double speed) const override;
   /// finiteJournalPoint's eccentricity and attitude for |load|, turned to the load's line.
   Eigen::Vector2d equilibrium(const Eigen::Vector2d& load, double speed) const override;
+  /// The film's torque resisting the journal's spin (N m): journalDragTorque. Declared
+  /// without `override` so that it overrides JournalFilm::dragTorque where the run-up's drive
+  /// reads the films' drag (branch h-rub), and stands alone before.
+  double dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
+                    double speed) const;
   double clearance() const override { return journal_.clearance; }
 
  private:

@@ -20,13 +20,7 @@ FilmForce ShortJournalFilm::at(const Eigen::Vector2d& position, const Eigen::Vec
   const double c = journal_.clearance;
   const double X = position[0] / c, Y = position[1] / c;
   const double eps = std::hypot(X, Y);
-  if (!(eps < 1)) {
-    std::ostringstream msg;
-    msg << "the journal left the bearing's clearance (eccentricity ratio " << eps
-        << " >= 1): the film cannot carry the motion; lower the unbalance or the speed, or "
-           "check c";
-    throw JournalLeftClearance(msg.str());
-  }
+  requireInsideClearance(eps);
   const double Vy = velocity[0] / c, Vz = velocity[1] / c;
   // G = A sin(theta) + B cos(theta) = |G| cos(theta - theta0): negative on
   // (theta0 + pi/2, theta0 + 3 pi/2).

@@ -17,12 +17,12 @@ using namespace beamrotor;
 
 namespace {
 
-PlainJournal filmBearing(double length = 0.08) {
+PlainJournal finiteFilmBearing(double length = 0.08) {
   // D 100 mm, L 80 mm (L/D 0.8), c 75 um, mu 0.018 Pa s, 4000 N.
   return {0.1, length, 75e-6, 0.018, 4000};
 }
 
-double observedOrder(double coarse, double fine, double ratio) {
+double shortLimitOrder(double coarse, double fine, double ratio) {
   return std::log(coarse / fine) / std::log(ratio);
 }
 
@@ -30,7 +30,7 @@ double observedOrder(double coarse, double fine, double ratio) {
 
 TEST_SUITE("finite journal film") {
   TEST_CASE("at its equilibrium the film carries the load, with the linear coefficients as slopes") {
-    const PlainJournal b = filmBearing();
+    const PlainJournal b = finiteFilmBearing();
     const ReynoldsGrid grid{72, 8};
     const FiniteJournalFilm film(b, grid);
     for (double rpm : {500.0, 3000.0, 15000.0}) {
@@ -75,7 +75,7 @@ TEST_SUITE("finite journal film") {
   }
 
   TEST_CASE("the derivatives away from equilibrium are the force's own") {
-    const PlainJournal b = filmBearing();
+    const PlainJournal b = finiteFilmBearing();
     const FiniteJournalFilm film(b, {72, 8});
     const double speed = 400, c = b.clearance;
     // An orbiting journal at eps 0.6 moving at 0.3 c Omega across and towards the wall (the
@@ -125,7 +125,7 @@ TEST_SUITE("finite journal film") {
       CAPTURE(k);
       double previous = 0;
       for (double ld : {0.2, 0.1, 0.05}) {
-        const PlainJournal b = filmBearing(ld * 0.1);
+        const PlainJournal b = finiteFilmBearing(ld * 0.1);
         // Fine enough that the grid's own error (~1e-4, docs/finite-journal-bearing.md) stays
         // below the theories' difference.
         const FiniteJournalFilm finite(b, {720, 16});
@@ -136,13 +136,13 @@ TEST_SUITE("finite journal film") {
         MESSAGE("state " << k << ", L/D " << ld << ": |F| ratio " << f.norm() / r.norm()
                          << ", relative difference " << difference);
         if (previous > 0) {
-          MESSAGE("  order " << observedOrder(previous, difference, 2));
+          MESSAGE("  order " << shortLimitOrder(previous, difference, 2));
           // At rest the circumferential flow the short theory drops is of order (L/D)^2
           // (measured orders 1.81, 1.62: the grid's own error, ~1e-4, lowers the finest);
           // moving, the film's start line, where P = 0, makes a boundary layer of width ~L/D
           // that the short film does not have: order 1 (measured 1.10, 0.99). The |F| ratios
           // measured: 0.9639, 0.9897, 0.9966 at rest; 0.9711, 0.9905, 0.9963 moving.
-          CHECK(observedOrder(previous, difference, 2) > (k == 0 ? 1.5 : 0.9));
+          CHECK(shortLimitOrder(previous, difference, 2) > (k == 0 ? 1.5 : 0.9));
         }
         previous = difference;
       }
@@ -151,9 +151,24 @@ TEST_SUITE("finite journal film") {
     }
   }
 
+  TEST_CASE("the drag torque of a centred journal is Petroff's") {
+    // Centred and at rest the film carries no pressure: the shear of the Couette flow over the
+    // whole gap, T = 2 pi mu Omega R^3 L / c (Petroff), exact.
+    const PlainJournal b = finiteFilmBearing();
+    const FiniteJournalFilm film(b, {72, 8});
+    const double speed = 300, R = b.diameter / 2;
+    const FilmForce f = film.at({0, 0}, {0, 0}, speed);
+    const double petroff =
+        2 * std::numbers::pi * b.viscosity * speed * R * R * R * b.length / b.clearance;
+    // The centred film is solved 1e-9 c out (the header): its force is ~1e-9 of a loaded
+    // film's, its moment about the centre ~1e-18 of c W.
+    CHECK(film.dragTorque({0, 0}, f.force, speed) == doctest::Approx(petroff).epsilon(1e-14));
+    CHECK(f.force.norm() < 1e-8 * b.load);
+  }
+
   TEST_CASE("a journal at the wall is refused with a message, never NaN") {
-    const FiniteJournalFilm film(filmBearing(), {72, 8});
-    const double c = filmBearing().clearance;
+    const FiniteJournalFilm film(finiteFilmBearing(), {72, 8});
+    const double c = finiteFilmBearing().clearance;
     CHECK_THROWS_AS(film.at({0.8 * c, -0.61 * c}, {0, 0}, 300), JournalLeftClearance);
     CHECK_THROWS_WITH(film.at({1.5 * c, 0}, {0, 0}, 300),
                       doctest::Contains("left the bearing's clearance (eccentricity ratio 1.5"));

@@ -15,8 +15,8 @@ using namespace beamrotor;
 
 namespace {
 
-/// The shipped deck's text with `from` replaced by `to` (which must occur).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
+/// The shipped deck's text with `from` everyReplaced by `to` (which must occur).
+std::string everyReplaced(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos;
        at = text.find(from, at + to.size()))
     text.replace(at, from.size(), to);
@@ -31,9 +31,9 @@ TEST_SUITE("rotor decks") {
     REQUIRE(deck.find("mu: 0.02 Pa*s,") != std::string::npos);
     // A coarse grid and 0.1 s keep the test short (the film and its coefficients share any
     // grid); the closed-form speed check belongs to the 3 s run.
-    deck = replaced(deck, "mu: 0.02 Pa*s,",
+    deck = everyReplaced(deck, "mu: 0.02 Pa*s,",
                     "mu: 0.02 Pa*s, model: finite, grid: {circumferential: 36, axial: 4},");
-    deck = replaced(deck, "duration: 3 s", "duration: 0.1 s");
+    deck = everyReplaced(deck, "duration: 3 s", "duration: 0.1 s");
     deck = deck.substr(0, deck.find("\nchecks:"));
     const Study s = test::solveDeckText(deck, "finite_runup.yaml");
     const auto* r = resultOf<RunUpOutcome>(s.run->analyses.front());
@@ -71,10 +71,10 @@ TEST_SUITE("rotor decks") {
 
   TEST_CASE("a finite film that cannot carry its load at the run-up's start is refused") {
     std::string deck = test::fileContents(test::problemsDir() / "journal_runup.yaml");
-    deck = replaced(deck, "mu: 0.02 Pa*s,",
+    deck = everyReplaced(deck, "mu: 0.02 Pa*s,",
                     "mu: 0.02 Pa*s, model: finite, grid: {circumferential: 36, axial: 4},");
     // At 10 rpm the film needs an eccentricity above 0.99 (0.74 at 1200 rpm).
-    deck = replaced(deck, "from_rpm: 1200", "from_rpm: 10");
+    deck = everyReplaced(deck, "from_rpm: 1200", "from_rpm: 10");
     const std::string field = "    bearings: nonlinear";
     int line = 1;
     for (std::size_t k = 0; k < deck.find(field); ++k) line += deck[k] == '\n';

@@ -68,7 +68,7 @@ struct FiniteFilmRotor {
   }
 };
 
-double largestDifference(const RunUpResult& a, const RunUpResult& b) {
+double largestFilmDifference(const RunUpResult& a, const RunUpResult& b) {
   double d = 0;
   for (std::size_t i = 0; i < a.times.size(); ++i)
     d = std::max(d, std::hypot(a.histories[0].uy[i] - b.histories[0].uy[i],
@@ -76,7 +76,7 @@ double largestDifference(const RunUpResult& a, const RunUpResult& b) {
   return d;
 }
 
-double largestRadius(const RunUpHistory& h) {
+double largestOrbitRadius(const RunUpHistory& h) {
   double r = 0;
   for (std::size_t i = 0; i < h.uy.size(); ++i) r = std::max(r, std::hypot(h.uy[i], h.uz[i]));
   return r;
@@ -93,13 +93,13 @@ TEST_SUITE("run-up on finite journal films") {
     // 1e-9 W, tests/elements/test_finite_journal_film.cpp); the journal moves by that residue
     // over the film's stiffness, of order W / c: at most 1e-9 c (measured 3e-11 c).
     const double c = rotor.journal.clearance;
-    MESSAGE("finite equilibrium: disk " << largestRadius(r.histories[0]) << " m, journal "
-                                        << largestRadius(r.histories[1]) << " m, eps "
+    MESSAGE("finite equilibrium: disk " << largestOrbitRadius(r.histories[0]) << " m, journal "
+                                        << largestOrbitRadius(r.histories[1]) << " m, eps "
                                         << rotor.point.eccentricity << ", Newton "
                                         << r.newtonIterations << " over " << r.steps
                                         << " steps, at most " << r.mostNewtonIterations);
-    CHECK(largestRadius(r.histories[0]) < 1e-9 * c);
-    CHECK(largestRadius(r.histories[1]) < 1e-9 * c);
+    CHECK(largestOrbitRadius(r.histories[0]) < 1e-9 * c);
+    CHECK(largestOrbitRadius(r.histories[1]) < 1e-9 * c);
     REQUIRE(r.journals.size() == 1);
     CHECK(r.journals[0].startEccentricity ==
           doctest::Approx(rotor.point.eccentricity).epsilon(1e-14));
@@ -112,8 +112,8 @@ TEST_SUITE("run-up on finite journal films") {
     for (double me : {2e-5, 1e-5, 0.5e-5}) {
       const RunUpResult linear = solveRunUp(rotor.model, constant, rotor.options(1e-4, me, false));
       const RunUpResult films = solveRunUp(rotor.model, constant, rotor.options(1e-4, me, true));
-      const double d = largestDifference(linear, films);
-      MESSAGE("me " << me << ": largest disk radius " << largestRadius(linear.histories[0])
+      const double d = largestFilmDifference(linear, films);
+      MESSAGE("me " << me << ": largest disk radius " << largestOrbitRadius(linear.histories[0])
                     << " m, difference " << d << " m, Newton " << films.newtonIterations
                     << " over " << films.steps << " steps, at most " << films.mostNewtonIterations);
       differences.push_back(d);
