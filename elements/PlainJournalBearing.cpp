@@ -1,5 +1,6 @@
 #include "elements/PlainJournalBearing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -54,6 +55,15 @@ BearingCoefficients shortBearingCoefficients(const PlainJournal& bearing, double
   out.czz = c * 2 * kPi * h0 * s * (pi2 * (1 + 2 * e2) - 16 * e2) / e;
   out.cyz = out.czy = c * 8 * h0 * (pi2 * (1 + 2 * e2) - 16 * e2);
   return out;
+}
+
+double journalDragTorque(const PlainJournal& bearing, const Eigen::Vector2d& position,
+                         const Eigen::Vector2d& force, double speed) {
+  const double c = bearing.clearance, R = bearing.diameter / 2;
+  const double eps = std::min(position.norm() / c, 1 - 1e-12);
+  const double couette = 2 * std::numbers::pi * bearing.viscosity * speed * R * R * R *
+                         bearing.length / (c * std::sqrt(1 - eps * eps));
+  return couette + (position[0] * force[1] - position[1] * force[0]) / 2;
 }
 
 }  // namespace beamrotor

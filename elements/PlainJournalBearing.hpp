@@ -28,6 +28,8 @@
 // turn behind it in the sense of rotation.)
 #pragma once
 
+#include <Eigen/Dense>
+
 #include "elements/Bearing.hpp"
 
 namespace beamrotor {
@@ -57,5 +59,15 @@ double attitudeAngle(double eps);
 
 /// The eight coefficients at spin speed Omega (rad/s, > 0), global axes (see the header).
 BearingCoefficients shortBearingCoefficients(const PlainJournal& bearing, double speed);
+
+/// The film's torque resisting the journal's spin (N m) with the journal at `position` (m,
+/// global y, z from the bearing's centre) and the film pushing on it with `force` (N), at spin
+/// speed Omega (rad/s): the Couette shear over the whole gap, 2 pi mu Omega R^3 L / (c sqrt(1 -
+/// eps^2)), plus the pressure flow's shear, which for any film pressure vanishing at the film's
+/// edges integrates by parts to half the moment x cross F about the bearing's centre (the film
+/// is massless: the journal's and the bearing's torques differ by x cross F, each the Couette
+/// torque plus or minus that half). Any film theory: its force comes with the call.
+double journalDragTorque(const PlainJournal& bearing, const Eigen::Vector2d& position,
+                         const Eigen::Vector2d& force, double speed);
 
 }  // namespace beamrotor

@@ -21,13 +21,7 @@ FilmForce ShortJournalFilm::at(const Eigen::Vector2d& position, const Eigen::Vec
   const double c = journal_.clearance;
   const double X = position[0] / c, Y = position[1] / c;
   const double eps = std::hypot(X, Y);
-  if (!(eps < 1)) {
-    std::ostringstream msg;
-    msg << "the journal left the bearing's clearance (eccentricity ratio " << eps
-        << " >= 1): the film cannot carry the motion; lower the unbalance or the speed, or "
-           "check c";
-    throw JournalLeftClearance(msg.str());
-  }
+  requireInsideClearance(eps);
   const double Vy = velocity[0] / c, Vz = velocity[1] / c;
   // G = A sin(theta) + B cos(theta) = |G| cos(theta - theta0): negative on
   // (theta0 + pi/2, theta0 + 3 pi/2).
@@ -77,15 +71,7 @@ Eigen::Vector2d ShortJournalFilm::equilibrium(const Eigen::Vector2d& load, doubl
 
 double ShortJournalFilm::dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
                                     double speed) const {
-  // The film is massless, so the moments on it balance about the bearing's centre: the
-  // journal's resisting torque exceeds the bearing's drag by x cross F (the film force on the
-  // journal acts at the journal's centre, offset x); each is the Couette torque plus or minus
-  // half of it (the pressure flow's shear, antisymmetric across the gap).
-  const double c = journal_.clearance, R = journal_.diameter / 2;
-  const double eps = std::min(position.norm() / c, 1 - 1e-12);
-  const double couette = 2 * std::numbers::pi * journal_.viscosity * speed * R * R * R *
-                         journal_.length / (c * std::sqrt(1 - eps * eps));
-  return couette + (position[0] * force[1] - position[1] * force[0]) / 2;
+  return journalDragTorque(journal_, position, force, speed);
 }
 
 }  // namespace beamrotor

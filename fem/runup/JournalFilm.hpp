@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,16 @@ struct FilmForce {
 struct JournalLeftClearance : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// Throws JournalLeftClearance, naming the eccentricity ratio, unless eps < 1.
+inline void requireInsideClearance(double eps) {
+  if (eps < 1) return;
+  std::ostringstream msg;
+  msg << "the journal left the bearing's clearance (eccentricity ratio " << eps
+      << " >= 1): the film cannot carry the motion; lower the unbalance or the speed, or "
+         "check c";
+  throw JournalLeftClearance(msg.str());
+}
 
 class JournalFilm {
  public:

@@ -16,6 +16,7 @@
 #include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/BearingOnPedestal.hpp"
+#include "elements/FiniteJournalFilm.hpp"
 #include "elements/ShortJournalFilm.hpp"
 #include "elements/Spring.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
@@ -192,8 +193,9 @@ CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily&
   return out;
 }
 
-/// The deck's plain journal bearings as films (run-up `bearings: nonlinear`): each replaces
-/// its model element's coefficients, its load along the bearing's -x_b.
+/// The deck's plain journal bearings as films (run-up `bearings: nonlinear`), each by the
+/// theory its coefficients come from (`model: short` or `finite`, on the same grid): each
+/// replaces its model element's coefficients, its load along the bearing's -x_b.
 std::vector<NonlinearJournal> nonlinearJournals(const Deck& deck, const Model& model) {
   std::vector<NonlinearJournal> out;
   for (const DeckBearing& b : deck.rotor.bearings) {
@@ -203,7 +205,10 @@ std::vector<NonlinearJournal> nonlinearJournals(const Deck& deck, const Model& m
     j.node = model.node(b.point);
     for (const auto& [name, element] : model.namedElements())
       if (name == b.name) j.element = element;
-    j.film = std::make_shared<ShortJournalFilm>(*b.journal);
+    if (b.journalModel == DeckBearing::JournalModel::finite)
+      j.film = std::make_shared<FiniteJournalFilm>(*b.journal, b.journalGrid);
+    else
+      j.film = std::make_shared<ShortJournalFilm>(*b.journal);
     j.load = -b.journal->load * Eigen::Vector2d(std::cos(b.loadAngle), std::sin(b.loadAngle));
     out.push_back(std::move(j));
   }

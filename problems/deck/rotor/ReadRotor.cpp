@@ -7,6 +7,7 @@
 #include <numbers>
 #include <variant>
 
+#include "elements/FiniteJournalBearing.hpp"
 #include "elements/PlainJournalBearing.hpp"
 #include "elements/WhirlTable.hpp"
 #include "problems/deck/DeckReader.hpp"
@@ -480,8 +481,8 @@ DeckDrive readDrive(const Context& c, const Field& f) {
   return d;
 }
 
-/// run-up `bearings: nonlinear`: the deck's plain journal bearings (short theory) act by their
-/// films; the other bearings keep their coefficients.
+/// run-up `bearings: nonlinear`: the deck's plain journal bearings act by their films (short
+/// or finite, as their coefficients); the other bearings keep their coefficients.
 void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u) {
   bool any = false;
   for (const DeckBearing& b : c.deck.rotor.bearings) {
@@ -489,9 +490,6 @@ void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u)
     if (b.pedestal)
       f.fail("bearing '" + b.name + "' stands on a pedestal: its film force acts between journal "
              "and ground in a nonlinear run-up (remove the pedestal or run bearings: linear)");
-    if (b.journalModel != DeckBearing::JournalModel::shortBearing)
-      f.fail("bearing '" + b.name + "' uses the finite film: the nonlinear run-up has the short "
-             "bearing's film (model: short, L/D <= 1); run bearings: linear for it");
     any = true;
   }
   if (!any)
@@ -500,6 +498,20 @@ void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u)
   if (!(u.speeds.front() > 0))
     f.fail("a journal bearing carries its load on a film only when the shaft turns: a nonlinear "
            "run-up starts at a speed above 0");
+  // The run starts where each film carries its load: a finite film must reach that equilibrium
+  // at the start speed (its table may start faster). A load from gravity is known only later.
+  for (const DeckBearing& b : c.deck.rotor.bearings) {
+    if (!b.journal || b.tiltingPads || b.loadFromGravity ||
+        b.journalModel != DeckBearing::JournalModel::finite || b.journal->load == 0)
+      continue;
+    try {
+      finiteJournalPoint(*b.journal, u.speeds.front(), b.journalGrid);
+    } catch (const std::invalid_argument& e) {
+      f.fail("bearing '" + b.name + "' at the run-up's start speed (" +
+             formatNumber(u.speeds.front() / kRadPerRpm) + " rpm): " + e.what() +
+             "; start the run faster");
+    }
+  }
 }
 
 /// run-up `rub:` one station or a list, each {at: POINT, clearance, stiffness, friction, radius}
