@@ -13,26 +13,6 @@ namespace beamrotor {
 
 namespace {
 
-/// An upper bound of |p(s)| over 0 <= s <= 1: the largest |coefficient| of p in the Bernstein
-/// basis of its degree, b_i = sum_{k <= i} C(i, k) / C(n, k) a_k (on [0, 1] p is a convex
-/// combination of them; Farouki and Rajan, Computer Aided Geometric Design 5, 1988). Close to
-/// the true largest for the low degrees here; NaN when a coefficient is.
-double boundOnUnitInterval(const Polynomial& p) {
-  if (p.empty()) return 0;
-  const std::size_t n = p.size() - 1;
-  double bound = 0;
-  for (std::size_t i = 0; i <= n; ++i) {
-    double b = 0, ratio = 1;  // C(i, k) / C(n, k), from k = 0
-    for (std::size_t k = 0; k <= i; ++k) {
-      b += ratio * p[k];
-      if (k < i) ratio *= double(i - k) / double(n - k);
-    }
-    if (b != b) return b;  // NaN
-    bound = std::max(bound, b < 0 ? -b : b);
-  }
-  return bound;
-}
-
 /// The largest of sqrt(P(s)) over [0, 1] for a polynomial P >= 0: at an end or where P' = 0.
 std::pair<double, double> largestRoot(const Polynomial& P) {
   ZeroPlaces places{0, 1};

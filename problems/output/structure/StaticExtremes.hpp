@@ -17,18 +17,27 @@
 namespace beamrotor {
 
 struct StaticExtremes {
-  std::vector<ElementPeaks> peaks;                    ///< every line element's, in order
+  /// Every line element's, in order; of a load case or combination only those of the elements
+  /// that can hold its largest of a kind (peaksThatCanGovern: the largest of each kind is the
+  /// same), a written case's every element's in PreparedCase::peaks.
+  std::vector<ElementPeaks> peaks;
   std::vector<std::array<ComponentRange, 6>> ranges;  ///< per member, Model::members() order
   std::vector<MemberValue> chordDeflections;          ///< per member
   MemberValue largestDisplacement;  ///< anywhere (largestDisplacement); frames only
 };
 
+/// Which element peaks staticExtremes keeps: every line element's, or only those of the
+/// elements that can hold the largest of a kind (peaksThatCanGovern).
+enum class PeaksKept { everyElement, canGovern };
+
 /// The extremes of `solution`; the member parts and the largest displacement left empty for
 /// a model without members (a line).
-StaticExtremes staticExtremes(const LoadedSolution& solution);
+StaticExtremes staticExtremes(const LoadedSolution& solution,
+                              PeaksKept kept = PeaksKept::everyElement);
 
 /// The extremes of a static analysis: its own solution's and each of its load cases' and
-/// combinations' (casesOf order). Empty for the other kinds of analysis.
+/// combinations' (casesOf order; their peaks PeaksKept::canGovern). Empty for the other kinds
+/// of analysis.
 struct AnalysisExtremes {
   std::optional<StaticExtremes> own;
   std::vector<StaticExtremes> cases;
