@@ -1,6 +1,7 @@
 #include "fem/assembly/ElementExtrema.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -205,6 +206,78 @@ std::vector<ElementPeaks> elementPeaks(const LoadedSolution& solution) {
   for (int i = 0; i < int(elements.size()); ++i) {
     const LineElement* line = asLine(elements[i]);
     if (!line) continue;
+    ElementPeaks p = elementPeaks(*line, solution.forceSeries(i));
+    p.stress.element = p.shear.element = p.moment.element = i;
+    out.push_back(p);
+  }
+  return out;
+}
+
+namespace {
+
+/// Upper bounds of an element's three peaks over the whole element: with |N|, |My|, |Mz|, |Vy|,
+/// |Vz| at most their Bernstein bounds (boundOnUnitInterval) and every fibre within (|y| + r,
+/// |z| + r) of the axis, |sigma| <= |N| / A + |Mz| / Iz max(|y| + r) + |My| / Iy max(|z| + r)
+/// (fibreSupport is at most |dy| (|y| + r) + |dz| (|z| + r)); the shear stress as
+/// maxShearStress of the bounds (it grows with |Vy| and |Vz|); the moment hypot of the bounds.
+/// The values elementPeaks computes carry round-off of a few eps of these (a cubic's Horner
+/// value errs by at most 6 eps sum |a_k| <= 6 eps 27 max |b_i|), far below the 1e-9 margin the
+/// caller adds. NaN (never below anything) for a section without fibres, whose stress is NaN.
+std::array<double, 3> elementBounds(const Section& section, const SectionForceSeries& forces) {
+  const auto bound = [&](double SectionForces::*f) {
+    Polynomial p;
+    for (const SectionForces& c : forces.c) p.push_back(c.*f);
+    return boundOnUnitInterval(p);
+  };
+  const double N = bound(&SectionForces::N), Vy = bound(&SectionForces::Vy),
+               Vz = bound(&SectionForces::Vz), My = bound(&SectionForces::My),
+               Mz = bound(&SectionForces::Mz);
+  double stress = std::numeric_limits<double>::quiet_NaN();
+  if (!section.fibres.empty()) {
+    double y = 0, z = 0;
+    for (const StressFibre& fibre : section.fibres) {
+      y = std::max(y, std::abs(fibre.y) + fibre.radius);
+      z = std::max(z, std::abs(fibre.z) + fibre.radius);
+    }
+    stress = N / section.A + Mz / section.Iz * y + My / section.Iy * z;
+  }
+  return {stress, maxShearStress(section, SectionForces{.Vy = Vy, .Vz = Vz}), std::hypot(My, Mz)};
+}
+
+/// An element's three kinds at one place, as elementPeaks evaluates them.
+std::array<double, 3> valuesAt(const Section& section, const SectionForceSeries& forces, double s) {
+  const SectionForces f = forces.at(s);
+  return {maxNormalStress(section, f), maxShearStress(section, f), std::hypot(f.My, f.Mz)};
+}
+
+}  // namespace
+
+std::vector<ElementPeaks> peaksThatCanGovern(const LoadedSolution& solution) {
+  const auto& elements = solution.model->elements();
+  // 1. Each element's bounds, and of each kind the largest value at an element end: every
+  //    element's peak is at least its end values (the ends are among its candidate places), so
+  //    the largest peak of a kind is at least that seed.
+  std::vector<std::array<double, 3>> bounds(elements.size());
+  std::array<double, 3> seed;
+  seed.fill(-std::numeric_limits<double>::infinity());
+  for (int i = 0; i < int(elements.size()); ++i) {
+    const LineElement* line = asLine(elements[i]);
+    if (!line) continue;
+    const SectionForceSeries forces = solution.forceSeries(i);
+    bounds[i] = elementBounds(line->section(), forces);
+    for (double s : {0.0, 1.0}) {
+      const std::array<double, 3> v = valuesAt(line->section(), forces, s);
+      for (int k = 0; k < 3; ++k) seed[k] = std::max(seed[k], v[k]);
+    }
+  }
+  // 2. The peaks of every element that some kind's bound does not keep below its seed.
+  std::vector<ElementPeaks> out;
+  for (int i = 0; i < int(elements.size()); ++i) {
+    const LineElement* line = asLine(elements[i]);
+    if (!line) continue;
+    bool below = true;
+    for (int k = 0; k < 3; ++k) below = below && bounds[i][k] * (1 + 1e-9) < seed[k];
+    if (below) continue;
     ElementPeaks p = elementPeaks(*line, solution.forceSeries(i));
     p.stress.element = p.shear.element = p.moment.element = i;
     out.push_back(p);

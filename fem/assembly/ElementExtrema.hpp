@@ -36,6 +36,17 @@ ElementPeaks elementPeaks(const LineElement& element, const SectionForceSeries& 
 /// The peaks of every line element of a static solution, in element order.
 std::vector<ElementPeaks> elementPeaks(const LoadedSolution& solution);
 
+/// The peaks of the line elements of a static solution that can hold the solution's largest
+/// stress, shear stress or moment, in element order (a load case's or combination's, whose
+/// only the largest is reported; elementPeaks for every element's). An element is left out
+/// when an upper bound of each of its three kinds over the element (from its resultants'
+/// Bernstein bounds, elementBounds in the .cpp) is below a value that kind reaches at some
+/// element's end: its own peaks are then strictly smaller than the largest, so largestPeak of
+/// every kind over these is the same BeamPeak, to the bit, as over every element's, first of
+/// equal values and NaN included (an element with a value that is not finite has no finite
+/// bound and is kept).
+std::vector<ElementPeaks> peaksThatCanGovern(const LoadedSolution& solution);
+
 /// The largest of one kind over the elements (the first on ties); a value that is not finite
 /// anywhere makes the result NaN, so a check on it fails instead of reading a smaller number.
 /// nullopt without line elements.

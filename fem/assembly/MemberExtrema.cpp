@@ -13,26 +13,6 @@ namespace beamrotor {
 
 namespace {
 
-/// An upper bound of |p(s)| over 0 <= s <= 1: the largest |coefficient| of p in the Bernstein
-/// basis of its degree, b_i = sum_{k <= i} C(i, k) / C(n, k) a_k (on [0, 1] p is a convex
-/// combination of them; Farouki and Rajan, Computer Aided Geometric Design 5, 1988). Close to
-/// the true largest for the low degrees here; NaN when a coefficient is.
-double boundOnUnitInterval(const Polynomial& p) {
-  if (p.empty()) return 0;
-  const std::size_t n = p.size() - 1;
-  double bound = 0;
-  for (std::size_t i = 0; i <= n; ++i) {
-    double b = 0, ratio = 1;  // C(i, k) / C(n, k), from k = 0
-    for (std::size_t k = 0; k <= i; ++k) {
-      b += ratio * p[k];
-      if (k < i) ratio *= double(i - k) / double(n - k);
-    }
-    if (b != b) return b;  // NaN
-    bound = std::max(bound, b < 0 ? -b : b);
-  }
-  return bound;
-}
-
 /// The largest of sqrt(P(s)) over [0, 1] for a polynomial P >= 0: at an end or where P' = 0.
 std::pair<double, double> largestRoot(const Polynomial& P) {
   ZeroPlaces places{0, 1};
@@ -122,10 +102,12 @@ std::array<ComponentRange, 6> memberForceRanges(const LoadedSolution& solution,
       appendZeros(derivativeOf(p), places);
       for (double s : places) {
         const double v = valueAt(p, s);
+        const bool nan = std::isnan(v), above = v > out[c].max.value, below = v < out[c].min.value;
+        if (!nan && !above && !below) continue;  // the place is not needed
         const MemberValue here = memberValue(model, e, s, start + s * line.length(), v);
-        if (std::isnan(v)) out[c].max = out[c].min = here;
-        if (v > out[c].max.value) out[c].max = here;
-        if (v < out[c].min.value) out[c].min = here;
+        if (nan) out[c].max = out[c].min = here;
+        if (above) out[c].max = here;
+        if (below) out[c].min = here;
       }
     }
     start += line.length();
@@ -151,7 +133,8 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
   const Eigen::Vector3d u1 = endTranslation(elements.back(), 1);
 
   // Each element's squared distance from the chord as a polynomial, with an upper bound of
-  // the distance (from its deviation's Bernstein bounds) and its value at the middle.
+  // the distance (from Bernstein bounds, a margin above their round-off included) and its
+  // value at the middle.
   struct Piece {
     int element;
     double start, length;
@@ -180,7 +163,17 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
     Polynomial squared = combination(-1, productOf(along, along), 0, {});
     for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(deviation[c], deviation[c]));
     seed = std::max(seed, std::sqrt(std::max(0.0, valueAt(squared, 0.5))));
-    pieces.push_back({e, start, line.length(), squared, std::sqrt(boundSquared)});
+    // Two bounds of the distance, the smaller kept: the components' (which include the
+    // deviation along the chord) and the square root of the squared distance's own Bernstein
+    // bound (without that part, so much the smaller for a member whose ends move along it).
+    // The second's polynomial is a difference of squares that may cancel: its values carry
+    // round-off of up to 20 eps sum |c_k| (Horner, degree 10), added with a wide margin.
+    double size = 0;
+    for (double c : squared) size += std::abs(c);
+    const double bound =
+        std::min(std::sqrt(boundSquared) * (1 + 1e-9),
+                 std::sqrt((boundOnUnitInterval(squared) + 1e-12 * size) * (1 + 1e-9)));
+    pieces.push_back({e, start, line.length(), squared, bound});
     start += line.length();
   }
   // The exact largest on every element that can hold the member's largest: an element whose
@@ -188,7 +181,7 @@ MemberValue largestChordDeflection(const LoadedSolution& solution,
   // cannot, and is skipped; the others, in order, keep the first of equal values.
   MemberValue best{elements.front(), 0, 0, -std::numeric_limits<double>::infinity()};
   for (const Piece& piece : pieces) {
-    if (piece.bound * (1 + 1e-9) < seed) continue;
+    if (piece.bound < seed) continue;
     const auto [s, value] = largestRoot(piece.squared);
     if (std::isnan(value) || value > best.value)
       best = memberValue(model, piece.element, s, piece.start + s * piece.length, value);

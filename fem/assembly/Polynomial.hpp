@@ -91,6 +91,26 @@ inline Polynomial combination(double x, const Polynomial& a, double y, const Pol
   return r;
 }
 
+/// An upper bound of |p(s)| over 0 <= s <= 1: the largest |coefficient| of p in the Bernstein
+/// basis of its degree, b_i = sum_{k <= i} C(i, k) / C(n, k) a_k (on [0, 1] p is a convex
+/// combination of them; Farouki and Rajan, Computer Aided Geometric Design 5, 1988). Close to
+/// the true largest for the low degrees here; NaN when a coefficient is.
+inline double boundOnUnitInterval(const Polynomial& p) {
+  if (p.empty()) return 0;
+  const std::size_t n = p.size() - 1;
+  double bound = 0;
+  for (std::size_t i = 0; i <= n; ++i) {
+    double b = 0, ratio = 1;  // C(i, k) / C(n, k), from k = 0
+    for (std::size_t k = 0; k <= i; ++k) {
+      b += ratio * p[k];
+      if (k < i) ratio *= double(i - k) / double(n - k);
+    }
+    if (b != b) return b;  // NaN
+    bound = std::max(bound, b < 0 ? -b : b);
+  }
+  return bound;
+}
+
 /// p(alpha + beta s): the polynomial in s of p read along a linear change of its variable.
 inline Polynomial composedWithLine(const Polynomial& p, double alpha, double beta) {
   Polynomial r;

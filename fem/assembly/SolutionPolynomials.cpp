@@ -83,10 +83,20 @@ ElementPolynomials SolutionPolynomials::of(int element) const {
 }
 
 std::array<Polynomial, 3> SolutionPolynomials::translations(int element) const {
-  const ElementPolynomials p = of(element);
-  std::array<Polynomial, 3> out;
-  for (int c = 0; c < 3; ++c) out[c] = Polynomial(p.translations[c].begin(), p.translations[c].end());
-  return out;
+  const auto fromArrays = [](const std::array<std::array<double, 6>, 3>& t) {
+    std::array<Polynomial, 3> out;
+    for (int c = 0; c < 3; ++c) out[c] = Polynomial(t[c].begin(), t[c].end());
+    return out;
+  };
+  return parts_.empty() ? fromArrays(own_.at(element).translations)
+                        : fromArrays(of(element).translations);
+}
+
+void SolutionPolynomials::sumInto(SolutionPolynomials& out) const {
+  out.parts_.clear();
+  const std::size_t count = elementCount();
+  out.own_.resize(count);
+  for (std::size_t e = 0; e < count; ++e) out.own_[e] = of(int(e));
 }
 
 }  // namespace beamrotor

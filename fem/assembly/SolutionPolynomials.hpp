@@ -27,6 +27,8 @@ struct ElementPolynomials {
 
 class SolutionPolynomials {
  public:
+  /// No elements (a place for sumInto).
+  SolutionPolynomials() = default;
   /// Each line element's polynomials recovered from `solution` (other elements: zero).
   explicit SolutionPolynomials(const LoadedSolution& solution);
   /// The factored sum of other solutions' polynomials, all of one model (a load combination;
@@ -34,12 +36,24 @@ class SolutionPolynomials {
   explicit SolutionPolynomials(
       std::vector<std::pair<std::shared_ptr<const SolutionPolynomials>, double>> parts);
 
+  /// The number of elements (Model::elements()) it holds polynomials for.
+  std::size_t elementCount() const {
+    return parts_.empty() ? own_.size() : parts_.front().first->elementCount();
+  }
   /// Line element `element`'s polynomials (index into Model::elements()).
   ElementPolynomials of(int element) const;
   /// Its resultants, as LineElement::sectionForceSeries gives them.
-  SectionForceSeries forces(int element) const { return of(element).forces; }
+  SectionForceSeries forces(int element) const {
+    return parts_.empty() ? own_.at(element).forces : of(element).forces;
+  }
   /// Its translations ux, uy, uz as polynomials in s.
   std::array<Polynomial, 3> translations(int element) const;
+
+  /// Every element's polynomials summed once (of each element) into `out`, whose storage is
+  /// reused: a combination's extremes read each element's polynomials several times (peaks,
+  /// ranges, chord deflections, largest displacement), each read then a copy instead of a
+  /// factored sum. The same numbers as `of`, to the bit (the same sums in the same order).
+  void sumInto(SolutionPolynomials& out) const;
 
  private:
   std::vector<ElementPolynomials> own_;  ///< recovered: by element index

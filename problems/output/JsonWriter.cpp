@@ -191,15 +191,40 @@ Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases
   };
   forces("reactions", envelope.reactions);
   if (!envelope.springs.empty()) forces("springs", envelope.springs);
+  // Every combination lists the same points and components in the same order (the model's):
+  // the first builds the entries, the others find theirs by position (a key looked up in an
+  // object is a linear search), checked against the key, by name if it differs.
+  struct Slot {
+    const std::string* point;
+    const std::string* component;
+    Json* entry;
+  };
+  std::vector<Slot> slots;
+  bool built = false, byPosition = true;
   for (const Json& c : caseEntries) {
     if (!c.at("combination").get<bool>()) continue;
     const std::string name = c.at("name").get<std::string>();
+    std::size_t i = 0;
     for (const auto& where : c.at("displacements").items())
       for (const auto& component : where.value().items()) {
-        Json& e = out["displacements"][where.key()][component.key()];
-        widen(e["max"], component.value().get<double>(), name, true);
-        widen(e["min"], component.value().get<double>(), name, false);
+        Json* e = nullptr;
+        if (built && byPosition && i < slots.size() && *slots[i].point == where.key() &&
+            *slots[i].component == component.key())
+          e = slots[i].entry;
+        else {
+          byPosition = !built;  // a new key may move the entries held: by name from here on
+          e = &out["displacements"][where.key()][component.key()];
+        }
+        ++i;
+        widen((*e)["max"], component.value().get<double>(), name, true);
+        widen((*e)["min"], component.value().get<double>(), name, false);
       }
+    if (built) continue;
+    built = true;
+    Json& points = out["displacements"];
+    for (auto point = points.begin(); point != points.end(); ++point)
+      for (auto component = point->begin(); component != point->end(); ++component)
+        slots.push_back({&point.key(), &component.key(), &component.value()});
   }
   for (std::size_t m = 0; m < envelope.members.size(); ++m) {
     Json& member = appendNew(out["members"], model.members()[m].first);

@@ -108,8 +108,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   if (!p.cases.empty()) {
     std::vector<PvdEntry> entries;
     for (const PreparedCase& c : p.cases) {
-      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.outcome->statics, c.stations,
-                     c.extremes->peaks);
+      writeStaticVtu(dir / c.vtu, c.outcome->on(model), c.outcome->statics, c.stations, c.peaks);
       entries.push_back({double(c.index + 1), c.vtu});  // the case's number as its time step
     }
     writePvd(dir / casesPvd(p.stem), entries);

@@ -106,7 +106,7 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
   p.envelope = caseEnvelope(model, cases, p.extremes->cases);
   for (int i : writtenCases(*p.envelope, cases.size(), planar, allCases))
     p.cases.push_back({&cases[i], i, caseVtu(p.stem, i + 1), sampleStatics(cases[i].on(model)),
-                       &p.extremes->cases.at(i)});
+                       &p.extremes->cases.at(i), elementPeaks(cases[i].on(model))});
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
   for (const CaseOutcome& c : casesOf(a))

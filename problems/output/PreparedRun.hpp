@@ -29,6 +29,7 @@ struct PreparedCase {
   std::string vtu;                      ///< <stem>_case_NN.vtu, NN = index + 1
   std::vector<StaticStation> stations;
   const StaticExtremes* extremes = nullptr;  ///< its extremes (PreparedRun::extremes)
+  std::vector<ElementPeaks> peaks;  ///< every line element's (elementPeaks), for its VTK file
 };
 
 /// What one analysis writes, computed before writing.

@@ -97,6 +97,12 @@ def frames(directory):
                   f"target 3), whole run {f['whole_s']:.1f} s")
     if combinations:
         out["frame3d_combinations"] = combinations
+    if 1 in combinations and 200 in combinations:
+        # Issue 41 item 6 and issue 45: 200 combinations cost <= 3x one, whole run against
+        # whole run (read, solve, write) on the same frame.
+        ratio = combinations[200]["whole_s"] / combinations[1]["whole_s"]
+        out["frame3d_combinations"]["whole_200_over_1"] = ratio
+        print(f"200 combinations over 1, whole runs: {ratio:.2f} (target 3)")
     path = os.path.join(directory, "frame3d_100000.json")
     if os.path.exists(path):
         g = load(path)

@@ -123,3 +123,18 @@ def test_frames_decks_and_studies_gathered(tmp_path):
     assert summary["rotor_decks"]["stability_onset_s"]["solve_s"] == 0.0625
     assert summary["study_points_per_s"] == {"serial": 800.0, "threads_2": 1200.0}
     assert "2.5x" in run.stdout and "slowest compressor_rotor 5.00 s" in run.stdout
+
+
+def test_combinations_ratio_recorded(tmp_path):
+    """With 1 and 200 combinations measured, summary.json records the whole runs' quotient
+    (issue 41 item 6, target 3): 30.0 s over 12.5 s here."""
+    for c, whole in ((1, 12.5), (200, 30.0)):
+        write(tmp_path / f"frame3d_combinations_{c}.json",
+              {"frame": {"members": 9030.0, "cases_s": 0.5, "cases_to_static": 0.3,
+                         "write_s": whole - 2.0, "whole_s": whole}})
+    run = subprocess.run([sys.executable, str(HERE / "compare.py"), str(tmp_path)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["frame3d_combinations"]["whole_200_over_1"] == pytest.approx(2.4, rel=1e-15)
+    assert "200 combinations over 1, whole runs: 2.40 (target 3)" in run.stdout

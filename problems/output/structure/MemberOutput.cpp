@@ -113,6 +113,10 @@ bool caseMemberDetail(const Model& model, std::size_t cases) {
   return model.members().size() * cases <= kCaseMemberEntries;
 }
 
+bool caseChordDeflections(const Model& model, std::size_t cases) {
+  return caseMemberDetail(model, cases) || cases <= kSummaryCases;
+}
+
 namespace {
 
 /// The envelope table's columns, after `member` when the table holds every member.

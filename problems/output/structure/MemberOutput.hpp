@@ -57,6 +57,15 @@ std::string envelopeCsvOf(const Model& model, const std::string& stem, const std
 inline constexpr std::size_t kCaseMemberEntries = 20000;
 bool caseMemberDetail(const Model& model, std::size_t cases);
 
+/// Load cases and combinations the summary gives in full at most (member extremes and chord
+/// deflections included); more get a line each.
+inline constexpr std::size_t kSummaryCases = 12;
+
+/// Whether each case's and combination's chord deflections are reported (results.json's
+/// member detail, caseMemberDetail, or the summary's cases in full); when they are not, they
+/// are not computed.
+bool caseChordDeflections(const Model& model, std::size_t cases);
+
 /// The envelope over the combinations along one member (memberEnvelope), one row per place:
 /// s (m from its start), element, then for each of N Vy Vz T My Mz its largest value, the
 /// combination giving it, its smallest value and the combination giving that.

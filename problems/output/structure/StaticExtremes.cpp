@@ -1,14 +1,18 @@
 // The extremes of a static solution, computed once (see StaticExtremes.hpp).
 #include "problems/output/structure/StaticExtremes.hpp"
 
+#include "fem/assembly/SolutionPolynomials.hpp"
+#include "problems/output/structure/MemberOutput.hpp"
+
 namespace beamrotor {
 
-StaticExtremes staticExtremes(const LoadedSolution& solution) {
+StaticExtremes staticExtremes(const LoadedSolution& solution, PeaksKept kept,
+                              bool chordDeflections) {
   StaticExtremes out;
-  out.peaks = elementPeaks(solution);
+  out.peaks = kept == PeaksKept::everyElement ? elementPeaks(solution) : peaksThatCanGovern(solution);
   for (const auto& [name, elements] : solution.model->members()) {
     out.ranges.push_back(memberForceRanges(solution, elements));
-    out.chordDeflections.push_back(largestChordDeflection(solution, elements));
+    if (chordDeflections) out.chordDeflections.push_back(largestChordDeflection(solution, elements));
   }
   // A line's largest displacement is read from its fields; a frame's is reported on its own.
   if (!solution.model->members().empty()) out.largestDisplacement = largestDisplacement(solution);
@@ -21,8 +25,16 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
     const AnalysisOutcome& a = run.analyses[i];
     if (const StaticResult* s = staticsOf(a))
       out[i].own = staticExtremes({*run.model, s->displacement});
-    for (const CaseOutcome& c : casesOf(a))
-      out[i].cases.push_back(staticExtremes(c.on(*run.model)));
+    const bool chords = caseChordDeflections(*run.model, casesOf(a).size());
+    SolutionPolynomials summed;  // one combination's at a time, its storage reused
+    for (const CaseOutcome& c : casesOf(a)) {
+      LoadedSolution solution = c.on(*run.model);
+      if (c.combination && c.polynomials) {
+        c.polynomials->sumInto(summed);
+        solution.polynomials = &summed;
+      }
+      out[i].cases.push_back(staticExtremes(solution, PeaksKept::canGovern, chords));
+    }
   }
   return out;
 }

@@ -17,18 +17,28 @@
 namespace beamrotor {
 
 struct StaticExtremes {
-  std::vector<ElementPeaks> peaks;                    ///< every line element's, in order
+  /// Every line element's, in order; of a load case or combination only those of the elements
+  /// that can hold its largest of a kind (peaksThatCanGovern: the largest of each kind is the
+  /// same), a written case's every element's in PreparedCase::peaks.
+  std::vector<ElementPeaks> peaks;
   std::vector<std::array<ComponentRange, 6>> ranges;  ///< per member, Model::members() order
-  std::vector<MemberValue> chordDeflections;          ///< per member
+  std::vector<MemberValue> chordDeflections;  ///< per member; empty when not reported
   MemberValue largestDisplacement;  ///< anywhere (largestDisplacement); frames only
 };
 
+/// Which element peaks staticExtremes keeps: every line element's, or only those of the
+/// elements that can hold the largest of a kind (peaksThatCanGovern).
+enum class PeaksKept { everyElement, canGovern };
+
 /// The extremes of `solution`; the member parts and the largest displacement left empty for
-/// a model without members (a line).
-StaticExtremes staticExtremes(const LoadedSolution& solution);
+/// a model without members (a line), the chord deflections without `chordDeflections`.
+StaticExtremes staticExtremes(const LoadedSolution& solution,
+                              PeaksKept kept = PeaksKept::everyElement,
+                              bool chordDeflections = true);
 
 /// The extremes of a static analysis: its own solution's and each of its load cases' and
-/// combinations' (casesOf order). Empty for the other kinds of analysis.
+/// combinations' (casesOf order; their peaks PeaksKept::canGovern, their chord deflections
+/// only where reported, caseChordDeflections). Empty for the other kinds of analysis.
 struct AnalysisExtremes {
   std::optional<StaticExtremes> own;
   std::vector<StaticExtremes> cases;
