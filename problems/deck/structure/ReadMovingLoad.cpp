@@ -50,7 +50,9 @@ double readFramePath(const reader::Context& c, const Field& f, std::vector<std::
 }  // namespace
 
 void MovingLoadSpec::read(const reader::Context& c, const Field& f) {
-  f.allowOnly({"type", "name", "path", "direction", "wheels", "quantities"}, "a moving-load analysis");
+  f.allowOnly({"type", "name", "path", "direction", "wheels", "quantities", "deck_loads"},
+              "a moving-load analysis");
+  if (auto d = f.get("deck_loads")) deckLoads = d->boolean();
   place = f.place();
   const Deck& deck = c.deck;
   if (!deck.contacts.empty())

@@ -71,6 +71,9 @@ struct MovingLoadSpec {
   std::vector<Wheel> wheels;
   std::vector<Quantity> quantities;  ///< reactions, displacements, resultants at points
   double pathLength = 0;             ///< m
+  /// The deck's own `loads:` stand on the structure while the train crosses: their static
+  /// value is added to each envelope (`deck_loads: false` gives the train alone).
+  bool deckLoads = true;
   DeckPlace place;
 };
 
