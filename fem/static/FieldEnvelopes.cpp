@@ -1,11 +1,26 @@
 #include "fem/static/FieldEnvelopes.hpp"
 
+#include <algorithm>
+
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 
 namespace beamrotor {
 
 namespace {
+
+/// The train's envelope of a quantity of unit values `values` (a resultant of element
+/// `element` read at `end` adds its clamped share when the element is on the path): one that
+/// no unit load moves (a planar model's out-of-plane dofs) is 0 without running the train.
+TrainEnvelope envelopeOf(const PathUnitLoads& units, const std::vector<double>& values,
+                         const std::vector<TrainLoad>& train, int element = -1, int end = 0,
+                         ForceComponent component = ForceComponent::Mz) {
+  const InfluenceLine line = influenceLineOf(units, values, element, end, component);
+  const bool zero = std::all_of(line.pieces.begin(), line.pieces.end(), [](const Polynomial& p) {
+    return std::all_of(p.begin(), p.end(), [](double c) { return c == 0; });
+  });
+  return zero ? TrainEnvelope{} : trainEnvelope(line, train);
+}
 
 /// The envelope of one value with `still` added to both extremes.
 TrainEnvelope shifted(TrainEnvelope e, double still) {
@@ -27,7 +42,7 @@ FieldEnvelopes fieldEnvelopes(const Model& model, const PathUnitLoads& units,
       for (std::size_t c = 0; c < solves; ++c)
         values[c] = units.solved[c].displacement(Eigen::Index(n), k);
       const double base = still ? still->displacement(Eigen::Index(n), k) : 0.0;
-      out.nodes[n][std::size_t(k)] = shifted(trainEnvelope(influenceLineOf(units, values), train), base);
+      out.nodes[n][std::size_t(k)] = shifted(envelopeOf(units, values, train), base);
     }
 
   out.elementEnds.resize(model.elements().size());
@@ -48,8 +63,8 @@ FieldEnvelopes fieldEnvelopes(const Model& model, const PathUnitLoads& units,
         for (std::size_t c = 0; c < solves; ++c)
           values[c] = componentOf(ends[c][std::size_t(end)], component);
         const double base = still ? componentOf(stillSeries.at(end), component) : 0.0;
-        out.elementEnds[e][std::size_t(end)][k] = shifted(
-            trainEnvelope(influenceLineOf(units, values, int(e), end, component), train), base);
+        out.elementEnds[e][std::size_t(end)][k] =
+            shifted(envelopeOf(units, values, train, int(e), end, component), base);
       }
   }
   return out;

@@ -35,7 +35,7 @@ namespace moving_dead_load {
 // governing wheels fall inside elements), under a dead load (a distributed load on both spans
 // and a point load on span 2); a two-wheel trolley of 40 kN and 25 kN, 1.7 m apart, crosses
 // from A to C.
-const std::string kDeck = R"(parameters: {L: 6 m}
+const std::string kDeadDeck = R"(parameters: {L: 6 m}
 model: {dimension: planar}
 materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]
 sections: [{name: s, shape: general, A: 53.8 cm^2, I: 8356 cm^4, depth: 300 mm, width: 150 mm}]
@@ -57,7 +57,7 @@ loads:
   - {type: point, at: {member: span2, at: 0.3}, fy: -12 kN}
 )";
 
-const std::string kAnalysis = R"(analyses:
+const std::string kDeadAnalysis = R"(analyses:
   - type: moving-load
     name: trolley
     path: [span1, span2]
@@ -66,22 +66,22 @@ const std::string kAnalysis = R"(analyses:
                  displacement m1 uy]
 )";
 
-constexpr double kL = 6;
+constexpr double kDeadSpan = 6;
 
 /// Relative round-off bound of the exact methods against each other (each quantity's values
 /// are of order 1e5 N, 1e5 N m, 1e-3 m; both sides lose a few ulps per cubic and solve).
-constexpr double kRoundOff = 1e-9;
+constexpr double kDeadRoundOff = 1e-9;
 
 /// The static deck with the wheels of `run` standing with the first at `lead`: each wheel on
 /// the path as a point load at its place (the member cut there).
-std::string staticDeckAt(double lead, const std::string& quantity, double reference) {
+std::string deadStaticDeckAt(double lead, const std::string& quantity, double reference) {
   std::string loads;
   const double forces[] = {40e3, 25e3}, offsets[] = {0, 1.7};
   for (int w = 0; w < 2; ++w) {
     const double s = lead - offsets[w];
-    if (s < 0 || s > 2 * kL) continue;
-    const bool first = s < kL;
-    const double at = first ? s / kL : (s - kL) / kL;
+    if (s < 0 || s > 2 * kDeadSpan) continue;
+    const bool first = s < kDeadSpan;
+    const double at = first ? s / kDeadSpan : (s - kDeadSpan) / kDeadSpan;
     char line[200];
     std::snprintf(line, sizeof line, "  - {type: point, at: {member: %s, at: %.17g}, fy: %.17g}\n",
                   first ? "span1" : "span2", at, -forces[w]);
@@ -90,11 +90,11 @@ std::string staticDeckAt(double lead, const std::string& quantity, double refere
   char check[300];
   std::snprintf(check, sizeof check,
                 "checks:\n  - {name: direct, quantity: %s, reference: %.17g, tolerance: %g}\n",
-                quantity.c_str(), reference, kRoundOff);
-  return kDeck + loads + "analyses: [{type: static}]\n" + check;
+                quantity.c_str(), reference, kDeadRoundOff);
+  return kDeadDeck + loads + "analyses: [{type: static}]\n" + check;
 }
 
-const MovingLoadOutcome& movingOf(const Study& study) {
+const MovingLoadOutcome& deadMovingOf(const Study& study) {
   return std::get<MovingLoadOutcome>(study.run->analyses.front().result);
 }
 
@@ -103,12 +103,12 @@ const MovingLoadOutcome& movingOf(const Study& study) {
 TEST_SUITE("moving load with the deck's loads") {
   TEST_CASE("each extreme is the deck loads' value plus the train's, and a direct solve agrees") {
     using namespace moving_dead_load;
-    const Study withDeck = test::solveDeckText(kDeck + kAnalysis, "dead.yaml");
-    std::string alone = kAnalysis;
+    const Study withDeck = test::solveDeckText(kDeadDeck + kDeadAnalysis, "dead.yaml");
+    std::string alone = kDeadAnalysis;
     alone.replace(alone.find("    path:"), 0, "    deck_loads: false\n");
-    const Study trainAlone = test::solveDeckText(kDeck + alone, "alone.yaml");
-    const MovingLoadOutcome& m = movingOf(withDeck);
-    const MovingLoadOutcome& t = movingOf(trainAlone);
+    const Study trainAlone = test::solveDeckText(kDeadDeck + alone, "alone.yaml");
+    const MovingLoadOutcome& m = deadMovingOf(withDeck);
+    const MovingLoadOutcome& t = deadMovingOf(trainAlone);
     CHECK(m.deckLoads);
     CHECK_FALSE(t.deckLoads);
     REQUIRE(m.quantities.size() == 5);
@@ -118,31 +118,31 @@ TEST_SUITE("moving load with the deck's loads") {
       const double scale = std::max(std::abs(q.envelope.max.value), std::abs(q.envelope.min.value));
       // The deck loads alone, by a static analysis of the same deck.
       const Study still = test::solveDeckText(
-          kDeck + "analyses: [{type: static}]\nchecks:\n  - {name: still, quantity: " + q.text +
+          kDeadDeck + "analyses: [{type: static}]\nchecks:\n  - {name: still, quantity: " + q.text +
               ", reference: 1, tolerance: 1}\n",
           "still.yaml");
       const double deckValue = still.run->checks.front().computed;
-      CHECK(std::abs(q.deckValue - deckValue) <= kRoundOff * scale);
+      CHECK(std::abs(q.deckValue - deckValue) <= kDeadRoundOff * scale);
       CHECK(t.quantities[i].deckValue == 0);
       // The train alone's extremes, shifted by the deck's value, at the same positions.
       CHECK(std::abs(q.envelope.max.value - (t.quantities[i].envelope.max.value + deckValue)) <=
-            kRoundOff * scale);
+            kDeadRoundOff * scale);
       CHECK(std::abs(q.envelope.min.value - (t.quantities[i].envelope.min.value + deckValue)) <=
-            kRoundOff * scale);
+            kDeadRoundOff * scale);
       CHECK(q.envelope.max.lead == t.quantities[i].envelope.max.lead);
       // A direct static solve with the wheels where the train's extreme puts them.
       for (const TrainExtreme& e : {q.envelope.max, q.envelope.min}) {
         // A shear force read where a wheel stands jumps: its extreme is one side's limit,
         // which a static solve (the wheel on the node) does not give; skip those places.
         if (q.text.find("Vy") != std::string::npos &&
-            (std::abs(e.lead - kL / 2) < 1e-9 || std::abs(e.lead - 1.7 - kL / 2) < 1e-9))
+            (std::abs(e.lead - kDeadSpan / 2) < 1e-9 || std::abs(e.lead - 1.7 - kDeadSpan / 2) < 1e-9))
           continue;
         const Study direct =
-            test::solveDeckText(staticDeckAt(e.lead, q.text, e.value), "direct.yaml");
+            test::solveDeckText(deadStaticDeckAt(e.lead, q.text, e.value), "direct.yaml");
         const Check& c = direct.run->checks.front();
         MESSAGE(q.text << " at lead " << e.lead << ": moving " << e.value << ", direct "
                        << c.computed << " (relative " << c.relError() << ")");
-        CHECK(std::abs(c.computed - e.value) <= kRoundOff * scale);
+        CHECK(std::abs(c.computed - e.value) <= kDeadRoundOff * scale);
       }
     }
     // The field envelopes hold the same numbers at the quantity's place: the node's
@@ -150,15 +150,15 @@ TEST_SUITE("moving load with the deck's loads") {
     const Model& model = *withDeck.run->model;
     const int m1 = model.node("m1");
     const MovingQuantity& w = m.quantity("displacement m1 uy");
-    CHECK(m.fields.nodes.at(std::size_t(m1))[1].min.value == doctest::Approx(w.envelope.min.value).epsilon(kRoundOff));
-    CHECK(m.fields.nodes.at(std::size_t(m1))[1].max.value == doctest::Approx(w.envelope.max.value).epsilon(kRoundOff));
+    CHECK(m.fields.nodes.at(std::size_t(m1))[1].min.value == doctest::Approx(w.envelope.min.value).epsilon(kDeadRoundOff));
+    CHECK(m.fields.nodes.at(std::size_t(m1))[1].max.value == doctest::Approx(w.envelope.max.value).epsilon(kDeadRoundOff));
   }
 
   TEST_CASE("the envelope VTK file holds the run's envelopes and governing shapes") {
     using namespace moving_dead_load;
-    const Study study = test::solveDeckText(kDeck + kAnalysis, "dead.yaml");
+    const Study study = test::solveDeckText(kDeadDeck + kDeadAnalysis, "dead.yaml");
     const RunResult& run = *study.run;
-    const MovingLoadOutcome& m = movingOf(study);
+    const MovingLoadOutcome& m = deadMovingOf(study);
     const std::filesystem::path dir = test::scratchDir("moving_vtk") / "out";
     OutputChoices choices;
     choices.charts = ChartFormat::none;
@@ -181,13 +181,13 @@ TEST_SUITE("moving load with the deck's loads") {
     const int m1 = model.node("m1");
     for (const nlohmann::json& q : a.at("quantities"))
       if (q.at("quantity") == "displacement m1 uy") {
-        CHECK(low->GetComponent(m1, 1) == doctest::Approx(q.at("min").at("value").get<double>()).epsilon(kRoundOff));
-        CHECK(high->GetComponent(m1, 1) == doctest::Approx(q.at("max").at("value").get<double>()).epsilon(kRoundOff));
+        CHECK(low->GetComponent(m1, 1) == doctest::Approx(q.at("min").at("value").get<double>()).epsilon(kDeadRoundOff));
+        CHECK(high->GetComponent(m1, 1) == doctest::Approx(q.at("max").at("value").get<double>()).epsilon(kDeadRoundOff));
         // The shape where it is smallest: m1's own displacement there is that smallest value.
         vtkDataArray* shape =
             grid->GetPointData()->GetArray("displacement at min of displacement m1 uy [m]");
         REQUIRE(shape);
-        CHECK(shape->GetComponent(m1, 1) == doctest::Approx(q.at("min").at("value").get<double>()).epsilon(kRoundOff));
+        CHECK(shape->GetComponent(m1, 1) == doctest::Approx(q.at("min").at("value").get<double>()).epsilon(kDeadRoundOff));
         vtkDataArray* lead = grid->GetFieldData()->GetArray("first wheel at min of displacement m1 uy [m]");
         REQUIRE(lead);
         CHECK(lead->GetTuple1(0) == q.at("min").at("first_wheel_at").get<double>());
@@ -215,7 +215,7 @@ TEST_SUITE("moving load with the deck's loads") {
       CHECK(mzMin->GetTuple1(c) == std::min(ends[0][5].min.value, ends[1][5].min.value));
       if (line->endNodes()[0] == b) leastAtB = ends[0][5].min.value;
     }
-    CHECK(leastAtB == doctest::Approx(mzB).epsilon(kRoundOff));
+    CHECK(leastAtB == doctest::Approx(mzB).epsilon(kDeadRoundOff));
     std::filesystem::remove_all(dir.parent_path());
   }
 }

@@ -27,7 +27,7 @@ namespace spectrum_combinations {
 // A table frame: four steel columns 3 m high on clamps, tied at the top by four beams of a
 // 4 m x 5 m rectangle, 2 elements per member, with a 2 t machine at one top corner (so the
 // modes couple the directions).
-const std::string kFrame = R"(model: {dimension: 3d}
+const std::string kTableFrame = R"(model: {dimension: 3d}
 materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]
 sections: [{name: s, shape: general, A: 53.8 cm^2, Iy: 8356 cm^4, Iz: 3000 cm^4, J: 50 cm^4,
             depth: 300 mm, width: 150 mm}]
@@ -57,30 +57,30 @@ supports:
 masses: [{name: machine, at: B2, m: 2000 kg}]
 )";
 
-const std::string kHorizontal = "{code: EN1998-1, type: 1, ground: C, ag: 2.5 m/s^2}";
-const std::string kVertical = "{code: EN1998-1, type: 1, component: vertical, ag: 2.5 m/s^2}";
+const std::string kHorizontalSpectrum = "{code: EN1998-1, type: 1, ground: C, ag: 2.5 m/s^2}";
+const std::string kVerticalSpectrum = "{code: EN1998-1, type: 1, component: vertical, ag: 2.5 m/s^2}";
 
-std::string analyses(const std::string& directional) {
+std::string combinationAnalyses(const std::string& directional) {
   return "analyses:\n"
-         "  - {type: response-spectrum, name: all, modes: 24, spectrum: " + kHorizontal +
-         ", vertical_spectrum: " + kVertical + ", directions: [x, y, z], directional: " +
+         "  - {type: response-spectrum, name: all, modes: 24, spectrum: " + kHorizontalSpectrum +
+         ", vertical_spectrum: " + kVerticalSpectrum + ", directions: [x, y, z], directional: " +
          directional + "}\n"
-         "  - {type: response-spectrum, name: only_x, modes: 24, spectrum: " + kHorizontal +
+         "  - {type: response-spectrum, name: only_x, modes: 24, spectrum: " + kHorizontalSpectrum +
          ", directions: [x]}\n"
-         "  - {type: response-spectrum, name: only_y, modes: 24, spectrum: " + kVertical +
+         "  - {type: response-spectrum, name: only_y, modes: 24, spectrum: " + kVerticalSpectrum +
          ", directions: [y]}\n"
-         "  - {type: response-spectrum, name: only_z, modes: 24, spectrum: " + kHorizontal +
+         "  - {type: response-spectrum, name: only_z, modes: 24, spectrum: " + kHorizontalSpectrum +
          ", directions: [z]}\n";
 }
 
-const ResponseSpectrumResult& named(const Study& study, const std::string& name) {
+const ResponseSpectrumResult& spectrumNamed(const Study& study, const std::string& name) {
   for (const AnalysisOutcome& a : study.run->analyses)
     if (a.name == name) return std::get<ResponseSpectrumResult>(a.result);
   throw std::invalid_argument("no analysis " + name);
 }
 
 /// Every quantity of a peak response as one list: displacements, reactions, section forces.
-std::vector<double> valuesOf(const PeakResponse& p) {
+std::vector<double> peakValues(const PeakResponse& p) {
   std::vector<double> v(p.displacement.data(), p.displacement.data() + p.displacement.size());
   for (const ReactionComponent& c : p.reactions) v.push_back(c.value);
   for (const BeamStation& s : p.stations)
@@ -91,11 +91,11 @@ std::vector<double> valuesOf(const PeakResponse& p) {
 }
 
 /// Round-off of the same modes combined in two orders.
-constexpr double kRoundOff = 1e-12;
+constexpr double kCombinationRoundOff = 1e-12;
 
 /// The largest |a - b| over the quantities, relative to the largest |b| of the same kind
 /// (displacements, reactions, forces: one scale each is enough for this check's purpose).
-double worstDifference(const std::vector<double>& a, const std::vector<double>& b) {
+double worstPeakDifference(const std::vector<double>& a, const std::vector<double>& b) {
   REQUIRE(a.size() == b.size());
   double scale = 0, worst = 0;
   for (double x : b) scale = std::max(scale, std::abs(x));
@@ -108,22 +108,22 @@ double worstDifference(const std::vector<double>& a, const std::vector<double>& 
 TEST_SUITE("response spectrum: the vertical with the horizontals") {
   TEST_CASE("each 100/30 combination is E_x + 0.3 E_y + 0.3 E_z of the single-direction runs") {
     using namespace spectrum_combinations;
-    const Study study = test::solveDeckText(kFrame + analyses("100/30"), "table.yaml");
-    const ResponseSpectrumResult& all = named(study, "all");
+    const Study study = test::solveDeckText(kTableFrame + combinationAnalyses("100/30"), "table.yaml");
+    const ResponseSpectrumResult& all = spectrumNamed(study, "all");
     REQUIRE(all.verticalSpectrum);
     REQUIRE(all.directions == std::vector<int>{0, 1, 2});
     // Along y the vertical spectrum: mode j reads (3.8)-(3.11), not the horizontal plateau.
-    const ResponseSpectrumResult& onlyY = named(study, "only_y");
+    const ResponseSpectrumResult& onlyY = spectrumNamed(study, "only_y");
     for (std::size_t j = 0; j < all.modal.modes.size(); ++j)
       CHECK(all.saOf(j, 1) == onlyY.spectralAcceleration[j]);
     // Each direction alone against its own analysis.
-    const std::vector<double> singles[3] = {valuesOf(named(study, "only_x").combined),
-                                            valuesOf(onlyY.combined),
-                                            valuesOf(named(study, "only_z").combined)};
+    const std::vector<double> singles[3] = {peakValues(spectrumNamed(study, "only_x").combined),
+                                            peakValues(onlyY.combined),
+                                            peakValues(spectrumNamed(study, "only_z").combined)};
     for (int d = 0; d < 3; ++d) {
-      const double error = worstDifference(valuesOf(all.perDirection[std::size_t(d)]), singles[d]);
-      MESSAGE("direction " << directionName(d) << " alone: " << error);
-      CHECK(error <= kRoundOff);
+      const double error = worstPeakDifference(peakValues(all.perDirection[std::size_t(d)]), singles[d]);
+      MESSAGE("direction " << std::string(directionName(d)) << " alone: " << error);
+      CHECK(error <= kCombinationRoundOff);
     }
     // Each combination by hand.
     REQUIRE(all.combinations.size() == 3);
@@ -137,17 +137,17 @@ TEST_SUITE("response spectrum: the vertical with the horizontals") {
         for (int d = 0; d < 3; ++d) hand[i] += (d == lead ? 1.0 : 0.3) * singles[d][i];
         largest[i] = std::max(largest[i], hand[i]);
       }
-      const double error = worstDifference(valuesOf(c.peak), hand);
+      const double error = worstPeakDifference(peakValues(c.peak), hand);
       MESSAGE(c.name << " against the hand sum: " << error);
-      CHECK(error <= kRoundOff);
+      CHECK(error <= kCombinationRoundOff);
     }
-    CHECK(worstDifference(valuesOf(all.combined), largest) <= kRoundOff);
+    CHECK(worstPeakDifference(peakValues(all.combined), largest) <= kCombinationRoundOff);
     // The vertical governs some quantity (the beams' vertical bending) and a horizontal
     // another (the columns' base shear): the combinations are not one another's multiples.
     std::vector<int> governs(3, 0);
     for (std::size_t i = 0; i < largest.size(); ++i)
       for (int lead = 0; lead < 3; ++lead)
-        if (largest[i] > 0 && valuesOf(all.combinations[std::size_t(lead)].peak)[i] == largest[i]) {
+        if (largest[i] > 0 && peakValues(all.combinations[std::size_t(lead)].peak)[i] == largest[i]) {
           ++governs[std::size_t(lead)];
           break;
         }
@@ -157,24 +157,24 @@ TEST_SUITE("response spectrum: the vertical with the horizontals") {
 
   TEST_CASE("SRSS of the three directions, by hand") {
     using namespace spectrum_combinations;
-    const Study study = test::solveDeckText(kFrame + analyses("srss"), "table.yaml");
-    const ResponseSpectrumResult& all = named(study, "all");
+    const Study study = test::solveDeckText(kTableFrame + combinationAnalyses("srss"), "table.yaml");
+    const ResponseSpectrumResult& all = spectrumNamed(study, "all");
     REQUIRE(all.combinations.size() == 1);
     CHECK(all.combinations.front().name == "SRSS");
-    const std::vector<double> x = valuesOf(named(study, "only_x").combined),
-                              y = valuesOf(named(study, "only_y").combined),
-                              z = valuesOf(named(study, "only_z").combined);
+    const std::vector<double> x = peakValues(spectrumNamed(study, "only_x").combined),
+                              y = peakValues(spectrumNamed(study, "only_y").combined),
+                              z = peakValues(spectrumNamed(study, "only_z").combined);
     std::vector<double> hand(x.size());
     for (std::size_t i = 0; i < hand.size(); ++i)
       hand[i] = std::sqrt(x[i] * x[i] + y[i] * y[i] + z[i] * z[i]);
-    CHECK(worstDifference(valuesOf(all.combined), hand) <= kRoundOff);
-    CHECK(worstDifference(valuesOf(all.combinations.front().peak), hand) <= kRoundOff);
+    CHECK(worstPeakDifference(peakValues(all.combined), hand) <= kCombinationRoundOff);
+    CHECK(worstPeakDifference(peakValues(all.combinations.front().peak), hand) <= kCombinationRoundOff);
   }
 
   TEST_CASE("the combinations reach results.json and the combinations table") {
     using namespace spectrum_combinations;
-    const Study study = test::solveDeckText(kFrame + analyses("100/30"), "table.yaml");
-    const ResponseSpectrumResult& all = named(study, "all");
+    const Study study = test::solveDeckText(kTableFrame + combinationAnalyses("100/30"), "table.yaml");
+    const ResponseSpectrumResult& all = spectrumNamed(study, "all");
     const std::filesystem::path dir = test::scratchDir("spectrum_combinations") / "out";
     OutputChoices choices;
     choices.charts = ChartFormat::none;
@@ -227,24 +227,24 @@ TEST_SUITE("response spectrum: the vertical with the horizontals") {
   TEST_CASE("a vertical spectrum the directions cannot take is refused at its field") {
     using namespace spectrum_combinations;
     const auto refused = [](const std::string& row, const std::string& words) {
-      const std::string text = kFrame + "analyses:\n" + row;
+      const std::string text = kTableFrame + "analyses:\n" + row;
       const DeckError e = test::readingError(text, "table.yaml");
       const std::string message = e.what();
       CAPTURE(message);
       CHECK(message.find("table.yaml") != std::string::npos);
       CHECK(message.find(words) != std::string::npos);
-      CHECK(e.place().line == int(std::count(kFrame.begin(), kFrame.end(), '\n')) + 2);
+      CHECK(e.place().line == int(std::count(kTableFrame.begin(), kTableFrame.end(), '\n')) + 2);
     };
-    refused("  - {type: response-spectrum, spectrum: " + kHorizontal + ", vertical_spectrum: " +
-                kVertical + ", directions: [x, z]}\n",
+    refused("  - {type: response-spectrum, spectrum: " + kHorizontalSpectrum + ", vertical_spectrum: " +
+                kVerticalSpectrum + ", directions: [x, z]}\n",
             "add y to directions");
-    refused("  - {type: response-spectrum, spectrum: " + kVertical + ", vertical_spectrum: " +
-                kVertical + ", directions: [x, y]}\n",
+    refused("  - {type: response-spectrum, spectrum: " + kVerticalSpectrum + ", vertical_spectrum: " +
+                kVerticalSpectrum + ", directions: [x, y]}\n",
             "spectrum is the horizontal one");
-    refused("  - {type: response-spectrum, spectrum: " + kHorizontal + ", vertical_spectrum: " +
-                kHorizontal + ", directions: [x, y]}\n",
+    refused("  - {type: response-spectrum, spectrum: " + kHorizontalSpectrum + ", vertical_spectrum: " +
+                kHorizontalSpectrum + ", directions: [x, y]}\n",
             "add component: vertical");
-    refused("  - {type: response-spectrum, spectrum: " + kHorizontal +
+    refused("  - {type: response-spectrum, spectrum: " + kHorizontalSpectrum +
                 ", vertical_spectrum: {code: EN1998-1, type: 1, component: vertical, ag: 2.5 m}, "
                 "directions: [x, y]}\n",
             "ag");

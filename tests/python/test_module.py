@@ -460,6 +460,27 @@ def test_study_gives_the_command_lines_table_to_the_bit(tmp_path):
     assert study.directory is None
 
 
+def test_moving_load_with_the_deck_loads():
+    # problems/crane_girder.yaml's analysis with_weight: the girder's self-weight q = rho A g
+    # stands while the trolley runs, adding its own moment q x (L - x) / 2 at `under` (x there)
+    # to the position rule's; the wheels' governing place is the same. Exact: round-off.
+    run = beamrotor.solve(PROBLEMS / "crane_girder.yaml")
+    p = run.parameters
+    x = p["L"] / 2 - p["a"] / 4
+    rule = p["P"] * x**2 * 2 / p["L"]
+    q = 7850 * p["A"] * 9.81
+    weight = q * x * (p["L"] - x) / 2
+    alone = run.tables["trolley"]["envelopes"]
+    both = run.tables["with_weight"]["envelopes"]
+    assert abs(both["deck_loads"][0] / weight - 1) < EXACT
+    assert abs(both["max"][0] / (rule + weight) - 1) < EXACT
+    assert alone["deck_loads"][0] == 0
+    assert both["first_wheel_at_max"][0] == alone["first_wheel_at_max"][0]
+    entry = run.results["analyses"][1]
+    assert entry["deck_loads"] is True
+    assert entry["files"]["envelope_vtu"] == "with_weight_envelope.vtu"
+
+
 def test_moving_load_tables_and_envelope():
     # problems/crane_girder.yaml: two wheels P at spacing a on a simply supported span L. The
     # largest moment by the position rule, P (L/2 - a/4)^2 * 2 / L, under the wheel at
