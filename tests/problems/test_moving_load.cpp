@@ -195,6 +195,9 @@ TEST_SUITE("moving load") {
     // A quantity that is not linear in the load.
     refused({{"quantities: [reaction B uy,", "quantities: [moment max, reaction B uy,"}},
             "not linear", "    quantities:");
+    // Whether the deck's loads stand is a boolean.
+    refused({{"    wheels: [{force: 1 N}]", "    deck_loads: maybe\n    wheels: [{force: 1 N}]"}},
+            "expected true or false", "    deck_loads:");
     // An envelope of a quantity the analysis does not list.
     refused({{"moving max reaction B uy", "moving max reaction C uy"}},
             "add it to its quantities", "  - {name: RB");
