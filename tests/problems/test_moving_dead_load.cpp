@@ -26,6 +26,7 @@
 #include "problems/output/Output.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
+#include "tests/problems/TwoSpanFrame.hpp"
 
 using namespace beamrotor;
 
@@ -35,23 +36,7 @@ namespace moving_dead_load {
 // governing wheels fall inside elements), under a dead load (a distributed load on both spans
 // and a point load on span 2); a two-wheel trolley of 40 kN and 25 kN, 1.7 m apart, crosses
 // from A to C.
-const std::string kDeadDeck = R"(parameters: {L: 6 m}
-model: {dimension: planar}
-materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]
-sections: [{name: s, shape: general, A: 53.8 cm^2, I: 8356 cm^4, depth: 300 mm, width: 150 mm}]
-nodes:
-  - {name: A, at: [0, 0]}
-  - {name: B, at: [L, 0]}
-  - {name: C, at: [2 * L, 0]}
-members:
-  - {name: span1, from: A, to: B, section: s, elements: 5}
-  - {name: span2, from: B, to: C, section: s, elements: 5}
-points: [{name: m1, member: span1, at: 0.5}]
-supports:
-  - {name: A, at: A, fix: pinned}
-  - {name: B, at: B, fix: [uy]}
-  - {name: C, at: C, fix: [uy]}
-loads:
+const std::string kDeadDeck = test::twoSpanFrame(5) + R"(loads:
   - {type: distributed, member: span1, qy: -8 kN/m}
   - {type: distributed, member: span2, qy: -5 kN/m}
   - {type: point, at: {member: span2, at: 0.3}, fy: -12 kN}
