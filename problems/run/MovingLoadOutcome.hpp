@@ -33,7 +33,7 @@ struct MovingLoadOutcome {
   double length = 0;  ///< of the path (m)
   bool deckLoads = true;  ///< the deck's own loads are in the envelopes (deck_loads:)
   /// Every node's displacements and every line element's end resultants, enveloped the same
-  /// way (the deck's loads included when deckLoads).
+  /// way (the deck's loads included when deckLoads); empty unless `field_envelopes: true`.
   FieldEnvelopes fields;
   std::vector<MovingQuantity> quantities;
   /// The envelope of quantity `text`; throws std::invalid_argument when it is not one of them.

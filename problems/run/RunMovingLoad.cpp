@@ -155,7 +155,8 @@ MovingLoadOutcome runMovingLoad(const MovingLoadSpec& spec, const Model& model) 
     q.shapeAtMin = stillField + trainDisplacement(units, out.train, q.envelope.min.lead);
   }
   out.length = units.length();
-  out.fields = fieldEnvelopes(model, units, out.train, still ? &*still : nullptr);
+  if (spec.fieldEnvelopes)
+    out.fields = fieldEnvelopes(model, units, out.train, still ? &*still : nullptr);
   return out;
 }
 

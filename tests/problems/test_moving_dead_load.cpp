@@ -49,6 +49,7 @@ const std::string kDeadAnalysis = R"(analyses:
     wheels: [{force: 40 kN}, {force: 25 kN, offset: 1.7 m}]
     quantities: [reaction B uy, resultant Mz at B, resultant Mz at m1, resultant Vy at m1,
                  displacement m1 uy]
+    field_envelopes: true
 )";
 
 constexpr double kDeadSpan = 6;
@@ -201,6 +202,31 @@ TEST_SUITE("moving load with the deck's loads") {
       if (line->endNodes()[0] == b) leastAtB = ends[0][5].min.value;
     }
     CHECK(leastAtB == doctest::Approx(mzB).epsilon(kDeadRoundOff));
+    std::filesystem::remove_all(dir.parent_path());
+  }
+
+  TEST_CASE("without field_envelopes the VTK file holds the governing shapes alone") {
+    using namespace moving_dead_load;
+    std::string deck = kDeadDeck + kDeadAnalysis;
+    deck.erase(deck.find("    field_envelopes: true\n"), std::string("    field_envelopes: true\n").size());
+    const Study study = test::solveDeckText(deck, "shapes_only.yaml");
+    const MovingLoadOutcome& m = deadMovingOf(study);
+    CHECK(m.fields.nodes.empty());
+    const std::filesystem::path dir = test::scratchDir("moving_vtk_shapes") / "out";
+    OutputChoices choices;
+    choices.charts = ChartFormat::none;
+    writeRunOutputs(*study.run, dir, choices);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((dir / "trolley_envelope.vtu").string().c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    CHECK(grid->GetPointData()->GetArray("displacement_max [m]") == nullptr);
+    vtkDataArray* shape = grid->GetPointData()->GetArray("displacement at max of displacement m1 uy [m]");
+    REQUIRE(shape != nullptr);
+    // The governing shape at m1 is the envelope's value there (the deck's loads included).
+    const int m1 = study.run->model->node("m1");
+    CHECK(shape->GetComponent(m1, 1) ==
+          doctest::Approx(m.quantity("displacement m1 uy").envelope.max.value).epsilon(kDeadRoundOff));
     std::filesystem::remove_all(dir.parent_path());
   }
 }

@@ -3,6 +3,7 @@
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
 
@@ -25,18 +26,14 @@ vtkSmartPointer<vtkDoubleArray> nodalSide(const std::string& name, const FieldEn
   return a;
 }
 
-}  // namespace
-
-std::string movingVtu(const std::string& stem) { return stem + "_envelope.vtu"; }
-
-void writeMovingVtu(const std::filesystem::path& dir, const Model& model,
-                    const MovingLoadOutcome& m, const std::string& stem) {
-  auto grid = lineGrid(model);
-  vtkPointData& points = *grid->GetPointData();
+/// The whole model's envelopes: point arrays of the nodes' extremes, cell arrays of each line
+/// element's (over both its ends).
+void addFieldEnvelopes(vtkUnstructuredGrid& grid, const Model& model, const FieldEnvelopes& f) {
+  vtkPointData& points = *grid.GetPointData();
   for (bool largest : {true, false}) {
     const std::string side = largest ? "_max" : "_min";
-    points.AddArray(nodalSide("displacement" + side + " [m]", m.fields, 0, largest));
-    points.AddArray(nodalSide("rotation" + side + " [rad]", m.fields, 3, largest));
+    points.AddArray(nodalSide("displacement" + side + " [m]", f, 0, largest));
+    points.AddArray(nodalSide("rotation" + side + " [rad]", f, 3, largest));
   }
 
   std::vector<int> indices;
@@ -49,14 +46,24 @@ void writeMovingVtu(const std::filesystem::path& dir, const Model& model,
     auto high = doubleArray((std::string(componentName(c)) + "_max" + unit).c_str(), 1, cells);
     auto low = doubleArray((std::string(componentName(c)) + "_min" + unit).c_str(), 1, cells);
     for (vtkIdType cell = 0; cell < cells; ++cell) {
-      const auto& ends = m.fields.elementEnds.at(std::size_t(indices[std::size_t(cell)]));
+      const auto& ends = f.elementEnds.at(std::size_t(indices[std::size_t(cell)]));
       high->SetValue(cell, std::max(ends[0][k].max.value, ends[1][k].max.value));
       low->SetValue(cell, std::min(ends[0][k].min.value, ends[1][k].min.value));
     }
-    grid->GetCellData()->AddArray(high);
-    grid->GetCellData()->AddArray(low);
+    grid.GetCellData()->AddArray(high);
+    grid.GetCellData()->AddArray(low);
   }
+}
 
+}  // namespace
+
+std::string movingVtu(const std::string& stem) { return stem + "_envelope.vtu"; }
+
+void writeMovingVtu(const std::filesystem::path& dir, const Model& model,
+                    const MovingLoadOutcome& m, const std::string& stem) {
+  auto grid = lineGrid(model);
+  vtkPointData& points = *grid->GetPointData();
+  if (!m.fields.nodes.empty()) addFieldEnvelopes(*grid, model, m.fields);
   for (const MovingQuantity& q : m.quantities)
     for (bool largest : {true, false}) {
       const std::string of = std::string(largest ? " at max of " : " at min of ") + q.text;
