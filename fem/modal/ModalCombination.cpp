@@ -28,13 +28,30 @@ Eigen::VectorXd combineModes(const Eigen::MatrixXd& modal, const Eigen::MatrixXd
   return weighted.cwiseProduct(modal).rowwise().sum().cwiseMax(0.0).cwiseSqrt();
 }
 
+std::vector<std::vector<double>> directionalFactors(std::size_t count, DirectionalRule rule) {
+  if (rule == DirectionalRule::srss) return {std::vector<double>(count, 1.0)};
+  std::vector<std::vector<double>> out;
+  for (std::size_t d = 0; d < count; ++d) {
+    std::vector<double> factors(count, 0.3);
+    factors[d] = 1;
+    out.push_back(std::move(factors));
+  }
+  return out;
+}
+
+Eigen::VectorXd combineDirectionsAs(const Eigen::MatrixXd& perDirection,
+                                    const std::vector<double>& factors, DirectionalRule rule) {
+  const Eigen::VectorXd f =
+      Eigen::Map<const Eigen::VectorXd>(factors.data(), Eigen::Index(factors.size()));
+  if (rule == DirectionalRule::srss) return (perDirection * f.asDiagonal()).rowwise().norm();
+  return perDirection * f;
+}
+
 Eigen::VectorXd combineDirections(const Eigen::MatrixXd& perDirection, DirectionalRule rule) {
-  if (perDirection.cols() == 0) return Eigen::VectorXd::Zero(perDirection.rows());
-  if (rule == DirectionalRule::srss) return perDirection.rowwise().norm();
-  const Eigen::VectorXd sum = perDirection.rowwise().sum();
   Eigen::VectorXd best = Eigen::VectorXd::Zero(perDirection.rows());
-  for (int d = 0; d < perDirection.cols(); ++d)
-    best = best.cwiseMax(perDirection.col(d) + 0.3 * (sum - perDirection.col(d)));
+  for (const std::vector<double>& factors :
+       directionalFactors(std::size_t(perDirection.cols()), rule))
+    best = best.cwiseMax(combineDirectionsAs(perDirection, factors, rule));
   return best;
 }
 

@@ -25,6 +25,17 @@ Eigen::MatrixXd modalCorrelations(const std::vector<double>& omega, double dampi
 /// SRSS for rho the identity, CQC for Der Kiureghian's.
 Eigen::VectorXd combineModes(const Eigen::MatrixXd& modal, const Eigen::MatrixXd& rho);
 
+/// The combinations `rule` takes of `count` directions, as a factor per direction: for
+/// `percent30` one per direction, that direction at 1 and the others at 0.3 (EN 1998-1
+/// (4.19)-(4.20), and (4.20)-(4.22) of 4.3.3.5.2 with the vertical); for `srss` the one root
+/// of the sum of squares (its factors all 1).
+std::vector<std::vector<double>> directionalFactors(std::size_t count, DirectionalRule rule);
+
+/// One combination's value of each row of `perDirection` (one column per direction): the
+/// factored sum for `percent30`, the root of the sum of the squared factored peaks for `srss`.
+Eigen::VectorXd combineDirectionsAs(const Eigen::MatrixXd& perDirection,
+                                    const std::vector<double>& factors, DirectionalRule rule);
+
 /// The peaks of several directions of excitation (one column each) combined: `percent30` the
 /// largest of each direction at 100 % with the others at 30 % (EN 1998-1 (4.19)-(4.21)),
 /// `srss` the square root of the sum of squares (EN 1998-1 (4.18)).

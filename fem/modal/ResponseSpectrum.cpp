@@ -104,6 +104,43 @@ std::array<double, 3> ResponseSpectrumResult::capturedFraction() const {
   return f;
 }
 
+double ResponseSpectrumResult::saOf(std::size_t j, int d) const {
+  return verticalSpectrum && d == vertical ? verticalAcceleration.at(j)
+                                           : spectralAcceleration.at(j);
+}
+
+namespace {
+
+/// A warning for a mode outside a spectrum table (it reads the table's nearer end value).
+void warnOutside(const DesignSpectrum& spectrum, std::size_t j, double T, double Sa,
+                 const char* which, std::vector<std::string>& warnings) {
+  if (spectrum.covers(T)) return;
+  const std::vector<double> ends = spectrum.breakPeriods();
+  std::ostringstream w;
+  w << "mode " << j + 1 << " has the period " << T << " s, outside the " << which
+    << "spectrum table's " << ends.front() << " to " << ends.back() << " s: it reads the table's "
+    << (T < ends.front() ? "first" : "last") << " value, " << Sa
+    << " m/s^2 (extend the table to be sure)";
+  warnings.push_back(w.str());
+}
+
+/// "x + 0.3 y + 0.3 z" for the factors of `directions`; "SRSS" for that rule.
+std::string combinationName(const std::vector<int>& directions, const std::vector<double>& factors,
+                            DirectionalRule rule) {
+  if (rule == DirectionalRule::srss) return directions.size() > 1 ? "SRSS" : directionName(directions.front());
+  std::string name;
+  for (std::size_t i = 0; i < directions.size(); ++i)
+    if (factors[i] == 1) name = directionName(directions[i]);
+  for (std::size_t i = 0; i < directions.size(); ++i)
+    if (factors[i] != 1) {
+      name += " + 0.3 ";
+      name += directionName(directions[i]);
+    }
+  return name;
+}
+
+}  // namespace
+
 ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpectrum& spectrum,
                                              const ResponseSpectrumOptions& options) {
   ResponseSpectrumResult result;
@@ -112,6 +149,8 @@ ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpe
   result.dampingRatio = options.dampingRatio;
   result.rule = options.rule;
   result.directional = options.directional;
+  result.verticalSpectrum = options.verticalSpectrum;
+  result.vertical = options.vertical;
   result.modal = solveModes(model, {options.modes, options.shift});
   result.warnings = result.modal.warnings;
   const ModalResult& modal = result.modal;
@@ -134,14 +173,11 @@ ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpe
     omega.push_back(std::sqrt(mode.eigenvalue));
     const double T = 2 * std::numbers::pi / omega.back();
     result.spectralAcceleration.push_back(spectrum.at(T));
-    if (!spectrum.covers(T)) {
-      const std::vector<double> ends = spectrum.breakPeriods();
-      std::ostringstream w;
-      w << "mode " << j + 1 << " has the period " << T << " s, outside the spectrum table's "
-        << ends.front() << " to " << ends.back() << " s: it reads the table's "
-        << (T < ends.front() ? "first" : "last") << " value, " << result.spectralAcceleration.back()
-        << " m/s^2 (extend the table to be sure)";
-      result.warnings.push_back(w.str());
+    warnOutside(spectrum, j, T, result.spectralAcceleration.back(), "", result.warnings);
+    if (result.verticalSpectrum) {
+      result.verticalAcceleration.push_back(result.verticalSpectrum->at(T));
+      warnOutside(*result.verticalSpectrum, j, T, result.verticalAcceleration.back(),
+                  "vertical ", result.warnings);
     }
   }
   result.correlation = modalCorrelations(omega, options.dampingRatio, options.rule);
@@ -155,7 +191,7 @@ ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpe
     PeakResponse shape;
     for (std::size_t j = 0; j < modal.modes.size(); ++j) {
       const Mode& mode = modal.modes[j];
-      const double Sa = result.spectralAcceleration[j];
+      const double Sa = result.saOf(j, d);
       const double amplitude = mode.participation[d] * Sa / mode.eigenvalue;
       // The inertia forces M phi Gamma_d Sa sum along k to Gamma_k Gamma_d Sa: what the ground
       // takes, springs to it included.
@@ -174,6 +210,13 @@ ResponseSpectrumResult solveResponseSpectrum(const Model& model, const DesignSpe
     perDirection.col(Eigen::Index(di)) = peak;
     result.perDirection.push_back(ResponseLayout::unflatten(shape, peak));
   }
+  for (const std::vector<double>& factors :
+       directionalFactors(options.directions.size(), options.directional))
+    result.combinations.push_back(
+        {combinationName(options.directions, factors, options.directional), factors,
+         ResponseLayout::unflatten(
+             result.perDirection.front(),
+             combineDirectionsAs(perDirection, factors, options.directional))});
   result.combined = ResponseLayout::unflatten(
       result.perDirection.front(), combineDirections(perDirection, options.directional));
 

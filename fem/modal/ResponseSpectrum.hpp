@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct ResponseSpectrumOptions {
   DirectionalRule directional = DirectionalRule::percent30;
   std::vector<int> directions{0};  ///< the excited global directions: 0 x, 1 y, 2 z
   int stationsPerElement = 4;      ///< section forces at this many + 1 stations per element
+  /// When set, the spectrum of direction `vertical` (the others take the analysis' own).
+  std::optional<DesignSpectrum> verticalSpectrum;
+  int vertical = 1;
 };
 
 /// Peak values (magnitudes, >= 0) of every output quantity.
@@ -38,14 +42,28 @@ struct PeakResponse {
   std::array<double, 3> baseForce{};  ///< the total force into the ground along x, y, z (N)
 };
 
+/// One combination of the directions' peaks (ModalCombination.hpp's directionalFactors):
+/// "x + 0.3 y + 0.3 z", or "SRSS".
+struct DirectionalCombination {
+  std::string name;
+  std::vector<double> factors;  ///< per direction, in the result's directions' order
+  PeakResponse peak;
+};
+
 struct ResponseSpectrumResult {
   ModalResult modal;
   std::vector<double> spectralAcceleration;  ///< Sa (m/s^2) at each mode's period
   Eigen::MatrixXd correlation;               ///< rho_ij between the modes' responses
   std::vector<int> directions;               ///< as in the options
   std::vector<PeakResponse> perDirection;    ///< each direction alone, modes combined
-  PeakResponse combined;                     ///< the directions combined
+  /// Each combination of the directions (one when there is one direction).
+  std::vector<DirectionalCombination> combinations;
+  PeakResponse combined;  ///< the directions combined: per quantity the largest combination
   DesignSpectrum spectrum;                   ///< the spectrum read
+  /// The vertical direction's own spectrum, when given, and each mode's Sa on it (m/s^2).
+  std::optional<DesignSpectrum> verticalSpectrum;
+  std::vector<double> verticalAcceleration;
+  int vertical = 1;
   double dampingRatio = 0.05;
   ModalRule rule = ModalRule::cqc;
   DirectionalRule directional = DirectionalRule::percent30;
@@ -53,6 +71,8 @@ struct ResponseSpectrumResult {
 
   /// Sum of the modes' effective masses over the total mass along x, y, z (0 where no mass).
   std::array<double, 3> capturedFraction() const;
+  /// Sa of mode j along direction d (m/s^2): the vertical spectrum's along the vertical.
+  double saOf(std::size_t j, int d) const;
 };
 
 /// Solves the modes of `model` and its peak response to `spectrum` along each of the options'

@@ -108,15 +108,14 @@ double InfluenceLine::at(double s) const {
   return valueAt(pieces[p], (s - breaks[p]) / width);
 }
 
-std::vector<InfluenceLine> influenceLines(const Model& model, const std::vector<PathElement>& path,
-                                          const Eigen::Vector3d& direction,
-                                          const std::vector<InfluenceQuantity>& quantities,
-                                          const StaticOptions& options) {
+PathUnitLoads solvePathUnitLoads(const Model& model, const std::vector<PathElement>& path,
+                                 const Eigen::Vector3d& direction, const StaticOptions& options) {
   if (path.empty()) throw std::invalid_argument("a moving load needs a path of line elements");
   if (!(direction.norm() > 0))
     throw std::invalid_argument("a moving load needs a direction of nonzero length");
-  const Eigen::Vector3d unit = direction.normalized();
-  std::vector<const LineElement*> lines;
+  PathUnitLoads out;
+  out.path = path;
+  out.direction = direction.normalized();
   int reached = -1;  // the node the path has come to
   for (const PathElement& p : path) {
     const LineElement* line =
@@ -132,22 +131,22 @@ std::vector<InfluenceLine> influenceLines(const Model& model, const std::vector<
       throw std::invalid_argument("the path breaks at element " + std::to_string(p.element) +
                                   ": it does not start where the one before it ends");
     reached = ends[p.reversed ? 0 : 1];
-    lines.push_back(line);
+    out.lines.push_back(line);
   }
 
-  // 1. One right-hand side per path node and dof a load there acts on.
+  // One right-hand side per path node and dof a load there acts on.
   const DofMap dofs(model);
   std::map<LoadedDof, int> column;
-  std::vector<std::vector<std::pair<int, Polynomial>>> shares(path.size());
+  out.shares.resize(path.size());
   for (std::size_t e = 0; e < path.size(); ++e)
-    for (auto& [loaded, share] : nodalShares(*lines[e], unit)) {
+    for (auto& [loaded, share] : nodalShares(*out.lines[e], out.direction)) {
       if (dofs.equation(loaded.first, loaded.second) < 0)
         throw std::invalid_argument("the moving load acts on " +
                                     model.describe({loaded.first, loaded.second}) +
                                     ", which no element carries (give a direction the model "
                                     "can carry)");
       const auto [it, added] = column.try_emplace(loaded, int(column.size()));
-      shares[e].push_back({it->second, std::move(share)});
+      out.shares[e].push_back({it->second, std::move(share)});
     }
   std::vector<Loading> loadings;
   loadings.reserve(column.size());
@@ -157,26 +156,45 @@ std::vector<InfluenceLine> influenceLines(const Model& model, const std::vector<
                           std::vector<std::pair<int, ElementSpanLoad>>{});
     pointers[std::size_t(c)] = &loadings.back();
   }
-  const std::vector<StaticResult> solved = solveLoadings(model, pointers, options);
+  out.solved = solveLoadings(model, pointers, options);
+  return out;
+}
 
-  // 2. Each quantity's value under each unit load, then its cubic on each element.
-  std::vector<InfluenceLine> out(quantities.size());
-  for (std::size_t q = 0; q < quantities.size(); ++q) {
-    const InfluenceQuantity& quantity = quantities[q];
-    std::vector<double> unitValues(solved.size());
-    for (std::size_t c = 0; c < solved.size(); ++c) unitValues[c] = quantity.value(solved[c]);
-    InfluenceLine& line = out[q];
-    line.breaks.push_back(0);
-    for (std::size_t e = 0; e < path.size(); ++e) {
-      Polynomial inXi;
-      for (const auto& [c, share] : shares[e])
-        inXi = combination(1, inXi, unitValues[std::size_t(c)], share);
-      if (quantity.element == path[e].element)
-        inXi = combination(1, inXi, 1,
-                           clampedShare(*lines[e], unit, quantity.end, quantity.component));
-      line.pieces.push_back(path[e].reversed ? composedWithLine(inXi, 1, -1) : inXi);
-      line.breaks.push_back(line.breaks.back() + lines[e]->length());
-    }
+double PathUnitLoads::length() const {
+  double sum = 0;
+  for (const LineElement* line : lines) sum += line->length();
+  return sum;
+}
+
+InfluenceLine influenceLineOf(const PathUnitLoads& units, const std::vector<double>& unitValues,
+                              int element, int end, ForceComponent component) {
+  InfluenceLine line;
+  line.breaks.push_back(0);
+  for (std::size_t e = 0; e < units.path.size(); ++e) {
+    Polynomial inXi;
+    for (const auto& [c, share] : units.shares[e])
+      inXi = combination(1, inXi, unitValues[std::size_t(c)], share);
+    if (element >= 0 && element == units.path[e].element)
+      inXi = combination(1, inXi, 1, clampedShare(*units.lines[e], units.direction, end, component));
+    line.pieces.push_back(units.path[e].reversed ? composedWithLine(inXi, 1, -1) : inXi);
+    line.breaks.push_back(line.breaks.back() + units.lines[e]->length());
+  }
+  return line;
+}
+
+std::vector<InfluenceLine> influenceLines(const Model& model, const std::vector<PathElement>& path,
+                                          const Eigen::Vector3d& direction,
+                                          const std::vector<InfluenceQuantity>& quantities,
+                                          const StaticOptions& options) {
+  const PathUnitLoads units = solvePathUnitLoads(model, path, direction, options);
+  std::vector<InfluenceLine> out;
+  out.reserve(quantities.size());
+  std::vector<double> unitValues(units.solved.size());
+  for (const InfluenceQuantity& quantity : quantities) {
+    for (std::size_t c = 0; c < units.solved.size(); ++c)
+      unitValues[c] = quantity.value(units.solved[c]);
+    out.push_back(
+        influenceLineOf(units, unitValues, quantity.element, quantity.end, quantity.component));
   }
   return out;
 }

@@ -17,6 +17,7 @@
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Polynomial.hpp"
+#include "fem/model/LineElement.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
 #include "fem/static/Static.hpp"
@@ -53,6 +54,33 @@ struct InfluenceLine {
   double at(double s) const;
   double length() const { return breaks.back(); }
 };
+
+/// The unit loads of a path, solved with one factorisation of K: one static solution per path
+/// node and global dof a load on the path acts on, and, per path element, how a unit load at
+/// fraction xi of it shares among those solutions (polynomials in xi from the element's own
+/// start, whichever way the path crosses it).
+struct PathUnitLoads {
+  std::vector<PathElement> path;
+  std::vector<const LineElement*> lines;  ///< the path's elements, in path order
+  Eigen::Vector3d direction;              ///< of the unit load (normalised)
+  std::vector<StaticResult> solved;       ///< one per loaded dof
+  std::vector<std::vector<std::pair<int, Polynomial>>> shares;  ///< per path element: (solved index, share)
+  double length() const;                  ///< of the path (m)
+};
+
+/// Solves the unit loads of `path` for a load along `direction`. Throws std::invalid_argument
+/// when the path is empty or broken, an element is not a line element or a loaded dof is one
+/// no element carries; throws as solveLoadings does.
+PathUnitLoads solvePathUnitLoads(const Model& model, const std::vector<PathElement>& path,
+                                 const Eigen::Vector3d& direction,
+                                 const StaticOptions& options = {});
+
+/// A quantity's influence line from its value under each unit load (`unitValues[c]` in
+/// `units.solved[c]`); a resultant read at end `end` of element `element` (-1: none) adds the
+/// clamped share of a load inside that element.
+InfluenceLine influenceLineOf(const PathUnitLoads& units, const std::vector<double>& unitValues,
+                              int element = -1, int end = 0,
+                              ForceComponent component = ForceComponent::Mz);
 
 /// The influence lines of `quantities` for a unit load along global `direction` (normalised
 /// here) moving along `path` (consecutive elements share a node). Throws

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "fem/assembly/ElementExtrema.hpp"
 
@@ -82,6 +83,28 @@ TrainEnvelope trainEnvelope(const InfluenceLine& line, const std::vector<TrainLo
   const double noise = kRoundOffOfZero * forces * largest;
   for (TrainExtreme* e : {&out.max, &out.min})
     if (std::abs(e->value) <= noise) e->value = 0;
+  return out;
+}
+
+NodalField trainDisplacement(const PathUnitLoads& units, const std::vector<TrainLoad>& train,
+                             double lead) {
+  if (units.solved.empty()) throw std::invalid_argument("a path without unit loads");
+  NodalField out = NodalField::Zero(units.solved.front().displacement.rows(), kDofKinds);
+  for (const TrainLoad& load : train) {
+    double s = lead - load.offset;
+    if (s < 0 || s > units.length()) continue;
+    // The path element holding s (the later one at a node: both give the node's loads).
+    std::size_t e = 0;
+    while (e + 1 < units.lines.size() && s >= units.lines[e]->length()) {
+      s -= units.lines[e]->length();
+      ++e;
+    }
+    const double L = units.lines[e]->length();
+    const double along = std::clamp(s / L, 0.0, 1.0);
+    const double xi = units.path[e].reversed ? 1 - along : along;
+    for (const auto& [c, share] : units.shares[e])
+      out += load.force * valueAt(share, xi) * units.solved[std::size_t(c)].displacement;
+  }
   return out;
 }
 

@@ -39,4 +39,9 @@ double trainEffect(const InfluenceLine& line, const std::vector<TrainLoad>& trai
 /// the path's start until the last leaves it at the end.
 TrainEnvelope trainEnvelope(const InfluenceLine& line, const std::vector<TrainLoad>& train);
 
+/// The nodal displacements (exact at the nodes) under the train alone with its first load at
+/// `lead`: each load on the path times its shares of the unit loads' solutions.
+NodalField trainDisplacement(const PathUnitLoads& units, const std::vector<TrainLoad>& train,
+                             double lead);
+
 }  // namespace beamrotor

@@ -6,6 +6,7 @@
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "problems/cli/Summary.hpp"
+#include "problems/output/structure/SpectrumOutput.hpp"
 
 namespace beamrotor::cli {
 
@@ -22,6 +23,9 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
   if (r.directions.size() > 1)
     out << " by " << (r.directional == DirectionalRule::srss ? "SRSS" : "100/30 %");
   out << ")\n    spectrum: " << r.spectrum.describe() << "\n";
+  if (r.verticalSpectrum)
+    out << "    vertical spectrum (along " << directionName(r.vertical)
+        << "): " << r.verticalSpectrum->describe() << "\n";
   out << "    mode  " << padded("f [" + hz.unit + "]", 12) << padded("T [" + period.unit + "]", 12)
       << padded("Sa [" + sa.unit + "]", 12);
   for (int d : r.directions)
@@ -47,10 +51,18 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
   const PeakResponse& p = r.combined;
   out << "    combined peaks: base force";
   const double base = std::max({p.baseForce[0], p.baseForce[1], p.baseForce[2]});
-  for (int d = 0; d < 3; ++d)
-    out << " " << directionName(d) << " "
-        << valueText(p.baseForce[d] > 1e-9 * base ? p.baseForce[d] : 0.0, "N", units);
-  out << "\n";
+  const auto baseForces = [&](const PeakResponse& peak) {
+    for (int d = 0; d < 3; ++d)
+      out << " " << directionName(d) << " "
+          << valueText(peak.baseForce[d] > 1e-9 * base ? peak.baseForce[d] : 0.0, "N", units);
+    out << "\n";
+  };
+  baseForces(p);
+  if (r.combinations.size() > 1)
+    for (const DirectionalCombination& c : r.combinations) {
+      out << "    combination " << c.name << ": base force";
+      baseForces(c.peak);
+    }
   for (int k = 0; k < 3; ++k)
     if (p.displacement.rows() > 0 &&
         p.displacement.col(k).maxCoeff() > 1e-9 * p.displacement.leftCols(3).maxCoeff()) {
@@ -66,10 +78,18 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
   std::array<double, 2> largest{};  // forces, moments
   for (const ReactionComponent& c : p.reactions)
     largest[isRotation(c.dof)] = std::max(largest[isRotation(c.dof)], c.value);
-  for (const ReactionComponent& c : p.reactions)
-    if (c.value > 1e-9 * largest[isRotation(c.dof)])
-      out << "    reaction " << c.support << " " << dofName(c.dof) << " "
-          << valueText(c.value, isRotation(c.dof) ? "N m" : "N", units) << "\n";
+  for (std::size_t i = 0; i < p.reactions.size(); ++i) {
+    const ReactionComponent& c = p.reactions[i];
+    if (!(c.value > 1e-9 * largest[isRotation(c.dof)])) continue;
+    out << "    reaction " << c.support << " " << dofName(c.dof) << " "
+        << valueText(c.value, isRotation(c.dof) ? "N m" : "N", units);
+    if (r.combinations.size() > 1)
+      out << " (" << r.combinations[governingCombination(r, [i](const PeakResponse& q) {
+                       return q.reactions[i].value;
+                     })].name
+          << " governs)";
+    out << "\n";
+  }
   const auto isMoment = [](ForceComponent c) {
     return c == ForceComponent::T || c == ForceComponent::My || c == ForceComponent::Mz;
   };
@@ -81,10 +101,7 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
   for (const auto& [name, elements] : model.members()) {
     out << "    member " << padded(name, 12);
     for (ForceComponent c : kForceComponents) {
-      double peak = 0;
-      for (const BeamStation& s : p.stations)
-        if (std::find(elements.begin(), elements.end(), s.element) != elements.end())
-          peak = std::max(peak, componentOf(s.forces, c));
+      const double peak = memberPeak(p, elements, c);
       out << " " << componentName(c) << " "
           << valueText(peak > 1e-9 * largestResultant[isMoment(c)] ? peak : 0.0,
                        isMoment(c) ? "N m" : "N", units);

@@ -18,6 +18,7 @@
 #include "problems/output/structure/Charts.hpp"
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/moving/MovingOutput.hpp"
+#include "problems/output/moving/MovingVtk.hpp"
 #include "problems/output/torsion/TorsionOutput.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
@@ -35,6 +36,7 @@
 #include "problems/output/SweepTable.hpp"
 #include "problems/output/structure/Tables.hpp"
 #include "problems/output/transient/TransientFiles.hpp"
+#include "problems/output/structure/BaseMotionVtk.hpp"
 #include "problems/output/structure/VtkWriter.hpp"
 #include "problems/run/Overloaded.hpp"
 #include "problems/output/structure/BaseMotionOutput.hpp"
@@ -191,6 +193,7 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             },
             [&](const MovingLoadOutcome& r) {
               for (const CsvTable& table : p.moving) table.write(dir / table.title());
+              writeMovingVtu(dir, model, r, p.stem);
               if (charts)
                 drawMovingCharts(dir, r, p.stem, captionOf(prepared, a.name), prepared.units);
             },
@@ -200,8 +203,9 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
               writeSpectrumFiles(dir, r, model, p.stem, captionOf(prepared, a.name), charts,
                                  prepared.units);
             },
-            [&](const BaseMotionResult&) {
+            [&](const BaseMotionResult& r) {
               p.baseMotion->write(dir / p.baseMotion->title());
+              writeBaseMotionVtu(dir, model, r, p.stem);
               if (charts)
                 drawBaseMotionChart(dir, *p.baseMotion, p.stem, captionOf(prepared, a.name));
             },

@@ -1,11 +1,14 @@
 #include "problems/run/RunMovingLoad.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "elements/Beam.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/DofMap.hpp"
+#include "fem/static/Static.hpp"
+#include "problems/run/Measure.hpp"
 
 namespace beamrotor {
 
@@ -120,6 +123,7 @@ ResultantPlace resultantPlace(const Model& model, const std::string& point) {
 MovingLoadOutcome runMovingLoad(const MovingLoadSpec& spec, const Model& model) {
   MovingLoadOutcome out;
   out.direction = spec.direction;
+  out.deckLoads = spec.deckLoads;
   for (const MovingLoadSpec::Wheel& w : spec.wheels) out.train.push_back({w.force, w.offset});
   const std::vector<PathElement> path = pathElements(spec, model);
   requireExactPath(model, path);
@@ -131,12 +135,28 @@ MovingLoadOutcome runMovingLoad(const MovingLoadSpec& spec, const Model& model) 
     out.quantities.push_back(std::move(m));
   }
   const Eigen::Vector3d direction(spec.direction[0], spec.direction[1], spec.direction[2]);
-  std::vector<InfluenceLine> lines = influenceLines(model, path, direction, functions);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    out.quantities[i].line = std::move(lines[i]);
-    out.quantities[i].envelope = trainEnvelope(out.quantities[i].line, out.train);
+  const PathUnitLoads units = solvePathUnitLoads(model, path, direction);
+  // The deck's own loads, solved as a static analysis would (span loads in the resultants).
+  std::optional<StaticResult> still;
+  if (spec.deckLoads) still = solveStatic(model);
+  NodalField stillField = NodalField::Zero(model.nodeCount(), kDofKinds);
+  if (still) stillField = still->displacement;
+  std::vector<double> unitValues(units.solved.size());
+  for (std::size_t i = 0; i < out.quantities.size(); ++i) {
+    MovingQuantity& q = out.quantities[i];
+    const InfluenceQuantity& f = functions[i];
+    for (std::size_t c = 0; c < units.solved.size(); ++c) unitValues[c] = f.value(units.solved[c]);
+    q.line = influenceLineOf(units, unitValues, f.element, f.end, f.component);
+    q.envelope = trainEnvelope(q.line, out.train);
+    if (still) q.deckValue = measureStatic(spec.quantities[i], *still, {model, still->displacement});
+    q.envelope.max.value += q.deckValue;
+    q.envelope.min.value += q.deckValue;
+    q.shapeAtMax = stillField + trainDisplacement(units, out.train, q.envelope.max.lead);
+    q.shapeAtMin = stillField + trainDisplacement(units, out.train, q.envelope.min.lead);
   }
-  out.length = out.quantities.front().line.length();
+  out.length = units.length();
+  if (spec.fieldEnvelopes)
+    out.fields = fieldEnvelopes(model, units, out.train, still ? &*still : nullptr);
   return out;
 }
 

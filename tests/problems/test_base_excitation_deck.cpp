@@ -4,10 +4,18 @@
 // naming the deck's line and field.
 #include <doctest/doctest.h>
 
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
 #include <cmath>
 #include <numbers>
 #include <string>
 
+#include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
@@ -58,6 +66,52 @@ TEST_SUITE("base excitation decks") {
       CHECK(std::filesystem::exists(solved.dir / file));
     CHECK(solved.process.out.find("combined peaks: base force") != std::string::npos);
     CHECK(solved.process.out.find("transmissibility max") != std::string::npos);
+    std::filesystem::remove_all(solved.dir.parent_path());
+  }
+
+  TEST_CASE("base motion's VTK file at the peak frequency: read back, the same as results.json") {
+    const Study study = test::solveShippedDeck("machine_base_frame.yaml");
+    const Model& model = *study.run->model;
+    const test::SolvedDeck solved =
+        test::solveShippedDeckToScratch("machine_base_frame.yaml", "base-motion-vtk");
+    const nlohmann::json results = solved.json("results.json");
+    for (const auto& a : results["analyses"]) {
+      if (a["type"] != "base-motion") continue;
+      CAPTURE(a["name"].get<std::string>());
+      // The peak: the sweep's largest base force.
+      const auto& force = a["base_force_n"];
+      std::size_t peak = 0;
+      for (std::size_t i = 0; i < force.size(); ++i)
+        if (force[i].get<double>() > force[peak].get<double>()) peak = i;
+      CHECK(a["peak_frequency_hz"].get<double>() == a["frequencies_hz"][peak].get<double>());
+      vtkNew<vtkXMLUnstructuredGridReader> reader;
+      reader->SetFileName((solved.dir / a["vtu"].get<std::string>()).string().c_str());
+      reader->Update();
+      vtkUnstructuredGrid* grid = reader->GetOutput();
+      REQUIRE(grid->GetNumberOfPoints() == model.nodeCount());
+      vtkDataArray* frequency = grid->GetFieldData()->GetArray("frequency [Hz]");
+      vtkDataArray* base = grid->GetFieldData()->GetArray("base force [N]");
+      REQUIRE(frequency);
+      REQUIRE(base);
+      // Binary doubles against the JSON's shortest round-trip decimals: the same doubles.
+      CHECK(frequency->GetTuple1(0) == a["peak_frequency_hz"].get<double>());
+      CHECK(base->GetTuple1(0) == force[peak].get<double>());
+      vtkDataArray* T = grid->GetPointData()->GetArray("transmissibility [1]");
+      vtkDataArray* relative = grid->GetPointData()->GetArray("relative amplitude [m]");
+      vtkDataArray* absolute = grid->GetPointData()->GetArray("absolute amplitude [m]");
+      REQUIRE(T);
+      REQUIRE(relative);
+      REQUIRE(absolute);
+      int compared = 0;
+      for (const auto& [point, values] : a["points"].items()) {
+        const int node = model.node(point);
+        CHECK(T->GetTuple1(node) == values["transmissibility"][peak].get<double>());
+        CHECK(relative->GetComponent(node, 0) == values["relative_m"][peak].get<double>());
+        CHECK(absolute->GetComponent(node, 0) == values["absolute_m"][peak].get<double>());
+        ++compared;
+      }
+      CHECK(compared > 0);
+    }
     std::filesystem::remove_all(solved.dir.parent_path());
   }
 

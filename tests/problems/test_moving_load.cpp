@@ -15,6 +15,7 @@
 
 #include "problems/deck/DeckReader.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
+#include "tests/problems/TwoSpanFrame.hpp"
 
 using namespace beamrotor;
 
@@ -25,24 +26,7 @@ namespace moving_load {
 // R_B = xi (3 - xi^2) / 2, largest 1 with the load on B; the moment at B, -L xi (1 - xi^2) / 4,
 // least -L / (6 sqrt 3) at xi = 1/sqrt 3 (inside an element: an extreme found, not sampled);
 // at mid-span of span 1, largest 0.203125 L with the load there.
-const std::string kTwoSpans = R"(
-parameters: {L: 6 m}
-model: {dimension: planar}
-materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]
-sections: [{name: s, shape: general, A: 53.8 cm^2, I: 8356 cm^4, depth: 300 mm, width: 150 mm}]
-nodes:
-  - {name: A, at: [0, 0]}
-  - {name: B, at: [L, 0]}
-  - {name: C, at: [2 * L, 0]}
-members:
-  - {name: span1, from: A, to: B, section: s, elements: 4}
-  - {name: span2, from: B, to: C, section: s, elements: 4}
-points: [{name: m1, member: span1, at: 0.5}]
-supports:
-  - {name: A, at: A, fix: pinned}
-  - {name: B, at: B, fix: [uy]}
-  - {name: C, at: C, fix: [uy]}
-analyses:
+const std::string kTwoSpans = "\n" + test::twoSpanFrame(4) + R"(analyses:
   - type: moving-load
     name: wheel
     path: [span2, span1]
@@ -195,6 +179,9 @@ TEST_SUITE("moving load") {
     // A quantity that is not linear in the load.
     refused({{"quantities: [reaction B uy,", "quantities: [moment max, reaction B uy,"}},
             "not linear", "    quantities:");
+    // Whether the deck's loads stand is a boolean.
+    refused({{"    wheels: [{force: 1 N}]", "    deck_loads: maybe\n    wheels: [{force: 1 N}]"}},
+            "expected true or false", "    deck_loads:");
     // An envelope of a quantity the analysis does not list.
     refused({{"moving max reaction B uy", "moving max reaction C uy"}},
             "add it to its quantities", "  - {name: RB");

@@ -483,6 +483,51 @@ def test_study_gives_the_command_lines_table_to_the_bit(tmp_path):
     assert study.directory is None
 
 
+def test_spectrum_combinations_table():
+    # problems/machine_base_frame.yaml's quake: directions x and z by 100/30. Its sway modes
+    # are along x or z alone, so E_x's base force along x is M Sa (Sa = 2.5 ag S on the
+    # plateau, S = 1.15 on ground C) and E_z's along x is 0: the combination led by x gives
+    # M Sa along x, the one led by z 0.3 M Sa. Each quantity's governing row holds its largest.
+    run = beamrotor.solve(PROBLEMS / "machine_base_frame.yaml")
+    table = run.tables["quake"]["spectrum_combinations"]
+    p = run.parameters
+    MSa = p["M"] * 2.5 * p["ag"] * 1.15
+    rows = list(zip(table["combination"], table["quantity"], table["component"],
+                    table["value"], table["governs"]))
+    base_x = {c: v for c, q, k, v, g in rows if q == "base_force" and k == "x"}
+    assert abs(base_x["x + 0.3 z"] / MSa - 1) < EXACT
+    assert abs(base_x["z + 0.3 x"] / (0.3 * MSa) - 1) < EXACT
+    for i in range(0, len(rows), 2):
+        pair = rows[i:i + 2]
+        assert pair[0][1:3] == pair[1][1:3]
+        best = max(r[3] for r in pair)
+        assert sum(r[4] for r in pair) == 1
+        assert all(r[3] == best for r in pair if r[4] == 1)
+    entry = next(a for a in run.results["analyses"] if a["name"] == "quake")
+    assert [c["name"] for c in entry["combinations"]] == ["x + 0.3 z", "z + 0.3 x"]
+
+
+def test_moving_load_with_the_deck_loads():
+    # problems/crane_girder.yaml's analysis with_weight: the girder's self-weight q = rho A g
+    # stands while the trolley runs, adding its own moment q x (L - x) / 2 at `under` (x there)
+    # to the position rule's; the wheels' governing place is the same. Exact: round-off.
+    run = beamrotor.solve(PROBLEMS / "crane_girder.yaml")
+    p = run.parameters
+    x = p["L"] / 2 - p["a"] / 4
+    rule = p["P"] * x**2 * 2 / p["L"]
+    q = 7850 * p["A"] * 9.81
+    weight = q * x * (p["L"] - x) / 2
+    alone = run.tables["trolley"]["envelopes"]
+    both = run.tables["with_weight"]["envelopes"]
+    assert abs(both["deck_loads"][0] / weight - 1) < EXACT
+    assert abs(both["max"][0] / (rule + weight) - 1) < EXACT
+    assert alone["deck_loads"][0] == 0
+    assert both["first_wheel_at_max"][0] == alone["first_wheel_at_max"][0]
+    entry = run.results["analyses"][1]
+    assert entry["deck_loads"] is True
+    assert entry["files"]["envelope_vtu"] == "with_weight_envelope.vtu"
+
+
 def test_moving_load_tables_and_envelope():
     # problems/crane_girder.yaml: two wheels P at spacing a on a simply supported span L. The
     # largest moment by the position rule, P (L/2 - a/4)^2 * 2 / L, under the wheel at

@@ -50,7 +50,11 @@ double readFramePath(const reader::Context& c, const Field& f, std::vector<std::
 }  // namespace
 
 void MovingLoadSpec::read(const reader::Context& c, const Field& f) {
-  f.allowOnly({"type", "name", "path", "direction", "wheels", "quantities"}, "a moving-load analysis");
+  f.allowOnly({"type", "name", "path", "direction", "wheels", "quantities", "deck_loads",
+               "field_envelopes"},
+              "a moving-load analysis");
+  if (auto d = f.get("deck_loads")) deckLoads = d->boolean();
+  if (auto e = f.get("field_envelopes")) fieldEnvelopes = e->boolean();
   place = f.place();
   const Deck& deck = c.deck;
   if (!deck.contacts.empty())

@@ -1,5 +1,7 @@
 // The reader of the response-spectrum row (StructureKinds.hpp): modes, damping, the spectrum
 // (a table or the EN 1998-1 shape), the directions and the rules that combine them.
+#include <algorithm>
+
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/ReaderContext.hpp"
 #include "problems/deck/structure/StructureKinds.hpp"
@@ -44,12 +46,30 @@ DesignSpectrum codeSpectrum(const reader::Context& c, const Field& f, double dam
   return DesignSpectrum::en1998(type, GroundType(ground[0] - 'A'), ag, damping);
 }
 
+/// A spectrum field: a table or a code shape.
+DesignSpectrum readSpectrum(const reader::Context& c, const Field& s, double damping) {
+  if (s.isMap() && s.has("table")) {
+    s.allowOnly({"table"}, "a tabulated spectrum");
+    return spectrumTable(c, s.require("table"));
+  }
+  if (!s.isMap())
+    s.fail("a spectrum is {table: [[T, Sa], ...]} or {code: EN1998-1, type, ground, ag}");
+  return codeSpectrum(c, s, damping);
+}
+
+/// Whether a code spectrum field names the vertical component.
+bool namesVertical(const Field& s) {
+  if (!s.isMap()) return false;
+  const auto component = s.get("component");
+  return component && component->text() == "vertical";
+}
+
 }  // namespace
 
 void ResponseSpectrumSpec::read(const reader::Context& c, const Field& f) {
   reader::requireSymmetricAtRest(c, f);
-  f.allowOnly({"type", "name", "modes", "shift", "damping", "spectrum", "directions",
-               "combination", "directional"},
+  f.allowOnly({"type", "name", "modes", "shift", "damping", "spectrum", "vertical_spectrum",
+               "directions", "combination", "directional"},
               "a response-spectrum analysis");
   if (auto m = f.get("modes")) modes = m->integer(c.evaluator, 1, kMaxModes);
   options.modes = modes;
@@ -61,14 +81,7 @@ void ResponseSpectrumSpec::read(const reader::Context& c, const Field& f) {
     if (options.dampingRatio >= 1) d->fail("damping is a ratio of critical below 1 (0.05 for 5 %)");
   }
   const Field s = f.require("spectrum");
-  if (s.isMap() && s.has("table")) {
-    s.allowOnly({"table"}, "a tabulated spectrum");
-    spectrum = spectrumTable(c, s.require("table"));
-  } else if (s.isMap()) {
-    spectrum = codeSpectrum(c, s, options.dampingRatio);
-  } else {
-    s.fail("a spectrum is {table: [[T, Sa], ...]} or {code: EN1998-1, type, ground, ag}");
-  }
+  spectrum = readSpectrum(c, s, options.dampingRatio);
   if (auto r = f.get("combination"))
     options.rule = r->choice({"cqc", "srss"}) == "cqc" ? ModalRule::cqc : ModalRule::srss;
   if (auto r = f.get("directional"))
@@ -88,6 +101,19 @@ void ResponseSpectrumSpec::read(const reader::Context& c, const Field& f) {
       directions.push_back(k);
     }
     if (directions.empty()) d->fail("give at least one direction (x, y or z)");
+  }
+  // The vertical's own spectrum beside the horizontals' (EN 1998-1 4.3.3.5.2): along y.
+  if (auto v = f.get("vertical_spectrum")) {
+    if (namesVertical(s))
+      s.fail("with a vertical_spectrum, spectrum is the horizontal one (x and z): remove "
+             "component: vertical here");
+    if (v->isMap() && !v->has("table") && !namesVertical(*v))
+      v->fail("a code's vertical_spectrum is its vertical component: add component: vertical");
+    options.verticalSpectrum = readSpectrum(c, *v, options.dampingRatio);
+    options.vertical = 1;
+    if (std::find(directions.begin(), directions.end(), options.vertical) == directions.end())
+      v->fail("the vertical spectrum acts along y, which directions does not list: add y to "
+              "directions");
   }
 }
 

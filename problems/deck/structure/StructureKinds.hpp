@@ -71,6 +71,12 @@ struct MovingLoadSpec {
   std::vector<Wheel> wheels;
   std::vector<Quantity> quantities;  ///< reactions, displacements, resultants at points
   double pathLength = 0;             ///< m
+  /// The deck's own `loads:` stand on the structure while the train crosses: their static
+  /// value is added to each envelope (`deck_loads: false` gives the train alone).
+  bool deckLoads = true;
+  /// Every node's and line element's envelope too (`field_envelopes: true`), for the VTK file:
+  /// its cost grows with the path's elements times the model's size, so it is asked for.
+  bool fieldEnvelopes = false;
   DeckPlace place;
 };
 

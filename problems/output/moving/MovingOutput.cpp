@@ -6,6 +6,7 @@
 
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/Gnuplot.hpp"
+#include "problems/output/moving/MovingVtk.hpp"
 
 namespace beamrotor {
 
@@ -64,13 +65,15 @@ CsvTable envelopesTable(const MovingLoadOutcome& m, const std::string& stem,
                         const OutputUnits& units) {
   CsvTable t(envelopesCsv(stem), {{"quantity", ""},
                                   {"unit", ""},
+                                  {"deck_loads", ""},
                                   {"max", ""},
                                   {"first_wheel_at_max", "m"},
                                   {"min", ""},
                                   {"first_wheel_at_min", "m"}});
   for (const MovingQuantity& q : m.quantities) {
     const OutputUnits::Shown shown = units.of(q.valueUnit);
-    t.addRow({q.text, shown.unit, q.envelope.max.value * shown.factor, q.envelope.max.lead,
+    t.addRow({q.text, shown.unit, q.deckValue * shown.factor, q.envelope.max.value * shown.factor,
+              q.envelope.max.lead,
               q.envelope.min.value * shown.factor, q.envelope.min.lead});
   }
   return t;
@@ -98,6 +101,7 @@ Json movingJson(const AnalysisOutcome& a, const std::string& stem) {
     quantities.push_back({{"quantity", q.text},
                           {"unit", q.valueUnit},
                           {"influence_unit", q.unit},
+                          {"deck_loads_value", q.deckValue},
                           {"max", extremeJson(q.envelope.max)},
                           {"min", extremeJson(q.envelope.min)},
                           {"influence", {{"breaks", q.line.breaks}, {"pieces", pieces}}}});
@@ -106,12 +110,14 @@ Json movingJson(const AnalysisOutcome& a, const std::string& stem) {
           {"name", a.name},
           {"path_length", m.length},
           {"direction", m.direction},
+          {"deck_loads", m.deckLoads},
           {"wheels", wheels},
           {"quantities", quantities},
           {"files",
            {{"influence_csv", influenceCsv(stem)},
             {"envelopes_csv", envelopesCsv(stem)},
-            {"influence_chart", stem + "_influence.svg"}}}};
+            {"influence_chart", stem + "_influence.svg"},
+            {"envelope_vtu", movingVtu(stem)}}}};
 }
 
 void drawMovingCharts(const std::filesystem::path& dir, const MovingLoadOutcome& m,

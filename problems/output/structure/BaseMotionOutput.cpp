@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fem/modal/ResponseSpectrum.hpp"
+#include "problems/output/structure/BaseMotionVtk.hpp"
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/Gnuplot.hpp"
@@ -98,6 +99,8 @@ Json baseMotionJson(const std::string& type, const std::string& name, const Base
   }
   out["points"] = points;
   out["csv"] = fileStem(name) + "_base_motion.csv";
+  out["peak_frequency_hz"] = r.points[peakPoint(r)].frequencyHz;
+  out["vtu"] = baseMotionVtu(fileStem(name));
   return out;
 }
 

@@ -26,6 +26,7 @@ double periodOf(const Mode& m) { return 2 * std::numbers::pi / std::sqrt(m.eigen
 CsvTable modesTable(const ResponseSpectrumResult& r, const std::string& stem) {
   std::vector<CsvColumn> columns{{"mode", ""}, {"frequency", "Hz"}, {"period", "s"},
                                  {"Sa", "m/s^2"}, {"Sd", "m"}};
+  if (r.verticalSpectrum) columns.push_back({"Sa_vertical", "m/s^2"});
   for (const char* d : {"x", "y", "z"}) columns.push_back({std::string("gamma_") + d, "kg^0.5"});
   for (const char* d : {"x", "y", "z"}) columns.push_back({std::string("mass_") + d, "kg"});
   for (const char* d : {"x", "y", "z"}) columns.push_back({std::string("cumulative_") + d, ""});
@@ -39,6 +40,7 @@ CsvTable modesTable(const ResponseSpectrumResult& r, const std::string& stem) {
     for (double v : {m.frequencyHz, periodOf(m), r.spectralAcceleration[j],
                      r.spectralAcceleration[j] / m.eigenvalue})
       row.emplace_back(v);
+    if (r.verticalSpectrum) row.emplace_back(r.saOf(j, r.vertical));
     for (double g : m.participation) row.push_back(g);
     for (double e : m.effectiveMass) row.push_back(e);
     for (int d = 0; d < 3; ++d) {
@@ -117,6 +119,54 @@ CsvTable membersTable(const ResponseSpectrumResult& r, const Model& model,
   return t;
 }
 
+/// One row per quantity and combination of the directions: the base force along each
+/// direction, each dof kind's largest displacement, each reaction and each member's largest
+/// resultants; `governs` 1 on the combination that gives the quantity's largest value. Values
+/// in `units` (each row names its unit).
+CsvTable combinationsTable(const ResponseSpectrumResult& r, const Model& model,
+                           const std::string& stem, const OutputUnits& units) {
+  CsvTable t(stem + "_spectrum_combinations.csv",
+             {{"combination", ""}, {"quantity", ""}, {"at", ""}, {"component", ""},
+              {"unit", ""}, {"value", ""}, {"governs", ""}});
+  const auto add = [&](const std::string& quantity, const std::string& at,
+                       const std::string& component, const std::string& unit, auto read) {
+    const OutputUnits::Shown shown = units.of(unit);
+    const std::size_t governing = governingCombination(r, read);
+    for (std::size_t i = 0; i < r.combinations.size(); ++i) {
+      std::vector<CsvCell> row;  // filled in place: GCC 12 misreads a braced list of variants
+      row.reserve(7);
+      row.emplace_back(std::in_place_type<std::string>, r.combinations[i].name);
+      row.emplace_back(std::in_place_type<std::string>, quantity);
+      row.emplace_back(std::in_place_type<std::string>, at);
+      row.emplace_back(std::in_place_type<std::string>, component);
+      row.emplace_back(std::in_place_type<std::string>, shown.unit);
+      row.emplace_back(std::in_place_type<double>, read(r.combinations[i].peak) * shown.factor);
+      row.emplace_back(std::in_place_type<long long>, i == governing ? 1 : 0);
+      t.addRow(std::move(row));
+    }
+  };
+  for (int d = 0; d < 3; ++d)
+    add("base_force", "", directionName(d), "N",
+        [d](const PeakResponse& p) { return p.baseForce[std::size_t(d)]; });
+  for (int k = 0; k < kDofKinds; ++k)
+    add("largest_displacement", "", std::string(dofName(kAllDofs[k])), k < 3 ? "m" : "rad",
+        [k](const PeakResponse& p) {
+          return p.displacement.rows() > 0 ? p.displacement.col(k).maxCoeff() : 0.0;
+        });
+  const std::vector<ReactionComponent>& reactions = r.combined.reactions;
+  for (std::size_t i = 0; i < reactions.size(); ++i)
+    add("reaction", reactions[i].support, std::string(dofName(reactions[i].dof)),
+        isRotation(reactions[i].dof) ? "N m" : "N",
+        [i](const PeakResponse& p) { return p.reactions[i].value; });
+  for (const auto& [name, elements] : model.members())
+    for (ForceComponent c : kForceComponents) {
+      const bool moment = c == ForceComponent::T || c == ForceComponent::My || c == ForceComponent::Mz;
+      add("member", name, componentName(c), moment ? "N m" : "N",
+          [&elements, c](const PeakResponse& p) { return memberPeak(p, elements, c); });
+    }
+  return t;
+}
+
 Json peakJson(const PeakResponse& p, const Model& model) {
   Json out = Json::object();
   Json base = Json::object();
@@ -134,13 +184,7 @@ Json peakJson(const PeakResponse& p, const Model& model) {
   Json members = Json::object();
   for (const auto& [name, elements] : model.members()) {
     Json peaks = Json::object();
-    for (ForceComponent c : kForceComponents) {
-      double peak = 0;
-      for (const BeamStation& s : p.stations)
-        if (std::find(elements.begin(), elements.end(), s.element) != elements.end())
-          peak = std::max(peak, componentOf(s.forces, c));
-      peaks[componentName(c)] = peak;
-    }
+    for (ForceComponent c : kForceComponents) peaks[componentName(c)] = memberPeak(p, elements, c);
     members[name] = peaks;
   }
   if (!members.empty()) out["member_peaks"] = members;
@@ -194,11 +238,20 @@ std::string spectrumCurve(const ResponseSpectrumResult& r, const OutputUnits::Sh
 
 std::string spectrumVtu(const std::string& stem) { return stem + "_spectrum.vtu"; }
 
+double memberPeak(const PeakResponse& p, const std::vector<int>& elements, ForceComponent c) {
+  double peak = 0;
+  for (const BeamStation& s : p.stations)
+    if (std::find(elements.begin(), elements.end(), s.element) != elements.end())
+      peak = std::max(peak, componentOf(s.forces, c));
+  return peak;
+}
+
 std::vector<CsvTable> spectrumTables(const ResponseSpectrumResult& r, const Model& model,
                                      const std::string& stem, const OutputUnits& units) {
   std::vector<CsvTable> tables{modesTable(r, stem), displacementsTable(r, model, stem)};
   if (!r.combined.reactions.empty()) tables.push_back(reactionsTable(r, stem, units));
   if (!r.combined.stations.empty()) tables.push_back(membersTable(r, model, stem));
+  tables.push_back(combinationsTable(r, model, stem, units));
   return tables;
 }
 
@@ -206,6 +259,7 @@ Json spectrumJson(const std::string& type, const std::string& name,
                   const ResponseSpectrumResult& r, const Model& model) {
   Json out = {{"type", type}, {"name", name}};
   out["spectrum"] = r.spectrum.describe();
+  if (r.verticalSpectrum) out["vertical_spectrum"] = r.verticalSpectrum->describe();
   out["damping_ratio"] = r.dampingRatio;
   out["modal_combination"] = ruleName(r.rule);
   out["directional_combination"] = directionalName(r.directional);
@@ -220,13 +274,15 @@ Json spectrumJson(const std::string& type, const std::string& name,
       gamma[directionName(d)] = m.participation[d];
       mass[directionName(d)] = m.effectiveMass[d];
     }
-    modes.push_back({{"mode", j + 1},
+    Json entry = {{"mode", j + 1},
                      {"frequency_hz", m.frequencyHz},
                      {"period_s", periodOf(m)},
                      {"sa_m_s2", r.spectralAcceleration[j]},
                      {"participation", gamma},
                      {"effective_mass_kg", mass},
-                     {"description", m.description}});
+                     {"description", m.description}};
+    if (r.verticalSpectrum) entry["sa_vertical_m_s2"] = r.saOf(j, r.vertical);
+    modes.push_back(entry);
   }
   out["modes"] = modes;
   Json total = Json::object(), captured = Json::object();
@@ -241,7 +297,24 @@ Json spectrumJson(const std::string& type, const std::string& name,
   for (std::size_t i = 0; i < r.directions.size(); ++i)
     each[directionName(r.directions[i])] = peakJson(r.perDirection[i], model);
   out["per_direction"] = each;
+  Json combinations = Json::array();
+  for (const DirectionalCombination& c : r.combinations) {
+    Json entry = peakJson(c.peak, model);
+    entry["name"] = c.name;
+    Json factors = Json::object();
+    for (std::size_t i = 0; i < r.directions.size(); ++i)
+      factors[directionName(r.directions[i])] = c.factors[i];
+    entry["factors"] = factors;
+    combinations.push_back(entry);
+  }
+  out["combinations"] = combinations;
   out["combined"] = peakJson(r.combined, model);
+  // Which combination gives each combined reaction.
+  for (std::size_t i = 0; i < r.combined.reactions.size(); ++i)
+    out["combined"]["reactions"][i]["combination"] =
+        r.combinations[governingCombination(r, [i](const PeakResponse& p) {
+          return p.reactions[i].value;
+        })].name;
   out["vtu"] = spectrumVtu(fileStem(name));
   return out;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/assembly/MemberExtrema.hpp"
 #include "fem/modal/ResponseSpectrum.hpp"
 #include "problems/deck/OutputUnits.hpp"
 #include "problems/output/JsonWriter.hpp"
@@ -16,6 +17,8 @@
 namespace beamrotor {
 
 /// <stem>_spectrum_modes.csv, <stem>_spectrum_displacements.csv,
+/// <stem>_spectrum_combinations.csv (each combination of the directions: base force, largest
+/// displacements, reactions and members' largest resultants, the governing one marked),
 /// <stem>_spectrum_reactions.csv (with supports) and <stem>_spectrum_members.csv (with line
 /// elements), each table titled by its file name. The reactions table's rows are in `units`
 /// already (each names its unit: forces and moments share its columns); the other tables'
@@ -32,6 +35,19 @@ Json spectrumJson(const std::string& type, const std::string& name,
 void writeSpectrumFiles(const std::filesystem::path& dir, const ResponseSpectrumResult& r,
                         const Model& model, const std::string& stem, const std::string& caption,
                         bool charts, const OutputUnits& units);
+
+/// The largest peak of resultant `c` at the stations of `elements` (a member's).
+double memberPeak(const PeakResponse& p, const std::vector<int>& elements, ForceComponent c);
+
+/// The combination of the directions that gives the largest value of the quantity `value`
+/// reads from a peak response (the first when several tie): its index in r.combinations.
+template <class Read>
+std::size_t governingCombination(const ResponseSpectrumResult& r, Read value) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < r.combinations.size(); ++i)
+    if (value(r.combinations[i].peak) > value(r.combinations[best].peak)) best = i;
+  return best;
+}
 
 /// The name of <stem>'s VTK file of combined peak displacements.
 std::string spectrumVtu(const std::string& stem);
