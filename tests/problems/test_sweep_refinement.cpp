@@ -7,12 +7,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <iomanip>
 #include <numbers>
 #include <sstream>
 
 #include "problems/cli/PeakSummary.hpp"
 #include "problems/deck/OutputUnits.hpp"
+#include "problems/output/Output.hpp"
 #include "problems/run/Study.hpp"
 #include "problems/run/SweepRefinement.hpp"
 #include "problems/scenes/Mo10.hpp"
@@ -148,6 +151,19 @@ TEST_SUITE("sweep refinement") {
       for (int j = 0; j <= 8; ++j)
         if (listed.values[i] == 2 + 0.5 * j) coarse = std::max(coarse, listed.results[i]);
     CHECK(coarse < 0.5 * uPeak);
+
+    // sweep.csv follows the base motion's peaks, not its excitation frequencies as modes; its
+    // largest relative displacement is the refinement's quantity, value for value.
+    const auto dir = test::scratchDir("refined_base_motion");
+    writeSweepOutputs(*s.sweep, dir / "out", {ChartFormat::none});
+    const auto cells = test::csvCells(dir / "out" / "sweep.csv");
+    REQUIRE(cells.size() == 1 + s.sweep->values.size());  // names, then one row a value
+    CHECK(std::find(cells[0].begin(), cells[0].end(), "shaking.f1") == cells[0].end());
+    const std::size_t relative = test::csvColumn(cells[0], "shaking.B.relative_m_max");
+    for (std::size_t i = 0; i < listed.values.size(); ++i)
+      CHECK(std::stod(cells[1 + i][relative]) ==
+            doctest::Approx(listed.results[i]).epsilon(1e-15));
+    std::filesystem::remove_all(dir.parent_path());
   }
 
   TEST_CASE("a refinement's quantity is resolved as a check's, at reading") {
