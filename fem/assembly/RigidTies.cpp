@@ -1,6 +1,9 @@
 #include "fem/assembly/RigidTies.hpp"
 
+#include <algorithm>
 #include <complex>
+#include <functional>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -19,22 +22,63 @@ Eigen::Matrix3d crossMatrix(const Eigen::Vector3d& r) {
   return m;
 }
 
+/// A chain of ties (a follower that leads another tie) resolved: each term on a tied
+/// equation replaced by that equation's own terms, times its coefficient, until every term
+/// names an independent or constrained equation (the composition of the rigid motions; for
+/// ties of every dof, the follower's tie to the chain's first master). Equations outside
+/// chains keep their terms as they are. Throws std::invalid_argument naming a tie of a loop
+/// (`names`: each tied equation's tie).
+void resolveChains(std::vector<TiedEquation>& tied, const std::vector<std::string>& names) {
+  std::map<int, std::size_t> indexOf;
+  for (std::size_t i = 0; i < tied.size(); ++i) indexOf[tied[i].equation] = i;
+  enum class State { open, resolving, resolved };
+  std::vector<State> state(tied.size(), State::open);
+  const std::function<void(std::size_t)> resolve = [&](std::size_t i) {
+    if (state[i] == State::resolved) return;
+    if (state[i] == State::resolving)
+      throw std::invalid_argument("rigid tie '" + names[i] +
+                                  "' closes a loop of ties: a chain of ties needs a first "
+                                  "master that follows nothing");
+    state[i] = State::resolving;
+    bool chained = false;
+    for (const TieTerm& term : tied[i].terms)
+      if (const auto j = indexOf.find(term.equation); j != indexOf.end()) {
+        resolve(j->second);
+        chained = true;
+      }
+    if (chained) {
+      std::map<int, double> sum;  // by equation, so that a master reached twice adds up
+      for (const TieTerm& term : tied[i].terms) {
+        const auto j = indexOf.find(term.equation);
+        if (j == indexOf.end()) {
+          sum[term.equation] += term.coefficient;
+          continue;
+        }
+        for (const TieTerm& inner : tied[j->second].terms)
+          sum[inner.equation] += term.coefficient * inner.coefficient;
+      }
+      tied[i].terms.clear();
+      for (const auto& [equation, coefficient] : sum)
+        if (coefficient != 0) tied[i].terms.push_back({equation, coefficient});
+    }
+    state[i] = State::resolved;
+  };
+  for (std::size_t i = 0; i < tied.size(); ++i) resolve(i);
+}
+
 }  // namespace
 
 std::vector<TiedEquation> tiedEquations(const Model& model, const DofMap& dofs) {
   std::vector<TiedEquation> out;
   if (model.rigidTies().empty()) return out;
   const Eigen::VectorXd prescribed = prescribedValues(model, dofs);
-  std::set<int> slaves, masters;
-  for (const RigidTie& t : model.rigidTies()) masters.insert(t.master);
+  std::set<int> slaves;
+  std::vector<std::string> names;  // each tied equation's tie, for messages
   for (const RigidTie& t : model.rigidTies()) {
     const auto fail = [&](const std::string& why) {
       throw std::invalid_argument("rigid tie '" + t.name + "': " + why);
     };
     if (t.master == t.slave) fail("a node cannot be tied to itself");
-    if (masters.count(t.slave))
-      fail("node " + std::to_string(t.slave) +
-           " follows one node and leads another: tie every node to one master directly");
     // theta x r: the translation of a point r away from the master under its rotation.
     const Eigen::Matrix3d cross = crossMatrix(model.nodes()[t.slave] - model.nodes()[t.master]);
     for (Dof d : t.dofs) {
@@ -59,8 +103,10 @@ std::vector<TiedEquation> tiedEquations(const Model& model, const DofMap& dofs) 
       if (!isRotation(d))
         for (int k = 0; k < 3; ++k) term(kAllDofs[3 + k], cross(i, k));
       out.push_back(std::move(tied));
+      names.push_back(t.name);
     }
   }
+  resolveChains(out, names);
   return out;
 }
 
@@ -97,11 +143,25 @@ TieReduction::TieReduction(const Model& model, const DofMap& dofs)
     : tied_(tiedEquations(model, dofs)) {
   if (tied_.empty()) return;
   T_ = tieTransformation(tied_, dofs.freeCount());
+  std::map<int, const RigidTie*> tieOf;  // by follower
+  for (const RigidTie& t : model.rigidTies()) tieOf[t.slave] = &t;
   for (const RigidTie& t : model.rigidTies()) {
+    // In a chain, the arm reaches back to the first master the follower moves with as one
+    // body: past each master that follows its own master in every dof this tie ties (the
+    // loops were refused by tiedEquations).
+    int master = t.master;
+    for (auto up = tieOf.find(master); up != tieOf.end(); up = tieOf.find(master)) {
+      const std::vector<Dof>& held = up->second->dofs;
+      const bool whole = std::all_of(t.dofs.begin(), t.dofs.end(), [&](Dof d) {
+        return std::find(held.begin(), held.end(), d) != held.end();
+      });
+      if (!whole) break;
+      master = up->second->master;
+    }
     Arm arm;
-    arm.r = model.nodes()[t.slave] - model.nodes()[t.master];
+    arm.r = model.nodes()[t.slave] - model.nodes()[master];
     for (int k = 0; k < 3; ++k) {
-      const int m = dofs.equation(t.master, kAllDofs[3 + k]);
+      const int m = dofs.equation(master, kAllDofs[3 + k]);
       if (m >= 0 && !dofs.isConstrained(m)) arm.masterRotation[k] = m;
     }
     for (Dof d : t.dofs)

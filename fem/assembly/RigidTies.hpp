@@ -26,10 +26,11 @@ struct TiedEquation {
   std::vector<TieTerm> terms;
 };
 
-/// The tied equations of model's rigid ties, in tie order. Throws std::invalid_argument
-/// naming the tie when a slave dof is missing or held by a support, tied twice, or itself a
-/// master of another tie (a chain), or when its master lacks a dof the motion needs or has a
-/// support that prescribes a value other than zero.
+/// The tied equations of model's rigid ties, in tie order. A chain (a follower that leads
+/// another tie) is resolved into terms on the equations that follow nothing: the rigid
+/// motions composed. Throws std::invalid_argument naming the tie when a slave dof is missing
+/// or held by a support or tied twice, when the ties form a loop, or when its master lacks a
+/// dof the motion needs or has a support that prescribes a value other than zero.
 std::vector<TiedEquation> tiedEquations(const Model& model, const DofMap& dofs);
 
 /// T (freeCount x freeCount): the identity on the independent free equations, each tied one's
@@ -74,7 +75,8 @@ class TieReduction {
 
  private:
   /// One tie's arm: its master's rotation equations (free ones; -1 otherwise), its
-  /// follower's tied translation equations (-1 where untied) and x_s - x_m.
+  /// follower's tied translation equations (-1 where untied) and x_s - x_m; in a chain, the
+  /// master is the first one the follower moves with as one body.
   struct Arm {
     std::array<int, 3> masterRotation{-1, -1, -1};
     std::array<int, 3> followerTranslation{-1, -1, -1};

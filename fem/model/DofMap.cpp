@@ -18,15 +18,23 @@ DofMap::DofMap(const Model& model) {
   for (const auto& e : model.elements())
     for (const NodeDof& d : e->dofs()) slots_.at(d.node)[dofIndex(d.dof)] = kPresent;
   // A tie's master moves its slave: it carries every dof its slave does (a member end offset
-  // hangs a member from a joint that no element touches).
-  for (const RigidTie& t : model.rigidTies())
-    for (int k = 0; k < kDofKinds; ++k)
-      if (slots_.at(t.slave)[k] == kPresent) slots_.at(t.master)[k] = kPresent;
-  // And a slave follows its master in each tied dof the master carries (a bracket's tip that
-  // no element touches still takes a load).
-  for (const RigidTie& t : model.rigidTies())
-    for (Dof d : t.dofs)
-      if (slots_.at(t.master)[dofIndex(d)] == kPresent) slots_.at(t.slave)[dofIndex(d)] = kPresent;
+  // hangs a member from a joint that no element touches). And a slave follows its master in
+  // each tied dof the master carries (a bracket's tip that no element touches still takes a
+  // load). Repeated until nothing changes: along a chain of ties the dofs pass link by link.
+  for (bool changed = !model.rigidTies().empty(); changed;) {
+    changed = false;
+    const auto mark = [&](int node, int k) {
+      if (slots_.at(node)[k] == kPresent) return;
+      slots_[node][k] = kPresent;
+      changed = true;
+    };
+    for (const RigidTie& t : model.rigidTies())
+      for (int k = 0; k < kDofKinds; ++k)
+        if (slots_.at(t.slave)[k] == kPresent) mark(t.master, k);
+    for (const RigidTie& t : model.rigidTies())
+      for (Dof d : t.dofs)
+        if (slots_.at(t.master)[dofIndex(d)] == kPresent) mark(t.slave, dofIndex(d));
+  }
   for (const Support& s : model.supports())
     for (const PrescribedDof& p : s.dofs) {
       int& slot = slots_.at(s.node)[dofIndex(p.dof)];

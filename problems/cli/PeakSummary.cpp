@@ -1,6 +1,7 @@
 #include "problems/cli/PeakSummary.hpp"
 
 #include "problems/cli/Summary.hpp"
+#include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/deck/parse/DeckSource.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/study/ReadSweepRefinement.hpp"
@@ -18,9 +19,15 @@ void printSweepPeaks(std::ostream& out, const Study& study, const std::string& d
       << study.sweep->values.size() << " values, bracketed to " << formatNumber(refine->tolerance)
       << " of " << refine->parameter << ":";
   if (peaks.empty()) out << " none inside the range";
-  for (const auto& [value, result] : peaks)
+  // Each peak's value in the user's unit of the quantity where set, else in its own.
+  const OutputUnits::Shown shown = shownField(units, checkQuantityUnit(refine->quantity.text));
+  for (const auto& [value, result] : peaks) {
     out << (&value == &peaks.front().first ? " " : ", ") << refine->parameter << " = "
-        << valueText(value, study.sweep->unit, units) << " (" << formatNumber(result) << ")";
+        << valueText(value, study.sweep->unit, units) << " ("
+        << formatNumber(result * shown.factor);
+    if (!shown.unit.empty()) out << " " << shown.unit;
+    out << ")";
+  }
   out << "\n";
 }
 

@@ -58,25 +58,27 @@ std::string captionOf(const PreparedRun& prepared, const std::string& analysis,
 /// The deformed shape and moments under the deck's own loads (unless only its load cases load
 /// it), under each combination that governs an extreme (governingCombinations), the envelope
 /// of the moments on the frame, and up to kEnvelopeChartsUpTo members' own envelope charts.
-void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p, const fs::path& dir) {
+void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p,
+                     const StaticResult& solution, const fs::path& dir) {
   const RunResult& run = *prepared.run;
   const Model& model = *run.model;
   const AnalysisOutcome& a = *p.outcome;
   const bool planar = run.dimension == "planar";
   const auto draw = [&](const std::vector<StaticStation>& stations, const StaticExtremes& x,
-                        const std::string& what, const std::string& chart) {
+                        const NodalField& u, const std::string& what, const std::string& chart) {
     const StationsByElement byElement(stations, model.elements().size());
-    const FrameDrawing frame{&model, &byElement, &x.ranges, x.largestDisplacement.value};
+    const FrameDrawing frame{&model, &byElement, &x.ranges, x.largestDisplacement.value, &u};
     drawChart(dir,
               frameChart(captionOf(prepared, a.name, what), chart, frame, planar, prepared.units));
   };
   const StaticOutcome* statics = resultOf<StaticOutcome>(a);
   if (!statics || statics->ownLoads || p.cases.empty())
-    draw(p.stations, *p.extremes->own, "", frameShapeChart(p.stem));
+    draw(p.stations, *p.extremes->own, solution.displacement, "", frameShapeChart(p.stem));
   if (p.envelopeStations.empty()) return;
   const std::vector<CaseOutcome>& cases = casesOf(a);
   for (int k : governingCombinations(*p.envelope, planar))
-    draw(p.caseAt(k)->stations, p.extremes->cases.at(k), ", combination " + cases[k].name,
+    draw(p.caseAt(k)->stations, p.extremes->cases.at(k), p.caseAt(k)->outcome->statics.displacement,
+         ", combination " + cases[k].name,
          caseFrameChart(p.stem, k + 1));
   std::vector<std::string> names;
   for (const CaseOutcome& c : cases)
@@ -119,7 +121,7 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
     drawChart(dir, staticDiagrams(captionOf(prepared, a.name), diagramsChart(p.stem),
                                   {{&*p.fields, fieldsCsv(p.stem), ""}}, namedPointMarkers(model),
                                   kAllDiagrams, prepared.units));
-  if (charts && !p.members.empty()) drawFrameCharts(prepared, p, dir);
+  if (charts && !p.members.empty()) drawFrameCharts(prepared, p, statics, dir);
 }
 
 /// A modal analysis' files: its frequencies, shapes, one VTK file per mode and the chart.

@@ -2,8 +2,9 @@
 // shear stress of every static analysis, the frequencies of every modal analysis, the maxima
 // (largest |value| of each named history) of every transient analysis, the critical speeds,
 // smallest log decrement and onset of instability of every campbell analysis, the peak orbit
-// of each response point of every unbalance analysis, the deck's reported values and each
-// check. Read from the runs' results.json documents, so sweep.csv,
+// of each response point of every unbalance analysis, the largest transmissibility and
+// relative displacement of each point and the largest base force of every base-motion
+// analysis, the deck's reported values and each check. Read from the runs' results.json documents, so sweep.csv,
 // the sweep charts and the per-value directories report the same numbers.
 #pragma once
 

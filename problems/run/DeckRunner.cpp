@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <new>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <variant>
@@ -288,6 +289,11 @@ RunResult runDeck(const Deck& deck, RunCache* cache) {
 SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverride>& overrides,
                      const Deck& base, const SweepProgress& progress,
                      const DeckAdjustment& adjust) {
+  // `refine:` adds values where the result changes fast and around its peaks, to the deck's
+  // own sweep (a --sweep from the command line, placed at no line, is solved as given). Read
+  // before the first run, so that a bad one fails at once.
+  std::optional<DeckSweepRefinement> refine;
+  if (base.sweep->place.line > 0) refine = readSweepRefinement(source, base);
   SweepResult sweep;
   sweep.parameter = base.sweep->parameter;
   sweep.unit = bareUnitName(parameterUnit(base, sweep.parameter));
@@ -315,12 +321,7 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
     sweep.runs.push_back(runValue(sweep.values[i]));
     if (progress) progress(i + 1, total);
   }
-  // `refine:` adds values where the result changes fast and around its peaks, to the deck's
-  // own sweep (a --sweep from the command line, placed at no line, is solved as given).
-  if (base.sweep->place.line > 0)
-    if (const auto refine = readSweepRefinement(source, base);
-        refine && refine->parameter == sweep.parameter)
-      refineSweep(sweep, *refine, runValue);
+  if (refine && refine->parameter == sweep.parameter) refineSweep(sweep, *refine, runValue);
   return sweep;
 }
 

@@ -190,12 +190,25 @@ void readRigidLinks(Context& c) {
                        const Field& slave, std::vector<Dof> dofs) {
     DeckRigidLink l{name, c.point(master).name, c.point(slave).name, std::move(dofs), f.place()};
     if (l.master == l.slave) slave.fail("a point cannot follow itself");
-    for (const DeckRigidLink& other : c.deck.rigidLinks) {
+    for (const DeckRigidLink& other : c.deck.rigidLinks)
       if (other.slave == l.slave)
         slave.fail("point '" + l.slave + "' already follows '" + other.master + "' (" +
                    other.name + ")");
-      if (other.slave == l.master || other.master == l.slave)
-        slave.fail("a point may lead or follow, not both: tie every point to one master");
+    // A chain (a master that follows a master) composes its rigid motions; a loop has no
+    // first master. Each point follows at most one, so the masters form a path.
+    std::string path = "'" + l.slave + "' -> '" + l.master + "'";
+    for (std::string at = l.master;;) {
+      const auto up = std::find_if(c.deck.rigidLinks.begin(), c.deck.rigidLinks.end(),
+                                   [&](const DeckRigidLink& o) { return o.slave == at; });
+      if (up == c.deck.rigidLinks.end()) break;
+      at = up->master;
+      path += " -> '";  // piece by piece: GCC 12's false -Wrestrict
+      path += at;
+      path += "'";
+      if (at == l.slave)
+        slave.fail("the ties would form a loop (" + path +
+                   ", each point following the next): a chain of ties needs a first master "
+                   "that follows nothing");
     }
     for (Dof d : l.dofs)
       if (const DeckSupport* s = holder(c, c.point(slave), d))

@@ -8,6 +8,7 @@
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/FieldUnits.hpp"
 #include "problems/deck/study/DesignStudy.hpp"
+#include "problems/deck/study/ReadDeckContext.hpp"
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/parse/SceneFunctions.hpp"
@@ -31,23 +32,9 @@ namespace {
 
 const std::vector<std::string> kSamplingNames{"grid", "random", "latin-hypercube"};
 
-/// The reader's context for `deck` as read: its parameters and derived values defined with
-/// their units, so that study fields may use them and outputs resolve as checks do.
-struct StudyContext {
-  Deck deck;
-  reader::Context c;
-  StudyContext(const DeckSource& source, const Deck& base)
-      : deck(base), c{Field::root(*source.tree), deck, {}, {}, {}, {}, {}, {}, {}, {}, {}} {
-    auto define = [&](const std::string& name, double value) {
-      Amount a{value, {}, false};
-      for (const auto& [named, d] : deck.dimensions)
-        if (named == name) a.dimension = d;
-      c.evaluator.define(name, a);
-    };
-    for (const auto& [name, value] : deck.parameters) define(name, value);
-    for (const auto& [name, value] : deck.derived) define(name, value);
-  }
-};
+/// The reader's context for the deck as read: study fields use its parameters, and outputs
+/// resolve as checks do.
+using StudyContext = ReadDeckContext;
 
 std::vector<std::string> parameterNames(const Deck& deck) {
   std::vector<std::string> names;

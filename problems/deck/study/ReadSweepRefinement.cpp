@@ -1,6 +1,8 @@
 #include "problems/deck/study/ReadSweepRefinement.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -9,40 +11,26 @@
 #include "problems/deck/parse/Expression.hpp"
 #include "problems/deck/parse/Field.hpp"
 #include "problems/deck/parse/Suggest.hpp"
+#include "problems/deck/study/ReadDeckContext.hpp"
 
 namespace beamrotor {
 
 namespace {
 
-/// The names the quantity refers to must exist in the deck (a check's reader does the same).
-void requireNames(const Field& qf, const Quantity& q, const Deck& deck, const DeckAnalysis& a) {
-  std::vector<std::string> names;
-  const auto require = [&](const std::string& what) {
-    if (std::find(names.begin(), names.end(), q.target) == names.end())
-      qf.fail("no " + what + " named '" + q.target + "'" + didYouMean(q.target, names) + " (" +
-              joinNames(names) + ")");
-  };
-  switch (q.kind) {
-    case Quantity::Kind::reaction:
-      return reader::requireReactionTarget(deck, q, qf);
-    case Quantity::Kind::displacement:
-      for (const DeckPoint& p : deck.points) names.push_back(p.name);
-      return require("point");
-    case Quantity::Kind::historyMax:
-    case Quantity::Kind::historyMin:
-    case Quantity::Kind::historyMaxAbs:
-      for (const DeckHistory& h : a.as<TransientSpec>()->run.histories) names.push_back(h.name);
-      return require("history");
-    case Quantity::Kind::frequency:
-    case Quantity::Kind::maxStress:
-    case Quantity::Kind::maxShear:
-    case Quantity::Kind::maxMoment:
-    case Quantity::Kind::maxDisplacement:
-      return;
-    default:
-      qf.fail("a sweep refines on a reaction, a displacement, a frequency, a largest stress, "
-              "shear, moment or displacement, or a history's max, min or maxabs");
-  }
+/// An unbalance amplitude is read at a speed its analysis computes (the speeds it lists, and
+/// those the deck's checks added to them): each run of the sweep reads the deck afresh, so
+/// the refinement cannot add one.
+void requireComputedSpeed(const Field& qf, const Quantity& q, const Deck& deck,
+                          const std::string& analysis) {
+  if (q.kind != Quantity::Kind::unbalanceAmplitude) return;
+  const double w = q.rpm * std::numbers::pi / 30;  // rad/s, as the checks' speeds are added
+  for (const DeckAnalysis& a : deck.analyses)
+    if (a.name == analysis)
+      if (const RotorFamily* settings = rotorSettings(a.kind))
+        for (double s : settings->rotor.speeds)
+          if (std::abs(s - w) <= 1e-12 * std::max(1.0, w)) return;
+  qf.fail("analysis '" + analysis + "' does not compute the response at " +
+          formatNumber(q.rpm) + " rpm: add the speed to its speeds: (or a check at it)");
 }
 
 }  // namespace
@@ -54,35 +42,23 @@ std::optional<DeckSweepRefinement> readSweepRefinement(const DeckSource& source,
   const auto f = sweep->get("refine");
   if (!f || f->isNull()) return std::nullopt;
   f->allowOnly({"quantity", "analysis", "tolerance", "runs"}, "a sweep's refinement");
-  ExpressionEvaluator ev;
-  for (const auto& [name, value] : deck.parameters) ev.define(name, value);
-  for (const auto& [name, value] : deck.derived) ev.define(name, value);
+  // Resolved as a check's quantity is: any quantity a check or a study output may name.
+  const ReadDeckContext read(source, deck);
+  const ExpressionEvaluator& ev = read.c.evaluator;
 
   DeckSweepRefinement r;
   r.place = f->place();
   r.parameter = sweep->require("parameter").text();
   // 1. The analysis and the quantity it reads.
   const Field af = f->require("analysis");
-  r.analysis = af.text();
-  const DeckAnalysis* analysis = nullptr;
-  std::vector<std::string> names;
-  for (const DeckAnalysis& a : deck.analyses) {
-    if (a.name == r.analysis) analysis = &a;
-    names.push_back(a.name);
-  }
-  if (!analysis)
-    af.fail("no analysis named '" + r.analysis + "'" + didYouMean(r.analysis, names) +
-            " (analyses: " + joinNames(names) + ")");
   const Field qf = f->require("quantity");
   try {
     r.quantity = parseQuantity(qf.text());
   } catch (const std::invalid_argument& e) {
     qf.fail(e.what());
   }
-  if (!answers(analysis->kind, r.quantity))
-    qf.fail("'" + r.quantity.text + "' needs a " + defaultAnalysisType(r.quantity) +
-            " analysis; '" + r.analysis + "' is " + analysis->type());
-  requireNames(qf, r.quantity, deck, *analysis);
+  r.analysis = reader::resolveQuantity(read.c, r.quantity, qf, af, true);
+  requireComputedSpeed(qf, r.quantity, deck, r.analysis);
 
   // 2. How far and how long.
   const Field tf = f->require("tolerance");

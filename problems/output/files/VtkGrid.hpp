@@ -26,6 +26,14 @@ std::vector<const LineElement*> lineElements(const Model& model, std::vector<int
 /// (element index, section A, Iy, Iz, E).
 vtkSmartPointer<vtkUnstructuredGrid> lineGrid(const Model& model);
 
+/// One VTK_LINE per rigid tie of the model (master to follower: rigid links, member end
+/// offsets, a diaphragm's points), appended after the grid's cells, so that a warp by the
+/// displacement shows the ties moving with the solution. Every cell array gets a tuple for
+/// each (zeros; `element` -1), and the cell array `kind` tells the cells apart: 0 for a line
+/// element (or a vertex), 1 for a rigid tie (ParaView's Threshold on it shows either). Call
+/// it once the grid's own cell arrays are complete.
+void addTieCells(vtkUnstructuredGrid& grid, const Model& model);
+
 /// Columns [first, first + 3) of a nodal field as a 3-component point array.
 vtkSmartPointer<vtkDoubleArray> pointVectors(const char* name, const NodalField& field, int first);
 

@@ -266,6 +266,64 @@ std::string textColour(std::size_t i) {
   return colour(i).substr(std::string("linecolor ").size());
 }
 
+/// Each rigid tie (the first kTieLines) as a curve of its master's and its follower's places,
+/// undeformed and moved by `scale` times their translations in `u` (unmoved without `u`).
+Datablock tieLines(const std::string& name, const Model& model, const NodalField* u,
+                   double scale, const Coordinates& coordinates) {
+  Datablock block(name);
+  const auto& ties = model.rigidTies();
+  for (std::size_t i = 0; i < ties.size() && i < kTieLines; ++i) {
+    for (int node : {ties[i].master, ties[i].slave}) {
+      const Eigen::Vector3d& x = model.nodes()[node];
+      Eigen::Vector3d moved = x;
+      if (u) moved += scale * Eigen::Vector3d((*u)(node, 0), (*u)(node, 1), (*u)(node, 2));
+      block.line(coordinates.text(x) + "," + coordinates.text(moved));
+    }
+    block.endCurve();
+  }
+  return block;
+}
+
+/// The ties' datablock, or nothing without ties (a frame without them draws as before).
+std::string tieData(const Datablock& ties) {
+  return ties.empty() ? std::string() : ties.finished();
+}
+
+/// The plot clauses of the ties: undeformed (`first` columns) as grey dots, moved (`second`,
+/// when given) as orange dashes; none without ties.
+std::vector<std::string> tieClauses(const Datablock& ties, const std::string& first,
+                                    const std::string& second) {
+  if (ties.empty()) return {};
+  std::vector<std::string> out{ties.name() + " using " + first +
+                               " with lines linewidth 1 dashtype 3 linecolor rgb 'gray55'"};
+  if (!second.empty())
+    out.push_back(ties.name() + " using " + second +
+                  " with lines linewidth 1.5 dashtype 2 linecolor rgb '#c05a00'");
+  return out;
+}
+
+/// A title's note on the ties drawn ("; rigid ties dashed"), empty without ties.
+std::string tieNote(const Model& model) {
+  const std::size_t n = model.rigidTies().size();
+  if (n == 0) return {};
+  std::string note = "; rigid ties dashed";
+  if (n > kTieLines) {
+    note += " (the first ";
+    note += std::to_string(kTieLines);
+    note += " of ";
+    note += std::to_string(n);
+    note += ")";
+  }
+  return note;
+}
+
+/// `clauses` followed by `more`.
+std::vector<std::string> joined(std::vector<std::string> clauses,
+                                const std::vector<std::string>& more) {
+  clauses.insert(clauses.end(), more.begin(), more.end());
+  return clauses;
+}
+
 /// A moment to label: its value, where it is drawn and the component.
 struct MomentLabel {
   double value = 0;
@@ -315,6 +373,8 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
     }
     outline.endCurve();
   }
+
+  const Datablock ties = tieLines("$ties", model, frame.displacement, magnify, coordinates);
 
   //    The moment diagrams of the members of the largest moments, while their stations fit.
   std::vector<std::size_t> order(members.size());
@@ -376,7 +436,7 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   // 3. The panels' common set-up: equal scales on every axis.
   const PanelGrid grid = panelGrid(2, planar, planarRanges(low, high, size));
   const int width = grid.width, height = grid.height;
-  std::string data = outline.finished();
+  std::string data = outline.finished() + tieData(ties);
   for (std::size_t c = 0; c < moments.size(); ++c)
     data += diagrams[c].finished() + hatches[c].finished();
   std::ostringstream body;
@@ -391,22 +451,25 @@ ChartScript frameChart(const std::string& caption, const std::string& chartName,
   char largest[32];
   std::snprintf(largest, sizeof largest, "%.3g ", largestU * displacement.factor);
   body << "  set title " << gnuplotText("deformed shape, displacements × " + number(magnify) +
-                                        " (largest " + largest + displacement.unit + ")")
+                                        " (largest " + largest + displacement.unit + ")" +
+                                        tieNote(model))
        << "\n";
   if (model.namedNodes().size() <= kJointLabels)
     for (const auto& [name, node] : model.namedNodes())
       body << "  set label " << gnuplotText(name) << " at "
            << coordinates.text(model.nodes()[node], ", ")
            << " offset 0.6,0.6 textcolor rgb '#303030'\n";
-  body << plotOf(planar, {outline.name() + " using " + first + undeformedStyle,
-                          outline.name() + " using " + second + " with lines linewidth 2.5 " +
-                              colour(0)})
+  body << plotOf(planar, joined({outline.name() + " using " + first + undeformedStyle,
+                                 outline.name() + " using " + second +
+                                     " with lines linewidth 2.5 " + colour(0)},
+                                tieClauses(ties, first, second)))
        << "  unset label\n";
 
   // 5. Panel 2: moment diagrams across the members on their tension side, hatched, the
   //    largest |M| labelled.
-  std::vector<std::string> clauses{outline.name() + " using " + first +
-                                   " with lines linewidth 2 linecolor rgb 'gray30'"};
+  std::vector<std::string> clauses = joined(
+      {outline.name() + " using " + first + " with lines linewidth 2 linecolor rgb 'gray30'"},
+      tieClauses(ties, first, ""));
   for (std::size_t c = 0; c < moments.size(); ++c) {
     if (diagrams[c].empty()) continue;
     clauses.push_back(diagrams[c].name() + " using " + second + " with lines linewidth 2 " +
@@ -521,7 +584,8 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
 
   // 4. One panel per moment: the outline, the band hatched between its largest (red) and
   //    smallest (blue) curve, the extremes labelled with their combinations.
-  std::string data = outline.finished();
+  const Datablock ties = tieLines("$ties", model, nullptr, 0, coordinates);
+  std::string data = outline.finished() + tieData(ties);
   for (std::size_t c = 0; c < moments.size(); ++c)
     data += largest[c].finished() + smallest[c].finished() + bands[c].finished();
   const PanelGrid grid = panelGrid(int(moments.size()), planar, planarRanges(low, high, size));
@@ -553,8 +617,9 @@ ChartScript frameEnvelopeChart(const std::string& caption, const std::string& ch
     title += " over the combinations [" + moment.unit + "]: largest (red), smallest (blue)";
     title += drawnShare(drawnMembers, members.size());
     body << "  set title " << captionText(title) << "\n";
-    std::vector<std::string> clauses{outline.name() + " using " + first +
-                                     " with lines linewidth 2 linecolor rgb 'gray30'"};
+    std::vector<std::string> clauses = joined(
+        {outline.name() + " using " + first + " with lines linewidth 2 linecolor rgb 'gray30'"},
+        tieClauses(ties, first, ""));
     if (!largest[c].empty()) {
       clauses.push_back(bands[c].name() + " using " + first + ":" + second +
                         " with vectors nohead linewidth 0.6 linecolor rgb 'gray65'");
@@ -592,6 +657,7 @@ ChartScript frameShapesChart(const std::string& caption, const std::string& char
   // 2. Each shape's datablock: per member one curve of (undeformed, deformed) places.
   std::string data;
   std::vector<std::string> names;
+  std::vector<Datablock> tieBlocks;
   for (std::size_t m = 0; m < panels; ++m) {
     const NodalField shape = displayModeShape(model, modes[m].shape);
     Datablock block("$shape" + std::to_string(m + 1));
@@ -617,6 +683,10 @@ ChartScript frameShapesChart(const std::string& caption, const std::string& char
     }
     data += block.finished();
     names.push_back(block.name());
+    const Datablock ties = tieLines("$ties" + std::to_string(m + 1), model, &shape,
+                                    kShapeShare * extent.size, coordinates);
+    data += tieData(ties);
+    tieBlocks.push_back(ties);
   }
 
   // 3. The panels: up to three across, the shapes in rows.
@@ -632,16 +702,19 @@ ChartScript frameShapesChart(const std::string& caption, const std::string& char
   const std::string first = coordinates.columns(),
                     second = coordinates.columns(1 + int(coordinates.count()));
   for (std::size_t m = 0; m < panels; ++m) {
-    body << "  set title " << gnuplotText(titles[m]) << "\n";
+    body << "  set title " << gnuplotText(m == 0 ? titles[m] + tieNote(model) : titles[m])
+         << "\n";
     if (m == 0 && model.namedNodes().size() <= kJointLabels)
       for (const auto& [name, node] : model.namedNodes())
         body << "  set label " << gnuplotText(name) << " at "
              << coordinates.text(model.nodes()[node], ", ")
              << " offset 0.6,0.6 textcolor rgb '#303030'\n";
-    body << plotOf(planar, {names[m] + " using " + first +
-                                " with lines linewidth 1.5 dashtype 2 linecolor rgb 'gray55'",
-                            names[m] + " using " + second + " with lines linewidth 2.5 " +
-                                colour(m % 6)})
+    body << plotOf(planar,
+                   joined({names[m] + " using " + first +
+                               " with lines linewidth 1.5 dashtype 2 linecolor rgb 'gray55'",
+                           names[m] + " using " + second + " with lines linewidth 2.5 " +
+                               colour(m % 6)},
+                          tieClauses(tieBlocks[m], first, second)))
          << "  unset label\n";
   }
   body << "  unset multiplot\n";

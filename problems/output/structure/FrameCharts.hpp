@@ -32,14 +32,21 @@ inline constexpr std::size_t kMomentLabels = 12;
 inline constexpr std::size_t kJointLabels = 40;
 
 /// One static solution of a frame as the chart draws it: its stations (sampleStatics, by
-/// element), each member's resultant ranges (memberForceRanges, in Model::members() order)
-/// and its largest displacement (largestDisplacement).
+/// element), each member's resultant ranges (memberForceRanges, in Model::members() order),
+/// its largest displacement (largestDisplacement) and its nodal displacements (which move
+/// the rigid ties' ends; null draws them unmoved).
 struct FrameDrawing {
   const Model* model = nullptr;
   const StationsByElement* stations = nullptr;
   const std::vector<std::array<ComponentRange, 6>>* ranges = nullptr;
   double largestDisplacement = 0;
+  const NodalField* displacement = nullptr;
 };
+
+/// The rigid ties (links, end offsets, diaphragms; Model::rigidTies) are drawn on every frame
+/// chart as thin dashed lines from master to follower, moved with the solution or shape; at
+/// most kTieLines of them (the first), the title saying so.
+inline constexpr std::size_t kTieLines = 2000;
 
 /// Every frame chart draws its axes in metres and labels moments in kN m and displacements in
 /// mm, or in the user's `units` where set (OutputUnits.hpp).

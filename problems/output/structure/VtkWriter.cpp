@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "fem/assembly/Recovery.hpp"
 #include "problems/output/files/CsvTable.hpp"
@@ -108,6 +110,27 @@ vtkSmartPointer<vtkUnstructuredGrid> lineGrid(const Model& model) {
   for (vtkDoubleArray* a : {A.Get(), Iy.Get(), Iz.Get(), E.Get()}) grid->GetCellData()->AddArray(a);
   addSectionGeometry(*grid, lines);
   return grid;
+}
+
+void addTieCells(vtkUnstructuredGrid& grid, const Model& model) {
+  const vtkIdType own = grid.GetNumberOfCells();
+  const auto& ties = model.rigidTies();
+  vtkNew<vtkIntArray> kind;
+  kind->SetName("kind");
+  kind->SetNumberOfTuples(own + vtkIdType(ties.size()));
+  for (vtkIdType c = 0; c < own; ++c) kind->SetValue(c, 0);
+  vtkCellData& data = *grid.GetCellData();
+  for (const RigidTie& t : ties) {
+    const vtkIdType ends[2] = {t.master, t.slave};
+    kind->SetValue(grid.InsertNextCell(VTK_LINE, 2, ends), 1);
+    for (int a = 0; a < data.GetNumberOfArrays(); ++a) {
+      vtkDataArray& array = *data.GetArray(a);
+      const std::vector<double> none(std::size_t(array.GetNumberOfComponents()),
+                                     std::string(array.GetName()) == "element" ? -1.0 : 0.0);
+      array.InsertNextTuple(none.data());
+    }
+  }
+  data.AddArray(kind);
 }
 
 /// Columns [first, first + 3) of a nodal field as a 3-component point array.
@@ -209,6 +232,7 @@ void writeStaticVtu(const std::filesystem::path& file, const LoadedSolution& sol
     }
     grid->GetCellData()->AddArray(array);
   }
+  addTieCells(*grid, model);
   writeVtu(grid, file);
 }
 
@@ -230,6 +254,7 @@ void writeShapeVtu(const std::filesystem::path& file, const Model& model, const 
   modeValue->SetValue(0, value);
   grid->GetFieldData()->AddArray(modeNumber);
   grid->GetFieldData()->AddArray(modeValue);
+  addTieCells(*grid, model);
   writeVtu(grid, file);
 }
 
@@ -245,6 +270,7 @@ void writeFrameVtu(const std::filesystem::path& file, const Model& model, const 
   auto time = doubleArray("time", 1, 1);
   time->SetValue(0, frame.time);
   grid->GetFieldData()->AddArray(time);
+  addTieCells(*grid, model);
   writeVtu(grid, file);
 }
 

@@ -2,6 +2,8 @@
 // displacement, one CSV per member, the VTK member axes and section size, and the frame
 // chart; numbers against the closed form of problems/frame3d.yaml (see its header).
 #include <doctest/doctest.h>
+#include <Eigen/Dense>
+#include <vtkCell.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
@@ -12,6 +14,9 @@
 #include <cmath>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/parse/DeckSource.hpp"
@@ -96,5 +101,129 @@ TEST_SUITE("output") {
     CHECK(fs::exists(solved.dir / "static_frame.gp"));
     CHECK_FALSE(fs::exists(solved.dir / "static_diagrams.gp"));
     fs::remove_all(solved.dir.parent_path());
+  }
+
+  TEST_CASE("rigid ties in the VTK files and the frame charts, moving as rigid bodies") {
+    // Two clamped columns, their tops B0 and B1 a diaphragm in x-z, a beam between them on
+    // end offsets (its end arm hangs from B1, which follows B0: a chain), and a bracket tip T
+    // linked to B1 (another chain), loaded at T. Four ties: two offsets, the diaphragm's one
+    // follower and the bracket.
+    const fs::path dir = test::scratchDir("tie_outputs");
+    {
+      std::ofstream deck(dir / "ties.yaml");
+      deck << "model: {dimension: 3d}\n"
+              "materials: [{name: steel, E: 210 GPa, nu: 0.3, rho: 7850 kg/m^3}]\n"
+              "sections: [{name: bar, shape: circle, D: 100 mm}]\n"
+              "nodes:\n"
+              "  - {name: A0, at: [0, 0, 0]}\n"
+              "  - {name: A1, at: [3, 0, 0]}\n"
+              "  - {name: B0, at: [0, 3, 0]}\n"
+              "  - {name: B1, at: [3, 3, 0]}\n"
+              "  - {name: T, at: [3.6, 3.2, 0.4]}\n"
+              "members:\n"
+              "  - {name: c0, from: A0, to: B0, section: bar, elements: 2}\n"
+              "  - {name: c1, from: A1, to: B1, section: bar, elements: 2}\n"
+              "  - {name: beam, from: B0, to: B1, section: bar, elements: 2,\n"
+              "     offsets: {start: [0.1 m, 0, 0], end: [-0.1 m, 0, 0]}}\n"
+              "supports:\n"
+              "  - {name: A0, at: A0, fix: clamped}\n"
+              "  - {name: A1, at: A1, fix: clamped}\n"
+              "diaphragms: [{name: deck, master: B0, points: [B1], plane: xz}]\n"
+              "rigid_links: [{name: bracket, master: B1, slave: T}]\n"
+              "loads: [{type: point, at: T, fx: 2 kN, fy: -5 kN, fz: 3 kN}]\n"
+              "analyses: [{type: static}, {type: modal, modes: 3}]\n";
+    }
+    const test::ProcessResult run = test::runBeamrotor(
+        {"solve", (dir / "ties.yaml").string(), "--out", (dir / "out").string()});
+    CAPTURE(run.err);
+    REQUIRE(run.exitCode == 0);
+
+    // The tie cells: after the line elements, kind 1 (the elements 0), element -1, between
+    // each master and follower (by their coordinates).
+    struct Tie {
+      Eigen::Vector3d master, follower;
+      bool allDofs;
+    };
+    // In the model's order: the members' offsets, the links, the diaphragms' followers.
+    const std::vector<Tie> ties{{{0, 3, 0}, {0.1, 3, 0}, true},
+                                {{3, 3, 0}, {2.9, 3, 0}, true},
+                                {{3, 3, 0}, {3.6, 3.2, 0.4}, true},
+                                {{0, 3, 0}, {3, 3, 0}, false}};
+    for (const std::string file : {"static.vtu", "modal_mode_01.vtu"}) {
+      CAPTURE(file);
+      double worst = 0;  // the largest departure from the rigid motion, over the largest u
+      vtkNew<vtkXMLUnstructuredGridReader> reader;
+      reader->SetFileName((dir / "out" / file).string().c_str());
+      reader->Update();
+      vtkUnstructuredGrid* grid = reader->GetOutput();
+      const vtkIdType cells = grid->GetNumberOfCells();
+      REQUIRE(cells == 6 + 4);  // six elements, four ties
+      vtkDataArray* kind = grid->GetCellData()->GetArray("kind");
+      vtkDataArray* element = grid->GetCellData()->GetArray("element");
+      REQUIRE(kind);
+      REQUIRE(element);
+      for (vtkIdType c = 0; c < cells; ++c) {
+        CHECK(kind->GetTuple1(c) == (c < 6 ? 0 : 1));
+        if (c >= 6) CHECK(element->GetTuple1(c) == -1);
+      }
+      const bool modal = file != "static.vtu";
+      vtkDataArray* u = grid->GetPointData()->GetArray(modal ? "mode_shape" : "displacement");
+      vtkDataArray* theta = grid->GetPointData()->GetArray(modal ? "mode_rotation" : "rotation");
+      REQUIRE(u);
+      REQUIRE(theta);
+      double largest = 0;
+      for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(u->GetComponent(p, k)));
+      REQUIRE(largest > 0);
+      for (std::size_t t = 0; t < ties.size(); ++t) {
+        CAPTURE(t);
+        vtkCell* cell = grid->GetCell(vtkIdType(6 + t));
+        REQUIRE(cell->GetNumberOfPoints() == 2);
+        const vtkIdType m = cell->GetPointId(0), f = cell->GetPointId(1);
+        Eigen::Vector3d xm, xf, um, uf, rm, rf;
+        grid->GetPoint(m, xm.data());
+        grid->GetPoint(f, xf.data());
+        CHECK((xm - ties[t].master).norm() <= 1e-12);
+        CHECK((xf - ties[t].follower).norm() <= 1e-12);
+        for (int k = 0; k < 3; ++k) {
+          um[k] = u->GetComponent(m, k), uf[k] = u->GetComponent(f, k);
+          rm[k] = theta->GetComponent(m, k), rf[k] = theta->GetComponent(f, k);
+        }
+        // The follower's tied dofs move with the master as a rigid body: u_m + theta_m x r
+        // (all of them, or the diaphragm's ux, uz and ry); an exact elimination and Float64
+        // written: round-off, 1e-12 of the largest translation.
+        const Eigen::Vector3d rigid = um + rm.cross(xf - xm);
+        const std::vector<int> translations =
+            ties[t].allDofs ? std::vector<int>{0, 1, 2} : std::vector<int>{0, 2};
+        for (int k : translations) {
+          CHECK(std::abs(uf[k] - rigid[k]) <= 1e-12 * largest);
+          worst = std::max(worst, std::abs(uf[k] - rigid[k]) / largest);
+        }
+        const double turn = ties[t].allDofs ? (rf - rm).norm() : std::abs(rf[1] - rm[1]);
+        CHECK(turn <= 1e-12 * largest);
+        worst = std::max(worst, turn / largest);
+      }
+      MESSAGE(file << ": followers off their masters' rigid motion by " << worst
+                   << " of the largest translation");
+    }
+
+    // The charts draw the four ties (one curve of two places each) and say so.
+    for (const char* chart : {"static_frame.gp", "modal_shapes.gp"}) {
+      CAPTURE(chart);
+      const std::string text = test::fileContents(dir / "out" / chart);
+      const std::string block = std::string(chart) == "static_frame.gp" ? "$ties << EOD\n"
+                                                                          : "$ties1 << EOD\n";
+      const std::size_t start = text.find(block);
+      REQUIRE(start != std::string::npos);
+      const std::size_t end = text.find("EOD\n", start + block.size());
+      REQUIRE(end != std::string::npos);
+      const std::string data = text.substr(start + block.size(), end - start - block.size());
+      std::size_t places = 0;
+      for (std::size_t at = 0; (at = data.find('\n', at)) != std::string::npos; ++at)
+        places += at > 0 && data[at - 1] != '\n';
+      CHECK(places == 8);
+      CHECK(text.find("rigid ties dashed") != std::string::npos);
+    }
+    fs::remove_all(dir.parent_path());
   }
 }
