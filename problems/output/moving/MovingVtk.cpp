@@ -74,6 +74,7 @@ void writeMovingVtu(const std::filesystem::path& dir, const Model& model,
       lead->SetValue(0, largest ? q.envelope.max.lead : q.envelope.min.lead);
       grid->GetFieldData()->AddArray(lead);
     }
+  addTieCells(*grid, model);
   writeVtu(grid, dir / movingVtu(stem));
 }
 

@@ -52,6 +52,7 @@ void writeBaseMotionVtu(const std::filesystem::path& dir, const Model& model,
   force->SetValue(0, std::abs(p.baseForce));
   grid->GetFieldData()->AddArray(frequency);
   grid->GetFieldData()->AddArray(force);
+  addTieCells(*grid, model);
   writeVtu(grid, dir / baseMotionVtu(stem));
 }
 
