@@ -1,17 +1,25 @@
 #include "elements/TiltingPadFilm.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "elements/TurnedBearing.hpp"
 
 namespace beamrotor {
 
-bool padLoadedThroughout(const std::vector<TiltingPadPoint>& points, int pad) {
+namespace {
+
+bool loadedAt(const TiltingPadPoint& p, int pad) {
+  return pad >= 0 && pad < int(p.pads.size()) && p.pads[std::size_t(pad)].stiffness[1][1] != 0;
+}
+
+}  // namespace
+
+bool padEverLoaded(const std::vector<TiltingPadPoint>& points, int pad) {
   for (const TiltingPadPoint& p : points)
-    if (pad < 0 || pad >= int(p.pads.size()) || p.pads[std::size_t(pad)].stiffness[1][1] == 0)
-      return false;
-  return !points.empty();
+    if (loadedAt(p, pad)) return true;
+  return false;
 }
 
 TiltingPadFilm::TiltingPadFilm(int journal, int padNode,
@@ -25,11 +33,21 @@ TiltingPadFilm::TiltingPadFilm(int journal, int padNode,
       inertia_(inertia) {
   if (!points_ || points_->empty())
     throw std::invalid_argument("tilting-pad film: no operating points");
-  if (!padLoadedThroughout(*points_, pad))
+  if (!padEverLoaded(*points_, pad))
     throw std::invalid_argument("tilting-pad film: pad " + std::to_string(pad + 1) +
-                                " carries no film at some table speed");
+                                " carries no film at any table speed");
   if (!(inertia >= 0)) throw std::invalid_argument("tilting-pad film: the pad's inertia is >= 0");
   for (const TiltingPadPoint& p : *points_) speeds_.push_back(p.speed);
+  // Each point's nearest point (in the table's order) where the pad carries a film.
+  const int n = int(points_->size());
+  for (int i = 0; i < n; ++i) {
+    int best = -1;
+    for (int j = 0; j < n; ++j)
+      if (loadedAt((*points_)[std::size_t(j)], pad) &&
+          (best < 0 || std::abs(j - i) < std::abs(best - i)))
+        best = j;
+    nearestLoaded_.push_back(std::size_t(best));
+  }
 }
 
 ElementDofs TiltingPadFilm::dofs() const {
@@ -39,6 +57,14 @@ ElementDofs TiltingPadFilm::dofs() const {
 }
 
 ElementMatrix TiltingPadFilm::filmAt(std::size_t i, bool damping) const {
+  if (nearestLoaded_[i] != i) {
+    // The journal has left the pad: no film couples it. Its tilt keeps the nearest loaded
+    // point's own stiffness or damping alone, so that the equations stay regular (a
+    // relaxation of the pad's own, apart from the rotor).
+    ElementMatrix out = ElementMatrix::Zero(3, 3);
+    out(2, 2) = filmAt(nearestLoaded_[i], damping)(2, 2);
+    return out;
+  }
   const TiltingPadPoint& point = (*points_)[i];
   const PadFilmState& p = point.pads[std::size_t(pad_)];
   const double radius = point.radius;

@@ -32,8 +32,9 @@ class TiltingPadFilm : public SpeedDependentElement {
   /// Pad `pad` (index into each point's pads) of the operating points `points` (ascending
   /// speeds), between `journal`'s uy, uz and `padNode`'s rx; the bearing's axes turned by
   /// `loadAngle` (rad) about +x; `inertia` the pad's polar moment about its pivot (kg m^2,
-  /// >= 0). Throws std::invalid_argument for no points, an index out of range or a pad that
-  /// carries no film at one of the points.
+  /// >= 0). At a point where the journal has left the pad nothing couples it; its tilt keeps
+  /// the nearest loaded point's own stiffness and damping. Throws std::invalid_argument for
+  /// no points or a pad that carries no film at any of them.
   TiltingPadFilm(int journal, int padNode, std::shared_ptr<const std::vector<TiltingPadPoint>> points,
                  int pad, double loadAngle, double inertia);
 
@@ -58,11 +59,12 @@ class TiltingPadFilm : public SpeedDependentElement {
   int journal_, padNode_;
   std::shared_ptr<const std::vector<TiltingPadPoint>> points_;
   std::vector<double> speeds_;
+  std::vector<std::size_t> nearestLoaded_;  ///< per point, the nearest one loading the pad
   int pad_;
   double loadAngle_, inertia_;
 };
 
-/// Whether pad `pad` carries a film at every one of `points`: the pads the full model keeps.
-bool padLoadedThroughout(const std::vector<TiltingPadPoint>& points, int pad);
+/// Whether pad `pad` carries a film at one of `points` at least: the pads the full model keeps.
+bool padEverLoaded(const std::vector<TiltingPadPoint>& points, int pad);
 
 }  // namespace beamrotor

@@ -64,7 +64,7 @@ inline int addPadTilts(Model& model, std::array<int, 2> journals, const TiltingP
   int films = 0;
   for (int journal : journals)
     for (int pad = 0; pad < int(point.pads.size()); ++pad) {
-      if (!padLoadedThroughout(*points, pad)) continue;
+      if (!padEverLoaded(*points, pad)) continue;
       const int node = model.addNode(model.nodes()[journal]);
       model.add<TiltingPadFilm>(journal, node, points, pad, 0.0, inertia);
       ++films;

@@ -56,7 +56,7 @@ struct DeckBearing {
   /// `whirl_coefficients: each-mode` (eachModesWhirl); by default the synchronous set.
   std::vector<TiltingPadPoint> padPoints;
   bool eachModesWhirl = false;
-  /// Tilting pads with `pad_tilts: dofs` (or {inertia: ...}): each pad loaded at every table
+  /// Tilting pads with `pad_tilts: dofs` (or {inertia: ...}): each pad loaded at some table
   /// speed keeps its tilt as a dof of the rotor's (elements/TiltingPadFilm.hpp), the pad's
   /// polar moment of inertia about its pivot padInertia (kg m^2); unset: condensed.
   std::optional<double> padInertia;
