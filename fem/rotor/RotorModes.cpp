@@ -194,6 +194,16 @@ double bearingEnergyOf(const RotorSystem& system, const SparseMatrix& K, std::co
   return own + rotor > 0 ? own / (own + rotor) : 0.0;
 }
 
+/// The eigenvalues the bearings' own dofs add: one for a dof without mass (a massless pad's
+/// first-order relaxation), two for one with mass.
+int ownEigenvalues(const RotorSystem& system) {
+  if (!system.hasBearingOwnDofs()) return 0;
+  int count = 0;
+  for (int eq = 0; eq < system.size(); ++eq)
+    if (system.isBearingOwn(eq)) count += system.mass().coeff(eq, eq) > 0 ? 2 : 1;
+  return count;
+}
+
 ComplexNodalField toComplexNodalField(const DofMap& dofs, int nodeCount,
                                       const Eigen::VectorXcd& q) {
   ComplexNodalField field = ComplexNodalField::Zero(nodeCount, kDofKinds);
@@ -223,8 +233,9 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
   // with the pad's inertia): ask for those as well, reported apart.
   const int own = system.bearingOwnCount();
   const int asked = options.modes + own;
-  const QuadraticEigenpairs pairs =
-      solver.solve(K, D, system.mass(), 2 * asked, options.shift, options.method);
+  const QuadraticEigenpairs pairs = solver.solve(K, D, system.mass(),
+                                                 2 * options.modes + ownEigenvalues(system),
+                                                 options.shift, options.method);
   result.time.solve = clock.lap();
 
   // 3. One mode per conjugate pair, per real eigenvalue and per real mirror pair.
