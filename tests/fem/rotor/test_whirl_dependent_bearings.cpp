@@ -175,7 +175,9 @@ TEST_SUITE("rotor") {
     const PadModels p;
     const double speed = p.speed;
     const RotorModesResult rc = solveRotorModes(p.condensed, speed, rotorOptions(8));
-    const RotorModesResult rf = solveRotorModes(p.full, speed, rotorOptions(8));
+    // Twelve of the full model's: its heavily damped modes and the pads' lie among the eight
+    // nearest 0 as well.
+    const RotorModesResult rf = solveRotorModes(p.full, speed, rotorOptions(12));
     std::vector<RotorMode> everyFull = rf.modes;  // the rotor's modes and the pads'
     everyFull.insert(everyFull.end(), rf.bearingModes.begin(), rf.bearingModes.end());
     const RotorModesResult sync = solveRotorModes(p.synchronous, speed, rotorOptions(8));
@@ -196,7 +198,7 @@ TEST_SUITE("rotor") {
         // Found: as in the bounce pair's case above, 1e-8 keeps a margin over the iteration's
         // 1e-10.
         ++found;
-        CHECK(nearestTo(lambda, rf.modes) <= 1e-8 * std::abs(lambda));
+        CHECK(nearestTo(lambda, everyFull) <= 1e-8 * std::abs(lambda));
       }
     }
     CHECK(found == 5);
