@@ -249,6 +249,7 @@ TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, 
   out.speed = speed;
   out.eccentricity = u.norm() * cp / j.clearance;
   out.attitude = u.norm() > 0 ? std::remainder(std::atan2(u.y(), u.x()) - kPiPads, 2 * kPiPads) : 0;
+  out.radius = j.diameter / 2;
   out.stiffnessScale = forceScale / cp;
   out.dampingScale = forceScale / (cp * speed);
   for (std::size_t k = 0; k < pivots.size(); ++k) {

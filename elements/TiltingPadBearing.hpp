@@ -69,6 +69,7 @@ struct TiltingPadPoint {
   double eccentricity = 0;  ///< |u| c_p / c_b
   double attitude = 0;      ///< rad from the load line to the journal's centre, sense of rotation
   double speed = 0;         ///< rad/s
+  double radius = 0;        ///< the journal's radius R (m)
   std::vector<PadFilmState> pads;
   double stiffnessScale = 0, dampingScale = 0;  ///< mu Omega R^3 L / c_p^3, mu R^3 L / c_p^3
   BearingCoefficients synchronous;              ///< condensed at whirl = spin, bearing's axes

@@ -39,6 +39,11 @@ class SpeedDependentElement : public Element {
     return {stiffnessAt(speed), dampingAt(speed)};
   }
 
+  /// How many of dofs()' last entries are the element's own: dofs of a bearing's inner parts
+  /// (a tilting pad's tilt) that no shaft element carries. The rotor analyses report the modes
+  /// whose energy lies there as the bearing's own, apart from the rotor's.
+  virtual int ownDofs() const { return 0; }
+
   /// At rest (Omega = 0): what statics and the non-rotating modal analysis use.
   ElementMatrix stiffness() const override { return stiffnessAt(0); }
   ElementMatrix damping() const override { return dampingAt(0); }

@@ -172,6 +172,38 @@ std::vector<int> modesAtOwnWhirl(const RotorSystem& system, double speed,
   return iterations;
 }
 
+/// The share of q's energy in the bearings' own dofs (RotorMode::bearingEnergy): the
+/// diagonal blocks of K's symmetric part and of |lambda|^2 M, own dofs against the rotor's.
+double bearingEnergyOf(const RotorSystem& system, const SparseMatrix& K, std::complex<double> lambda,
+                       const Eigen::VectorXcd& q) {
+  const SparseMatrix& M = system.mass();
+  const double l2 = std::norm(lambda);
+  double own = 0, rotor = 0;
+  for (const SparseMatrix* A : {&K, &M})
+    for (int col = 0; col < A->outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(*A, col); it; ++it) {
+        const int row = int(it.row());
+        const bool ownRow = system.isBearingOwn(row);
+        if (ownRow != system.isBearingOwn(col)) continue;  // the coupling blocks
+        const double e = (A == &M ? l2 : 1.0) * it.value() *
+                         (std::conj(q[row]) * q[col]).real();  // symmetric part's share
+        (ownRow ? own : rotor) += e;
+      }
+  own = std::abs(own);
+  rotor = std::abs(rotor);
+  return own + rotor > 0 ? own / (own + rotor) : 0.0;
+}
+
+/// The eigenvalues the bearings' own dofs add: one for a dof without mass (a massless pad's
+/// first-order relaxation), two for one with mass.
+int ownEigenvalues(const RotorSystem& system) {
+  if (!system.hasBearingOwnDofs()) return 0;
+  int count = 0;
+  for (int eq = 0; eq < system.size(); ++eq)
+    if (system.isBearingOwn(eq)) count += system.mass().coeff(eq, eq) > 0 ? 2 : 1;
+  return count;
+}
+
 ComplexNodalField toComplexNodalField(const DofMap& dofs, int nodeCount,
                                       const Eigen::VectorXcd& q) {
   ComplexNodalField field = ComplexNodalField::Zero(nodeCount, kDofKinds);
@@ -196,16 +228,32 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
   const SparseMatrix D = system.damping(speed) + speed * system.gyroscopic();
   result.time.assembly = clock.lap();
 
-  // 2. Eigenpairs: a mode is a conjugate pair, so ask for two eigenvalues per mode.
-  const QuadraticEigenpairs pairs =
-      solver.solve(K, D, system.mass(), 2 * options.modes, options.shift, options.method);
+  // 2. Eigenpairs: a mode is a conjugate pair, so ask for two eigenvalues per mode. Each of
+  // the bearings' own dofs (a pad's tilt) brings a mode of its own (a relaxation, or a pair
+  // with the pad's inertia): ask for those as well, reported apart.
+  // The pads' modes may be pairs as well (energy mostly in the tilts, yet oscillating): when
+  // those leave fewer of the rotor's modes than asked, solve again with a pair per tilt.
+  const int own = system.bearingOwnCount();
+  const int asked = options.modes + own;
+  int wanted = 2 * options.modes + ownEigenvalues(system);
+  QuadraticEigenpairs pairs;
+  for (;;) {
+    pairs = solver.solve(K, D, system.mass(), wanted, options.shift, options.method);
+    if (own == 0 || wanted >= 2 * asked) break;
+    const std::vector<std::complex<double>> found(pairs.values.begin(), pairs.values.end());
+    int rotorModes = 0;
+    for (int k : onePerMode(found, asked))
+      if (bearingEnergyOf(system, K, found[k], pairs.vectors.col(k)) <= 0.5) ++rotorModes;
+    if (rotorModes >= options.modes) break;
+    wanted = 2 * asked;
+  }
   result.time.solve = clock.lap();
 
   // 3. One mode per conjugate pair, per real eigenvalue and per real mirror pair.
   const DofMap& dofs = system.dofs();
   const int nodes = system.model().nodeCount();
   const std::vector<std::complex<double>> values(pairs.values.begin(), pairs.values.end());
-  const std::vector<int> kept = onePerMode(values, options.modes);
+  const std::vector<int> kept = onePerMode(values, asked);
   std::vector<std::complex<double>> lambdas;
   Eigen::MatrixXcd vectors(system.size(), kept.size());
   for (int m = 0; m < int(kept.size()); ++m) {
@@ -226,6 +274,7 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
   double nearest = std::numeric_limits<double>::infinity();
   for (const auto& lambda : lambdas) nearest = std::min(nearest, std::abs(lambda - options.shift));
   result.vectors.resize(system.size(), kept.size());
+  int rotorModes = 0;
   for (int m = 0; m < int(kept.size()); ++m) {
     std::complex<double> lambda = lambdas[m];
     Eigen::VectorXcd q = vectors.col(m);
@@ -239,10 +288,17 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
     const double d =
         nearest > 0 ? std::max(1.0, std::abs(lambda - options.shift) / nearest) : 1.0;
     mode.roundOff = kRoundOffLinear * d + kRoundOffSquare * d * d;
+    if (own > 0) mode.bearingEnergy = bearingEnergyOf(system, K, lambda, q);
     if (shapes) mode.shape = toComplexNodalField(dofs, nodes, q);
-    result.vectors.col(m) = q / q.norm();
+    if (mode.bearingEnergy > 0.5) {
+      result.bearingModes.push_back(std::move(mode));
+      continue;
+    }
+    if (rotorModes == options.modes) continue;
+    result.vectors.col(rotorModes++) = q / q.norm();
     result.modes.push_back(std::move(mode));
   }
+  result.vectors.conservativeResize(Eigen::NoChange, rotorModes);
   result.size = system.systemSize(pairs.factorEntries);
   result.time.total = total.lap();
   return result;

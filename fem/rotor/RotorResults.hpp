@@ -67,6 +67,11 @@ struct RotorMode {
   /// Eigen-solutions that found this mode with whirl-dependent bearings at its own eigenvalue
   /// (fem/rotor/WhirlIteration.hpp); 0 with the synchronous set.
   int whirlIterations = 0;
+  /// The share of the mode's energy in the bearings' own dofs (a tilting pad's tilt,
+  /// SpeedDependentElement::ownDofs): q_o^H (K_oo + |lambda|^2 M_oo) q_o over the same sum
+  /// over every block (K's symmetric part; the blocks of the bearings' own dofs and of the
+  /// rotor's). 0 without such dofs; above 0.5 the mode is the bearings' (a pad mode).
+  double bearingEnergy = 0;
 };
 
 /// Which bearing coefficients the modes were found with: the synchronous set (whirl = spin),
@@ -86,9 +91,17 @@ struct WhirlCoefficientsUsed {
   void add(const WhirlCoefficientsUsed& other, std::size_t speed);
 };
 
+/// Where a mode's energy lies: "rotor", or "pads" (RotorMode::bearingEnergy above 0.5).
+inline const char* energyIn(const RotorMode& mode) {
+  return mode.bearingEnergy > 0.5 ? "pads" : "rotor";
+}
+
 struct RotorModesResult {
   double speed = 0;              ///< spin speed Omega (rad/s)
   std::vector<RotorMode> modes;  ///< nearest the shift first (lowest omega_n for shift 0)
+  /// Modes whose energy lies mostly in the bearings' own dofs (tilting pads kept as dofs):
+  /// found beside `modes` (one per own dof asked for in addition), not counted among them.
+  std::vector<RotorMode> bearingModes;
   /// The same modes as free-dof vectors (DofMap order, columns as modes, unit norm), for
   /// correlation (MAC) and post-processing.
   Eigen::MatrixXcd vectors;

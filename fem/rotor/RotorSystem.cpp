@@ -55,6 +55,11 @@ RotorSystem::RotorSystem(const Model& model, ProportionalDamping damping)
                                                                     : -1);
       }
     whirlDependent_ = whirlDependent_ || sd->dependsOnWhirl();
+    for (int a = n - sd->ownDofs(); a < n; ++a)
+      if (const int eq = dofs_.equation(d[a]); dofs_.isFree(eq)) {
+        if (bearingOwn_.empty()) bearingOwn_.assign(std::size_t(size()), false);
+        bearingOwn_[std::size_t(eq)] = true;
+      }
     terms_.push_back(std::move(term));
   }
   if (proportional_.internal != 0) assembleShaft();

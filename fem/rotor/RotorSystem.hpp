@@ -6,6 +6,7 @@
 // sparse factorisation's symbolic analysis can be reused across speeds.
 #pragma once
 
+#include <algorithm>
 #include <complex>
 #include <vector>
 
@@ -67,6 +68,11 @@ class RotorSystem {
   /// sees. The same as the speed's own without whirl-dependent elements.
   SparseMatrix stiffness(double speed, std::complex<double> lambda) const;
   SparseMatrix damping(double speed, std::complex<double> lambda) const;
+  /// Whether free equation eq is a bearing's own dof (SpeedDependentElement::ownDofs, a
+  /// tilting pad's tilt), not the rotor's.
+  bool isBearingOwn(int eq) const { return !bearingOwn_.empty() && bearingOwn_[std::size_t(eq)]; }
+  bool hasBearingOwnDofs() const { return !bearingOwn_.empty(); }
+  int bearingOwnCount() const { return int(std::count(bearingOwn_.begin(), bearingOwn_.end(), true)); }
   /// Sizes for the results (factorEntries from the caller's factorisation).
   SystemSize systemSize(double factorEntries) const;
 
@@ -97,6 +103,7 @@ class RotorSystem {
   SparseMatrix crossCoupling_;        ///< setCrossCoupling's entries; empty without
   std::vector<SpeedTerm> terms_;
   bool whirlDependent_ = false;
+  std::vector<bool> bearingOwn_;  ///< per free equation; empty when no element has own dofs
 };
 
 }  // namespace beamrotor

@@ -125,6 +125,15 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesRes
         << (std::isfinite(m.logDecrement) ? formatValue(m.logDecrement) : std::string("inf"))
         << "  " << whirlName(m.whirl) << "\n";
   }
+  // The pads' own modes (tilting pads kept as dofs), apart: their eigenvalue and the share of
+  // their energy in the pads' tilts.
+  for (std::size_t i = 0; i < r.bearingModes.size(); ++i) {
+    const RotorMode& m = r.bearingModes[i];
+    out << "    pad mode " << i + 1 << "  eigenvalue " << formatValue(m.eigenvalue.real());
+    if (m.eigenvalue.imag() != 0) out << " + " << formatValue(m.eigenvalue.imag()) << "i";
+    out << " 1/s  damping " << formatValue(m.dampingRatio) << "  energy in the pads "
+        << formatValue(m.bearingEnergy) << "\n";
+  }
 }
 
 void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutcome& r,

@@ -41,7 +41,11 @@ Deck withJournalLoads(const Deck& deck) {
   //    Pinned, a bearing carries the same load with or without a pedestal in series: the
   //    pedestals are left out, so that every bearing is one the pinning finds.
   Deck placeholder = deck;
-  for (DeckBearing& b : placeholder.rotor.bearings) b.pedestal.reset();
+  //    So are the pads' tilts (each bearing then one element on its journal).
+  for (DeckBearing& b : placeholder.rotor.bearings) {
+    b.pedestal.reset();
+    b.padInertia.reset();
+  }
   for (DeckBearing& b : placeholder.rotor.bearings)
     if (waitsForLoad(b)) {
       b.speeds.clear();

@@ -11,6 +11,7 @@
 #include "elements/BearingOnPedestal.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/Spring.hpp"
+#include "elements/TiltingPadFilm.hpp"
 #include "elements/TiltingPadWhirl.hpp"
 #include "elements/TurnedBearing.hpp"
 #include "elements/WhirlTable.hpp"
@@ -309,6 +310,20 @@ void addPedestal(const Deck& deck, const DeckBearing& b, std::vector<BearingCoef
   bearing.setWhirlCoefficients(whirlCoefficientsOf(b));
 }
 
+/// A tilting-pad bearing with its pads' tilts kept: a node per pad loaded at some table speed
+/// (at the journal, its rx the pad's tilt, every other dof absent) and that pad's film between
+/// journal and pad (elements/TiltingPadFilm.hpp); no condensed Bearing element.
+void addPadTilts(const DeckBearing& b, Model* model) {
+  const int journal = model->node(b.point);
+  const Eigen::Vector3d x = model->nodes()[journal];
+  auto points = std::make_shared<const std::vector<TiltingPadPoint>>(b.padPoints);
+  for (int pad = 0; pad < int(b.padPoints.front().pads.size()); ++pad) {
+    if (!padEverLoaded(*points, pad)) continue;
+    const int node = model->addNode(x);
+    model->add<TiltingPadFilm>(journal, node, points, pad, b.loadAngle, *b.padInertia);
+  }
+}
+
 void addAttachments(const Deck& deck, Model* model) {
   for (const DeckSupport& s : deck.supports)
     at(deck, s.place, [&] {
@@ -348,6 +363,8 @@ void addAttachments(const Deck& deck, Model* model) {
         table.push_back(turnedCoefficients(row, b.loadAngle));
       if (b.pedestal)  // the bearing acts between journal and housing: its force as it is
         addPedestal(deck, b, std::move(table), model);
+      else if (b.padInertia && !b.padPoints.empty())
+        addPadTilts(b, model);
       else if (b.speeds.empty())
         model->add<Bearing>(model->node(b.point), table.front());
       else

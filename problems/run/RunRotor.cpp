@@ -19,6 +19,7 @@
 #include "elements/FiniteJournalFilm.hpp"
 #include "elements/ShortJournalFilm.hpp"
 #include "elements/Spring.hpp"
+#include "elements/TiltingPadFilm.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
@@ -82,13 +83,16 @@ RotorOptions optionsOf(const Deck& deck, const RotorFamily& s) {
   return o;
 }
 
-/// Grounded stiffness on uy at a node at rest: springs on uy and bearings' kyy (N/m).
+/// Grounded stiffness on uy at a node at rest: springs on uy and bearings' kyy (N/m), a
+/// bearing whose pads are dofs as its table would give it.
 double groundedStiffness(const Model& model, int node) {
   double k = 0;
   for (const auto& e : model.elements()) {
     const auto dofs = e->dofs();
     if (dofs.empty() || dofs[0].node != node) continue;
     if (const auto* b = dynamic_cast<const Bearing*>(e.get())) k += b->coefficientsAt(0).kyy;
+    if (const auto* p = dynamic_cast<const TiltingPadFilm*>(e.get()))
+      k += p->synchronousAt(0).kyy;  // a pad's share, its tilt condensed as the table's
     if (dynamic_cast<const Spring*>(e.get()) && dofs.size() == 1 && dofs[0].dof == Dof::uy)
       k += e->stiffness()(0, 0);
   }

@@ -7,7 +7,9 @@
 //  - bad pads named at their field.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <numbers>
 
 #include "elements/TiltingPadBearing.hpp"
@@ -91,5 +93,71 @@ bearings:
                                       "from_rpm: 3000, to_rpm: 6000, steps: 1}]\n",
                                   "pads.yaml");
     REQUIRE(s.run);
+  }
+
+  TEST_CASE("tilting-pad deck: the pads' tilts as dofs") {
+    auto deckWith = [](const std::string& choice, const std::string& analysis = "") {
+      return std::string(R"(title: tilting pads as dofs
+model: {dimension: lateral}
+materials: [{name: steel, E: 2.1e11, nu: 0.3, rho: 7850}]
+sections: [{name: shaft, shape: circle, D: 100 mm}]
+segments: [{name: shaft, length: 0.4, section: shaft, elements: 4}]
+masses: [{name: disk, at: end, m: 50}]
+bearings:
+  - {name: A, at: start, type: tilting-pad, D: 100 mm, L: 50 mm, c: 100 um, mu: 0.02 Pa s,
+     from_rpm: 3000, to_rpm: 6000, steps: 1, load: 5000 N, arc: 80 deg, preload: 0.3, pads: 4,
+     orientation: load-between-pads)") +
+             choice + R"(}
+  - {name: B, at: end, kxx: 1e8, kyy: 1e8, cxx: 1e3, cyy: 1e3}
+analyses: [{type: rotor, name: r, speed_rpm: 3000, modes: 2})" +
+             analysis + "]\n";
+    };
+    // At a table speed the full model is exact; where the per-mode iteration settles it lands
+    // on the full model's eigenvalues (tests/fem/rotor/test_whirl_dependent_bearings.cpp): the
+    // two agree to the iteration's tolerance (1e-10 of lambda), 1e-8 with a margin.
+    const Study each = solveDeckText(deckWith(", whirl_coefficients: each-mode"), "pads.yaml");
+    const Study dofs = solveDeckText(deckWith(", pad_tilts: dofs"), "pads.yaml");
+    const Study heavy =
+        solveDeckText(deckWith(", pad_tilts: {inertia: 20000 kg*mm^2}"), "pads.yaml");
+    const RotorModesResult& a = *resultOf<RotorModesResult>(each.run->analyses.at(0));
+    const RotorModesResult& b = *resultOf<RotorModesResult>(dofs.run->analyses.at(0));
+    const RotorModesResult& h = *resultOf<RotorModesResult>(heavy.run->analyses.at(0));
+    REQUIRE(b.modes.size() == 2);
+    CHECK_FALSE(b.coefficients.atOwnWhirl);
+    std::vector<RotorMode> full = b.modes;  // the rotor's modes and the pads'
+    full.insert(full.end(), b.bearingModes.begin(), b.bearingModes.end());
+    int settled = 0;
+    for (const RotorMode& m : a.modes) {
+      if (m.whirlIterations == 0) continue;
+      bool named = false;  // left at its synchronous eigenvalue, named in a warning
+      for (const auto& u : a.coefficients.unsettled)
+        named = named || std::abs(u.frequencyHz - m.dampedFrequencyHz) < 1e-12;
+      if (named) continue;
+      CAPTURE(m.eigenvalue);
+      double nearest = 1e300;
+      for (const RotorMode& f : full) nearest = std::min(nearest, std::abs(f.eigenvalue - m.eigenvalue));
+      CHECK(nearest <= 1e-8 * std::abs(m.eigenvalue));
+      ++settled;
+    }
+    CHECK(settled >= 1);
+    // 0.02 kg m^2 pads move the modes (measured below 1e-3 relative).
+    REQUIRE(h.modes.size() == 2);
+    CHECK(std::abs(h.modes[0].eigenvalue - b.modes[0].eigenvalue) > 0);
+    CHECK_FALSE(b.bearingModes.empty());
+    for (const RotorMode& m : b.bearingModes) CHECK(std::string(energyIn(m)) == "pads");
+    // Refused where the pads cannot be dofs, named at the field.
+    const DeckError both =
+        readingError(deckWith(", whirl_coefficients: each-mode, pad_tilts: dofs"), "pads.yaml");
+    CHECK(both.place().line == 10);
+    CHECK(both.message().find("each-mode") != std::string::npos);
+    const DeckError bad = readingError(deckWith(", pad_tilts: full"), "pads.yaml");
+    CHECK(bad.place().line == 10);
+    CHECK(bad.message().find("condensed") != std::string::npos);
+    const DeckError map = readingError(
+        deckWith(", pad_tilts: dofs",
+                 ", {type: critical-speed-map, name: m, from_k: 1e7, to_k: 1e9, points: 3, "
+                 "critical_speeds: 1}"),
+        "pads.yaml");
+    CHECK(map.message().find("pad_tilts: condensed") != std::string::npos);
   }
 }

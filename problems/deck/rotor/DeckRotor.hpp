@@ -56,6 +56,10 @@ struct DeckBearing {
   /// `whirl_coefficients: each-mode` (eachModesWhirl); by default the synchronous set.
   std::vector<TiltingPadPoint> padPoints;
   bool eachModesWhirl = false;
+  /// Tilting pads with `pad_tilts: dofs` (or {inertia: ...}): each pad loaded at some table
+  /// speed keeps its tilt as a dof of the rotor's (elements/TiltingPadFilm.hpp), the pad's
+  /// polar moment of inertia about its pivot padInertia (kg m^2); unset: condensed.
+  std::optional<double> padInertia;
   /// A plain journal with `load: gravity`: its load is the rotor's weight share on pinned
   /// bearings, found when the deck runs (journal->load and table are empty until then).
   bool loadFromGravity = false;

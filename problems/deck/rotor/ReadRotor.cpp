@@ -104,6 +104,20 @@ TiltingPads readTiltingPads(const Context& c, const Field& f) {
   return pads;
 }
 
+/// pad_tilts: condensed (default: onto the journal, the coefficient table), dofs (each loaded
+/// pad's tilt a dof of the rotor's, massless pads) or {inertia: I} (the same, each pad's polar
+/// moment of inertia about its pivot, kg m^2): the pads' inertia, or nothing when condensed.
+std::optional<double> readPadTilts(const Context& c, const Field& f) {
+  if (f.isScalar()) {
+    if (f.choice({"condensed", "dofs"}) == "condensed") return std::nullopt;
+    return 0.0;
+  }
+  if (!f.isMap())
+    f.fail("expected condensed, dofs or {inertia: KG_M2}, got " + f.describe());
+  f.allowOnly({"inertia"}, "pad_tilts");
+  return f.require("inertia").nonNegative(c.evaluator, dim::inertia);
+}
+
 /// A plain journal or tilting-pad bearing: geometry, oil and load, and the speeds of its
 /// coefficient table. The short-bearing theory (elements/PlainJournalBearing.hpp) or the finite
 /// film (elements/FiniteJournalBearing.hpp, `model: finite`) gives a plain journal's
@@ -117,7 +131,7 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
   if (tilting)
     f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
                  "from_rpm", "to_rpm", "steps", "grid", "pads", "arc", "offset", "preload",
-                 "orientation", "whirl_coefficients"},
+                 "orientation", "whirl_coefficients", "pad_tilts"},
                 "a tilting-pad bearing");
   else
     f.allowOnly({"name", "at", "type", "D", "L", "c", "mu", "load", "load_angle", "pedestal",
@@ -148,6 +162,12 @@ void readPlainJournal(const Context& c, const Field& f, const Field& type, DeckB
     b.tiltingPads = readTiltingPads(c, f);
     if (auto w = f.get("whirl_coefficients"))
       b.eachModesWhirl = w->choice({"synchronous", "each-mode"}) == "each-mode";
+    if (auto t = f.get("pad_tilts")) {
+      b.padInertia = readPadTilts(c, *t);
+      if (b.padInertia && b.eachModesWhirl)
+        t->fail("the pads' tilts kept as dofs give every mode its own frequency already: drop "
+                "whirl_coefficients: each-mode");
+    }
   }
   auto grid = f.get("grid");
   if (grid && b.journalModel != Model::finite && !tilting)
@@ -285,6 +305,10 @@ void readBearings(Context& c) {
     if (auto pedestal = f.get("pedestal")) b.pedestal = readPedestal(c, *pedestal);
     if (auto type = f.get("type")) {
       readPlainJournal(c, f, *type, b);
+      if (b.pedestal && b.padInertia)
+        f.require("pad_tilts")
+            .fail("the pads' tilts as dofs act against the ground: drop the pedestal or use "
+                  "pad_tilts: condensed");
     } else if (auto table = f.get("table")) {
       f.allowOnly({"name", "at", "table", "load_angle", "pedestal"}, "a tabulated bearing");
       const std::vector<Field> rows = table->items();
@@ -401,11 +425,23 @@ void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
 }
 
 /// Fails at analysis entry f when a bearing stands on a pedestal: `why` the analysis cannot.
+/// Fails at analysis entry f when a bearing keeps its pads' tilts as dofs: `why` the analysis
+/// needs each bearing as one element on the journal.
+void refusePadTilts(const Context& c, const Field& f, const std::string& why) {
+  for (const DeckBearing& b : c.deck.rotor.bearings)
+    if (b.padInertia)
+      f.fail(why + "; bearing '" + b.name +
+             "' keeps its pads' tilts as dofs (pad_tilts: dofs): use pad_tilts: condensed "
+             "for this analysis");
+}
+
+/// Fails at analysis entry f when a bearing stands on a pedestal: `why` the analysis cannot.
 void refusePedestals(const Context& c, const Field& f, const std::string& why) {
   for (const DeckBearing& b : c.deck.rotor.bearings)
     if (b.pedestal)
       f.fail(why + " on the ground; bearing '" + b.name +
              "' stands on a pedestal (remove it for this analysis)");
+  refusePadTilts(c, f, why);
 }
 
 /// critical-speed-map: from_k, to_k (N/m), points (log-spaced, ends included) and
@@ -824,6 +860,8 @@ void LevelOneSpec::read(const reader::Context& c, const Field& f) {
   f.allowOnly({"type", "name", "speed_rpm", "max_continuous_rpm", "average_gas_density",
                "station", "stages", "modes", "shift"},
               "a level1-stability analysis");
+  reader::refusePadTilts(c, f, "a level1-stability analysis pins the bearings for its critical "
+                               "speed ratio");
   rotor.speed = f.require("speed_rpm").positive(c.evaluator, kRpmField) * reader::kRadPerRpm;
   rotor.maximumContinuousSpeed = rotor.speed;
   if (auto m = f.get("max_continuous_rpm"))

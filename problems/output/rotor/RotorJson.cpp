@@ -47,13 +47,26 @@ Json modesJson(const std::string& stem, const RotorModesResult& r) {
                      {"whirl", std::string(whirlName(mode.whirl))},
                      {"whirl_ratio", mode.whirlRatio},
                      {"eigenvalue", {mode.eigenvalue.real(), mode.eigenvalue.imag()}},
-                     {"whirl_iterations", mode.whirlIterations}});
+                     {"whirl_iterations", mode.whirlIterations},
+                     {"energy_in", energyIn(mode)},
+                     {"bearing_energy", mode.bearingEnergy}});
     vtus.push_back(modeVtu(stem, int(m) + 1));
     orbits.push_back(orbitVtu(stem, int(m) + 1));
   }
+  // The bearings' own modes (tilting pads kept as dofs), apart from the rotor's.
+  Json padModes = Json::array();
+  for (const RotorMode& mode : r.bearingModes)
+    padModes.push_back({{"frequency_hz", mode.dampedFrequencyHz},
+                        {"natural_frequency_hz", mode.naturalFrequencyHz},
+                        {"damping_ratio", mode.dampingRatio},
+                        {"log_decrement", finiteOrNull(mode.logDecrement)},
+                        {"eigenvalue", {mode.eigenvalue.real(), mode.eigenvalue.imag()}},
+                        {"energy_in", energyIn(mode)},
+                        {"bearing_energy", mode.bearingEnergy}});
   return {{"speed_rpm", rpmOf(r.speed)},
           {"frequencies_hz", frequencies},
           {"modes", modes},
+          {"pad_modes", padModes},
           {"bearing_coefficients", coefficientsJson(r.coefficients, {r.speed})},
           {"time_s", r.time.total},
           {"files",

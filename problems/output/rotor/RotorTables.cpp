@@ -88,16 +88,21 @@ CsvTable rotorModesTable(const std::string& title, const RotorModesResult& r) {
                          {"log_decrement", ""},
                          {"whirl", ""},
                          {"whirl_ratio", ""},
-                         {"whirl_iterations", ""}});
-  for (std::size_t m = 0; m < r.modes.size(); ++m) {
-    const RotorMode& mode = r.modes[m];
-    // whirl_iterations: 0 with the synchronous set, else the eigen-solutions that found the
-    // mode with whirl-dependent bearings at its own eigenvalue.
-    table.addRow({(long long)(m + 1), mode.dampedFrequencyHz, mode.naturalFrequencyHz,
-                  mode.dampingRatio, logDecrementCell(mode.logDecrement),
-                  std::string(whirlName(mode.whirl)), mode.whirlRatio,
-                  (long long)mode.whirlIterations});
-  }
+                         {"whirl_iterations", ""},
+                         {"energy_in", ""},
+                         {"bearing_energy", ""}});
+  // The rotor's modes, then the bearings' own (tilting pads kept as dofs), numbered on.
+  std::size_t number = 0;
+  for (const auto* modes : {&r.modes, &r.bearingModes})
+    for (const RotorMode& mode : *modes) {
+      // whirl_iterations: 0 with the synchronous set, else the eigen-solutions that found the
+      // mode with whirl-dependent bearings at its own eigenvalue.
+      table.addRow({(long long)(++number), mode.dampedFrequencyHz, mode.naturalFrequencyHz,
+                    mode.dampingRatio, logDecrementCell(mode.logDecrement),
+                    std::string(whirlName(mode.whirl)), mode.whirlRatio,
+                    (long long)mode.whirlIterations, std::string(energyIn(mode)),
+                    mode.bearingEnergy});
+    }
   return table;
 }
 
