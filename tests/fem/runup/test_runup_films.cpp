@@ -19,6 +19,7 @@
 #include "elements/ShortJournalFilm.hpp"
 #include "elements/Spring.hpp"
 #include "fem/runup/RunUp.hpp"
+#include "tests/fem/runup/FilmRunUpOptions.hpp"
 
 using namespace beamrotor;
 
@@ -47,26 +48,9 @@ struct FilmRotor {
     bearing = int(model.elements().size()) - 1;
   }
   RunUpOptions options(double dt, double me, bool nonlinear) const {
-    RunUpOptions o;
-    o.timeStep = dt;
-    o.start = RunUpStart::steady;
-    if (me > 0) {
-      Unbalance u;
-      u.node = disk;
-      u.me = me;
-      o.unbalance = {u};
-    }
-    o.nodes = {disk, node};
-    if (nonlinear) {
-      NonlinearJournal j;
-      j.name = "journal";
-      j.element = bearing;
-      j.node = node;
-      j.film = std::make_shared<ShortJournalFilm>(journal);
-      j.load = {-journal.load, 0};
-      o.journals = {j};
-    }
-    return o;
+    std::shared_ptr<const JournalFilm> film;
+    if (nonlinear) film = std::make_shared<ShortJournalFilm>(journal);
+    return test::filmRunUpOptions(disk, node, bearing, dt, me, film, {-journal.load, 0});
   }
 };
 
