@@ -4,6 +4,7 @@
 // naming the field.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -211,5 +212,22 @@ TEST_SUITE("rotor decks") {
       CHECK(e.place().line == b.line);
       CHECK(e.message().find(b.says) != std::string::npos);
     }
+  }
+
+  TEST_CASE("run-up bearings: nonlinear refuses tilting pads beside plain journals") {
+    // Their films are not followed in time; their coefficients must not pass for films.
+    std::string deck = test::fileContents(test::problemsDir() / "journal_runup.yaml");
+    const std::string right = "  - {name: right, at: end, type: plain-journal,";
+    const std::size_t at = deck.find(right);
+    REQUIRE(at != std::string::npos);
+    deck.replace(at, right.size(),
+                 "  - {name: right, at: end, type: tilting-pad, pads: 4, arc: 80 deg, "
+                 "offset: 0.5, preload: 0.3, orientation: load-between-pads,");
+    const DeckError e = test::readingError(deck, "runup.yaml");
+    CAPTURE(e.message());
+    CHECK(e.message().find("'right' has tilting pads") != std::string::npos);
+    const std::size_t field = deck.find("    bearings: nonlinear");
+    REQUIRE(field != std::string::npos);
+    CHECK(e.place().line == 1 + std::count(deck.begin(), deck.begin() + std::ptrdiff_t(field), '\n'));
   }
 }

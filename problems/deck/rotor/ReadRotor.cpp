@@ -518,11 +518,16 @@ DeckDrive readDrive(const Context& c, const Field& f) {
 }
 
 /// run-up `bearings: nonlinear`: the deck's plain journal bearings act by their films (short
-/// or finite, as their coefficients); the other bearings keep their coefficients.
+/// or finite, as their coefficients); the other bearings keep their coefficients, except
+/// tilting pads, which are refused (their films are not followed in time: their coefficients
+/// would pass silently for films).
 void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u) {
   bool any = false;
   for (const DeckBearing& b : c.deck.rotor.bearings) {
-    if (!b.journal || b.tiltingPads) continue;
+    if (b.tiltingPads)
+      f.fail("bearing '" + b.name + "' has tilting pads, whose films a run-up does not follow "
+             "in time: run bearings: linear, or give it plain journals");
+    if (!b.journal) continue;
     if (b.pedestal)
       f.fail("bearing '" + b.name + "' stands on a pedestal: its film force acts between journal "
              "and ground in a nonlinear run-up (remove the pedestal or run bearings: linear)");
