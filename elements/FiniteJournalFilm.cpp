@@ -24,7 +24,7 @@ Eigen::Matrix2d filmMatrix2(const double (&m)[2][2]) {
 }  // namespace
 
 FiniteJournalFilm::FiniteJournalFilm(const PlainJournal& journal, const ReynoldsGrid& grid)
-    : journal_(journal), grid_(grid) {
+    : PlainJournalFilm(journal), grid_(grid) {
   if (!(journal.diameter > 0 && journal.length > 0 && journal.clearance > 0 &&
         journal.viscosity > 0))
     throw std::invalid_argument("a finite journal film needs positive D, L, c and mu");
@@ -81,19 +81,11 @@ FilmForce FiniteJournalFilm::solve(const Eigen::Vector2d& position,
   return out;
 }
 
-double FiniteJournalFilm::dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
-                                     double speed) const {
-  return journalDragTorque(journal_, position, force, speed);
-}
-
-Eigen::Vector2d FiniteJournalFilm::equilibrium(const Eigen::Vector2d& load, double speed) const {
-  const double W = load.norm();
-  if (W == 0) return Eigen::Vector2d::Zero();  // an unloaded journal runs centred
+PlainJournalFilm::Resting FiniteJournalFilm::resting(double W, double speed) const {
   PlainJournal j = journal_;
   j.load = W;
   const JournalOperatingPoint p = finiteJournalPoint(j, speed, grid_);
-  const double angle = std::atan2(load[1], load[0]) + p.attitude;
-  return p.eccentricity * journal_.clearance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+  return {p.eccentricity, p.attitude};
 }
 
 }  // namespace beamrotor

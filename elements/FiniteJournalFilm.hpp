@@ -37,27 +37,23 @@
 #include <mutex>
 #include <vector>
 
-#include "elements/PlainJournalBearing.hpp"
+#include "elements/PlainJournalFilm.hpp"
 #include "elements/ReynoldsFilm.hpp"
-#include "fem/runup/JournalFilm.hpp"
 
 namespace beamrotor {
 
-class FiniteJournalFilm : public JournalFilm {
+class FiniteJournalFilm : public PlainJournalFilm {
  public:
   /// The journal's geometry and oil (its `load` is not used: the load comes with each call),
   /// and the film's grid (the one the bearing's coefficients are solved on).
   FiniteJournalFilm(const PlainJournal& journal, const ReynoldsGrid& grid);
   FilmForce at(const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
                double speed) const override;
-  /// finiteJournalPoint's eccentricity and attitude for |load|, turned to the load's line.
-  Eigen::Vector2d equilibrium(const Eigen::Vector2d& load, double speed) const override;
-  /// The film's torque resisting the journal's spin (N m): journalDragTorque.
-  double dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
-                    double speed) const override;
-  double clearance() const override { return journal_.clearance; }
 
  private:
+  /// finiteJournalPoint's eccentricity and attitude.
+  Resting resting(double W, double speed) const override;
+
   /// The answer at one state, and the film's pressurised nodes there.
   struct Memo {
     Eigen::Vector2d position{0, 0}, velocity{0, 0};
@@ -69,7 +65,6 @@ class FiniteJournalFilm : public JournalFilm {
   FilmForce solve(const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
                   double speed, Memo& memo) const;
 
-  PlainJournal journal_;
   ReynoldsGrid grid_;
   mutable std::mutex mutex_;  ///< guards memo_ (one film may serve several threads)
   mutable Memo memo_;

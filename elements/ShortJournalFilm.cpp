@@ -10,7 +10,7 @@
 
 namespace beamrotor {
 
-ShortJournalFilm::ShortJournalFilm(const PlainJournal& journal) : journal_(journal) {
+ShortJournalFilm::ShortJournalFilm(const PlainJournal& journal) : PlainJournalFilm(journal) {
   if (!(journal.diameter > 0 && journal.length > 0 && journal.clearance > 0 &&
         journal.viscosity > 0))
     throw std::invalid_argument("a short-bearing film needs positive D, L, c and mu");
@@ -59,19 +59,11 @@ FilmForce ShortJournalFilm::at(const Eigen::Vector2d& position, const Eigen::Vec
   return out;
 }
 
-Eigen::Vector2d ShortJournalFilm::equilibrium(const Eigen::Vector2d& load, double speed) const {
-  const double W = load.norm();
-  if (W == 0) return Eigen::Vector2d::Zero();  // an unloaded journal runs centred
+PlainJournalFilm::Resting ShortJournalFilm::resting(double W, double speed) const {
   PlainJournal j = journal_;
   j.load = W;
   const double eps = eccentricityRatio(j, speed);
-  const double angle = std::atan2(load[1], load[0]) + attitudeAngle(eps);
-  return eps * journal_.clearance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
-}
-
-double ShortJournalFilm::dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
-                                    double speed) const {
-  return journalDragTorque(journal_, position, force, speed);
+  return {eps, attitudeAngle(eps)};
 }
 
 }  // namespace beamrotor

@@ -20,30 +20,21 @@
 // error falls like rho^-128 with rho = 1.5 at eps = 0.99 (below 1e-20: round-off).
 #pragma once
 
-#include "elements/PlainJournalBearing.hpp"
-#include "fem/runup/JournalFilm.hpp"
+#include "elements/PlainJournalFilm.hpp"
 
 namespace beamrotor {
 
-class ShortJournalFilm : public JournalFilm {
+class ShortJournalFilm : public PlainJournalFilm {
  public:
   /// The journal's geometry and oil (its `load` is not used: the load comes with each call).
   explicit ShortJournalFilm(const PlainJournal& journal);
   FilmForce at(const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
                double speed) const override;
-  /// Ocvirk's equilibrium: eccentricity from the Sommerfeld number (eccentricityRatio), the
-  /// centre turned from the load line by the attitude angle in the sense of rotation.
-  Eigen::Vector2d equilibrium(const Eigen::Vector2d& load, double speed) const override;
-  /// The drag on the journal: Petroff's Couette torque over the whole gap at eccentricity eps,
-  /// 2 pi mu Omega R^3 L / (c sqrt(1 - eps^2)), plus the pressure flow's share, half the moment
-  /// x cross F of the film force about the bearing's centre: e W sin(phi) / 2 at rest under a
-  /// load W with attitude phi (docs/runup.md, "Film drag on the driven speed").
-  double dragTorque(const Eigen::Vector2d& position, const Eigen::Vector2d& force,
-                    double speed) const override;
-  double clearance() const override { return journal_.clearance; }
 
  private:
-  PlainJournal journal_;
+  /// Ocvirk's equilibrium: eccentricity from the Sommerfeld number (eccentricityRatio), the
+  /// attitude angle of that eccentricity.
+  Resting resting(double W, double speed) const override;
 };
 
 }  // namespace beamrotor

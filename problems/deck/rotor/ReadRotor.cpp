@@ -542,7 +542,7 @@ void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u)
   // The run starts where each film carries its load: a finite film must reach that equilibrium
   // at the start speed (its table may start faster). A load from gravity is known only later.
   for (const DeckBearing& b : c.deck.rotor.bearings) {
-    if (!b.journal || b.tiltingPads || b.loadFromGravity ||
+    if (!b.journal || b.loadFromGravity ||
         b.journalModel != DeckBearing::JournalModel::finite || b.journal->load == 0)
       continue;
     try {
