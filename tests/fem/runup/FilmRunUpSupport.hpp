@@ -1,8 +1,12 @@
-// The run-up options the film tests share: a Jeffcott rotor (a disk on a shaft spring to a
-// journal node) whose bearing element holds a film's linear coefficients, run at a time step
-// with an unbalance on the disk, either on those coefficients or on the film itself.
+// What the film run-up tests share: the options of a Jeffcott rotor (a disk on a shaft spring
+// to a journal node) whose bearing element holds a film's linear coefficients, run at a time
+// step with an unbalance on the disk, either on those coefficients or on the film itself; and
+// the orbit measures they compare runs by.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <memory>
 
 #include "fem/runup/JournalFilm.hpp"
@@ -36,6 +40,22 @@ inline RunUpOptions filmRunUpOptions(int disk, int journal, int bearing, double 
     o.journals = {j};
   }
   return o;
+}
+
+/// The largest distance between two runs' recorded positions of their first history (the disk).
+inline double largestDiskDifference(const RunUpResult& a, const RunUpResult& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.times.size(); ++i)
+    d = std::max(d, std::hypot(a.histories[0].uy[i] - b.histories[0].uy[i],
+                               a.histories[0].uz[i] - b.histories[0].uz[i]));
+  return d;
+}
+
+/// The largest radius of an orbit from sample `from` on.
+inline double largestOrbitRadius(const RunUpHistory& h, std::size_t from = 0) {
+  double r = 0;
+  for (std::size_t i = from; i < h.uy.size(); ++i) r = std::max(r, std::hypot(h.uy[i], h.uz[i]));
+  return r;
 }
 
 }  // namespace beamrotor::test

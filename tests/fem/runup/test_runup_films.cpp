@@ -19,7 +19,7 @@
 #include "elements/ShortJournalFilm.hpp"
 #include "elements/Spring.hpp"
 #include "fem/runup/RunUp.hpp"
-#include "tests/fem/runup/FilmRunUpOptions.hpp"
+#include "tests/fem/runup/FilmRunUpSupport.hpp"
 
 using namespace beamrotor;
 
@@ -54,21 +54,6 @@ struct FilmRotor {
   }
 };
 
-/// The largest distance between two runs' recorded disk positions.
-double largestDifference(const RunUpResult& a, const RunUpResult& b) {
-  double d = 0;
-  for (std::size_t i = 0; i < a.times.size(); ++i)
-    d = std::max(d, std::hypot(a.histories[0].uy[i] - b.histories[0].uy[i],
-                               a.histories[0].uz[i] - b.histories[0].uz[i]));
-  return d;
-}
-
-double largestRadius(const RunUpHistory& h, std::size_t from = 0) {
-  double r = 0;
-  for (std::size_t i = from; i < h.uy.size(); ++i) r = std::max(r, std::hypot(h.uy[i], h.uz[i]));
-  return r;
-}
-
 }  // namespace
 
 TEST_SUITE("run-up on journal films") {
@@ -79,13 +64,13 @@ TEST_SUITE("run-up on journal films") {
     // The film's force at the equilibrium balances the load to ~1e-13 W; the response to that
     // residue is ~1e-13 W / k_bearing ~ 1e-18 m. Allowed: 1e-12 of the clearance.
     const double c = rotor.journal.clearance;
-    CHECK(largestRadius(r.histories[0]) < 1e-12 * c);
-    CHECK(largestRadius(r.histories[1]) < 1e-12 * c);
+    CHECK(test::largestOrbitRadius(r.histories[0]) < 1e-12 * c);
+    CHECK(test::largestOrbitRadius(r.histories[1]) < 1e-12 * c);
     REQUIRE(r.journals.size() == 1);
     const double eps = eccentricityRatio(rotor.journal, 300);
     CHECK(r.journals[0].startEccentricity == doctest::Approx(eps).epsilon(1e-14));
     CHECK(r.journals[0].largestEccentricity == doctest::Approx(eps).epsilon(1e-12));
-    MESSAGE("equilibrium: disk " << largestRadius(r.histories[0]) << " m, eps " << eps
+    MESSAGE("equilibrium: disk " << test::largestOrbitRadius(r.histories[0]) << " m, eps " << eps
                                  << ", Newton " << r.newtonIterations << " over " << r.steps
                                  << " steps, at most " << r.mostNewtonIterations);
   }
@@ -97,8 +82,8 @@ TEST_SUITE("run-up on journal films") {
     for (double me : {2e-5, 1e-5, 0.5e-5}) {
       const RunUpResult linear = solveRunUp(rotor.model, constant, rotor.options(1e-4, me, false));
       const RunUpResult films = solveRunUp(rotor.model, constant, rotor.options(1e-4, me, true));
-      const double d = largestDifference(linear, films);
-      MESSAGE("me " << me << ": largest disk radius " << largestRadius(linear.histories[0])
+      const double d = test::largestDiskDifference(linear, films);
+      MESSAGE("me " << me << ": largest disk radius " << test::largestOrbitRadius(linear.histories[0])
                     << " m, difference " << d << " m, Newton at most "
                     << films.mostNewtonIterations);
       differences.push_back(d);

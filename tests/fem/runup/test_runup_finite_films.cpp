@@ -17,7 +17,7 @@
 #include "elements/PointInertia.hpp"
 #include "elements/Spring.hpp"
 #include "fem/runup/RunUp.hpp"
-#include "tests/fem/runup/FilmRunUpOptions.hpp"
+#include "tests/fem/runup/FilmRunUpSupport.hpp"
 
 using namespace beamrotor;
 
@@ -52,20 +52,6 @@ struct FiniteFilmRotor {
   }
 };
 
-double largestFilmDifference(const RunUpResult& a, const RunUpResult& b) {
-  double d = 0;
-  for (std::size_t i = 0; i < a.times.size(); ++i)
-    d = std::max(d, std::hypot(a.histories[0].uy[i] - b.histories[0].uy[i],
-                               a.histories[0].uz[i] - b.histories[0].uz[i]));
-  return d;
-}
-
-double largestOrbitRadius(const RunUpHistory& h) {
-  double r = 0;
-  for (std::size_t i = 0; i < h.uy.size(); ++i) r = std::max(r, std::hypot(h.uy[i], h.uz[i]));
-  return r;
-}
-
 }  // namespace
 
 TEST_SUITE("run-up on finite journal films") {
@@ -77,13 +63,13 @@ TEST_SUITE("run-up on finite journal films") {
     // 1e-9 W, tests/elements/test_finite_journal_film.cpp); the journal moves by that residue
     // over the film's stiffness, of order W / c: at most 1e-9 c (measured 3e-11 c).
     const double c = rotor.journal.clearance;
-    MESSAGE("finite equilibrium: disk " << largestOrbitRadius(r.histories[0]) << " m, journal "
-                                        << largestOrbitRadius(r.histories[1]) << " m, eps "
+    MESSAGE("finite equilibrium: disk " << test::largestOrbitRadius(r.histories[0]) << " m, journal "
+                                        << test::largestOrbitRadius(r.histories[1]) << " m, eps "
                                         << rotor.point.eccentricity << ", Newton "
                                         << r.newtonIterations << " over " << r.steps
                                         << " steps, at most " << r.mostNewtonIterations);
-    CHECK(largestOrbitRadius(r.histories[0]) < 1e-9 * c);
-    CHECK(largestOrbitRadius(r.histories[1]) < 1e-9 * c);
+    CHECK(test::largestOrbitRadius(r.histories[0]) < 1e-9 * c);
+    CHECK(test::largestOrbitRadius(r.histories[1]) < 1e-9 * c);
     REQUIRE(r.journals.size() == 1);
     CHECK(r.journals[0].startEccentricity ==
           doctest::Approx(rotor.point.eccentricity).epsilon(1e-14));
@@ -96,8 +82,8 @@ TEST_SUITE("run-up on finite journal films") {
     for (double me : {2e-5, 1e-5, 0.5e-5}) {
       const RunUpResult linear = solveRunUp(rotor.model, constant, rotor.options(1e-4, me, false));
       const RunUpResult films = solveRunUp(rotor.model, constant, rotor.options(1e-4, me, true));
-      const double d = largestFilmDifference(linear, films);
-      MESSAGE("me " << me << ": largest disk radius " << largestOrbitRadius(linear.histories[0])
+      const double d = test::largestDiskDifference(linear, films);
+      MESSAGE("me " << me << ": largest disk radius " << test::largestOrbitRadius(linear.histories[0])
                     << " m, difference " << d << " m, Newton " << films.newtonIterations
                     << " over " << films.steps << " steps, at most " << films.mostNewtonIterations);
       differences.push_back(d);
