@@ -18,6 +18,7 @@
 #include "tests/elements/TiltingPadTestSupport.hpp"
 #include "tests/fem/rotor/RotorTestSupport.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
+#include "tests/problems/TiltingPadShaftDeck.hpp"
 
 using namespace beamrotor;
 using namespace beamrotor::test;
@@ -97,20 +98,8 @@ bearings:
 
   TEST_CASE("tilting-pad deck: the pads' tilts as dofs") {
     auto deckWith = [](const std::string& choice, const std::string& analysis = "") {
-      return std::string(R"(title: tilting pads as dofs
-model: {dimension: lateral}
-materials: [{name: steel, E: 2.1e11, nu: 0.3, rho: 7850}]
-sections: [{name: shaft, shape: circle, D: 100 mm}]
-segments: [{name: shaft, length: 0.4, section: shaft, elements: 4}]
-masses: [{name: disk, at: end, m: 50}]
-bearings:
-  - {name: A, at: start, type: tilting-pad, D: 100 mm, L: 50 mm, c: 100 um, mu: 0.02 Pa s,
-     from_rpm: 3000, to_rpm: 6000, steps: 1, load: 5000 N, arc: 80 deg, preload: 0.3, pads: 4,
-     orientation: load-between-pads)") +
-             choice + R"(}
-  - {name: B, at: end, kxx: 1e8, kyy: 1e8, cxx: 1e3, cyy: 1e3}
-analyses: [{type: rotor, name: r, speed_rpm: 3000, modes: 2})" +
-             analysis + "]\n";
+      return tiltingPadShaftDeck("tilting pads as dofs", choice) +
+             "analyses: [{type: rotor, name: r, speed_rpm: 3000, modes: 2}" + analysis + "]\n";
     };
     // At a table speed the full model is exact; where the per-mode iteration settles it lands
     // on the full model's eigenvalues (tests/fem/rotor/test_whirl_dependent_bearings.cpp): the

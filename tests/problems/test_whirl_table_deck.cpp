@@ -9,6 +9,7 @@
 #include "problems/run/Study.hpp"
 #include "tests/Helpers.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
+#include "tests/problems/TiltingPadShaftDeck.hpp"
 
 using namespace beamrotor;
 using namespace beamrotor::test;
@@ -71,20 +72,8 @@ bearings:
 
   TEST_CASE("whirl table deck: tilting pads at each mode's eigenvalue on request") {
     auto deckWith = [](const std::string& choice) {
-      return std::string(R"(title: tilting pads by whirl
-model: {dimension: lateral}
-materials: [{name: steel, E: 2.1e11, nu: 0.3, rho: 7850}]
-sections: [{name: shaft, shape: circle, D: 100 mm}]
-segments: [{name: shaft, length: 0.4, section: shaft, elements: 4}]
-masses: [{name: disk, at: end, m: 50}]
-bearings:
-  - {name: A, at: start, type: tilting-pad, D: 100 mm, L: 50 mm, c: 100 um, mu: 0.02 Pa s,
-     from_rpm: 3000, to_rpm: 6000, steps: 1, load: 5000 N, arc: 80 deg, preload: 0.3, pads: 4,
-     orientation: load-between-pads)") +
-             choice + R"(}
-  - {name: B, at: end, kxx: 1e8, kyy: 1e8, cxx: 1e3, cyy: 1e3}
-analyses: [{type: rotor, name: r, speed_rpm: 4500, modes: 2}]
-)";
+      return tiltingPadShaftDeck("tilting pads by whirl", choice) +
+             "analyses: [{type: rotor, name: r, speed_rpm: 4500, modes: 2}]\n";
     };
     const Study synchronous = solveDeckText(deckWith(""), "pads.yaml");
     const Study each = solveDeckText(deckWith(", whirl_coefficients: each-mode"), "pads.yaml");
