@@ -109,7 +109,8 @@ double InfluenceLine::at(double s) const {
 }
 
 PathUnitLoads solvePathUnitLoads(const Model& model, const std::vector<PathElement>& path,
-                                 const Eigen::Vector3d& direction, const StaticOptions& options) {
+                                 const Eigen::Vector3d& direction, const StaticOptions& options,
+                                 bool withModelLoads) {
   if (path.empty()) throw std::invalid_argument("a moving load needs a path of line elements");
   if (!(direction.norm() > 0))
     throw std::invalid_argument("a moving load needs a direction of nonzero length");
@@ -156,7 +157,12 @@ PathUnitLoads solvePathUnitLoads(const Model& model, const std::vector<PathEleme
                           std::vector<std::pair<int, ElementSpanLoad>>{});
     pointers[std::size_t(c)] = &loadings.back();
   }
+  if (withModelLoads) pointers.push_back(nullptr);  // null: the model's own loads
   out.solved = solveLoadings(model, pointers, options);
+  if (withModelLoads) {
+    out.modelLoads = std::move(out.solved.back());
+    out.solved.pop_back();
+  }
   return out;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -64,16 +65,20 @@ struct PathUnitLoads {
   std::vector<const LineElement*> lines;  ///< the path's elements, in path order
   Eigen::Vector3d direction;              ///< of the unit load (normalised)
   std::vector<StaticResult> solved;       ///< one per loaded dof
+  /// The model's own loads on the same factorisation, when asked for (the dead load the
+  /// train crosses).
+  std::optional<StaticResult> modelLoads;
   std::vector<std::vector<std::pair<int, Polynomial>>> shares;  ///< per path element: (solved index, share)
   double length() const;                  ///< of the path (m)
 };
 
-/// Solves the unit loads of `path` for a load along `direction`. Throws std::invalid_argument
-/// when the path is empty or broken, an element is not a line element or a loaded dof is one
-/// no element carries; throws as solveLoadings does.
+/// Solves the unit loads of `path` for a load along `direction`, and with `withModelLoads` the
+/// model's own loads as one more right-hand side. Throws std::invalid_argument when the path is
+/// empty or broken, an element is not a line element or a loaded dof is one no element
+/// carries; throws as solveLoadings does.
 PathUnitLoads solvePathUnitLoads(const Model& model, const std::vector<PathElement>& path,
                                  const Eigen::Vector3d& direction,
-                                 const StaticOptions& options = {});
+                                 const StaticOptions& options = {}, bool withModelLoads = false);
 
 /// A quantity's influence line from its value under each unit load (`unitValues[c]` in
 /// `units.solved[c]`); a resultant read at end `end` of element `element` (-1: none) adds the

@@ -7,7 +7,6 @@
 #include "elements/Beam.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/model/DofMap.hpp"
-#include "fem/static/Static.hpp"
 #include "problems/run/Measure.hpp"
 
 namespace beamrotor {
@@ -135,10 +134,9 @@ MovingLoadOutcome runMovingLoad(const MovingLoadSpec& spec, const Model& model) 
     out.quantities.push_back(std::move(m));
   }
   const Eigen::Vector3d direction(spec.direction[0], spec.direction[1], spec.direction[2]);
-  const PathUnitLoads units = solvePathUnitLoads(model, path, direction);
-  // The deck's own loads, solved as a static analysis would (span loads in the resultants).
-  std::optional<StaticResult> still;
-  if (spec.deckLoads) still = solveStatic(model);
+  // The deck's own loads on the unit loads' factorisation (span loads in the resultants).
+  const PathUnitLoads units = solvePathUnitLoads(model, path, direction, {}, spec.deckLoads);
+  const std::optional<StaticResult>& still = units.modelLoads;
   NodalField stillField = NodalField::Zero(model.nodeCount(), kDofKinds);
   if (still) stillField = still->displacement;
   std::vector<double> unitValues(units.solved.size());
