@@ -212,7 +212,8 @@ Section angleSection(std::string name, const Material& m, double h, double b, do
   // ed., Table 10.7) without its terms in (t / h)^4. Against the St Venant constant of the exact
   // outline (tests/fem/model/test_open_section_torsion.cpp), over the whole catalogue: 1.1 % to
   // 5.1 % above (the most where r / t is largest), where the thin-walled sum L t^3 / 3 lay 2.5 %
-  // to 14 % below (docs/section_catalog.md).
+  // to 14 % below; against the SCI Blue Book's printed It (51 rows,
+  // tests/problems/test_section_catalog.cpp), -1.3 % to +2.7 % (docs/section_catalog.md).
   s.J = wallTorsion(h, t, 2) + wallTorsion(b - t, t, 1) + lJunctionTorsion(t, t, r) -
         2 * roundedToeTorsion(t, rToe);
   setShear(s, shearFlow(chain, 0, 1, 0), midlineSecondMoment(chain, 1, 0),
