@@ -197,7 +197,8 @@ bool stopMessage() {
 
 /// Waits for a message from rank 0 with `tag` (polled, so that the process stays responsive)
 /// and takes it into `words`; gives up, false, when `giveUp` says so first.
-bool awaitFromManager(int tag, std::int64_t* words, int count, const std::function<bool()>& giveUp) {
+bool awaitFromManager(int tag, std::int64_t* words, int count,
+                      const std::function<bool()>& giveUp) {
   for (;;) {
     int waiting = 0;
     MPI_Iprobe(0, tag, MPI_COMM_WORLD, &waiting, MPI_STATUS_IGNORE);
@@ -303,6 +304,16 @@ RankReport studyManager(const StudyPlan& plan, const DesignPoints& points,
   const auto allFinished = [&] {
     return std::all_of(finished.begin(), finished.end(), [](char f) { return f != 0; });
   };
+  // Stopping: a rank of this host whose process is gone will not answer; mpirun's SIGKILL
+  // comes about a second after its SIGTERM, so that time is left for writing the results.
+  const auto othersGone = [&] {
+    for (int r = 1; r < ranks; ++r)
+      if (!finished[std::size_t(r)] &&
+          (std::strcmp(processes[std::size_t(r)].host, processes[0].host) != 0 ||
+           !processGone(processes[std::size_t(r)].pid)))
+        return false;
+    return true;
+  };
   for (;;) {
     if (!stopping && stop()) {
       stopping = true;
@@ -325,7 +336,7 @@ RankReport studyManager(const StudyPlan& plan, const DesignPoints& points,
       ++ownBegin;
     } else if (!stopping && handedOut < n) {
       std::tie(ownBegin, ownEnd) = takeChunk();
-    } else if (allFinished() || (stopping && secondsNow() > deadline)) {
+    } else if (allFinished() || (stopping && (secondsNow() > deadline || othersGone()))) {
       break;
     } else {
       // Waiting for the others: polled, not blocked in MPI_Probe, so that a signal (or a

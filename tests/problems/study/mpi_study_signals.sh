@@ -33,7 +33,9 @@ run_pids() { [ -n "$runner" ] && echo "$runner" $(pgrep -P "$runner"); }
 
 show_run() {
   for p in $(run_pids); do
-    echo "  pid $p state $(state "$p") waiting in $(cat "/proc/$p/wchan" 2>/dev/null):" \
+    wchan=$(cat "/proc/$p/wchan" 2>/dev/null)
+    [ "$wchan" != 0 ] || wchan="(on a CPU)"
+    echo "  pid $p state $(state "$p") waiting in $wchan:" \
       "$(tr '\0' ' ' <"/proc/$p/cmdline" 2>/dev/null | cut -c1-160)"
     sed 's/^/    /' "/proc/$p/stack" 2>/dev/null | head -8
   done
