@@ -1,13 +1,13 @@
 #!/bin/sh
 # A study under `mpirun -n 2` that loses a rank (kill -9 of rank 1) or is stopped (SIGTERM to
-# mpirun, which sends SIGCONT to every rank, SIGTERM a second later and SIGKILL a second after
-# that): rank 0 keeps the rows done, writes a summary marked partial that states the rank count
-# (and names the lost rank, as the console does), and `--resume` under mpirun writes the serial
-# run's table byte for byte; a `--resume` that rank 0 refuses ends (exit 2) instead of leaving
-# rank 1 waiting. Skipped (exit 77, with the reason) where mpirun is missing. Arguments: the
-# beamrotor executable and the source directory. No speed is asserted, but every wait has a
-# deadline: one that passes says what it waited for, shows the processes (state, where each
-# sleeps in the kernel) and the run's console, ends them and fails.
+# mpirun, which sends SIGCONT to every rank, SIGTERM some seconds later and SIGKILL as long
+# after that): rank 0 keeps the rows done, writes a summary marked partial that states the
+# rank count (and names the lost rank, as the console does), and `--resume` under mpirun
+# writes the serial run's table byte for byte; a `--resume` that rank 0 refuses ends (exit 2)
+# instead of leaving rank 1 waiting. Skipped (exit 77, with the reason) where mpirun is
+# missing. Arguments: the beamrotor executable and the source directory. No speed is asserted,
+# but every wait has a deadline: one that passes says what it waited for, shows the processes
+# (state, where each sleeps in the kernel) and the run's console, ends them and fails.
 exe=$1
 src=$2
 if ! command -v mpirun >/dev/null 2>&1; then
@@ -19,6 +19,11 @@ runner=""  # the run going on in the background (mpirun, or the serial study)
 trap 'end_run; rm -rf "$tmp"' EXIT
 trap 'exit 1' HUP INT TERM
 mpi="mpirun --allow-run-as-root --oversubscribe -n 2"
+# mpirun's pause between SIGCONT, SIGTERM and SIGKILL (1 s by default): rank 0 writes its
+# partial results and console between SIGTERM and SIGKILL, and on a machine loaded by a whole
+# test run one second was measured too short (1 run in 5 beside busy loops lost the console).
+# Open MPI 4 reads the first name, Open MPI 5's PRRTE the second.
+export OMPI_MCA_odls_base_sigkill_timeout=3 PRTE_MCA_odls_base_sigkill_timeout=3
 status=0
 fail() { echo "$1"; status=1; }
 now() { date +%s; }
@@ -91,6 +96,22 @@ await_rows() {
   done
 }
 
+# Waits at most 60 s until the table of the study writing $1 stays the same for 2 s (rank 0
+# waits for the rows of the chunk a stopped rank holds) or has every row (one per point of
+# $points, and the names); its rows in $rows.
+await_still() {
+  until=$(($(now) + 60))
+  before=-1
+  rows=$(rows_of "$1")
+  while [ "$rows" -le "$points" ] && [ "$rows" -ne "$before" ]; do
+    [ "$(now)" -lt "$until" ] ||
+      timed_out "the table of $1 still grew 60 s after rank 1 was stopped" "$console"
+    before=$rows
+    sleep 2
+    rows=$(rows_of "$1")
+  done
+}
+
 # The pid of rank $1 among the children of the run (mpirun).
 rank_pid() {
   for p in $(pgrep -P "$runner"); do
@@ -102,7 +123,9 @@ rank_pid() {
 }
 
 # A JSON key of a summary, with python3.
-key() { python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get(sys.argv[2]))" "$1" "$2"; }
+key() {
+  python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get(sys.argv[2]))" "$1" "$2"
+}
 
 # Checks the partial results in $2 of the run described by $1 (its console in $2.txt):
 # summary.json marked partial, stopped by SIGTERM, stating 2 ranks; false when there is none.
@@ -116,7 +139,8 @@ partial_results() {
   [ "$(key "$summary" partial)" = "True" ] || fail "$1: summary not partial"
   [ "$(key "$summary" stopped_by)" = "SIGTERM" ] || fail "$1: not stopped by SIGTERM"
   [ "$(key "$summary" ranks)" = "2" ] || fail "$1: summary does not say 2 ranks"
-  grep -q "ranks: 2" "$2.txt" || fail "$1: console does not state the rank count"
+  grep -q "ranks: 2" "$2.txt" ||
+    { fail "$1: console does not state the rank count:"; cat "$2.txt"; }
   echo "$1: $(($(grep -vc '^#' "$2/study.csv") - 1)) rows kept"
 }
 
@@ -139,14 +163,7 @@ for attempt in 1 2 3; do
   victim=$(rank_pid 1)
   [ -n "$victim" ] || timed_out "rank 1 not found among mpirun's children" "$console"
   kill -STOP "$victim"
-  # Until the table stays the same for 2 s (rank 0 waits for rank 1's chunk), or has every row.
-  until=$(($(now) + 60))
-  before=-1
-  while rows=$(rows_of "$tmp/killed"); [ "$rows" -lt $((points + 1)) ] && [ "$rows" -ne "$before" ]; do
-    [ "$(now)" -lt "$until" ] || timed_out "the table of a study with rank 1 stopped still grew after 60 s" "$console"
-    before=$rows
-    sleep 2
-  done
+  await_still "$tmp/killed"
   [ "$rows" -le "$points" ] && break
   echo "attempt $attempt: rank 1 had no points yet when stopped; rank 0 wrote every row alone"
   kill -CONT "$victim"
@@ -158,7 +175,8 @@ await_end 60 "mpirun after the kill -9 of rank 1"
 if partial_results "kill -9 of rank 1" "$tmp/killed"; then
   key "$summary" lost_ranks | grep -q "rank 1 (pid $victim" ||
     fail "kill -9 of rank 1: summary does not name it: $(key "$summary" lost_ranks)"
-  grep -q "lost rank 1 (pid $victim" "$tmp/killed.txt" || fail "kill -9 of rank 1: console does not name it"
+  grep -q "lost rank 1 (pid $victim" "$tmp/killed.txt" ||
+    { fail "kill -9 of rank 1: console does not name it:"; cat "$tmp/killed.txt"; }
   console="$tmp/resumed.txt"
   start $mpi "$exe" "$@" --resume "$tmp/killed"
   await_end 120 "--resume under mpirun"
@@ -173,7 +191,8 @@ if partial_results "kill -9 of rank 1" "$tmp/killed"; then
   start $mpi "$exe" "$@" --resume "$tmp/killed"
   await_end 60 "a --resume that rank 0 refuses, under mpirun"
   [ "$code" -eq 2 ] || { fail "the refused --resume ended with $code, not 2:"; cat "$console"; }
-  grep -q "no partial study there" "$console" || { fail "the refused --resume did not say why:"; cat "$console"; }
+  grep -q "no partial study there" "$console" ||
+    { fail "the refused --resume did not say why:"; cat "$console"; }
 fi
 
 # 2. SIGTERM to mpirun, on a grid ten times larger: the 8040 points above can all be solved
