@@ -22,7 +22,8 @@ mpi="mpirun --allow-run-as-root --oversubscribe -n 2"
 # mpirun's pause between SIGCONT, SIGTERM and SIGKILL (1 s by default): rank 0 writes its
 # partial results and console between SIGTERM and SIGKILL, and on a machine loaded by a whole
 # test run one second was measured too short (1 run in 5 beside busy loops lost the console).
-# Open MPI 4 reads the first name, Open MPI 5's PRRTE the second.
+# Open MPI 4.1 reads the first name; the second is for PRRTE (Open MPI 5), assuming it kept
+# the parameter's name; a launcher that knows neither ignores them.
 export OMPI_MCA_odls_base_sigkill_timeout=3 PRTE_MCA_odls_base_sigkill_timeout=3
 status=0
 fail() { echo "$1"; status=1; }
