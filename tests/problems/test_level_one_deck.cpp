@@ -50,6 +50,7 @@ TEST_SUITE("rotor decks") {
     CHECK(level["pass"] == true);
     CHECK(level["map_decides"] == true);  // Q0/Qa = 2.85
     CHECK(level["whirl_at_q0"] == "forward");
+    CHECK(level["least_damped_at_q0"] == "rotor");  // no pads kept: always the rotor's
     CHECK(solved.process.out.find("API 684 Level I: pass") != std::string::npos);
     const auto cells = test::csvCells(solved.dir / "level1_level1.csv");
     REQUIRE(cells.size() == 42);  // header and 41 samples
