@@ -189,24 +189,29 @@ std::vector<MapCrossing> mapCrossings(const CriticalSpeedMap& map,
 double rigidSupportCriticalSpeed(const Model& model, double speed) {
   const RotorSystem system(model);
   const DofMap& dofs = system.dofs();
-  // The pinned equations: the free uy, uz of each bearing that is stiff at this speed.
+  // The pinned equations: the free uy, uz of each bearing that is stiff at this speed. A
+  // bearing on a pedestal pins its journal the same way, and its housing (uy, uz) leaves the
+  // rotor with the pedestal's mass and springs: rigid supports are rigid down to the ground.
   std::vector<int> pinned;
   bool bearings = false;
   for (const auto& e : model.elements()) {
-    const SpeedDependentElement* b = asBearing(*e);
-    if (!b) continue;
+    const auto* b = dynamic_cast<const SpeedDependentElement*>(e.get());
+    const bool onPedestal = b && b->kind() == "bearing-on-pedestal";
+    if (!b || (!onPedestal && !asBearing(*e))) continue;
     bearings = true;
-    const auto d = b->dofs();
+    const auto d = b->dofs();  // journal uy, uz; on a pedestal then housing uy, uz
     const ElementMatrix k = b->stiffnessAt(speed);
     for (int r = 0; r < int(d.size()); ++r)
-      if (const int eq = dofs.equation(d[r]); k(r, r) != 0 && eq >= 0 && dofs.isFree(eq))
+      if (const int eq = dofs.equation(d[r]);
+          eq >= 0 && dofs.isFree(eq) && (k(r, r) != 0 || (onPedestal && r >= 2)))
         pinned.push_back(eq);
   }
   std::sort(pinned.begin(), pinned.end());
   pinned.erase(std::unique(pinned.begin(), pinned.end()), pinned.end());
   // Without the bearings' own stiffness (the pinned ones hold their nodes; the others have none
   // on the diagonal, and a cross-coupled term would make K unsymmetric).
-  const SparseMatrix shaft = bearings ? bearingSupports(system).shaft : system.stiffness(0);
+  const SparseMatrix shaft =
+      bearings ? bearingSupports(system, /*pedestals=*/true).shaft : system.stiffness(0);
   const std::vector<int> plane = planeNumbering(system, pinned);
   try {
     return criticalSpeeds(restricted(shaft, plane), restricted(system.mass(), plane), 1, 0,
