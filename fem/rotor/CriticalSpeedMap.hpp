@@ -59,8 +59,8 @@ CriticalSpeedMap solveCriticalSpeedMap(const Model& model, const std::vector<dou
 /// map): every Bearing element with a direct stiffness at spin speed `speed` (rad/s) replaced
 /// by a pinned support, bearings without stiffness (dampers) left out, the model's own
 /// supports kept; a bearing on a pedestal pins its journal likewise, and its housing leaves
-/// the model with the pedestal's mass and springs. API 617's critical speed ratio divides the maximum continuous speed by it.
-/// Throws std::invalid_argument when no support holds the rotor, SolveError when the
+/// the model with the pedestal's mass and springs. API 617's critical speed ratio divides the
+/// maximum continuous speed by it. Throws std::invalid_argument when no support holds the rotor, SolveError when the
 /// eigensolver fails.
 double rigidSupportCriticalSpeed(const Model& model, double speed);
 

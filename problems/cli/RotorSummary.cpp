@@ -264,7 +264,7 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeed
     for (double s : speeds) out << " " << formatValue(s * kRpm * speed.factor);
     out << " " << speed.unit << "\n";
   };
-  list("pinned bearings:", m.pinned);
+  list("rigid bearings:", m.pinned);
   list("free-free rotor:", m.freeFree);
   for (const BearingStiffnessCurve& b : r.bearings)
     for (const auto& [what, crossings] :
