@@ -13,13 +13,18 @@ const SpeedDependentElement* asBearing(const Element& element) {
   return b && b->kind() == "bearing" ? b : nullptr;
 }
 
+const SpeedDependentElement* asBearingOnPedestal(const Element& element) {
+  const auto* b = dynamic_cast<const SpeedDependentElement*>(&element);
+  return b && b->kind() == "bearing-on-pedestal" ? b : nullptr;
+}
+
 BearingSupports bearingSupports(const RotorSystem& system, bool pedestals) {
   const DofMap& dofs = system.dofs();
   BearingSupports out{system.stiffness(0), {}, {}};
   for (const auto& e : system.model().elements()) {
     const SpeedDependentElement* b = asBearing(*e);
-    const auto* onPedestal = dynamic_cast<const SpeedDependentElement*>(e.get());
-    const bool pedestal = pedestals && onPedestal && onPedestal->kind() == "bearing-on-pedestal";
+    const SpeedDependentElement* onPedestal = pedestals ? asBearingOnPedestal(*e) : nullptr;
+    const bool pedestal = onPedestal != nullptr;
     if (pedestal) b = onPedestal;
     if (!b) continue;
     const auto d = b->dofs();  // a pedestal's: journal uy, uz, housing uy, uz

@@ -15,6 +15,10 @@ namespace beamrotor {
 /// or nullptr for any other element.
 const SpeedDependentElement* asBearing(const Element& element);
 
+/// The element as a bearing on a pedestal: a speed-dependent element of kind
+/// "bearing-on-pedestal" (elements/BearingOnPedestal.hpp), or nullptr for any other element.
+const SpeedDependentElement* asBearingOnPedestal(const Element& element);
+
 /// A bearing on a pedestal (kind "bearing-on-pedestal", elements/BearingOnPedestal.hpp): the
 /// free equation of the journal and of the housing along one direction.
 struct PedestalTie {

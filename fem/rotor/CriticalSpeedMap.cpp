@@ -195,9 +195,10 @@ double rigidSupportCriticalSpeed(const Model& model, double speed) {
   std::vector<int> pinned;
   bool bearings = false;
   for (const auto& e : model.elements()) {
-    const auto* b = dynamic_cast<const SpeedDependentElement*>(e.get());
-    const bool onPedestal = b && b->kind() == "bearing-on-pedestal";
-    if (!b || (!onPedestal && !asBearing(*e))) continue;
+    const SpeedDependentElement* pedestalBearing = asBearingOnPedestal(*e);
+    const bool onPedestal = pedestalBearing != nullptr;
+    const SpeedDependentElement* b = onPedestal ? pedestalBearing : asBearing(*e);
+    if (!b) continue;
     bearings = true;
     const auto d = b->dofs();  // journal uy, uz; on a pedestal then housing uy, uz
     const ElementMatrix k = b->stiffnessAt(speed);

@@ -57,12 +57,15 @@ const std::string kWind = "{type: point, at: B, fx: 8e3}, "
                           "{type: distributed, member: left, qz: 3e3}";
 const std::string kHeat = "{type: temperature, member: beam, dT: 20, dT_y: 15}";
 
-const std::string kCases = "loads: []\n"
-                           "load_cases:\n"
-                           "  - {name: dead, loads: [" + kDead + "]}\n"
-                           "  - {name: wind, loads: [" + kWind + "]}\n"
-                           "  - {name: heat, loads: [" + kHeat + "]}\n"
-                           "combinations:\n"
+/// The three cases, then the `combinations:` key with its list still to write.
+const std::string kCaseList = "loads: []\n"
+                              "load_cases:\n"
+                              "  - {name: dead, loads: [" + kDead + "]}\n"
+                              "  - {name: wind, loads: [" + kWind + "]}\n"
+                              "  - {name: heat, loads: [" + kHeat + "]}\n"
+                              "combinations:\n";
+
+const std::string kCases = kCaseList +
                            "  - {name: ULS, factors: {dead: 1.35, wind: 1.5, heat: 0.6}}\n"
                            "  - {name: suction, factors: {dead: 1, wind: -1.5}}\n"
                            "  - {name: cold, factors: {dead: 1, heat: -1.2}}\n";
@@ -278,9 +281,7 @@ TEST_SUITE("load cases") {
   TEST_CASE("a combination's extremes: sums taken once, peaks of the elements that can govern") {
     // The portal under twelve combinations whose factors step through the three cases, so
     // that different elements govern different combinations.
-    std::string deck = "loads: []\nload_cases:\n  - {name: dead, loads: [" + kDead +
-                       "]}\n  - {name: wind, loads: [" + kWind + "]}\n  - {name: heat, loads: [" +
-                       kHeat + "]}\ncombinations:\n";
+    std::string deck = kCaseList;
     for (int k = 0; k < 12; ++k)
       deck += "  - {name: C" + std::to_string(k) + ", factors: {dead: " +
               std::to_string(1 + 0.05 * (k % 8)) + ", wind: " + std::to_string(-1.5 + 0.25 * k) +
@@ -341,9 +342,7 @@ TEST_SUITE("load cases") {
   TEST_CASE("many combinations' extremes and envelope split over cores: the bits of one by one") {
     // The portal with 90 elements a member under 300 combinations: 303 solutions x 360
     // elements make two parts (one per 50,000 element-cases) once three cores may be used.
-    std::string deck = "loads: []\nload_cases:\n  - {name: dead, loads: [" + kDead +
-                       "]}\n  - {name: wind, loads: [" + kWind + "]}\n  - {name: heat, loads: [" +
-                       kHeat + "]}\ncombinations:\n";
+    std::string deck = kCaseList;
     for (int k = 0; k < 300; ++k)
       deck += "  - {name: C" + std::to_string(k) + ", factors: {dead: " +
               std::to_string(1 + 0.35 * (k % 8) / 7) + ", wind: " +

@@ -39,9 +39,7 @@ TEST_SUITE("rotor decks") {
     const test::SolvedDeck solved =
         test::solveShippedDeckToScratch("level1_stability.yaml", "level1-deck");
     const nlohmann::json results = solved.json("results.json");
-    nlohmann::json level;
-    for (const auto& a : results["analyses"])
-      if (a["type"] == "level1-stability") level = a;
+    const nlohmann::json level = test::analysisOfType(results, "level1-stability");
     REQUIRE(level.is_object());
     // Root to 1e-10 of Q (FORMAT.md); 1e-8 leaves room for the eigenvalues' round-off.
     CHECK(level["q0"].get<double>() == doctest::Approx(deckQ0()).epsilon(1e-8));
