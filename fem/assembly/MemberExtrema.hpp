@@ -28,6 +28,10 @@ inline constexpr std::array<ForceComponent, 6> kForceComponents{
     ForceComponent::T, ForceComponent::My, ForceComponent::Mz};
 /// "N", "Vy", "Vz", "T", "My", "Mz".
 const char* componentName(ForceComponent c);
+/// Whether c is a moment (T, My, Mz: N m) rather than a force (N, Vy, Vz: N).
+constexpr bool isMomentComponent(ForceComponent c) {
+  return c == ForceComponent::T || c == ForceComponent::My || c == ForceComponent::Mz;
+}
 /// The component of f.
 double componentOf(const SectionForces& f, ForceComponent c);
 

@@ -64,4 +64,14 @@ std::string Model::describe(const NodeDof& d) const {
   return s.str();
 }
 
+double Model::size() const {
+  if (nodes_.empty()) return 0;
+  Eigen::Vector3d lowest = nodes_.front(), highest = nodes_.front();
+  for (const Eigen::Vector3d& x : nodes_) {
+    lowest = lowest.cwiseMin(x);
+    highest = highest.cwiseMax(x);
+  }
+  return (highest - lowest).maxCoeff();
+}
+
 }  // namespace beamrotor

@@ -100,6 +100,8 @@ class Model {
   /// The members in the order they were added: name and element indices.
   const std::vector<std::pair<std::string, std::vector<int>>>& members() const { return members_; }
   int nodeCount() const { return int(nodes_.size()); }
+  /// The largest extent of the nodes along x, y or z (m); 0 when they all sit at one place.
+  double size() const;
 
   /// "node 4 (x = 0.575, 0, 0) uy", with the point name when there is one; for messages.
   std::string describe(const NodeDof& d) const;

@@ -12,6 +12,7 @@
 #include "problems/cli/StressSummary.hpp"
 #include "problems/cli/Summary.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 #include "problems/output/structure/Reactions.hpp"
 
 namespace beamrotor::cli {
@@ -36,10 +37,11 @@ std::string caseTitle(const CaseOutcome& c) {
 void printCase(std::ostream& out, const Deck& deck, const RunResult& run, const CaseOutcome& c,
                const StaticExtremes& x, const OutputUnits& units) {
   out << "    " << caseTitle(c) << ":\n";
-  printReactions(out, c.statics, "      ", units);
-  printPointDisplacements(out, deck, run, c.statics, "      ", units);
+  const NoiseFloor floor = noiseFloorOf(*run.model, c.statics, &x);
+  printReactions(out, c.statics, floor, "      ", units);
+  printPointDisplacements(out, deck, run, c.statics, floor, "      ", units);
   printStressPeaks(out, deck, *run.model, x.peaks, "      ", units);
-  printMemberExtremes(out, deck, *run.model, x, "      ", units);
+  printMemberExtremes(out, deck, *run.model, x, floor, "      ", units);
   for (const std::string& w : c.warnings) out << "      warning: " << w << "\n";
 }
 
@@ -56,10 +58,13 @@ void printCaseLine(std::ostream& out, const Model& model, const CaseOutcome& c,
 }
 
 /// "value unit [combination]"; the unit left out when `named` is false (a header names it).
-std::string governed(const Governed& g, const std::vector<CaseOutcome>& cases,
+/// `value` is g's value as shown, 0 when it is round-off; a 0 names no combination (every
+/// combination gives it).
+std::string governed(const Governed& g, double value, const std::vector<CaseOutcome>& cases,
                      const OutputUnits::Shown& shown, bool named = true) {
-  std::string out = formatValue(g.value * shown.factor);
+  std::string out = formatValue(value * shown.factor);
   if (named && !shown.unit.empty()) out += " " + shown.unit;
+  if (value == 0) return out;
   out += " [";
   out += cases.at(std::size_t(g.by)).name;
   return out + "]";
@@ -69,7 +74,8 @@ std::string governed(const Governed& g, const std::vector<CaseOutcome>& cases,
 /// kSummarySupports).
 void printEnvelopeForces(std::ostream& out, const std::string& title,
                          const std::vector<std::pair<ReactionComponent, GovernedRange>>& forces,
-                         const std::vector<CaseOutcome>& cases, const OutputUnits& units) {
+                         const std::vector<CaseOutcome>& cases, const NoiseFloor& floor,
+                         const OutputUnits& units) {
   const OutputUnits::Shown force = units.valueIn("N", {1, "N"});
   const OutputUnits::Shown moment = units.valueIn("N m", {1, "N m"});
   out << "    " << title << " (" << force.unit << ", " << moment.unit << "):\n";
@@ -82,8 +88,11 @@ void printEnvelopeForces(std::ostream& out, const std::string& title,
       name = r.support;
     }
     const OutputUnits::Shown& shown = isRotation(r.dof) ? moment : force;
-    out << padded(std::string(reactionName(r.dof)) + " " + governed(range.max, cases, shown, false) +
-                      " / " + governed(range.min, cases, shown, false),
+    const auto text = [&](const Governed& g) {
+      return governed(g, floor.load(g.value, isRotation(r.dof)), cases, shown, false);
+    };
+    out << padded(std::string(reactionName(r.dof)) + " " + text(range.max) + " / " +
+                      text(range.min),
                   46);
   }
   if (!name.empty()) out << "\n";
@@ -94,18 +103,25 @@ void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
                    const std::vector<CaseOutcome>& cases, const CaseEnvelope& e,
                    const OutputUnits& units) {
   const Model& model = *run.model;
+  double roundOff = 0;
+  for (const CaseOutcome& c : cases) roundOff = std::max(roundOff, c.statics.roundOff);
+  const NoiseFloor floor = noiseFloorOf(model, e, roundOff);
   out << "  envelope over the combinations (largest and smallest, the governing combination in "
          "brackets):\n";
   if (e.largestDisplacement.by >= 0)
     out << "    largest displacement "
-        << governed(e.largestDisplacement, cases, units.valueIn("m", {1, "m"})) << "\n";
+        << governed(e.largestDisplacement, e.largestDisplacement.value, cases,
+                    units.valueIn("m", {1, "m"}))
+        << "\n";
   if (e.largestStress.by >= 0)
     out << "    largest normal stress "
-        << governed(e.largestStress, cases, units.valueIn("Pa", {1e-6, "MPa"})) << "\n";
+        << governed(e.largestStress, e.largestStress.value, cases,
+                    units.valueIn("Pa", {1e-6, "MPa"}))
+        << "\n";
   if (!e.reactions.empty() || e.springs.empty())
-    printEnvelopeForces(out, "reactions", e.reactions, cases, units);
+    printEnvelopeForces(out, "reactions", e.reactions, cases, floor, units);
   if (!e.springs.empty())
-    printEnvelopeForces(out, "springs and bearings", e.springs, cases, units);
+    printEnvelopeForces(out, "springs and bearings", e.springs, cases, floor, units);
   if (e.members.empty()) return;
   // The members of the largest bending moments, as the member lines of a case.
   const std::vector<ForceComponent> shown =
@@ -138,8 +154,11 @@ void printEnvelope(std::ostream& out, const Deck& deck, const RunResult& run,
     out << "      " << model.members()[m].first << ":";
     for (ForceComponent f : shown) {
       const OutputUnits::Shown& unit = isMomentComponent(f) ? torque : force;
-      out << "  " << componentName(f) << " " << governed(e.members[m][int(f)].max, cases, unit, false)
-          << " / " << governed(e.members[m][int(f)].min, cases, unit, false);
+      const auto text = [&](const Governed& g) {
+        return governed(g, floor.load(g.value, isMomentComponent(f)), cases, unit, false);
+      };
+      out << "  " << componentName(f) << " " << text(e.members[m][int(f)].max) << " / "
+          << text(e.members[m][int(f)].min);
     }
     out << "\n";
   }

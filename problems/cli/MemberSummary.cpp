@@ -20,8 +20,8 @@ const MemberValue& largerEnd(const ComponentRange& r) {
 }  // namespace
 
 void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model,
-                         const StaticExtremes& extremes, const std::string& indent,
-                         const OutputUnits& units) {
+                         const StaticExtremes& extremes, const NoiseFloor& floor,
+                         const std::string& indent, const OutputUnits& units) {
   const OutputUnits::Shown length = units.valueIn("m", {1, "m"});
   const OutputUnits::Shown force = units.valueIn("N", {1, "N"});
   const OutputUnits::Shown moment = units.valueIn("N m", {1, "N m"});
@@ -62,13 +62,20 @@ void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model
     out << indent << "  " << padded(members[m].first, 12);
     for (ForceComponent c : shown) {
       const MemberValue& v = largerEnd(extremes.ranges[m][int(c)]);
-      out << padded(std::string(componentName(c)) + " " +
-                        formatValue(v.value * (isMomentComponent(c) ? moment : force).factor) +
-                        " @ " +
-                        formatValue(v.along * length.factor),
-                    26);
+      // A resultant that is zero (or round-off) all along has no place worth naming.
+      const double value = floor.load(v.value, isMomentComponent(c));
+      std::string text = componentName(c);
+      text += " ";
+      text += formatValue(value * (isMomentComponent(c) ? moment : force).factor);
+      if (value != 0) {
+        text += " @ ";
+        text += formatValue(v.along * length.factor);
+      }
+      out << padded(text, 26);
     }
-    out << "deflection " << formatValue(extremes.chordDeflections[m].value * length.factor) << "\n";
+    out << "deflection "
+        << formatValue(floor.motion(extremes.chordDeflections[m].value, Dof::ux) * length.factor)
+        << "\n";
   }
 }
 

@@ -11,6 +11,7 @@
 #include "fem/model/Model.hpp"
 #include "problems/deck/Deck.hpp"
 #include "problems/deck/OutputUnits.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 #include "problems/output/structure/StaticExtremes.hpp"
 
 namespace beamrotor::cli {
@@ -18,14 +19,10 @@ namespace beamrotor::cli {
 /// Members listed at most.
 inline constexpr std::size_t kSummaryMembers = 20;
 
-/// Whether c is a moment (T, My, Mz: N m) rather than a force (N, Vy, Vz: N).
-constexpr bool isMomentComponent(ForceComponent c) {
-  return c == ForceComponent::T || c == ForceComponent::My || c == ForceComponent::Mz;
-}
-
-/// Nothing for a model without members (a line deck). Each line led by `indent`.
+/// Nothing for a model without members (a line deck). Each line led by `indent`; values at or
+/// below `floor` (the solution's round-off, NoiseFloor.hpp) shown as 0, without a place.
 void printMemberExtremes(std::ostream& out, const Deck& deck, const Model& model,
-                         const StaticExtremes& extremes, const std::string& indent = "  ",
-                         const OutputUnits& units = {});
+                         const StaticExtremes& extremes, const NoiseFloor& floor,
+                         const std::string& indent = "  ", const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

@@ -28,7 +28,7 @@ namespace {
 /// Forces by name under `title`, each line led by `indent`; the first kSummarySupports names.
 void printForces(std::ostream& out, const std::string& title,
                  const std::vector<SupportReactions>& supports, const std::string& what,
-                 const std::string& indent, const OutputUnits& units) {
+                 const NoiseFloor& floor, const std::string& indent, const OutputUnits& units) {
   out << indent << title << " (force on the structure; " << units.valueIn("N", {1, "N"}).unit
       << ", " << units.valueIn("N m", {1, "N m"}).unit << ")";
   if (supports.size() > kSummarySupports)
@@ -40,7 +40,8 @@ void printForces(std::ostream& out, const std::string& title,
     out << indent << "  " << padded(supports[i].support, 12);
     for (const auto& [dof, value] : supports[i].components)
       out << padded(std::string(reactionName(dof)) + " " +
-                        valueText(value, std::string(reactionUnit(dof)), units),
+                        valueText(floor.load(value, isRotation(dof)),
+                                  std::string(reactionUnit(dof)), units),
                     22);
     out << "\n";
   }
@@ -48,23 +49,25 @@ void printForces(std::ostream& out, const std::string& title,
 
 }  // namespace
 
-void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent,
-                    const OutputUnits& units) {
+void printReactions(std::ostream& out, const StaticResult& r, const NoiseFloor& floor,
+                    const std::string& indent, const OutputUnits& units) {
   // A model held by springs or bearings alone has no reactions to list.
   if (!r.reactions.empty() || r.elementForces.empty())
-    printForces(out, "reactions", reactionsBySupport(r), "supports", indent, units);
+    printForces(out, "reactions", reactionsBySupport(r), "supports", floor, indent, units);
   if (!r.elementForces.empty())
     printForces(out, "springs and bearings", forcesByName(r.elementForces), "springs and bearings",
-                indent, units);
+                floor, indent, units);
 }
 
 void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResult& run,
-                             const StaticResult& r, const std::string& indent,
-                             const OutputUnits& units) {
+                             const StaticResult& r, const NoiseFloor& floor,
+                             const std::string& indent, const OutputUnits& units) {
   const std::vector<const DeckPoint*> points = reportedPoints(deck);
   const OutputUnits::Shown length = units.valueIn("m", {1, "m"});
   const OutputUnits::Shown angle = units.valueIn("rad", {1, "rad"});
-  const auto rotation = [&](double radians) { return valueText(radians, "rad", units); };
+  const auto rotation = [&](double radians) {
+    return valueText(floor.motion(radians, Dof::rx), "rad", units);
+  };
   out << indent << "displacements at points (" << length.unit << ", " << angle.unit << "):\n";
   std::map<int, std::vector<MemberEndRotation>> ends;
   if (deck.frame && !r.hinges.empty())
@@ -90,7 +93,9 @@ void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResul
       if (!deck.dofs.contains(d)) continue;
       const std::string name(dofName(d));
       if (!isRotation(d) || hinge == r.hinges.end()) {
-        out << padded(name + " " + valueText(r.displacement(node, dofIndex(d)), motionUnit(d), units),
+        out << padded(name + " " +
+                          valueText(floor.motion(r.displacement(node, dofIndex(d)), d),
+                                    motionUnit(d), units),
                       22);
         continue;
       }

@@ -9,6 +9,7 @@
 
 #include "problems/deck/Deck.hpp"
 #include "problems/deck/OutputUnits.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
@@ -22,18 +23,19 @@ std::vector<const DeckPoint*> reportedPoints(const Deck& deck);
 /// Unit of a displacement component: "m" or "rad".
 const char* motionUnit(Dof d);
 
-/// Numbers in the user's `units` where they set the quantity (OutputUnits.hpp).
+/// Numbers in the user's `units` where they set the quantity (OutputUnits.hpp); those at or
+/// below `floor` (the solution's round-off, NoiseFloor.hpp) shown as 0.
 ///
 /// Reactions by support, then the forces of the springs and bearings by name, each line led by
 /// `indent`; the first kSummarySupports of each when there are more (the rest in
 /// results.json).
-void printReactions(std::ostream& out, const StaticResult& r, const std::string& indent,
-                    const OutputUnits& units = {});
+void printReactions(std::ostream& out, const StaticResult& r, const NoiseFloor& floor,
+                    const std::string& indent, const OutputUnits& units = {});
 
 /// Displacements at the deck's reported points, each line led by `indent` (at a hinge, each
 /// side's own rotation).
 void printPointDisplacements(std::ostream& out, const Deck& deck, const RunResult& run,
-                             const StaticResult& r, const std::string& indent,
-                             const OutputUnits& units = {});
+                             const StaticResult& r, const NoiseFloor& floor,
+                             const std::string& indent, const OutputUnits& units = {});
 
 }  // namespace beamrotor::cli

@@ -73,8 +73,9 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
     // The solution of the empty `loads:` is all zeros: only the cases say anything.
     out << "  (its `loads:` is empty: the structure is loaded by its load cases alone)\n";
   } else {
-    printReactions(out, r, "  ", units);
-    printPointDisplacements(out, deck, run, r, "  ", units);
+    const NoiseFloor floor = noiseFloorOf(*run.model, r, &*extremes.own);
+    printReactions(out, r, floor, "  ", units);
+    printPointDisplacements(out, deck, run, r, floor, "  ", units);
     if (!r.contacts.empty()) {
       out << "  contacts (after " << r.activeSetIterations << " active-set solves):\n";
       for (const ContactState& k : r.contacts)
@@ -95,7 +96,7 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
             << "\n";
     }
     printStressPeaks(out, deck, *run.model, extremes.own->peaks, "  ", units);
-    printMemberExtremes(out, deck, *run.model, *extremes.own, "  ", units);
+    printMemberExtremes(out, deck, *run.model, *extremes.own, floor, "  ", units);
   }
   printCases(out, deck, run, a, extremes, units);
 }

@@ -8,12 +8,7 @@ namespace beamrotor {
 std::optional<std::string> displacementWarning(const Model& model, const StaticResult& r) {
   const auto& nodes = model.nodes();
   if (nodes.empty() || r.displacement.rows() != Eigen::Index(nodes.size())) return std::nullopt;
-  Eigen::Vector3d lowest = nodes.front(), highest = nodes.front();
-  for (const Eigen::Vector3d& x : nodes) {
-    lowest = lowest.cwiseMin(x);
-    highest = highest.cwiseMax(x);
-  }
-  const double size = (highest - lowest).maxCoeff();
+  const double size = model.size();
   if (!(size > 0)) return std::nullopt;
   Eigen::Index worst = 0;
   double largest = 0;

@@ -290,6 +290,9 @@ TEST_SUITE("load cases") {
     CHECK(test::relError(numbersAfter(b, "fy ").at(0), (pu + pu) * L / 2 - 2 * MB(pu, pu) / L) <
           kPrinted);
     CHECK(b.find("[ULS_both]") != std::string::npos);
+    // No load pulls along the beam: its axial reaction is 0 in every combination, which names
+    // no governing combination.
+    CHECK(lineWith(text, "      A           fx ", env).find("fx 0 / 0 ") != std::string::npos);
     // The charts of the combinations that govern (the largest displacement, the largest
     // stress and the extreme moments) and the envelope drawn on the frame; no empty main chart.
     CHECK(fs::exists(solved.dir / "static_frame_envelope.png"));
@@ -369,5 +372,43 @@ TEST_SUITE("load cases") {
     CHECK(text.find("    combination 'k350' = 350 q") != std::string::npos);
     CHECK(text.find("combination 'k350' = 350 q:") == std::string::npos);  // no full block
     CHECK(text.find("the 20 of the largest bending moment among 30") != std::string::npos);
+  }
+
+  TEST_CASE("machine_platform.yaml's summary: round-off shown as 0, the closed forms kept") {
+    const test::SolvedDeck solved =
+        test::solveShippedDeckToScratch("machine_platform.yaml", "platform_summary");
+    const std::string& text = solved.process.out;
+    const Deck deck = readDeck(loadDeckFile(test::problemsDir() / "machine_platform.yaml"), {});
+    const double F = test::deckValue(deck, "F"), h = test::deckValue(deck, "h");
+    // The belt pulls the platform along x: four equal columns, each clamped at both ends
+    // (the floor does not turn), carry F/4 and the moment F/4 h/2 at each end. Out of plane
+    // (z, mx, my) the frame is symmetric and unloaded: those components vanish exactly, and
+    // the solve leaves them as round-off of 1e-15 N beside 5000 N.
+    const std::size_t belt = text.find("case 'belt':");
+    REQUIRE(belt != std::string::npos);
+    const std::string a1 = lineWith(text, "        A1          fx ", belt);
+    CHECK(numbersAfter(a1, "fx ").at(0) == doctest::Approx(-F / 4).epsilon(5e-6));
+    CHECK(numbersAfter(a1, "mz ").at(0) == doctest::Approx(F / 4 * h / 2).epsilon(5e-6));
+    // Printed as a bare 0 (formatValue prints exact zero as "0"), not as 1.27145e-15.
+    CHECK(a1.find("fz 0 N ") != std::string::npos);
+    CHECK(a1.find("mx 0 N m ") != std::string::npos);
+    CHECK(a1.find("my 0 N m ") != std::string::npos);
+    const std::string b0 = lineWith(text, "        B0          at ", belt);
+    CHECK(b0.find("uz 0 m ") != std::string::npos);
+    CHECK(b0.find("ry 0 rad ") != std::string::npos);
+    CHECK(numbersAfter(b0, "ux ").at(0) > 0);
+    // A member resultant that is round-off all along has no place: "Vz 0", not "Vz 1e-15 @ 1.5".
+    const std::string c0 = lineWith(text, "        c0          N ", belt);
+    CHECK(c0.find("Vz 0 ") != std::string::npos);
+    CHECK(c0.find("Vz 0 @") == std::string::npos);
+    CHECK(numbersAfter(c0, "Vy ").at(0) == doctest::Approx(-F / 4).epsilon(5e-6));
+    // The startup case twists the platform: every column bends about both axes, and its small
+    // but real out-of-plane values stay.
+    const std::size_t startup = text.find("case 'startup':");
+    REQUIRE(startup != std::string::npos);
+    const std::string a0 = lineWith(text, "        A0          fx ", startup);
+    CHECK(numbersAfter(a0, "fz ").at(0) != 0);
+    CHECK(numbersAfter(a0, "my ").at(0) != 0);
+    fs::remove_all(solved.dir.parent_path());
   }
 }
