@@ -40,7 +40,7 @@ void printCase(std::ostream& out, const Deck& deck, const RunResult& run, const 
   const NoiseFloor floor = noiseFloorOf(*run.model, c.statics, &x);
   printReactions(out, c.statics, floor, "      ", units);
   printPointDisplacements(out, deck, run, c.statics, floor, "      ", units);
-  printStressPeaks(out, deck, *run.model, x.peaks, "      ", units);
+  printStressPeaks(out, deck, *run.model, x.peaks, floor, "      ", units);
   printMemberExtremes(out, deck, *run.model, x, floor, "      ", units);
   for (const std::string& w : c.warnings) out << "      warning: " << w << "\n";
 }

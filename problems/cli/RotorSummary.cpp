@@ -120,9 +120,14 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RotorModesRes
   printCoefficientsUsed(out, r.coefficients);
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const RotorMode& m = r.modes[i];
+    // Damping within what the eigensolver's round-off gives in either sign is neutral: 0, not
+    // +-1e-16 (an undamped rotor's modes), whose sign would read as a verdict.
+    const bool neutral = std::abs(m.dampingRatio) <= m.roundOff;
     out << "    mode " << i + 1 << "  " << hzText(m.dampedFrequencyHz, units) << "  damping "
-        << formatValue(m.dampingRatio) << "  log decrement "
-        << (std::isfinite(m.logDecrement) ? formatValue(m.logDecrement) : std::string("inf"))
+        << formatValue(neutral ? 0.0 : m.dampingRatio) << "  log decrement "
+        << (neutral                         ? std::string("0")
+            : std::isfinite(m.logDecrement) ? formatValue(m.logDecrement)
+                                            : std::string("inf"))
         << "  " << whirlName(m.whirl) << "\n";
   }
   // The pads' own modes (tilting pads kept as dofs), apart: their eigenvalue and the share of

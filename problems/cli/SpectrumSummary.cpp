@@ -6,6 +6,7 @@
 
 #include "fem/assembly/MemberExtrema.hpp"
 #include "problems/cli/Summary.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 #include "problems/output/structure/SpectrumOutput.hpp"
 
 namespace beamrotor::cli {
@@ -44,7 +45,10 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
       sum[d] += m.effectiveMass[d];
       char percent[16];
       std::snprintf(percent, sizeof percent, "%.1f %%", 100 * sum[d] / r.modal.totalMass[d]);
-      out << padded(formatValue(m.effectiveMass[d] * kg.factor), 13) << padded(percent, 8);
+      // A mode that does not move the mass along d shows 0, not its round-off (NoiseFloor.hpp).
+      const double shown =
+          m.effectiveMass[d] <= kNegligibleShare * r.modal.totalMass[d] ? 0.0 : m.effectiveMass[d];
+      out << padded(formatValue(shown * kg.factor), 13) << padded(percent, 8);
     }
     out << "\n";
   }

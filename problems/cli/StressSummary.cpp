@@ -1,5 +1,7 @@
 #include "problems/cli/StressSummary.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -43,12 +45,17 @@ std::pair<Peak, Peak> peaksOf(const Model& model, const std::vector<ElementPeaks
   return out;
 }
 
-/// "  largest normal stress 12.3 MPa at x = 0.575 m (rod)" without the line's end.
+/// "  largest normal stress 12.3 MPa at x = 0.575 m (rod)" without the line's end; a value at or
+/// below `floor` as 0, without a place.
 void printPeak(std::ostream& out, const char* what, const Deck& deck, const Model& model,
-               const Peak& p, const std::string& indent, const OutputUnits& units) {
+               const Peak& p, double floor, const std::string& indent,
+               const OutputUnits& units) {
   const LineElement& line = *asLine(model.elements()[p.peak.place.element]);
-  out << indent << "largest " << what << " " << valueText(p.peak.value, "Pa", units, {1e-6, "MPa"})
-      << " at ";
+  const bool zero = std::abs(p.peak.value) <= floor;
+  out << indent << "largest " << what << " "
+      << valueText(zero ? 0.0 : p.peak.value, "Pa", units, {1e-6, "MPa"});
+  if (zero) return;
+  out << " at ";
   if (const auto member = memberLocation(model, p.peak.place.element, p.peak.place.s)) {
     out << valueText(member->second, "m", units) << " along member "
         << model.members()[member->first].first << " (" << line.section().name << ")";
@@ -67,13 +74,13 @@ const StaticResult* firstStatic(const RunResult& r) {
 }  // namespace
 
 void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
-                      const std::vector<ElementPeaks>& peaks, const std::string& indent,
-                      const OutputUnits& units) {
+                      const std::vector<ElementPeaks>& peaks, const NoiseFloor& floor,
+                      const std::string& indent, const OutputUnits& units) {
   const auto [normal, shear] = peaksOf(model, peaks, 0);
   if (!normal.found) return;  // no beams
-  printPeak(out, "normal stress", deck, model, normal, indent, units);
+  printPeak(out, "normal stress", deck, model, normal, floor.stress, indent, units);
   out << "\n";
-  printPeak(out, "shear stress ", deck, model, shear, indent, units);
+  printPeak(out, "shear stress ", deck, model, shear, floor.stress, indent, units);
   out << "\n";
 }
 
@@ -87,12 +94,17 @@ void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResul
       if (n.found && (!normal.found || n.peak.value > normal.peak.value)) normal = n;
       if (t.found && (!shear.found || t.peak.value > shear.peak.value)) shear = t;
     }
+  // Round-off against the largest stress of the sweep (NoiseFloor.hpp's rule).
+  const double floor =
+      kNegligibleShare * std::max(std::abs(normal.peak.value), std::abs(shear.peak.value));
   for (const auto& [what, peak] :
        {std::pair{"normal stress", &normal}, std::pair{"shear stress ", &shear}}) {
     if (!peak->found) continue;
-    printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak, "  ", units);
-    out << " at " << sweep.parameter << " = "
-        << valueText(sweep.values[peak->run], sweep.unit, units) << "\n";
+    printPeak(out, what, deck, *sweep.runs[peak->run].model, *peak, floor, "  ", units);
+    if (std::abs(peak->peak.value) > floor)
+      out << " at " << sweep.parameter << " = "
+          << valueText(sweep.values[peak->run], sweep.unit, units);
+    out << "\n";
   }
 }
 

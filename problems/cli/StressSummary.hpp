@@ -10,15 +10,17 @@
 #include "fem/model/Results.hpp"
 #include "problems/deck/Deck.hpp"
 #include "problems/deck/OutputUnits.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor::cli {
 
 /// "  largest normal stress 49.9 MPa at x = 0.575 m (rod)" and the shear stress line, from a
-/// solution's element peaks (elementPeaks), each line led by `indent`.
+/// solution's element peaks (elementPeaks), each line led by `indent`; a largest stress at or
+/// below `floor` (round-off: a truss's shear) is printed as 0 without a place.
 void printStressPeaks(std::ostream& out, const Deck& deck, const Model& model,
-                      const std::vector<ElementPeaks>& peaks, const std::string& indent = "  ",
-                      const OutputUnits& units = {});
+                      const std::vector<ElementPeaks>& peaks, const NoiseFloor& floor,
+                      const std::string& indent = "  ", const OutputUnits& units = {});
 
 /// The same over every run of a sweep (first static analysis of each), with "at eta = 0.4".
 void printSweepStressPeaks(std::ostream& out, const Deck& deck, const SweepResult& sweep,

@@ -95,7 +95,7 @@ void printStatic(std::ostream& out, const Deck& deck, const RunResult& run,
                         : "in action, N = " + valueText(m.force, "N", units))
             << "\n";
     }
-    printStressPeaks(out, deck, *run.model, extremes.own->peaks, "  ", units);
+    printStressPeaks(out, deck, *run.model, extremes.own->peaks, floor, "  ", units);
     printMemberExtremes(out, deck, *run.model, *extremes.own, floor, "  ", units);
   }
   printCases(out, deck, run, a, extremes, units);

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <sstream>
 
 #include "fem/modal/Modal.hpp"
+#include "problems/cli/RotorSummary.hpp"
 #include "problems/output/rotor/RotorJson.hpp"
 #include "problems/run/Study.hpp"
 #include "problems/scenes/FormeShaft.hpp"
@@ -142,6 +144,27 @@ TEST_SUITE("forme shaft decks") {
       CHECK(soft[i].rpm < rigid[i].rpm);
       MESSAGE("critical speed " << i + 1 << ": steel " << soft[i].rpm << " rpm, rigid "
                                 << rigid[i].rpm << " rpm");
+    }
+  }
+
+  TEST_CASE("spinning shaft deck: its undamped modes print damping 0, not round-off of a sign") {
+    // The bearings are springs without damping and the shaft has none: M q'' + Omega G q' +
+    // K q = 0 with G skew conserves energy, so every eigenvalue is imaginary. The eigensolver
+    // leaves damping ratios of +-1e-17 to 1e-16, whose sign a reader would take for a verdict.
+    const RunResult steel = solveFormeDeck("forme_shaft_rotor.yaml");
+    const AnalysisOutcome& a = analysisOfType(steel, "rotor");
+    const RotorModesResult& r = *resultOf<RotorModesResult>(a);
+    REQUIRE(r.modes.size() == 4);
+    for (const RotorMode& m : r.modes) CHECK(std::abs(m.dampingRatio) <= m.roundOff);
+    std::ostringstream summary;
+    cli::printRotor(summary, a, r);
+    const std::string text = summary.str();
+    for (const char* mode : {"mode 1 ", "mode 2 ", "mode 3 ", "mode 4 "}) {
+      CAPTURE(mode);
+      const std::size_t at = text.find(mode);
+      REQUIRE(at != std::string::npos);
+      const std::string line = text.substr(at, text.find('\n', at) - at);
+      CHECK(line.find("  damping 0  log decrement 0  ") != std::string::npos);
     }
   }
 }

@@ -411,4 +411,17 @@ TEST_SUITE("load cases") {
     CHECK(numbersAfter(a0, "my ").at(0) != 0);
     fs::remove_all(solved.dir.parent_path());
   }
+
+  TEST_CASE("braced_panel.yaml's summary: the pin-jointed panel's shear is 0, not round-off") {
+    const test::SolvedDeck solved =
+        test::solveShippedDeckToScratch("braced_panel.yaml", "braced_summary");
+    const std::string& text = solved.process.out;
+    // The stretched rod A-D carries the deck's 12.5 kN brace force on A = 3.14 cm^2 (its
+    // check); nothing in the pin-jointed panel bends, so no section carries shear: the solve
+    // leaves 5.8e-17 MPa of it, shown as 0 and without a place.
+    const std::string normal = lineWith(text, "  largest normal stress ");
+    CHECK(numbersAfter(normal, "stress ").at(0) == doctest::Approx(12500 / 3.14e-4 * 1e-6).epsilon(5e-6));
+    CHECK(lineWith(text, "  largest shear stress ") == "  largest shear stress  0 MPa");
+    fs::remove_all(solved.dir.parent_path());
+  }
 }

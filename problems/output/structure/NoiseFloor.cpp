@@ -55,16 +55,21 @@ NoiseFloor noiseFloorOf(const Model& model, const StaticResult& r,
     translation = std::max(translation, r.displacement.row(i).head<3>().norm());
     rotation = std::max(rotation, r.displacement.row(i).tail<3>().norm());
   }
-  double force = 0, moment = 0;
+  double force = 0, moment = 0, stress = 0;
   takeLargest(r.reactions, force, moment);
   takeLargest(r.elementForces, force, moment);
-  if (extremes)
+  if (extremes) {
+    for (const ElementPeaks& p : extremes->peaks)
+      stress = std::max({stress, std::abs(p.stress.value), std::abs(p.shear.value)});
     for (const auto& member : extremes->ranges)
       for (std::size_t k = 0; k < member.size(); ++k) {
         double& largest = isMomentComponent(kForceComponents[k]) ? moment : force;
         largest = std::max({largest, std::abs(member[k].max.value), std::abs(member[k].min.value)});
       }
-  return floorOfScales(model, r.roundOff, translation, rotation, force, moment);
+  }
+  NoiseFloor floor = floorOfScales(model, r.roundOff, translation, rotation, force, moment);
+  floor.stress = std::max(r.roundOff, kNegligibleShare) * stress;
+  return floor;
 }
 
 NoiseFloor noiseFloorOf(const Model& model, const CaseEnvelope& envelope, double roundOff) {

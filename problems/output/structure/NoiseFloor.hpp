@@ -24,6 +24,7 @@ struct NoiseFloor {
   double rotation = 0;     ///< rad
   double force = 0;        ///< N
   double moment = 0;       ///< N m
+  double stress = 0;       ///< Pa, normal or shear
 
   /// `value`, or 0 when its magnitude is at or below the floor of a displacement along `d`.
   double motion(double value, Dof d) const;
@@ -36,7 +37,7 @@ struct NoiseFloor {
 /// Scales: translations, the largest nodal translation; rotations, the largest rotation or
 /// the largest translation over the model's size; forces, the largest reaction, spring force or
 /// member force (N, Vy, Vz); moments, the largest of their own kind or the force scale times
-/// the model's size.
+/// the model's size; stresses, the largest normal or shear stress of the extremes' peaks.
 NoiseFloor noiseFloorOf(const Model& model, const StaticResult& r,
                         const StaticExtremes* extremes = nullptr);
 
