@@ -22,6 +22,7 @@
 #include "problems/cli/TransientSummary.hpp"
 #include "problems/deck/ShownFieldUnit.hpp"
 #include "problems/output/ShownCheck.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 #include "problems/output/structure/Reactions.hpp"
 #include "problems/run/Overloaded.hpp"
 
@@ -267,17 +268,32 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
   out << "  ";
   for (const std::string& h : headers) out << padded(h, kColumn);
   out << "\n";
+  std::vector<std::vector<double>> rows;
   for (std::size_t k = 0; k < sweep.runs.size(); ++k) {
     const RunResult& run = sweep.runs[k];
-    out << "  " << padded(formatValue(sweep.values[k] * swept.factor), kColumn);
-    for (const auto& [name, value] : run.reported) out << padded(formatValue(value), kColumn);
+    std::vector<double>& row = rows.emplace_back();
+    row.push_back(sweep.values[k] * swept.factor);
+    for (const auto& [name, value] : run.reported) row.push_back(value);
     if (const StaticResult* s = staticOf(run))
       for (const SupportReactions& support : reactionsBySupport(*s))
         for (const auto& [dof, value] : support.components)
-          out << padded(formatValue(value * (isRotation(dof) ? moment : force).factor), kColumn);
+          row.push_back(value * (isRotation(dof) ? moment : force).factor);
     if (const ModalResult* m = modalOf(run))
       for (int i = 0; i < frequencies && i < int(m->modes.size()); ++i)
-        out << padded(formatValue(m->modes[i].frequencyHz * hz.factor), kColumn);
+        row.push_back(m->modes[i].frequencyHz * hz.factor);
+  }
+  // Each column is one quantity: a value below its largest's round-off is shown as 0 (a
+  // reported 1 - cos(2 pi) as 0, not 1e-33; NoiseFloor.hpp's rule).
+  std::vector<double> largest(headers.size(), 0.0);
+  for (const std::vector<double>& row : rows)
+    for (std::size_t c = 0; c < row.size() && c < largest.size(); ++c)
+      largest[c] = std::max(largest[c], std::abs(row[c]));
+  for (const std::vector<double>& row : rows) {
+    out << "  ";
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      const bool noise = c < largest.size() && std::abs(row[c]) <= kNegligibleShare * largest[c];
+      out << padded(formatValue(noise ? 0.0 : row[c]), kColumn);
+    }
     out << "\n";
   }
   out << "  (reactions in " << force.unit << " and " << moment.unit << " on the structure)\n";
