@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -545,11 +546,50 @@ void requireFiniteNumbers(const Json& doc, const std::string& document) {
   requireFiniteAt(doc, "", document);
 }
 
+namespace {
+
+/// Where nlohmann's serializer puts its text: a buffer of its own, handed to the stream whenever
+/// it fills, so that a document of hundreds of MB is never held as one string (its growth by
+/// doubling held up to three times the file, all of it fresh memory the kernel zeroes).
+class BufferedStreamOutput : public nlohmann::detail::output_adapter_protocol<char> {
+ public:
+  explicit BufferedStreamOutput(std::ostream& out) : out_(out) { buffer_.reserve(kBytes); }
+  ~BufferedStreamOutput() override = default;
+  BufferedStreamOutput(const BufferedStreamOutput&) = delete;
+  BufferedStreamOutput& operator=(const BufferedStreamOutput&) = delete;
+
+  void write_character(char c) override {
+    buffer_.push_back(c);
+    if (buffer_.size() >= kBytes) flush();
+  }
+  void write_characters(const char* s, std::size_t length) override {
+    buffer_.append(s, length);
+    if (buffer_.size() >= kBytes) flush();
+  }
+  void flush() {
+    out_.write(buffer_.data(), std::streamsize(buffer_.size()));
+    buffer_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kBytes = std::size_t(1) << 20;
+  std::ostream& out_;
+  std::string buffer_;
+};
+
+}  // namespace
+
 void writeJson(const Json& doc, const std::filesystem::path& file) {
-  // Text that is not valid UTF-8 (a file name in another encoding) is shown as U+FFFD rather
-  // than failing the whole write.
-  const std::string text = doc.dump(2, ' ', false, Json::error_handler_t::replace);
-  writeFile(file, [&](std::ostream& out) { out << text << '\n'; });
+  writeFile(file, [&](std::ostream& out) {
+    // What doc.dump(2, ' ', false, replace) gives, streamed: the same serializer. Text that is
+    // not valid UTF-8 (a file name in another encoding) is shown as U+FFFD rather than failing
+    // the whole write.
+    const auto buffered = std::make_shared<BufferedStreamOutput>(out);
+    nlohmann::detail::serializer<Json> serializer(buffered, ' ', Json::error_handler_t::replace);
+    serializer.dump(doc, true, false, 2);
+    buffered->write_character('\n');
+    buffered->flush();
+  });
 }
 
 }  // namespace beamrotor
