@@ -32,6 +32,12 @@
 
 namespace beamrotor {
 
+Json objectWithRoom(std::size_t entries) {
+  Json out = Json::object();
+  out.get_ref<Json::object_t&>().reserve(entries);
+  return out;
+}
+
 Json& appendNew(Json& object, std::string key, Json value) {
   auto& entries = object.get_ref<Json::object_t&>();
   using Entries = std::vector<Json::object_t::value_type>;
@@ -69,7 +75,7 @@ Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
   const bool frame = !model.members().empty();
   std::map<int, std::vector<MemberEndRotation>> ends;
   if (frame && !r.hinges.empty()) ends = memberEndRotations({model, r.displacement}, r.hinges);
-  Json out = Json::object();
+  Json out = objectWithRoom(points.size());
   for (const auto& [node, name] : points) {
     Json& components = appendNew(out, name);
     for (Dof d : kAllDofs)
@@ -145,7 +151,9 @@ void stressPeaksJson(Json& out, const Model& model, const std::vector<ElementPea
 Json caseJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
               const CaseOutcome& c, const StaticExtremes& extremes, const std::string& stem,
               bool memberDetail) {
-  Json out = {{"name", c.name}, {"combination", c.combination}};
+  Json out = objectWithRoom(16);
+  out["name"] = c.name;
+  out["combination"] = c.combination;
   if (c.combination) {
     Json factors = Json::object();
     for (const auto& [name, factor] : c.factors) factors[name] = factor;
@@ -185,6 +193,7 @@ Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases
                   const CaseEnvelope& envelope, const Model& model) {
   Json out = {{"reactions", Json::object()}, {"displacements", Json::object()},
               {"members", Json::object()}};
+  out["members"].get_ref<Json::object_t&>().reserve(envelope.members.size());
   const auto forces = [&](const char* key, const auto& list) {
     for (const auto& [r, range] : list)
       out[key][r.support][std::string(reactionName(r.dof))] = {
@@ -246,7 +255,9 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   const StaticExtremes& own = extremes.own.value();
   const StaticResult& r = *staticsOf(a);
   const std::string stem = fileStem(a.name);
-  Json out = {{"type", a.type}, {"name", a.name}};
+  Json out = objectWithRoom(32);
+  out["type"] = a.type;
+  out["name"] = a.name;
   out["reactions"] = reactionsJson(r);
   if (!r.elementForces.empty()) out["springs"] = forcesJson(r.elementForces);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
@@ -472,7 +483,8 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
   const DofMap dofs(model);
   const auto carried = kindsCarried(model, dofs);
 
-  Json doc = {{"deck", {{"name", run.deckName}, {"path", run.deckPath}}}};
+  Json doc = objectWithRoom(16);
+  doc["deck"] = {{"name", run.deckName}, {"path", run.deckPath}};
   doc["model"] = modelJson(run, dofs);
   Json analyses = Json::array();
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
@@ -506,7 +518,7 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
         a.result));
     if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;
   }
-  doc["analyses"] = analyses;
+  doc["analyses"] = std::move(analyses);
   doc["checks"] = checksJson(run.checks);
   doc["skipped_checks"] = run.skippedChecks;
   doc["parameters"] = parametersJson(run.parameters);
