@@ -117,9 +117,16 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
   const std::vector<CaseOutcome>& cases = casesOf(a);
   if (cases.empty()) return;
   p.envelope = caseEnvelope(model, cases, p.extremes->cases);
-  for (int i : writtenCases(*p.envelope, cases.size(), planar, allCases))
-    p.cases.push_back({&cases[i], i, caseVtu(p.stem, i + 1), sampleStatics(cases[i].on(model)),
-                       &p.extremes->cases.at(i), elementPeaks(cases[i].on(model))});
+  const bool chords = caseChordDeflections(model, cases.size());
+  SolutionPolynomials summed;
+  for (int i : writtenCases(*p.envelope, cases.size(), planar, allCases)) {
+    const StaticExtremes& x = p.extremes->cases.at(i);
+    p.cases.push_back({&cases[i], i, caseVtu(p.stem, i + 1), sampleStatics(cases[i].on(model)), &x,
+                       elementPeaks(cases[i].on(model)), std::nullopt});
+    // The same computation as runExtremes', places kept: the same values.
+    if (x.ranges.empty() && !x.rangeValues.empty())
+      p.cases.back().placed = caseExtremes(model, cases[i], summed, chords, RangesKept::withPlaces);
+  }
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
   for (const CaseOutcome& c : casesOf(a))
