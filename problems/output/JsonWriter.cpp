@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -30,6 +31,12 @@
 #include "problems/output/structure/SpectrumOutput.hpp"
 
 namespace beamrotor {
+
+Json objectWithRoom(std::size_t entries) {
+  Json out = Json::object();
+  out.get_ref<Json::object_t&>().reserve(entries);
+  return out;
+}
 
 Json& appendNew(Json& object, std::string key, Json value) {
   auto& entries = object.get_ref<Json::object_t&>();
@@ -68,7 +75,7 @@ Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
   const bool frame = !model.members().empty();
   std::map<int, std::vector<MemberEndRotation>> ends;
   if (frame && !r.hinges.empty()) ends = memberEndRotations({model, r.displacement}, r.hinges);
-  Json out = Json::object();
+  Json out = objectWithRoom(points.size());
   for (const auto& [node, name] : points) {
     Json& components = appendNew(out, name);
     for (Dof d : kAllDofs)
@@ -144,7 +151,9 @@ void stressPeaksJson(Json& out, const Model& model, const std::vector<ElementPea
 Json caseJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
               const CaseOutcome& c, const StaticExtremes& extremes, const std::string& stem,
               bool memberDetail) {
-  Json out = {{"name", c.name}, {"combination", c.combination}};
+  Json out = objectWithRoom(16);
+  out["name"] = c.name;
+  out["combination"] = c.combination;
   if (c.combination) {
     Json factors = Json::object();
     for (const auto& [name, factor] : c.factors) factors[name] = factor;
@@ -184,6 +193,7 @@ Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases
                   const CaseEnvelope& envelope, const Model& model) {
   Json out = {{"reactions", Json::object()}, {"displacements", Json::object()},
               {"members", Json::object()}};
+  out["members"].get_ref<Json::object_t&>().reserve(envelope.members.size());
   const auto forces = [&](const char* key, const auto& list) {
     for (const auto& [r, range] : list)
       out[key][r.support][std::string(reactionName(r.dof))] = {
@@ -245,7 +255,9 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   const StaticExtremes& own = extremes.own.value();
   const StaticResult& r = *staticsOf(a);
   const std::string stem = fileStem(a.name);
-  Json out = {{"type", a.type}, {"name", a.name}};
+  Json out = objectWithRoom(32);
+  out["type"] = a.type;
+  out["name"] = a.name;
   out["reactions"] = reactionsJson(r);
   if (!r.elementForces.empty()) out["springs"] = forcesJson(r.elementForces);
   out["displacements"] = pointDisplacementsJson(model, dofs, carried, r);
@@ -471,7 +483,8 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
   const DofMap dofs(model);
   const auto carried = kindsCarried(model, dofs);
 
-  Json doc = {{"deck", {{"name", run.deckName}, {"path", run.deckPath}}}};
+  Json doc = objectWithRoom(16);
+  doc["deck"] = {{"name", run.deckName}, {"path", run.deckPath}};
   doc["model"] = modelJson(run, dofs);
   Json analyses = Json::array();
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
@@ -505,7 +518,7 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
         a.result));
     if (!a.warnings.empty()) analyses.back()["warnings"] = a.warnings;
   }
-  doc["analyses"] = analyses;
+  doc["analyses"] = std::move(analyses);
   doc["checks"] = checksJson(run.checks);
   doc["skipped_checks"] = run.skippedChecks;
   doc["parameters"] = parametersJson(run.parameters);
@@ -545,11 +558,50 @@ void requireFiniteNumbers(const Json& doc, const std::string& document) {
   requireFiniteAt(doc, "", document);
 }
 
+namespace {
+
+/// Where nlohmann's serializer puts its text: a buffer of its own, handed to the stream whenever
+/// it fills, so that a document of hundreds of MB is never held as one string (its growth by
+/// doubling held up to three times the file, all of it fresh memory the kernel zeroes).
+class BufferedStreamOutput : public nlohmann::detail::output_adapter_protocol<char> {
+ public:
+  explicit BufferedStreamOutput(std::ostream& out) : out_(out) { buffer_.reserve(kBytes); }
+  ~BufferedStreamOutput() override = default;
+  BufferedStreamOutput(const BufferedStreamOutput&) = delete;
+  BufferedStreamOutput& operator=(const BufferedStreamOutput&) = delete;
+
+  void write_character(char c) override {
+    buffer_.push_back(c);
+    if (buffer_.size() >= kBytes) flush();
+  }
+  void write_characters(const char* s, std::size_t length) override {
+    buffer_.append(s, length);
+    if (buffer_.size() >= kBytes) flush();
+  }
+  void flush() {
+    out_.write(buffer_.data(), std::streamsize(buffer_.size()));
+    buffer_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kBytes = std::size_t(1) << 20;
+  std::ostream& out_;
+  std::string buffer_;
+};
+
+}  // namespace
+
 void writeJson(const Json& doc, const std::filesystem::path& file) {
-  // Text that is not valid UTF-8 (a file name in another encoding) is shown as U+FFFD rather
-  // than failing the whole write.
-  const std::string text = doc.dump(2, ' ', false, Json::error_handler_t::replace);
-  writeFile(file, [&](std::ostream& out) { out << text << '\n'; });
+  writeFile(file, [&](std::ostream& out) {
+    // What doc.dump(2, ' ', false, replace) gives, streamed: the same serializer. Text that is
+    // not valid UTF-8 (a file name in another encoding) is shown as U+FFFD rather than failing
+    // the whole write.
+    const auto buffered = std::make_shared<BufferedStreamOutput>(out);
+    nlohmann::detail::serializer<Json> serializer(buffered, ' ', Json::error_handler_t::replace);
+    serializer.dump(doc, true, false, 2);
+    buffered->write_character('\n');
+    buffered->flush();
+  });
 }
 
 }  // namespace beamrotor

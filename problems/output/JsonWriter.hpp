@@ -43,6 +43,12 @@ using Json = nlohmann::ordered_json;
 /// members or named points).
 Json& appendNew(Json& object, std::string key, Json value = Json::object());
 
+/// An empty object with storage for `entries` entries. ordered_json keeps an object's entries
+/// in a vector of pairs whose keys are const, so growing it copies every subtree it holds (a
+/// run's analyses, a static analysis' cases): objects that will hold large ones start with
+/// room for all their entries.
+Json objectWithRoom(std::size_t entries);
+
 /// Reactions per support: {support: {fx ... mz}}, the components the support holds.
 Json reactionsJson(const StaticResult& r);
 /// The same of any such forces by name, e.g. springs' and bearings' (StaticResult::elementForces).

@@ -77,7 +77,7 @@ void drawFrameCharts(const PreparedRun& prepared, const PreparedAnalysis& p,
   if (p.envelopeStations.empty()) return;
   const std::vector<CaseOutcome>& cases = casesOf(a);
   for (int k : governingCombinations(*p.envelope, planar))
-    draw(p.caseAt(k)->stations, p.extremes->cases.at(k), p.caseAt(k)->outcome->statics.displacement,
+    draw(p.caseAt(k)->stations, p.caseAt(k)->withPlaces(), p.caseAt(k)->outcome->statics.displacement,
          ", combination " + cases[k].name,
          caseFrameChart(p.stem, k + 1));
   std::vector<std::string> names;

@@ -63,18 +63,11 @@ Dimension caseValueDimension(const std::string& quantity, const std::string& com
   return first == 'm' ? dim::moment : dim::force;
 }
 
-/// The load cases and combinations of a static analysis's results.json entry as one table:
-/// reactions, spring and bearing forces, point displacements and member resultant extremes,
-/// one value per row with its unit (`units`, SI where none is set).
-CsvTable loadCasesTable(const Json& analysis, const std::string& file, const OutputUnits& units) {
-  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
-                    {"component", ""}, {"value", ""}, {"unit", ""}});
-  const auto addRow = [&](const std::string& name, long long combination,
-                          const std::string& quantity, const std::string& at,
-                          const std::string& component, double si) {
-    const OutputUnits::Shown shown = units.ofSI(caseValueDimension(quantity, component));
-    t.addRow({name, combination, quantity, at, component, si * shown.factor, shown.unit});
-  };
+/// Calls visit(name, combination, quantity, at, component, value) for every value of the load
+/// cases and combinations of a static analysis's results.json entry, in the table's order:
+/// reactions, spring and bearing forces, point displacements and member resultant extremes.
+template <class Visit>
+void forEachCaseValue(const Json& analysis, const Visit& visit) {
   for (const Json& c : analysis.at("cases")) {
     const std::string name = c.at("name").get<std::string>();
     const long long combination = c.at("combination").get<bool>() ? 1 : 0;
@@ -84,18 +77,36 @@ CsvTable loadCasesTable(const Json& analysis, const std::string& file, const Out
       if (c.contains(key))
         for (const auto& where : c.at(key).items())
           for (const auto& component : where.value().items())
-            addRow(name, combination, quantity, where.key(), component.key(),
-                   component.value().get<double>());
+            visit(name, combination, quantity, where.key(), component.key(),
+                  component.value().template get<double>());
     if (!c.contains("members")) continue;
     for (const auto& member : c.at("members").items())
       for (const auto& component : member.value().items()) {
         const Json& v = component.value();
         if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
         for (const char* extreme : {"max", "min"})
-          addRow(name, combination, "member", member.key(), component.key() + " " + extreme,
-                 v.at(extreme).at("value").get<double>());
+          visit(name, combination, "member", member.key(), component.key() + " " + extreme,
+                v.at(extreme).at("value").template get<double>());
       }
   }
+}
+
+/// The load cases and combinations of a static analysis's results.json entry as one table,
+/// one value per row with its unit (`units`, SI where none is set). The rows are counted
+/// first and reserved: the table of 200 combinations of a large frame holds millions.
+CsvTable loadCasesTable(const Json& analysis, const std::string& file, const OutputUnits& units) {
+  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
+                    {"component", ""}, {"value", ""}, {"unit", ""}});
+  std::size_t rows = 0;
+  forEachCaseValue(analysis, [&](const std::string&, long long, const std::string&,
+                                 const std::string&, const std::string&, double) { ++rows; });
+  t.reserveRows(rows);
+  forEachCaseValue(analysis, [&](const std::string& name, long long combination,
+                                 const std::string& quantity, const std::string& at,
+                                 const std::string& component, double si) {
+    const OutputUnits::Shown shown = units.ofSI(caseValueDimension(quantity, component));
+    t.addRow({name, combination, quantity, at, component, si * shown.factor, shown.unit});
+  });
   return t;
 }
 
@@ -106,9 +117,16 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
   const std::vector<CaseOutcome>& cases = casesOf(a);
   if (cases.empty()) return;
   p.envelope = caseEnvelope(model, cases, p.extremes->cases);
-  for (int i : writtenCases(*p.envelope, cases.size(), planar, allCases))
-    p.cases.push_back({&cases[i], i, caseVtu(p.stem, i + 1), sampleStatics(cases[i].on(model)),
-                       &p.extremes->cases.at(i), elementPeaks(cases[i].on(model))});
+  const bool chords = caseChordDeflections(model, cases.size());
+  SolutionPolynomials summed;
+  for (int i : writtenCases(*p.envelope, cases.size(), planar, allCases)) {
+    const StaticExtremes& x = p.extremes->cases.at(i);
+    p.cases.push_back({&cases[i], i, caseVtu(p.stem, i + 1), sampleStatics(cases[i].on(model)), &x,
+                       elementPeaks(cases[i].on(model)), std::nullopt});
+    // The same computation as runExtremes', places kept: the same values.
+    if (x.ranges.empty() && !x.rangeValues.empty())
+      p.cases.back().placed = caseExtremes(model, cases[i], summed, chords, RangesKept::withPlaces);
+  }
   std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
   for (const CaseOutcome& c : casesOf(a))

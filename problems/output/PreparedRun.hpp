@@ -30,6 +30,12 @@ struct PreparedCase {
   std::vector<StaticStation> stations;
   const StaticExtremes* extremes = nullptr;  ///< its extremes (PreparedRun::extremes)
   std::vector<ElementPeaks> peaks;  ///< every line element's (elementPeaks), for its VTK file
+  /// Its extremes again with the member ranges' places, where runExtremes kept their values
+  /// alone (RangesKept::values): its charts draw them.
+  std::optional<StaticExtremes> placed;
+
+  /// Its extremes with the member ranges' places.
+  const StaticExtremes& withPlaces() const { return placed ? *placed : *extremes; }
 };
 
 /// What one analysis writes, computed before writing.

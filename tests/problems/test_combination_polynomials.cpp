@@ -20,6 +20,7 @@
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
 #include "problems/output/PreparedRun.hpp"
+#include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/structure/LineSampling.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 #include "problems/output/structure/StaticExtremes.hpp"
@@ -414,5 +415,48 @@ TEST_SUITE("load cases") {
         CHECK(stations[m][i].minBy == one[i].minBy);
       }
     }
+  }
+
+  TEST_CASE("member ranges kept as values alone: the same values and the same envelope") {
+    // What runExtremes keeps of many combinations of a large frame (RangesKept::values), against
+    // the ranges with their places and against each member's ranges evaluated directly.
+    const Study s = test::solveDeckText(frameDeck(kCases), "frame_values.yaml");
+    const Model& model = *s.run->model;
+    const std::vector<CaseOutcome>& cases = casesOf(s.run->analyses.front());
+    REQUIRE(cases.size() == 6);
+    SolutionPolynomials summed;
+    std::vector<StaticExtremes> placed, values;
+    for (const CaseOutcome& c : cases) {
+      placed.push_back(caseExtremes(model, c, summed, false, RangesKept::withPlaces));
+      values.push_back(caseExtremes(model, c, summed, false, RangesKept::values));
+      CHECK(values.back().ranges.empty());
+      REQUIRE(rangedMembers(values.back()) == model.members().size());
+      REQUIRE(rangedMembers(placed.back()) == model.members().size());
+    }
+    for (std::size_t k = 0; k < cases.size(); ++k)
+      for (std::size_t m = 0; m < model.members().size(); ++m) {
+        // The direct evaluation: the case's own resultants (a combination's summed polynomials
+        // give them to round-off: the bits are compared with the places kept, below).
+        const auto direct = memberForceRanges(cases[k].on(model), model.members()[m].second);
+        for (std::size_t f = 0; f < 6; ++f) {
+          const RangeValues v = rangeValuesOf(values[k], m, f);
+          CHECK(v.max == placed[k].ranges[m][f].max.value);
+          CHECK(v.min == placed[k].ranges[m][f].min.value);
+          // Round-off of a factored sum of three cases' resultants (about 1e6 N m at most).
+          const double scale = 1 + std::abs(direct[f].max.value) + std::abs(direct[f].min.value);
+          CHECK(std::abs(v.max - direct[f].max.value) <= 1e-9 * scale);
+          CHECK(std::abs(v.min - direct[f].min.value) <= 1e-9 * scale);
+        }
+      }
+    const CaseEnvelope a = caseEnvelope(model, cases, placed), b = caseEnvelope(model, cases, values);
+    REQUIRE(a.members.size() == b.members.size());
+    for (std::size_t m = 0; m < a.members.size(); ++m)
+      for (std::size_t f = 0; f < 6; ++f) {
+        CHECK(a.members[m][f].max.value == b.members[m][f].max.value);
+        CHECK(a.members[m][f].max.by == b.members[m][f].max.by);
+        CHECK(a.members[m][f].min.value == b.members[m][f].min.value);
+        CHECK(a.members[m][f].min.by == b.members[m][f].min.by);
+        CHECK(a.members[m][f].max.by >= 3);  // combinations only: cases 3, 4 and 5
+      }
   }
 }

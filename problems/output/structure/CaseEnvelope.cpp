@@ -43,10 +43,12 @@ CaseEnvelope caseEnvelope(const Model& model, const std::vector<CaseOutcome>& ca
     const StaticExtremes& x = extremes[k];
     widen(out.reactions, c.statics.reactions, k);
     widen(out.springs, c.statics.elementForces, k);
-    out.members.resize(x.ranges.size());
-    for (std::size_t m = 0; m < x.ranges.size(); ++m)
-      for (std::size_t f = 0; f < kForceComponents.size(); ++f)
-        widen(out.members[m][f], x.ranges[m][f].max.value, x.ranges[m][f].min.value, k);
+    out.members.resize(rangedMembers(x));
+    for (std::size_t m = 0; m < out.members.size(); ++m)
+      for (std::size_t f = 0; f < kForceComponents.size(); ++f) {
+        const RangeValues r = rangeValuesOf(x, m, f);
+        widen(out.members[m][f], r.max, r.min, k);
+      }
     if (!model.members().empty()) widen(out.largestDisplacement, x.largestDisplacement.value, k, true);
     if (const auto top = largestPeak(x.peaks, &ElementPeaks::stress))
       widen(out.largestStress, top->value, k, true);

@@ -175,7 +175,7 @@ CsvTable membersEnvelopeTable(const std::string& title, const Model& model,
 }
 
 Json membersJson(const Model& model, const StaticExtremes& extremes, const std::string& stem) {
-  Json out = Json::object();
+  Json out = objectWithRoom(model.members().size());
   for (std::size_t i = 0; i < model.members().size(); ++i) {
     const auto& [name, elements] = model.members()[i];
     double length = 0;

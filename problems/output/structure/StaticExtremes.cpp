@@ -1,6 +1,8 @@
 // The extremes of a static solution, computed once (see StaticExtremes.hpp).
 #include "problems/output/structure/StaticExtremes.hpp"
 
+#include <algorithm>
+
 #include "fem/assembly/ParallelParts.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
@@ -8,16 +10,49 @@
 namespace beamrotor {
 
 StaticExtremes staticExtremes(const LoadedSolution& solution, PeaksKept kept,
-                              bool chordDeflections) {
+                              bool chordDeflections, RangesKept ranges) {
   StaticExtremes out;
   out.peaks = kept == PeaksKept::everyElement ? elementPeaks(solution) : peaksThatCanGovern(solution);
+  // Reserved: 200 combinations of a 10^4-member frame hold 200 of these.
+  const std::size_t members = solution.model->members().size();
+  if (ranges == RangesKept::withPlaces)
+    out.ranges.reserve(members);
+  else
+    out.rangeValues.reserve(members);
+  if (chordDeflections) out.chordDeflections.reserve(members);
   for (const auto& [name, elements] : solution.model->members()) {
-    out.ranges.push_back(memberForceRanges(solution, elements));
+    const std::array<ComponentRange, 6> r = memberForceRanges(solution, elements);
+    if (ranges == RangesKept::withPlaces) {
+      out.ranges.push_back(r);
+    } else {
+      std::array<RangeValues, 6>& values = out.rangeValues.emplace_back();
+      for (std::size_t f = 0; f < r.size(); ++f) values[f] = {r[f].max.value, r[f].min.value};
+    }
     if (chordDeflections) out.chordDeflections.push_back(largestChordDeflection(solution, elements));
   }
   // A line's largest displacement is read from its fields; a frame's is reported on its own.
   if (!solution.model->members().empty()) out.largestDisplacement = largestDisplacement(solution);
   return out;
+}
+
+std::size_t rangedMembers(const StaticExtremes& x) {
+  return std::max(x.ranges.size(), x.rangeValues.size());
+}
+
+RangeValues rangeValuesOf(const StaticExtremes& x, std::size_t m, std::size_t f) {
+  if (x.ranges.empty()) return x.rangeValues.at(m)[f];
+  const ComponentRange& r = x.ranges.at(m)[f];
+  return {r.max.value, r.min.value};
+}
+
+StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPolynomials& summed,
+                            bool chordDeflections, RangesKept ranges) {
+  LoadedSolution solution = c.on(model);
+  if (c.combination && c.polynomials) {
+    c.polynomials->sumInto(summed);
+    solution.polynomials = &summed;
+  }
+  return staticExtremes(solution, PeaksKept::canGovern, chordDeflections, ranges);
 }
 
 std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
@@ -28,6 +63,9 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
       out[i].own = staticExtremes({*run.model, s->displacement});
     const std::vector<CaseOutcome>& cases = casesOf(a);
     const bool chords = caseChordDeflections(*run.model, cases.size());
+    // The member ranges' places are reported with the chord deflections (results.json's
+    // member detail, the summary's cases in full); elsewhere the envelope reads their values.
+    const RangesKept kept = chords ? RangesKept::withPlaces : RangesKept::values;
     // Each case's extremes are computed whole by one part (its own range of cases, in order),
     // so they are the same to the bit however many parts run.
     out[i].cases.resize(cases.size());
@@ -35,15 +73,8 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
     const std::vector<int> bounds = evenRanges(int(cases.size()), partsFor(work));
     runParts(int(bounds.size()) - 1, [&](int part) {
       SolutionPolynomials summed;  // one combination's at a time, its storage reused
-      for (int k = bounds[part]; k < bounds[part + 1]; ++k) {
-        const CaseOutcome& c = cases[k];
-        LoadedSolution solution = c.on(*run.model);
-        if (c.combination && c.polynomials) {
-          c.polynomials->sumInto(summed);
-          solution.polynomials = &summed;
-        }
-        out[i].cases[k] = staticExtremes(solution, PeaksKept::canGovern, chords);
-      }
+      for (int k = bounds[part]; k < bounds[part + 1]; ++k)
+        out[i].cases[k] = caseExtremes(*run.model, cases[k], summed, chords, kept);
     });
   }
   return out;

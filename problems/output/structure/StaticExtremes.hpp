@@ -11,17 +11,28 @@
 #include "fem/assembly/ElementExtrema.hpp"
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
+#include "fem/assembly/SolutionPolynomials.hpp"
 #include "problems/output/structure/LineSampling.hpp"
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
+
+/// A member resultant's largest and smallest value, without their places.
+struct RangeValues {
+  double max = 0, min = 0;
+};
 
 struct StaticExtremes {
   /// Every line element's, in order; of a load case or combination only those of the elements
   /// that can hold its largest of a kind (peaksThatCanGovern: the largest of each kind is the
   /// same), a written case's every element's in PreparedCase::peaks.
   std::vector<ElementPeaks> peaks;
-  std::vector<std::array<ComponentRange, 6>> ranges;  ///< per member, Model::members() order
+  /// Per member, Model::members() order, with their places; empty where only the values are
+  /// kept (RangesKept::values).
+  std::vector<std::array<ComponentRange, 6>> ranges;
+  /// Per member, the values alone where `ranges` is not kept (96 bytes a member against 672:
+  /// 200 combinations of a 10^4-member frame held 1.2 GB of places nothing reported).
+  std::vector<std::array<RangeValues, 6>> rangeValues;
   std::vector<MemberValue> chordDeflections;  ///< per member; empty when not reported
   MemberValue largestDisplacement;  ///< anywhere (largestDisplacement); frames only
 };
@@ -30,15 +41,33 @@ struct StaticExtremes {
 /// elements that can hold the largest of a kind (peaksThatCanGovern).
 enum class PeaksKept { everyElement, canGovern };
 
+/// Whether staticExtremes keeps each member range's place (element, position, point) or only
+/// its values (the envelope over the combinations reads no more).
+enum class RangesKept { withPlaces, values };
+
 /// The extremes of `solution`; the member parts and the largest displacement left empty for
 /// a model without members (a line), the chord deflections without `chordDeflections`.
 StaticExtremes staticExtremes(const LoadedSolution& solution,
                               PeaksKept kept = PeaksKept::everyElement,
-                              bool chordDeflections = true);
+                              bool chordDeflections = true,
+                              RangesKept ranges = RangesKept::withPlaces);
+
+/// How many members x holds ranges of (with their places or as values).
+std::size_t rangedMembers(const StaticExtremes& x);
+
+/// Member m's range of resultant f (kForceComponents order), its values.
+RangeValues rangeValuesOf(const StaticExtremes& x, std::size_t m, std::size_t f);
+
+/// The extremes of load case or combination c of the model (a combination's polynomials summed
+/// into `summed`, storage reused from one call to the next), as runExtremes gives them: its
+/// peaks that can govern, its chord deflections where `chordDeflections`.
+StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPolynomials& summed,
+                            bool chordDeflections, RangesKept ranges);
 
 /// The extremes of a static analysis: its own solution's and each of its load cases' and
 /// combinations' (casesOf order; their peaks PeaksKept::canGovern, their chord deflections
-/// only where reported, caseChordDeflections). Empty for the other kinds of analysis.
+/// and their member ranges' places only where reported, caseChordDeflections; the cases
+/// written get theirs with places in PreparedCase). Empty for the other kinds of analysis.
 struct AnalysisExtremes {
   std::optional<StaticExtremes> own;
   std::vector<StaticExtremes> cases;
