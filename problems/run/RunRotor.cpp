@@ -20,6 +20,7 @@
 #include "elements/ShortJournalFilm.hpp"
 #include "elements/Spring.hpp"
 #include "elements/TiltingPadFilm.hpp"
+#include "elements/TiltingPadJournalFilm.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
@@ -197,19 +198,22 @@ CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily&
   return out;
 }
 
-/// The deck's plain journal bearings as films (run-up `bearings: nonlinear`), each by the
-/// theory its coefficients come from (`model: short` or `finite`, on the same grid): each
-/// replaces its model element's coefficients, its load along the bearing's -x_b.
+/// The deck's journal bearings as films (run-up `bearings: nonlinear`), each by the theory its
+/// coefficients come from (`model: short` or `finite`, or the tilting pads' films, on the same
+/// grid): each replaces its model element's coefficients, its load along the bearing's -x_b.
 std::vector<NonlinearJournal> nonlinearJournals(const Deck& deck, const Model& model) {
   std::vector<NonlinearJournal> out;
   for (const DeckBearing& b : deck.rotor.bearings) {
-    if (!b.journal || b.tiltingPads) continue;
+    if (!b.journal) continue;
     NonlinearJournal j;
     j.name = b.name;
     j.node = model.node(b.point);
     for (const auto& [name, element] : model.namedElements())
       if (name == b.name) j.element = element;
-    if (b.journalModel == DeckBearing::JournalModel::finite)
+    if (b.tiltingPads)
+      j.film = std::make_shared<TiltingPadJournalFilm>(*b.journal, *b.tiltingPads, b.journalGrid,
+                                                       b.loadAngle);
+    else if (b.journalModel == DeckBearing::JournalModel::finite)
       j.film = std::make_shared<FiniteJournalFilm>(*b.journal, b.journalGrid);
     else
       j.film = std::make_shared<ShortJournalFilm>(*b.journal);
