@@ -80,18 +80,30 @@ TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, 
                      2 * kPiPads * k / pads.count);
   std::vector<PadFilm> films(pivots.size(), PadFilm(pads, j.length / j.diameter, grid));
   std::vector<std::optional<double>> tilts(pivots.size());  // s of each pad at the current u
+  // A pad the journal has left: the rho at which its tilt search last found no root. A pad
+  // loads only as the journal comes nearer its pivot, so at a rho no larger it is taken as left
+  // without the search (some forty films); the converged point is checked by the search.
+  std::vector<std::optional<double>> leftAt(pivots.size());
   auto unit = [](double angle) { return Eigen::Vector2d(std::cos(angle), std::sin(angle)); };
   // The pads' force on the journal at u and its Jacobian (minus the static stiffness).
   struct Balance {
     Eigen::Vector2d force = Eigen::Vector2d::Zero();
     Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
+    bool assumedLeft = false;  ///< a pad taken as left without its search
   };
-  auto balance = [&](const Eigen::Vector2d& u) {
+  auto balance = [&](const Eigen::Vector2d& u, bool searchEveryPad) {
     Balance b;
     for (std::size_t k = 0; k < pivots.size(); ++k) {
       const Eigen::Vector2d e = unit(pivots[k]);
       const double rho = u.dot(e);
+      if (!searchEveryPad && leftAt[k] && rho <= *leftAt[k]) {
+        tilts[k].reset();
+        b.assumedLeft = true;
+        continue;
+      }
       tilts[k] = films[k].equilibriumTilt(rho);
+      leftAt[k].reset();
+      if (!tilts[k]) leftAt[k] = rho;
       if (!tilts[k]) continue;  // a pad the journal has left carries nothing
       const FilmSolution f = films[k].solve(rho, *tilts[k], true);
       const double kr = f.stiffness[0][0] - f.stiffness[0][1] * f.stiffness[1][0] / f.stiffness[1][1];
@@ -109,10 +121,16 @@ TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, 
     for (std::size_t k = 0; k < pivots.size(); ++k)
       if (near->pads[k].force != 0)
         films[k].seed(u.dot(unit(pivots[k] + kPiPads / 2)) - near->pads[k].tilt * R / cp);
+      else  // a pad's tilt depends on rho alone, not on the speed: left there, left here
+        leftAt[k] = u.dot(unit(pivots[k]));
   }
-  Balance b = balance(u);
+  Balance b = balance(u, false);
   for (int iteration = 0;; ++iteration) {
-    const Eigen::Vector2d residual = b.force - Eigen::Vector2d(load, 0);
+    Eigen::Vector2d residual = b.force - Eigen::Vector2d(load, 0);
+    if (residual.norm() <= 1e-11 * load && b.assumedLeft) {
+      b = balance(u, true);  // the pads taken as left, searched at the converged point
+      residual = b.force - Eigen::Vector2d(load, 0);
+    }
     if (residual.norm() <= 1e-11 * load) break;
     if (iteration == 100)
       throw std::invalid_argument("the tilting pads found no equilibrium in 100 Newton steps");
@@ -128,7 +146,7 @@ TiltingPadPoint tiltingPadPoint(const PlainJournal& j, const TiltingPads& pads, 
           "the load needs a film thinner than 1 % of the clearance at a pivot (the journal "
           "touches a pad)");
     u += scale * step;
-    b = balance(u);
+    b = balance(u, false);
   }
   TiltingPadPoint out;
   out.speed = speed;

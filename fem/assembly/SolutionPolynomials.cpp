@@ -82,6 +82,16 @@ ElementPolynomials SolutionPolynomials::of(int element) const {
   return sum;
 }
 
+SectionForceSeries SolutionPolynomials::forces(int element) const {
+  if (parts_.empty()) return own_.at(element).forces;
+  SectionForceSeries sum;
+  for (const auto& [part, factor] : parts_) {
+    const SectionForceSeries p = part->forces(element);
+    for (std::size_t k = 0; k < sum.c.size(); ++k) addScaled(sum.c[k], factor, p.c[k]);
+  }
+  return sum;
+}
+
 std::array<Polynomial, 3> SolutionPolynomials::translations(int element) const {
   const auto fromArrays = [](const std::array<std::array<double, 6>, 3>& t) {
     std::array<Polynomial, 3> out;

@@ -42,10 +42,9 @@ class SolutionPolynomials {
   }
   /// Line element `element`'s polynomials (index into Model::elements()).
   ElementPolynomials of(int element) const;
-  /// Its resultants, as LineElement::sectionForceSeries gives them.
-  SectionForceSeries forces(int element) const {
-    return parts_.empty() ? own_.at(element).forces : of(element).forces;
-  }
+  /// Its resultants, as LineElement::sectionForceSeries gives them (of a sum, the same sums
+  /// as `of`, without the translations').
+  SectionForceSeries forces(int element) const;
   /// Its translations ux, uy, uz as polynomials in s.
   std::array<Polynomial, 3> translations(int element) const;
 

@@ -15,13 +15,28 @@ namespace beamrotor {
 /// or nullptr for any other element.
 const SpeedDependentElement* asBearing(const Element& element);
 
+/// The element as a bearing on a pedestal: a speed-dependent element of kind
+/// "bearing-on-pedestal" (elements/BearingOnPedestal.hpp), or nullptr for any other element.
+const SpeedDependentElement* asBearingOnPedestal(const Element& element);
+
+/// A bearing on a pedestal (kind "bearing-on-pedestal", elements/BearingOnPedestal.hpp): the
+/// free equation of the journal and of the housing along one direction.
+struct PedestalTie {
+  int journal = -1, housing = -1;
+};
+
 struct BearingSupports {
   SparseMatrix shaft;          ///< K at rest without the bearings (the system's pattern)
   std::vector<int> equations;  ///< free uy, uz equations of the bearings' nodes, ascending
+  /// With pedestals taken out as well: each bearing-on-pedestal's (journal, housing) pairs
+  /// along uy and uz; its housing's mass and springs stay in the model.
+  std::vector<PedestalTie> pedestals;
 };
 
-/// Throws std::invalid_argument when the model has no Bearing element on a free dof.
-BearingSupports bearingSupports(const RotorSystem& system);
+/// Throws std::invalid_argument when the model has no Bearing element on a free dof (nor,
+/// with `pedestals`, a bearing on a pedestal). With `pedestals` the bearings on pedestals are
+/// taken out of the shaft as well and listed apart; without, they stay in it.
+BearingSupports bearingSupports(const RotorSystem& system, bool pedestals = false);
 
 /// New numbers of the n equations with `removed` (ascending) left out: -1 for a removed one,
 /// 0, 1, ... for the others in order.

@@ -29,9 +29,32 @@ std::vector<int> planeNumbering(const RotorSystem& system, const std::vector<int
   return index;
 }
 
-/// A restricted to the equations `index` keeps (renumbered as it says).
+/// The plane's numbering with each pedestal's housing tied to its journal (one equation: the
+/// bearing infinitely stiff) and the equations `removed` left out.
+std::vector<int> tiedNumbering(const RotorSystem& system, const std::vector<int>& removed,
+                               const std::vector<PedestalTie>& ties) {
+  std::vector<int> out = removed;
+  for (const PedestalTie& t : ties) out.push_back(t.housing);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  std::vector<int> index = planeNumbering(system, out);
+  for (const PedestalTie& t : ties)
+    if (index[t.journal] >= 0) index[t.housing] = index[t.journal];
+  return index;
+}
+
+/// The housings' equations of the pedestals, ascending.
+std::vector<int> housingsOf(const std::vector<PedestalTie>& ties) {
+  std::vector<int> out;
+  for (const PedestalTie& t : ties) out.push_back(t.housing);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// A restricted to the equations `index` keeps (renumbered as it says; equations given one
+/// number are summed: tied).
 SparseMatrix restricted(const SparseMatrix& A, const std::vector<int>& index) {
-  const int n = int(std::count_if(index.begin(), index.end(), [](int i) { return i >= 0; }));
+  const int n = index.empty() ? 0 : *std::max_element(index.begin(), index.end()) + 1;
   std::vector<Eigen::Triplet<double>> t;
   for (int col = 0; col < A.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(A, col); it; ++it)
@@ -66,18 +89,25 @@ CriticalSpeedMap solveCriticalSpeedMap(const Model& model, const std::vector<dou
   const RotorSystem system(model);
   const int n = system.size();
   // 1. The rotor without its bearings, and the bearings' free lateral equations; the x-y plane.
-  const BearingSupports supports = bearingSupports(system);
+  const BearingSupports supports = bearingSupports(system, true);
   const std::vector<int> plane = planeNumbering(system, {});
   const SparseMatrix shaft = restricted(supports.shaft, plane);
   const SparseMatrix mass = restricted(system.mass(), plane);
   CriticalSpeedMap out;
   out.stiffness = stiffness;
 
-  // 2. Each stiffness: the shaft plus k on every bearing's uy.
+  // 2. Each stiffness: the shaft plus k on every bearing's uy; on a pedestal, k between journal
+  // and housing, in series with the pedestal's own springs.
   SparseMatrix unit(n, n);
   {
     std::vector<Eigen::Triplet<double>> t;
     for (int eq : supports.equations) t.emplace_back(eq, eq, 1.0);
+    for (const PedestalTie& p : supports.pedestals) {
+      t.emplace_back(p.journal, p.journal, 1.0);
+      t.emplace_back(p.housing, p.housing, 1.0);
+      t.emplace_back(p.journal, p.housing, -1.0);
+      t.emplace_back(p.housing, p.journal, -1.0);
+    }
     unit.setFromTriplets(t.begin(), t.end());
   }
   const SparseMatrix springs = restricted(unit, plane);
@@ -87,18 +117,22 @@ CriticalSpeedMap solveCriticalSpeedMap(const Model& model, const std::vector<dou
     out.speeds.push_back(criticalSpeeds(Kk, mass, count, 0, 0, 0));
   }
 
-  // 3. Pinned bearings: their equations removed.
-  const std::vector<int> pinned = planeNumbering(system, supports.equations);
+  // 3. Pinned bearings: their equations removed; a bearing on a pedestal ties the journal to
+  // its housing (the rotor on its pedestals).
+  const std::vector<int> pinned = tiedNumbering(system, supports.equations, supports.pedestals);
   out.pinned = criticalSpeeds(restricted(supports.shaft, pinned),
                               restricted(system.mass(), pinned), count, 0, 0, 0);
 
   // 4. Free rotor: K is singular (two rigid-body motions in the plane, Omega = 0), so the shift
   // lies below them, at -(0.1 Omega_1,pinned)^2; eigenvalues below (1e-4 Omega_1,pinned)^2 are
   // rigid (their computed value is round-off of zero, ~1e-12 of the shift).
+  // The housings on their pedestals, cut from the rotor, are no rotor's modes: left out.
   const double scale = out.pinned.front();
   constexpr int kRigidModes = 2;
-  out.freeFree =
-      criticalSpeeds(shaft, mass, count, -0.01 * scale * scale, 1e-4 * scale, kRigidModes);
+  const std::vector<int> rotorOnly = planeNumbering(system, housingsOf(supports.pedestals));
+  out.freeFree = criticalSpeeds(restricted(supports.shaft, rotorOnly),
+                                restricted(system.mass(), rotorOnly), count,
+                                -0.01 * scale * scale, 1e-4 * scale, kRigidModes);
   return out;
 }
 
@@ -155,24 +189,30 @@ std::vector<MapCrossing> mapCrossings(const CriticalSpeedMap& map,
 double rigidSupportCriticalSpeed(const Model& model, double speed) {
   const RotorSystem system(model);
   const DofMap& dofs = system.dofs();
-  // The pinned equations: the free uy, uz of each bearing that is stiff at this speed.
+  // The pinned equations: the free uy, uz of each bearing that is stiff at this speed. A
+  // bearing on a pedestal pins its journal the same way, and its housing (uy, uz) leaves the
+  // rotor with the pedestal's mass and springs: rigid supports are rigid down to the ground.
   std::vector<int> pinned;
   bool bearings = false;
   for (const auto& e : model.elements()) {
-    const SpeedDependentElement* b = asBearing(*e);
+    const SpeedDependentElement* pedestalBearing = asBearingOnPedestal(*e);
+    const bool onPedestal = pedestalBearing != nullptr;
+    const SpeedDependentElement* b = onPedestal ? pedestalBearing : asBearing(*e);
     if (!b) continue;
     bearings = true;
-    const auto d = b->dofs();
+    const auto d = b->dofs();  // journal uy, uz; on a pedestal then housing uy, uz
     const ElementMatrix k = b->stiffnessAt(speed);
     for (int r = 0; r < int(d.size()); ++r)
-      if (const int eq = dofs.equation(d[r]); k(r, r) != 0 && eq >= 0 && dofs.isFree(eq))
+      if (const int eq = dofs.equation(d[r]);
+          eq >= 0 && dofs.isFree(eq) && (k(r, r) != 0 || (onPedestal && r >= 2)))
         pinned.push_back(eq);
   }
   std::sort(pinned.begin(), pinned.end());
   pinned.erase(std::unique(pinned.begin(), pinned.end()), pinned.end());
   // Without the bearings' own stiffness (the pinned ones hold their nodes; the others have none
   // on the diagonal, and a cross-coupled term would make K unsymmetric).
-  const SparseMatrix shaft = bearings ? bearingSupports(system).shaft : system.stiffness(0);
+  const SparseMatrix shaft =
+      bearings ? bearingSupports(system, /*pedestals=*/true).shaft : system.stiffness(0);
   const std::vector<int> plane = planeNumbering(system, pinned);
   try {
     return criticalSpeeds(restricted(shaft, plane), restricted(system.mass(), plane), 1, 0,

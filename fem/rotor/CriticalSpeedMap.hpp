@@ -1,7 +1,11 @@
 // Undamped critical-speed map: the rotor's critical speeds (gyroscopic moments neglected)
 // against an isotropic stiffness k put in place of every bearing of the model (kyy = kzz = k,
 // no cross-coupling, no damping), with its two asymptotes: bearings as pinned supports
-// (k -> infinity) and the free rotor's flexible modes (k -> 0).
+// (k -> infinity) and the free rotor's flexible modes (k -> 0). A bearing on a pedestal
+// (elements/BearingOnPedestal.hpp) puts k in series with the pedestal: journal - k - housing
+// (its mass and springs) - ground; its k -> infinity ties the journal to the housing (the rotor
+// on its pedestals), and k -> 0 leaves the housing out of the free rotor. The pedestal's
+// springs must then be isotropic (the x-y plane stands for both).
 //
 // A critical speed is a spin speed Omega at which the undamped rotor can whirl at Omega
 // itself (the whirl unbalance drives). This map neglects gyroscopic moments: its critical
@@ -45,8 +49,8 @@ std::vector<MapCrossing> mapCrossings(const CriticalSpeedMap& map,
                                       const std::vector<double>& stiffness);
 
 /// The map at each stiffness (N/m, > 0) with `count` critical speeds per point and per
-/// asymptote. The bearings are the model's Bearing elements (at least one; their own
-/// coefficients are ignored). Throws std::invalid_argument without bearings, SolveError when
+/// asymptote. The bearings are the model's Bearing and BearingOnPedestal elements (at least
+/// one; their own coefficients are ignored). Throws std::invalid_argument without bearings, SolveError when
 /// the eigensolver fails or finds fewer than `count` critical speeds.
 CriticalSpeedMap solveCriticalSpeedMap(const Model& model, const std::vector<double>& stiffness,
                                        int count);
@@ -54,8 +58,9 @@ CriticalSpeedMap solveCriticalSpeedMap(const Model& model, const std::vector<dou
 /// The first critical speed on rigid supports (rad/s; gyroscopic moments neglected, as in the
 /// map): every Bearing element with a direct stiffness at spin speed `speed` (rad/s) replaced
 /// by a pinned support, bearings without stiffness (dampers) left out, the model's own
-/// supports kept. API 617's critical speed ratio divides the maximum continuous speed by it.
-/// Throws std::invalid_argument when no support holds the rotor, SolveError when the
+/// supports kept; a bearing on a pedestal pins its journal likewise, and its housing leaves
+/// the model with the pedestal's mass and springs. API 617's critical speed ratio divides the
+/// maximum continuous speed by it. Throws std::invalid_argument when no support holds the rotor, SolveError when the
 /// eigensolver fails.
 double rigidSupportCriticalSpeed(const Model& model, double speed);
 

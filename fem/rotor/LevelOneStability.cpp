@@ -17,21 +17,27 @@ namespace {
 /// cross-coupling a machine meets.
 constexpr int kDoublings = 40;
 
-/// The least damped of a set of modes: its neutral log decrement, frequency and whirl.
+/// The least damped of a set of modes: its neutral log decrement, frequency and whirl, and
+/// whether it is a bearing's own mode (a pad's, RotorModesResult::bearingModes).
 struct Worst {
   double growth = -std::numeric_limits<double>::infinity();
   double logDecrement = std::numeric_limits<double>::infinity();
   double frequencyHz = 0;
   Whirl whirl = Whirl::planar;
+  bool bearingMode = false;
 };
 
-Worst worstOf(const std::vector<RotorMode>& modes) {
+/// The least damped of the rotor's modes and the bearings' own (pads kept as dofs): a pad's
+/// mode is the least damped only when its log decrement is the least of all (a massless pad's
+/// relaxation, a real eigenvalue that decays, never is).
+Worst worstOf(const RotorModesResult& result) {
   Worst w;
-  for (const RotorMode& m : modes) {
-    const double delta = neutralLogDecrement(m);
-    if (std::isnan(delta) || delta >= w.logDecrement) continue;
-    w = {growthRate(m), delta, m.dampedFrequencyHz, m.whirl};
-  }
+  for (const auto* modes : {&result.modes, &result.bearingModes})
+    for (const RotorMode& m : *modes) {
+      const double delta = neutralLogDecrement(m);
+      if (std::isnan(delta) || delta >= w.logDecrement) continue;
+      w = {growthRate(m), delta, m.dampedFrequencyHz, m.whirl, modes == &result.bearingModes};
+    }
   return w;
 }
 
@@ -104,7 +110,7 @@ LevelOneResult levelOneStability(const Model& model, const RotorOptions& options
   out.anticipated = anticipated;
   const auto at = [&](double q) {
     system.setCrossCoupling(node, q);
-    return worstOf(solveRotorModes(system, speed, options, solver, false).modes);
+    return worstOf(solveRotorModes(system, speed, options, solver, false));
   };
 
   // 1. Without added cross-coupling, and with Qa.
@@ -113,12 +119,14 @@ LevelOneResult levelOneStability(const Model& model, const RotorOptions& options
   const Worst withQa = at(anticipated);
   out.logDecrementAtQa = withQa.logDecrement;
   out.frequencyHzAtQa = withQa.frequencyHz;
+  out.bearingModeAtQa = withQa.bearingMode;
 
   // 2. Q0: a bracket [lo, hi] with the growth rate <= 0 at lo and > 0 at hi, then its root.
   if (base.growth >= 0) {  // no margin at all: Q0 = 0
     out.found = true;
     out.frequencyHzAtQ0 = base.frequencyHz;
     out.whirlAtQ0 = base.whirl;
+    out.bearingModeAtQ0 = base.bearingMode;
   } else {
     double lo = 0, hi = anticipated;
     Worst fLo = base, fHi = withQa;
@@ -144,6 +152,7 @@ LevelOneResult levelOneStability(const Model& model, const RotorOptions& options
       out.zeroDecrement = root.speed;
       out.frequencyHzAtQ0 = last.frequencyHz;
       out.whirlAtQ0 = last.whirl;
+      out.bearingModeAtQ0 = last.bearingMode;
     }
   }
   out.ratio = out.found ? out.zeroDecrement / anticipated

@@ -16,6 +16,9 @@
 //
 // Q0: cross-coupled stiffness k_yz = +Q, k_zy = -Q added at one station (the stages' centre,
 // mid-span by default) until the least log decrement of the modes at the rated speed is zero.
+// With tilting pads kept as dofs (elements/TiltingPadFilm.hpp) the modes are the full model's
+// (each at its own frequency, nothing condensed) and the pads' own modes are looked at beside
+// the rotor's `modes`: one of them is the least damped only when its log decrement is the least.
 // The least stable mode's growth rate Re(lambda) / |lambda| (RotorStability.hpp) is continuous
 // in Q; it is negative at Q = 0 for a stable rotor and grows with Q, so a bracket [0, Q_hi],
 // Q_hi doubled from Qa until the rotor grows, holds the root, which regula falsi (Illinois,
@@ -87,12 +90,14 @@ struct LevelOneResult {
   double baseLogDecrement = 0;     ///< least log decrement without added cross-coupling
   double logDecrementAtQa = 0;     ///< least log decrement with Qa added
   double frequencyHzAtQa = 0;      ///< damped frequency of that mode
+  bool bearingModeAtQa = false;    ///< that mode is a bearing's own (a pad's tilt)
   /// Q0 (N/m): where the least log decrement is zero; 0 when the rotor is not stable without
   /// added cross-coupling. Unset when no Q up to 2^40 Qa destabilises it (found = false).
   double zeroDecrement = 0;
   bool found = false;
   double frequencyHzAtQ0 = 0;      ///< damped frequency of the mode that loses its damping
   Whirl whirlAtQ0 = Whirl::planar;
+  bool bearingModeAtQ0 = false;    ///< that mode is a bearing's own (a pad's tilt)
   int evaluations = 0;             ///< eigen-solutions spent on Q0
   double ratio = 0;                ///< Q0 / Qa (infinite when not found)
   /// 2 <= Q0/Qa < 10: API's CSR/density map decides (region B fails)

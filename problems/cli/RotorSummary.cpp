@@ -264,7 +264,7 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CriticalSpeed
     for (double s : speeds) out << " " << formatValue(s * kRpm * speed.factor);
     out << " " << speed.unit << "\n";
   };
-  list("pinned bearings:", m.pinned);
+  list("rigid bearings:", m.pinned);
   list("free-free rotor:", m.freeFree);
   for (const BearingStiffnessCurve& b : r.bearings)
     for (const auto& [what, crossings] :
@@ -304,11 +304,12 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const LevelOneOutco
       << "    Qa " << valueText(r.anticipated, "N/m", units) << " from " << o.stages
       << " stage(s) (API 617); least log decrement " << formatValue(r.baseLogDecrement)
       << " without, " << formatValue(r.logDecrementAtQa) << " at Qa ("
-      << hzText(r.frequencyHzAtQa, units) << ")\n";
+      << hzText(r.frequencyHzAtQa, units) << (r.bearingModeAtQa ? ", a pad mode" : "") << ")\n";
   if (r.found)
     out << "    Q0 " << valueText(r.zeroDecrement, "N/m", units) << " (" << whirlName(r.whirlAtQ0)
-        << " whirl at " << hzText(r.frequencyHzAtQ0, units) << "), Q0/Qa "
-        << formatValue(r.ratio) << "\n";
+        << " whirl at " << hzText(r.frequencyHzAtQ0, units)
+        << (r.bearingModeAtQ0 ? ", a pad mode" : "") << "), Q0/Qa " << formatValue(r.ratio)
+        << "\n";
   else
     out << "    Q0 not found: no cross-coupling up to 2^40 Qa destabilises the rotor\n";
   out << "    CSR " << formatValue(r.map.ratio) << " (MCOS "

@@ -59,6 +59,9 @@ FieldUnit referenceUnit(const beamrotor::Quantity& q) {
     }
     case K::levelOne:  // qa and q0 are cross-coupled stiffnesses; their ratio and decrement none
       return {q.property == "qa" || q.property == "q0" ? dim::stiffness : dim::none};
+    case K::padMode:  // Hz; the decay rate -Re(lambda) in 1/s; the others ratios
+      if (q.property == "frequency" || q.property == "decay_rate") return {dim::frequency};
+      return {dim::none};
     case K::crankSlider:
       return crankReferenceUnit(q);
     case K::torsion:

@@ -85,6 +85,7 @@ struct Quantity {
     unbalanceAmplitude,
     rigidBody,  // rotor analyses
     levelOne,   // level1-stability: `level1 PROPERTY`
+    padMode,    // rotor: `pad_mode N PROPERTY`, the pads' own modes (pad_tilts: dofs)
     runUp,      // run-up: `runup peak|speed_at_peak POINT`
     crankSlider,  // crank-slider analyses (CrankQuantity.hpp)
     torsion,      // torsion analyses of a train (TorsionQuantity.hpp)
@@ -109,7 +110,7 @@ struct Quantity {
   Side side = Side::node;
   int mode = 1;  ///< frequency, buckling_factor, log_decrement, critical_speed: 1-based number
   double rpm = 0;        ///< unbalance_amplitude: the speed (rpm)
-  std::string property;  ///< rigid_body, level1: which property; torsion: torque or twist;
+  std::string property;  ///< rigid_body, level1, pad_mode: which property; torsion: torque or twist;
                          ///< memberForce: N, Vy, Vz, T, My, Mz; spectrum: displacement,
                          ///< reaction, base_shear or member (its component in `extreme`);
                          ///< sectionProperty: one of kSectionProperties

@@ -3,6 +3,8 @@
 
 #include <variant>
 
+#include "fem/assembly/ParallelParts.hpp"
+
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/moving/MovingOutput.hpp"
 #include "problems/output/torsion/TorsionOutput.hpp"
@@ -115,8 +117,16 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
       names.push_back(c.name);
     }
   if (combinations.empty()) return;
-  for (const auto& [name, elements] : model.members())
-    p.envelopeStations.push_back(memberEnvelope(combinations, elements, kIntervalsPerElement));
+  // Each member's envelope is computed whole by one part (its own range of members), so it is
+  // the same to the bit however many parts run.
+  const auto& members = model.members();
+  p.envelopeStations.resize(members.size());
+  const std::vector<int> bounds = evenRanges(
+      int(members.size()), partsFor(combinations.size() * model.elements().size()));
+  runParts(int(bounds.size()) - 1, [&](int part) {
+    for (int m = bounds[part]; m < bounds[part + 1]; ++m)
+      p.envelopeStations[m] = memberEnvelope(combinations, members[m].second, kIntervalsPerElement);
+  });
   if (oneMembersTable(model)) {
     p.envelopes.push_back(
         membersEnvelopeTable(envelopesCsv(p.stem), model, p.envelopeStations, names));

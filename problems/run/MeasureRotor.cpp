@@ -56,6 +56,23 @@ double measureRotor(const Quantity& q, const AnalysisOutcome& outcome) {
                                     "oscillation): its log decrement is infinite");
       return m.logDecrement;
     }
+    case Quantity::Kind::padMode: {
+      const auto* r = resultOf<RotorModesResult>(outcome);
+      if (!r) throw std::invalid_argument(name + " is not a rotor analysis");
+      if (q.mode > int(r->bearingModes.size()))
+        throw std::invalid_argument(name + " found " + std::to_string(r->bearingModes.size()) +
+                                    " pad modes, not " + std::to_string(q.mode));
+      const RotorMode& m = r->bearingModes[q.mode - 1];
+      if (q.property == "frequency") return m.dampedFrequencyHz;
+      if (q.property == "decay_rate") return -m.eigenvalue.real();
+      if (q.property == "damping_ratio") return m.dampingRatio;
+      if (q.property == "bearing_energy") return m.bearingEnergy;
+      if (!std::isfinite(m.logDecrement))
+        throw std::invalid_argument("pad mode " + std::to_string(q.mode) +
+                                    " has a real eigenvalue (a massless pad's relaxation): its "
+                                    "log decrement is infinite; read its decay_rate");
+      return m.logDecrement;
+    }
     case Quantity::Kind::criticalSpeed: {
       const auto* r = resultOf<CampbellOutcome>(outcome);
       if (!r) throw std::invalid_argument(name + " is not a campbell analysis");

@@ -31,6 +31,7 @@
 #include "fem/rotor/UnbalancePeaks.hpp"
 #include "fem/timing/Stopwatch.hpp"
 #include "problems/run/CampbellWarnings.hpp"
+#include "problems/run/ModelBuilder.hpp"
 #include "problems/run/Overloaded.hpp"
 
 namespace beamrotor {
@@ -74,6 +75,21 @@ std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
     out.push_back(std::move(curve));
   }
   return out;
+}
+
+/// For the analyses that put supports of their own in place of every bearing (pinned, or a
+/// swept stiffness): the model `pad_tilts: condensed` builds, each bearing one element on its
+/// journal, when a bearing keeps its pads' tilts as dofs (the pads do not enter those
+/// analyses, and the answers are the condensed deck's to the bit); null otherwise. The deck's
+/// journal loads are already resolved (runDeck), so no bearing table is computed again.
+std::shared_ptr<const Model> padsCondensedModel(const Deck& deck) {
+  const auto& bearings = deck.rotor.bearings;
+  if (std::none_of(bearings.begin(), bearings.end(),
+                   [](const DeckBearing& b) { return b.padInertia.has_value(); }))
+    return nullptr;
+  Deck condensed = deck;
+  for (DeckBearing& b : condensed.rotor.bearings) b.padInertia.reset();
+  return buildModel(condensed);
 }
 
 RotorOptions optionsOf(const Deck& deck, const RotorFamily& s) {
@@ -188,7 +204,8 @@ CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily&
   const DeckRotorAnalysis& r = s.rotor;
   CriticalSpeedMapOutcome out;
   Stopwatch clock;
-  out.map = solveCriticalSpeedMap(model, r.stiffnesses, r.criticalSpeeds);
+  const auto condensed = padsCondensedModel(deck);
+  out.map = solveCriticalSpeedMap(condensed ? *condensed : model, r.stiffnesses, r.criticalSpeeds);
   out.time = clock.lap();
   out.bearings = bearingStiffnessCurves(deck);
   for (BearingStiffnessCurve& b : out.bearings) {
@@ -303,8 +320,10 @@ BearingLoadsOutcome runBearingLoads(const Deck& deck, const RotorFamily& s, cons
   BearingLoadsOutcome out;
   Stopwatch clock;
   const auto& g = r.gravity;
+  // Elastic bearings at speed take the synchronous table, as with the pads condensed.
+  const auto condensed = padsCondensedModel(deck);
   out.loads =
-      solveGravityLoads(model, Eigen::Vector3d(g[0], g[1], g[2]),
+      solveGravityLoads(condensed ? *condensed : model, Eigen::Vector3d(g[0], g[1], g[2]),
                         r.rigidBearings ? BearingSupport::rigid : BearingSupport::elastic, r.speed);
   out.time = clock.lap();
   for (const DeckBearing& b : deck.rotor.bearings) out.bearingNames.push_back(b.name);
@@ -343,8 +362,11 @@ LevelOneOutcome runLevelOne(const Deck& deck, const RotorFamily& s, const Model&
   if (out.station.empty()) out.station = "node " + std::to_string(node);
   out.stages = int(r.stages.size());
   const double qa = anticipatedCrossCoupling(r.stages, r.speed);
+  // The critical speed ratio pins the bearings: the pads do not enter it. Q0 is the full
+  // model's (the pads' tilts as dofs where the deck keeps them).
+  const auto condensed = padsCondensedModel(deck);
   const CriticalSpeedRatioPoint map = criticalSpeedRatioPoint(
-      r.maximumContinuousSpeed, rigidSupportCriticalSpeed(model, r.speed),
+      r.maximumContinuousSpeed, rigidSupportCriticalSpeed(condensed ? *condensed : model, r.speed),
       r.averageGasDensity.value_or(averageGasDensity(r.stages)));
   out.screening = levelOneStability(model, optionsOf(deck, s), node, r.speed, qa, map);
   out.time = clock.lap();

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <stdexcept>
@@ -127,6 +128,15 @@ constexpr int kStopTag = 3;     // manager -> worker: stop after the point in pr
 constexpr int kAskTag = 4;      // worker -> manager: its chunk is done, it asks for another
 constexpr int kStoppedTag = 6;  // worker -> manager: it stopped before its chunk was done
 constexpr int kReleaseTag = 5;   // manager -> worker: the results are written, end now
+constexpr int kStartTag = 7;     // manager -> worker: 1 the study is shared out, 0 nothing to do
+
+/// Rank 0 told the other ranks whether there is work (kStartTag). Until it has, they wait for
+/// that word alone: rank 0 can refuse the study before sharing it (--resume of a finished
+/// study, an output directory it may not replace) and must then still let them go.
+bool& workersStarted() {
+  static bool started = false;
+  return started;
+}
 
 /// How long a stopped rank waits for rank 0 to write the results (s); mpirun ends it sooner.
 constexpr double kReleaseWaitSeconds = 10;
@@ -185,19 +195,44 @@ bool stopMessage() {
   return true;
 }
 
+/// Waits for a message from rank 0 with `tag` (polled, so that the process stays responsive)
+/// and takes it into `words`; gives up, false, when `giveUp` says so first.
+bool awaitFromManager(int tag, std::int64_t* words, int count,
+                      const std::function<bool()>& giveUp) {
+  for (;;) {
+    int waiting = 0;
+    MPI_Iprobe(0, tag, MPI_COMM_WORLD, &waiting, MPI_STATUS_IGNORE);
+    if (waiting) {
+      MPI_Recv(words, count, MPI_INT64_T, 0, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      return true;
+    }
+    if (giveUp()) return false;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+}
+
 void studyWorker(const StudyPlan& plan, const DesignPoints& points, const StopRequest& stop) {
+  // Rank 0 always sends this word (or dies, and mpirun ends this rank): no stop is taken here,
+  // since a rank 0 about to share the study would wait for this rank in the gather.
+  std::int64_t start = 0;
+  awaitFromManager(kStartTag, &start, 1, [] { return false; });
+  if (start == 0) return;
+  gatherProcesses();
   const PointSolver solver(plan);
   std::string row;
+  const auto stopped = [&] {
+    if (!stop() && !stopMessage()) return false;
+    MPI_Send(nullptr, 0, MPI_BYTE, 0, kStoppedTag, MPI_COMM_WORLD);
+    return true;
+  };
   for (;;) {
     MPI_Send(nullptr, 0, MPI_BYTE, 0, kAskTag, MPI_COMM_WORLD);
+    // Stopped while waiting: rank 0 may be stopping too, and answer no more.
     std::int64_t range[2];
-    MPI_Recv(range, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (!awaitFromManager(kChunkTag, range, 2, stopped)) return;
     if (range[0] >= range[1]) return;
     for (std::int64_t i = range[0]; i < range[1]; ++i) {
-      if (stop() || stopMessage()) {
-        MPI_Send(nullptr, 0, MPI_BYTE, 0, kStoppedTag, MPI_COMM_WORLD);
-        return;
-      }
+      if (stopped()) return;
       row.clear();
       appendRowBytes(row, solver.solve(i, points.at(i)));
       MPI_Send(row.data(), int(row.size()), MPI_BYTE, 0, kRowTag, MPI_COMM_WORLD);
@@ -269,6 +304,16 @@ RankReport studyManager(const StudyPlan& plan, const DesignPoints& points,
   const auto allFinished = [&] {
     return std::all_of(finished.begin(), finished.end(), [](char f) { return f != 0; });
   };
+  // Stopping: a rank of this host whose process is gone will not answer; mpirun's SIGKILL
+  // comes about a second after its SIGTERM, so that time is left for writing the results.
+  const auto othersGone = [&] {
+    for (int r = 1; r < ranks; ++r)
+      if (!finished[std::size_t(r)] &&
+          (std::strcmp(processes[std::size_t(r)].host, processes[0].host) != 0 ||
+           !processGone(processes[std::size_t(r)].pid)))
+        return false;
+    return true;
+  };
   for (;;) {
     if (!stopping && stop()) {
       stopping = true;
@@ -291,7 +336,7 @@ RankReport studyManager(const StudyPlan& plan, const DesignPoints& points,
       ++ownBegin;
     } else if (!stopping && handedOut < n) {
       std::tie(ownBegin, ownEnd) = takeChunk();
-    } else if (allFinished() || (stopping && secondsNow() > deadline)) {
+    } else if (allFinished() || (stopping && (secondsNow() > deadline || othersGone()))) {
       break;
     } else {
       // Waiting for the others: polled, not blocked in MPI_Probe, so that a signal (or a
@@ -324,6 +369,16 @@ MpiSession::MpiSession() {
 MpiSession::~MpiSession() {
   if (!mpiStarted()) return;
   mpiStarted() = false;
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  // Rank 0 ended before sharing a study (it refused it, or failed first): the others are
+  // waiting for its first word, and would wait for ever while it waits in MPI_Finalize.
+  if (rank == 0 && !workersStarted()) {
+    static const std::int64_t nothingToDo = 0;
+    for (int r = 1; r < ranks; ++r)
+      MPI_Send(&nothingToDo, 1, MPI_INT64_T, r, kStartTag, MPI_COMM_WORLD);
+  }
   if (pendingInterruption() == 0) {
     MPI_Finalize();
     return;
@@ -331,9 +386,6 @@ MpiSession::~MpiSession() {
   // Stopped by a signal. A rank may be gone, so MPI_Finalize could wait for ever; each process
   // ends by the signal right after (main). But mpirun kills every rank at once when one of
   // them ends: the others wait until rank 0 has written the results and lets them go.
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   static const std::int64_t releaseWord = 1;  // outlives the unawaited sends
   if (rank == 0) {
     for (int r = 1; r < ranks; ++r) {
@@ -371,15 +423,18 @@ RankReport solvePointsOnRank(const StudyPlan& plan, const DesignPoints& points,
     solvePoints(plan, points, todo, threads, sink, stop);
     return {};
   }
-  const std::vector<RankProcess> processes = gatherProcesses();
-  if (MpiSession::rank() != 0) {
-    studyWorker(plan, points, stop);
-    return {MpiSession::size(), {}};
-  }
   try {
-    return studyManager(plan, points, todo, sink, stop, processes);
+    if (MpiSession::rank() != 0) {
+      studyWorker(plan, points, stop);
+      return {MpiSession::size(), {}};
+    }
+    workersStarted() = true;
+    static const std::int64_t shared = 1;
+    for (int r = 1; r < MpiSession::size(); ++r)
+      MPI_Send(&shared, 1, MPI_INT64_T, r, kStartTag, MPI_COMM_WORLD);
+    return studyManager(plan, points, todo, sink, stop, gatherProcesses());
   } catch (const std::exception& e) {
-    // The other ranks wait for chunks that will never come: end them all.
+    // A rank that fails midway leaves the others waiting for its messages: end them all.
     std::fprintf(stderr, "beamrotor: %s\n", e.what());
     MPI_Abort(MPI_COMM_WORLD, 1);
   }

@@ -1,14 +1,21 @@
 // A design study across MPI ranks (Open MPI; compiled when CMake finds MPI, BEAMROTOR_MPI).
 // Under `mpirun -n N`, rank 0 is the manager: it hands out chunks of points to ranks that ask
-// (which send each row as they finish it), solves points itself between messages, restores point order and hands the rows to the sink; so the table and summary
-// are those of the serial run. Without MPI, or run without mpirun, everything here is the
-// threaded study of StudyExecution.hpp.
+// (which send each row as they finish it), solves points itself between messages, restores
+// point order and hands the rows to the sink; so the table and summary are those of the serial
+// run. Without MPI, or run without mpirun, everything here is the
+// threaded study of StudyExecution.hpp. The other ranks first wait for rank 0's word that the
+// study is shared out: a rank 0 that refuses the study (or fails) before sharing it still sends
+// it, "nothing to do", so that no rank is left waiting for a message that will never come while
+// rank 0 waits for it in MPI_Finalize. Every wait for rank 0 is polled and, once the study is
+// shared, gives way to a stop.
 //
 // Stopping: mpirun answers Ctrl-C, a SIGTERM or the loss of a rank (kill -9) alike, with
-// SIGTERM to every rank and SIGKILL about a second later. Each rank then starts no new point:
-// rank 0 tells the others to stop, takes the rows they finished within kStopAnswerSeconds and
-// hands them on; a rank that does not answer in that time is named as lost (with its process
-// id and host, and whether that process is gone, when it ran on rank 0's host).
+// SIGCONT to every rank, SIGTERM a second later and SIGKILL a second after that (Open MPI 4.1,
+// odls_base_sigkill_timeout). Each rank then starts no new point: rank 0 tells the others to
+// stop, takes the rows they finished within kStopAnswerSeconds (less when the ranks that have
+// not answered ran on its host and their processes are gone) and hands them on; a rank that
+// does not answer in that time is named as lost (with its process id and host, and whether
+// that process is gone, when it ran on rank 0's host).
 #pragma once
 
 #include <string>

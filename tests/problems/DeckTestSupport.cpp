@@ -122,6 +122,13 @@ int waitForProcess(int pid, double seconds) {
   return status;
 }
 
+nlohmann::json analysisOfType(const nlohmann::json& results, const std::string& type) {
+  nlohmann::json found;
+  for (const auto& a : results["analyses"])
+    if (a["type"] == type) found = a;
+  return found;
+}
+
 nlohmann::json SolvedDeck::json(const std::string& file) const {
   return nlohmann::json::parse(text(file));
 }

@@ -77,6 +77,9 @@ struct SolvedDeck {
   std::string text(const std::string& file) const;
 };
 
+/// The last analysis of type `type` in a results.json document (null when it has none).
+nlohmann::json analysisOfType(const nlohmann::json& results, const std::string& type);
+
 /// `beamrotor solve problems/<deck> --out DIR` into a fresh scratch directory `scratch`;
 /// REQUIREs that it succeeds (showing its stderr otherwise).
 SolvedDeck solveShippedDeckToScratch(const std::string& deck, const std::string& scratch);

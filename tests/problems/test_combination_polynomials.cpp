@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -18,6 +19,10 @@
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
+#include "problems/output/PreparedRun.hpp"
+#include "problems/output/structure/LineSampling.hpp"
+#include "problems/output/structure/MemberOutput.hpp"
+#include "problems/output/structure/StaticExtremes.hpp"
 #include "problems/run/Study.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
@@ -52,12 +57,15 @@ const std::string kWind = "{type: point, at: B, fx: 8e3}, "
                           "{type: distributed, member: left, qz: 3e3}";
 const std::string kHeat = "{type: temperature, member: beam, dT: 20, dT_y: 15}";
 
-const std::string kCases = "loads: []\n"
-                           "load_cases:\n"
-                           "  - {name: dead, loads: [" + kDead + "]}\n"
-                           "  - {name: wind, loads: [" + kWind + "]}\n"
-                           "  - {name: heat, loads: [" + kHeat + "]}\n"
-                           "combinations:\n"
+/// The three cases, then the `combinations:` key with its list still to write.
+const std::string kCaseList = "loads: []\n"
+                              "load_cases:\n"
+                              "  - {name: dead, loads: [" + kDead + "]}\n"
+                              "  - {name: wind, loads: [" + kWind + "]}\n"
+                              "  - {name: heat, loads: [" + kHeat + "]}\n"
+                              "combinations:\n";
+
+const std::string kCases = kCaseList +
                            "  - {name: ULS, factors: {dead: 1.35, wind: 1.5, heat: 0.6}}\n"
                            "  - {name: suction, factors: {dead: 1, wind: -1.5}}\n"
                            "  - {name: cold, factors: {dead: 1, heat: -1.2}}\n";
@@ -273,9 +281,7 @@ TEST_SUITE("load cases") {
   TEST_CASE("a combination's extremes: sums taken once, peaks of the elements that can govern") {
     // The portal under twelve combinations whose factors step through the three cases, so
     // that different elements govern different combinations.
-    std::string deck = "loads: []\nload_cases:\n  - {name: dead, loads: [" + kDead +
-                       "]}\n  - {name: wind, loads: [" + kWind + "]}\n  - {name: heat, loads: [" +
-                       kHeat + "]}\ncombinations:\n";
+    std::string deck = kCaseList;
     for (int k = 0; k < 12; ++k)
       deck += "  - {name: C" + std::to_string(k) + ", factors: {dead: " +
               std::to_string(1 + 0.05 * (k % 8)) + ", wind: " + std::to_string(-1.5 + 0.25 * k) +
@@ -331,5 +337,82 @@ TEST_SUITE("load cases") {
     // The bound leaves elements out (else the test above would compare a list with itself).
     MESSAGE("peaks computed on " << kept << " of " << all << " elements");
     CHECK(kept < all);
+  }
+
+  TEST_CASE("many combinations' extremes and envelope split over cores: the bits of one by one") {
+    // The portal with 90 elements a member under 300 combinations: 303 solutions x 360
+    // elements make two parts (one per 50,000 element-cases) once three cores may be used.
+    std::string deck = kCaseList;
+    for (int k = 0; k < 300; ++k)
+      deck += "  - {name: C" + std::to_string(k) + ", factors: {dead: " +
+              std::to_string(1 + 0.35 * (k % 8) / 7) + ", wind: " +
+              std::to_string(1.5 * ((k % 7) - 3) / 3) + ", heat: " +
+              std::to_string(0.6 * ((k % 5) - 2) / 2) + "}}\n";
+    std::string text = frameDeck(deck);
+    for (const char* count : {"elements: 3}", "elements: 4}", "elements: 2}"})
+      for (std::size_t at = text.find(count); at != std::string::npos; at = text.find(count))
+        text.replace(at, std::string(count).size(), "elements: 90}");
+    const Study s = test::solveDeckText(text, "frame_many.yaml");
+    const RunResult& run = *s.run;
+    const Model& model = *run.model;
+    const std::vector<CaseOutcome>& cases = casesOf(run.analyses.front());
+    REQUIRE(cases.size() * model.elements().size() >= 100000);
+    REQUIRE(setenv("BEAMROTOR_THREADS", "3", 1) == 0);
+    const std::vector<AnalysisExtremes> split = runExtremes(run);
+    const PreparedRun prepared = prepareRun(run);
+    REQUIRE(unsetenv("BEAMROTOR_THREADS") == 0);
+    // The reference: each case's extremes one after the other, as staticExtremes gives them.
+    const bool chords = caseChordDeflections(model, cases.size());
+    SolutionPolynomials summed;
+    const std::vector<StaticExtremes>& got = split.front().cases;
+    REQUIRE(got.size() == cases.size());
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      CAPTURE(cases[k].name);
+      LoadedSolution solution = cases[k].on(model);
+      if (cases[k].combination) {
+        cases[k].polynomials->sumInto(summed);
+        solution.polynomials = &summed;
+      }
+      const StaticExtremes one = staticExtremes(solution, PeaksKept::canGovern, chords);
+      REQUIRE(got[k].peaks.size() == one.peaks.size());
+      for (std::size_t e = 0; e < one.peaks.size(); ++e)
+        for (BeamPeak ElementPeaks::*kind : {&ElementPeaks::stress, &ElementPeaks::shear, &ElementPeaks::moment}) {
+          CHECK((got[k].peaks[e].*kind).element == (one.peaks[e].*kind).element);
+          CHECK((got[k].peaks[e].*kind).s == (one.peaks[e].*kind).s);
+          CHECK((got[k].peaks[e].*kind).value == (one.peaks[e].*kind).value);
+        }
+      REQUIRE(got[k].ranges.size() == one.ranges.size());
+      for (std::size_t m = 0; m < one.ranges.size(); ++m)
+        for (int c = 0; c < 6; ++c)
+          for (MemberValue ComponentRange::*side : {&ComponentRange::max, &ComponentRange::min}) {
+            CHECK((got[k].ranges[m][c].*side).element == (one.ranges[m][c].*side).element);
+            CHECK((got[k].ranges[m][c].*side).s == (one.ranges[m][c].*side).s);
+            CHECK((got[k].ranges[m][c].*side).value == (one.ranges[m][c].*side).value);
+          }
+      REQUIRE(got[k].chordDeflections.size() == one.chordDeflections.size());
+      for (std::size_t m = 0; m < one.chordDeflections.size(); ++m)
+        CHECK(got[k].chordDeflections[m].value == one.chordDeflections[m].value);
+      CHECK(got[k].largestDisplacement.value == one.largestDisplacement.value);
+      CHECK(got[k].largestDisplacement.element == one.largestDisplacement.element);
+    }
+    // The envelope of each member, computed whole by one part, against memberEnvelope alone.
+    std::vector<LoadedSolution> combinations;
+    for (const CaseOutcome& c : cases)
+      if (c.combination) combinations.push_back(c.on(model));
+    const std::vector<std::vector<EnvelopeStation>>& stations =
+        prepared.analyses.front().envelopeStations;
+    REQUIRE(stations.size() == model.members().size());
+    for (std::size_t m = 0; m < model.members().size(); ++m) {
+      const std::vector<EnvelopeStation> one =
+          memberEnvelope(combinations, model.members()[m].second, kIntervalsPerElement);
+      REQUIRE(stations[m].size() == one.size());
+      for (std::size_t i = 0; i < one.size(); ++i) {
+        CHECK(stations[m][i].s == one[i].s);
+        CHECK(stations[m][i].max == one[i].max);
+        CHECK(stations[m][i].min == one[i].min);
+        CHECK(stations[m][i].maxBy == one[i].maxBy);
+        CHECK(stations[m][i].minBy == one[i].minBy);
+      }
+    }
   }
 }

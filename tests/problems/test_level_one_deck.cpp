@@ -39,9 +39,7 @@ TEST_SUITE("rotor decks") {
     const test::SolvedDeck solved =
         test::solveShippedDeckToScratch("level1_stability.yaml", "level1-deck");
     const nlohmann::json results = solved.json("results.json");
-    nlohmann::json level;
-    for (const auto& a : results["analyses"])
-      if (a["type"] == "level1-stability") level = a;
+    const nlohmann::json level = test::analysisOfType(results, "level1-stability");
     REQUIRE(level.is_object());
     // Root to 1e-10 of Q (FORMAT.md); 1e-8 leaves room for the eigenvalues' round-off.
     CHECK(level["q0"].get<double>() == doctest::Approx(deckQ0()).epsilon(1e-8));
@@ -50,6 +48,7 @@ TEST_SUITE("rotor decks") {
     CHECK(level["pass"] == true);
     CHECK(level["map_decides"] == true);  // Q0/Qa = 2.85
     CHECK(level["whirl_at_q0"] == "forward");
+    CHECK(level["least_damped_at_q0"] == "rotor");  // no pads kept: always the rotor's
     CHECK(solved.process.out.find("API 684 Level I: pass") != std::string::npos);
     const auto cells = test::csvCells(solved.dir / "level1_level1.csv");
     REQUIRE(cells.size() == 42);  // header and 41 samples

@@ -50,6 +50,47 @@ TEST_SUITE("rotor decks") {
     }
   }
 
+  TEST_CASE("rotor on pedestals: the critical-speed map's k in series with each pedestal") {
+    // The shipped deck with a map over the bearings' stiffness k, kb at its middle point: there
+    // its lines are the Campbell diagram's forward critical speeds (the same rotor, shaft mass
+    // and all; a second method: a real symmetric eigenproblem against the refined Campbell
+    // crossings). (Not a shipped analysis: with `--set rho_s=0` the free rotor's tilt has no
+    // inertia, and the map's free-free asymptote does not exist.)
+    std::string text = fileContents(problemsDir() / "rotor_on_pedestals.yaml");
+    text.insert(text.find("\nchecks:"),
+                "\n  - {type: critical-speed-map, name: map, from_k: kb / 100, to_k: kb * 100, "
+                "points: 5, critical_speeds: 3}\n");
+    const Study s = solveDeckText(text, (problemsDir() / "rotor_on_pedestals.yaml").string());
+    REQUIRE(s.run);
+    const CampbellOutcome& c = *resultOf<CampbellOutcome>(s.run->analyses.at(0));
+    const CriticalSpeedMap& map = resultOf<CriticalSpeedMapOutcome>(s.run->analyses.at(1))->map;
+    REQUIRE(map.stiffness.size() == 5);
+    CHECK(map.stiffness[2] == doctest::Approx(5e7).epsilon(1e-15));
+    REQUIRE(c.criticalSpeeds.size() == 6);
+    for (std::size_t j = 0; j < 3; ++j) {
+      // The Campbell crossings are refined to 1e-10 of the speed; the map's eigenvalues carry
+      // round-off (1e-12) and the middle k its own (1e-16): 1e-9.
+      CAPTURE(j);
+      CHECK(map.speeds[2][j] * 30 / kPi ==
+            doctest::Approx(c.criticalSpeeds[2 * j].rpm).epsilon(1e-9));
+      MESSAGE("map at kb against Campbell, line ", j + 1, ": ",
+              map.speeds[2][j] * 30 / kPi / c.criticalSpeeds[2 * j].rpm - 1);
+    }
+    // An anisotropic pedestal is refused by the map (it solves one plane for both).
+    const DeckError e = readingError(
+        "title: t\nmodel: {dimension: lateral}\n"
+        "materials: [{name: s, E: 2.1e11, nu: 0.3, rho: 7850}]\n"
+        "sections: [{name: s, shape: circle, D: 50 mm}]\n"
+        "segments: [{name: s, length: 1, section: s, elements: 4}]\n"
+        "bearings:\n"
+        "  - {name: A, at: start, kxx: 1e7, kyy: 1e7, pedestal: {m: 10, kxx: 1e7, kyy: 2e7}}\n"
+        "  - {name: B, at: end, kxx: 1e7, kyy: 1e7}\n"
+        "analyses: [{type: critical-speed-map, name: m, from_k: 1e6, to_k: 1e8, points: 3}]\n",
+        "aniso.yaml");
+    CHECK(e.message().find("bearing 'A'") != std::string::npos);
+    CHECK(e.message().find("kxx") != std::string::npos);
+  }
+
   TEST_CASE("a pedestal far stiffer than its bearing is the ground") {
     // kp = 5e13 N/m: the disk on the shaft (ks = 48 E I / L^3) and both bearings in series,
     // k1, and then 2 kp, 3e-7 stiffer than k1 alone: the critical speed 1.5e-7 below the one on

@@ -41,9 +41,7 @@ TEST_SUITE("rotor decks") {
     const test::SolvedDeck solved =
         test::solveShippedDeckToScratch("journal_runup.yaml", "journal-runup-deck");
     const nlohmann::json results = solved.json("results.json");
-    nlohmann::json runUp;
-    for (const auto& a : results["analyses"])
-      if (a["type"] == "run-up") runUp = a;
+    const nlohmann::json runUp = test::analysisOfType(results, "run-up");
     REQUIRE(runUp.is_object());
     CHECK(runUp["speed_driven"] == true);
     CHECK(runUp["bearings"] == "nonlinear");
@@ -147,9 +145,7 @@ TEST_SUITE("rotor decks") {
     const test::SolvedDeck solved =
         test::solveShippedDeckToScratch("jeffcott_runup.yaml", "runup-deck");
     const nlohmann::json results = solved.json("results.json");
-    nlohmann::json runUp;
-    for (const auto& a : results["analyses"])
-      if (a["type"] == "run-up") runUp = a;
+    const nlohmann::json runUp = test::analysisOfType(results, "run-up");
     REQUIRE(runUp.is_object());
     const nlohmann::json& disk = runUp["points"][0];
     CHECK(disk["point"] == "disk");
@@ -176,9 +172,7 @@ TEST_SUITE("rotor decks") {
     const test::SolvedDeck solved =
         test::solveShippedDeckToScratch("jeffcott_rub.yaml", "jeffcott-rub-deck");
     const nlohmann::json results = solved.json("results.json");
-    nlohmann::json runUp;
-    for (const auto& a : results["analyses"])
-      if (a["type"] == "run-up") runUp = a;
+    const nlohmann::json runUp = test::analysisOfType(results, "run-up");
     REQUIRE(runUp.is_object());
     REQUIRE(runUp["rubs"].size() == 1);
     const auto& seal = runUp["rubs"][0];

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fem/model/StandardSections.hpp"
@@ -699,6 +700,44 @@ supports:
         {"L65x50x5", {"5.54", "23.2", "5.14", "11.9", "3.19", "28.8", "6.32"}},
     };
     compareRows("L unequal", {kColA, kColIy, kColWely, kColIz, kColWelz, kColIu, kColIv}, rows);
+  }
+
+  TEST_CASE("angles: It against the SCI Blue Book's printed torsion constant (34 + 17 rows)") {
+    // SCI P363 ("Blue Book", Steel building design: design data), BS EN 10056-1 equal and
+    // unequal angles, three significant figures, cm^4; as transcribed in the steelsnakes
+    // package (github.com/waynemaranga/steelsnakes, UK/data/L_EQUAL.json and
+    // data/sections/UK/L_UNEQUAL.json), whose other columns (A, I, Iu, Iv, Wel) are the tables'
+    // tested above (the values as transcribed: "0.24" where the book may print "0.240" is taken
+    // to its two digits). The printed It is not the St Venant constant of the outline: that constant
+    // (the stress function, tests/fem/model/test_open_section_torsion.cpp) lies 1.6 % to 3.6 %
+    // below every printed value. Our formula (Roark's L with the rounded toes) lies from -1.3 %
+    // (L 200x200x24) to +2.7 % (L 30x30x3) of them, measured; allowed 3 % beyond half a digit.
+    // L 100x50x8 is left out (the Blue Book's r1 = 8 mm, the catalogue's 9, docs).
+    constexpr double kPrintedAngleTorsionGap = 3e-2;
+    const std::pair<const char*, const char*> rows[] = {
+        {"L20x20x3", "0.038"},    {"L25x25x3", "0.047"},     {"L25x25x4", "0.107"},
+        {"L30x30x3", "0.061"},    {"L30x30x4", "0.137"},     {"L35x35x4", "0.158"},
+        {"L40x40x4", "0.188"},    {"L40x40x5", "0.352"},     {"L50x50x4", "0.24"},
+        {"L50x50x5", "0.45"},    {"L50x50x6", "0.755"},     {"L60x60x5", "0.550"},
+        {"L60x60x6", "0.922"},    {"L60x60x8", "2.09"},      {"L70x70x6", "1.09"},
+        {"L70x70x7", "1.69"},     {"L75x75x6", "1.17"},      {"L75x75x8", "2.65"},
+        {"L80x80x8", "2.88"},     {"L80x80x10", "5.45"},     {"L90x90x7", "2.24"},
+        {"L90x90x8", "3.28"},     {"L90x90x10", "6.2"},     {"L100x100x8", "3.68"},
+        {"L100x100x10", "6.97"},  {"L100x100x12", "11.8"},   {"L120x120x10", "8.41"},
+        {"L120x120x12", "14.2"},  {"L150x150x10", "10.8"},   {"L150x150x12", "18.2"},
+        {"L150x150x15", "34.6"},  {"L200x200x16", "56.1"},   {"L200x200x20", "107"},
+        {"L200x200x24", "182"},   {"L30x20x3", "0.049"},     {"L30x20x4", "0.11"},
+        {"L40x20x4", "0.131"},    {"L40x25x4", "0.142"},     {"L45x30x4", "0.166"},
+        {"L50x30x5", "0.34"},    {"L60x30x5", "0.382"},     {"L60x40x5", "0.435"},
+        {"L60x40x6", "0.735"},    {"L65x50x5", "0.498"},     {"L75x50x6", "0.935"},
+        {"L80x40x8", "2.05"},     {"L100x65x7", "2.02"},     {"L100x75x8", "3.13"},
+        {"L150x90x10", "8.3"},   {"L200x100x10", "10.7"},   {"L200x150x12", "20.9"}};
+    std::vector<Worst> worst;
+    for (const auto& [designation, It] : rows) {
+      const CatalogProperties p = catalogProperties(entry(designation));
+      compareAll(designation, {{"It", p.It, It, 1e-8, kPrintedAngleTorsionGap}}, worst);
+    }
+    report("L (It, SCI Blue Book)", worst);
   }
 
   TEST_CASE("every hollow section against the closed forms of its rounded corners") {

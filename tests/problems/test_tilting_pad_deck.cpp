@@ -142,11 +142,5 @@ bearings:
     const DeckError bad = readingError(deckWith(", pad_tilts: full"), "pads.yaml");
     CHECK(bad.place().line == 10);
     CHECK(bad.message().find("condensed") != std::string::npos);
-    const DeckError map = readingError(
-        deckWith(", pad_tilts: dofs",
-                 ", {type: critical-speed-map, name: m, from_k: 1e7, to_k: 1e9, points: 3, "
-                 "critical_speeds: 1}"),
-        "pads.yaml");
-    CHECK(map.message().find("pad_tilts: condensed") != std::string::npos);
   }
 }

@@ -426,23 +426,13 @@ void readUnbalance(const Context& c, const Field& f, DeckRotorAnalysis& r) {
 }
 
 /// Fails at analysis entry f when a bearing stands on a pedestal: `why` the analysis cannot.
-/// Fails at analysis entry f when a bearing keeps its pads' tilts as dofs: `why` the analysis
-/// needs each bearing as one element on the journal.
-void refusePadTilts(const Context& c, const Field& f, const std::string& why) {
-  for (const DeckBearing& b : c.deck.rotor.bearings)
-    if (b.padInertia)
-      f.fail(why + "; bearing '" + b.name +
-             "' keeps its pads' tilts as dofs (pad_tilts: dofs): use pad_tilts: condensed "
-             "for this analysis");
-}
-
-/// Fails at analysis entry f when a bearing stands on a pedestal: `why` the analysis cannot.
+/// (Bearings that keep their pads' tilts as dofs are taken condensed by these analyses,
+/// problems/run/RunRotor.cpp.)
 void refusePedestals(const Context& c, const Field& f, const std::string& why) {
   for (const DeckBearing& b : c.deck.rotor.bearings)
     if (b.pedestal)
       f.fail(why + " on the ground; bearing '" + b.name +
              "' stands on a pedestal (remove it for this analysis)");
-  refusePadTilts(c, f, why);
 }
 
 /// critical-speed-map: from_k, to_k (N/m), points (log-spaced, ends included) and
@@ -456,7 +446,14 @@ void readCriticalSpeedMap(const Context& c, const Field& f, DeckRotorAnalysis& r
   if (c.deck.rotor.bearings.empty())
     f.fail("a critical-speed map puts its stiffness in place of the deck's bearings: add "
            "bearings");
-  refusePedestals(c, f, "a critical-speed map puts its stiffness in place of the bearings");
+  // On a pedestal the swept stiffness stands in series with it (fem/rotor/CriticalSpeedMap.hpp),
+  // whose one plane stands for both: the pedestal's springs must be the same in y and z.
+  for (const DeckBearing& b : c.deck.rotor.bearings)
+    if (b.pedestal && b.pedestal->kyy != b.pedestal->kzz)
+      f.fail("a critical-speed map solves one plane for both: bearing '" + b.name +
+             "' stands on a pedestal whose kxx (" + formatNumber(b.pedestal->kyy) +
+             " N/m) differs from its kyy (" + formatNumber(b.pedestal->kzz) +
+             " N/m); give it one k for this analysis");
   const ExpressionEvaluator& ev = c.evaluator;
   const double from = f.require("from_k").positive(ev, dim::stiffness);
   const Field toField = f.require("to_k");
@@ -781,10 +778,15 @@ void requireSymmetricAtRest(const Context& c, const Field& analysis) {
   }
 }
 
-void resolveRotorQuantity(const Context&, const Quantity& q, const Field& f,
+void resolveRotorQuantity(const Context& c, const Quantity& q, const Field& f,
                           const DeckAnalysis& a) {
   const RotorFamily* settings = rotorSettings(a.kind);
   if (!settings) return;
+  if (q.kind == Quantity::Kind::padMode &&
+      std::none_of(c.deck.rotor.bearings.begin(), c.deck.rotor.bearings.end(),
+                   [](const DeckBearing& b) { return b.padInertia.has_value(); }))
+    f.fail("analysis '" + a.name + "' has no pad modes: no bearing keeps its pads' tilts as "
+           "dofs (pad_tilts: dofs)");
   if (q.kind == Quantity::Kind::logDecrement && q.mode > settings->modes)
     f.fail("mode " + std::to_string(q.mode) + " asked for, but analysis '" + a.name +
            "' computes " + std::to_string(settings->modes) + " modes (set its modes:)");
@@ -871,8 +873,6 @@ void LevelOneSpec::read(const reader::Context& c, const Field& f) {
   f.allowOnly({"type", "name", "speed_rpm", "max_continuous_rpm", "average_gas_density",
                "station", "stages", "modes", "shift"},
               "a level1-stability analysis");
-  reader::refusePadTilts(c, f, "a level1-stability analysis pins the bearings for its critical "
-                               "speed ratio");
   rotor.speed = f.require("speed_rpm").positive(c.evaluator, kRpmField) * reader::kRadPerRpm;
   rotor.maximumContinuousSpeed = rotor.speed;
   if (auto m = f.get("max_continuous_rpm"))

@@ -17,7 +17,8 @@ struct RotorFamily {
 
 struct RotorSpec : RotorFamily {
   static constexpr std::string_view deckType = "rotor";
-  static constexpr std::array answers{Quantity::Kind::frequency, Quantity::Kind::logDecrement};
+  static constexpr std::array answers{Quantity::Kind::frequency, Quantity::Kind::logDecrement,
+                                      Quantity::Kind::padMode};
   static constexpr bool needsMass = true;
   void read(const reader::Context& c, const Field& f);
 };

@@ -21,6 +21,12 @@ const std::vector<std::string>& levelOnePropertyNames() {
   return names;
 }
 
+const std::vector<std::string>& padModePropertyNames() {
+  static const std::vector<std::string> names{"frequency", "decay_rate", "damping_ratio",
+                                              "log_decrement", "bearing_energy"};
+  return names;
+}
+
 bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
   const std::string& head = words[0];
   using Kind = Quantity::Kind;
@@ -29,6 +35,18 @@ bool parseRotorQuantity(const std::vector<std::string>& words, Quantity& q) {
     q.kind = head == "log_decrement" ? Kind::logDecrement : Kind::criticalSpeed;
     q.mode =
         parseOrdinal(words[1], head == "log_decrement" ? "mode number" : "critical speed number");
+    return true;
+  }
+  if (head == "pad_mode") {
+    const auto& names = padModePropertyNames();
+    if (words.size() != 3 || std::find(names.begin(), names.end(), words[2]) == names.end()) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw std::invalid_argument("expected 'pad_mode N PROPERTY', PROPERTY one of " + list);
+    }
+    q.kind = Kind::padMode;
+    q.mode = parseOrdinal(words[1], "pad mode number");
+    q.property = words[2];
     return true;
   }
   if (head == "instability_onset") {

@@ -16,6 +16,8 @@ int parseOrdinal(const std::string& word, const std::string& what);
 const std::vector<std::string>& rigidBodyPropertyNames();
 /// The properties `level1 PROPERTY` names: qa, q0 (N/m), q0_over_qa, log_decrement_at_qa.
 const std::vector<std::string>& levelOnePropertyNames();
+/// The properties `pad_mode N PROPERTY` reads of a pad's own mode.
+const std::vector<std::string>& padModePropertyNames();
 
 /// Fills q when `words` is a rotor quantity and returns true; false when the first word is
 /// not one; throws std::invalid_argument when it is one, written wrongly.

@@ -32,7 +32,7 @@ ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::strin
   for (double v : result.pinned) rpm.include(shownRpm(v));
   for (double v : result.freeFree) rpm.include(shownRpm(v));
 
-  std::vector<std::string> titles{"pinned bearings", "free-free rotor"};
+  std::vector<std::string> titles{"rigid bearings", "free-free rotor"};
   for (int j = 1; j <= count; ++j) titles.push_back("critical speed " + std::to_string(j));
   for (const std::string& b : bearingNames)
     for (const char* d : {" kxx", " kyy"}) titles.push_back("bearing " + b + d);
@@ -53,7 +53,7 @@ ChartScript criticalSpeedMapDiagram(const std::string& caption, const std::strin
       body << number(shownRpm(speeds[j])) << " with lines " << style << " "
            << (j == 0 ? "title " + gnuplotText(title) : std::string("notitle")) << ", \\\n       ";
   };
-  asymptote(result.pinned, "pinned bearings", "dashtype 2 linewidth 1.5 linecolor rgb 'gray30'");
+  asymptote(result.pinned, "rigid bearings", "dashtype 2 linewidth 1.5 linecolor rgb 'gray30'");
   asymptote(result.freeFree, "free-free rotor", "dashtype 3 linewidth 1.5 linecolor rgb 'gray50'");
   for (int j = 1; j <= count; ++j)
     body << (j > 1 ? ", \\\n       " : "") << gnuplotFile(mapFile) << " skip 1 using 1:"

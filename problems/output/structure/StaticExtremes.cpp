@@ -1,6 +1,7 @@
 // The extremes of a static solution, computed once (see StaticExtremes.hpp).
 #include "problems/output/structure/StaticExtremes.hpp"
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 
@@ -25,16 +26,25 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
     const AnalysisOutcome& a = run.analyses[i];
     if (const StaticResult* s = staticsOf(a))
       out[i].own = staticExtremes({*run.model, s->displacement});
-    const bool chords = caseChordDeflections(*run.model, casesOf(a).size());
-    SolutionPolynomials summed;  // one combination's at a time, its storage reused
-    for (const CaseOutcome& c : casesOf(a)) {
-      LoadedSolution solution = c.on(*run.model);
-      if (c.combination && c.polynomials) {
-        c.polynomials->sumInto(summed);
-        solution.polynomials = &summed;
+    const std::vector<CaseOutcome>& cases = casesOf(a);
+    const bool chords = caseChordDeflections(*run.model, cases.size());
+    // Each case's extremes are computed whole by one part (its own range of cases, in order),
+    // so they are the same to the bit however many parts run.
+    out[i].cases.resize(cases.size());
+    const std::size_t work = cases.size() * run.model->elements().size();
+    const std::vector<int> bounds = evenRanges(int(cases.size()), partsFor(work));
+    runParts(int(bounds.size()) - 1, [&](int part) {
+      SolutionPolynomials summed;  // one combination's at a time, its storage reused
+      for (int k = bounds[part]; k < bounds[part + 1]; ++k) {
+        const CaseOutcome& c = cases[k];
+        LoadedSolution solution = c.on(*run.model);
+        if (c.combination && c.polynomials) {
+          c.polynomials->sumInto(summed);
+          solution.polynomials = &summed;
+        }
+        out[i].cases[k] = staticExtremes(solution, PeaksKept::canGovern, chords);
       }
-      out[i].cases.push_back(staticExtremes(solution, PeaksKept::canGovern, chords));
-    }
+    });
   }
   return out;
 }

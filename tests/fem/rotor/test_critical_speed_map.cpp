@@ -1,13 +1,21 @@
 // The undamped critical-speed map of a uniform shaft on two end bearings against closed
 // forms: pinned-pinned at high stiffness, a rigid shaft on two springs at low stiffness, the
 // free-free beam above it; and the pinned asymptote of a Rayleigh shaft (rotary inertia, no
-// gyroscopic moments: the map neglects them, fem/rotor/CriticalSpeedMap.hpp).
+// gyroscopic moments: the map neglects them, fem/rotor/CriticalSpeedMap.hpp); a disk on a
+// massless shaft whose bearings stand on pedestals, the swept stiffness in series with each.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "elements/Bearing.hpp"
+#include "elements/BearingOnPedestal.hpp"
+#include "elements/PointInertia.hpp"
+#include "elements/Spring.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
+#include "meshes/LineBuilder.hpp"
 #include "tests/Helpers.hpp"
 
 using namespace beamrotor;
@@ -38,9 +46,96 @@ double beamFrequency(const MapShaft& s, double betaL) {
   return betaL * betaL / (s.L * s.L) * std::sqrt(s.EI() / s.rhoA());
 }
 
+/// A disk of mass m at mid-span of a light shaft (L, D; density 1e-4 of steel's, 1.2 g against
+/// the disk's 50 kg) whose two end bearings stand on pedestals of mass mp and stiffness kp
+/// (elements/BearingOnPedestal). The disk's diametral inertia Jd gives the free rotor's tilt an
+/// inertia, and the shaft's mass keeps its flexible modes within the eigensolver's reach (a
+/// massless shaft's lie ~1e12 times further: the free-free asymptote is then beyond double
+/// precision); the bounce modes, symmetric, do not tilt the disk.
+struct PedestalRotor {
+  double L = 0.8, D = 0.05, E = 2.1e11, m = 50, Jd = 1, mp = 30, kp = 2e7;
+  /// The shaft's stiffness at the disk against its journals: 48 E I / L^3 (Hermite elements
+  /// are exact for a point load).
+  double ks() const { return 48 * E * kPi * std::pow(D, 4) / 64 / std::pow(L, 3); }
+  void build(Model& model) const {
+    auto sec = std::make_shared<Section>(
+        Section::circle("shaft", Material::fromEnu("light", E, 0.3, 0.785), D));
+    LineSpec spec;
+    spec.dofs = DofSet::lateral();
+    spec.segments.push_back({L, sec, 8, 0, {}});
+    spec.points = {{"left", 0}, {"disk", L / 2}, {"right", L}};
+    buildLine(model, spec);
+    model.add<PointInertia>(model.node("disk"), DofSet::lateral(), m, 0.0, Jd,
+                            Eigen::Vector3d::UnitX());
+    for (const char* end : {"left", "right"}) {
+      const int journal = model.node(end);
+      const int housing = model.addNode(model.nodes()[journal]);
+      model.addSupport({std::string(end) + " pedestal", housing, {{Dof::ry, 0}, {Dof::rz, 0}}});
+      if (mp > 0) model.add<PointInertia>(housing, DofSet{Dof::uy, Dof::uz}, mp);
+      model.add<Spring>(NodeDof{housing, Dof::uy}, kp);
+      model.add<Spring>(NodeDof{housing, Dof::uz}, kp);
+      model.add<BearingOnPedestal>(journal, housing, std::vector<double>{0.0},
+                                   std::vector<BearingCoefficients>{BearingCoefficients::isotropic(1e7)});
+    }
+  }
+  /// The bounce critical speeds (rad/s) with bearing stiffness k in series: the disk and the
+  /// housings in phase, k1 = ks 2 k / (ks + 2 k) the shaft in series with the two bearings,
+  ///   2 m mp w^4 - (2 mp k1 + m k1 + 2 m kp) w^2 + 2 k1 kp = 0;
+  /// k = infinity: k1 = ks. Massless housings: the two springs in series,
+  /// w^2 = (k1 2 kp / (k1 + 2 kp)) / m. (The antisymmetric modes tilt the disk.)
+  std::vector<double> closedForm(double k) const {
+    const double k1 = std::isinf(k) ? ks() : ks() * 2 * k / (ks() + 2 * k);
+    if (mp == 0) return {std::sqrt(k1 * 2 * kp / (k1 + 2 * kp) / m)};
+    const double a = 2 * m * mp, b = 2 * mp * k1 + m * k1 + 2 * m * kp, c = 2 * k1 * kp;
+    const double root = std::sqrt(b * b - 4 * a * c);
+    return {std::sqrt((b - root) / (2 * a)), std::sqrt((b + root) / (2 * a))};
+  }
+};
+
 }  // namespace
 
 TEST_SUITE("critical speed map") {
+  TEST_CASE("bearings on pedestals: the swept stiffness in series with each pedestal") {
+    for (double mp : {30.0, 0.0}) {
+      CAPTURE(mp);
+      PedestalRotor rotor;
+      rotor.mp = mp;
+      Model model;
+      rotor.build(model);
+      const std::vector<double> ks{1e6, 1e7, 1e8, 1e9};
+      // Every line of the two planes' modes up to the high bounce: with the pedestals' mass the
+      // two bounces, the housings' and the disk's tilt; without, the bounce and the tilt.
+      const int count = mp > 0 ? 4 : 2;
+      const CriticalSpeedMap map = solveCriticalSpeedMap(model, ks, count);
+      // Each closed-form bounce is a line of the map. The shaft's own mass (2.5e-5 of the
+      // disk's), left out of the closed forms, is what separates them: measured 1.03e-5 at
+      // most (either pedestal mass), asked 1e-4.
+      double worst = 0;
+      const auto nearestLine = [](const std::vector<double>& lines, double w) {
+        double best = 1e300;
+        for (double line : lines) best = std::min(best, std::abs(line / w - 1));
+        return best;
+      };
+      for (std::size_t i = 0; i < ks.size(); ++i)
+        for (double w : rotor.closedForm(ks[i])) {
+          CAPTURE(ks[i]);
+          CAPTURE(w);
+          CHECK(nearestLine(map.speeds[i], w) <= 1e-4);
+          worst = std::max(worst, nearestLine(map.speeds[i], w));
+        }
+      // k -> infinity: the rotor on its pedestals (journals tied to housings), not pinned.
+      for (double w : rotor.closedForm(std::numeric_limits<double>::infinity())) {
+        CAPTURE(w);
+        CHECK(nearestLine(map.pinned, w) <= 1e-4);
+        worst = std::max(worst, nearestLine(map.pinned, w));
+      }
+      // k -> 0: the free rotor, the housings left out: the light shaft's flexible modes
+      // (~100 times a steel shaft's), far above every line here.
+      CHECK(map.freeFree.front() > 10 * map.pinned.back());
+      MESSAGE("pedestal map, mp = ", mp, ": largest relative error ", worst);
+    }
+  }
+
   TEST_CASE("uniform shaft without rotary inertia: pinned-pinned, rigid-body and free-free limits") {
     // No rotary inertia, so no gyroscopic moments: the critical speeds are the natural
     // frequencies of the non-rotating Euler-Bernoulli shaft on springs k at both ends.

@@ -18,6 +18,8 @@
 #include <numbers>
 #include <vector>
 
+#include "elements/BearingOnPedestal.hpp"
+#include "elements/Spring.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/LevelOneStability.hpp"
 #include "fem/rotor/RotorStability.hpp"
@@ -180,6 +182,27 @@ TEST_CASE("level one: the rigid-support critical speed of a Jeffcott rotor is sq
     onBearings.add<Bearing>(onBearings.node(end), BearingCoefficients::isotropic(3e7, 2e3));
   onBearings.add<Bearing>(onBearings.node("disk"), BearingCoefficients::isotropic(0, j.c));
   CHECK(rigidSupportCriticalSpeed(onBearings, 1000) ==
+        doctest::Approx(j.omegaN()).epsilon(1e-11));
+  // The same bearings on pedestals (housings of 30 kg on 2e7 N/m springs: alone they would
+  // bounce at 816 rad/s, below the rotor's 1000 rad/s): rigid supports pin the journals and
+  // take the housings out, so the critical speed is the Jeffcott's again. Before, the bearings
+  // on pedestals stayed elastic and the answer was the rotor on its pedestals'.
+  Model onPedestals;
+  buildLine(onPedestals, spec);
+  onPedestals.add<PointInertia>(onPedestals.node("disk"), DofSet::lateral(), j.m);
+  for (const char* end : {"left", "right"}) {
+    const int journal = onPedestals.node(end);
+    const int housing = onPedestals.addNode(onPedestals.nodes()[journal]);
+    onPedestals.addSupport(
+        {std::string(end) + " pedestal", housing, {{Dof::ry, 0}, {Dof::rz, 0}}});
+    onPedestals.add<PointInertia>(housing, DofSet{Dof::uy, Dof::uz}, 30.0);
+    onPedestals.add<Spring>(NodeDof{housing, Dof::uy}, 2e7);
+    onPedestals.add<Spring>(NodeDof{housing, Dof::uz}, 2e7);
+    onPedestals.add<BearingOnPedestal>(
+        journal, housing, std::vector<double>{0.0},
+        std::vector<BearingCoefficients>{BearingCoefficients::isotropic(3e7, 2e3)});
+  }
+  CHECK(rigidSupportCriticalSpeed(onPedestals, 1000) ==
         doctest::Approx(j.omegaN()).epsilon(1e-11));
   // The Level I verdict: Q0 / Qa = 3 lets the map decide; region B fails, region A passes.
   const int disk = onBearings.node("disk");

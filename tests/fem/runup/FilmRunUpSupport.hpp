@@ -1,7 +1,7 @@
-// What the film run-up tests share: the options of a Jeffcott rotor (a disk on a shaft spring
-// to a journal node) whose bearing element holds a film's linear coefficients, run at a time
-// step with an unbalance on the disk, either on those coefficients or on the film itself; and
-// the orbit measures they compare runs by.
+// What the film run-up tests share: a Jeffcott rotor (a disk on a shaft spring to a journal
+// node) whose bearing element holds a film's linear coefficients, and its options, run at a
+// time step with an unbalance on the disk, either on those coefficients or on the film itself;
+// and the orbit measures they compare runs by.
 #pragma once
 
 #include <algorithm>
@@ -9,10 +9,38 @@
 #include <cstddef>
 #include <memory>
 
+#include "elements/Bearing.hpp"
+#include "elements/PointInertia.hpp"
+#include "elements/Spring.hpp"
+#include "fem/model/Model.hpp"
 #include "fem/runup/JournalFilm.hpp"
 #include "fem/runup/RunUp.hpp"
 
 namespace beamrotor::test {
+
+/// The rotor's nodes and its bearing element.
+struct FilmJeffcott {
+  int disk = -1, journal = -1, bearing = -1;
+};
+
+/// Into `model`: a disk (20 kg) on a shaft spring (1e6 N/m) to a journal node (0.5 kg, 0.1 m
+/// along x) whose Bearing element holds `coefficients`; with `diskDamping` > 0 (N s/m) a damper
+/// from the disk to the ground as well.
+inline FilmJeffcott buildFilmJeffcott(Model& model, const BearingCoefficients& coefficients,
+                                      double diskDamping = 0) {
+  FilmJeffcott r;
+  r.disk = model.addNode({0, 0, 0});
+  r.journal = model.addNode({0.1, 0, 0});
+  model.add<PointInertia>(r.disk, DofSet{Dof::uy, Dof::uz}, 20.0);
+  model.add<PointInertia>(r.journal, DofSet{Dof::uy, Dof::uz}, 0.5);
+  for (Dof d : {Dof::uy, Dof::uz}) {
+    model.add<Spring>(NodeDof{r.disk, d}, NodeDof{r.journal, d}, 1e6);
+    if (diskDamping > 0) model.add<Spring>(NodeDof{r.disk, d}, 0.0, diskDamping);
+  }
+  model.add<Bearing>(r.journal, coefficients);
+  r.bearing = int(model.elements().size()) - 1;
+  return r;
+}
 
 /// Steady start, the disk's and the journal's histories; unbalance `me` on the disk (none
 /// when 0). With `film`, the bearing element `bearing` acts by it instead, carrying `load`

@@ -17,7 +17,6 @@
 #include "elements/Bearing.hpp"
 #include "elements/PointInertia.hpp"
 #include "elements/ShortJournalFilm.hpp"
-#include "elements/Spring.hpp"
 #include "fem/runup/RunUp.hpp"
 #include "tests/fem/runup/FilmRunUpSupport.hpp"
 
@@ -35,17 +34,9 @@ struct FilmRotor {
   Model model;
   int disk = -1, node = -1, bearing = -1;
   explicit FilmRotor(double spin, double diskDamping = 0) : speed(spin) {
-    const double shaftStiffness = 1e6;
-    disk = model.addNode({0, 0, 0});
-    node = model.addNode({0.1, 0, 0});
-    model.add<PointInertia>(disk, DofSet{Dof::uy, Dof::uz}, 20.0);
-    model.add<PointInertia>(node, DofSet{Dof::uy, Dof::uz}, 0.5);
-    for (Dof d : {Dof::uy, Dof::uz}) {
-      model.add<Spring>(NodeDof{disk, d}, NodeDof{node, d}, shaftStiffness);
-      if (diskDamping > 0) model.add<Spring>(NodeDof{disk, d}, 0.0, diskDamping);
-    }
-    model.add<Bearing>(node, shortBearingCoefficients(journal, speed));
-    bearing = int(model.elements().size()) - 1;
+    const test::FilmJeffcott r =
+        test::buildFilmJeffcott(model, shortBearingCoefficients(journal, speed), diskDamping);
+    disk = r.disk, node = r.journal, bearing = r.bearing;
   }
   RunUpOptions options(double dt, double me, bool nonlinear) const {
     std::shared_ptr<const JournalFilm> film;

@@ -11,11 +11,8 @@
 #include <memory>
 #include <vector>
 
-#include "elements/Bearing.hpp"
 #include "elements/FiniteJournalBearing.hpp"
 #include "elements/FiniteJournalFilm.hpp"
-#include "elements/PointInertia.hpp"
-#include "elements/Spring.hpp"
 #include "fem/runup/RunUp.hpp"
 #include "tests/fem/runup/FilmRunUpSupport.hpp"
 
@@ -36,14 +33,9 @@ struct FiniteFilmRotor {
   int disk = -1, node = -1, bearing = -1;
   JournalOperatingPoint point;
   explicit FiniteFilmRotor(double spin) : speed(spin) {
-    disk = model.addNode({0, 0, 0});
-    node = model.addNode({0.1, 0, 0});
-    model.add<PointInertia>(disk, DofSet{Dof::uy, Dof::uz}, 20.0);
-    model.add<PointInertia>(node, DofSet{Dof::uy, Dof::uz}, 0.5);
-    for (Dof d : {Dof::uy, Dof::uz}) model.add<Spring>(NodeDof{disk, d}, NodeDof{node, d}, 1e6);
     point = finiteJournalPoint(journal, speed, grid);
-    model.add<Bearing>(node, point.coefficients);
-    bearing = int(model.elements().size()) - 1;
+    const test::FilmJeffcott r = test::buildFilmJeffcott(model, point.coefficients);
+    disk = r.disk, node = r.journal, bearing = r.bearing;
   }
   RunUpOptions options(double dt, double me, bool nonlinear) const {
     std::shared_ptr<const JournalFilm> film;

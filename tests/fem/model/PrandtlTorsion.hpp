@@ -1,33 +1,26 @@
-// The torsion constant of rolled channels (fem/model/StandardSections: the tables' rectangles
-// plus two filleted L junctions) against a second method written here: Prandtl's stress
-// function on the exact outline, solved by finite differences. The stress function phi
-// vanishes on the boundary and satisfies lap(phi) = -2 inside; then It = 2 int phi dA. Grid
-// nodes inside the outline are the unknowns; where a grid line leaves the outline between two
-// nodes the five-point stencil takes the boundary's true distance (Shortley & Weller 1938).
-// The integral sums phi over the nodes' cells. Measured, the result converges at first order
-// in the grid spacing (a 10 x 2 rectangle against its series: 9.5e-3, 4.9e-3, 2.5e-3 at
+// A second method for the St Venant torsion constant of any solid outline (no holes), for the
+// tests of the open sections' torsion formulas: Prandtl's stress function phi, zero on the
+// boundary with lap(phi) = -2 inside, and It = 2 int phi dA. Finite differences on a square
+// grid: the nodes inside the outline are the unknowns; where a grid line leaves the outline
+// between two nodes the five-point stencil takes the boundary's true distance (Shortley &
+// Weller 1938). The integral sums phi over the nodes' cells. Measured, the result converges at
+// first order in the spacing (a 10 x 2 rectangle against its series: 9.5e-3, 4.9e-3, 2.5e-3 at
 // spacings b/40, b/80, b/160), so two grids are extrapolated linearly: 2 J(h/2) - J(h).
-#include <doctest/doctest.h>
+#pragma once
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <vector>
 
 #include "fem/model/SectionOutline.hpp"
-#include "fem/model/StandardSections.hpp"
-#include "tests/Helpers.hpp"
 
-using namespace beamrotor;
-using namespace beamrotor::test;
+namespace beamrotor::test {
 
-namespace {
+using TorsionPolygon = std::vector<std::array<double, 2>>;
 
-using Polygon = std::vector<std::array<double, 2>>;
-
-bool insidePolygon(const Polygon& poly, double y, double z) {
+inline bool insideTorsionPolygon(const TorsionPolygon& poly, double y, double z) {
   bool in = false;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
     const auto& a = poly[i];
@@ -40,8 +33,8 @@ bool insidePolygon(const Polygon& poly, double y, double z) {
 
 /// Distance from (y, z) along the unit grid direction (dy, dz) to the polygon's boundary, or
 /// `reach` when the boundary is farther.
-double boundaryDistance(const Polygon& poly, double y, double z, double dy, double dz,
-                        double reach) {
+inline double boundaryDistance(const TorsionPolygon& poly, double y, double z, double dy,
+                               double dz, double reach) {
   double nearest = reach;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
     const double ey = poly[i][0] - poly[j][0], ez = poly[i][1] - poly[j][1];
@@ -56,7 +49,7 @@ double boundaryDistance(const Polygon& poly, double y, double z, double dy, doub
 
 /// It = 2 int phi dA on a grid of spacing h (nodes at cell centres, offset by a fraction of a
 /// cell so that no node falls on an edge of the outline).
-double prandtlTorsion(const Polygon& poly, double h) {
+inline double prandtlTorsion(const TorsionPolygon& poly, double h) {
   double y0 = poly[0][0], y1 = y0, z0 = poly[0][1], z1 = z0;
   for (const auto& p : poly) {
     y0 = std::min(y0, p[0]), y1 = std::max(y1, p[0]);
@@ -70,7 +63,7 @@ double prandtlTorsion(const Polygon& poly, double h) {
   int n = 0;
   for (int i = 0; i < ny; ++i)
     for (int k = 0; k < nz; ++k)
-      if (insidePolygon(poly, yAt(i), zAt(k))) at(i, k) = n++;
+      if (insideTorsionPolygon(poly, yAt(i), zAt(k))) at(i, k) = n++;
 
   std::vector<Eigen::Triplet<double>> entries;
   const int step[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -104,48 +97,14 @@ double prandtlTorsion(const Polygon& poly, double h) {
   return 2 * phi.sum() * h * h;
 }
 
-double extrapolatedTorsion(const Polygon& poly, double h) {
+/// The stress function's It extrapolated from grids of spacing h and h / 2.
+inline double extrapolatedTorsion(const TorsionPolygon& poly, double h) {
   return 2 * prandtlTorsion(poly, h / 2) - prandtlTorsion(poly, h);
 }
 
-}  // namespace
-
-TEST_SUITE("channel torsion constant") {
-  TEST_CASE("the finite-difference stress function against a rectangle's series") {
-    // J = a b^3 / 3 (1 - 192 / pi^5 (b / a) sum over odd n of tanh(n pi a / 2b) / n^5)
-    // (Timoshenko & Goodier, Theory of Elasticity, section 109). Measured: 3.8e-4 extrapolated
-    // from spacings b/40 and b/80.
-    const double a = 10, b = 2;
-    double series = 0;
-    for (int k = 1; k < 200; k += 2)
-      series += std::tanh(k * M_PI * a / (2 * b)) / std::pow(k, 5);
-    const double exact = a * b * b * b / 3 * (1 - 192 / std::pow(M_PI, 5) * b / a * series);
-    const Polygon rectangle{{0, 0}, {a, 0}, {a, b}, {0, b}};
-    CHECK(relError(extrapolatedTorsion(rectangle, b / 40), exact) < 1e-3);
-  }
-
-  TEST_CASE("UPN 50 to 100: the tables' formula with L junctions within 1.6 % of the outline's") {
-    // DIN 1026-1 dimensions (mm); grids of tw / 25 and tw / 50. Measured: the formula lies
-    // 0.8 %, 0.6 %, 0.4 % and 1.35 % below the extrapolated stress function (UPN 50, 65, 80,
-    // 100); the thin-walled sum L t^3 / 3 used before lay 9 % to 10 % below. The tolerance is
-    // the formula's own largest departure measured, with the grid's extrapolation error
-    // (1e-3, the rectangle above) on top.
-    struct Row {
-      double h, b, tw, tf, r, rToe;
-    };
-    const Row rows[] = {{50, 38, 5, 7, 7, 3.5},
-                        {65, 42, 5.5, 7.5, 7.5, 4},
-                        {80, 45, 6, 8, 8, 4},
-                        {100, 50, 6, 8.5, 8.5, 4.5}};
-    const Material steel = Material::fromEnu("steel", 210e9, 0.3, 7850);
-    for (const Row& w : rows) {
-      const OutlineLoop outline =
-          channelOutline(w.h, w.b, w.tw, w.tf, w.r, w.rToe, 0.08).front();
-      const double stressFunction = extrapolatedTorsion(outlinePolygon(outline, 64), w.tw / 25);
-      const Section s = channelSection("UPN", steel, w.h, w.b, w.tw, w.tf, w.r, w.rToe, 0.08);
-      CAPTURE(w.h);
-      CAPTURE(s.J / stressFunction - 1);
-      CHECK(std::abs(s.J / stressFunction - 1) < 1.6e-2);
-    }
-  }
+/// The same for an outline of StandardSections (each rounded corner drawn by 64 chords).
+inline double extrapolatedTorsion(const OutlineLoop& outline, double h) {
+  return extrapolatedTorsion(outlinePolygon(outline, 64), h);
 }
+
+}  // namespace beamrotor::test
