@@ -11,13 +11,24 @@
 namespace beamrotor {
 
 FilmSolution PadFilm::solve(double rho, double s, bool withCoefficients) {
-  if (withCoefficients && last_ && last_->rho == rho && last_->s == s &&
-      last_->squeeze == squeeze_)
-    return last_->film;
+  return solveAt(rho, s, JournalMotion{}, withCoefficients);
+}
+
+FilmSolution PadFilm::solveMoving(double rho, double s, const double rates[2]) {
   JournalMotion motion;
-  motion.velocity[0] = squeeze_;
+  motion.velocity[0] = rates[0];
+  motion.velocity[1] = rates[1];
+  return solveAt(rho, s, motion, true);
+}
+
+FilmSolution PadFilm::solveAt(double rho, double s, const JournalMotion& motion,
+                              bool withCoefficients) {
+  const double r0 = motion.velocity[0], r1 = motion.velocity[1];
+  if (withCoefficients && last_ && last_->rho == rho && last_->s == s && last_->rate0 == r0 &&
+      last_->rate1 == r1)
+    return last_->film;
   FilmSolution f = solveArcFilm(shape(rho, s), ld_, grid_, motion, withCoefficients, &cavity_);
-  if (withCoefficients) last_ = Solved{rho, s, squeeze_, f};
+  if (withCoefficients) last_ = Solved{rho, s, r0, r1, f};
   return f;
 }
 
@@ -69,9 +80,8 @@ std::optional<double> PadFilm::equilibriumTilt(double rho) {
     tHigh = t;
     mHigh = m;
   }
-  // A pad the journal has left, or one it leaves faster than its wedge builds pressure (the
-  // receding squeeze opens the film): it carries nothing.
-  if (a <= 0 || squeeze_ < 0) return std::nullopt;
+  // A pad the journal has left carries nothing.
+  if (a <= 0) return std::nullopt;
   throw std::invalid_argument(
       "a pad's film cannot turn its force through the pivot (pivot offset " +
       std::to_string(offset_) + ")");

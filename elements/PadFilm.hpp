@@ -3,11 +3,11 @@
 // (/ c_p) towards the pivot and s across the pivot line (the journal less the pad's tilt), and
 // the tilt s at which the film's force passes through the pivot (the pad's moment vanishes).
 // The equilibrium of the bearing (TiltingPadBearing.cpp) and the nonlinear film of a run-up
-// (elements/TiltingPadJournalFilm.hpp) share it: the same film, grid, cavitation and root.
+// (elements/TiltingPadJournalFilm.hpp) share it: the same film, grid and cavitation.
 //
-// Squeeze: the journal may approach the pivot at `squeeze` (rho' / Omega, the pad following the
-// journal's motion across its pivot line: no relative velocity along t). It enters the film as
-// JournalMotion's velocity along the pad's axis 1 (elements/ReynoldsFilm.hpp); 0 at equilibrium.
+// Squeeze: the journal may move relative to the pad's centre of curvature at (rho', s') / Omega;
+// it enters the film as JournalMotion's velocity along the pad's axes (elements/ReynoldsFilm.hpp);
+// 0 at equilibrium.
 #pragma once
 
 #include <optional>
@@ -28,13 +28,13 @@ class PadFilm {
   FilmArc shape(double rho, double s) const {
     return {-offset_ * arc_, arc_, -(preload_ + rho), -s};
   }
-  /// The film at (rho, s) with the journal's squeeze towards the pivot (see the header).
+  /// The film at rest at (rho, s).
   FilmSolution solve(double rho, double s, bool withCoefficients);
+  /// The film at (rho, s) moving at (rho', s') / Omega = `rates`, with its coefficients.
+  FilmSolution solveMoving(double rho, double s, const double rates[2]);
   /// The thinnest film (/ c_p) over the pad's nodes.
   double thinnest(double rho, double s) const;
 
-  /// The squeeze (rho' / Omega) the following films are solved with.
-  void setSqueeze(double squeeze) { squeeze_ = squeeze; }
   /// A first guess for the next tilt (s), as the last root found would be.
   void seed(double s) { lastRoot_ = s; }
   /// The pad's tilt at rho: s where the film's force passes through the pivot, or none for a
@@ -48,16 +48,17 @@ class PadFilm {
  private:
   std::optional<double> newtonTilt(double rho, double s, double low, double high);
 
+  FilmSolution solveAt(double rho, double s, const JournalMotion& motion, bool withCoefficients);
+
   /// The last film solved with its coefficients, and where: balance() asks for the one
   /// newtonTilt ended on.
   struct Solved {
-    double rho, s, squeeze;
+    double rho, s, rate0, rate1;
     FilmSolution film;
   };
   std::optional<Solved> last_;
   double arc_, offset_, preload_, ld_;
   ReynoldsGrid grid_;
-  double squeeze_ = 0;
   std::vector<char> cavity_;  ///< the last film's pressurised nodes, the next one's first guess
   std::optional<double> lastRoot_;  ///< the last tilt found
 };

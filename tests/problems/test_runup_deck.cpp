@@ -247,22 +247,4 @@ TEST_SUITE("rotor decks") {
       CHECK(e.message().find(b.says) != std::string::npos);
     }
   }
-
-  TEST_CASE("run-up bearings: nonlinear refuses tilting pads kept as dofs") {
-    // The pads' tilts as dofs are not followed in time; their coefficients must not pass for
-    // films. Condensed pads (the default) run on their films.
-    std::string deck = test::fileContents(test::problemsDir() / "journal_runup.yaml");
-    const std::string right = "  - {name: right, at: end, type: plain-journal,";
-    const std::size_t at = deck.find(right);
-    REQUIRE(at != std::string::npos);
-    deck.replace(at, right.size(),
-                 "  - {name: right, at: end, type: tilting-pad, pads: 4, arc: 80 deg, "
-                 "offset: 0.5, preload: 0.3, orientation: load-between-pads, pad_tilts: dofs,");
-    const DeckError e = test::readingError(deck, "runup.yaml");
-    CAPTURE(e.message());
-    CHECK(e.message().find("'right' keeps its pads' tilts as dofs") != std::string::npos);
-    const std::size_t field = deck.find("    bearings: nonlinear");
-    REQUIRE(field != std::string::npos);
-    CHECK(e.place().line == 1 + std::count(deck.begin(), deck.begin() + std::ptrdiff_t(field), '\n'));
-  }
 }

@@ -516,17 +516,12 @@ DeckDrive readDrive(const Context& c, const Field& f) {
 }
 
 /// run-up `bearings: nonlinear`: the deck's plain journal bearings act by their films (short
-/// or finite, as their coefficients) and its tilting-pad bearings by their pads' films (each
-/// massless pad on its tilt root, elements/TiltingPadJournalFilm.hpp); the other bearings keep
-/// their coefficients. Pads kept as dofs (pad_tilts: dofs or inertia) are refused: their tilts'
-/// films are not followed in time.
+/// or finite, as their coefficients) and its tilting-pad bearings by their pads' films, each
+/// pad's tilt a dof of the run (elements/TiltingPadJournalFilm.hpp); the other bearings keep
+/// their coefficients.
 void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u) {
   bool any = false;
   for (const DeckBearing& b : c.deck.rotor.bearings) {
-    if (b.tiltingPads && b.padInertia)
-      f.fail("bearing '" + b.name + "' keeps its pads' tilts as dofs (pad_tilts), whose films a "
-             "run-up does not follow in time: use pad_tilts: condensed (massless pads on their "
-             "films' tilt roots) or run bearings: linear");
     if (!b.journal) continue;
     if (b.pedestal)
       f.fail("bearing '" + b.name + "' stands on a pedestal: its film force acts between journal "
