@@ -122,12 +122,14 @@ TEST_SUITE("tilting-pad journal film") {
                             << moment << " W R, K " << kError << ", C " << cError
                             << "; condensed against the synchronous set: K " << kSync << ", C "
                             << cSync);
+          // Measured: balance 7.8e-12, moment 8.0e-15, K 6.8e-15, C 4.0e-15, condensed K 9.9e-15
+          // and C 7.1e-15: the derivatives and the condensation at round-off (1e-13 allowed).
           CHECK(balance < 2e-11);
-          CHECK(moment < 1e-10);
-          CHECK(kError < 1e-10);
-          CHECK(cError < 1e-10);
-          CHECK(kSync < 1e-10);
-          CHECK(cSync < 1e-10);
+          CHECK(moment < 1e-12);
+          CHECK(kError < 1e-13);
+          CHECK(cError < 1e-13);
+          CHECK(kSync < 1e-13);
+          CHECK(cSync < 1e-13);
           CHECK(x.head<2>().norm() / b.clearance == doctest::Approx(p.eccentricity).epsilon(1e-12));
         }
       }
