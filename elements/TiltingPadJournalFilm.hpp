@@ -42,6 +42,7 @@
 #pragma once
 
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "elements/PadFilm.hpp"
@@ -72,6 +73,7 @@ class TiltingPadJournalFilm : public BearingFilm {
   double dragTorqueAt(const Eigen::VectorXd& state, const Eigen::VectorXd& force,
                       double speed) const override;
   double clearance() const override { return journal_.clearance; }
+  std::string ownDofName(int k) const override { return "pad" + std::to_string(k + 1) + "_tilt"; }
 
  private:
   /// One pad at the last call: where the journal is in its axes (/ c_p) and the force (N,

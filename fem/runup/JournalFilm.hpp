@@ -71,6 +71,8 @@ class BearingFilm {
                               double speed) const = 0;
   /// Radial clearance c (m).
   virtual double clearance() const = 0;
+  /// Own dof k's name in the outputs (a column's suffix, e.g. "pad1_tilt").
+  virtual std::string ownDofName(int k) const { return "dof" + std::to_string(k + 1); }
 };
 
 /// A film over the journal's (y, z) alone: a plain journal bearing.

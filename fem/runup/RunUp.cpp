@@ -557,6 +557,9 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
     t.name = j.journal->name;
     t.clearance = j.journal->film->clearance();
     t.startEccentricity = j.offset.head<2>().norm() / t.clearance;
+    for (int k = 0; k + 2 < int(j.equations.size()); ++k)
+      t.ownNames.push_back(j.journal->film->ownDofName(k));
+    t.own.resize(t.ownNames.size());
     out.journals.push_back(std::move(t));
   }
   const auto trackJournals = [&](bool keep) {
@@ -570,6 +573,8 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
       t.y.push_back(x[0]);
       t.z.push_back(x[1]);
       t.eccentricity.push_back(e);
+      for (std::size_t i = 2; i < j.equations.size(); ++i)
+        t.own[i - 2].push_back(j.offset[Eigen::Index(i)] + s.u[j.equations[i]]);
     }
   };
   trackJournals(true);

@@ -77,19 +77,27 @@ std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
   return out;
 }
 
+/// The deck's model rebuilt with `change` made to every bearing `which` picks; null when it
+/// picks none (the deck's own model stands).
+template <class Which, class Change>
+std::shared_ptr<const Model> modelWithBearings(const Deck& deck, Which which, Change change) {
+  const auto& bearings = deck.rotor.bearings;
+  if (std::none_of(bearings.begin(), bearings.end(), which)) return nullptr;
+  Deck changed = deck;
+  for (DeckBearing& b : changed.rotor.bearings)
+    if (which(b)) change(b);
+  return buildModel(changed);
+}
+
 /// For the analyses that put supports of their own in place of every bearing (pinned, or a
 /// swept stiffness): the model `pad_tilts: condensed` builds, each bearing one element on its
 /// journal, when a bearing keeps its pads' tilts as dofs (the pads do not enter those
 /// analyses, and the answers are the condensed deck's to the bit); null otherwise. The deck's
 /// journal loads are already resolved (runDeck), so no bearing table is computed again.
 std::shared_ptr<const Model> padsCondensedModel(const Deck& deck) {
-  const auto& bearings = deck.rotor.bearings;
-  if (std::none_of(bearings.begin(), bearings.end(),
-                   [](const DeckBearing& b) { return b.padInertia.has_value(); }))
-    return nullptr;
-  Deck condensed = deck;
-  for (DeckBearing& b : condensed.rotor.bearings) b.padInertia.reset();
-  return buildModel(condensed);
+  return modelWithBearings(
+      deck, [](const DeckBearing& b) { return b.padInertia.has_value(); },
+      [](DeckBearing& b) { b.padInertia.reset(); });
 }
 
 RotorOptions optionsOf(const Deck& deck, const RotorFamily& s) {
@@ -220,17 +228,12 @@ CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily&
 /// pads' films acting on them (elements/TiltingPadJournalFilm.hpp); null when the deck's model
 /// already is that one (no tilting pads).
 std::shared_ptr<const Model> padTiltsModel(const Deck& deck) {
-  const auto& bearings = deck.rotor.bearings;
-  if (std::none_of(bearings.begin(), bearings.end(),
-                   [](const DeckBearing& b) { return b.tiltingPads.has_value(); }))
-    return nullptr;
-  Deck withTilts = deck;
-  for (DeckBearing& b : withTilts.rotor.bearings)
-    if (b.tiltingPads) {
-      b.padInertia = b.padInertia.value_or(0.0);
-      b.everyPadTilt = true;
-    }
-  return buildModel(withTilts);
+  return modelWithBearings(
+      deck, [](const DeckBearing& b) { return b.tiltingPads.has_value(); },
+      [](DeckBearing& b) {
+        b.padInertia = b.padInertia.value_or(0.0);
+        b.everyPadTilt = true;
+      });
 }
 
 /// The deck's journal bearings as films (run-up `bearings: nonlinear`), each by the theory its

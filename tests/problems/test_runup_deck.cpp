@@ -99,8 +99,14 @@ TEST_SUITE("rotor decks") {
     for (const auto& check : results["checks"]) CHECK(check["pass"] == true);
     CHECK(solved.process.out.find("journal 'left' on its film") != std::string::npos);
     const auto history = test::csvCells(solved.dir / "pads_runup_history.csv");
-    for (const char* column : {"left_eccentricity", "right_y", "film", "film_torque"})
+    for (const char* column : {"left_eccentricity", "right_y", "film", "film_torque",
+                               "left_pad1_tilt", "right_pad4_tilt"})
       CHECK(test::csvColumn(history[0], column) >= 0);
+    // The pads' tilts (rad) start at the bearing's equilibrium tilts plus the steady orbit's
+    // share: the journal's orbit is some 0.03 c, a tilt's share of order that over R.
+    const std::size_t tilt = test::csvColumn(history[0], "left_pad1_tilt");
+    CHECK(std::abs(std::stod(history[1][tilt]) - p.pads[0].tilt) <
+          0.1 * j.clearance / (j.diameter / 2));
     CHECK(std::filesystem::exists(solved.dir / "pads_runup_journals.png"));
     std::filesystem::remove_all(solved.dir.parent_path());
   }

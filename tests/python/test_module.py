@@ -198,6 +198,13 @@ def test_run_up_on_tilting_pad_films():
     for bearing in ("left", "right"):
         assert np.all(history[bearing + "_eccentricity"] < 1)
         assert np.all(history[bearing + "_eccentricity"] > 0)
+        # Each pad's tilt (rad), a dof of the run, moves with the orbit; its film stays open at
+        # both edges of the 80 deg arc (1 - a cos 40 - |s| sin 40 > 0, a < 1: |s| < 3.2), so
+        # |tilt| = |t . u - s c_p| / R < (c + 3.2 c_p) / R < 5 c_p / R.
+        for pad in range(1, 5):
+            tilt = history[f"{bearing}_pad{pad}_tilt"]
+            assert np.all(np.abs(tilt) < 5 * cp / 0.02)
+            assert np.ptp(tilt) > 0
 
 
 def test_rub_on_a_seal_brakes_the_spin():

@@ -158,7 +158,6 @@ struct PadFilmRotor {
   }
 };
 
-
 }  // namespace
 
 TEST_SUITE("run-up on tilting-pad films") {
@@ -182,6 +181,14 @@ TEST_SUITE("run-up on tilting-pad films") {
     const Eigen::VectorXd rest = film.restState(rotor.load(), 400);
     CHECK(r.journals[0].startEccentricity ==
           doctest::Approx(rest.head<2>().norm() / c).epsilon(1e-14));
+    // The pads stay at the bearing's own equilibrium tilts (tiltingPadPoint, the run's tracks
+    // of the pads' dofs): to the same 1e-9 c over the radius.
+    const TiltingPadPoint p = tiltingPadPoint(rotor.journal, rotor.pads, 400, rotor.grid);
+    REQUIRE(r.journals[0].own.size() == 4);
+    CHECK(r.journals[0].ownNames[3] == "pad4_tilt");
+    for (std::size_t k = 0; k < 4; ++k)
+      for (double tilt : r.journals[0].own[k])
+        CHECK(std::abs(tilt - p.pads[k].tilt) < 1e-9 * c / (rotor.journal.diameter / 2));
     // The drag reported is the film's at its equilibrium (the run's last state is the first).
     CHECK(r.filmTorque.back() ==
           doctest::Approx(film.dragTorqueAt(
