@@ -5,13 +5,12 @@
 #include <array>
 #include <cmath>
 #include <complex>
-#include <functional>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
-#include "fem/rotor/SpeedRoot.hpp"
+#include "elements/PadFilm.hpp"
 
 namespace beamrotor {
 
@@ -21,120 +20,6 @@ constexpr double kPiPads = std::numbers::pi;
 /// Films thinner than 1 % of the clearance are beyond any real surface finish (as for the
 /// plain journal, FiniteJournalBearing.hpp).
 constexpr double kThinnestPadFilm = 0.01;
-
-/// One pad's film in its own axes: arc, preload, and what it does at (rho, s).
-class PadFilm {
- public:
-  PadFilm(const TiltingPads& pads, double lengthOverDiameter, const ReynoldsGrid& grid)
-      : arc_(pads.arc), offset_(pads.pivotOffset), preload_(pads.preload),
-        ld_(lengthOverDiameter), grid_(grid) {}
-
-  FilmArc shape(double rho, double s) const {
-    return {-offset_ * arc_, arc_, -(preload_ + rho), -s};
-  }
-  FilmSolution solve(double rho, double s, bool withCoefficients) {
-    if (withCoefficients && last_ && last_->rho == rho && last_->s == s) return last_->film;
-    FilmSolution f = solveArcFilm(shape(rho, s), ld_, grid_, {}, withCoefficients, &cavity_);
-    if (withCoefficients) last_ = Solved{rho, s, f};
-    return f;
-  }
-  /// The thinnest film (/ c_p) over the pad's nodes.
-  double thinnest(double rho, double s) const {
-    const FilmArc a = shape(rho, s);
-    double h = 1e300;
-    for (int i = 0; i <= grid_.circumferential; ++i) {
-      const double t = a.start + a.span * i / grid_.circumferential;
-      h = std::min(h, 1 + a.a * std::cos(t) + a.b * std::sin(t));
-    }
-    return h;
-  }
-
-  /// The pad's tilt at rho: s where the film's force passes through the pivot, or none for a
-  /// pad the journal has left (m + rho <= 0: its film no longer narrows towards the pivot and
-  /// carries nothing at any tilt that keeps the force on the pivot). The film stays positive for
-  /// s inside (low, high) (it closes at the trailing edge at `high`); near `high` the pressure
-  /// gathers at the trailing edge (f . t < 0); at s = 0 with m + rho > 0 the film is thinnest at
-  /// the pivot and the pressure lies ahead of it (f . t > 0): the root lies between.
-  /// A first guess for the next tilt (s), as the last root found would be.
-  void seed(double s) { lastRoot_ = s; }
-
-  std::optional<double> equilibriumTilt(double rho) {
-    const double a = preload_ + rho;
-    if (!(1 - a > 0)) throw std::invalid_argument("the journal reaches a pad's pivot");
-    double low = -1e300, high = 1e300;
-    for (int i = 0; i <= grid_.circumferential; ++i) {
-      const double phi = arc_ * (double(i) / grid_.circumferential - offset_);
-      if (std::abs(phi) < 1e-14) continue;
-      const double bound = (1 - a * std::cos(phi)) / std::sin(phi);
-      if (phi > 0) high = std::min(high, bound);
-      else low = std::max(low, bound);
-    }
-    auto sOf = [&](double t) { return low + t * (high - low); };
-    auto moment = [&](double t) { return solve(rho, sOf(t), false).force[1]; };
-    if (lastRoot_)
-      if (const std::optional<double> s = newtonTilt(rho, *lastRoot_, low, high))
-        return lastRoot_ = s;
-    // Near the last root first (the Newton steps move the journal little): a bracket of
-    // +-0.02 around it, when the moment changes sign there.
-    if (lastRoot_) {
-      const double t = (*lastRoot_ - low) / (high - low);
-      const double a1 = std::max(t - 0.02, 1e-4), b1 = std::min(t + 0.02, 1 - 1e-4);
-      if (a1 < b1) {
-        const double ma = moment(a1), mb = moment(b1);
-        if (ma > 0 && mb < 0) return lastRoot_ = sOf(speedRoot(moment, a1, ma, b1, mb, 1e-13).speed);
-      }
-    }
-    // Step away from the closing trailing edge (through s = 0) until the moment changes sign.
-    std::vector<double> steps{1 - 1e-4, 1 - 1e-3, 0.99, 0.97};
-    for (double t = 0.95; t > 0.01; t -= 0.025) steps.push_back(t);
-    if (const double t0 = -low / (high - low); t0 > 0 && t0 < 1) steps.push_back(t0);
-    std::sort(steps.begin(), steps.end(), std::greater<>());
-    double tHigh = steps[0], mHigh = moment(tHigh);
-    for (std::size_t k = 1; k < steps.size() && mHigh < 0; ++k) {
-      const double t = steps[k], m = moment(t);
-      if (m > 0) return lastRoot_ = sOf(speedRoot(moment, t, m, tHigh, mHigh, 1e-13).speed);
-      tHigh = t;
-      mHigh = m;
-    }
-    if (a <= 0) return std::nullopt;
-    throw std::invalid_argument(
-        "a pad's film cannot turn its force through the pivot (pivot offset " +
-        std::to_string(offset_) + ")");
-  }
-
- private:
-  /// Newton on the pad's moment f . t from s, its slope the film's own stiffness
-  /// (d(f . t)/ds = -K_tt, the tilt moving the film as the journal does along t): one film a
-  /// step, against some eight for the bracketed root. The tilt whose step falls below 1e-13 of
-  /// the bracket (the bracketed root's tolerance); none when a step leaves (low, high), the
-  /// slope is not negative, or ten steps do not settle (the caller then brackets).
-  std::optional<double> newtonTilt(double rho, double s, double low, double high) {
-    constexpr double kTiltTolerance = 1e-13;
-    constexpr int kNewtonSteps = 10;
-    for (int step = 0; step < kNewtonSteps; ++step) {
-      if (!(s > low && s < high)) return std::nullopt;
-      const FilmSolution f = solve(rho, s, true);
-      const double slope = -f.stiffness[1][1];
-      if (!(slope < 0)) return std::nullopt;
-      const double ds = -f.force[1] / slope;
-      if (std::abs(ds) <= kTiltTolerance * (high - low)) return s;
-      s += ds;
-    }
-    return std::nullopt;
-  }
-
-  /// The last film solved with its coefficients, and where: balance() asks for the one
-  /// newtonTilt ended on.
-  struct Solved {
-    double rho, s;
-    FilmSolution film;
-  };
-  std::optional<Solved> last_;
-  double arc_, offset_, preload_, ld_;
-  ReynoldsGrid grid_;
-  std::vector<char> cavity_;  ///< the last film's pressurised nodes, the next one's first guess
-  std::optional<double> lastRoot_;  ///< the last tilt found
-};
 
 using Complex2 = Eigen::Matrix2cd;
 

@@ -33,9 +33,6 @@ TiltingPadFilm::TiltingPadFilm(int journal, int padNode,
       inertia_(inertia) {
   if (!points_ || points_->empty())
     throw std::invalid_argument("tilting-pad film: no operating points");
-  if (!padEverLoaded(*points_, pad))
-    throw std::invalid_argument("tilting-pad film: pad " + std::to_string(pad + 1) +
-                                " carries no film at any table speed");
   if (!(inertia >= 0)) throw std::invalid_argument("tilting-pad film: the pad's inertia is >= 0");
   for (const TiltingPadPoint& p : *points_) speeds_.push_back(p.speed);
   // Each point's nearest point (in the table's order) where the pad carries a film.
@@ -46,7 +43,7 @@ TiltingPadFilm::TiltingPadFilm(int journal, int padNode,
       if (loadedAt((*points_)[std::size_t(j)], pad) &&
           (best < 0 || std::abs(j - i) < std::abs(best - i)))
         best = j;
-    nearestLoaded_.push_back(std::size_t(best));
+    nearestLoaded_.push_back(best < 0 ? std::nullopt : std::optional<std::size_t>(best));
   }
 }
 
@@ -60,9 +57,9 @@ ElementMatrix TiltingPadFilm::filmAt(std::size_t i, bool damping) const {
   if (nearestLoaded_[i] != i) {
     // The journal has left the pad: no film couples it. Its tilt keeps the nearest loaded
     // point's own stiffness or damping alone, so that the equations stay regular (a
-    // relaxation of the pad's own, apart from the rotor).
+    // relaxation of the pad's own, apart from the rotor); nothing for a pad never loaded.
     ElementMatrix out = ElementMatrix::Zero(3, 3);
-    out(2, 2) = filmAt(nearestLoaded_[i], damping)(2, 2);
+    if (nearestLoaded_[i]) out(2, 2) = filmAt(*nearestLoaded_[i], damping)(2, 2);
     return out;
   }
   const TiltingPadPoint& point = (*points_)[i];

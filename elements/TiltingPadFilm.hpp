@@ -20,6 +20,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "elements/TiltingPadBearing.hpp"
@@ -33,8 +34,9 @@ class TiltingPadFilm : public SpeedDependentElement {
   /// speeds), between `journal`'s uy, uz and `padNode`'s rx; the bearing's axes turned by
   /// `loadAngle` (rad) about +x; `inertia` the pad's polar moment about its pivot (kg m^2,
   /// >= 0). At a point where the journal has left the pad nothing couples it; its tilt keeps
-  /// the nearest loaded point's own stiffness and damping. Throws std::invalid_argument for
-  /// no points or a pad that carries no film at any of them.
+  /// the nearest loaded point's own stiffness and damping (none for a pad loaded at no point:
+  /// the nonlinear run-up's pads, whose films act instead). Throws std::invalid_argument for
+  /// no points.
   TiltingPadFilm(int journal, int padNode, std::shared_ptr<const std::vector<TiltingPadPoint>> points,
                  int pad, double loadAngle, double inertia);
 
@@ -47,6 +49,7 @@ class TiltingPadFilm : public SpeedDependentElement {
 
   int journal() const { return journal_; }
   int padNode() const { return padNode_; }
+  int pad() const { return pad_; }
   /// The pad's share of the bearing's synchronous coefficients at `speed` (its tilt
   /// condensed at whirl = spin, massless), global axes, linear between table speeds.
   BearingCoefficients synchronousAt(double speed) const;
@@ -59,7 +62,8 @@ class TiltingPadFilm : public SpeedDependentElement {
   int journal_, padNode_;
   std::shared_ptr<const std::vector<TiltingPadPoint>> points_;
   std::vector<double> speeds_;
-  std::vector<std::size_t> nearestLoaded_;  ///< per point, the nearest one loading the pad
+  /// Per point, the nearest one loading the pad (none: the pad is loaded at no point)
+  std::vector<std::optional<std::size_t>> nearestLoaded_;
   int pad_;
   double loadAngle_, inertia_;
 };

@@ -45,8 +45,24 @@ struct Instant {
 struct PlacedJournal {
   const NonlinearJournal* journal = nullptr;
   int y = -1, z = -1;           ///< equations of uy, uz
-  Eigen::Vector2d offset;       ///< journal centre at u = 0 (m, from the bearing's centre)
+  std::vector<int> equations;   ///< of the film's state: uy, uz, then its own dofs
+  /// The film's state at u = 0: the journal centre (m, from the bearing's centre), then its
+  /// own dofs at rest
+  Eigen::VectorXd offset;
   Eigen::Vector2d appliedLoad;  ///< N, on the journal (zero when gravity carries it)
+  /// The film's state at (u, v): offset + u, v on its equations.
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> state(const Eigen::VectorXd& u,
+                                                    const Eigen::VectorXd& v) const {
+    Eigen::VectorXd x = offset, r(offset.size());
+    for (std::size_t i = 0; i < equations.size(); ++i) {
+      x[Eigen::Index(i)] += u[equations[i]];
+      r[Eigen::Index(i)] = v[equations[i]];
+    }
+    return {x, r};
+  }
+  Eigen::Vector2d journalCentre(const Eigen::VectorXd& u) const {
+    return offset.head<2>() + Eigen::Vector2d(u[y], u[z]);
+  }
 };
 
 /// The films' and rubs' forces (the films' constant loads included) on the whole system, their
@@ -54,7 +70,7 @@ struct PlacedJournal {
 struct FilmForces {
   Eigen::VectorXd force;
   Eigen::VectorXd rubForce;     ///< the rubs' share of force
-  std::vector<FilmForce> each;  ///< per journal, for the tangent matrices
+  std::vector<FilmLoad> each;   ///< per journal, for the tangent matrices
   std::vector<RubForce> rubs;   ///< per rub station
   /// The torque the rubs' friction and the films' drag take from the spin (N m) and its slope
   /// in the speed (N m s)
@@ -111,10 +127,15 @@ class RunUpSystem {
     i.C = rotor_.damping(i.speed);
     // The nonlinear journals' linear coefficients out: their films act instead.
     for (const PlacedJournal& j : journals_) {
-      const auto& element =
-          static_cast<const SpeedDependentElement&>(*rotor_.model().elements()[j.journal->element]);
-      subtract(i.K, j, element.stiffnessAt(i.speed));
-      subtract(i.C, j, element.dampingAt(i.speed));
+      const auto take = [&](int index, const std::vector<int>& equations) {
+        const auto& element =
+            static_cast<const SpeedDependentElement&>(*rotor_.model().elements()[index]);
+        subtract(i.K, equations, element.stiffnessAt(i.speed));
+        subtract(i.C, equations, element.dampingAt(i.speed));
+      };
+      if (j.journal->element >= 0) take(j.journal->element, {j.y, j.z});
+      for (std::size_t k = 0; k < j.journal->ownElements.size(); ++k)
+        take(j.journal->ownElements[k], {j.y, j.z, j.equations[2 + k]});
     }
     // Re(f e^{i phi} (Omega^2 - i Omega')): see unbalanceForces.
     const std::complex<double> turn =
@@ -142,20 +163,23 @@ class RunUpSystem {
     }
     out.force = out.rubForce;
     for (const PlacedJournal& j : journals_) {
-      const Eigen::Vector2d x = j.offset + Eigen::Vector2d(u[j.y], u[j.z]);
-      FilmForce f;
+      const auto [x, rate] = j.state(u, v);
+      FilmLoad f;
       try {
-        f = j.journal->film->at(x, Eigen::Vector2d(v[j.y], v[j.z]), speed);
+        f = j.journal->film->loadAt(x, rate, speed);
       } catch (const JournalLeftClearance& e) {
         throw JournalLeftClearance("bearing '" + j.journal->name + "': " + e.what());
       }
-      out.force[j.y] += f.force[0] + j.appliedLoad[0];
-      out.force[j.z] += f.force[1] + j.appliedLoad[1];
+      for (std::size_t i = 0; i < j.equations.size(); ++i)
+        out.force[j.equations[i]] += f.force[Eigen::Index(i)];
+      out.force[j.y] += j.appliedLoad[0];
+      out.force[j.z] += j.appliedLoad[1];
       // The drag's slope in the speed: its Couette part's (linear in Omega); the pressure
       // part's dependence is left to the drive's fixed point.
-      out.dragTorque += j.journal->film->dragTorque(x, f.force, speed);
+      out.dragTorque += j.journal->film->dragTorqueAt(x, f.force, speed);
       if (speed > 0)
-        out.torqueSlope += j.journal->film->dragTorque(x, Eigen::Vector2d::Zero(), speed) / speed;
+        out.torqueSlope +=
+            j.journal->film->dragTorqueAt(x, Eigen::VectorXd::Zero(x.size()), speed) / speed;
       out.each.push_back(std::move(f));
     }
     return out;
@@ -163,15 +187,16 @@ class RunUpSystem {
 
   /// A += the films' stiffness (or damping) times `scale`, on the pattern's existing entries.
   void addTangents(SparseMatrix& A, const FilmForces& f, double stiffness, double damping) const {
-    const auto add = [&](int y, int z, const Eigen::Matrix2d& K, const Eigen::Matrix2d& C) {
-      const int eq[2] = {y, z};
-      for (int r = 0; r < 2; ++r)
-        for (int c = 0; c < 2; ++c) A.coeffRef(eq[r], eq[c]) += stiffness * K(r, c) + damping * C(r, c);
+    const auto add = [&](const std::vector<int>& eq, const auto& K, const auto& C) {
+      for (std::size_t r = 0; r < eq.size(); ++r)
+        for (std::size_t c = 0; c < eq.size(); ++c)
+          A.coeffRef(eq[r], eq[c]) += stiffness * K(Eigen::Index(r), Eigen::Index(c)) +
+                                      damping * C(Eigen::Index(r), Eigen::Index(c));
     };
     for (std::size_t k = 0; k < journals_.size(); ++k)
-      add(journals_[k].y, journals_[k].z, f.each[k].stiffness, f.each[k].damping);
+      add(journals_[k].equations, f.each[k].stiffness, f.each[k].damping);
     for (std::size_t k = 0; k < rubs_.size(); ++k)
-      add(rubs_[k].y, rubs_[k].z, f.rubs[k].stiffness, f.rubs[k].damping);
+      add({rubs_[k].y, rubs_[k].z}, f.rubs[k].stiffness, f.rubs[k].damping);
   }
 
   /// The torque the unbalances take from the spin (N m): the heavy spot m e at angle
@@ -198,34 +223,56 @@ class RunUpSystem {
   }
 
  private:
-  static void subtract(SparseMatrix& A, const PlacedJournal& j, const ElementMatrix& m) {
+  /// A -= m, m over `eq` (an element's matrix in its dofs' order).
+  static void subtract(SparseMatrix& A, const std::vector<int>& eq, const ElementMatrix& m) {
     if (m.size() == 0) return;
-    const int eq[2] = {j.y, j.z};
-    for (int r = 0; r < 2; ++r)
-      for (int c = 0; c < 2; ++c) A.coeffRef(eq[r], eq[c]) -= m(r, c);
+    for (std::size_t r = 0; r < eq.size(); ++r)
+      for (std::size_t c = 0; c < eq.size(); ++c)
+        A.coeffRef(eq[r], eq[c]) -= m(Eigen::Index(r), Eigen::Index(c));
+  }
+
+  /// Whether element `index` of `model` is speed-dependent with exactly the dofs `dofs`.
+  static bool holds(const Model& model, int index, const std::vector<NodeDof>& dofs) {
+    const auto* element =
+        index >= 0 && index < int(model.elements().size())
+            ? dynamic_cast<const SpeedDependentElement*>(model.elements()[index].get())
+            : nullptr;
+    if (!element || element->dofs().size() != dofs.size()) return false;
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      if (element->dofs()[i] != dofs[i]) return false;
+    return true;
   }
 
   void placeJournals(const Model& model, double startSpeed, const RunUpOptions& o) {
     for (const NonlinearJournal& n : o.journals) {
-      const auto* element =
-          n.element >= 0 && n.element < int(model.elements().size())
-              ? dynamic_cast<const SpeedDependentElement*>(model.elements()[n.element].get())
-              : nullptr;
-      if (!element || !n.film || element->dofs().size() != 2 ||
-          element->dofs()[0] != NodeDof{n.node, Dof::uy} ||
-          element->dofs()[1] != NodeDof{n.node, Dof::uz})
+      const NodeDof y{n.node, Dof::uy}, z{n.node, Dof::uz};
+      const int own = n.film ? n.film->ownDofs() : 0;
+      bool placed = n.film && int(n.ownElements.size()) == own && int(n.ownDofs.size()) == own &&
+                    (own > 0 ? n.element < 0 : holds(model, n.element, {y, z}));
+      for (int k = 0; placed && k < own; ++k)
+        placed = holds(model, n.ownElements[std::size_t(k)], {y, z, n.ownDofs[std::size_t(k)]});
+      if (!placed)
         throw std::invalid_argument(
             "run-up: nonlinear journal '" + n.name +
-            "' is no bearing between its journal's uy, uz and the ground (or has no film)");
+            "' is no bearing between its journal's uy, uz and the ground (or has no film, or "
+            "its own dofs' elements do not match the film's)");
       PlacedJournal j;
       j.journal = &n;
       std::tie(j.y, j.z) = lateralEquations(rotor_, n.node, "nonlinear journal '" + n.name + "'");
+      j.equations = {j.y, j.z};
+      for (const NodeDof& d : n.ownDofs) {
+        const int eq = rotor_.dofs().equation(d.node, d.dof);
+        if (!rotor_.dofs().isFree(eq))
+          throw std::invalid_argument("run-up: nonlinear journal '" + n.name + "' needs its " +
+                                      rotor_.model().describe(d) + " free");
+        j.equations.push_back(eq);
+      }
       if (!(startSpeed > 0) && n.load.norm() > 0)
         throw std::invalid_argument(
             "run-up: a loaded journal bearing has no film at rest: its nonlinear run starts at "
             "a speed above 0 (bearing '" +
             n.name + "')");
-      j.offset = n.film->equilibrium(n.load, startSpeed);
+      j.offset = n.film->restState(n.load, startSpeed);
       const bool gravityCarries = o.gravity.squaredNorm() > 0;
       j.appliedLoad = gravityCarries ? Eigen::Vector2d::Zero() : Eigen::Vector2d(n.load);
       journals_.push_back(j);
@@ -509,20 +556,25 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
     JournalTrack t;
     t.name = j.journal->name;
     t.clearance = j.journal->film->clearance();
-    t.startEccentricity = j.offset.norm() / t.clearance;
+    t.startEccentricity = j.offset.head<2>().norm() / t.clearance;
+    for (int k = 0; k + 2 < int(j.equations.size()); ++k)
+      t.ownNames.push_back(j.journal->film->ownDofName(k));
+    t.own.resize(t.ownNames.size());
     out.journals.push_back(std::move(t));
   }
   const auto trackJournals = [&](bool keep) {
     for (std::size_t k = 0; k < out.journals.size(); ++k) {
       const PlacedJournal& j = system.journals()[k];
       JournalTrack& t = out.journals[k];
-      const Eigen::Vector2d x = j.offset + Eigen::Vector2d(s.u[j.y], s.u[j.z]);
+      const Eigen::Vector2d x = j.journalCentre(s.u);
       const double e = x.norm() / t.clearance;
       t.largestEccentricity = std::max(t.largestEccentricity, e);
       if (!keep) continue;
       t.y.push_back(x[0]);
       t.z.push_back(x[1]);
       t.eccentricity.push_back(e);
+      for (std::size_t i = 2; i < j.equations.size(); ++i)
+        t.own[i - 2].push_back(j.offset[Eigen::Index(i)] + s.u[j.equations[i]]);
     }
   };
   trackJournals(true);

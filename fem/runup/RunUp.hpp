@@ -20,7 +20,8 @@
 // analysis (a step at an unchanged speed keeps its factor).
 // Journal bearings may act by their film force instead (fem/runup/JournalFilm.hpp): the force
 // at the journal's instantaneous position and velocity and the instantaneous speed, in place of
-// their linear coefficients; each implicit step is then solved by Newton's method on the film's
+// their linear coefficients (a film may own dofs, a tilting pad's tilt: their elements'
+// coefficients are taken out too, and the film acts on them); each implicit step is then solved by Newton's method on the film's
 // exact derivatives (docs/runup.md). Rub stations (fem/runup/RubContact.hpp) add their contact
 // and friction forces the same way, and their friction's torque brakes a driven spin.
 #pragma once
@@ -78,6 +79,10 @@ struct JournalTrack {
   std::vector<double> eccentricity;  ///< |journal centre - bearing centre| / c
   double largestEccentricity = 0;    ///< over every step, not only the samples
   double startEccentricity = 0;      ///< the film's own equilibrium at the start speed
+  /// A film with dofs of its own (a tilting-pad bearing's pads' tilts, rad): their names
+  /// (BearingFilm::ownDofName) and values at the samples
+  std::vector<std::string> ownNames;
+  std::vector<std::vector<double>> own;
 };
 
 /// A rub station's contact over the run: sampled at RunUpResult::times, summed over every step.

@@ -311,14 +311,15 @@ void addPedestal(const Deck& deck, const DeckBearing& b, std::vector<BearingCoef
 }
 
 /// A tilting-pad bearing with its pads' tilts kept: a node per pad loaded at some table speed
-/// (at the journal, its rx the pad's tilt, every other dof absent) and that pad's film between
-/// journal and pad (elements/TiltingPadFilm.hpp); no condensed Bearing element.
+/// (every pad with everyPadTilt; at the journal, its rx the pad's tilt, every other dof absent)
+/// and that pad's film between journal and pad (elements/TiltingPadFilm.hpp); no condensed
+/// Bearing element.
 void addPadTilts(const DeckBearing& b, Model* model) {
   const int journal = model->node(b.point);
   const Eigen::Vector3d x = model->nodes()[journal];
   auto points = std::make_shared<const std::vector<TiltingPadPoint>>(b.padPoints);
   for (int pad = 0; pad < int(b.padPoints.front().pads.size()); ++pad) {
-    if (!padEverLoaded(*points, pad)) continue;
+    if (!b.everyPadTilt && !padEverLoaded(*points, pad)) continue;
     const int node = model->addNode(x);
     model->add<TiltingPadFilm>(journal, node, points, pad, b.loadAngle, *b.padInertia);
   }

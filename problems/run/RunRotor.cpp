@@ -20,6 +20,7 @@
 #include "elements/ShortJournalFilm.hpp"
 #include "elements/Spring.hpp"
 #include "elements/TiltingPadFilm.hpp"
+#include "elements/TiltingPadJournalFilm.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
@@ -76,19 +77,27 @@ std::vector<BearingStiffnessCurve> bearingStiffnessCurves(const Deck& deck) {
   return out;
 }
 
+/// The deck's model rebuilt with `change` made to every bearing `which` picks; null when it
+/// picks none (the deck's own model stands).
+template <class Which, class Change>
+std::shared_ptr<const Model> modelWithBearings(const Deck& deck, Which which, Change change) {
+  const auto& bearings = deck.rotor.bearings;
+  if (std::none_of(bearings.begin(), bearings.end(), which)) return nullptr;
+  Deck changed = deck;
+  for (DeckBearing& b : changed.rotor.bearings)
+    if (which(b)) change(b);
+  return buildModel(changed);
+}
+
 /// For the analyses that put supports of their own in place of every bearing (pinned, or a
 /// swept stiffness): the model `pad_tilts: condensed` builds, each bearing one element on its
 /// journal, when a bearing keeps its pads' tilts as dofs (the pads do not enter those
 /// analyses, and the answers are the condensed deck's to the bit); null otherwise. The deck's
 /// journal loads are already resolved (runDeck), so no bearing table is computed again.
 std::shared_ptr<const Model> padsCondensedModel(const Deck& deck) {
-  const auto& bearings = deck.rotor.bearings;
-  if (std::none_of(bearings.begin(), bearings.end(),
-                   [](const DeckBearing& b) { return b.padInertia.has_value(); }))
-    return nullptr;
-  Deck condensed = deck;
-  for (DeckBearing& b : condensed.rotor.bearings) b.padInertia.reset();
-  return buildModel(condensed);
+  return modelWithBearings(
+      deck, [](const DeckBearing& b) { return b.padInertia.has_value(); },
+      [](DeckBearing& b) { b.padInertia.reset(); });
 }
 
 RotorOptions optionsOf(const Deck& deck, const RotorFamily& s) {
@@ -214,22 +223,51 @@ CriticalSpeedMapOutcome runCriticalSpeedMap(const Deck& deck, const RotorFamily&
   return out;
 }
 
-/// The deck's plain journal bearings as films (run-up `bearings: nonlinear`), each by the
-/// theory its coefficients come from (`model: short` or `finite`, on the same grid): each
-/// replaces its model element's coefficients, its load along the bearing's -x_b.
+/// The model a nonlinear run-up steps: the deck's, except that every tilting-pad bearing keeps
+/// each pad's tilt as a dof (massless with `pad_tilts: condensed`, its inertia otherwise), the
+/// pads' films acting on them (elements/TiltingPadJournalFilm.hpp); null when the deck's model
+/// already is that one (no tilting pads).
+std::shared_ptr<const Model> padTiltsModel(const Deck& deck) {
+  return modelWithBearings(
+      deck, [](const DeckBearing& b) { return b.tiltingPads.has_value(); },
+      [](DeckBearing& b) {
+        b.padInertia = b.padInertia.value_or(0.0);
+        b.everyPadTilt = true;
+      });
+}
+
+/// The deck's journal bearings as films (run-up `bearings: nonlinear`), each by the theory its
+/// coefficients come from (`model: short` or `finite`, or the tilting pads' films, on the same
+/// grid): each replaces its model element's coefficients (a tilting-pad bearing's pad films,
+/// each pad's tilt a dof of the film's: `model` is padTiltsModel's), its load along the
+/// bearing's -x_b.
 std::vector<NonlinearJournal> nonlinearJournals(const Deck& deck, const Model& model) {
   std::vector<NonlinearJournal> out;
   for (const DeckBearing& b : deck.rotor.bearings) {
-    if (!b.journal || b.tiltingPads) continue;
+    if (!b.journal) continue;
     NonlinearJournal j;
     j.name = b.name;
     j.node = model.node(b.point);
-    for (const auto& [name, element] : model.namedElements())
-      if (name == b.name) j.element = element;
-    if (b.journalModel == DeckBearing::JournalModel::finite)
-      j.film = std::make_shared<FiniteJournalFilm>(*b.journal, b.journalGrid);
-    else
-      j.film = std::make_shared<ShortJournalFilm>(*b.journal);
+    if (b.tiltingPads) {
+      j.film = std::make_shared<TiltingPadJournalFilm>(*b.journal, *b.tiltingPads, b.journalGrid,
+                                                       b.loadAngle);
+      // The pads' elements on this journal, in the film's pad order.
+      j.ownElements.assign(std::size_t(b.tiltingPads->count), -1);
+      j.ownDofs.resize(std::size_t(b.tiltingPads->count));
+      for (int e = 0; e < int(model.elements().size()); ++e)
+        if (const auto* p = dynamic_cast<const TiltingPadFilm*>(model.elements()[e].get());
+            p && p->journal() == j.node && p->pad() >= 0 && p->pad() < b.tiltingPads->count) {
+          j.ownElements[std::size_t(p->pad())] = e;
+          j.ownDofs[std::size_t(p->pad())] = {p->padNode(), Dof::rx};
+        }
+    } else {
+      for (const auto& [name, element] : model.namedElements())
+        if (name == b.name) j.element = element;
+      if (b.journalModel == DeckBearing::JournalModel::finite)
+        j.film = std::make_shared<FiniteJournalFilm>(*b.journal, b.journalGrid);
+      else
+        j.film = std::make_shared<ShortJournalFilm>(*b.journal);
+    }
     j.load = -b.journal->load * Eigen::Vector2d(std::cos(b.loadAngle), std::sin(b.loadAngle));
     out.push_back(std::move(j));
   }
@@ -271,9 +309,14 @@ SpeedDrive speedDriveOf(const DeckRunUp& d, const Model& model) {
   return drive;
 }
 
-RunUpOutcome runRunUp(const Deck& deck, const RotorFamily& s, const Model& model) {
+RunUpOutcome runRunUp(const Deck& deck, const RotorFamily& s, const Model& deckModel) {
   const DeckRotorAnalysis& r = s.rotor;
   const DeckRunUp& d = r.runUp;
+  // Nonlinear tilting pads step their tilts: the model with each pad a dof (the same nodes
+  // first, the pads' appended).
+  const std::shared_ptr<const Model> tilts =
+      d.nonlinearBearings ? padTiltsModel(deck) : nullptr;
+  const Model& model = tilts ? *tilts : deckModel;
   RunUpOptions o;
   o.timeStep = d.dt;
   o.hhtAlpha = d.alpha;

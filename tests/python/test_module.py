@@ -183,6 +183,30 @@ def test_run_up_on_journal_films_driven_by_a_motor():
         assert np.all(history[bearing + "_eccentricity"] > 0.3)
 
 
+def test_run_up_on_tilting_pad_films():
+    """The tilting-pad test deck (tests/problems/tilting_pad_runup.yaml): the pads' films reach
+    Python's tables; the journals stay inside the bearing clearance, and the pads' drag exceeds
+    the Couette shear of their arcs at a film of 2 c_p everywhere (thicker than any pad's film
+    can be: H = 1 - (m + rho) cos - s sin < 2)."""
+    run = beamrotor.solve(PROBLEMS.parent / "tests" / "problems" / "tilting_pad_runup.yaml",
+                          sweep_off=True)
+    history = run.tables["pads"]["runup_history"]
+    w = history["speed"]
+    cp = 40e-6 / 0.7  # c_p = c / (1 - m)
+    least = 2 * 0.02 * w * 0.02**3 * 0.02 / cp * 4 * np.radians(80) / 2  # two bearings
+    assert np.all(history["film_torque"] > least)
+    for bearing in ("left", "right"):
+        assert np.all(history[bearing + "_eccentricity"] < 1)
+        assert np.all(history[bearing + "_eccentricity"] > 0)
+        # Each pad's tilt (rad), a dof of the run, moves with the orbit; its film stays open at
+        # both edges of the 80 deg arc (1 - a cos 40 - |s| sin 40 > 0, a < 1: |s| < 3.2), so
+        # |tilt| = |t . u - s c_p| / R < (c + 3.2 c_p) / R < 5 c_p / R.
+        for pad in range(1, 5):
+            tilt = history[f"{bearing}_pad{pad}_tilt"]
+            assert np.all(np.abs(tilt) < 5 * cp / 0.02)
+            assert np.ptp(tilt) > 0
+
+
 def test_rub_on_a_seal_brakes_the_spin():
     """The seal deck: the disk rests on the seal with the closed-form normal force (70.594 N),
     the friction is mu N and its torque mu N R throughout, and the speed grows at

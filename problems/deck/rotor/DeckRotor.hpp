@@ -60,6 +60,9 @@ struct DeckBearing {
   /// speed keeps its tilt as a dof of the rotor's (elements/TiltingPadFilm.hpp), the pad's
   /// polar moment of inertia about its pivot padInertia (kg m^2); unset: condensed.
   std::optional<double> padInertia;
+  /// With padInertia: every pad keeps its tilt, those loaded at no table speed too (a
+  /// nonlinear run-up's model, whose pad films act on every tilt).
+  bool everyPadTilt = false;
   /// A plain journal with `load: gravity`: its load is the rotor's weight share on pinned
   /// bearings, found when the deck runs (journal->load and table are empty until then).
   bool loadFromGravity = false;

@@ -9,6 +9,7 @@
 
 #include "elements/FiniteJournalBearing.hpp"
 #include "elements/PlainJournalBearing.hpp"
+#include "elements/TiltingPadBearing.hpp"
 #include "elements/WhirlTable.hpp"
 #include "problems/deck/DeckReader.hpp"
 #include "problems/deck/rotor/JournalTable.hpp"
@@ -515,15 +516,12 @@ DeckDrive readDrive(const Context& c, const Field& f) {
 }
 
 /// run-up `bearings: nonlinear`: the deck's plain journal bearings act by their films (short
-/// or finite, as their coefficients); the other bearings keep their coefficients, except
-/// tilting pads, which are refused (their films are not followed in time: their coefficients
-/// would pass silently for films).
+/// or finite, as their coefficients) and its tilting-pad bearings by their pads' films, each
+/// pad's tilt a dof of the run (elements/TiltingPadJournalFilm.hpp); the other bearings keep
+/// their coefficients.
 void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u) {
   bool any = false;
   for (const DeckBearing& b : c.deck.rotor.bearings) {
-    if (b.tiltingPads)
-      f.fail("bearing '" + b.name + "' has tilting pads, whose films a run-up does not follow "
-             "in time: run bearings: linear, or give it plain journals");
     if (!b.journal) continue;
     if (b.pedestal)
       f.fail("bearing '" + b.name + "' stands on a pedestal: its film force acts between journal "
@@ -531,19 +529,22 @@ void readNonlinearBearings(const Context& c, const Field& f, const DeckRunUp& u)
     any = true;
   }
   if (!any)
-    f.fail("bearings: nonlinear puts the plain journal bearings' film forces in place of their "
-           "coefficients; the deck has none (type: plain-journal)");
+    f.fail("bearings: nonlinear puts the journal bearings' film forces in place of their "
+           "coefficients; the deck has none (type: plain-journal or tilting-pad)");
   if (!(u.speeds.front() > 0))
     f.fail("a journal bearing carries its load on a film only when the shaft turns: a nonlinear "
            "run-up starts at a speed above 0");
-  // The run starts where each film carries its load: a finite film must reach that equilibrium
-  // at the start speed (its table may start faster). A load from gravity is known only later.
+  // The run starts where each film carries its load: a finite film or the pads must reach that
+  // equilibrium at the start speed (the table may start faster). A load from gravity is known
+  // only later.
   for (const DeckBearing& b : c.deck.rotor.bearings) {
-    if (!b.journal || b.loadFromGravity ||
-        b.journalModel != DeckBearing::JournalModel::finite || b.journal->load == 0)
-      continue;
+    const bool finite = b.journalModel == DeckBearing::JournalModel::finite || b.tiltingPads;
+    if (!b.journal || b.loadFromGravity || !finite || b.journal->load == 0) continue;
     try {
-      finiteJournalPoint(*b.journal, u.speeds.front(), b.journalGrid);
+      if (b.tiltingPads)
+        tiltingPadPoint(*b.journal, *b.tiltingPads, u.speeds.front(), b.journalGrid);
+      else
+        finiteJournalPoint(*b.journal, u.speeds.front(), b.journalGrid);
     } catch (const std::invalid_argument& e) {
       f.fail("bearing '" + b.name + "' at the run-up's start speed (" +
              formatNumber(u.speeds.front() / kRadPerRpm) + " rpm): " + e.what() +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -42,6 +43,8 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
   for (const JournalTrack& j : r.runUp.journals) {
     for (const char* what : {"_y", "_z"}) columns.push_back({j.name + what, "m"});
     columns.push_back({j.name + "_eccentricity", ""});
+    // A film's own dofs: the tilting pads' tilts (rad), the only ones there are.
+    for (const std::string& own : j.ownNames) columns.push_back({j.name + "_" + own, "rad"});
   }
   if (!r.runUp.journals.empty()) columns.push_back({"film_torque", "N m"});
   for (const RubTrack& t : r.runUp.rubs) {
@@ -56,17 +59,24 @@ CsvTable runUpHistoryTable(const std::string& title, const RunUpOutcome& r) {
   CsvTable table(title, columns);
   const RunUpResult& u = r.runUp;
   for (std::size_t i = 0; i < u.times.size(); ++i) {
-    std::vector<CsvCell> row{u.times[i], u.speed[i], rpmOf(u.speed[i]), u.angle[i]};
-    for (const RunUpHistory& h : u.histories) row.insert(row.end(), {h.uy[i], h.uz[i]});
-    if (u.driven) row.insert(row.end(), {u.driveTorque[i], u.unbalanceTorque[i]});
-    for (const JournalTrack& j : u.journals)
-      row.insert(row.end(), {j.y[i], j.z[i], j.eccentricity[i]});
-    if (!u.journals.empty()) row.push_back(u.filmTorque[i]);
-    for (const RubTrack& t : u.rubs)
-      row.insert(row.end(), {t.radial[i], t.normal[i], t.friction[i], t.torque[i]});
+    // The row filled in place (GCC 12 warns falsely on variants built one by one).
+    std::vector<CsvCell> row(columns.size());
+    std::size_t at = 0;
+    const auto put = [&](std::initializer_list<double> values) {
+      for (double v : values) row[at++].emplace<double>(v);
+    };
+    put({u.times[i], u.speed[i], rpmOf(u.speed[i]), u.angle[i]});
+    for (const RunUpHistory& h : u.histories) put({h.uy[i], h.uz[i]});
+    if (u.driven) put({u.driveTorque[i], u.unbalanceTorque[i]});
+    for (const JournalTrack& j : u.journals) {
+      put({j.y[i], j.z[i], j.eccentricity[i]});
+      for (const std::vector<double>& own : j.own) put({own[i]});
+    }
+    if (!u.journals.empty()) put({u.filmTorque[i]});
+    for (const RubTrack& t : u.rubs) put({t.radial[i], t.normal[i], t.friction[i], t.torque[i]});
     const RunUpEnergy& e = u.energy;
-    row.insert(row.end(), {e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i],
-                           e.film[i], e.rub[i], e.work[i], e.balance(i)});
+    put({e.kinetic[i], e.strain[i], e.dissipated[i], e.gyroscopic[i], e.film[i], e.rub[i],
+         e.work[i], e.balance(i)});
     table.addRow(std::move(row));
   }
   return table;
