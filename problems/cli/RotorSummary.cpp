@@ -1,6 +1,7 @@
 // Summary lines of the rotor analyses (see RotorSummary.hpp).
 #include "problems/cli/RotorSummary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -350,11 +351,21 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome&
         << rpmText(h.speedAtPeak * kRpm, units) << " (t = " << formatValue(h.timeAtPeak)
         << " s)\n";
   }
-  for (const JournalTrack& j : r.journals)
+  for (const JournalTrack& j : r.journals) {
     out << "    journal '" << j.name << "' on its film: eccentricity "
         << formatValue(j.startEccentricity) << " at the start, at most "
         << formatValue(j.largestEccentricity) << " (c = " << valueText(j.clearance, "m", units)
         << ")\n";
+    // A tilting-pad film's pads, each tilt's range over the samples.
+    if (!j.ownNames.empty()) out << "      pads' tilts over the run:";
+    for (std::size_t k = 0; k < j.ownNames.size(); ++k) {
+      if (j.own[k].empty()) continue;
+      const auto [low, high] = std::minmax_element(j.own[k].begin(), j.own[k].end());
+      out << (k ? ", " : " ") << j.ownNames[k] << " " << valueText(*low, "rad", units) << " to "
+          << valueText(*high, "rad", units);
+    }
+    if (!j.ownNames.empty()) out << "\n";
+  }
   if (!r.filmTorque.empty())
     out << "    the films' drag on the spin: " << valueText(r.filmTorque.front(), "N m", units)
         << " at the start, " << valueText(r.filmTorque.back(), "N m", units) << " at the end\n";

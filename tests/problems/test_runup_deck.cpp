@@ -107,6 +107,22 @@ TEST_SUITE("rotor decks") {
     const std::size_t tilt = test::csvColumn(history[0], "left_pad1_tilt");
     CHECK(std::abs(std::stod(history[1][tilt]) - p.pads[0].tilt) <
           0.1 * j.clearance / (j.diameter / 2));
+    // Each pad's tilt range in results.json and the summary: those of its history column.
+    const auto& left = runUp["journals"][0];
+    REQUIRE(left["pad_tilts"].size() == 4);
+    const auto& pad1 = left["pad_tilts"][0];
+    CHECK(pad1["name"] == "pad1_tilt");
+    double low = std::stod(history[1][tilt]), high = low;
+    for (std::size_t row = 1; row < history.size(); ++row) {
+      low = std::min(low, std::stod(history[row][tilt]));
+      high = std::max(high, std::stod(history[row][tilt]));
+    }
+    // The CSV's shortest round-trip digits read back to the same doubles.
+    CHECK(pad1["start"].get<double>() == std::stod(history[1][tilt]));
+    CHECK(pad1["min"].get<double>() == low);
+    CHECK(pad1["max"].get<double>() == high);
+    CHECK(low < high);
+    CHECK(solved.process.out.find("pads' tilts over the run: pad1_tilt ") != std::string::npos);
     CHECK(std::filesystem::exists(solved.dir / "pads_runup_journals.png"));
     std::filesystem::remove_all(solved.dir.parent_path());
   }

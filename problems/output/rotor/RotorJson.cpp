@@ -375,11 +375,22 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
                       {"time_at_peak", any ? Json(h.timeAtPeak) : Json(nullptr)}});
   }
   Json journals = Json::array();
-  for (const JournalTrack& j : r.journals)
+  for (const JournalTrack& j : r.journals) {
+    // A tilting-pad film's pads: each tilt's range over the samples (rad).
+    Json pads = Json::array();
+    for (std::size_t k = 0; k < j.ownNames.size(); ++k) {
+      const std::vector<double>& tilt = j.own[k];
+      if (tilt.empty()) continue;
+      const auto [low, high] = std::minmax_element(tilt.begin(), tilt.end());
+      pads.push_back({{"name", j.ownNames[k]}, {"start", tilt.front()}, {"min", *low},
+                      {"max", *high}, {"end", tilt.back()}});
+    }
     journals.push_back({{"bearing", j.name},
                         {"clearance", j.clearance},
                         {"start_eccentricity", j.startEccentricity},
-                        {"largest_eccentricity", j.largestEccentricity}});
+                        {"largest_eccentricity", j.largestEccentricity},
+                        {"pad_tilts", pads}});
+  }
   Json rubs = Json::array();
   for (std::size_t k = 0; k < r.rubs.size(); ++k) {
     const RubTrack& t = r.rubs[k];
