@@ -13,6 +13,7 @@ LineFollower::LineFollower(const Model& model, const CampbellResult& campbell,
                            const RotorOptions& options, std::size_t from)
     : system_(model, options.damping), options_(options), lines_(int(campbell.lines.size())) {
   options_.modes = std::max(campbell.candidates, firstCandidates(lines_));
+  options_.everyRotorMode = true;
   // Each line's mode at the lower speed: the candidate nearest its eigenvalue there (the same
   // solve as the diagram's, to round-off), and between the two members of a repeated
   // eigenvalue the one of the line's whirl (their basis is fixed by whirl, DegenerateModes.hpp).

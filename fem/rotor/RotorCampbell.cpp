@@ -130,6 +130,7 @@ class SweepSolver {
   RotorModesResult solve(double speed, int candidates, WhirlScope scope) {
     RotorOptions o = options_;
     o.modes = candidates;
+    o.everyRotorMode = true;
     RotorModesResult at = solveRotorModes(system_, speed, o, solver_, false, scope);
     result_.time.assembly += at.time.assembly;
     result_.time.solve += at.time.solve;
@@ -264,7 +265,11 @@ CampbellResult solveCampbell(const Model& model, const std::vector<double>& spee
     TrackedSpeed t{solver.solve(speeds[s], candidates, scope), {}};
     if (s == 0) {
       for (int l = 0; l < lines; ++l) t.pick.push_back({l, 1.0});
-      candidates = candidatesAtGap(t.at.modes, lines, options.shift);
+      // The gap among the candidates asked for (with pad tilts the speed holds more).
+      const std::size_t first = std::min(t.at.modes.size(), std::size_t(candidates));
+      const std::vector<RotorMode> asked(t.at.modes.begin(),
+                                         t.at.modes.begin() + std::ptrdiff_t(first));
+      candidates = candidatesAtGap(asked, lines, options.shift);
     } else {
       t.pick = matchByMac(previous, t.at.vectors);
     }

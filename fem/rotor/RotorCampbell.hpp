@@ -37,7 +37,10 @@ int candidatesAtGap(const std::vector<RotorMode>& modes, int lines, std::complex
 
 /// options.modes lines over `speeds` (rad/s, in sweep order). Each speed computes a few more
 /// modes than asked (candidatesAtGap), so a tracked mode that drops down the order is still
-/// found. One assembly, one symbolic factorisation for the whole sweep.
+/// found. One assembly, one symbolic factorisation for the whole sweep. With bearings' own
+/// dofs (pad tilts) the candidates are every rotor mode of a speed's eigen-solution
+/// (RotorOptions::everyRotorMode): a pad mode counted with the rotor's takes no candidate's
+/// place.
 ///
 /// A line whose shape correlates less than 0.5 with its last (MAC; but not where either is a
 /// repeated eigenvalue, whose basis is arbitrary), or whose eigenvalue leaves the straight

@@ -302,7 +302,7 @@ RotorModesResult solveRotorModes(const RotorSystem& system, double speed,
       result.bearingModes.push_back(std::move(mode));
       continue;
     }
-    if (rotorModes == options.modes) continue;
+    if (rotorModes == options.modes && !options.everyRotorMode) continue;
     result.vectors.col(rotorModes++) = q / q.norm();
     result.modes.push_back(std::move(mode));
   }

@@ -21,6 +21,11 @@ struct RotorOptions {
   std::complex<double> shift = 0;
   ProportionalDamping damping;  ///< alpha M + beta K added to the elements' damping
   EigenMethod method = EigenMethod::automatic;
+  /// With bearings' own dofs (pad tilts) the eigen-solution holds `modes` rotor modes and the
+  /// pads' own beside them. false: the `modes` rotor modes nearest the shift are reported;
+  /// true: every rotor mode it holds (a sweep's candidates: a pad mode counted with the
+  /// rotor's then takes no place of a rotor mode). No effect without own dofs.
+  bool everyRotorMode = false;
 };
 
 /// The modes at spin speed Omega (rad/s) nearest the shift. Throws SolveError when

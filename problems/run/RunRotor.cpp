@@ -21,6 +21,7 @@
 #include "elements/Spring.hpp"
 #include "elements/TiltingPadFilm.hpp"
 #include "elements/TiltingPadJournalFilm.hpp"
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/rotor/CriticalSpeedMap.hpp"
 #include "fem/rotor/CriticalSpeedRefinement.hpp"
 #include "fem/rotor/RotorCampbell.hpp"
@@ -187,11 +188,25 @@ UnbalanceOutcome runUnbalance(const Deck& deck, const RotorFamily& s, const Mode
       nodes.push_back(p->housing());
       out.responsePoints.push_back(pedestalBearings.at(housings++) + "_pedestal");
     }
-  out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
   out.operating = r.operating;
-  if (!r.operating) return out;  // no API 684 reading without an operating range
-  out.stability = operatingStability(model, optionsOf(deck, s), *r.operating, r.speeds.front(),
-                                     r.minLogDecrement);
+  const auto response = [&] {
+    out.unbalance = solveUnbalance(model, unbalance, r.speeds, nodes, deck.rotor.damping);
+  };
+  if (!r.operating) {  // no API 684 reading without an operating range
+    response();
+    return out;
+  }
+  // The response and the stability half of the verdict are independent: with two cores they
+  // run side by side (each the same to the bit; a failure of the response is thrown first).
+  const auto stability = [&] {
+    out.stability = operatingStability(model, optionsOf(deck, s), *r.operating,
+                                       r.speeds.front(), r.minLogDecrement);
+  };
+  const int parts = std::min(usableCores(), 2);
+  runParts(parts, [&](int part) {
+    if (part == 0) response();
+    if (part == 1 || parts == 1) stability();
+  });
   for (std::size_t k = 0; k < out.unbalance.orbits.size(); ++k) {
     // API 684 reads the shaft's response points; a housing's peaks are not part of it.
     if (k >= r.response.size()) {

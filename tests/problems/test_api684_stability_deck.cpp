@@ -12,6 +12,7 @@
 
 #include "problems/cli/RotorSummary.hpp"
 #include "problems/run/Study.hpp"
+#include "tests/ThreadsSetting.hpp"
 
 using namespace beamrotor;
 
@@ -52,5 +53,37 @@ TEST_SUITE("rotor decks") {
     cli::printRotor(summary, response, *resultOf<UnbalanceOutcome>(response));
     CAPTURE(summary.str());
     CHECK(summary.str().find("API 684: FAIL (unstable above 6276") != std::string::npos);
+  }
+
+  TEST_CASE("API 684 verdict: the response and the stability check side by side, as in turn") {
+    // With two cores the unbalance response and the stability check run at the same time:
+    // each is its own computation, so the outcome is the one-core run's to the bit.
+    auto solved = [](const std::string& threads) {
+      const test::ThreadsSetting setting(threads);
+      StudyRequest request;
+      request.deckPath = BEAMROTOR_SOURCE_DIR "/problems/compressor_rotor.yaml";
+      return solveStudy(request);
+    };
+    const Study one = solved("1"), two = solved("2");
+    REQUIRE(one.run);
+    REQUIRE(two.run);
+    const UnbalanceOutcome& a = *resultOf<UnbalanceOutcome>(compressorAnalysis(*one.run, "response"));
+    const UnbalanceOutcome& b = *resultOf<UnbalanceOutcome>(compressorAnalysis(*two.run, "response"));
+    REQUIRE(a.unbalance.orbits.size() == b.unbalance.orbits.size());
+    for (std::size_t k = 0; k < a.unbalance.orbits.size(); ++k) {
+      REQUIRE(a.unbalance.orbits[k].size() == b.unbalance.orbits[k].size());
+      for (std::size_t i = 0; i < a.unbalance.orbits[k].size(); ++i) {
+        CHECK(a.unbalance.orbits[k][i].uy == b.unbalance.orbits[k][i].uy);
+        CHECK(a.unbalance.orbits[k][i].uz == b.unbalance.orbits[k][i].uz);
+      }
+    }
+    REQUIRE(a.stability.has_value());
+    REQUIRE(b.stability.has_value());
+    CHECK(a.stability->smallest == b.stability->smallest);
+    CHECK(a.stability->speed == b.stability->speed);
+    CHECK(a.stability->frequencyHz == b.stability->frequencyHz);
+    REQUIRE(a.stability->onset.has_value());
+    REQUIRE(b.stability->onset.has_value());
+    CHECK(a.stability->onset->speed == b.stability->onset->speed);
   }
 }
