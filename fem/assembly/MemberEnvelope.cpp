@@ -113,6 +113,17 @@ std::vector<int> envelopePlaces(const ComponentPolynomials& q, double sign,
   return candidates;
 }
 
+/// Widens a member's range by one element's (smallest, largest) as memberForceRanges does
+/// place by place: the first of equal values kept, a NaN taken on both sides and kept.
+void widen(RangeValues& member, const std::pair<double, double>& element) {
+  if (std::isnan(element.first)) {
+    member.max = member.min = element.first;
+    return;
+  }
+  if (element.second > member.max) member.max = element.second;
+  if (element.first < member.min) member.min = element.first;
+}
+
 /// Index of the largest (sign +1) or smallest (-1) of the values of one resultant at s over the
 /// candidate solutions (ascending: the first of equal values wins), and that value.
 std::pair<int, double> extremeAt(const ComponentPolynomials& q, const std::vector<int>& candidates,
@@ -130,8 +141,15 @@ std::pair<int, double> extremeAt(const ComponentPolynomials& q, const std::vecto
 
 std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& solutions,
                                             const std::vector<int>& elements,
-                                            int intervalsPerElement) {
+                                            int intervalsPerElement,
+                                            std::vector<std::array<RangeValues, 6>>* ranges) {
   if (solutions.empty()) throw std::invalid_argument("an envelope needs at least one solution");
+  if (ranges) {
+    const double inf = std::numeric_limits<double>::infinity();
+    ranges->assign(solutions.size(), {});
+    for (std::array<RangeValues, 6>& r : *ranges)
+      for (RangeValues& v : r) v = {-inf, inf};
+  }
   std::vector<EnvelopeStation> out;
   double start = 0;
   std::array<ComponentPolynomials, 6> components;
@@ -147,6 +165,7 @@ std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& s
       for (std::size_t c = 0; c < kForceComponents.size(); ++c) {
         components[c].p[k] = componentPolynomial(series, kForceComponents[c]);
         components[c].range[k] = rangeOf(components[c].p[k]);
+        if (ranges) widen((*ranges)[k][c], components[c].range[k]);
       }
     }
     // The places: even ones, and for each resultant those of its upper and lower envelope.

@@ -35,9 +35,12 @@ struct EnvelopeStation {
 /// `solutions` (at least one, all of one structure: LoadedSolution, Recovery.hpp), at
 /// intervalsPerElement + 1 even places per element (ends included) and, on each element, the
 /// places where each resultant's upper or lower envelope changes solution or is stationary,
-/// in order.
+/// in order. With `ranges`, also each solution's range of each resultant along the member
+/// (resized to one per solution, kForceComponents order): the values memberForceRanges
+/// gives, from the same places on each element, read off the envelope's own pass.
 std::vector<EnvelopeStation> memberEnvelope(const std::vector<LoadedSolution>& solutions,
                                             const std::vector<int>& elements,
-                                            int intervalsPerElement);
+                                            int intervalsPerElement,
+                                            std::vector<std::array<RangeValues, 6>>* ranges = nullptr);
 
 }  // namespace beamrotor

@@ -59,6 +59,11 @@ struct ComponentRange {
   MemberValue max, min;
 };
 
+/// A member resultant's largest and smallest value, without their places.
+struct RangeValues {
+  double max = 0, min = 0;
+};
+
 /// Resultant ranges of member `elements` (line elements from its start to its end) in a
 /// static solution, in the order of kForceComponents.
 std::array<ComponentRange, 6> memberForceRanges(const LoadedSolution& solution,

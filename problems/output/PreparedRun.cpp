@@ -3,8 +3,6 @@
 
 #include <variant>
 
-#include "fem/assembly/ParallelParts.hpp"
-
 #include "problems/output/crank/CrankOutput.hpp"
 #include "problems/output/moving/MovingOutput.hpp"
 #include "problems/output/torsion/TorsionOutput.hpp"
@@ -111,7 +109,8 @@ CsvTable loadCasesTable(const Json& analysis, const std::string& file, const Out
 }
 
 /// The envelope over the combinations, the samples of the cases written (writtenCases) and,
-/// for a frame with combinations, the envelope along every member.
+/// for a frame with combinations, the tables of the envelope along every member (computed
+/// with the extremes: runExtremes, MemberEnvelopes::computed).
 void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis& p, bool planar,
                   bool allCases) {
   const std::vector<CaseOutcome>& cases = casesOf(a);
@@ -127,24 +126,10 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
     if (x.ranges.empty() && !x.rangeValues.empty())
       p.cases.back().placed = caseExtremes(model, cases[i], summed, chords, RangesKept::withPlaces);
   }
-  std::vector<LoadedSolution> combinations;
   std::vector<std::string> names;
   for (const CaseOutcome& c : casesOf(a))
-    if (c.combination) {
-      combinations.push_back(c.on(model));
-      names.push_back(c.name);
-    }
-  if (combinations.empty()) return;
-  // Each member's envelope is computed whole by one part (its own range of members), so it is
-  // the same to the bit however many parts run.
-  const auto& members = model.members();
-  p.envelopeStations.resize(members.size());
-  const std::vector<int> bounds = evenRanges(
-      int(members.size()), partsFor(combinations.size() * model.elements().size()));
-  runParts(int(bounds.size()) - 1, [&](int part) {
-    for (int m = bounds[part]; m < bounds[part + 1]; ++m)
-      p.envelopeStations[m] = memberEnvelope(combinations, members[m].second, kIntervalsPerElement);
-  });
+    if (c.combination) names.push_back(c.name);
+  if (names.empty()) return;
   if (oneMembersTable(model)) {
     p.envelopes.push_back(
         membersEnvelopeTable(envelopesCsv(p.stem), model, p.envelopeStations, names));
@@ -220,12 +205,13 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
   const bool planar = run.dimension == "planar";
 
   // 2. The extremes of every static solution, then the samples along the line and every table.
-  PreparedRun prepared{&run, runExtremes(run), {}, {}, units};
+  PreparedRun prepared{&run, runExtremes(run, MemberEnvelopes::computed), {}, {}, units};
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
     PreparedAnalysis p;
     p.outcome = &a;
     p.stem = fileStem(a.name);
+    p.envelopeStations = std::move(prepared.extremes[i].memberEnvelopes);
     p.extremes = &prepared.extremes[i];
     std::visit(
         Overloaded{

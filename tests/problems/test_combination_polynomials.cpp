@@ -459,4 +459,45 @@ TEST_SUITE("load cases") {
         CHECK(a.members[m][f].max.by >= 3);  // combinations only: cases 3, 4 and 5
       }
   }
+  TEST_CASE("each combination's member ranges from the envelope's pass: the bits of its own") {
+    // memberEnvelope ranges each combination's resultants on each element for the envelope;
+    // the member ranges it gives from them are those staticExtremes computes combination by
+    // combination (the same places, the same values, the first of equal ones kept), and its
+    // stations are those of the envelope computed without them.
+    const Study s = test::solveDeckText(frameDeck(kCases), "frame_merged.yaml");
+    const Model& model = *s.run->model;
+    const std::vector<CaseOutcome>& cases = casesOf(s.run->analyses.front());
+    REQUIRE(cases.size() == 6);
+    std::vector<LoadedSolution> combinations;
+    std::vector<StaticExtremes> own;
+    SolutionPolynomials summed;
+    for (const CaseOutcome& c : cases)
+      if (c.combination) {
+        combinations.push_back(c.on(model));
+        own.push_back(caseExtremes(model, c, summed, false, RangesKept::values));
+      }
+    REQUIRE(combinations.size() == 3);
+    for (std::size_t m = 0; m < model.members().size(); ++m) {
+      const std::vector<int>& elements = model.members()[m].second;
+      std::vector<std::array<RangeValues, 6>> ranges;
+      const std::vector<EnvelopeStation> with =
+          memberEnvelope(combinations, elements, kIntervalsPerElement, &ranges);
+      const std::vector<EnvelopeStation> without =
+          memberEnvelope(combinations, elements, kIntervalsPerElement);
+      REQUIRE(ranges.size() == combinations.size());
+      for (std::size_t k = 0; k < combinations.size(); ++k)
+        for (std::size_t f = 0; f < 6; ++f) {
+          const RangeValues v = rangeValuesOf(own[k], m, f);
+          CHECK(ranges[k][f].max == v.max);
+          CHECK(ranges[k][f].min == v.min);
+          CHECK(ranges[k][f].max >= ranges[k][f].min);
+        }
+      REQUIRE(with.size() == without.size());
+      for (std::size_t i = 0; i < with.size(); ++i) {
+        CHECK(with[i].s == without[i].s);
+        CHECK(with[i].max == without[i].max);
+        CHECK(with[i].min == without[i].min);
+      }
+    }
+  }
 }

@@ -17,10 +17,14 @@ StaticExtremes staticExtremes(const LoadedSolution& solution, PeaksKept kept,
   const std::size_t members = solution.model->members().size();
   if (ranges == RangesKept::withPlaces)
     out.ranges.reserve(members);
-  else
+  else if (ranges == RangesKept::values)
     out.rangeValues.reserve(members);
+  else
+    out.rangeValues.resize(members);  // filled by the envelope's pass (runExtremes)
   if (chordDeflections) out.chordDeflections.reserve(members);
   for (const auto& [name, elements] : solution.model->members()) {
+    if (chordDeflections) out.chordDeflections.push_back(largestChordDeflection(solution, elements));
+    if (ranges == RangesKept::byEnvelope) continue;
     const std::array<ComponentRange, 6> r = memberForceRanges(solution, elements);
     if (ranges == RangesKept::withPlaces) {
       out.ranges.push_back(r);
@@ -28,7 +32,6 @@ StaticExtremes staticExtremes(const LoadedSolution& solution, PeaksKept kept,
       std::array<RangeValues, 6>& values = out.rangeValues.emplace_back();
       for (std::size_t f = 0; f < r.size(); ++f) values[f] = {r[f].max.value, r[f].min.value};
     }
-    if (chordDeflections) out.chordDeflections.push_back(largestChordDeflection(solution, elements));
   }
   // A line's largest displacement is read from its fields; a frame's is reported on its own.
   if (!solution.model->members().empty()) out.largestDisplacement = largestDisplacement(solution);
@@ -55,7 +58,41 @@ StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPo
   return staticExtremes(solution, PeaksKept::canGovern, chordDeflections, ranges);
 }
 
-std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
+namespace {
+
+/// The envelope along each member of `model` over the combinations among `cases` into
+/// x.memberEnvelopes; where `fillRanges`, each combination's member ranges (left to it,
+/// RangesKept::byEnvelope) from the same pass. Each member is computed whole by one part (its
+/// own range of members), so the results are the same to the bit however many parts run.
+void memberEnvelopes(const Model& model, const std::vector<CaseOutcome>& cases,
+                     AnalysisExtremes& x, bool fillRanges) {
+  std::vector<LoadedSolution> combinations;
+  std::vector<std::size_t> caseOf;  // each combination's index into cases
+  for (std::size_t k = 0; k < cases.size(); ++k)
+    if (cases[k].combination) {
+      combinations.push_back(cases[k].on(model));
+      caseOf.push_back(k);
+    }
+  if (combinations.empty()) return;
+  const auto& members = model.members();
+  x.memberEnvelopes.resize(members.size());
+  const std::vector<int> bounds = evenRanges(
+      int(members.size()), partsFor(combinations.size() * model.elements().size()));
+  runParts(int(bounds.size()) - 1, [&](int part) {
+    std::vector<std::array<RangeValues, 6>> ranges;  // the member's, one per combination
+    for (int m = bounds[part]; m < bounds[part + 1]; ++m) {
+      x.memberEnvelopes[m] = memberEnvelope(combinations, members[m].second, kIntervalsPerElement,
+                                            fillRanges ? &ranges : nullptr);
+      if (fillRanges)
+        for (std::size_t k = 0; k < combinations.size(); ++k)
+          x.cases[caseOf[k]].rangeValues[m] = ranges[k];
+    }
+  });
+}
+
+}  // namespace
+
+std::vector<AnalysisExtremes> runExtremes(const RunResult& run, MemberEnvelopes envelopes) {
   std::vector<AnalysisExtremes> out(run.analyses.size());
   for (std::size_t i = 0; i < run.analyses.size(); ++i) {
     const AnalysisOutcome& a = run.analyses[i];
@@ -64,8 +101,13 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
     const std::vector<CaseOutcome>& cases = casesOf(a);
     const bool chords = caseChordDeflections(*run.model, cases.size());
     // The member ranges' places are reported with the chord deflections (results.json's
-    // member detail, the summary's cases in full); elsewhere the envelope reads their values.
-    const RangesKept kept = chords ? RangesKept::withPlaces : RangesKept::values;
+    // member detail, the summary's cases in full); elsewhere the envelope reads their values,
+    // and a combination's come from the envelope's own pass when it is computed.
+    const bool envelope = envelopes == MemberEnvelopes::computed;
+    const auto kept = [&](const CaseOutcome& c) {
+      if (chords) return RangesKept::withPlaces;
+      return envelope && c.combination ? RangesKept::byEnvelope : RangesKept::values;
+    };
     // Each case's extremes are computed whole by one part (its own range of cases, in order),
     // so they are the same to the bit however many parts run.
     out[i].cases.resize(cases.size());
@@ -74,8 +116,9 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run) {
     runParts(int(bounds.size()) - 1, [&](int part) {
       SolutionPolynomials summed;  // one combination's at a time, its storage reused
       for (int k = bounds[part]; k < bounds[part + 1]; ++k)
-        out[i].cases[k] = caseExtremes(*run.model, cases[k], summed, chords, kept);
+        out[i].cases[k] = caseExtremes(*run.model, cases[k], summed, chords, kept(cases[k]));
     });
+    if (envelope) memberEnvelopes(*run.model, cases, out[i], !chords);
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fem/assembly/ElementExtrema.hpp"
+#include "fem/assembly/MemberEnvelope.hpp"
 #include "fem/assembly/MemberExtrema.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
@@ -16,11 +17,6 @@
 #include "problems/run/RunResult.hpp"
 
 namespace beamrotor {
-
-/// A member resultant's largest and smallest value, without their places.
-struct RangeValues {
-  double max = 0, min = 0;
-};
 
 struct StaticExtremes {
   /// Every line element's, in order; of a load case or combination only those of the elements
@@ -42,8 +38,10 @@ struct StaticExtremes {
 enum class PeaksKept { everyElement, canGovern };
 
 /// Whether staticExtremes keeps each member range's place (element, position, point) or only
-/// its values (the envelope over the combinations reads no more).
-enum class RangesKept { withPlaces, values };
+/// its values (the envelope over the combinations reads no more), or leaves the values to the
+/// envelope along the members (byEnvelope: rangeValues one per member, filled by
+/// memberEnvelope's pass over each element's combinations, which ranges them anyway).
+enum class RangesKept { withPlaces, values, byEnvelope };
 
 /// The extremes of `solution`; the member parts and the largest displacement left empty for
 /// a model without members (a line), the chord deflections without `chordDeflections`.
@@ -71,9 +69,18 @@ StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPo
 struct AnalysisExtremes {
   std::optional<StaticExtremes> own;
   std::vector<StaticExtremes> cases;
+  /// With MemberEnvelopes::computed and combinations on a frame: the envelope along each
+  /// member over the combinations (memberEnvelope, Model::members() order).
+  std::vector<std::vector<EnvelopeStation>> memberEnvelopes;
 };
 
+/// Whether runExtremes also computes the envelope along the members (what the results
+/// directory writes): then each combination's member ranges, where only their values are
+/// kept, come from the same pass over each element's combinations instead of a second one.
+enum class MemberEnvelopes { skipped, computed };
+
 /// The extremes of each analysis of a run (run.analyses order).
-std::vector<AnalysisExtremes> runExtremes(const RunResult& run);
+std::vector<AnalysisExtremes> runExtremes(const RunResult& run,
+                                          MemberEnvelopes envelopes = MemberEnvelopes::skipped);
 
 }  // namespace beamrotor
