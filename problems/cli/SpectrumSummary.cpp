@@ -47,7 +47,7 @@ void printSpectrum(std::ostream& out, const AnalysisOutcome& a, const ResponseSp
       std::snprintf(percent, sizeof percent, "%.1f %%", 100 * sum[d] / r.modal.totalMass[d]);
       // A mode that does not move the mass along d shows 0, not its round-off (NoiseFloor.hpp).
       const double shown =
-          m.effectiveMass[d] <= kNegligibleShare * r.modal.totalMass[d] ? 0.0 : m.effectiveMass[d];
+          zeroAtOrBelow(m.effectiveMass[d], kNegligibleShare * r.modal.totalMass[d]);
       out << padded(formatValue(shown * kg.factor), 13) << padded(percent, 8);
     }
     out << "\n";

@@ -51,10 +51,9 @@ void printPeak(std::ostream& out, const char* what, const Deck& deck, const Mode
                const Peak& p, double floor, const std::string& indent,
                const OutputUnits& units) {
   const LineElement& line = *asLine(model.elements()[p.peak.place.element]);
-  const bool zero = std::abs(p.peak.value) <= floor;
-  out << indent << "largest " << what << " "
-      << valueText(zero ? 0.0 : p.peak.value, "Pa", units, {1e-6, "MPa"});
-  if (zero) return;
+  const double value = zeroAtOrBelow(p.peak.value, floor);
+  out << indent << "largest " << what << " " << valueText(value, "Pa", units, {1e-6, "MPa"});
+  if (value == 0) return;
   out << " at ";
   if (const auto member = memberLocation(model, p.peak.place.element, p.peak.place.s)) {
     out << valueText(member->second, "m", units) << " along member "

@@ -290,10 +290,11 @@ void printSweepResults(std::ostream& out, const Deck& deck, const SweepResult& s
       largest[c] = std::max(largest[c], std::abs(row[c]));
   for (const std::vector<double>& row : rows) {
     out << "  ";
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      const bool noise = c < largest.size() && std::abs(row[c]) <= kNegligibleShare * largest[c];
-      out << padded(formatValue(noise ? 0.0 : row[c]), kColumn);
-    }
+    for (std::size_t c = 0; c < row.size(); ++c)
+      out << padded(formatValue(c < largest.size()
+                                    ? zeroAtOrBelow(row[c], kNegligibleShare * largest[c])
+                                    : row[c]),
+                    kColumn);
     out << "\n";
   }
   out << "  (reactions in " << force.unit << " and " << moment.unit << " on the structure)\n";

@@ -13,6 +13,7 @@
 #include "problems/output/files/ChartParts.hpp"
 #include "problems/output/structure/LineSampling.hpp"
 #include "problems/output/structure/ModeShapes.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 #include "problems/output/structure/Tables.hpp"
 
 namespace beamrotor {
@@ -332,7 +333,7 @@ ChartScript sweepChart(const std::string& caption, const std::string& chartName,
     else if (q.group == SweepGroup::extreme && constant(q))
       continue;
     else if (q.group == SweepGroup::stress || q.group == SweepGroup::extreme ||
-             (q.group == SweepGroup::reaction && largest(q) > 1e-12 * largestReaction))
+             (q.group == SweepGroup::reaction && largest(q) > kNegligibleShare * largestReaction))
       panels.push_back({&q});
   }
   for (const auto* shared : {&frequencies, &criticals, &peaks})

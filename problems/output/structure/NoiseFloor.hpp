@@ -6,6 +6,8 @@
 // kNegligibleShare when that is smaller) times the kind's scale.
 #pragma once
 
+#include <cmath>
+
 #include "fem/model/Dof.hpp"
 #include "fem/model/Model.hpp"
 #include "fem/model/Results.hpp"
@@ -18,6 +20,11 @@ namespace beamrotor {
 /// forces from displacements sums terms as large as the largest force, so a share below
 /// about 1e-12 is already beyond double precision's trusted digits on element sums.
 inline constexpr double kNegligibleShare = 1e-12;
+
+/// `value`, or 0 when its magnitude is at or below `floor`.
+inline double zeroAtOrBelow(double value, double floor) {
+  return std::abs(value) <= floor ? 0.0 : value;
+}
 
 struct NoiseFloor {
   double translation = 0;  ///< m
