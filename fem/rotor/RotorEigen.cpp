@@ -223,7 +223,40 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
   // fails, on the same H), so the start is retried from another fixed start (not ARPACK's
   // own random one, whose generator state would make the result depend on earlier calls),
   // and then with a larger basis: each gives a different H; the answers are ARPACK's
-  // converged Ritz pairs either way.
+  // converged Ritz pairs either way. info 3 (no shift could be applied in a restart: the
+  // wanted and unwanted Ritz values did not separate within the basis) turns on the same last
+  // bits (jeffcott_api684's modes and rotor_on_pedestals.yaml's met it with one processor's
+  // OpenBLAS kernels, not another's) and is what ARPACK's guide answers with a larger basis:
+  // the same retries. So is a Schur form of H that LAPACK's dtrsen could not reorder when the
+  // Ritz vectors are formed (dneupd's info 1, on the same near-defective clusters).
+  std::vector<a_int> select;
+  std::vector<double> dr, di, zReal;        // the real driver's Ritz values and vectors
+  std::vector<Complex> dComplex, zComplex;  // the complex driver's
+  const auto ritzPairs = [&] {
+    a_int ritzInfo = 0;
+    select.assign(ncv, 0);
+    if constexpr (isReal) {
+      dr.assign(nev + 1, 0.0);
+      di.assign(nev + 1, 0.0);
+      zReal.assign(std::size_t(N) * (nev + 1), 0.0);
+      std::vector<double> workev(3 * ncv);
+      arpack::neupd(1, arpack::howmny::ritz_vectors, select.data(), dr.data(), di.data(),
+                    zReal.data(), N, sigma, 0.0, workev.data(), arpack::bmat::identity, N,
+                    arpack::which::largest_magnitude, nev, tol, resid.data(), ncv, v.data(), N,
+                    iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl, ritzInfo);
+    } else {
+      dComplex.assign(nev + 1, Complex(0));
+      zComplex.assign(std::size_t(N) * nev, Complex(0));
+      std::vector<Complex> workev(2 * ncv);
+      arpack::neupd(1, arpack::howmny::ritz_vectors, select.data(), dComplex.data(),
+                    zComplex.data(), N, sigma, workev.data(), arpack::bmat::identity, N,
+                    arpack::which::largest_magnitude, nev, tol, resid.data(), ncv, v.data(), N,
+                    iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl, rwork.data(),
+                    ritzInfo);
+    }
+    return ritzInfo;
+  };
+  a_int ritzInfo = 0;
   const bool warm = start.size() == N && start.norm() > 0;
   const ArpackTurn turn;  // from the first dnaupd to dneupd (or znaupd to zneupd)
   for (int attempt = 0; attempt < 3; ++attempt) {
@@ -264,7 +297,12 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
       y.tail(n) = (x.head(n) + sigma * y1) / s;
       y.head(n) = y1;
     }
-    if (info != -8) break;
+    if (info == 0) {
+      ritzInfo = ritzPairs();
+      if (ritzInfo == 0) break;
+    } else if (info != -8 && info != 3) {
+      break;
+    }
   }
   if (info < 0)
     throw SolveError("rotor modes: ARPACK naupd failed with info = " + std::to_string(info));
@@ -273,10 +311,12 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
                      " restarts (" + std::to_string(iparam[4]) + " of " + std::to_string(nev) +
                      " eigenvalues)");
   if (info == 3) throw SolveError("rotor modes: ARPACK could not apply shifts; ask for more modes");
+  if (ritzInfo != 0)
+    throw SolveError(std::string("rotor modes: ARPACK ") + (isReal ? "dneupd" : "zneupd") +
+                     " failed with info = " + std::to_string(ritzInfo));
 
   // 3. Ritz pairs of OP, back to lambda. The real driver stores a complex pair's vector as
   // two columns (real part, imaginary part), the first of the pair having Im nu > 0.
-  std::vector<a_int> select(ncv);
   std::vector<Complex> lambda;
   std::vector<Eigen::VectorXcd> q;
   start = Vec::Zero(N);
@@ -286,16 +326,9 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
     q.push_back(x.head(n));
   };
   if constexpr (isReal) {
-    std::vector<double> dr(nev + 1), di(nev + 1), z(std::size_t(N) * (nev + 1)), workev(3 * ncv);
-    arpack::neupd(1, arpack::howmny::ritz_vectors, select.data(), dr.data(), di.data(), z.data(), N,
-                  sigma, 0.0, workev.data(), arpack::bmat::identity, N,
-                  arpack::which::largest_magnitude, nev, tol, resid.data(), ncv, v.data(), N,
-                  iparam.data(), ipntr.data(), workd.data(), workl.data(), lworkl, info);
-    if (info != 0)
-      throw SolveError("rotor modes: ARPACK dneupd failed with info = " + std::to_string(info));
     const int nconv = int(iparam[4]);
     auto column = [&](int j) {
-      return Eigen::Map<const Eigen::VectorXd>(&z[std::size_t(j) * N], N);
+      return Eigen::Map<const Eigen::VectorXd>(&zReal[std::size_t(j) * N], N);
     };
     for (int j = 0; j < nconv; ++j) {
       start += column(j) / column(j).norm();
@@ -310,17 +343,10 @@ QuadraticEigenpairs arnoldiEigenpairs(const SparseMatrix& K, const SparseMatrix&
       }
     }
   } else {
-    std::vector<Complex> d(nev + 1), z(std::size_t(N) * nev), workev(2 * ncv);
-    arpack::neupd(1, arpack::howmny::ritz_vectors, select.data(), d.data(), z.data(), N, sigma,
-                  workev.data(), arpack::bmat::identity, N, arpack::which::largest_magnitude, nev,
-                  tol, resid.data(), ncv, v.data(), N, iparam.data(), ipntr.data(), workd.data(),
-                  workl.data(), lworkl, rwork.data(), info);
-    if (info != 0)
-      throw SolveError("rotor modes: ARPACK zneupd failed with info = " + std::to_string(info));
     for (int j = 0; j < int(iparam[4]); ++j) {
-      const Eigen::Map<const Eigen::VectorXcd> x(&z[std::size_t(j) * N], N);
+      const Eigen::Map<const Eigen::VectorXcd> x(&zComplex[std::size_t(j) * N], N);
       start += x / x.norm();
-      add(d[j], x);
+      add(dComplex[j], x);
     }
   }
   QuadraticEigenpairs out = nearest(lambda, q, count, sigma);

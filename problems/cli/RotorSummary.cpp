@@ -11,6 +11,7 @@
 #include "fem/rotor/RotorStability.hpp"
 #include "problems/cli/Summary.hpp"
 #include "problems/output/rotor/LevelOneOutput.hpp"
+#include "problems/output/structure/NoiseFloor.hpp"
 
 namespace beamrotor::cli {
 
@@ -177,15 +178,23 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutco
       const BearingCoefficients& k = j.coefficients[s];
       const OutputUnits::Shown stiffness = units.valueIn("N/m", {1, "N/m"});
       const OutputUnits::Shown damping = units.valueIn("N s/m", {1, "N s/m"});
-      const auto in = [](double v, const OutputUnits::Shown& shown) {
-        return formatValue(v * shown.factor);
+      // A coefficient that should vanish (a symmetric bearing's cross-coupling) comes out of
+      // the film's sums as round-off of the largest: judged against its own matrix's largest.
+      const double stiffest =
+          std::max({std::abs(k.kyy), std::abs(k.kzz), std::abs(k.kyz), std::abs(k.kzy)});
+      const double dampest =
+          std::max({std::abs(k.cyy), std::abs(k.czz), std::abs(k.cyz), std::abs(k.czy)});
+      const auto kIn = [&](double v) {
+        return formatValue(zeroAtOrBelow(v, kNegligibleShare * stiffest) * stiffness.factor);
+      };
+      const auto cIn = [&](double v) {
+        return formatValue(zeroAtOrBelow(v, kNegligibleShare * dampest) * damping.factor);
       };
       out << "    bearing " << j.name << " (" << j.type << ") at "
           << rpmText(j.speeds[s] * kRpm, units) << ": eccentricity "
-          << formatValue(j.eccentricity[s]) << ", kxx " << in(k.kyy, stiffness) << ", kyy "
-          << in(k.kzz, stiffness) << ", kxy " << in(k.kyz, stiffness) << ", kyx "
-          << in(k.kzy, stiffness) << " " << stiffness.unit << ", cxx " << in(k.cyy, damping)
-          << ", cyy " << in(k.czz, damping) << " " << damping.unit << "\n";
+          << formatValue(j.eccentricity[s]) << ", kxx " << kIn(k.kyy) << ", kyy " << kIn(k.kzz)
+          << ", kxy " << kIn(k.kyz) << ", kyx " << kIn(k.kzy) << " " << stiffness.unit << ", cxx "
+          << cIn(k.cyy) << ", cyy " << cIn(k.czz) << " " << damping.unit << "\n";
     }
 }
 

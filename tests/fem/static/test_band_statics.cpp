@@ -3,6 +3,7 @@
 // nodes widens the band past what suits it and leaves every entry of K as it was.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <memory>
 
 #include "elements/Spring.hpp"
@@ -94,18 +95,21 @@ TEST_SUITE("band statics") {
   }
 
   TEST_CASE("a pivot lost to round-off hands K to the sparse LDL', which gives its answer") {
-    // A spring of 1e26 N/m between two nodes of a soft cantilever: eliminating one of its
-    // dofs leaves k + a - k^2 / (k + b) for the other, in which a and b (~1e6) are lost to
-    // round-off (eps k = 2e10): measured, the band Cholesky meets a non-positive pivot from
-    // k = 1e24 on. The structure is held (no mechanism), so the sparse LDL' takes K, as the
-    // sparse path would have from the start: the same answer to the last bit, and its
-    // measured round-off says no digit of it holds.
+    // A spring of k = 2^86 N/m (7.7e25) between two nodes of a soft cantilever: eliminating
+    // one of its dofs leaves k + a - k^2 / (k + b) for the other, in which a and b (~1e6) are
+    // lost to round-off (half an ulp of k is 8.6e9). With k a power of two every step of the
+    // elimination is exact (k + a and k + b round to k, sqrt(k) = 2^43, k / sqrt(k) = 2^43),
+    // so the pivot is k - k less the other columns' squares: not positive, whatever order or
+    // kernel the LAPACK build sums in (with 1e26 the rounded square root left a pivot of
+    // either sign, one BLAS build's positive). The structure is held (no mechanism), so the
+    // sparse LDL' takes K, as the sparse path would have from the start: the same answer to
+    // the last bit, and its measured round-off says no digit of it holds.
     const auto build = [](bool wide) {
       auto m = std::make_unique<Model>();
       const Line line = uniformBeam(*m, 2.0, steelCircle(0.05), 4);
       clamp(*m, "root", line.nodes.front(), DofSet::planar());
       m->addElement(std::make_unique<Spring>(NodeDof{line.nodes[2], Dof::uy},
-                                             NodeDof{line.nodes[3], Dof::uy}, 1e26));
+                                             NodeDof{line.nodes[3], Dof::uy}, std::ldexp(1.0, 86)));
       // No stiffness, but it couples node 1 with the tip: too wide for a band.
       if (wide)
         m->addElement(std::make_unique<Spring>(NodeDof{line.nodes[1], Dof::uy},
