@@ -68,6 +68,8 @@ std::string errorOf(const F& f) {
   return "";
 }
 
+TEST_SUITE("output") {
+
 TEST_CASE("results.json and the cases' table written a case at a time: the whole ones") {
   const Study s = test::solveDeckText(kPortal, "streamed_portal.yaml");
   const RunResult& run = *s.run;
@@ -160,5 +162,7 @@ TEST_CASE("a NaN in a case's entry: refused as it is written, with the whole tre
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.parent_path())) ++siblings;
   CHECK(siblings == 1);  // no temporary directory left
 }
+
+}  // TEST_SUITE
 
 }  // namespace streamed_results
