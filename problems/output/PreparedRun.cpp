@@ -83,7 +83,8 @@ void addLoadCaseRows(CsvTable& table, const Json& entry, const OutputUnits& unit
   const auto add = [&](const char* quantity, const std::string& at, const std::string& component,
                        double si) {
     const OutputUnits::Shown shown = units.ofSI(caseValueDimension(quantity, component));
-    table.addRow({name, combination, std::string(quantity), at, component, si * shown.factor, shown.unit});
+    table.addRow(
+        {name, combination, std::string(quantity), at, component, si * shown.factor, shown.unit});
   };
   for (const auto& [key, quantity] : {std::pair{"reactions", "reaction"},
                                       std::pair{"springs", "spring"},
@@ -102,10 +103,6 @@ void addLoadCaseRows(CsvTable& table, const Json& entry, const OutputUnits& unit
             v.at(extreme).at("value").get<double>());
     }
 }
-
-}  // namespace
-
-namespace {
 
 /// The envelope over the combinations, the samples of the cases written (writtenCases) and,
 /// for a frame with combinations, the tables of the envelope along every member (computed
@@ -306,7 +303,7 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
   for (CaseEntries& entries : prepared.results.cases)
     for (const PreparedCase& c : prepared.analyses.at(entries.analysis()).cases)
       entries.nameVtu(std::size_t(c.index), c.vtu);
-  // 5. Every table in the user's units; results.json stays SI.
+  // 4. Every table in the user's units; results.json stays SI.
   for (PreparedAnalysis& p : prepared.analyses) showInUnits(p, units);
   return prepared;
 }
