@@ -1,9 +1,12 @@
-// results.json and sweep.json (layout in JsonWriter.hpp).
+// results.json and sweep.json (layout in JsonWriter.hpp), and results.json written a case at
+// a time (ResultsDocument.hpp).
 #include "problems/output/JsonWriter.hpp"
+#include "problems/output/ResultsDocument.hpp"
 
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -21,6 +24,7 @@
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/files/FileWriting.hpp"
+#include "problems/output/files/Interruption.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 #include "problems/output/structure/Reactions.hpp"
 #include "problems/output/rotor/RotorJson.hpp"
@@ -62,39 +66,51 @@ Json modelJson(const RunResult& run, const DofMap& dofs) {
           {"dimension", run.dimension}};
 }
 
-/// Displacements of the named points, in node order (the order along a line). At a hinge each
+/// Displacements of the named points, in node order (the order along a line): point(name) for
+/// each point, then component(key, value) for each of its components. At a hinge each
 /// rotation the model carries is also given per side, "rz_left" and "rz_right" (the beam ends'
 /// own), and the node's value only where the node carries it. In a frame, where several
 /// members may meet, per member end instead: "rz_<member>_start", "rz_<member>_end" (or
 /// _before and _after where the joint lies inside the member; memberEndRotations).
-Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
-                            const std::array<bool, kDofKinds>& carried, const StaticResult& r) {
+template <class Point, class Component>
+void forEachPointDisplacement(const Model& model, const DofMap& dofs,
+                              const std::array<bool, kDofKinds>& carried, const StaticResult& r,
+                              const Point& point, const Component& component) {
   std::vector<std::pair<int, std::string>> points;
   for (const auto& [name, node] : model.namedNodes()) points.emplace_back(node, name);
   std::sort(points.begin(), points.end());
   const bool frame = !model.members().empty();
   std::map<int, std::vector<MemberEndRotation>> ends;
   if (frame && !r.hinges.empty()) ends = memberEndRotations({model, r.displacement}, r.hinges);
-  Json out = objectWithRoom(points.size());
   for (const auto& [node, name] : points) {
-    Json& components = appendNew(out, name);
+    point(name);
     for (Dof d : kAllDofs)
       if (dofs.equation(node, d) >= 0)
-        components[std::string(dofName(d))] = r.displacement(node, dofIndex(d));
+        component(std::string(dofName(d)), r.displacement(node, dofIndex(d)));
     if (const auto at = ends.find(node); at != ends.end())
       for (Dof d : kAllDofs)
         if (isRotation(d) && carried[dofIndex(d)])
           for (const MemberEndRotation& e : at->second)
-            components[std::string(dofName(d)) + "_" + e.label] = e.rotation[dofIndex(d) - 3];
+            component(std::string(dofName(d)) + "_" + e.label, e.rotation[dofIndex(d) - 3]);
     for (const SideRotations& h : r.hinges) {
       if (frame || h.node != node) continue;
       for (Dof d : kAllDofs)
         if (isRotation(d) && carried[dofIndex(d)])
           for (const auto& [side, value] :
                {std::pair{"_left", &h.left}, std::pair{"_right", &h.right}})
-            if (*value) components[std::string(dofName(d)) + side] = (**value)[dofIndex(d) - 3];
+            if (*value) component(std::string(dofName(d)) + side, (**value)[dofIndex(d) - 3]);
     }
   }
+}
+
+/// {point: {ux ... rz ...}}: forEachPointDisplacement's values.
+Json pointDisplacementsJson(const Model& model, const DofMap& dofs,
+                            const std::array<bool, kDofKinds>& carried, const StaticResult& r) {
+  Json out = objectWithRoom(model.namedNodes().size());
+  Json* components = nullptr;  // stays in place: out has room for every point
+  forEachPointDisplacement(
+      model, dofs, carried, r, [&](const std::string& name) { components = &appendNew(out, name); },
+      [&](const std::string& key, double value) { (*components)[key] = value; });
   return out;
 }
 
@@ -185,12 +201,14 @@ Json governedJson(const Governed& g, const std::vector<CaseOutcome>& cases) {
   return {{"value", g.value}, {"case", cases.at(g.by).name}};
 }
 
-/// The envelope over the combinations: for each point displacement component (from the cases'
-/// entries), each reaction component and each spring's or bearing's force its max and min, for
-/// each member resultant the max of its maxima and the min of its minima along the member, the
-/// largest displacement and normal stress; each with the combination that gives it.
-Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases,
-                  const CaseEnvelope& envelope, const Model& model) {
+/// The envelope over the combinations: for each point displacement component (the cases' own,
+/// forEachPointDisplacement), each reaction component and each spring's or bearing's force its
+/// max and min, for each member resultant the max of its maxima and the min of its minima along
+/// the member, the largest displacement and normal stress; each with the combination that
+/// gives it.
+Json envelopeJson(const Model& model, const DofMap& dofs,
+                  const std::array<bool, kDofKinds>& carried,
+                  const std::vector<CaseOutcome>& cases, const CaseEnvelope& envelope) {
   Json out = {{"reactions", Json::object()}, {"displacements", Json::object()},
               {"members", Json::object()}};
   out["members"].get_ref<Json::object_t&>().reserve(envelope.members.size());
@@ -211,24 +229,25 @@ Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases
   };
   std::vector<Slot> slots;
   bool built = false, byPosition = true;
-  for (const Json& c : caseEntries) {
-    if (!c.at("combination").get<bool>()) continue;
-    const std::string name = c.at("name").get<std::string>();
+  for (const CaseOutcome& c : cases) {
+    if (!c.combination) continue;
     std::size_t i = 0;
-    for (const auto& where : c.at("displacements").items())
-      for (const auto& component : where.value().items()) {
-        Json* e = nullptr;
-        if (built && byPosition && i < slots.size() && *slots[i].point == where.key() &&
-            *slots[i].component == component.key())
-          e = slots[i].entry;
-        else {
-          byPosition = !built;  // a new key may move the entries held: by name from here on
-          e = &out["displacements"][where.key()][component.key()];
-        }
-        ++i;
-        widen((*e)["max"], component.value().get<double>(), name, true);
-        widen((*e)["min"], component.value().get<double>(), name, false);
-      }
+    const std::string* point = nullptr;
+    forEachPointDisplacement(
+        model, dofs, carried, c.statics, [&](const std::string& name) { point = &name; },
+        [&](const std::string& component, double value) {
+          Json* e = nullptr;
+          if (built && byPosition && i < slots.size() && *slots[i].point == *point &&
+              *slots[i].component == component)
+            e = slots[i].entry;
+          else {
+            byPosition = !built;  // a new key may move the entries held: by name from here on
+            e = &out["displacements"][*point][component];
+          }
+          ++i;
+          widen((*e)["max"], value, c.name, true);
+          widen((*e)["min"], value, c.name, false);
+        });
     if (built) continue;
     built = true;
     Json& points = out["displacements"];
@@ -250,8 +269,12 @@ Json envelopeJson(const Json& caseEntries, const std::vector<CaseOutcome>& cases
   return out;
 }
 
-Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, kDofKinds>& carried,
-                const AnalysisOutcome& a, const AnalysisExtremes& extremes) {
+/// A static analysis' entry; its load cases' entries are left to `entries` (an empty "cases").
+Json staticJson(const Model& model, const std::shared_ptr<const DofMap>& dofMap,
+                const std::array<bool, kDofKinds>& carried, const AnalysisOutcome& a,
+                const AnalysisExtremes& extremes, std::vector<CaseEntries>& entries,
+                std::size_t analysis) {
+  const DofMap& dofs = *dofMap;
   const StaticExtremes& own = extremes.own.value();
   const StaticResult& r = *staticsOf(a);
   const std::string stem = fileStem(a.name);
@@ -278,19 +301,14 @@ Json staticJson(const Model& model, const DofMap& dofs, const std::array<bool, k
   if (const auto* s = resultOf<StaticOutcome>(a); s && !s->ownLoads) out["loaded"] = false;
   out["files"] = {{"fields_csv", fieldsCsv(stem)}, {"vtu", staticVtu(stem)}};
   if (!casesOf(a).empty()) {
-    Json cases = Json::array();
-    const bool detail = caseMemberDetail(model, casesOf(a).size());
-    for (std::size_t i = 0; i < casesOf(a).size(); ++i) {
-      cases.push_back(
-          caseJson(model, dofs, carried, casesOf(a)[i], extremes.cases.at(i), stem, detail));
-    }
-    out["cases"] = std::move(cases);
+    out["cases"] = Json::array();
+    entries.emplace_back(model, dofMap, carried, a, extremes, analysis);
     out["files"]["cases_csv"] = casesCsv(stem);
     out["files"]["cases_pvd"] = casesPvd(stem);
     if (std::any_of(casesOf(a).begin(), casesOf(a).end(),
                     [](const CaseOutcome& c) { return c.combination; })) {
-      out["envelope"] = envelopeJson(out["cases"], casesOf(a),
-                                     caseEnvelope(model, casesOf(a), extremes.cases), model);
+      out["envelope"] = envelopeJson(model, dofs, carried, casesOf(a),
+                                     caseEnvelope(model, casesOf(a), extremes.cases));
       if (!model.members().empty()) {
         Json files = Json::object();
         for (const auto& [name, elements] : model.members())
@@ -476,14 +494,41 @@ Json runJson(const RunResult& run) {
 }
 
 Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes) {
+  return runDocument(run, extremes).complete();
+}
+
+CaseEntries::CaseEntries(const Model& model, std::shared_ptr<const DofMap> dofs,
+                         const std::array<bool, kDofKinds>& carried, const AnalysisOutcome& a,
+                         const AnalysisExtremes& extremes, std::size_t analysis)
+    : model_(&model),
+      dofs_(std::move(dofs)),
+      carried_(carried),
+      cases_(&casesOf(a)),
+      extremes_(&extremes.cases),
+      stem_(fileStem(a.name)),
+      memberDetail_(caseMemberDetail(model, casesOf(a).size())),
+      analysis_(analysis),
+      vtus_(casesOf(a).size()) {}
+
+Json CaseEntries::entry(std::size_t i) const {
+  Json out = caseJson(*model_, *dofs_, carried_, cases_->at(i), extremes_->at(i), stem_,
+                      memberDetail_);
+  if (!vtus_[i].empty()) out["vtu"] = vtus_[i];
+  return out;
+}
+
+ResultsDocument runDocument(const RunResult& run, const std::vector<AnalysisExtremes>& extremes) {
   if (!run.model) throw std::invalid_argument("run of '" + run.deckName + "' has no model");
   if (extremes.size() != run.analyses.size())
     throw std::invalid_argument("runJson needs the extremes of every analysis");
   const Model& model = *run.model;
-  const DofMap dofs(model);
+  const auto dofMap = std::make_shared<const DofMap>(model);
+  const DofMap& dofs = *dofMap;
   const auto carried = kindsCarried(model, dofs);
 
-  Json doc = objectWithRoom(16);
+  ResultsDocument out;
+  Json& doc = out.doc;
+  doc = objectWithRoom(16);
   doc["deck"] = {{"name", run.deckName}, {"path", run.deckPath}};
   doc["model"] = modelJson(run, dofs);
   Json analyses = Json::array();
@@ -491,9 +536,11 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
     const AnalysisOutcome& a = run.analyses[i];
     analyses.push_back(std::visit(
         Overloaded{
-            [&](const StaticOutcome&) { return staticJson(model, dofs, carried, a, extremes[i]); },
+            [&](const StaticOutcome&) {
+              return staticJson(model, dofMap, carried, a, extremes[i], out.cases, i);
+            },
             [&](const SecondOrderResult& r) {
-              Json entry = staticJson(model, dofs, carried, a, extremes[i]);
+              Json entry = staticJson(model, dofMap, carried, a, extremes[i], out.cases, i);
               entry["second_order"] = secondOrderJson(r);
               return entry;
             },
@@ -528,7 +575,18 @@ Json runJson(const RunResult& run, const std::vector<AnalysisExtremes>& extremes
   if (run.adequate) doc["accuracy"] = adequateJson(*run.adequate);
   doc["seconds"] = run.seconds;
   doc["beamrotor_version"] = BEAMROTOR_VERSION;
-  return doc;
+  return out;
+}
+
+Json ResultsDocument::complete() const& { return ResultsDocument{doc, cases}.complete(); }
+
+Json ResultsDocument::complete() && {
+  for (const CaseEntries& c : cases) {
+    Json& entries = doc.at("analyses").at(c.analysis()).at("cases");
+    entries.get_ref<Json::array_t&>().reserve(c.size());
+    for (std::size_t i = 0; i < c.size(); ++i) entries.push_back(c.entry(i));
+  }
+  return std::move(doc);
 }
 
 Json sweepJson(const SweepResult& sweep, const std::vector<Json>& runDocs,
@@ -589,18 +647,105 @@ class BufferedStreamOutput : public nlohmann::detail::output_adapter_protocol<ch
   std::string buffer_;
 };
 
+/// Writes a document as doc.dump(2, ' ', false, replace) gives it, in parts: nlohmann's own
+/// serializer for each value, and the layout of its pretty printing (a container's entries one
+/// a line, indented 2 more than it, separated by commas) around the containers that hold the
+/// arrays made as they are written. Text that is not valid UTF-8 (a file name in another
+/// encoding) is shown as U+FFFD rather than failing the whole write.
+class JsonParts {
+ public:
+  explicit JsonParts(std::ostream& out)
+      : buffered_(std::make_shared<BufferedStreamOutput>(out)),
+        serializer_(buffered_, ' ', Json::error_handler_t::replace) {}
+
+  /// A value written whole at an indentation of `indent`.
+  void value(const Json& v, unsigned indent) { serializer_.dump(v, true, false, 2, indent); }
+  /// An object's key as the serializer writes it, with its ": ".
+  void key(const std::string& k) {
+    serializer_.dump(Json(k), false, false, 0);
+    buffered_->write_characters(": ", 2);
+  }
+  /// An object's (or array's) `count` entries, entry(k, its indentation) writing the k-th.
+  template <class Entry>
+  void container(bool object, std::size_t count, unsigned indent, const Entry& entry) {
+    if (count == 0) {
+      buffered_->write_characters(object ? "{}" : "[]", 2);
+      return;
+    }
+    buffered_->write_characters(object ? "{\n" : "[\n", 2);
+    const std::string spaces(indent + 2, ' ');
+    for (std::size_t k = 0; k < count; ++k) {
+      buffered_->write_characters(spaces.data(), spaces.size());
+      entry(k, indent + 2);
+      buffered_->write_characters(k + 1 < count ? ",\n" : "\n", k + 1 < count ? 2 : 1);
+    }
+    buffered_->write_characters(spaces.data(), indent);
+    buffered_->write_character(object ? '}' : ']');
+  }
+  /// The last line's end, and everything handed to the stream.
+  void finish() {
+    buffered_->write_character('\n');
+    buffered_->flush();
+  }
+
+ private:
+  std::shared_ptr<BufferedStreamOutput> buffered_;
+  nlohmann::detail::serializer<Json> serializer_;
+};
+
 }  // namespace
 
 void writeJson(const Json& doc, const std::filesystem::path& file) {
   writeFile(file, [&](std::ostream& out) {
-    // What doc.dump(2, ' ', false, replace) gives, streamed: the same serializer. Text that is
-    // not valid UTF-8 (a file name in another encoding) is shown as U+FFFD rather than failing
-    // the whole write.
-    const auto buffered = std::make_shared<BufferedStreamOutput>(out);
-    nlohmann::detail::serializer<Json> serializer(buffered, ' ', Json::error_handler_t::replace);
-    serializer.dump(doc, true, false, 2);
-    buffered->write_character('\n');
-    buffered->flush();
+    JsonParts parts(out);
+    parts.value(doc, 0);
+    parts.finish();
+  });
+}
+
+void ResultsDocument::write(
+    const std::filesystem::path& file,
+    const std::function<void(const CaseEntries&, const Json&)>& each) const {
+  // The containers on the way to each cases array (the document, its analyses, the analysis)
+  // are laid out here; every other value goes whole to the serializer.
+  std::map<const Json*, const CaseEntries*> made;
+  std::set<const Json*> around;
+  for (const CaseEntries& c : cases) {
+    const Json& analysis = doc.at("analyses").at(c.analysis());
+    made[&analysis.at("cases")] = &c;
+    around.insert({&doc, &doc.at("analyses"), &analysis});
+  }
+  writeFile(file, [&](std::ostream& out) {
+    JsonParts parts(out);
+    const auto write = [&](const auto& self, const Json& v, unsigned indent) -> void {
+      if (const auto hole = made.find(&v); hole != made.end()) {
+        const CaseEntries& c = *hole->second;
+        parts.container(false, c.size(), indent, [&](std::size_t i, unsigned at) {
+          throwIfInterrupted();
+          const Json entry = c.entry(i);
+          requireFiniteAt(entry,
+                          "/analyses/" + std::to_string(c.analysis()) + "/cases/" +
+                              std::to_string(i),
+                          kResultsJson);
+          parts.value(entry, at);
+          if (each) each(c, entry);
+        });
+      } else if (!around.contains(&v)) {
+        parts.value(v, indent);
+      } else if (v.is_object()) {
+        const auto& entries = v.get_ref<const Json::object_t&>();
+        parts.container(true, entries.size(), indent, [&](std::size_t k, unsigned at) {
+          const auto& [key, value] = *(entries.begin() + std::ptrdiff_t(k));
+          parts.key(key);
+          self(self, value, at);
+        });
+      } else {
+        parts.container(false, v.size(), indent,
+                        [&](std::size_t k, unsigned at) { self(self, v[k], at); });
+      }
+    };
+    write(write, doc, 0);
+    parts.finish();
   });
 }
 

@@ -1,7 +1,8 @@
 // Ties the writers together. Each run is first prepared in memory (checked for NaN and
-// infinity, sampled along the line, its JSON and tables built), so that every error a result
-// can cause is raised before the first byte is written; then the files are written into a
-// temporary directory that replaces the output directory only when complete.
+// infinity, sampled along the line, its JSON and tables built), so that nearly every error a
+// result can cause is raised before the first byte is written; then the files are written into
+// a temporary directory that replaces the output directory only when complete (so that a NaN
+// found in a load case's entry as it is written, or an interruption, leaves the old one).
 #include "problems/output/Output.hpp"
 
 #include <cstdio>
@@ -102,7 +103,6 @@ void writeStaticFiles(const PreparedRun& prepared, const PreparedAnalysis& p,
   const Model& model = *run.model;
   const AnalysisOutcome& a = *p.outcome;
   p.fields->write(dir / fieldsCsv(p.stem));
-  if (p.caseTable) p.caseTable->write(dir / casesCsv(p.stem));
   if (p.springs) p.springs->write(dir / springsCsv(p.stem));
   if (p.reactions) p.reactions->write(dir / reactionsCsv(p.stem));
   for (const std::vector<CsvTable>* list : {&p.members, &p.envelopes})
@@ -164,7 +164,7 @@ void writeModalFiles(const PreparedRun& prepared, const PreparedAnalysis& p, con
 void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
   const RunResult& run = *prepared.run;
   const Model& model = *run.model;
-  writeJson(prepared.doc, dir / kResultsJson);
+  writeResultsAndCaseTables(prepared, dir);
   for (const PreparedAnalysis& p : prepared.analyses) {
     const AnalysisOutcome& a = *p.outcome;
     std::visit(
@@ -253,7 +253,7 @@ void writeSweepOutputs(const SweepResult& sweep, const fs::path& dir, const Outp
   std::vector<std::string> directories;  // empty names without point files
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
     if (tables) prepared.push_back(prepareRun(sweep.runs[i], choices));
-    docs.push_back(tables ? prepared.back().doc : prepareRunDocument(sweep.runs[i]));
+    docs.push_back(tables ? wholeResults(prepared.back()) : prepareRunDocument(sweep.runs[i]));
     directories.push_back(choices.pointFiles ? sweepValueDirectory(i, sweep.runs.size()) : "");
   }
   const Json sweepDoc = sweepJson(sweep, docs, directories);

@@ -1,6 +1,9 @@
 // Preparing a run for writing (see PreparedRun.hpp).
 #include "problems/output/PreparedRun.hpp"
 
+#include <map>
+#include <sstream>
+#include <string_view>
 #include <variant>
 
 #include "problems/output/crank/CrankOutput.hpp"
@@ -9,6 +12,7 @@
 #include "problems/output/files/FileNames.hpp"
 #include "problems/output/rotor/RotorFileNames.hpp"
 #include "problems/output/rotor/RotorOrbitChart.hpp"
+#include "problems/output/files/FileWriting.hpp"
 #include "problems/output/files/FiniteCheck.hpp"
 #include "problems/output/files/TableUnits.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
@@ -61,51 +65,43 @@ Dimension caseValueDimension(const std::string& quantity, const std::string& com
   return first == 'm' ? dim::moment : dim::force;
 }
 
-/// Calls visit(name, combination, quantity, at, component, value) for every value of the load
-/// cases and combinations of a static analysis's results.json entry, in the table's order:
-/// reactions, spring and bearing forces, point displacements and member resultant extremes.
-template <class Visit>
-void forEachCaseValue(const Json& analysis, const Visit& visit) {
-  for (const Json& c : analysis.at("cases")) {
-    const std::string name = c.at("name").get<std::string>();
-    const long long combination = c.at("combination").get<bool>() ? 1 : 0;
-    for (const auto& [key, quantity] : {std::pair{"reactions", "reaction"},
-                                        std::pair{"springs", "spring"},
-                                        std::pair{"displacements", "displacement"}})
-      if (c.contains(key))
-        for (const auto& where : c.at(key).items())
-          for (const auto& component : where.value().items())
-            visit(name, combination, quantity, where.key(), component.key(),
-                  component.value().template get<double>());
-    if (!c.contains("members")) continue;
-    for (const auto& member : c.at("members").items())
-      for (const auto& component : member.value().items()) {
-        const Json& v = component.value();
-        if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
-        for (const char* extreme : {"max", "min"})
-          visit(name, combination, "member", member.key(), component.key() + " " + extreme,
-                v.at(extreme).at("value").template get<double>());
-      }
-  }
+/// The load cases' table (<stem>_cases.csv): every value of a static analysis' load cases and
+/// combinations, one a row (case, combination, quantity, at, component, value, unit), read
+/// from their results.json entries so that the table and the document never disagree. Its
+/// columns, without rows.
+CsvTable emptyLoadCasesTable(const std::string& file) {
+  return CsvTable(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
+                         {"component", ""}, {"value", ""}, {"unit", ""}});
 }
 
-/// The load cases and combinations of a static analysis's results.json entry as one table,
-/// one value per row with its unit (`units`, SI where none is set). The rows are counted
-/// first and reserved: the table of 200 combinations of a large frame holds millions.
-CsvTable loadCasesTable(const Json& analysis, const std::string& file, const OutputUnits& units) {
-  CsvTable t(file, {{"case", ""}, {"combination", ""}, {"quantity", ""}, {"at", ""},
-                    {"component", ""}, {"value", ""}, {"unit", ""}});
-  std::size_t rows = 0;
-  forEachCaseValue(analysis, [&](const std::string&, long long, const std::string&,
-                                 const std::string&, const std::string&, double) { ++rows; });
-  t.reserveRows(rows);
-  forEachCaseValue(analysis, [&](const std::string& name, long long combination,
-                                 const std::string& quantity, const std::string& at,
-                                 const std::string& component, double si) {
+/// Adds the rows of one case's results.json entry (CaseEntries::entry), in the table's order:
+/// reactions, spring and bearing forces, point displacements and member resultant extremes,
+/// each value in `units` (SI where none is set) with its unit.
+void addLoadCaseRows(CsvTable& table, const Json& entry, const OutputUnits& units) {
+  const std::string name = entry.at("name").get<std::string>();
+  const long long combination = entry.at("combination").get<bool>() ? 1 : 0;
+  const auto add = [&](const char* quantity, const std::string& at, const std::string& component,
+                       double si) {
     const OutputUnits::Shown shown = units.ofSI(caseValueDimension(quantity, component));
-    t.addRow({name, combination, quantity, at, component, si * shown.factor, shown.unit});
-  });
-  return t;
+    table.addRow(
+        {name, combination, std::string(quantity), at, component, si * shown.factor, shown.unit});
+  };
+  for (const auto& [key, quantity] : {std::pair{"reactions", "reaction"},
+                                      std::pair{"springs", "spring"},
+                                      std::pair{"displacements", "displacement"}})
+    if (entry.contains(key))
+      for (const auto& where : entry.at(key).items())
+        for (const auto& component : where.value().items())
+          add(quantity, where.key(), component.key(), component.value().get<double>());
+  if (!entry.contains("members")) return;
+  for (const auto& member : entry.at("members").items())
+    for (const auto& component : member.value().items()) {
+      const Json& v = component.value();
+      if (!v.is_object() || !v.contains("max") || !v.at("max").is_object()) continue;
+      for (const char* extreme : {"max", "min"})
+        add("member", member.key(), component.key() + " " + extreme,
+            v.at(extreme).at("value").get<double>());
+    }
 }
 
 /// The envelope over the combinations, the samples of the cases written (writtenCases) and,
@@ -166,11 +162,12 @@ void requireWritable(const RunResult& run) {
 }
 
 /// results.json of run from its extremes, with derived numbers (largest stress, ratios)
-/// checked for NaN and infinity as well.
-Json checkedDocument(const RunResult& run, const std::vector<AnalysisExtremes>& extremes) {
-  Json doc = runJson(run, extremes);
-  requireFiniteNumbers(doc, kResultsJson);
-  return doc;
+/// checked for NaN and infinity as well; the cases' entries are checked as they are made.
+ResultsDocument checkedDocument(const RunResult& run,
+                                const std::vector<AnalysisExtremes>& extremes) {
+  ResultsDocument results = runDocument(run, extremes);
+  requireFiniteNumbers(results.doc, kResultsJson);
+  return results;
 }
 
 /// Every table of p in `units` (inUnits).
@@ -194,7 +191,55 @@ void showInUnits(PreparedAnalysis& p, const OutputUnits& units) {
 
 Json prepareRunDocument(const RunResult& run) {
   requireWritable(run);
-  return checkedDocument(run, runExtremes(run));
+  Json doc = runJson(run, runExtremes(run));
+  requireFiniteNumbers(doc, kResultsJson);
+  return doc;
+}
+
+Json wholeResults(PreparedRun& prepared) {
+  Json doc = prepared.results.complete();
+  requireFiniteNumbers(doc, kResultsJson);
+  for (const CaseEntries& c : prepared.results.cases) {
+    PreparedAnalysis& p = prepared.analyses.at(c.analysis());
+    p.caseTable = emptyLoadCasesTable(casesCsv(p.stem));
+    for (const Json& entry : doc.at("analyses").at(c.analysis()).at("cases"))
+      addLoadCaseRows(*p.caseTable, entry, prepared.units);
+  }
+  return doc;
+}
+
+void writeResultsAndCaseTables(const PreparedRun& prepared, const std::filesystem::path& dir) {
+  // Each analysis' table is open while results.json is written (writeFile, one inside the
+  // other), and takes each case's rows as its entry is written: a table of that case alone,
+  // whose text less the columns' lines every such table begins with is added to the file.
+  std::map<std::size_t, std::ostream*> open;  // by analysis
+  std::string head;
+  {
+    std::ostringstream text;
+    emptyLoadCasesTable("").writeTo(text);
+    head = text.str();
+  }
+  const auto writeAll = [&](const auto& self, std::size_t k) -> void {
+    if (k < prepared.results.cases.size()) {
+      const std::size_t analysis = prepared.results.cases[k].analysis();
+      writeFile(dir / casesCsv(prepared.analyses.at(analysis).stem), [&](std::ostream& out) {
+        out << head;
+        open[analysis] = &out;
+        self(self, k + 1);
+      });
+      return;
+    }
+    prepared.results.write(dir / kResultsJson, [&](const CaseEntries& c, const Json& entry) {
+      const std::string file = casesCsv(prepared.analyses.at(c.analysis()).stem);
+      CsvTable rows = emptyLoadCasesTable(file);
+      addLoadCaseRows(rows, entry, prepared.units);
+      std::ostringstream text;
+      rows.writeTo(text);
+      const std::string_view written = std::string_view(text.view()).substr(head.size());
+      open.at(c.analysis())->write(written.data(), std::streamsize(written.size()));
+    });
+  };
+  writeAll(writeAll, 0);
 }
 
 PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
@@ -252,18 +297,13 @@ PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {
     prepared.analyses.push_back(std::move(p));
   }
 
-  // 3. results.json.
-  prepared.doc = checkedDocument(run, prepared.extremes);
-  // 4. The VTK files of the cases written, and the load cases' table, read from the
-  //    document's entries.
-  for (PreparedAnalysis& p : prepared.analyses)
-    if (!casesOf(*p.outcome).empty())
-      for (Json& entry : prepared.doc.at("analyses"))
-        if (entry.at("name") == p.outcome->name && entry.contains("cases")) {
-          for (const PreparedCase& c : p.cases) entry.at("cases").at(c.index)["vtu"] = c.vtu;
-          p.caseTable = loadCasesTable(entry, casesCsv(p.stem), units);
-        }
-  // 5. Every table in the user's units; results.json stays SI.
+  // 3. results.json, its cases' entries left to be made as written, with the VTK files of the
+  //    cases written.
+  prepared.results = checkedDocument(run, prepared.extremes);
+  for (CaseEntries& entries : prepared.results.cases)
+    for (const PreparedCase& c : prepared.analyses.at(entries.analysis()).cases)
+      entries.nameVtu(std::size_t(c.index), c.vtu);
+  // 4. Every table in the user's units; results.json stays SI.
   for (PreparedAnalysis& p : prepared.analyses) showInUnits(p, units);
   return prepared;
 }

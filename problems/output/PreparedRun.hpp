@@ -1,9 +1,12 @@
 // A solved run made ready for writing, in memory: checked for NaN and infinity, sampled along
-// the line, its results.json document and every CSV table built. The results directory is
-// written from it, and the Python module hands the same document and tables to Python, so the
-// two never disagree.
+// the line, its results.json document and every CSV table built, except what grows with the
+// load cases and combinations: their results.json entries and the load cases' table are made
+// a case at a time as they are written. The results directory is written from it, and the
+// Python module hands the same document and tables, made whole (wholeResults), to Python, so
+// the two never disagree.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +17,7 @@
 #include "problems/deck/OutputChoices.hpp"
 #include "problems/output/files/CsvTable.hpp"
 #include "problems/output/JsonWriter.hpp"
+#include "problems/output/ResultsDocument.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
 #include "problems/output/structure/LineSampling.hpp"
 #include "problems/output/structure/StaticExtremes.hpp"
@@ -64,7 +68,9 @@ struct PreparedAnalysis {
   std::optional<CaseEnvelope> envelope;
   /// Statics with load cases: the VTK samples of the cases written (writtenCases), in order.
   std::vector<PreparedCase> cases;
-  std::optional<CsvTable> caseTable;    ///< statics with load cases: <stem>_cases.csv
+  /// Statics with load cases: <stem>_cases.csv, held only once wholeResults made it (the
+  /// results directory writes it a case at a time).
+  std::optional<CsvTable> caseTable;
   std::vector<CsvTable> crank;          ///< crank-slider: motion, harmonics, lambda table
   std::vector<CsvTable> torsion;  ///< a train: interference, crossings, torques, response
   std::vector<CsvTable> moving;   ///< a moving load: influence lines, envelopes
@@ -80,7 +86,7 @@ struct PreparedRun {
   const RunResult* run = nullptr;  ///< must outlive this
   std::vector<AnalysisExtremes> extremes;  ///< per analysis, computed once (runExtremes)
   std::vector<PreparedAnalysis> analyses;
-  Json doc;  ///< results.json
+  ResultsDocument results;  ///< results.json, the cases' entries made as written (checked then)
   OutputUnits units;  ///< the units the tables are in (and the charts show)
 };
 
@@ -88,9 +94,18 @@ struct PreparedRun {
 /// `choices.fullTables`; with combinations only the governing ones sampled for their VTK files
 /// unless `choices.allCases` (writtenCases); every table in `choices.units` (inUnits; the
 /// document stays SI). results.json's `cases[i].vtu` names the files written. Throws
-/// std::runtime_error naming the first non-finite number, or analyses whose files would
-/// overwrite each other's.
+/// std::runtime_error naming the first non-finite number outside the cases' entries (theirs
+/// are refused as they are made), or analyses whose files would overwrite each other's.
 PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices = {});
+
+/// The whole results.json document of prepared, checked as prepareRun checks it, and every
+/// load cases' table held (PreparedAnalysis::caseTable), in prepared's units: what the Python
+/// module hands over.
+Json wholeResults(PreparedRun& prepared);
+
+/// Writes results.json and every load cases' table (<stem>_cases.csv) into `dir`, a case at a
+/// time: each case's entry is made, checked, written to both and dropped.
+void writeResultsAndCaseTables(const PreparedRun& prepared, const std::filesystem::path& dir);
 
 /// Only the results.json document of run, checked as prepareRun checks it, without its tables
 /// (a long sweep's values, whose tables are not written).

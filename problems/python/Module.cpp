@@ -137,8 +137,8 @@ class PythonRun {
     // results stay SI.
     OutputChoices tablesIn;
     tablesIn.units = output_.units;
-    const PreparedRun prepared = prepareRun(run_, tablesIn);
-    results_ = toPython(prepared.doc);
+    PreparedRun prepared = prepareRun(run_, tablesIn);
+    results_ = toPython(wholeResults(prepared));
     for (const PreparedAnalysis& a : prepared.analyses) {
       py::dict tables, units;
       for (const auto& [file, table] : a.tables()) {

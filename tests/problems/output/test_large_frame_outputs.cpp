@@ -57,7 +57,7 @@ TEST_SUITE("output") {
     REQUIRE(p.members.size() == 1);
     const CsvTable& table = p.members.front();
     CHECK(table.title() == "static_members.csv");
-    CHECK(prepared.doc["analyses"][0]["members"]["m60"]["csv"] == "static_members.csv");
+    CHECK(prepared.results.doc["analyses"][0]["members"]["m60"]["csv"] == "static_members.csv");
     // Every station of every element: 2 elements per member, 5 stations each.
     CHECK(table.rowCount() == std::size_t(kSpans) * 2 * 5);
 
@@ -88,7 +88,7 @@ TEST_SUITE("output") {
     const PreparedAnalysis& p = prepared.analyses.front();
     CHECK(p.members.size() == 100);
     CHECK(p.members.front().title() == "static_member_m0.csv");
-    CHECK(prepared.doc["analyses"][0]["members"]["m7"]["csv"] == "static_member_m7.csv");
+    CHECK(prepared.results.doc["analyses"][0]["members"]["m7"]["csv"] == "static_member_m7.csv");
   }
 
   TEST_CASE("a large frame's chart draws within its bounds") {

@@ -198,7 +198,7 @@ TEST_SUITE("output units") {
       if (!std::isnan(momentSI[i]))
         CHECK(std::abs(momentShown[i]) == doctest::Approx(c.P * c.L).epsilon(1e-9));
     // results.json stays SI: the same document either way.
-    CHECK(shown.doc.dump() == si.doc.dump());
+    CHECK(shown.results.doc.dump() == si.results.doc.dump());
   }
 
   TEST_CASE("written: the units line names the user's units; the charts draw in them") {
