@@ -2,8 +2,6 @@
 #include "problems/output/PreparedRun.hpp"
 
 #include <map>
-#include <sstream>
-#include <string_view>
 #include <variant>
 
 #include "problems/output/crank/CrankOutput.hpp"
@@ -210,33 +208,23 @@ Json wholeResults(PreparedRun& prepared) {
 
 void writeResultsAndCaseTables(const PreparedRun& prepared, const std::filesystem::path& dir) {
   // Each analysis' table is open while results.json is written (writeFile, one inside the
-  // other), and takes each case's rows as its entry is written: a table of that case alone,
-  // whose text less the columns' lines every such table begins with is added to the file.
+  // other), and takes each case's rows as its entry goes by: a table of that case alone.
   std::map<std::size_t, std::ostream*> open;  // by analysis
-  std::string head;
-  {
-    std::ostringstream text;
-    emptyLoadCasesTable("").writeTo(text);
-    head = text.str();
-  }
   const auto writeAll = [&](const auto& self, std::size_t k) -> void {
     if (k < prepared.results.cases.size()) {
       const std::size_t analysis = prepared.results.cases[k].analysis();
-      writeFile(dir / casesCsv(prepared.analyses.at(analysis).stem), [&](std::ostream& out) {
-        out << head;
+      const std::string file = casesCsv(prepared.analyses.at(analysis).stem);
+      writeFile(dir / file, [&](std::ostream& out) {
+        emptyLoadCasesTable(file).writeColumnsTo(out);
         open[analysis] = &out;
         self(self, k + 1);
       });
       return;
     }
     prepared.results.write(dir / kResultsJson, [&](const CaseEntries& c, const Json& entry) {
-      const std::string file = casesCsv(prepared.analyses.at(c.analysis()).stem);
-      CsvTable rows = emptyLoadCasesTable(file);
+      CsvTable rows = emptyLoadCasesTable(casesCsv(prepared.analyses.at(c.analysis()).stem));
       addLoadCaseRows(rows, entry, prepared.units);
-      std::ostringstream text;
-      rows.writeTo(text);
-      const std::string_view written = std::string_view(text.view()).substr(head.size());
-      open.at(c.analysis())->write(written.data(), std::streamsize(written.size()));
+      rows.writeRowsTo(*open.at(c.analysis()));
     });
   };
   writeAll(writeAll, 0);

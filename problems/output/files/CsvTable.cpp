@@ -149,6 +149,11 @@ void CsvTable::write(const std::filesystem::path& file) const {
 }
 
 void CsvTable::writeTo(std::ostream& out) const {
+  writeColumnsTo(out);
+  writeRowsTo(out);
+}
+
+void CsvTable::writeColumnsTo(std::ostream& out) const {
   // The names, then their units on a comment line (skipped by gnuplot, NumPy's genfromtxt and
   // pandas' read_csv(comment='#')), so that a name reads as a name: "speed", not "speed_rpm".
   std::string names, units = "# units: ";
@@ -161,6 +166,9 @@ void CsvTable::writeTo(std::ostream& out) const {
   }
   out << names << '\n';
   if (anyUnit) out << units << '\n';
+}
+
+void CsvTable::writeRowsTo(std::ostream& out) const {
   // A row at a time into a buffer, one stream write each (a large table has 10^7 cells).
   // Each distinct text's field once.
   std::vector<std::string> fields;

@@ -64,6 +64,10 @@ class CsvTable {
   void write(const std::filesystem::path& file) const;
   /// The same text onto a stream.
   void writeTo(std::ostream& out) const;
+  /// Its two parts: the column names (and their units' line), then the rows, so that a table
+  /// written a part at a time (the load cases' rows as results.json goes by) has one head.
+  void writeColumnsTo(std::ostream& out) const;
+  void writeRowsTo(std::ostream& out) const;
 
  private:
   /// What a cell holds; its payload is a number's or a count's bits or a text's index.
