@@ -543,6 +543,7 @@ TEST_SUITE("load cases") {
       const std::vector<EnvelopeStation> without =
           memberEnvelope(combinations, elements, kIntervalsPerElement);
       REQUIRE(env.size() == without.size());
+      stations += env.size();
       for (std::size_t i = 0; i < env.size(); ++i) {
         CHECK(env[i].s == without[i].s);
         CHECK(env[i].max == without[i].max);
@@ -574,7 +575,6 @@ TEST_SUITE("load cases") {
             if (v < lo) lo = v, loBy = int(k);
           }
           ties += equal > 0;
-          ++stations;
           CHECK(st.max[c] == hi);
           CHECK(st.maxBy[c] == hiBy);
           CHECK(st.min[c] == lo);
@@ -605,7 +605,7 @@ TEST_SUITE("load cases") {
         }
       }
     }
-    CHECK(stations > 500);
-    CHECK(ties > 50);  // exactly equal values at a station, the first of them named
+    CHECK(stations >= 80);  // 83 when written
+    CHECK(ties >= 200);     // exactly equal largest values at a station (307 when written)
   }
 }
