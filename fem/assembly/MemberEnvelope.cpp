@@ -118,11 +118,14 @@ struct ComponentPolynomials {
 /// |b_i|): 2 eps S the conversions, 0.5 eps S the subtraction, 0.5 eps S the difference's own
 /// coefficients, 6 eps S Horner's value (degree 3), 9 eps S per subdivision (at most 1 +
 /// kHalvings): 36 eps S for two halvings, under the 64 eps S kept off the limit (and the noise
-/// taken 2 eps low for the rounding of the limit).
+/// taken 2 eps low for the rounding of the limit). Relative bounds fail where values underflow:
+/// no claim for a tiny S other than 0 (two zero polynomials, whose difference is exactly 0).
 bool staysBelow(const ComponentPolynomials& q, int k, int top, double sign, double from,
                 double noise) {
+  const double size = q.size[k] + q.size[top];
+  if (size != 0 && size < 1e-280) return false;
   const double limit = noise * (1 - 2 * std::numeric_limits<double>::epsilon()) -
-                       64 * std::numeric_limits<double>::epsilon() * (q.size[k] + q.size[top]);
+                       64 * std::numeric_limits<double>::epsilon() * size;
   if (!(limit >= -std::numeric_limits<double>::max())) return false;  // NaN or not finite
   Bernstein d;
   for (std::size_t i = 0; i < d.size(); ++i) d[i] = sign * (q.bernstein[k][i] - q.bernstein[top][i]);
