@@ -77,23 +77,13 @@ double zeroInBracket(const Polynomial& p, double lo, double hi, bool rising) {
   return s;
 }
 
-/// Appends the zeros of p in [0, 1] and those of its derivatives. Degrees 1 and 2 in closed
-/// form; above, between consecutive zeros of p' (found the same way, down to the closed forms)
-/// the polynomial is monotone, so each sign change there holds exactly one zero, found by
-/// zeroInBracket; a zero of even multiplicity is a zero of p' and so already among them. The
-/// knots are kept once each, so a degree-n polynomial appends at most about n^2 places
-/// (ZeroPlaces holds those of degree 10).
 template <class Places>
-void collectZeros(Polynomial p, Places& out) {
-  while (!p.empty() && p.back() == 0) p.pop_back();
-  if (p.size() < 2) return;  // a constant: no isolated zero
-  if (p.size() == 2) {
-    const double s = -p[0] / p[1];
-    if (s >= 0 && s <= 1) out.push_back(s);
-    return;
-  }
-  if (p.size() == 3) return quadraticZeros(p[0], p[1], p[2], out);
-  ZeroPlaces knots{0, 1};
+void collectZeros(Polynomial p, Places& out);
+
+/// collectZeros of p (degree 3 or more, its leading coefficient not 0) with `knots` holding
+/// the ends 0 and 1 and room for the zeros of p's derivatives.
+template <class Knots, class Places>
+void zerosBetweenKnots(const Polynomial& p, Knots& knots, Places& out) {
   collectZeros(derivativeOf(p), knots);
   std::sort(knots.begin(), knots.end());
   knots.resize(std::size_t(std::unique(knots.begin(), knots.end()) - knots.begin()));
@@ -108,6 +98,31 @@ void collectZeros(Polynomial p, Places& out) {
       out.push_back(zeroInBracket(p, lo, hi, atLo < 0));
     atLo = atHi;
   }
+}
+
+/// Appends the zeros of p in [0, 1] and those of its derivatives. Degrees 1 and 2 in closed
+/// form; above, between consecutive zeros of p' (found the same way, down to the closed forms)
+/// the polynomial is monotone, so each sign change there holds exactly one zero, found by
+/// zeroInBracket; a zero of even multiplicity is a zero of p' and so already among them. The
+/// knots are kept once each, so a degree-n polynomial appends at most about n^2 places
+/// (ZeroPlaces holds those of degree 10; a cubic's, at most five, are held in a smaller list,
+/// which costs less to set up: the envelope along the members asks for millions of them).
+template <class Places>
+void collectZeros(Polynomial p, Places& out) {
+  while (!p.empty() && p.back() == 0) p.pop_back();
+  if (p.size() < 2) return;  // a constant: no isolated zero
+  if (p.size() == 2) {
+    const double s = -p[0] / p[1];
+    if (s >= 0 && s <= 1) out.push_back(s);
+    return;
+  }
+  if (p.size() == 3) return quadraticZeros(p[0], p[1], p[2], out);
+  if (p.size() == 4) {
+    InPlaceDoubles<8> knots{0, 1};
+    return zerosBetweenKnots(p, knots, out);
+  }
+  ZeroPlaces knots{0, 1};
+  zerosBetweenKnots(p, knots, out);
 }
 
 /// The largest of value(s) over the candidate places; NaN as soon as one value is NaN.

@@ -500,4 +500,112 @@ TEST_SUITE("load cases") {
       }
     }
   }
+  TEST_CASE("the envelope of many crossing and equal combinations: the bits of every one evaluated") {
+    // The portal under 47 combinations whose curves cross, meet and tie on every element: a
+    // grid of factors (their curves cross), fans dead + w wind and 1.35 dead + h heat (every
+    // curve of a fan passes through the places where the fanned case's resultant is zero: many
+    // curves meeting at one point), the same factors twice (exactly equal curves), and pairs
+    // that differ only in a case that is zero or round-off on an element (the arm is a
+    // cantilever that only the dead load bends, so on it wind and heat add nothing but
+    // round-off). The envelope skips candidates by bounds; the bits must be those of every
+    // combination evaluated at its places.
+    std::string deck = kCaseList;
+    int count = 0;
+    const auto add = [&](double dead, double wind, double heat) {
+      std::ostringstream line;
+      line.precision(17);
+      line << "  - {name: C" << count++ << ", factors: {dead: " << dead << ", wind: " << wind
+           << ", heat: " << heat << "}}\n";
+      deck += line.str();
+    };
+    for (double dead : {1.0, 1.35})
+      for (double wind : {-1.5, -0.75, 0.0, 0.75, 1.5})
+        for (double heat : {-1.2, 0.0, 0.6}) add(dead, wind, heat);
+    for (double wind : {-1.5, -1.0, -0.5, 0.5, 1.0, 1.5}) add(1, wind, 0);  // a fan
+    for (double heat : {-0.6, 0.3, 1.2}) add(1.35, 0, heat);                 // another
+    add(1, 0.75, 0), add(1.35, -1.5, 0.6), add(1, 0, 0);                      // equal to earlier
+    add(1.35, 1.5, -1.2), add(1.35, 1.5, -1.2);                               // two more of one
+    add(1, 0, 1e-3), add(1, 1e-3, 0);  // equal to 1 dead on the arm but for round-off
+    REQUIRE(count == 46);
+    const Study s = test::solveDeckText(frameDeck(deck), "frame_crossing.yaml");
+    const Model& model = *s.run->model;
+    std::vector<LoadedSolution> combinations;
+    for (const CaseOutcome& c : casesOf(s.run->analyses.front()))
+      if (c.combination) combinations.push_back(c.on(model));
+    REQUIRE(combinations.size() == 46);
+    const std::size_t n = combinations.size();
+    std::size_t stations = 0, ties = 0;
+    for (const auto& [name, elements] : model.members()) {
+      CAPTURE(name);
+      std::vector<std::array<RangeValues, 6>> ranges;
+      const std::vector<EnvelopeStation> env =
+          memberEnvelope(combinations, elements, kIntervalsPerElement, &ranges);
+      const std::vector<EnvelopeStation> without =
+          memberEnvelope(combinations, elements, kIntervalsPerElement);
+      REQUIRE(env.size() == without.size());
+      stations += env.size();
+      for (std::size_t i = 0; i < env.size(); ++i) {
+        CHECK(env[i].s == without[i].s);
+        CHECK(env[i].max == without[i].max);
+        CHECK(env[i].maxBy == without[i].maxBy);
+        CHECK(env[i].min == without[i].min);
+        CHECK(env[i].minBy == without[i].minBy);
+      }
+      for (std::size_t c = 0; c < 6; ++c) {
+        // Every combination's polynomial of this resultant on each element, as the envelope
+        // reads it, and the largest |value| of any on the member for the tolerances.
+        const auto polynomialOf = [&](std::size_t k, int e) {
+          return componentPolynomial(combinations[k].forceSeries(e), kForceComponents[c]);
+        };
+        double scale = 0;
+        for (int e : elements)
+          for (std::size_t k = 0; k < n; ++k)
+            for (int j = 0; j <= 100; ++j)
+              scale = std::max(scale, std::abs(valueAt(polynomialOf(k, e), j / 100.0)));
+        const double roundOff = 1e-12 * scale;
+        // 1. At each station: the largest and smallest of every combination evaluated there,
+        //    to the bit, and the first combination giving each (the first of equal values).
+        for (const EnvelopeStation& st : env) {
+          int hiBy = 0, loBy = 0, equal = 0;
+          double hi = valueAt(polynomialOf(0, st.element), st.s), lo = hi;
+          for (std::size_t k = 1; k < n; ++k) {
+            const double v = valueAt(polynomialOf(k, st.element), st.s);
+            if (v == hi) ++equal;
+            if (v > hi) hi = v, hiBy = int(k), equal = 0;
+            if (v < lo) lo = v, loBy = int(k);
+          }
+          ties += equal > 0;
+          CHECK(st.max[c] == hi);
+          CHECK(st.maxBy[c] == hiBy);
+          CHECK(st.min[c] == lo);
+          CHECK(st.minBy[c] == loBy);
+        }
+        // 2. Between consecutive stations of an element the envelope is one combination's
+        //    polynomial (the one on top at the middle): on a fine grid no combination is above
+        //    (below) it, and it meets the stations' values at the ends.
+        for (std::size_t i = 0; i + 1 < env.size(); ++i) {
+          if (env[i].element != env[i + 1].element) continue;
+          const int e = env[i].element;
+          const double a = env[i].s, b = env[i + 1].s, mid = 0.5 * (a + b);
+          for (double sign : {1.0, -1.0}) {
+            std::size_t top = 0;
+            for (std::size_t k = 1; k < n; ++k)
+              if (sign * valueAt(polynomialOf(k, e), mid) > sign * valueAt(polynomialOf(top, e), mid))
+                top = k;
+            const Polynomial t = polynomialOf(top, e);
+            CHECK(std::abs(valueAt(t, a) - (sign > 0 ? env[i].max[c] : env[i].min[c])) <= roundOff);
+            CHECK(std::abs(valueAt(t, b) - (sign > 0 ? env[i + 1].max[c] : env[i + 1].min[c])) <=
+                  roundOff);
+            for (int j = 0; j <= 50; ++j) {
+              const double x = a + (b - a) * j / 50;
+              for (std::size_t k = 0; k < n; ++k)
+                CHECK(sign * valueAt(polynomialOf(k, e), x) <= sign * valueAt(t, x) + roundOff);
+            }
+          }
+        }
+      }
+    }
+    CHECK(stations >= 80);  // 83 when written
+    CHECK(ties >= 200);     // exactly equal largest values at a station (307 when written)
+  }
 }
