@@ -207,27 +207,20 @@ Json wholeResults(PreparedRun& prepared) {
 }
 
 void writeResultsAndCaseTables(const PreparedRun& prepared, const std::filesystem::path& dir) {
-  // Each analysis' table is open while results.json is written (writeFile, one inside the
-  // other), and takes each case's rows as its entry goes by: a table of that case alone.
-  std::map<std::size_t, std::ostream*> open;  // by analysis
-  const auto writeAll = [&](const auto& self, std::size_t k) -> void {
-    if (k < prepared.results.cases.size()) {
-      const std::size_t analysis = prepared.results.cases[k].analysis();
-      const std::string file = casesCsv(prepared.analyses.at(analysis).stem);
-      writeFile(dir / file, [&](std::ostream& out) {
-        emptyLoadCasesTable(file).writeColumnsTo(out);
-        open[analysis] = &out;
-        self(self, k + 1);
-      });
-      return;
-    }
-    prepared.results.write(dir / kResultsJson, [&](const CaseEntries& c, const Json& entry) {
-      CsvTable rows = emptyLoadCasesTable(casesCsv(prepared.analyses.at(c.analysis()).stem));
-      addLoadCaseRows(rows, entry, prepared.units);
-      rows.writeRowsTo(*open.at(c.analysis()));
-    });
-  };
-  writeAll(writeAll, 0);
+  // Each analysis' load cases' table is open while results.json is written and takes each
+  // case's rows as its entry goes by: a table of that case alone.
+  std::map<std::size_t, OutputFile> tables;  // by analysis
+  for (const CaseEntries& c : prepared.results.cases) {
+    const std::string file = casesCsv(prepared.analyses.at(c.analysis()).stem);
+    emptyLoadCasesTable(file).writeColumnsTo(
+        tables.try_emplace(c.analysis(), dir / file).first->second.stream());
+  }
+  prepared.results.write(dir / kResultsJson, [&](const CaseEntries& c, const Json& entry) {
+    CsvTable rows = emptyLoadCasesTable(casesCsv(prepared.analyses.at(c.analysis()).stem));
+    addLoadCaseRows(rows, entry, prepared.units);
+    rows.writeRowsTo(tables.at(c.analysis()).stream());
+  });
+  for (auto& [analysis, table] : tables) table.finish();
 }
 
 PreparedRun prepareRun(const RunResult& run, const OutputChoices& choices) {

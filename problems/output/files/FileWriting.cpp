@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 #include "problems/output/files/Interruption.hpp"
 
@@ -18,23 +19,31 @@ std::string writeFailure(const fs::path& file, int error, const std::string& fal
   return "cannot write " + file.string() + ": " + (error != 0 ? std::strerror(error) : fallback);
 }
 
-void writeFile(const fs::path& file, const std::function<void(std::ostream&)>& write) {
+OutputFile::OutputFile(fs::path file) : file_(std::move(file)) {
   throwIfInterrupted();
   errno = 0;
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error(writeFailure(file, errno, "cannot create it"));
+  out_.open(file_, std::ios::binary | std::ios::trunc);
+  if (!out_) throw std::runtime_error(writeFailure(file_, errno, "cannot create it"));
   errno = 0;
-  write(out);
+}
+
+void OutputFile::finish() {
   // A buffer that filled up was written on the way (its error is the stream's last); the last
   // one reaches the device only here: check after the flush and after the close.
-  int error = out ? 0 : errno;
-  if (out) {
-    out.flush();
-    if (!out) error = errno;
+  int error = out_ ? 0 : errno;
+  if (out_) {
+    out_.flush();
+    if (!out_) error = errno;
   }
-  const bool written = bool(out);
-  out.close();
-  if (!written || !out) throw std::runtime_error(writeFailure(file, error ? error : errno));
+  const bool written = bool(out_);
+  out_.close();
+  if (!written || !out_) throw std::runtime_error(writeFailure(file_, error ? error : errno));
+}
+
+void writeFile(const fs::path& file, const std::function<void(std::ostream&)>& write) {
+  OutputFile out(file);
+  write(out.stream());
+  out.finish();
 }
 
 void writeFileAtomically(const fs::path& file, const std::function<void(std::ostream&)>& write) {

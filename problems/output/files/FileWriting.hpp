@@ -4,15 +4,30 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <ostream>
 #include <string>
 
 namespace beamrotor {
 
-/// Creates (or truncates) `file` and writes it with `write`; throws std::runtime_error
-/// "cannot write FILE: REASON" when it cannot be created or any byte was not written, and
-/// Interrupted (Interruption.hpp) when a deferred signal arrived before it.
+/// A file being written: created (or truncated) when made, written through stream(), closed
+/// and checked by finish(). Throws std::runtime_error "cannot write FILE: REASON" when it
+/// cannot be created (made) or any byte was not written (finish), and Interrupted
+/// (Interruption.hpp) when a deferred signal arrived before it was made. One dropped
+/// unfinished (an exception on the way) is closed unchecked.
+class OutputFile {
+ public:
+  explicit OutputFile(std::filesystem::path file);
+  std::ostream& stream() { return out_; }
+  void finish();
+
+ private:
+  std::filesystem::path file_;
+  std::ofstream out_;
+};
+
+/// Writes `file` with `write` through an OutputFile (the same errors).
 void writeFile(const std::filesystem::path& file, const std::function<void(std::ostream&)>& write);
 
 /// writeFile into a temporary sibling that then replaces `file` in one rename: a reader sees
