@@ -759,4 +759,11 @@ RunUpResult solveRunUp(const Model& model, const SpeedDrive& drive, const RunUpO
   return runUp(model, source, o);
 }
 
+std::optional<std::pair<double, double>> JournalTrack::ownRange(std::size_t k) const {
+  const std::vector<double>& values = own.at(k);
+  if (values.empty()) return std::nullopt;
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  return std::pair{*low, *high};
+}
+
 }  // namespace beamrotor

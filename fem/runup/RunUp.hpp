@@ -21,13 +21,16 @@
 // Journal bearings may act by their film force instead (fem/runup/JournalFilm.hpp): the force
 // at the journal's instantaneous position and velocity and the instantaneous speed, in place of
 // their linear coefficients (a film may own dofs, a tilting pad's tilt: their elements'
-// coefficients are taken out too, and the film acts on them); each implicit step is then solved by Newton's method on the film's
-// exact derivatives (docs/runup.md). Rub stations (fem/runup/RubContact.hpp) add their contact
-// and friction forces the same way, and their friction's torque brakes a driven spin.
+// coefficients are taken out too, and the film acts on them); each implicit step is then
+// solved by Newton's method on the film's exact derivatives (docs/runup.md). Rub stations
+// (fem/runup/RubContact.hpp) add their contact and friction forces the same way, and their
+// friction's torque brakes a driven spin.
 #pragma once
 
 #include <Eigen/Dense>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fem/model/Model.hpp"
@@ -83,6 +86,9 @@ struct JournalTrack {
   /// (BearingFilm::ownDofName) and values at the samples
   std::vector<std::string> ownNames;
   std::vector<std::vector<double>> own;
+
+  /// Own dof k's smallest and largest value over the samples; none without samples.
+  std::optional<std::pair<double, double>> ownRange(std::size_t k) const;
 };
 
 /// A rub station's contact over the run: sampled at RunUpResult::times, summed over every step.

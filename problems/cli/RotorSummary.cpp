@@ -184,12 +184,11 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const CampbellOutco
           std::max({std::abs(k.kyy), std::abs(k.kzz), std::abs(k.kyz), std::abs(k.kzy)});
       const double dampest =
           std::max({std::abs(k.cyy), std::abs(k.czz), std::abs(k.cyz), std::abs(k.czy)});
-      const auto kIn = [&](double v) {
-        return formatValue(zeroAtOrBelow(v, kNegligibleShare * stiffest) * stiffness.factor);
+      const auto in = [](double v, double largest, const OutputUnits::Shown& shown) {
+        return formatValue(zeroAtOrBelow(v, kNegligibleShare * largest) * shown.factor);
       };
-      const auto cIn = [&](double v) {
-        return formatValue(zeroAtOrBelow(v, kNegligibleShare * dampest) * damping.factor);
-      };
+      const auto kIn = [&](double v) { return in(v, stiffest, stiffness); };
+      const auto cIn = [&](double v) { return in(v, dampest, damping); };
       out << "    bearing " << j.name << " (" << j.type << ") at "
           << rpmText(j.speeds[s] * kRpm, units) << ": eccentricity "
           << formatValue(j.eccentricity[s]) << ", kxx " << kIn(k.kyy) << ", kyy " << kIn(k.kzz)
@@ -367,12 +366,10 @@ void printRotor(std::ostream& out, const AnalysisOutcome& a, const RunUpOutcome&
         << ")\n";
     // A tilting-pad film's pads, each tilt's range over the samples.
     if (!j.ownNames.empty()) out << "      pads' tilts over the run:";
-    for (std::size_t k = 0; k < j.ownNames.size(); ++k) {
-      if (j.own[k].empty()) continue;
-      const auto [low, high] = std::minmax_element(j.own[k].begin(), j.own[k].end());
-      out << (k ? ", " : " ") << j.ownNames[k] << " " << valueText(*low, "rad", units) << " to "
-          << valueText(*high, "rad", units);
-    }
+    for (std::size_t k = 0; k < j.ownNames.size(); ++k)
+      if (const auto range = j.ownRange(k))
+        out << (k ? ", " : " ") << j.ownNames[k] << " " << valueText(range->first, "rad", units)
+            << " to " << valueText(range->second, "rad", units);
     if (!j.ownNames.empty()) out << "\n";
   }
   if (!r.filmTorque.empty())

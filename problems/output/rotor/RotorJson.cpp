@@ -378,13 +378,13 @@ Json runUpJson(const std::string& stem, const RunUpOutcome& o) {
   for (const JournalTrack& j : r.journals) {
     // A tilting-pad film's pads: each tilt's range over the samples (rad).
     Json pads = Json::array();
-    for (std::size_t k = 0; k < j.ownNames.size(); ++k) {
-      const std::vector<double>& tilt = j.own[k];
-      if (tilt.empty()) continue;
-      const auto [low, high] = std::minmax_element(tilt.begin(), tilt.end());
-      pads.push_back({{"name", j.ownNames[k]}, {"start", tilt.front()}, {"min", *low},
-                      {"max", *high}, {"end", tilt.back()}});
-    }
+    for (std::size_t k = 0; k < j.ownNames.size(); ++k)
+      if (const auto range = j.ownRange(k))
+        pads.push_back({{"name", j.ownNames[k]},
+                        {"start", j.own[k].front()},
+                        {"min", range->first},
+                        {"max", range->second},
+                        {"end", j.own[k].back()}});
     journals.push_back({{"bearing", j.name},
                         {"clearance", j.clearance},
                         {"start_eccentricity", j.startEccentricity},
