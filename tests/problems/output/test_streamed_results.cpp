@@ -50,13 +50,6 @@ const std::string kPortal =
     "  - {name: wind, factors: {lateral: -1.5, gravity: 1}}\n"
     "analyses: [{type: static}]\n";
 
-std::string fileText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// The message of the std::runtime_error f throws ("" when none).
 template <class F>
 std::string errorOf(const F& f) {
@@ -83,7 +76,7 @@ TEST_CASE("results.json and the cases' table written a case at a time: the whole
 
   // The file parses to the document prepareRunDocument makes whole, but for the names of the
   // VTK files written (only the directory's cases have them), which name files that exist.
-  Json written = Json::parse(fileText(dir / "results.json"));
+  Json written = Json::parse(test::fileContents(dir / "results.json"));
   Json& cases = written.at("analyses").at(0).at("cases");
   REQUIRE(cases.size() == 5);
   int named = 0;
@@ -100,7 +93,7 @@ TEST_CASE("results.json and the cases' table written a case at a time: the whole
 
   // Byte for byte nlohmann's dump of the whole tree (its pretty printing, its numbers).
   const Json whole = wholeResults(prepared);
-  CHECK(fileText(dir / "results.json") ==
+  CHECK(test::fileContents(dir / "results.json") ==
         whole.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
 
   // The load cases' table: the text of the table held whole, in kN and mm, one row a value.
@@ -108,7 +101,7 @@ TEST_CASE("results.json and the cases' table written a case at a time: the whole
   const CsvTable& table = *prepared.analyses.at(0).caseTable;
   std::ostringstream held;
   table.writeTo(held);
-  const std::string streamed = fileText(dir / "static_cases.csv");
+  const std::string streamed = test::fileContents(dir / "static_cases.csv");
   CHECK(streamed == held.str());
   CHECK(streamed.find(",reaction,A,fx,") != std::string::npos);
   CHECK(streamed.find(",kN\n") != std::string::npos);
@@ -157,7 +150,7 @@ TEST_CASE("a NaN in a case's entry: refused as it is written, with the whole tre
     });
   });
   CHECK(streamed == whole);
-  CHECK(fileText(dir / "results.json") == "earlier\n");
+  CHECK(test::fileContents(dir / "results.json") == "earlier\n");
   std::size_t siblings = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.parent_path())) ++siblings;
   CHECK(siblings == 1);  // no temporary directory left
