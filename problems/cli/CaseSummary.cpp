@@ -178,7 +178,7 @@ void printCases(std::ostream& out, const Deck& deck, const RunResult& run,
     else
       printCaseLine(out, *run.model, cases[i], extremes.cases.at(i), units);
   }
-  const CaseEnvelope envelope = caseEnvelope(*run.model, cases, extremes.cases);
+  const CaseEnvelope envelope = caseEnvelope(*run.model, cases, extremes.cases, extremes.canGovern);
   if (!envelope.empty()) printEnvelope(out, deck, run, cases, envelope, units);
 }
 

@@ -308,7 +308,7 @@ Json staticJson(const Model& model, const std::shared_ptr<const DofMap>& dofMap,
     if (std::any_of(casesOf(a).begin(), casesOf(a).end(),
                     [](const CaseOutcome& c) { return c.combination; })) {
       out["envelope"] = envelopeJson(model, dofs, carried, casesOf(a),
-                                     caseEnvelope(model, casesOf(a), extremes.cases));
+                                     caseEnvelope(model, casesOf(a), extremes.cases, extremes.canGovern));
       if (!model.members().empty()) {
         Json files = Json::object();
         for (const auto& [name, elements] : model.members())

@@ -109,15 +109,16 @@ void prepareCases(const Model& model, const AnalysisOutcome& a, PreparedAnalysis
                   bool allCases) {
   const std::vector<CaseOutcome>& cases = casesOf(a);
   if (cases.empty()) return;
-  p.envelope = caseEnvelope(model, cases, p.extremes->cases);
+  p.envelope = caseEnvelope(model, cases, p.extremes->cases, p.extremes->canGovern);
   const bool chords = caseChordDeflections(model, cases.size());
   SolutionPolynomials summed;
   for (int i : writtenCases(*p.envelope, cases.size(), planar, allCases)) {
     const StaticExtremes& x = p.extremes->cases.at(i);
     p.cases.push_back({&cases[i], i, caseVtu(p.stem, i + 1), sampleStatics(cases[i].on(model)), &x,
                        elementPeaks(cases[i].on(model)), std::nullopt});
-    // The same computation as runExtremes', places kept: the same values.
-    if (x.ranges.empty() && !x.rangeValues.empty())
+    // The same computation as runExtremes', places kept: the same values (where it kept the
+    // values alone or, for a combination that cannot govern, none).
+    if (x.ranges.empty() && !model.members().empty())
       p.cases.back().placed = caseExtremes(model, cases[i], summed, chords, RangesKept::withPlaces);
   }
   std::vector<std::string> names;

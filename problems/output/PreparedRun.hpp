@@ -35,7 +35,7 @@ struct PreparedCase {
   const StaticExtremes* extremes = nullptr;  ///< its extremes (PreparedRun::extremes)
   std::vector<ElementPeaks> peaks;  ///< every line element's (elementPeaks), for its VTK file
   /// Its extremes again with the member ranges' places, where runExtremes kept their values
-  /// alone (RangesKept::values): its charts draw them.
+  /// alone or none (RangesKept): its charts draw them.
   std::optional<StaticExtremes> placed;
 
   /// Its extremes with the member ranges' places.

@@ -21,6 +21,7 @@
 #include "fem/assembly/SolutionPolynomials.hpp"
 #include "problems/output/PreparedRun.hpp"
 #include "problems/output/structure/CaseEnvelope.hpp"
+#include "problems/output/structure/CombinationHull.hpp"
 #include "problems/output/structure/LineSampling.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 #include "problems/output/structure/StaticExtremes.hpp"
@@ -145,6 +146,80 @@ const std::string kTwoPeaks =
     "  - {name: F, factors: {falling: 0.98}}\n"
     "  - {name: both, factors: {rising: 0.4, falling: 0.4}}\n"
     "analyses: [{type: static}]\n";
+
+/// The portal under 46 combinations whose curves cross, meet and tie on every element: a
+/// grid of factors (their curves cross), fans dead + w wind and 1.35 dead + h heat (every
+/// curve of a fan passes through the places where the fanned case's resultant is zero: many
+/// curves meeting at one point), the same factors twice (exactly equal curves), and pairs
+/// that differ only in a case that is zero or round-off on an element (the arm is a
+/// cantilever that only the dead load bends, so on it wind and heat add nothing but
+/// round-off).
+std::string crossingDeck() {
+  std::string deck = kCaseList;
+  int count = 0;
+  const auto add = [&](double dead, double wind, double heat) {
+    std::ostringstream line;
+    line.precision(17);
+    line << "  - {name: C" << count++ << ", factors: {dead: " << dead << ", wind: " << wind
+         << ", heat: " << heat << "}}\n";
+    deck += line.str();
+  };
+  for (double dead : {1.0, 1.35})
+    for (double wind : {-1.5, -0.75, 0.0, 0.75, 1.5})
+      for (double heat : {-1.2, 0.0, 0.6}) add(dead, wind, heat);
+  for (double wind : {-1.5, -1.0, -0.5, 0.5, 1.0, 1.5}) add(1, wind, 0);  // a fan
+  for (double heat : {-0.6, 0.3, 1.2}) add(1.35, 0, heat);                 // another
+  add(1, 0.75, 0), add(1.35, -1.5, 0.6), add(1, 0, 0);                      // equal to earlier
+  add(1.35, 1.5, -1.2), add(1.35, 1.5, -1.2);                               // two more of one
+  add(1, 0, 1e-3), add(1, 1e-3, 0);  // equal to 1 dead on the arm but for round-off
+  return frameDeck(deck);
+}
+
+/// Resultant c (kForceComponents order) of `solution` on element e, as the envelope reads it.
+Polynomial resultantOn(const LoadedSolution& solution, int e, std::size_t c) {
+  return componentPolynomial(solution.forceSeries(e), kForceComponents[c]);
+}
+
+/// The largest |value| of resultant c of any of `solutions` on `elements` (101 places each).
+double resultantScale(const std::vector<LoadedSolution>& solutions,
+                      const std::vector<int>& elements, std::size_t c) {
+  double scale = 0;
+  for (int e : elements)
+    for (const LoadedSolution& solution : solutions)
+      for (int j = 0; j <= 100; ++j)
+        scale = std::max(scale, std::abs(valueAt(resultantOn(solution, e, c), j / 100.0)));
+  return scale;
+}
+
+/// Checks that between consecutive stations of an element each side of the envelope `env` of
+/// resultant c is one of `solutions`' polynomials (the one on top at the middle): on a fine
+/// grid none is above (below) it, and it meets the stations' values at the ends, to roundOff.
+void checkOnePolynomialBetween(const std::vector<EnvelopeStation>& env,
+                               const std::vector<LoadedSolution>& solutions, std::size_t c,
+                               double roundOff) {
+  const std::size_t n = solutions.size();
+  for (std::size_t i = 0; i + 1 < env.size(); ++i) {
+    if (env[i].element != env[i + 1].element) continue;
+    const int e = env[i].element;
+    const double a = env[i].s, b = env[i + 1].s, mid = 0.5 * (a + b);
+    for (double sign : {1.0, -1.0}) {
+      std::size_t top = 0;
+      for (std::size_t k = 1; k < n; ++k)
+        if (sign * valueAt(resultantOn(solutions[k], e, c), mid) >
+            sign * valueAt(resultantOn(solutions[top], e, c), mid))
+          top = k;
+      const Polynomial t = resultantOn(solutions[top], e, c);
+      CHECK(std::abs(valueAt(t, a) - (sign > 0 ? env[i].max[c] : env[i].min[c])) <= roundOff);
+      CHECK(std::abs(valueAt(t, b) - (sign > 0 ? env[i + 1].max[c] : env[i + 1].min[c])) <=
+            roundOff);
+      for (int j = 0; j <= 50; ++j) {
+        const double x = a + (b - a) * j / 50;
+        for (std::size_t k = 0; k < n; ++k)
+          CHECK(sign * valueAt(resultantOn(solutions[k], e, c), x) <= sign * valueAt(t, x) + roundOff);
+      }
+    }
+  }
+}
 
 }  // namespace combination_polynomials
 
@@ -397,9 +472,18 @@ TEST_SUITE("load cases") {
       CHECK(got[k].largestDisplacement.element == one.largestDisplacement.element);
     }
     // The envelope of each member, computed whole by one part, against memberEnvelope alone.
+    // Over the combinations that can govern, named by their index among all combinations.
     std::vector<LoadedSolution> combinations;
-    for (const CaseOutcome& c : cases)
-      if (c.combination) combinations.push_back(c.on(model));
+    std::vector<int> named;
+    for (std::size_t k = 0, index = 0; k < cases.size(); ++k)
+      if (cases[k].combination) {
+        if (split.front().canGovern.at(k)) {
+          combinations.push_back(cases[k].on(model));
+          named.push_back(int(index));
+        }
+        ++index;
+      }
+    CHECK(combinations.size() < 300);
     const std::vector<std::vector<EnvelopeStation>>& stations =
         prepared.analyses.front().envelopeStations;
     REQUIRE(stations.size() == model.members().size());
@@ -411,8 +495,10 @@ TEST_SUITE("load cases") {
         CHECK(stations[m][i].s == one[i].s);
         CHECK(stations[m][i].max == one[i].max);
         CHECK(stations[m][i].min == one[i].min);
-        CHECK(stations[m][i].maxBy == one[i].maxBy);
-        CHECK(stations[m][i].minBy == one[i].minBy);
+        for (int f = 0; f < 6; ++f) {
+          CHECK(stations[m][i].maxBy[f] == named.at(std::size_t(one[i].maxBy[f])));
+          CHECK(stations[m][i].minBy[f] == named.at(std::size_t(one[i].minBy[f])));
+        }
       }
     }
   }
@@ -448,7 +534,9 @@ TEST_SUITE("load cases") {
           CHECK(std::abs(v.min - direct[f].min.value) <= 1e-9 * scale);
         }
       }
-    const CaseEnvelope a = caseEnvelope(model, cases, placed), b = caseEnvelope(model, cases, values);
+    const std::vector<bool> canGovern = combinationsThatCanGovern(cases);
+    const CaseEnvelope a = caseEnvelope(model, cases, placed, canGovern),
+                       b = caseEnvelope(model, cases, values, canGovern);
     REQUIRE(a.members.size() == b.members.size());
     for (std::size_t m = 0; m < a.members.size(); ++m)
       for (std::size_t f = 0; f < 6; ++f) {
@@ -501,33 +589,9 @@ TEST_SUITE("load cases") {
     }
   }
   TEST_CASE("the envelope of many crossing and equal combinations: the bits of every one evaluated") {
-    // The portal under 47 combinations whose curves cross, meet and tie on every element: a
-    // grid of factors (their curves cross), fans dead + w wind and 1.35 dead + h heat (every
-    // curve of a fan passes through the places where the fanned case's resultant is zero: many
-    // curves meeting at one point), the same factors twice (exactly equal curves), and pairs
-    // that differ only in a case that is zero or round-off on an element (the arm is a
-    // cantilever that only the dead load bends, so on it wind and heat add nothing but
-    // round-off). The envelope skips candidates by bounds; the bits must be those of every
-    // combination evaluated at its places.
-    std::string deck = kCaseList;
-    int count = 0;
-    const auto add = [&](double dead, double wind, double heat) {
-      std::ostringstream line;
-      line.precision(17);
-      line << "  - {name: C" << count++ << ", factors: {dead: " << dead << ", wind: " << wind
-           << ", heat: " << heat << "}}\n";
-      deck += line.str();
-    };
-    for (double dead : {1.0, 1.35})
-      for (double wind : {-1.5, -0.75, 0.0, 0.75, 1.5})
-        for (double heat : {-1.2, 0.0, 0.6}) add(dead, wind, heat);
-    for (double wind : {-1.5, -1.0, -0.5, 0.5, 1.0, 1.5}) add(1, wind, 0);  // a fan
-    for (double heat : {-0.6, 0.3, 1.2}) add(1.35, 0, heat);                 // another
-    add(1, 0.75, 0), add(1.35, -1.5, 0.6), add(1, 0, 0);                      // equal to earlier
-    add(1.35, 1.5, -1.2), add(1.35, 1.5, -1.2);                               // two more of one
-    add(1, 0, 1e-3), add(1, 1e-3, 0);  // equal to 1 dead on the arm but for round-off
-    REQUIRE(count == 46);
-    const Study s = test::solveDeckText(frameDeck(deck), "frame_crossing.yaml");
+    // The envelope skips candidates by bounds; the bits must be those of every combination
+    // evaluated at its places (crossingDeck).
+    const Study s = test::solveDeckText(crossingDeck(), "frame_crossing.yaml");
     const Model& model = *s.run->model;
     std::vector<LoadedSolution> combinations;
     for (const CaseOutcome& c : casesOf(s.run->analyses.front()))
@@ -552,24 +616,14 @@ TEST_SUITE("load cases") {
         CHECK(env[i].minBy == without[i].minBy);
       }
       for (std::size_t c = 0; c < 6; ++c) {
-        // Every combination's polynomial of this resultant on each element, as the envelope
-        // reads it, and the largest |value| of any on the member for the tolerances.
-        const auto polynomialOf = [&](std::size_t k, int e) {
-          return componentPolynomial(combinations[k].forceSeries(e), kForceComponents[c]);
-        };
-        double scale = 0;
-        for (int e : elements)
-          for (std::size_t k = 0; k < n; ++k)
-            for (int j = 0; j <= 100; ++j)
-              scale = std::max(scale, std::abs(valueAt(polynomialOf(k, e), j / 100.0)));
-        const double roundOff = 1e-12 * scale;
+        const double roundOff = 1e-12 * resultantScale(combinations, elements, c);
         // 1. At each station: the largest and smallest of every combination evaluated there,
         //    to the bit, and the first combination giving each (the first of equal values).
         for (const EnvelopeStation& st : env) {
           int hiBy = 0, loBy = 0, equal = 0;
-          double hi = valueAt(polynomialOf(0, st.element), st.s), lo = hi;
+          double hi = valueAt(resultantOn(combinations[0], st.element, c), st.s), lo = hi;
           for (std::size_t k = 1; k < n; ++k) {
-            const double v = valueAt(polynomialOf(k, st.element), st.s);
+            const double v = valueAt(resultantOn(combinations[k], st.element, c), st.s);
             if (v == hi) ++equal;
             if (v > hi) hi = v, hiBy = int(k), equal = 0;
             if (v < lo) lo = v, loBy = int(k);
@@ -580,32 +634,101 @@ TEST_SUITE("load cases") {
           CHECK(st.min[c] == lo);
           CHECK(st.minBy[c] == loBy);
         }
-        // 2. Between consecutive stations of an element the envelope is one combination's
-        //    polynomial (the one on top at the middle): on a fine grid no combination is above
-        //    (below) it, and it meets the stations' values at the ends.
-        for (std::size_t i = 0; i + 1 < env.size(); ++i) {
-          if (env[i].element != env[i + 1].element) continue;
-          const int e = env[i].element;
-          const double a = env[i].s, b = env[i + 1].s, mid = 0.5 * (a + b);
-          for (double sign : {1.0, -1.0}) {
-            std::size_t top = 0;
-            for (std::size_t k = 1; k < n; ++k)
-              if (sign * valueAt(polynomialOf(k, e), mid) > sign * valueAt(polynomialOf(top, e), mid))
-                top = k;
-            const Polynomial t = polynomialOf(top, e);
-            CHECK(std::abs(valueAt(t, a) - (sign > 0 ? env[i].max[c] : env[i].min[c])) <= roundOff);
-            CHECK(std::abs(valueAt(t, b) - (sign > 0 ? env[i + 1].max[c] : env[i + 1].min[c])) <=
-                  roundOff);
-            for (int j = 0; j <= 50; ++j) {
-              const double x = a + (b - a) * j / 50;
-              for (std::size_t k = 0; k < n; ++k)
-                CHECK(sign * valueAt(polynomialOf(k, e), x) <= sign * valueAt(t, x) + roundOff);
-            }
-          }
-        }
+        // 2. Between consecutive stations, one combination's polynomial.
+        checkOnePolynomialBetween(env, combinations, c, roundOff);
       }
     }
     CHECK(stations >= 80);  // 83 when written
     CHECK(ties >= 200);     // exactly equal largest values at a station (307 when written)
+  }
+
+  TEST_CASE("the envelope over the combinations that can govern: every combination evaluated") {
+    // What a run computes: the envelope along the members, its extremes, the reactions' and
+    // the largest displacement's and stress's, over the combinations whose factors are corners
+    // of all combinations' (CombinationHull.hpp). Against every combination evaluated: at each
+    // station the largest (smallest) of all 46 equals the envelope's to round-off, the
+    // combination named gives the envelope's value there to the bit and is a corner, and
+    // between stations each side is one combination's polynomial, of all 46.
+    const Study s = test::solveDeckText(crossingDeck(), "frame_corners.yaml");
+    const RunResult& run = *s.run;
+    const Model& model = *run.model;
+    const std::vector<CaseOutcome>& cases = casesOf(run.analyses.front());
+    const std::vector<AnalysisExtremes> extremes = runExtremes(run, MemberEnvelopes::computed);
+    const AnalysisExtremes& x = extremes.front();
+    // The factors' corners (dead, wind, heat): the grid's box [1, 1.35] x [-1.5, 1.5] x
+    // [-1.2, 0.6] has 8 (combinations 0, 2, 12, 14, 15, 17, 27, 29); the second fan's
+    // (1.35, 0, 1.2), combination 38, lies outside it and is a ninth. Every other combination
+    // is inside the hull, on a face or edge of it, or repeats an earlier one.
+    std::vector<std::size_t> corners;  // index among the combinations
+    std::vector<LoadedSolution> all;
+    for (std::size_t k = 0, index = 0; k < cases.size(); ++k) {
+      if (!cases[k].combination) {
+        CHECK_FALSE(x.canGovern.at(k));
+        continue;
+      }
+      if (x.canGovern.at(k)) corners.push_back(index);
+      all.push_back(cases[k].on(model));
+      ++index;
+    }
+    CHECK(corners == std::vector<std::size_t>{0, 2, 12, 14, 15, 17, 27, 29, 38});
+    const std::vector<bool> isCorner = [&] {
+      std::vector<bool> out(all.size(), false);
+      for (std::size_t k : corners) out[k] = true;
+      return out;
+    }();
+    REQUIRE(x.memberEnvelopes.size() == model.members().size());
+    for (std::size_t m = 0; m < model.members().size(); ++m) {
+      const std::vector<int>& elements = model.members()[m].second;
+      const std::vector<EnvelopeStation>& env = x.memberEnvelopes[m];
+      CAPTURE(model.members()[m].first);
+      for (std::size_t c = 0; c < 6; ++c) {
+        const double roundOff = 1e-12 * resultantScale(all, elements, c);
+        double largest = -1e300, smallest = 1e300;  // along the member, over all 46
+        for (const EnvelopeStation& st : env) {
+          double hi = -1e300, lo = 1e300;
+          for (const LoadedSolution& k : all) {
+            const double v = valueAt(resultantOn(k, st.element, c), st.s);
+            hi = std::max(hi, v), lo = std::min(lo, v);
+          }
+          largest = std::max(largest, hi), smallest = std::min(smallest, lo);
+          CHECK(std::abs(st.max[c] - hi) <= roundOff);
+          CHECK(std::abs(st.min[c] - lo) <= roundOff);
+          REQUIRE(isCorner.at(std::size_t(st.maxBy[c])));
+          REQUIRE(isCorner.at(std::size_t(st.minBy[c])));
+          CHECK(valueAt(resultantOn(all[std::size_t(st.maxBy[c])], st.element, c), st.s) == st.max[c]);
+          CHECK(valueAt(resultantOn(all[std::size_t(st.minBy[c])], st.element, c), st.s) == st.min[c]);
+        }
+        checkOnePolynomialBetween(env, all, c, roundOff);
+        // The member's extremes over the corners (envelope.members) against every
+        // combination's own range along it (memberForceRanges).
+        const CaseEnvelope envelope = caseEnvelope(model, cases, x.cases, x.canGovern);
+        double hi = -1e300, lo = 1e300;
+        for (const LoadedSolution& k : all) {
+          const auto r = memberForceRanges(k, elements);
+          hi = std::max(hi, r[c].max.value), lo = std::min(lo, r[c].min.value);
+        }
+        CHECK(std::abs(envelope.members.at(m)[c].max.value - hi) <= roundOff);
+        CHECK(std::abs(envelope.members.at(m)[c].min.value - lo) <= roundOff);
+        CHECK(std::abs(largest - hi) <= roundOff);
+        CHECK(std::abs(smallest - lo) <= roundOff);
+      }
+    }
+    // Reactions, the largest displacement and stress: the corners' largest are all's.
+    const CaseEnvelope envelope = caseEnvelope(model, cases, x.cases, x.canGovern);
+    for (std::size_t r = 0; r < envelope.reactions.size(); ++r) {
+      double hi = -1e300, lo = 1e300, scale = 0;
+      for (const CaseOutcome& c : cases)
+        if (c.combination) {
+          const double v = c.statics.reactions.at(r).value;
+          hi = std::max(hi, v), lo = std::min(lo, v), scale = std::max(scale, std::abs(v));
+        }
+      CHECK(std::abs(envelope.reactions[r].second.max.value - hi) <= 1e-12 * scale);
+      CHECK(std::abs(envelope.reactions[r].second.min.value - lo) <= 1e-12 * scale);
+    }
+    double displacement = 0;
+    for (std::size_t k = 0; k < cases.size(); ++k)
+      if (cases[k].combination)
+        displacement = std::max(displacement, x.cases[k].largestDisplacement.value);
+    CHECK(std::abs(envelope.largestDisplacement.value - displacement) <= 1e-12 * displacement);
   }
 }

@@ -33,13 +33,14 @@ void widen(std::vector<std::pair<ReactionComponent, GovernedRange>>& envelope,
 }  // namespace
 
 CaseEnvelope caseEnvelope(const Model& model, const std::vector<CaseOutcome>& cases,
-                          const std::vector<StaticExtremes>& extremes) {
-  if (extremes.size() != cases.size())
+                          const std::vector<StaticExtremes>& extremes,
+                          const std::vector<bool>& canGovern) {
+  if (extremes.size() != cases.size() || canGovern.size() != cases.size())
     throw std::invalid_argument("caseEnvelope needs the extremes of every case");
   CaseEnvelope out;
   for (int k = 0; k < int(cases.size()); ++k) {
     const CaseOutcome& c = cases[k];
-    if (!c.combination) continue;
+    if (!c.combination || !canGovern[std::size_t(k)]) continue;
     const StaticExtremes& x = extremes[k];
     widen(out.reactions, c.statics.reactions, k);
     widen(out.springs, c.statics.elementForces, k);

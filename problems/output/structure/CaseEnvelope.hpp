@@ -1,7 +1,8 @@
 // The envelope of a static analysis' load combinations, computed once for results.json, the
 // summary and the charts: for every reaction component, spring force, member resultant, the largest
 // displacement and the largest normal stress, the largest and smallest value over the
-// combinations and the combination that gives each. From each combination's own extremes
+// combinations and the combination that gives each (of those that can govern,
+// CombinationHull.hpp). From each combination's own extremes
 // (StaticExtremes: exact along the members, not sampled).
 #pragma once
 
@@ -40,10 +41,12 @@ struct CaseEnvelope {
   bool empty() const { return largestStress.by < 0 && largestDisplacement.by < 0; }
 };
 
-/// The envelope over the combinations among `cases` (their extremes[i] alongside); empty when
-/// there are none.
+/// The envelope over the combinations among `cases` (their extremes[i] alongside) that can
+/// govern (canGovern[i], combinationsThatCanGovern: the others never exceed them); empty when
+/// there are none. Of equal values, the first combination's governs.
 CaseEnvelope caseEnvelope(const Model& model, const std::vector<CaseOutcome>& cases,
-                          const std::vector<StaticExtremes>& extremes);
+                          const std::vector<StaticExtremes>& extremes,
+                          const std::vector<bool>& canGovern);
 
 /// The combinations (indices into `cases`) a designer checks first, each once, in case order:
 /// those that govern the largest displacement, the largest normal stress, and the largest and

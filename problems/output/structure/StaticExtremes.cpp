@@ -5,6 +5,7 @@
 
 #include "fem/assembly/ParallelParts.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
+#include "problems/output/structure/CombinationHull.hpp"
 #include "problems/output/structure/MemberOutput.hpp"
 
 namespace beamrotor {
@@ -19,12 +20,12 @@ StaticExtremes staticExtremes(const LoadedSolution& solution, PeaksKept kept,
     out.ranges.reserve(members);
   else if (ranges == RangesKept::values)
     out.rangeValues.reserve(members);
-  else
+  else if (ranges == RangesKept::byEnvelope)
     out.rangeValues.resize(members);  // filled by the envelope's pass (runExtremes)
   if (chordDeflections) out.chordDeflections.reserve(members);
   for (const auto& [name, elements] : solution.model->members()) {
     if (chordDeflections) out.chordDeflections.push_back(largestChordDeflection(solution, elements));
-    if (ranges == RangesKept::byEnvelope) continue;
+    if (ranges == RangesKept::byEnvelope || ranges == RangesKept::none) continue;
     const std::array<ComponentRange, 6> r = memberForceRanges(solution, elements);
     if (ranges == RangesKept::withPlaces) {
       out.ranges.push_back(r);
@@ -60,19 +61,27 @@ StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPo
 
 namespace {
 
-/// The envelope along each member of `model` over the combinations among `cases` into
-/// x.memberEnvelopes; where `fillRanges`, each combination's member ranges (left to it,
-/// RangesKept::byEnvelope) from the same pass. Each member is computed whole by one part (its
-/// own range of members), so the results are the same to the bit however many parts run.
+/// The envelope along each member of `model` over the combinations among `cases` that can
+/// govern (x.canGovern) into x.memberEnvelopes, each station naming its combinations by their
+/// index among all the combinations; where `fillRanges`, those combinations' member ranges
+/// (left to it, RangesKept::byEnvelope) from the same pass. Each member is computed whole by
+/// one part (its own range of members), so the results are the same to the bit however many
+/// parts run.
 void memberEnvelopes(const Model& model, const std::vector<CaseOutcome>& cases,
                      AnalysisExtremes& x, bool fillRanges) {
   std::vector<LoadedSolution> combinations;
-  std::vector<std::size_t> caseOf;  // each combination's index into cases
-  for (std::size_t k = 0; k < cases.size(); ++k)
-    if (cases[k].combination) {
+  std::vector<std::size_t> caseOf;  // each one's index into cases
+  std::vector<int> named;           // each one's index among all the combinations
+  int combination = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    if (!cases[k].combination) continue;
+    if (x.canGovern.at(k)) {
       combinations.push_back(cases[k].on(model));
       caseOf.push_back(k);
+      named.push_back(combination);
     }
+    ++combination;
+  }
   if (combinations.empty()) return;
   const auto& members = model.members();
   x.memberEnvelopes.resize(members.size());
@@ -83,6 +92,11 @@ void memberEnvelopes(const Model& model, const std::vector<CaseOutcome>& cases,
     for (int m = bounds[part]; m < bounds[part + 1]; ++m) {
       x.memberEnvelopes[m] = memberEnvelope(combinations, members[m].second, kIntervalsPerElement,
                                             fillRanges ? &ranges : nullptr);
+      for (EnvelopeStation& station : x.memberEnvelopes[m])
+        for (std::size_t f = 0; f < kForceComponents.size(); ++f) {
+          station.maxBy[f] = named[std::size_t(station.maxBy[f])];
+          station.minBy[f] = named[std::size_t(station.minBy[f])];
+        }
       if (fillRanges)
         for (std::size_t k = 0; k < combinations.size(); ++k)
           x.cases[caseOf[k]].rangeValues[m] = ranges[k];
@@ -103,10 +117,14 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run, MemberEnvelopes 
     // The member ranges' places are reported with the chord deflections (results.json's
     // member detail, the summary's cases in full); elsewhere the envelope reads their values,
     // and a combination's come from the envelope's own pass when it is computed.
+    // A combination that cannot govern keeps no member ranges where none are reported.
     const bool envelope = envelopes == MemberEnvelopes::computed;
-    const auto kept = [&](const CaseOutcome& c) {
+    out[i].canGovern = combinationsThatCanGovern(cases);
+    const auto kept = [&](std::size_t k) {
       if (chords) return RangesKept::withPlaces;
-      return envelope && c.combination ? RangesKept::byEnvelope : RangesKept::values;
+      if (!cases[k].combination) return RangesKept::values;
+      if (!out[i].canGovern[k]) return RangesKept::none;
+      return envelope ? RangesKept::byEnvelope : RangesKept::values;
     };
     // Each case's extremes are computed whole by one part (its own range of cases, in order),
     // so they are the same to the bit however many parts run.
@@ -116,7 +134,7 @@ std::vector<AnalysisExtremes> runExtremes(const RunResult& run, MemberEnvelopes 
     runParts(int(bounds.size()) - 1, [&](int part) {
       SolutionPolynomials summed;  // one combination's at a time, its storage reused
       for (int k = bounds[part]; k < bounds[part + 1]; ++k)
-        out[i].cases[k] = caseExtremes(*run.model, cases[k], summed, chords, kept(cases[k]));
+        out[i].cases[k] = caseExtremes(*run.model, cases[k], summed, chords, kept(std::size_t(k)));
     });
     if (envelope) memberEnvelopes(*run.model, cases, out[i], !chords);
   }

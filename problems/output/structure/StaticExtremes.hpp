@@ -40,8 +40,9 @@ enum class PeaksKept { everyElement, canGovern };
 /// Whether staticExtremes keeps each member range's place (element, position, point) or only
 /// its values (the envelope over the combinations reads no more), or leaves the values to the
 /// envelope along the members (byEnvelope: rangeValues one per member, filled by
-/// memberEnvelope's pass over each element's combinations, which ranges them anyway).
-enum class RangesKept { withPlaces, values, byEnvelope };
+/// memberEnvelope's pass over each element's combinations, which ranges them anyway), or keeps
+/// none (a combination that cannot govern the envelope, where no member detail is reported).
+enum class RangesKept { withPlaces, values, byEnvelope, none };
 
 /// The extremes of `solution`; the member parts and the largest displacement left empty for
 /// a model without members (a line), the chord deflections without `chordDeflections`.
@@ -69,8 +70,12 @@ StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPo
 struct AnalysisExtremes {
   std::optional<StaticExtremes> own;
   std::vector<StaticExtremes> cases;
+  /// Per case: whether it is a combination that can govern the envelope
+  /// (combinationsThatCanGovern); the envelope is taken over those alone.
+  std::vector<bool> canGovern;
   /// With MemberEnvelopes::computed and combinations on a frame: the envelope along each
-  /// member over the combinations (memberEnvelope, Model::members() order).
+  /// member over the combinations that can govern (memberEnvelope, Model::members() order;
+  /// each station's maxBy and minBy index the analysis' combinations, in order).
   std::vector<std::vector<EnvelopeStation>> memberEnvelopes;
 };
 
