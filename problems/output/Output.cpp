@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "problems/deck/parse/Suggest.hpp"
 #include "problems/output/ChartCaption.hpp"
 #include "problems/output/files/AtomicDirectory.hpp"
@@ -161,10 +162,10 @@ void writeModalFiles(const PreparedRun& prepared, const PreparedAnalysis& p, con
                                   modal.modes, titles, run.dimension == "planar", prepared.units));
 }
 
-void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
+/// Each analysis' own files (tables, VTK, charts handed to this thread's batch).
+void writeAnalysisFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
   const RunResult& run = *prepared.run;
   const Model& model = *run.model;
-  writeResultsAndCaseTables(prepared, dir);
   for (const PreparedAnalysis& p : prepared.analyses) {
     const AnalysisOutcome& a = *p.outcome;
     std::visit(
@@ -218,6 +219,24 @@ void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts
             }},
         a.result);
   }
+}
+
+/// Every file of a run but its charts' images. results.json with the load cases' tables (the
+/// largest file of a run with many combinations: numbers formatted one by one) is written on
+/// a second core while this thread writes the analyses' own files; the files are distinct, so
+/// their bytes are those of one after the other.
+void writeRunFiles(const PreparedRun& prepared, const fs::path& dir, bool charts) {
+  if (usableCores() < 2) {
+    writeResultsAndCaseTables(prepared, dir);
+    writeAnalysisFiles(prepared, dir, charts);
+    return;
+  }
+  runParts(2, [&](int part) {
+    if (part == 0)
+      writeResultsAndCaseTables(prepared, dir);
+    else
+      writeAnalysisFiles(prepared, dir, charts);  // the caller's thread: its chart batch
+  });
 }
 
 }  // namespace
