@@ -4,10 +4,12 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "fem/assembly/Polynomial.hpp"
 #include "fem/assembly/Recovery.hpp"
+#include "fem/assembly/SolutionPolynomials.hpp"
 #include "fem/model/ShearStress.hpp"
 
 namespace beamrotor {
@@ -230,23 +232,16 @@ std::vector<ElementPeaks> elementPeaks(const LoadedSolution& solution) {
 
 namespace {
 
-/// Upper bounds of an element's three peaks over the whole element: with |N|, |My|, |Mz|, |Vy|,
-/// |Vz| at most their Bernstein bounds (boundOnUnitInterval) and every fibre within (|y| + r,
-/// |z| + r) of the axis, |sigma| <= |N| / A + |Mz| / Iz max(|y| + r) + |My| / Iy max(|z| + r)
-/// (fibreSupport is at most |dy| (|y| + r) + |dz| (|z| + r)); the shear stress as
-/// maxShearStress of the bounds (it grows with |Vy| and |Vz|); the moment hypot of the bounds.
-/// The values elementPeaks computes carry round-off of a few eps of these (a cubic's Horner
-/// value errs by at most 6 eps sum |a_k| <= 6 eps 27 max |b_i|), far below the 1e-9 margin the
-/// caller adds. NaN (never below anything) for a section without fibres, whose stress is NaN.
-std::array<double, 3> elementBounds(const Section& section, const SectionForceSeries& forces) {
-  const auto bound = [&](double SectionForces::*f) {
-    Polynomial p;
-    for (const SectionForces& c : forces.c) p.push_back(c.*f);
-    return boundOnUnitInterval(p);
-  };
-  const double N = bound(&SectionForces::N), Vy = bound(&SectionForces::Vy),
-               Vz = bound(&SectionForces::Vz), My = bound(&SectionForces::My),
-               Mz = bound(&SectionForces::Mz);
+/// Upper bounds of an element's three peaks over the whole element from upper bounds of its
+/// |N|, |Vy|, |Vz|, |My|, |Mz| along it (`bounds`: ElementBounds::forces): with every fibre
+/// within (|y| + r, |z| + r) of the axis, |sigma| <= |N| / A + |Mz| / Iz max(|y| + r) + |My| /
+/// Iy max(|z| + r) (fibreSupport is at most |dy| (|y| + r) + |dz| (|z| + r)); the shear stress
+/// as maxShearStress of the bounds (it grows with |Vy| and |Vz|); the moment hypot of the
+/// bounds. The values elementPeaks computes carry round-off of a few eps of these (a cubic's
+/// Horner value errs by at most 6 eps sum |a_k| <= 6 eps 27 max |b_i|), far below the 1e-9
+/// margin the caller adds. NaN (never below anything) for a section without fibres, whose
+/// stress is NaN.
+std::array<double, 3> elementBounds(const Section& section, const SectionForces& bounds) {
   double stress = std::numeric_limits<double>::quiet_NaN();
   if (!section.fibres.empty()) {
     double y = 0, z = 0;
@@ -254,48 +249,71 @@ std::array<double, 3> elementBounds(const Section& section, const SectionForceSe
       y = std::max(y, std::abs(fibre.y) + fibre.radius);
       z = std::max(z, std::abs(fibre.z) + fibre.radius);
     }
-    stress = N / section.A + Mz / section.Iz * y + My / section.Iy * z;
+    stress = bounds.N / section.A + bounds.Mz / section.Iz * y + bounds.My / section.Iy * z;
   }
-  return {stress, maxShearStress(section, SectionForces{.Vy = Vy, .Vz = Vz}), std::hypot(My, Mz)};
+  return {stress, maxShearStress(section, SectionForces{.Vy = bounds.Vy, .Vz = bounds.Vz}),
+          std::hypot(bounds.My, bounds.Mz)};
 }
 
-/// An element's three kinds at one place, as elementPeaks evaluates them.
-std::array<double, 3> valuesAt(const Section& section, const SectionForceSeries& forces, double s) {
-  const SectionForces f = forces.at(s);
-  return {maxNormalStress(section, f), maxShearStress(section, f), std::hypot(f.My, f.Mz)};
-}
+/// The three kinds, in the order of elementBounds.
+constexpr BeamPeak ElementPeaks::*kKinds[3] = {&ElementPeaks::stress, &ElementPeaks::shear,
+                                               &ElementPeaks::moment};
+
+/// How many elements of each kind, those of the largest bounds, give the values the others'
+/// bounds are compared with: their peaks are computed first.
+constexpr std::size_t kSeedElements = 4;
 
 }  // namespace
 
 std::vector<ElementPeaks> peaksThatCanGovern(const LoadedSolution& solution) {
   const auto& elements = solution.model->elements();
-  // 1. Each element's bounds, and of each kind the largest value at an element end: every
-  //    element's peak is at least its end values (the ends are among its candidate places), so
-  //    the largest peak of a kind is at least that seed.
+  // 1. Each line element's bounds of the three kinds: from the solution's polynomials' bounds
+  //    when it carries them (of a combination, its cases' weighted: no sum formed), else from
+  //    its resultants.
+  std::vector<int> lines;
   std::vector<std::array<double, 3>> bounds(elements.size());
+  for (int i = 0; i < int(elements.size()); ++i) {
+    const LineElement* line = asLine(elements[i]);
+    if (!line) continue;
+    lines.push_back(i);
+    bounds[i] = elementBounds(line->section(), solution.polynomials
+                                                   ? solution.polynomials->bounds(i).forces
+                                                   : resultantBounds(solution.forceSeries(i)));
+  }
+  // 2. The peaks of the few elements of each kind's largest bounds (a bound that is not a
+  //    number first): the largest peak of a kind is at least theirs, the seed.
+  std::vector<std::optional<ElementPeaks>> peaks(elements.size());
+  const auto peaksOf = [&](int i) -> const ElementPeaks& {
+    if (!peaks[i]) {
+      peaks[i] = elementPeaks(*asLine(elements[i]), solution.forceSeries(i));
+      peaks[i]->stress.element = peaks[i]->shear.element = peaks[i]->moment.element = i;
+    }
+    return *peaks[i];
+  };
   std::array<double, 3> seed;
   seed.fill(-std::numeric_limits<double>::infinity());
-  for (int i = 0; i < int(elements.size()); ++i) {
-    const LineElement* line = asLine(elements[i]);
-    if (!line) continue;
-    const SectionForceSeries forces = solution.forceSeries(i);
-    bounds[i] = elementBounds(line->section(), forces);
-    for (double s : {0.0, 1.0}) {
-      const std::array<double, 3> v = valuesAt(line->section(), forces, s);
-      for (int k = 0; k < 3; ++k) seed[k] = std::max(seed[k], v[k]);
+  for (int k = 0; k < 3; ++k) {
+    const auto key = [&](int i) {
+      return std::isnan(bounds[i][k]) ? std::numeric_limits<double>::infinity() : bounds[i][k];
+    };
+    std::vector<int> first = lines;
+    const std::size_t count = std::min(kSeedElements, first.size());
+    std::partial_sort(first.begin(), first.begin() + std::ptrdiff_t(count), first.end(),
+                      [&](int a, int b) { return key(a) > key(b); });
+    for (std::size_t j = 0; j < count; ++j) {
+      const ElementPeaks& p = peaksOf(first[j]);
+      for (int m = 0; m < 3; ++m) {
+        const double v = (p.*kKinds[m]).value;
+        if (v > seed[m]) seed[m] = v;
+      }
     }
   }
-  // 2. The peaks of every element that some kind's bound does not keep below its seed.
+  // 3. The peaks of every element that some kind's bound does not keep below its seed.
   std::vector<ElementPeaks> out;
-  for (int i = 0; i < int(elements.size()); ++i) {
-    const LineElement* line = asLine(elements[i]);
-    if (!line) continue;
+  for (int i : lines) {
     bool below = true;
     for (int k = 0; k < 3; ++k) below = below && bounds[i][k] * (1 + 1e-9) < seed[k];
-    if (below) continue;
-    ElementPeaks p = elementPeaks(*line, solution.forceSeries(i));
-    p.stress.element = p.shear.element = p.moment.element = i;
-    out.push_back(p);
+    if (!below) out.push_back(peaksOf(i));
   }
   return out;
 }

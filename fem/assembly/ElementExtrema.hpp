@@ -40,8 +40,9 @@ std::vector<ElementPeaks> elementPeaks(const LoadedSolution& solution);
 /// stress, shear stress or moment, in element order (a load case's or combination's, whose
 /// only the largest is reported; elementPeaks for every element's). An element is left out
 /// when an upper bound of each of its three kinds over the element (from its resultants'
-/// Bernstein bounds, elementBounds in the .cpp) is below a value that kind reaches at some
-/// element's end: its own peaks are then strictly smaller than the largest, so largestPeak of
+/// Bernstein bounds, elementBounds in the .cpp; of a combination, its cases' weighted) is
+/// below the peak of that kind of one of the few elements with the largest bounds: its own
+/// peaks are then strictly smaller than the largest, so largestPeak of
 /// every kind over these is the same BeamPeak, to the bit, as over every element's, first of
 /// equal values and NaN included (an element with a value that is not finite has no finite
 /// bound and is kept).

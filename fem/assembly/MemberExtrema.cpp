@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "fem/assembly/ElementExtrema.hpp"
 #include "fem/assembly/Polynomial.hpp"
 #include "fem/assembly/Recovery.hpp"
+#include "fem/assembly/SolutionPolynomials.hpp"
 
 namespace beamrotor {
 
@@ -203,14 +205,24 @@ MemberValue largestDisplacement(const LoadedSolution& solution) {
   for (int e = 0; e < int(model.elements().size()); ++e) {
     const LineElement* line = asLine(model.elements()[e]);
     if (!line) continue;
-    const std::array<Polynomial, 3> u = solution.translationSeries(e);
     // An element whose translations' Bernstein bounds stay below the largest so far (with a
-    // margin far above their round-off) cannot hold a larger one: skipped.
+    // margin far above their round-off) cannot hold a larger one: skipped. The bounds of the
+    // solution's polynomials when it carries them (of a combination, its cases' weighted: its
+    // translations are then summed only where needed).
+    std::optional<std::array<Polynomial, 3>> u;
+    std::array<double, 3> bounds;
+    if (solution.polynomials) {
+      bounds = solution.polynomials->bounds(e).translations;
+    } else {
+      u = solution.translationSeries(e);
+      for (int c = 0; c < 3; ++c) bounds[c] = boundOnUnitInterval((*u)[c]);
+    }
     double boundSquared = 0;
-    for (int c = 0; c < 3; ++c) boundSquared += std::pow(boundOnUnitInterval(u[c]), 2);
+    for (int c = 0; c < 3; ++c) boundSquared += std::pow(bounds[c], 2);
     if (std::sqrt(boundSquared) * (1 + 1e-9) < best.value) continue;
+    if (!u) u = solution.translationSeries(e);
     Polynomial squared;
-    for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf(u[c], u[c]));
+    for (int c = 0; c < 3; ++c) squared = combination(1, squared, 1, productOf((*u)[c], (*u)[c]));
     const auto [s, value] = largestRoot(squared);
     if (std::isnan(value) || value > best.value)
       best = memberValue(model, e, s, s * line->length(), value);

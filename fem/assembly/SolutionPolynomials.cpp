@@ -22,7 +22,26 @@ void addScaled(SectionForces& x, double f, const SectionForces& y) {
   x.Mz += f * y.Mz;
 }
 
+/// The bounds of own polynomials.
+ElementBounds boundsOf(const ElementPolynomials& p) {
+  ElementBounds out;
+  out.forces = resultantBounds(p.forces);
+  for (std::size_t c = 0; c < 3; ++c)
+    out.translations[c] = boundOnUnitInterval(Polynomial(p.translations[c].begin(), p.translations[c].end()));
+  return out;
+}
+
 }  // namespace
+
+SectionForces resultantBounds(const SectionForceSeries& forces) {
+  const auto bound = [&](double SectionForces::*f) {
+    Polynomial p;
+    for (const SectionForces& c : forces.c) p.push_back(c.*f);
+    return boundOnUnitInterval(p);
+  };
+  return {bound(&SectionForces::N), bound(&SectionForces::Vy), bound(&SectionForces::Vz),
+          bound(&SectionForces::T), bound(&SectionForces::My), bound(&SectionForces::Mz)};
+}
 
 std::array<Polynomial, 3> recoveredTranslations(const LoadedSolution& solution, int element) {
   using Square = Eigen::Matrix<double, kDisplacementSamples, kDisplacementSamples>;
@@ -54,11 +73,13 @@ SolutionPolynomials::SolutionPolynomials(const LoadedSolution& solution) {
     throw std::invalid_argument("recovering polynomials from a solution that carries them");
   const auto& elements = solution.model->elements();
   own_.resize(elements.size());
+  bounds_.resize(elements.size());
   for (int e = 0; e < int(elements.size()); ++e) {
     if (!asLine(elements[e])) continue;
     own_[e].forces = solution.forceSeries(e);
     const std::array<Polynomial, 3> u = recoveredTranslations(solution, e);
     for (std::size_t c = 0; c < 3; ++c) std::copy(u[c].begin(), u[c].end(), own_[e].translations[c].begin());
+    bounds_[e] = boundsOf(own_[e]);
   }
 }
 
@@ -98,15 +119,38 @@ std::array<Polynomial, 3> SolutionPolynomials::translations(int element) const {
     for (int c = 0; c < 3; ++c) out[c] = Polynomial(t[c].begin(), t[c].end());
     return out;
   };
-  return parts_.empty() ? fromArrays(own_.at(element).translations)
-                        : fromArrays(of(element).translations);
+  if (parts_.empty()) return fromArrays(own_.at(element).translations);
+  std::array<std::array<double, 6>, 3> sum{};
+  for (const auto& [part, factor] : parts_) {
+    const std::array<std::array<double, 6>, 3>& p = part->own_.empty()
+                                                        ? part->of(element).translations
+                                                        : part->own_.at(element).translations;
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t k = 0; k < 6; ++k) sum[c][k] += factor * p[c][k];
+  }
+  return fromArrays(sum);
+}
+
+ElementBounds SolutionPolynomials::bounds(int element) const {
+  if (parts_.empty()) return bounds_.at(element);
+  ElementBounds sum;
+  for (const auto& [part, factor] : parts_) {
+    const ElementBounds p = part->bounds(element);
+    addScaled(sum.forces, std::abs(factor), p.forces);
+    for (std::size_t c = 0; c < 3; ++c) sum.translations[c] += std::abs(factor) * p.translations[c];
+  }
+  return sum;
 }
 
 void SolutionPolynomials::sumInto(SolutionPolynomials& out) const {
   out.parts_.clear();
   const std::size_t count = elementCount();
   out.own_.resize(count);
-  for (std::size_t e = 0; e < count; ++e) out.own_[e] = of(int(e));
+  out.bounds_.resize(count);
+  for (std::size_t e = 0; e < count; ++e) {
+    out.own_[e] = of(int(e));
+    out.bounds_[e] = boundsOf(out.own_[e]);
+  }
 }
 
 }  // namespace beamrotor

@@ -25,6 +25,17 @@ struct ElementPolynomials {
   std::array<std::array<double, 6>, 3> translations{};  ///< ux, uy, uz (m, global), quintic
 };
 
+/// Upper bounds of |value| along one line element (Bernstein bounds, boundOnUnitInterval) of
+/// each resultant and of each translation. A sum's Bernstein coefficients are its parts'
+/// summed, so a combination's bounds are at most its parts' weighted by |factor|.
+struct ElementBounds {
+  SectionForces forces;                  ///< of |N|, |Vy|, |Vz|, |T|, |My|, |Mz|
+  std::array<double, 3> translations{};  ///< of |ux|, |uy|, |uz|
+};
+
+/// The bounds of each resultant of `forces` along the element.
+SectionForces resultantBounds(const SectionForceSeries& forces);
+
 class SolutionPolynomials {
  public:
   /// No elements (a place for sumInto).
@@ -45,8 +56,12 @@ class SolutionPolynomials {
   /// Its resultants, as LineElement::sectionForceSeries gives them (of a sum, the same sums
   /// as `of`, without the translations').
   SectionForceSeries forces(int element) const;
-  /// Its translations ux, uy, uz as polynomials in s.
+  /// Its translations ux, uy, uz as polynomials in s (of a sum, the same sums as `of`).
   std::array<Polynomial, 3> translations(int element) const;
+  /// Upper bounds of its resultants and translations along the element: of recovered
+  /// polynomials their own, of a sum its parts' weighted by |factor| (no sum formed), which
+  /// the extremes compare with a margin (1e-9) far above their round-off.
+  ElementBounds bounds(int element) const;
 
   /// Every element's polynomials summed once (of each element) into `out`, whose storage is
   /// reused: a combination's extremes read each element's polynomials several times (peaks,
@@ -56,6 +71,7 @@ class SolutionPolynomials {
 
  private:
   std::vector<ElementPolynomials> own_;  ///< recovered: by element index
+  std::vector<ElementBounds> bounds_;    ///< of own_, by element index
   std::vector<std::pair<std::shared_ptr<const SolutionPolynomials>, double>> parts_;
 };
 

@@ -52,7 +52,11 @@ RangeValues rangeValuesOf(const StaticExtremes& x, std::size_t m, std::size_t f)
 StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPolynomials& summed,
                             bool chordDeflections, RangesKept ranges) {
   LoadedSolution solution = c.on(model);
-  if (c.combination && c.polynomials) {
+  // Summed once where every element is read more than once (the member ranges, the chord
+  // deflections); otherwise read through the cases' bounds and summed only where needed.
+  const bool everyElement = chordDeflections || ranges == RangesKept::withPlaces ||
+                            ranges == RangesKept::values;
+  if (c.combination && c.polynomials && everyElement) {
     c.polynomials->sumInto(summed);
     solution.polynomials = &summed;
   }

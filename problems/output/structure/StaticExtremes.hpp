@@ -58,8 +58,9 @@ std::size_t rangedMembers(const StaticExtremes& x);
 RangeValues rangeValuesOf(const StaticExtremes& x, std::size_t m, std::size_t f);
 
 /// The extremes of load case or combination c of the model (a combination's polynomials summed
-/// into `summed`, storage reused from one call to the next), as runExtremes gives them: its
-/// peaks that can govern, its chord deflections where `chordDeflections`.
+/// into `summed`, storage reused from one call to the next, where its member ranges or chord
+/// deflections read every element), as runExtremes gives them: its peaks that can govern, its
+/// chord deflections where `chordDeflections`.
 StaticExtremes caseExtremes(const Model& model, const CaseOutcome& c, SolutionPolynomials& summed,
                             bool chordDeflections, RangesKept ranges);
 
