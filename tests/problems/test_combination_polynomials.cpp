@@ -283,6 +283,43 @@ TEST_SUITE("load cases") {
     checkSameExtremes(extremesOf(combinationNamed(run, "ULS").on(model)), extremesOf(alone));
   }
 
+  TEST_CASE("a combination's bounds from its cases': above every value, above its own bounds") {
+    // SolutionPolynomials::bounds of a combination weights its cases' Bernstein bounds by
+    // |factor|: at least the largest |value| of each resultant and translation along every
+    // element (101 places), and at least the Bernstein bound of its own summed polynomials
+    // (the triangle inequality on the Bernstein coefficients), by at most round-off.
+    const Study s = test::solveDeckText(crossingDeck(), "frame_bounds.yaml");
+    const Model& model = *s.run->model;
+    std::size_t tight = 0, checked = 0;
+    for (const CaseOutcome& c : casesOf(s.run->analyses.front())) {
+      if (!c.combination) continue;
+      SolutionPolynomials summed;
+      c.polynomials->sumInto(summed);
+      for (int e = 0; e < int(model.elements().size()); ++e) {
+        const ElementBounds weighted = c.polynomials->bounds(e), own = summed.bounds(e);
+        const SectionForceSeries forces = c.on(model).forceSeries(e);
+        const std::array<Polynomial, 3> u = c.on(model).translationSeries(e);
+        const double forceScale = 1e-12 * (1 + weighted.forces.N + weighted.forces.My + weighted.forces.Mz);
+        for (double SectionForces::*f : {&SectionForces::N, &SectionForces::Vy, &SectionForces::Vz,
+                                         &SectionForces::T, &SectionForces::My, &SectionForces::Mz}) {
+          for (int j = 0; j <= 100; ++j)
+            CHECK(std::abs(forces.at(j / 100.0).*f) <= weighted.forces.*f + forceScale);
+          CHECK(own.forces.*f <= weighted.forces.*f + forceScale);
+          tight += own.forces.*f == weighted.forces.*f;
+          ++checked;
+        }
+        for (int k = 0; k < 3; ++k) {
+          const double scale = 1e-12 * (1e-9 + weighted.translations[k]);
+          for (int j = 0; j <= 100; ++j)
+            CHECK(std::abs(valueAt(u[k], j / 100.0)) <= weighted.translations[k] + scale);
+          CHECK(own.translations[k] <= weighted.translations[k] + scale);
+        }
+      }
+    }
+    MESSAGE(tight << " of " << checked << " resultant bounds equal to the sum's own");
+    CHECK(checked == 46 * 12 * 6);
+  }
+
   TEST_CASE("the envelope along an element: every local extreme exact, one polynomial between") {
     const Study s = test::solveDeckText(kTwoPeaks, "two_peaks.yaml");
     const RunResult& run = *s.run;
