@@ -14,8 +14,8 @@ std::vector<bool> combinationsThatCanGovern(const std::vector<CaseOutcome>& case
     else
       loadCases.push_back(cases[k].name);
   // Each combination's factor of each load case, summed as the combination sums them.
-  Eigen::MatrixXd factors = Eigen::MatrixXd::Zero(Eigen::Index(combinations.size()),
-                                                  Eigen::Index(loadCases.size()));
+  Eigen::MatrixXd factors =
+      Eigen::MatrixXd::Zero(Eigen::Index(combinations.size()), Eigen::Index(loadCases.size()));
   for (std::size_t i = 0; i < combinations.size(); ++i)
     for (const auto& [name, factor] : cases[combinations[i]].factors)
       for (std::size_t j = 0; j < loadCases.size(); ++j)
