@@ -429,11 +429,13 @@ struct SpinSource {
   }
 };
 
-/// One implicit step's outcome: the state at t_n+1, the films there, Newton's iterations.
+/// One implicit step's outcome: the state at t_n+1, the films there, Newton's iterations, and
+/// the step's C + Omega G and K + Omega' G (for the residual at t_n+1).
 struct StepOutcome {
   TransientState state;
   FilmForces films;
   int iterations = 0;
+  SparseMatrix damping, stiffness;
 };
 
 RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptions& o) {
@@ -613,15 +615,17 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
       now.f + films.force - now.C * s.v - now.K * s.u - system.gyroscopicForce(now, s);
 
   const auto lateralStep = [&](const Instant& next) {
-    const SparseMatrix damping = next.C + next.speed * rotor.gyroscopic();
-    const SparseMatrix stiffness = next.K + next.acceleration * rotor.gyroscopic();
+    StepOutcome step;
+    step.damping = next.C + next.speed * rotor.gyroscopic();
+    step.stiffness = next.K + next.acceleration * rotor.gyroscopic();
+    const SparseMatrix& damping = step.damping;
+    const SparseMatrix& stiffness = step.stiffness;
     const SparseMatrix S =
         rotor.mass() + (a1 * rule.gamma * dt) * damping + (a1 * rule.beta * dt * dt) * stiffness;
     Eigen::VectorXd uPredicted, vPredicted;
     rule.predict(s, uPredicted, vPredicted);
     Eigen::VectorXd a = Eigen::VectorXd::Zero(s.u.size()), u = uPredicted, v = vPredicted;
     out.time.assembly += clock.lap();
-    StepOutcome step;
     // Newton's tangent is refactorised only when the last correction did not shrink tenfold
     // under the factor in hand (modified Newton): within a step the films' slopes move little,
     // so one factor usually carries every iteration, converging to the same tolerance.
@@ -714,8 +718,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
     out.mostNewtonIterations = std::max(out.mostNewtonIterations, outcome.iterations);
     s = std::move(outcome.state);
     films = std::move(outcome.films);
-    residual = next.f + films.force - (next.C + next.speed * rotor.gyroscopic()) * s.v -
-               (next.K + next.acceleration * rotor.gyroscopic()) * s.u;
+    residual = next.f + films.force - outcome.damping * s.v - outcome.stiffness * s.u;
     now = std::move(next);
     energy.advance(now, s);
     const bool keep = step % o.sampleEvery == 0 || step == out.steps;
