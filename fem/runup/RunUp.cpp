@@ -50,6 +50,7 @@ struct PlacedJournal {
   /// own dofs at rest
   Eigen::VectorXd offset;
   Eigen::Vector2d appliedLoad;  ///< N, on the journal (zero when gravity carries it)
+  Eigen::VectorXd noForce;      ///< zeros on the film's state: the drag's Couette part alone
   /// The film's state at (u, v): offset + u, v on its equations.
   std::pair<Eigen::VectorXd, Eigen::VectorXd> state(const Eigen::VectorXd& u,
                                                     const Eigen::VectorXd& v) const {
@@ -150,8 +151,9 @@ class RunUpSystem {
   /// The films' and rubs' forces at the state (u, v) and speed, with the loads the films carry.
   FilmForces films(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double speed) const {
     FilmForces out;
-    out.force = Eigen::VectorXd::Zero(rotor_.size());
     out.rubForce = Eigen::VectorXd::Zero(rotor_.size());
+    out.rubs.reserve(rubs_.size());
+    out.each.reserve(journals_.size());
     for (const PlacedRub& r : rubs_) {
       RubForce f = rubForce(*r.rub, Eigen::Vector2d(u[r.y], u[r.z]),
                             Eigen::Vector2d(v[r.y], v[r.z]), speed);
@@ -178,8 +180,7 @@ class RunUpSystem {
       // part's dependence is left to the drive's fixed point.
       out.dragTorque += j.journal->film->dragTorqueAt(x, f.force, speed);
       if (speed > 0)
-        out.torqueSlope +=
-            j.journal->film->dragTorqueAt(x, Eigen::VectorXd::Zero(x.size()), speed) / speed;
+        out.torqueSlope += j.journal->film->dragTorqueAt(x, j.noForce, speed) / speed;
       out.each.push_back(std::move(f));
     }
     return out;
@@ -273,6 +274,7 @@ class RunUpSystem {
             "a speed above 0 (bearing '" +
             n.name + "')");
       j.offset = n.film->restState(n.load, startSpeed);
+      j.noForce = Eigen::VectorXd::Zero(j.offset.size());
       const bool gravityCarries = o.gravity.squaredNorm() > 0;
       j.appliedLoad = gravityCarries ? Eigen::Vector2d::Zero() : Eigen::Vector2d(n.load);
       journals_.push_back(j);
