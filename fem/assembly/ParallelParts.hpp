@@ -5,9 +5,11 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <exception>
 #include <new>
+#include <optional>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -64,6 +66,37 @@ void runTogether(std::size_t items, First&& first, Second&& second) {
     return;
   }
   runParts(2, [&](int part) { part == 0 ? first() : second(); });
+}
+
+/// The results of item(0, worker), ..., item(n - 1, worker), in the order of i, computed on up
+/// to `workers` threads (the last on the caller's); `worker` (0 to workers - 1) names the
+/// thread an item runs on, for what each thread keeps of its own. The items are handed out in
+/// ascending order and none after one that has thrown is started, so every item before the
+/// first that throws runs, and that item's exception is rethrown: the one a loop over the
+/// items would throw. Each item must be the same computation on any thread.
+template <class Item>
+auto resultsSideBySide(int n, int workers, Item&& item) {
+  using Result = decltype(item(0, 0));
+  std::vector<std::optional<Result>> results(std::size_t(std::max(n, 0)));
+  std::vector<std::exception_ptr> failures(results.size());
+  std::atomic<int> next{0}, firstFailed{n};
+  runParts(std::max(1, std::min(workers, n)), [&](int worker) {
+    for (int i = next++; i < firstFailed; i = next++) {
+      try {
+        results[std::size_t(i)].emplace(item(i, worker));
+      } catch (...) {
+        failures[std::size_t(i)] = std::current_exception();
+        for (int seen = firstFailed; i < seen && !firstFailed.compare_exchange_weak(seen, i);) {
+        }
+      }
+    }
+  });
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  std::vector<Result> out;
+  out.reserve(results.size());
+  for (std::optional<Result>& result : results) out.push_back(std::move(*result));
+  return out;
 }
 
 /// What pick(i, out) appends to `out` for i = 0, ..., n - 1, in the order of i: each part

@@ -50,6 +50,7 @@ struct PlacedJournal {
   /// own dofs at rest
   Eigen::VectorXd offset;
   Eigen::Vector2d appliedLoad;  ///< N, on the journal (zero when gravity carries it)
+  Eigen::VectorXd noForce;      ///< zeros on the film's state: the drag's Couette part alone
   /// The film's state at (u, v): offset + u, v on its equations.
   std::pair<Eigen::VectorXd, Eigen::VectorXd> state(const Eigen::VectorXd& u,
                                                     const Eigen::VectorXd& v) const {
@@ -150,8 +151,9 @@ class RunUpSystem {
   /// The films' and rubs' forces at the state (u, v) and speed, with the loads the films carry.
   FilmForces films(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double speed) const {
     FilmForces out;
-    out.force = Eigen::VectorXd::Zero(rotor_.size());
     out.rubForce = Eigen::VectorXd::Zero(rotor_.size());
+    out.rubs.reserve(rubs_.size());
+    out.each.reserve(journals_.size());
     for (const PlacedRub& r : rubs_) {
       RubForce f = rubForce(*r.rub, Eigen::Vector2d(u[r.y], u[r.z]),
                             Eigen::Vector2d(v[r.y], v[r.z]), speed);
@@ -178,8 +180,7 @@ class RunUpSystem {
       // part's dependence is left to the drive's fixed point.
       out.dragTorque += j.journal->film->dragTorqueAt(x, f.force, speed);
       if (speed > 0)
-        out.torqueSlope +=
-            j.journal->film->dragTorqueAt(x, Eigen::VectorXd::Zero(x.size()), speed) / speed;
+        out.torqueSlope += j.journal->film->dragTorqueAt(x, j.noForce, speed) / speed;
       out.each.push_back(std::move(f));
     }
     return out;
@@ -273,6 +274,7 @@ class RunUpSystem {
             "a speed above 0 (bearing '" +
             n.name + "')");
       j.offset = n.film->restState(n.load, startSpeed);
+      j.noForce = Eigen::VectorXd::Zero(j.offset.size());
       const bool gravityCarries = o.gravity.squaredNorm() > 0;
       j.appliedLoad = gravityCarries ? Eigen::Vector2d::Zero() : Eigen::Vector2d(n.load);
       journals_.push_back(j);
@@ -429,11 +431,13 @@ struct SpinSource {
   }
 };
 
-/// One implicit step's outcome: the state at t_n+1, the films there, Newton's iterations.
+/// One implicit step's outcome: the state at t_n+1, the films there, Newton's iterations, and
+/// the step's C + Omega G and K + Omega' G (for the residual at t_n+1).
 struct StepOutcome {
   TransientState state;
   FilmForces films;
   int iterations = 0;
+  SparseMatrix damping, stiffness;
 };
 
 RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptions& o) {
@@ -613,15 +617,17 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
       now.f + films.force - now.C * s.v - now.K * s.u - system.gyroscopicForce(now, s);
 
   const auto lateralStep = [&](const Instant& next) {
-    const SparseMatrix damping = next.C + next.speed * rotor.gyroscopic();
-    const SparseMatrix stiffness = next.K + next.acceleration * rotor.gyroscopic();
+    StepOutcome step;
+    step.damping = next.C + next.speed * rotor.gyroscopic();
+    step.stiffness = next.K + next.acceleration * rotor.gyroscopic();
+    const SparseMatrix& damping = step.damping;
+    const SparseMatrix& stiffness = step.stiffness;
     const SparseMatrix S =
         rotor.mass() + (a1 * rule.gamma * dt) * damping + (a1 * rule.beta * dt * dt) * stiffness;
     Eigen::VectorXd uPredicted, vPredicted;
     rule.predict(s, uPredicted, vPredicted);
     Eigen::VectorXd a = Eigen::VectorXd::Zero(s.u.size()), u = uPredicted, v = vPredicted;
     out.time.assembly += clock.lap();
-    StepOutcome step;
     // Newton's tangent is refactorised only when the last correction did not shrink tenfold
     // under the factor in hand (modified Newton): within a step the films' slopes move little,
     // so one factor usually carries every iteration, converging to the same tolerance.
@@ -714,8 +720,7 @@ RunUpResult runUp(const Model& model, const SpinSource& source, const RunUpOptio
     out.mostNewtonIterations = std::max(out.mostNewtonIterations, outcome.iterations);
     s = std::move(outcome.state);
     films = std::move(outcome.films);
-    residual = next.f + films.force - (next.C + next.speed * rotor.gyroscopic()) * s.v -
-               (next.K + next.acceleration * rotor.gyroscopic()) * s.u;
+    residual = next.f + films.force - outcome.damping * s.v - outcome.stiffness * s.u;
     now = std::move(next);
     energy.advance(now, s);
     const bool keep = step % o.sampleEvery == 0 || step == out.steps;

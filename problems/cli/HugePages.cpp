@@ -13,6 +13,7 @@ namespace {
 
 constexpr const char* kVariable = "GLIBC_TUNABLES";
 constexpr const char* kTunable = "glibc.malloc.hugetlb";
+constexpr const char* kBlasThreads = "OPENBLAS_NUM_THREADS";
 
 /// The kernel's setting reads "always [madvise] never" when huge pages come on advice only.
 bool hugePagesOnAdvice() {
@@ -30,12 +31,19 @@ void restartWithHugePages(char** argv) {
   const std::string kept = tunables ? tunables : "";
   const std::string value = (kept.empty() ? "" : kept + ":") + kTunable + "=1";
   if (setenv(kVariable, value.c_str(), 1) != 0) return;
+  // OpenBLAS reads its thread count when it is loaded, and starts that many threads less one,
+  // which spin for about 0.1 s before they sleep: CPU taken from the run's own threads and
+  // its charts. The run calls it with one thread anyway (fem/solvers/BlasThreads.hpp), so the
+  // restarted program asks for one from the start, unless the environment names a count.
+  const bool blasThreadsSet = std::getenv(kBlasThreads) != nullptr;
+  if (!blasThreadsSet) setenv(kBlasThreads, "1", 0);
   execv("/proc/self/exe", argv);
   // No /proc (a container without it): go on as started.
   if (tunables)
     setenv(kVariable, kept.c_str(), 1);
   else
     unsetenv(kVariable);
+  if (!blasThreadsSet) unsetenv(kBlasThreads);
 }
 
 }  // namespace beamrotor::cli

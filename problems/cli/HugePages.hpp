@@ -8,9 +8,10 @@ namespace beamrotor::cli {
 
 /// When the kernel gives huge pages on advice and the environment does not yet name
 /// glibc.malloc.hugetlb, starts this program again (same pid, arguments and environment, plus
-/// that tunable) and does not return; otherwise, or when that fails, returns and the run goes
-/// on as it is. GLIBC_TUNABLES=glibc.malloc.hugetlb=0 keeps the heap on 4 KiB pages (and keeps
-/// a tool such as valgrind, which follows no exec by default, attached).
+/// that tunable, and OPENBLAS_NUM_THREADS=1 when the environment names no count) and does not
+/// return; otherwise, or when that fails, returns and the run goes on as it is.
+/// GLIBC_TUNABLES=glibc.malloc.hugetlb=0 keeps the heap on 4 KiB pages (and keeps a tool such
+/// as valgrind, which follows no exec by default, attached).
 void restartWithHugePages(char** argv);
 
 }  // namespace beamrotor::cli

@@ -1,12 +1,14 @@
 #include "problems/run/DeckRunner.hpp"
 
 #include <cmath>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <variant>
 
+#include "fem/assembly/ParallelParts.hpp"
 #include "fem/assembly/Recovery.hpp"
 #include "fem/assembly/SolutionPolynomials.hpp"
 #include "fem/modal/BaseMotion.hpp"
@@ -301,8 +303,12 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
   // Every value reads the deck again: what an earlier reading evaluated comes from the
   // memo's byte code (the same deck, bit for bit), as a design study's points do. Re-parsing
   // every expression in every system of units was a quarter of the MO-10 sweep's solve.
-  ExpressionMemo memo;
-  const auto runValue = [&](double value) {
+  // Each value is a run of its own, the same to the bit on any thread, so the values of one
+  // batch (the deck's, then each refinement's) run side by side, one per core, each core's
+  // readings with a memo of its own (a memo serves one thread).
+  const int cores = usableCores();
+  std::vector<ExpressionMemo> memos(std::size_t(std::max(cores, 1)));
+  const auto runValue = [&](double value, ExpressionMemo& memo) {
     std::vector<ParameterOverride> withValue = overrides;
     withValue.push_back({sweep.parameter, value, sweep.parameter + "=" + formatNumber(value)});
     const std::string at = "with " + sweep.parameter + " = " + formatNumber(value) + " (sweep): ";
@@ -316,12 +322,21 @@ SweepResult runSweep(const DeckSource& source, const std::vector<ParameterOverri
       throw DeckSolveError(e.file(), e.place(), at + e.message());
     }
   };
+  std::mutex progressShown;
+  int done = 0;
   const int total = int(sweep.values.size());
-  for (int i = 0; i < total; ++i) {
-    sweep.runs.push_back(runValue(sweep.values[i]));
-    if (progress) progress(i + 1, total);
-  }
-  if (refine && refine->parameter == sweep.parameter) refineSweep(sweep, *refine, runValue);
+  sweep.runs = resultsSideBySide(total, cores, [&](int i, int core) {
+    RunResult run = runValue(sweep.values[std::size_t(i)], memos[std::size_t(core)]);
+    const std::lock_guard<std::mutex> lock(progressShown);
+    if (progress) progress(++done, total);
+    return run;
+  });
+  const auto runValues = [&](const std::vector<double>& values) {
+    return resultsSideBySide(int(values.size()), cores, [&](int i, int core) {
+      return runValue(values[std::size_t(i)], memos[std::size_t(core)]);
+    });
+  };
+  if (refine && refine->parameter == sweep.parameter) refineSweep(sweep, *refine, runValues);
   return sweep;
 }
 

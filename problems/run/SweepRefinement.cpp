@@ -56,15 +56,17 @@ std::vector<double> refinementValues(const SweepSamples& s, double tolerance) {
 }
 
 SweepSamples refineSweep(SweepResult& sweep, const DeckSweepRefinement& refine,
-                         const std::function<RunResult(double)>& runValue) {
+                         const SweepValueRuns& runValues) {
   SweepSamples s = sweepSamples(sweep, refine);
   for (;;) {
     std::vector<double> added = refinementValues(s, refine.tolerance);
     const std::size_t room = std::size_t(std::max(0, refine.runs - int(s.values.size())));
     if (added.empty() || room == 0) break;
     if (added.size() > room) added.resize(room);  // the lower values first
-    for (double value : added) {
-      RunResult run = runValue(value);
+    std::vector<RunResult> runs = runValues(added);
+    for (std::size_t k = 0; k < added.size(); ++k) {
+      const double value = added[k];
+      RunResult& run = runs[k];
       const double result = measured(run, refine);
       const auto at = std::upper_bound(s.values.begin(), s.values.end(), value) - s.values.begin();
       s.values.insert(s.values.begin() + at, value);

@@ -32,11 +32,14 @@ std::vector<double> refinementValues(const SweepSamples& s, double tolerance);
 /// The refinement's quantity in every run of the sweep.
 SweepSamples sweepSamples(const SweepResult& sweep, const DeckSweepRefinement& refine);
 
+/// Runs of the sweep's deck at the given values, one per value in their order.
+using SweepValueRuns = std::function<std::vector<RunResult>(const std::vector<double>&)>;
+
 /// Refines a finished sweep in place: measures the refinement's quantity in every run, adds
-/// the refinementValues (each run by runValue) in ascending place, and repeats until none are
-/// left or the sweep holds refine.runs values. The sweep's values must be ascending. Returns
-/// the final samples.
+/// the refinementValues (run together by runValues) in ascending place, and repeats until none
+/// are left or the sweep holds refine.runs values. The sweep's values must be ascending.
+/// Returns the final samples.
 SweepSamples refineSweep(SweepResult& sweep, const DeckSweepRefinement& refine,
-                         const std::function<RunResult(double)>& runValue);
+                         const SweepValueRuns& runValues);
 
 }  // namespace beamrotor

@@ -15,7 +15,12 @@ double NamedHistory::min() const {
 }
 
 double NamedHistory::maxAbs() const {
-  return std::max(std::abs(max()), std::abs(min()));
+  return extremes().maxAbs;
+}
+
+HistoryExtremes NamedHistory::extremes() const {
+  const double high = max(), low = min();
+  return {high, low, std::max(std::abs(high), std::abs(low))};
 }
 
 const NamedHistory& TransientOutcome::history(const std::string& name) const {

@@ -9,6 +9,11 @@
 
 namespace beamrotor {
 
+/// A history's largest and smallest value and largest |value|, each 0 for no samples.
+struct HistoryExtremes {
+  double max = 0, min = 0, maxAbs = 0;
+};
+
 /// One named history over the sample times.
 struct NamedHistory {
   std::string name;
@@ -18,6 +23,7 @@ struct NamedHistory {
   double max() const;     ///< largest value
   double min() const;     ///< smallest value
   double maxAbs() const;  ///< largest |value|: `<name>_max` in results.json
+  HistoryExtremes extremes() const;  ///< the three above, for a reader of all three
 };
 
 struct TransientOutcome {

@@ -6,6 +6,7 @@
 
 #include "problems/deck/parse/DeckError.hpp"
 #include "problems/run/Study.hpp"
+#include "tests/ThreadsSetting.hpp"
 
 using namespace beamrotor;
 
@@ -149,6 +150,18 @@ TEST_SUITE("deck sweep") {
     CHECK(solve("", r).sweep->runs.size() == 3);
     r.sweep = "q=1:2:2";
     CHECK_THROWS_AS(solve("", r), DeckError);
+  }
+
+  TEST_CASE("values run side by side: the first value that breaks the deck is named") {
+    // s = 2.5 and s = 3 both put the support beyond the 2 m line; one value after another the
+    // run stops at 2.5, and so it does on two threads.
+    const test::ThreadsSetting twoThreads("2");
+    try {
+      solve("sweep: {parameter: s, values: [1, 1.5, 2.5, 3, 1.2, 1.8]}");
+      FAIL("no error raised");
+    } catch (const DeckError& e) {
+      CHECK(std::string(e.what()).find("with s = 2.5 (sweep)") != std::string::npos);
+    }
   }
 
   TEST_CASE("a value that breaks the deck is named in the error") {

@@ -19,6 +19,7 @@
 #include "problems/run/Study.hpp"
 #include "problems/run/SweepRefinement.hpp"
 #include "problems/scenes/Mo10.hpp"
+#include "tests/ThreadsSetting.hpp"
 #include "tests/problems/DeckTestSupport.hpp"
 
 using namespace beamrotor;
@@ -200,6 +201,27 @@ TEST_SUITE("sweep refinement") {
     CHECK(unknown.find("'C'") != std::string::npos);
     // A quantity of another analysis type.
     CHECK(refusal("spectrum base_shear x").first.find("response-spectrum") != std::string::npos);
+  }
+
+  TEST_CASE("the MO-10 sweep's values side by side: the values and results of one thread") {
+    // Each value is a run of its own: on two threads (each reading with a memo of its own,
+    // the refinement's batches split between them) the same values and bits as on one.
+    StudyRequest request = test::shippedDeckRequest("mo10.yaml");
+    request.noSweep = false;
+    const auto solvedOn = [&](const std::string& threads) {
+      const test::ThreadsSetting setting(threads);
+      return solveStudy(request);
+    };
+    const Study one = solvedOn("1"), two = solvedOn("2");
+    REQUIRE(one.sweep);
+    REQUIRE(two.sweep);
+    CHECK(two.sweep->values == one.sweep->values);
+    DeckSweepRefinement refine;
+    refine.quantity = parseQuantity("history spring_force maxabs");
+    refine.analysis = "blows";
+    CHECK(sweepSamples(*two.sweep, refine).results == sweepSamples(*one.sweep, refine).results);
+    refine.quantity = parseQuantity("history phi_error maxabs");
+    CHECK(sweepSamples(*two.sweep, refine).results == sweepSamples(*one.sweep, refine).results);
   }
 
   TEST_CASE("the shipped MO-10 sweep refines onto its three peaks") {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "problems/output/files/FileNames.hpp"
 
@@ -9,18 +10,22 @@ namespace beamrotor {
 
 namespace {
 
-Json historiesJson(const TransientOutcome& t) {
+Json historiesJson(const TransientOutcome& t, const std::vector<HistoryExtremes>& extremes) {
   Json out = Json::object();
-  for (const NamedHistory& h : t.histories) {
+  for (std::size_t k = 0; k < t.histories.size(); ++k) {
+    const NamedHistory& h = t.histories[k];
     const auto largest = std::max_element(h.values.begin(), h.values.end(), [](double a, double b) {
       return std::abs(a) < std::abs(b);
     });
     const double time = largest == h.values.end()
                             ? 0.0
                             : t.result.times.at(std::size_t(largest - h.values.begin()));
-    out[h.name] = {{"unit", h.unit},          {"max", h.max()},
-                   {"min", h.min()},          {"max_abs", h.maxAbs()},
-                   {"time_of_max_abs", time}, {"final", h.values.empty() ? 0.0 : h.values.back()}};
+    out[h.name] = {{"unit", h.unit},
+                   {"max", extremes[k].max},
+                   {"min", extremes[k].min},
+                   {"max_abs", extremes[k].maxAbs},
+                   {"time_of_max_abs", time},
+                   {"final", h.values.empty() ? 0.0 : h.values.back()}};
   }
   return out;
 }
@@ -51,10 +56,13 @@ Json transientJson(const AnalysisOutcome& a) {
   out["steps"] = r.steps;
   out["end_time"] = r.steps * r.timeStep;
   out["factorizations"] = r.factorizations;
+  std::vector<HistoryExtremes> extremes;  // each history's, taken once for both tables
+  for (const NamedHistory& h : t.histories) extremes.push_back(h.extremes());
   Json maxima = Json::object();
-  for (const NamedHistory& h : t.histories) maxima[h.name + "_max"] = h.maxAbs();
+  for (std::size_t k = 0; k < t.histories.size(); ++k)
+    maxima[t.histories[k].name + "_max"] = extremes[k].maxAbs;
   out["maxima"] = maxima;
-  out["histories"] = historiesJson(t);
+  out["histories"] = historiesJson(t, extremes);
   if (r.stability.omegaMax > 0)
     out["stability"] = {{"omega_max", r.stability.omegaMax},
                         {"dt_critical", r.stability.dtCritical},
