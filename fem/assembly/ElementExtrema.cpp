@@ -281,29 +281,35 @@ std::vector<ElementPeaks> peaksThatCanGovern(const LoadedSolution& solution) {
                                                    : resultantBounds(solution.forceSeries(i)));
   }
   // 2. The peaks of the few elements of each kind's largest bounds (a bound that is not a
-  //    number first): the largest peak of a kind is at least theirs, the seed.
-  std::vector<std::optional<ElementPeaks>> peaks(elements.size());
-  const auto peaksOf = [&](int i) -> const ElementPeaks& {
-    if (!peaks[i]) {
-      peaks[i] = elementPeaks(*asLine(elements[i]), solution.forceSeries(i));
-      peaks[i]->stress.element = peaks[i]->shear.element = peaks[i]->moment.element = i;
-    }
-    return *peaks[i];
+  //    number first): the largest peak of a kind is at least theirs, the seed. Kept, to be
+  //    computed once.
+  const auto computed = [&](int i) {
+    ElementPeaks p = elementPeaks(*asLine(elements[i]), solution.forceSeries(i));
+    p.stress.element = p.shear.element = p.moment.element = i;
+    return p;
+  };
+  std::vector<std::pair<int, ElementPeaks>> seeded;
+  const auto seededPeaks = [&](int i) -> const ElementPeaks* {
+    for (const auto& [element, p] : seeded)
+      if (element == i) return &p;
+    return nullptr;
   };
   std::array<double, 3> seed;
   seed.fill(-std::numeric_limits<double>::infinity());
+  std::vector<int> first;
   for (int k = 0; k < 3; ++k) {
     const auto key = [&](int i) {
       return std::isnan(bounds[i][k]) ? std::numeric_limits<double>::infinity() : bounds[i][k];
     };
-    std::vector<int> first = lines;
+    first = lines;
     const std::size_t count = std::min(kSeedElements, first.size());
     std::partial_sort(first.begin(), first.begin() + std::ptrdiff_t(count), first.end(),
                       [&](int a, int b) { return key(a) > key(b); });
     for (std::size_t j = 0; j < count; ++j) {
-      const ElementPeaks& p = peaksOf(first[j]);
+      const ElementPeaks* p = seededPeaks(first[j]);
+      if (!p) p = &seeded.emplace_back(first[j], computed(first[j])).second;
       for (int m = 0; m < 3; ++m) {
-        const double v = (p.*kKinds[m]).value;
+        const double v = (p->*kKinds[m]).value;
         if (v > seed[m]) seed[m] = v;
       }
     }
@@ -313,7 +319,9 @@ std::vector<ElementPeaks> peaksThatCanGovern(const LoadedSolution& solution) {
   for (int i : lines) {
     bool below = true;
     for (int k = 0; k < 3; ++k) below = below && bounds[i][k] * (1 + 1e-9) < seed[k];
-    if (!below) out.push_back(peaksOf(i));
+    if (below) continue;
+    const ElementPeaks* p = seededPeaks(i);
+    out.push_back(p ? *p : computed(i));
   }
   return out;
 }
