@@ -92,15 +92,7 @@ SolutionPolynomials::SolutionPolynomials(
 
 ElementPolynomials SolutionPolynomials::of(int element) const {
   if (parts_.empty()) return own_.at(element);
-  ElementPolynomials sum;
-  for (const auto& [part, factor] : parts_) {
-    const ElementPolynomials p = part->of(element);
-    for (std::size_t k = 0; k < sum.forces.c.size(); ++k)
-      addScaled(sum.forces.c[k], factor, p.forces.c[k]);
-    for (std::size_t c = 0; c < 3; ++c)
-      for (std::size_t k = 0; k < 6; ++k) sum.translations[c][k] += factor * p.translations[c][k];
-  }
-  return sum;
+  return {forces(element), translationCoefficients(element)};
 }
 
 SectionForceSeries SolutionPolynomials::forces(int element) const {
@@ -113,22 +105,23 @@ SectionForceSeries SolutionPolynomials::forces(int element) const {
   return sum;
 }
 
-std::array<Polynomial, 3> SolutionPolynomials::translations(int element) const {
-  const auto fromArrays = [](const std::array<std::array<double, 6>, 3>& t) {
-    std::array<Polynomial, 3> out;
-    for (int c = 0; c < 3; ++c) out[c] = Polynomial(t[c].begin(), t[c].end());
-    return out;
-  };
-  if (parts_.empty()) return fromArrays(own_.at(element).translations);
-  std::array<std::array<double, 6>, 3> sum{};
+SolutionPolynomials::TranslationCoefficients SolutionPolynomials::translationCoefficients(
+    int element) const {
+  if (parts_.empty()) return own_.at(element).translations;
+  TranslationCoefficients sum{};
   for (const auto& [part, factor] : parts_) {
-    const std::array<std::array<double, 6>, 3>& p = part->own_.empty()
-                                                        ? part->of(element).translations
-                                                        : part->own_.at(element).translations;
+    const TranslationCoefficients p = part->translationCoefficients(element);
     for (std::size_t c = 0; c < 3; ++c)
       for (std::size_t k = 0; k < 6; ++k) sum[c][k] += factor * p[c][k];
   }
-  return fromArrays(sum);
+  return sum;
+}
+
+std::array<Polynomial, 3> SolutionPolynomials::translations(int element) const {
+  const TranslationCoefficients t = translationCoefficients(element);
+  std::array<Polynomial, 3> out;
+  for (int c = 0; c < 3; ++c) out[c] = Polynomial(t[c].begin(), t[c].end());
+  return out;
 }
 
 ElementBounds SolutionPolynomials::bounds(int element) const {

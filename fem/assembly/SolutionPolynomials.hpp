@@ -70,6 +70,10 @@ class SolutionPolynomials {
   void sumInto(SolutionPolynomials& out) const;
 
  private:
+  using TranslationCoefficients = std::array<std::array<double, 6>, 3>;
+  /// Its translations' coefficients (of a sum, the parts' weighted, in their order).
+  TranslationCoefficients translationCoefficients(int element) const;
+
   std::vector<ElementPolynomials> own_;  ///< recovered: by element index
   std::vector<ElementBounds> bounds_;    ///< of own_, by element index
   std::vector<std::pair<std::shared_ptr<const SolutionPolynomials>, double>> parts_;
