@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 namespace beamrotor {
@@ -113,9 +114,10 @@ std::vector<Eigen::Index> likelyCorners(const Eigen::MatrixXd& points) {
 std::vector<bool> extremePoints(const Eigen::MatrixXd& points) {
   const Eigen::Index count = points.rows();
   std::vector<bool> kept(std::size_t(count), true);
+  std::vector<Eigen::Index> all(static_cast<std::size_t>(count));
+  std::iota(all.begin(), all.end(), Eigen::Index(0));
   // Repeats: sorted by coordinates (then by index), each row after an equal one left out.
-  std::vector<Eigen::Index> order(static_cast<std::size_t>(count));
-  for (Eigen::Index i = 0; i < count; ++i) order[std::size_t(i)] = i;
+  std::vector<Eigen::Index> order = all;
   const auto less = [&](Eigen::Index a, Eigen::Index b) {
     for (Eigen::Index j = 0; j < points.cols(); ++j)
       if (points(a, j) != points(b, j)) return points(a, j) < points(b, j);
@@ -137,8 +139,6 @@ std::vector<bool> extremePoints(const Eigen::MatrixXd& points) {
       if (j != c && kept[std::size_t(j)]) out.push_back(j);
     return out;
   };
-  std::vector<Eigen::Index> all(static_cast<std::size_t>(count));
-  for (Eigen::Index i = 0; i < count; ++i) all[std::size_t(i)] = i;
   long long budget = kBudget;
   for (Eigen::Index c = 0; c < count && budget > 0; ++c) {
     if (!kept[std::size_t(c)]) continue;
