@@ -175,6 +175,27 @@ std::string crossingDeck() {
   return frameDeck(deck);
 }
 
+/// The envelope of `solutions` along `elements` with each solution's ranges of the
+/// resultants into `ranges`, checked to be the envelope computed without them: the same
+/// places, values and solutions named, to the bit.
+std::vector<EnvelopeStation> envelopeWithRanges(const std::vector<LoadedSolution>& solutions,
+                                                const std::vector<int>& elements,
+                                                std::vector<std::array<RangeValues, 6>>& ranges) {
+  std::vector<EnvelopeStation> with =
+      memberEnvelope(solutions, elements, kIntervalsPerElement, &ranges);
+  const std::vector<EnvelopeStation> without =
+      memberEnvelope(solutions, elements, kIntervalsPerElement);
+  REQUIRE(with.size() == without.size());
+  for (std::size_t i = 0; i < with.size(); ++i) {
+    CHECK(with[i].s == without[i].s);
+    CHECK(with[i].max == without[i].max);
+    CHECK(with[i].maxBy == without[i].maxBy);
+    CHECK(with[i].min == without[i].min);
+    CHECK(with[i].minBy == without[i].minBy);
+  }
+  return with;
+}
+
 /// Resultant c (kForceComponents order) of `solution` on element e, as the envelope reads it.
 Polynomial resultantOn(const LoadedSolution& solution, int e, std::size_t c) {
   return componentPolynomial(solution.forceSeries(e), kForceComponents[c]);
@@ -605,10 +626,7 @@ TEST_SUITE("load cases") {
     for (std::size_t m = 0; m < model.members().size(); ++m) {
       const std::vector<int>& elements = model.members()[m].second;
       std::vector<std::array<RangeValues, 6>> ranges;
-      const std::vector<EnvelopeStation> with =
-          memberEnvelope(combinations, elements, kIntervalsPerElement, &ranges);
-      const std::vector<EnvelopeStation> without =
-          memberEnvelope(combinations, elements, kIntervalsPerElement);
+      envelopeWithRanges(combinations, elements, ranges);
       REQUIRE(ranges.size() == combinations.size());
       for (std::size_t k = 0; k < combinations.size(); ++k)
         for (std::size_t f = 0; f < 6; ++f) {
@@ -617,12 +635,6 @@ TEST_SUITE("load cases") {
           CHECK(ranges[k][f].min == v.min);
           CHECK(ranges[k][f].max >= ranges[k][f].min);
         }
-      REQUIRE(with.size() == without.size());
-      for (std::size_t i = 0; i < with.size(); ++i) {
-        CHECK(with[i].s == without[i].s);
-        CHECK(with[i].max == without[i].max);
-        CHECK(with[i].min == without[i].min);
-      }
     }
   }
   TEST_CASE("the envelope of many crossing and equal combinations: the bits of every one evaluated") {
@@ -639,19 +651,8 @@ TEST_SUITE("load cases") {
     for (const auto& [name, elements] : model.members()) {
       CAPTURE(name);
       std::vector<std::array<RangeValues, 6>> ranges;
-      const std::vector<EnvelopeStation> env =
-          memberEnvelope(combinations, elements, kIntervalsPerElement, &ranges);
-      const std::vector<EnvelopeStation> without =
-          memberEnvelope(combinations, elements, kIntervalsPerElement);
-      REQUIRE(env.size() == without.size());
+      const std::vector<EnvelopeStation> env = envelopeWithRanges(combinations, elements, ranges);
       stations += env.size();
-      for (std::size_t i = 0; i < env.size(); ++i) {
-        CHECK(env[i].s == without[i].s);
-        CHECK(env[i].max == without[i].max);
-        CHECK(env[i].maxBy == without[i].maxBy);
-        CHECK(env[i].min == without[i].min);
-        CHECK(env[i].minBy == without[i].minBy);
-      }
       for (std::size_t c = 0; c < 6; ++c) {
         const double roundOff = 1e-12 * resultantScale(combinations, elements, c);
         // 1. At each station: the largest and smallest of every combination evaluated there,
@@ -713,6 +714,7 @@ TEST_SUITE("load cases") {
       for (std::size_t k : corners) out[k] = true;
       return out;
     }();
+    const CaseEnvelope envelope = caseEnvelope(model, cases, x.cases, x.canGovern);
     REQUIRE(x.memberEnvelopes.size() == model.members().size());
     for (std::size_t m = 0; m < model.members().size(); ++m) {
       const std::vector<int>& elements = model.members()[m].second;
@@ -738,7 +740,6 @@ TEST_SUITE("load cases") {
         checkOnePolynomialBetween(env, all, c, roundOff);
         // The member's extremes over the corners (envelope.members) against every
         // combination's own range along it (memberForceRanges).
-        const CaseEnvelope envelope = caseEnvelope(model, cases, x.cases, x.canGovern);
         double hi = -1e300, lo = 1e300;
         for (const LoadedSolution& k : all) {
           const auto r = memberForceRanges(k, elements);
@@ -751,7 +752,6 @@ TEST_SUITE("load cases") {
       }
     }
     // Reactions, the largest displacement and stress: the corners' largest are all's.
-    const CaseEnvelope envelope = caseEnvelope(model, cases, x.cases, x.canGovern);
     for (std::size_t r = 0; r < envelope.reactions.size(); ++r) {
       double hi = -1e300, lo = 1e300, scale = 0;
       for (const CaseOutcome& c : cases)
