@@ -27,7 +27,8 @@ ElementBounds boundsOf(const ElementPolynomials& p) {
   ElementBounds out;
   out.forces = resultantBounds(p.forces);
   for (std::size_t c = 0; c < 3; ++c)
-    out.translations[c] = boundOnUnitInterval(Polynomial(p.translations[c].begin(), p.translations[c].end()));
+    out.translations[c] =
+        boundOnUnitInterval(Polynomial(p.translations[c].begin(), p.translations[c].end()));
   return out;
 }
 
